@@ -1,0 +1,53 @@
+//! `eval FILE --at U[,V] [--scalar f64]`.
+
+use super::{load, one_or_many, parse_list, ScalarKind};
+use crate::error::Error;
+use crate::io::{point_to_json, JsonScalar, Patch};
+use crate::scalar::Ordered;
+use serde_json::{json, Value};
+
+/// Arguments of `eval`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Input file (JSON), or - for standard input.
+    file: String,
+    /// Parameter(s): t for a curve, u,v for a rect or tri patch (exact text: 1/3, 0.25).
+    #[arg(long, allow_hyphen_values = true)]
+    at: String,
+    /// Scalar to compute with.
+    #[arg(long, value_enum, default_value_t)]
+    scalar: ScalarKind,
+}
+
+pub fn run(a: &Args) -> Result<Value, Error> {
+    let params = parse_list(&a.at)?;
+    let patches = load(&a.file)?;
+    let values = patches
+        .iter()
+        .map(|p| match a.scalar {
+            ScalarKind::Exact => eval_with(p, &params),
+            ScalarKind::F64 => eval_with(
+                &p.to_f64(),
+                &params.iter().map(Ordered::to_f64).collect::<Vec<_>>(),
+            ),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(one_or_many(values))
+}
+
+fn eval_with<T: JsonScalar + Ordered>(p: &Patch<T>, params: &[T]) -> Result<Value, Error> {
+    let want = if matches!(p, Patch::Curve(_)) { 1 } else { 2 };
+    if params.len() != want {
+        return Err(Error::Shape(format!(
+            "a {} takes {want} parameter(s) in --at, not {}",
+            p.kind(),
+            params.len()
+        )));
+    }
+    let point = match p {
+        Patch::Curve(c) => c.eval(&params[0])?,
+        Patch::Rect(r) => r.eval(&params[0], &params[1])?,
+        Patch::Tri(t) => t.eval(&params[0], &params[1])?,
+    };
+    Ok(json!({ "point": point_to_json(&point) }))
+}

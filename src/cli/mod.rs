@@ -1,0 +1,106 @@
+//! The command line (DESIGN §5): subcommands read the JSON interchange
+//! format (a path, or `-` for standard input) and write JSON to standard
+//! output. Exit codes: 0 success, 1 a `prove` claim off its expected
+//! verdict, 2 bad input (one line on standard error). Never a panic.
+//!
+//! Exact arithmetic is the default; `--scalar f64` selects floats.
+
+use crate::error::Error;
+use crate::io::{read_patches, Patch};
+use clap::{Parser, Subcommand, ValueEnum};
+use num_rational::BigRational;
+use serde_json::Value;
+use std::io::Read;
+
+mod eval;
+mod prove;
+mod transform;
+
+/// Rational Bézier curves and patches, exactly.
+#[derive(Parser, Debug)]
+#[command(name = "exact-bezier", version, about)]
+pub struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+/// Which scalar a command computes with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum, Default)]
+pub enum ScalarKind {
+    /// Exact rationals (default).
+    #[default]
+    Exact,
+    /// IEEE double precision.
+    F64,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Evaluate a curve or patch: {"point": [...]}.
+    Eval(eval::Args),
+    /// Reparameterize: linear Möbius map (--mobius ALPHA[,BETA]).
+    Reparam(transform::ReparamArgs),
+    /// Raise the degree (--by R[,S]).
+    Elevate(transform::ElevateArgs),
+    /// Run every proof in proofs/ and print one line per claim.
+    Prove(prove::Args),
+}
+
+/// Run the command line; returns the process exit code.
+pub fn main() -> i32 {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            let _ = e.print();
+            return if e.use_stderr() { 2 } else { 0 };
+        }
+    };
+    let result = match cli.command {
+        Command::Eval(a) => eval::run(&a),
+        Command::Reparam(a) => transform::reparam(&a),
+        Command::Elevate(a) => transform::elevate(&a),
+        Command::Prove(a) => return prove::run(&a),
+    };
+    match result {
+        Ok(v) => {
+            println!("{}", serde_json::to_string_pretty(&v).unwrap_or_default());
+            0
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            2
+        }
+    }
+}
+
+/// Read the text of `path` (`-` for standard input).
+pub(crate) fn read_input(path: &str) -> Result<String, Error> {
+    if path == "-" {
+        let mut s = String::new();
+        std::io::stdin()
+            .read_to_string(&mut s)
+            .map_err(|e| Error::Format(format!("cannot read standard input: {e}")))?;
+        Ok(s)
+    } else {
+        std::fs::read_to_string(path).map_err(|e| Error::Format(format!("cannot read {path}: {e}")))
+    }
+}
+
+/// Read the patches of `path`.
+pub(crate) fn load(path: &str) -> Result<Vec<Patch<BigRational>>, Error> {
+    read_patches(&read_input(path)?)
+}
+
+/// Parse a comma-separated list of exact numbers (`1/3,0.25`).
+pub(crate) fn parse_list(text: &str) -> Result<Vec<BigRational>, Error> {
+    text.split(',').map(crate::io::parse_rational).collect()
+}
+
+/// One value for a single patch, an array for several.
+pub(crate) fn one_or_many(mut values: Vec<Value>) -> Value {
+    if values.len() == 1 {
+        values.swap_remove(0)
+    } else {
+        Value::Array(values)
+    }
+}

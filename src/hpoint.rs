@@ -1,0 +1,168 @@
+//! [`HPoint`]: a homogeneous (weighted) control point `(w·P, w)`.
+//!
+//! Storing `w·P` and `w` side by side turns every rational Bézier algorithm
+//! into a polynomial one: de Casteljau, blossoms, elevation and subdivision
+//! act on the `dim + 1` coordinates alike and need only ring operations.
+//! Division happens once, in [`HPoint::project`].
+
+use crate::error::Error;
+use crate::scalar::{Field, Scalar, Tolerance};
+
+/// A homogeneous point: `coords = [w·x₁, …, w·x_d, w]` (weight last).
+///
+/// # Examples
+///
+/// ```
+/// use exact_bezier::{HPoint, ratio};
+/// use num_rational::BigRational;
+/// let p: HPoint<BigRational> = HPoint::from_point(&[ratio(1, 2), ratio(3, 1)], &ratio(2, 1));
+/// assert_eq!(p.coords, vec![ratio(1, 1), ratio(6, 1), ratio(2, 1)]);
+/// assert_eq!(p.project().unwrap(), vec![ratio(1, 2), ratio(3, 1)]);
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct HPoint<T> {
+    /// `[w·x₁, …, w·x_d, w]`.
+    pub coords: Vec<T>,
+}
+
+impl<T: Scalar> HPoint<T> {
+    /// `(w·P, w)` from a Cartesian point `P` and weight `w`.
+    pub fn from_point(point: &[T], weight: &T) -> Self {
+        let mut coords: Vec<T> = point.iter().map(|x| x.clone() * weight).collect();
+        coords.push(weight.clone());
+        HPoint { coords }
+    }
+
+    /// The point `P` with weight 1.
+    pub fn from_cartesian(point: &[T]) -> Self {
+        Self::from_point(point, &T::one())
+    }
+
+    /// Spatial dimension `d` (the number of coordinates less the weight).
+    pub fn dim(&self) -> usize {
+        self.coords.len() - 1
+    }
+
+    /// The weight `w`.
+    pub fn weight(&self) -> &T {
+        &self.coords[self.coords.len() - 1]
+    }
+
+    /// The weighted coordinates `w·P`.
+    pub fn weighted(&self) -> &[T] {
+        &self.coords[..self.coords.len() - 1]
+    }
+
+    /// The zero vector of `d + 1` coordinates.
+    pub fn zero(dim: usize) -> Self {
+        HPoint {
+            coords: vec![T::zero(); dim + 1],
+        }
+    }
+
+    /// `(1 − t)·self + t·other`, the de Casteljau step.
+    pub fn lerp(&self, other: &Self, t: &T) -> Self {
+        let s = T::one() - t;
+        self.combine(&s, other, t)
+    }
+
+    /// `a·self + b·other`.
+    pub fn combine(&self, a: &T, other: &Self, b: &T) -> Self {
+        HPoint {
+            coords: self
+                .coords
+                .iter()
+                .zip(&other.coords)
+                .map(|(x, y)| x.clone() * a + &(y.clone() * b))
+                .collect(),
+        }
+    }
+
+    /// `k·self`.
+    pub fn scale(&self, k: &T) -> Self {
+        HPoint {
+            coords: self.coords.iter().map(|x| x.clone() * k).collect(),
+        }
+    }
+
+    /// `self + other`.
+    pub fn add(&self, other: &Self) -> Self {
+        HPoint {
+            coords: self
+                .coords
+                .iter()
+                .zip(&other.coords)
+                .map(|(x, y)| x.clone() + y)
+                .collect(),
+        }
+    }
+
+    /// `self − other`.
+    pub fn sub(&self, other: &Self) -> Self {
+        HPoint {
+            coords: self
+                .coords
+                .iter()
+                .zip(&other.coords)
+                .map(|(x, y)| x.clone() - y)
+                .collect(),
+        }
+    }
+
+    /// Are all coordinates zero (within `tol` for `f64`)?
+    pub fn is_zero_within(&self, tol: Tolerance) -> bool {
+        self.coords.iter().all(|x| x.is_zero_within(tol))
+    }
+
+    /// Do `self` and `other` represent the same projective point, i.e. is
+    /// `self.coords[i]·other.w = other.coords[i]·self.w` for all i? (Cross
+    /// multiplication: no division, valid for every scalar.)
+    pub fn same_projective_point(&self, other: &Self, tol: Tolerance) -> bool {
+        let (w1, w2) = (self.weight(), other.weight());
+        self.coords
+            .iter()
+            .zip(&other.coords)
+            .all(|(a, b)| (a.clone() * w2 - &(b.clone() * w1)).is_zero_within(tol))
+    }
+}
+
+impl<T> HPoint<T> {
+    /// Apply `f` to every coordinate (e.g. to change the scalar type).
+    pub fn map<U>(&self, f: &impl Fn(&T) -> U) -> HPoint<U> {
+        HPoint {
+            coords: self.coords.iter().map(f).collect(),
+        }
+    }
+}
+
+impl<T: Field> HPoint<T> {
+    /// The Cartesian point `w·P / w`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::PointAtInfinity`] when the weight is zero.
+    pub fn project(&self) -> Result<Vec<T>, Error> {
+        let w = self.weight();
+        if w.is_zero() {
+            return Err(Error::PointAtInfinity);
+        }
+        Ok(self.weighted().iter().map(|x| x.clone() / w).collect())
+    }
+}
+
+/// One de Casteljau pass over a row of homogeneous points:
+/// `b_i^{k} = (1 − t)·b_i^{k−1} + t·b_{i+1}^{k−1}`; returns `b_0^n`.
+///
+/// **Panics if `points` is empty.**
+///
+/// Reference: source 001 (lecture), "de Casteljau算法", P_i^k recursion.
+pub fn de_casteljau<T: Scalar>(points: &[HPoint<T>], t: &T) -> HPoint<T> {
+    let s = T::one() - t;
+    let mut row: Vec<HPoint<T>> = points.to_vec();
+    for k in (1..row.len()).rev() {
+        for i in 0..k {
+            row[i] = row[i].combine(&s, &row[i + 1], t);
+        }
+    }
+    row.swap_remove(0)
+}
