@@ -222,13 +222,18 @@ fn read_curve(obj: &Map<String, Value>) -> Result<RationalCurve<BigRational>, Er
     RationalCurve::new(points, weights)
 }
 
+/// Rows of exact Cartesian points.
+type PointGrid = Vec<Vec<Vec<BigRational>>>;
+/// Rows of exact weights.
+type WeightGrid = Vec<Vec<BigRational>>;
+
 /// Read a grid of rows whose lengths are given by `row_len(j)`.
 fn read_grid(
     obj: &Map<String, Value>,
     rows: usize,
     row_len: impl Fn(usize) -> usize,
     label: impl Fn(usize, usize) -> String,
-) -> Result<(Vec<Vec<Vec<BigRational>>>, Vec<Vec<BigRational>>), Error> {
+) -> Result<(PointGrid, WeightGrid), Error> {
     let pts = array(
         obj.get("points").ok_or_else(|| missing("points"))?,
         "points",

@@ -58,6 +58,7 @@ pub use io::{
 pub use poly::Poly;
 pub use rect::RectPatch;
 pub use scalar::{
-    binomial, binomial_scalar, ratio, rational_to_f64, Field, Ordered, Scalar, Tolerance,
+    binomial, binomial_scalar, ratio, rational_root, rational_to_f64, Field, Ordered, Scalar,
+    Tolerance,
 };
 pub use tri::TriPatch;

@@ -151,7 +151,7 @@ impl Poly {
     pub fn as_constant(&self) -> Option<BigRational> {
         match self.terms.len() {
             0 => Some(BigRational::zero()),
-            1 => self.terms.get(&Monomial::default()).map(|c| c.clone()),
+            1 => self.terms.get(&Monomial::default()).cloned(),
             _ => None,
         }
     }

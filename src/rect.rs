@@ -11,7 +11,7 @@
 //!
 //! Reference: source 001 (lecture), "矩形域曲面"; source 000 eq. (1).
 
-use crate::curve::mobius_factors;
+use crate::curve::{elevate_once, mobius_factors};
 use crate::error::Error;
 use crate::hpoint::{de_casteljau, HPoint};
 use crate::scalar::{Field, Ordered, Scalar, Tolerance};
@@ -202,6 +202,49 @@ impl<T: Scalar> RectPatch<T> {
     }
 }
 
+/// # Symmetries and degree elevation
+impl<T: Scalar> RectPatch<T> {
+    /// Swap the parameters: the new patch at `(u, v)` is the old at `(v, u)`;
+    /// `P̃_{j,i} = P_{i,j}`.
+    pub fn swap_uv(&self) -> Self {
+        let (m, n) = self.degree();
+        let ctrl = (0..=n)
+            .map(|j| (0..=m).map(|i| self.ctrl[i][j].clone()).collect())
+            .collect();
+        RectPatch { ctrl }
+    }
+
+    /// Reverse u: the new patch at `(u, v)` is the old at `(1 − u, v)`.
+    pub fn reverse_u(&self) -> Self {
+        let mut ctrl = self.ctrl.clone();
+        ctrl.reverse();
+        RectPatch { ctrl }
+    }
+
+    /// Reverse v: the new patch at `(u, v)` is the old at `(u, 1 − v)`.
+    pub fn reverse_v(&self) -> Self {
+        let ctrl = self
+            .ctrl
+            .iter()
+            .map(|r| r.iter().rev().cloned().collect())
+            .collect();
+        RectPatch { ctrl }
+    }
+
+    /// Raise the bidegree by `(r, s)`, keeping every point: curve elevation
+    /// (source 001, "升阶") on every column (u) and every row (v).
+    pub fn elevate(&self, r: usize, s: usize) -> Self {
+        let rows: Vec<Vec<HPoint<T>>> = self.ctrl.iter().map(|row| elevate_row(row, s)).collect();
+        let swapped = RectPatch { ctrl: rows }.swap_uv();
+        let cols: Vec<Vec<HPoint<T>>> = swapped.ctrl.iter().map(|c| elevate_row(c, r)).collect();
+        RectPatch { ctrl: cols }.swap_uv()
+    }
+}
+
+fn elevate_row<T: Scalar>(row: &[HPoint<T>], times: usize) -> Vec<HPoint<T>> {
+    (0..times).fold(row.to_vec(), |acc, _| elevate_once(&acc))
+}
+
 /// # Cartesian results
 impl<T: Field> RectPatch<T> {
     /// The Cartesian point `X(u, v)`.
@@ -275,5 +318,18 @@ mod tests {
         let u = crate::RationalCurve::mobius_param(&a, &ss).unwrap();
         let v = crate::RationalCurve::mobius_param(&b, &tt).unwrap();
         assert_eq!(m.eval(&ss, &tt).unwrap(), s.eval(&u, &v).unwrap());
+        let one = ratio::<Q>(1, 1);
+        let e = s.elevate(2, 1);
+        assert_eq!(e.degree(), (3, 3));
+        assert_eq!(e.eval(&ss, &tt).unwrap(), s.eval(&ss, &tt).unwrap());
+        assert_eq!(
+            s.swap_uv().eval(&tt, &ss).unwrap(),
+            s.eval(&ss, &tt).unwrap()
+        );
+        let back = s.reverse_u().reverse_v();
+        assert_eq!(
+            back.eval(&(one.clone() - &ss), &(one - &tt)).unwrap(),
+            s.eval(&ss, &tt).unwrap()
+        );
     }
 }

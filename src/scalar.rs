@@ -249,6 +249,27 @@ pub fn ratio<T: Scalar>(p: i64, q: i64) -> T {
     T::from_rational(&BigRational::new(BigInt::from(p), BigInt::from(q)))
 }
 
+/// The exact n-th root of a non-negative rational, if it is rational:
+/// `Some(r)` with `r ≥ 0` and `rⁿ = q`, else `None` (also for `q < 0` or
+/// `n = 0`). Decided exactly with integer roots of numerator and denominator
+/// (a reduced fraction is an n-th power iff both parts are).
+///
+/// ```
+/// use exact_bezier::{rational_root, ratio};
+/// assert_eq!(rational_root(&ratio(8, 27), 3), Some(ratio(2, 3)));
+/// assert_eq!(rational_root(&ratio(2, 1), 2), None);
+/// ```
+pub fn rational_root(q: &BigRational, n: u32) -> Option<BigRational> {
+    if n == 0 || q.is_negative() {
+        return None;
+    }
+    let exact = |x: &BigInt| {
+        let r = x.nth_root(n);
+        (num_traits::pow(r.clone(), n as usize) == *x).then_some(r)
+    };
+    Some(BigRational::new(exact(q.numer())?, exact(q.denom())?))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
