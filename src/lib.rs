@@ -42,6 +42,8 @@ mod io;
 mod poly;
 mod rect;
 mod scalar;
+#[cfg(feature = "proptest")]
+pub mod strategy;
 mod tri;
 
 #[path = "../proofs/mod.rs"]

@@ -261,6 +261,49 @@ impl Poly {
         Some(acc)
     }
 
+    /// Reduce modulo the relation `name^d = replacement`: every power
+    /// `name^e` with `e ≥ d` is rewritten as `name^{e−d} · replacement`,
+    /// repeatedly, until the degree in `name` is below `d` (`replacement`
+    /// must have degree < d in `name`). This is the normal form in
+    /// `Q[…, name]/(name^d − replacement)`, e.g. `s² = 1 − c²` for
+    /// trigonometric identities or `r³ = radicand` for cube roots.
+    ///
+    /// **Panics if `d` is 0 or `replacement` has degree ≥ `d` in `name`.**
+    ///
+    /// ```
+    /// use exact_bezier::Poly;
+    /// let (s, c) = (Poly::var("s"), Poly::var("c"));
+    /// let one = Poly::from_int(1);
+    /// let rel = one.clone() - c.pow(2);
+    /// assert_eq!((s.pow(2) + c.pow(2)).reduce_power("s", 2, &rel), one);
+    /// assert_eq!(s.pow(3).reduce_power("s", 2, &rel), s.clone() - s * c.pow(2));
+    /// ```
+    pub fn reduce_power(&self, name: &str, d: u32, replacement: &Poly) -> Poly {
+        assert!(d > 0 && replacement.degree_in(name) < d, "invalid relation");
+        let id = intern(name);
+        let mut cur = self.clone();
+        while cur.degree_in(name) >= d {
+            let mut out = Poly::zero();
+            for (m, c) in &cur.terms {
+                let e = m.exponent(id);
+                let mut rest = m.without(id);
+                if e >= d {
+                    if e > d {
+                        rest = rest.mul(&Monomial(vec![(id, e - d)]));
+                    }
+                    let term = Poly {
+                        terms: BTreeMap::from([(rest, c.clone())]),
+                    };
+                    out = out + term * replacement;
+                } else {
+                    out.add_term(m.clone(), c.clone());
+                }
+            }
+            cur = out;
+        }
+        cur
+    }
+
     /// Multiply by a rational constant.
     pub fn scale(&self, q: &BigRational) -> Poly {
         if q.is_zero() {
