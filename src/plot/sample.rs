@@ -240,7 +240,7 @@ fn piece(out: &mut Drawing, p: &Patch<f64>, dom: &Domain, color: usize, d: Densi
     if d.speed {
         for (s, t) in dom.nodes(d.iso) {
             let at = point(p, dom.at(s, t))?;
-            out.dots.push(Dot { role: Role::Speed, color, at, radius: 2.0 });
+            out.dots.push(Dot { role: Role::Speed, color, at, radius: 2.5 });
         }
     }
     Ok(())
