@@ -23,8 +23,10 @@
 //! scalars (and symbolic for `Poly`).
 //!
 //! Where the normal vanishes (a collapsed edge of a degenerate patch, where
-//! `X_u × X_v = 0`), the vertex gets the normalized sum of the face normals
-//! of its triangles instead; this fallback is the only non-analytic step.
+//! `X_u × X_v = 0`), the vertex takes the exact normal at the parameter
+//! moved 10⁻⁶ (then 10⁻³) of the way toward the domain centre: the limit
+//! normal along that path. A patch degenerate on a whole neighbourhood
+//! (collapsed to a curve) keeps the zero vector there.
 //!
 //! Reference: source 001 (lecture), derivatives of Bézier curves and
 //! "三角域Bézier曲面" (directional derivatives from the de Casteljau levels).
@@ -274,10 +276,11 @@ impl Mesh {
     pub fn from_rect<T: Ordered>(patch: &RectPatch<T>, density: usize) -> Result<Mesh, Error> {
         let n = check_density(density)?;
         let mut mesh = Mesh::default();
+        let jet = |u: &T, v: &T| rect_jet(patch, u, v);
+        let centre = (ratio(1, 2), ratio(1, 2));
         for i in 0..=n {
             for j in 0..=n {
-                let jet = rect_jet(patch, &ratio(i as i64, n as i64), &ratio(j as i64, n as i64));
-                mesh.push_vertex(&jet)?;
+                mesh.push_vertex(&jet, grid_point(i, j, n), &centre)?;
             }
         }
         let id = |i: usize, j: usize| i * (n + 1) + j;
@@ -288,7 +291,6 @@ impl Mesh {
                 mesh.triangles.push([a, c, d]);
             }
         }
-        mesh.repair_normals();
         Ok(mesh)
     }
 
@@ -300,12 +302,13 @@ impl Mesh {
     pub fn from_tri<T: Ordered>(patch: &TriPatch<T>, density: usize) -> Result<Mesh, Error> {
         let n = check_density(density)?;
         let mut mesh = Mesh::default();
+        let jet = |u: &T, v: &T| tri_jet(patch, u, v);
+        let centre = (ratio(1, 3), ratio(1, 3));
         let mut start = Vec::with_capacity(n + 1);
         for j in 0..=n {
             start.push(mesh.positions.len());
             for i in 0..=n - j {
-                let jet = tri_jet(patch, &ratio(i as i64, n as i64), &ratio(j as i64, n as i64));
-                mesh.push_vertex(&jet)?;
+                mesh.push_vertex(&jet, grid_point(i, j, n), &centre)?;
             }
         }
         let id = |i: usize, j: usize| start[j] + i;
@@ -318,7 +321,6 @@ impl Mesh {
                 }
             }
         }
-        mesh.repair_normals();
         Ok(mesh)
     }
 
@@ -331,48 +333,34 @@ impl Mesh {
             .extend(other.triangles.iter().map(|t| t.map(|k| k + base)));
     }
 
-    fn push_vertex<T: Ordered>(&mut self, jet: &Jet<T>) -> Result<(), Error> {
-        let x = jet.value.project()?;
+    /// Add the vertex at `(u, v)` with its unit normal (see the module
+    /// docs for collapsed points).
+    fn push_vertex<T: Ordered>(
+        &mut self,
+        jet: &impl Fn(&T, &T) -> Jet<T>,
+        (u, v): (T, T),
+        centre: &(T, T),
+    ) -> Result<(), Error> {
+        let here = jet(&u, &v);
+        let x = here.value.project()?;
         let mut p = [0.0; 3];
         for (slot, c) in p.iter_mut().zip(&x) {
             *slot = c.to_f64();
         }
-        let tu = tangent3(&jet.value, &jet.du)?.map(|c| c.to_f64());
-        let tv = tangent3(&jet.value, &jet.dv)?.map(|c| c.to_f64());
-        let nd = cross(&tu, &tv);
-        let mut n = [nd[0], nd[1], nd[2]];
-        if p.iter().chain(&n).any(|c| !c.is_finite()) {
-            return Err(Error::NotFinite(format!(
-                "mesh vertex {p:?} or its normal is not finite"
-            )));
+        let mut n = unit_normal(&here)?;
+        for eps in [ratio::<T>(1, 1_000_000), ratio(1, 1000)] {
+            if n != [0.0; 3] {
+                break;
+            }
+            let toward = |a: &T, c: &T| a.clone() + &((c.clone() - a) * &eps);
+            n = unit_normal(&jet(&toward(&u, &centre.0), &toward(&v, &centre.1)))?;
         }
-        // A collapsed edge: X_u × X_v vanishes relative to |X_u|·|X_v|
-        // (f64 rounding leaves a tiny, meaningless remainder).
-        if norm(n) <= DEGENERATE * norm(tu) * norm(tv) {
-            n = [0.0; 3];
+        if p.iter().any(|c| !c.is_finite()) {
+            return Err(Error::NotFinite(format!("mesh vertex {p:?} is not finite")));
         }
         self.positions.push(p);
-        self.normals.push(normalize(n));
+        self.normals.push(n);
         Ok(())
-    }
-
-    /// Replace zero normals (collapsed edges) by the normalized sum of the
-    /// adjacent face normals.
-    fn repair_normals(&mut self) {
-        let mut sums = vec![[0.0; 3]; self.positions.len()];
-        for t in &self.triangles {
-            let f = self.face_normal(t);
-            for &k in t {
-                for (s, c) in sums[k].iter_mut().zip(f) {
-                    *s += c;
-                }
-            }
-        }
-        for (n, s) in self.normals.iter_mut().zip(sums) {
-            if *n == [0.0; 3] {
-                *n = normalize(s);
-            }
-        }
     }
 
     /// The (unnormalized) face normal `(b − a) × (c − a)`.
@@ -409,7 +397,11 @@ impl Mesh {
         let mut s = String::from("solid exact_bezier\n");
         for t in &self.triangles {
             let n = normalize(self.face_normal(t));
-            let _ = writeln!(s, "  facet normal {} {} {}\n    outer loop", n[0], n[1], n[2]);
+            let _ = writeln!(
+                s,
+                "  facet normal {} {} {}\n    outer loop",
+                n[0], n[1], n[2]
+            );
             for &k in t {
                 let p = self.positions[k];
                 let _ = writeln!(s, "      vertex {} {} {}", p[0], p[1], p[2]);
@@ -438,6 +430,27 @@ impl Mesh {
         }
         s
     }
+}
+
+/// The unit normal at a jet, or zero where `X_u × X_v` vanishes relative
+/// to `|X_u|·|X_v|` (f64 rounding leaves a tiny, meaningless remainder).
+fn unit_normal<T: Ordered>(jet: &Jet<T>) -> Result<[f64; 3], Error> {
+    let tu = tangent3(&jet.value, &jet.du)?.map(|c| c.to_f64());
+    let tv = tangent3(&jet.value, &jet.dv)?.map(|c| c.to_f64());
+    let c = cross(&tu, &tv);
+    let n = [c[0], c[1], c[2]];
+    if n.iter().any(|c| !c.is_finite()) {
+        return Err(Error::NotFinite(format!("the normal {n:?} is not finite")));
+    }
+    if norm(n) <= DEGENERATE * norm(tu) * norm(tv) {
+        return Ok([0.0; 3]);
+    }
+    Ok(normalize(n))
+}
+
+/// `(i/N, j/N)`.
+fn grid_point<T: Ordered>(i: usize, j: usize, n: usize) -> (T, T) {
+    (ratio(i as i64, n as i64), ratio(j as i64, n as i64))
 }
 
 fn check_density(density: usize) -> Result<usize, Error> {

@@ -195,7 +195,10 @@ fn projections_map_as_documented() {
 fn pixels(png: &[u8], w: u32, h: u32, rgb: [u8; 3]) -> (usize, usize) {
     let pm = Pixmap::decode_png(png).expect("PNG decodes");
     assert_eq!((pm.width(), pm.height()), (w, h));
-    let ink = pm.pixels().iter().filter(|p| p.red() < 200 || p.green() < 200 || p.blue() < 200);
+    let ink = pm
+        .pixels()
+        .iter()
+        .filter(|p| p.red() < 200 || p.green() < 200 || p.blue() < 200);
     let near = |p: &&resvg::tiny_skia::PremultipliedColorU8| {
         let c = p.demultiply();
         [c.red(), c.green(), c.blue()]
@@ -225,9 +228,15 @@ fn png_decodes_to_the_size_asked_with_both_split_colours() {
 fn bad_options_are_errors() {
     let p = patches(EXAMPLE1);
     for o in [
-        PlotOptions { width: 0, ..opts(4) },
+        PlotOptions {
+            width: 0,
+            ..opts(4)
+        },
         PlotOptions { iso: 0, ..opts(4) },
-        PlotOptions { samples: 0, ..opts(4) },
+        PlotOptions {
+            samples: 0,
+            ..opts(4)
+        },
     ] {
         assert!(plot_svg(&p, &o).is_err());
     }
@@ -253,9 +262,23 @@ fn cli_writes_svg_and_png_and_rejects_bad_requests() {
     let svg = d.join("e1.svg");
     let png = d.join("e1.png");
     let fixture = "tests/fixtures/yang_yong_example1.json";
-    for (out, extra) in [(&svg, vec!["--view", "-60,30"]), (&png, vec!["--plane", "xz"])] {
+    for (out, extra) in [
+        (&svg, vec!["--view", "-60,30"]),
+        (&png, vec!["--plane", "xz"]),
+    ] {
         let st = bin()
-            .args(["plot", fixture, "-o", out.to_str().unwrap(), "--iso", "4", "--width", "300", "--height", "200"])
+            .args([
+                "plot",
+                fixture,
+                "-o",
+                out.to_str().unwrap(),
+                "--iso",
+                "4",
+                "--width",
+                "300",
+                "--height",
+                "200",
+            ])
             .args(extra)
             .output()
             .unwrap();
@@ -264,12 +287,22 @@ fn cli_writes_svg_and_png_and_rejects_bad_requests() {
         assert_eq!(report["patches"], 1);
     }
     let s = Svg::parse(&std::fs::read_to_string(&svg).unwrap());
-    assert_eq!((s.width, s.height, s.count("polyline", "line")), (300.0, 200.0, 10));
+    assert_eq!(
+        (s.width, s.height, s.count("polyline", "line")),
+        (300.0, 200.0, 10)
+    );
     assert!(pixels(&std::fs::read(&png).unwrap(), 300, 200, [0, 0, 0]).0 > 300);
     for bad in [
         vec!["plot", fixture, "-o", "x.pdf"],
         vec!["plot", fixture, "-o", "x.svg", "--view", "1,2,3"],
-        vec!["plot", fixture, "-o", "x.svg", "--split", "0.3,0.5,0.3,0.5,0.5,0.5"],
+        vec![
+            "plot",
+            fixture,
+            "-o",
+            "x.svg",
+            "--split",
+            "0.3,0.5,0.3,0.5,0.5,0.5",
+        ],
         vec!["plot", "no-such-file.json", "-o", "x.svg"],
     ] {
         let out = bin().args(&bad).output().unwrap();
@@ -285,7 +318,11 @@ fn gallery_regenerates_every_entry() {
         .args(["figures", "--out", d.to_str().unwrap()])
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let manifest: serde_json::Value =
         serde_json::from_str(include_str!("../docs/figures/gallery.json")).unwrap();
     let names: Vec<&str> = manifest

@@ -64,7 +64,10 @@ impl Args {
             samples: self.samples,
             speed: self.speed,
             net: !self.no_net,
-            split: self.split.as_deref().map_or(Ok(Split::None), Split::parse)?,
+            split: self
+                .split
+                .as_deref()
+                .map_or(Ok(Split::None), Split::parse)?,
             title: self.title.clone().unwrap_or_else(|| self.files.join(" + ")),
         })
     }

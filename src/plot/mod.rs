@@ -163,7 +163,10 @@ impl PlotOptions {
 /// that does not fit a patch kind; [`Error::NotFinite`] /
 /// [`Error::PointAtInfinity`] when a point cannot be drawn (more than 3
 /// coordinates, or a zero weight on the curve).
-pub fn plot_svg<T: Ordered + Display>(patches: &[Patch<T>], opts: &PlotOptions) -> Result<String, Error> {
+pub fn plot_svg<T: Ordered + Display>(
+    patches: &[Patch<T>],
+    opts: &PlotOptions,
+) -> Result<String, Error> {
     opts.check()?;
     let density = sample::Density {
         iso: opts.iso,
@@ -183,7 +186,13 @@ pub fn plot_svg<T: Ordered + Display>(patches: &[Patch<T>], opts: &PlotOptions) 
     } else {
         Projection::DEFAULT_3D
     });
-    Ok(svg::write(&drawing, proj, opts.width, opts.height, &opts.title))
+    Ok(svg::write(
+        &drawing,
+        proj,
+        opts.width,
+        opts.height,
+        &opts.title,
+    ))
 }
 
 /// The PNG picture of `patches`: [`plot_svg`] rasterized (labels omitted).
@@ -191,6 +200,9 @@ pub fn plot_svg<T: Ordered + Display>(patches: &[Patch<T>], opts: &PlotOptions) 
 /// # Errors
 ///
 /// As [`plot_svg`].
-pub fn plot_png<T: Ordered + Display>(patches: &[Patch<T>], opts: &PlotOptions) -> Result<Vec<u8>, Error> {
+pub fn plot_png<T: Ordered + Display>(
+    patches: &[Patch<T>],
+    opts: &PlotOptions,
+) -> Result<Vec<u8>, Error> {
     png::rasterize(&plot_svg(patches, opts)?)
 }

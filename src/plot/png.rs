@@ -16,7 +16,11 @@ pub(crate) fn rasterize(svg: &str) -> Result<Vec<u8>, Error> {
     let size = tree.size().to_int_size();
     let mut pixmap = tiny_skia::Pixmap::new(size.width(), size.height())
         .ok_or_else(|| Error::Format("cannot rasterize an empty picture".into()))?;
-    resvg::render(&tree, tiny_skia::Transform::identity(), &mut pixmap.as_mut());
+    resvg::render(
+        &tree,
+        tiny_skia::Transform::identity(),
+        &mut pixmap.as_mut(),
+    );
     pixmap
         .encode_png()
         .map_err(|e| Error::Format(format!("cannot encode the PNG: {e}")))

@@ -89,7 +89,10 @@ impl Domain {
             [f(0), f(1)]
         };
         match self {
-            Domain::Quad(c) => mix(c, &[(1.0 - s) * (1.0 - t), s * (1.0 - t), s * t, (1.0 - s) * t]),
+            Domain::Quad(c) => mix(
+                c,
+                &[(1.0 - s) * (1.0 - t), s * (1.0 - t), s * t, (1.0 - s) * t],
+            ),
             Domain::Triangle(c) => mix(c, &[s, t, 1.0 - s - t]),
         }
     }
@@ -97,7 +100,8 @@ impl Domain {
     /// Local coordinates of the iso-lines, each a list of `(s, t)`.
     fn iso_lines(&self, d: Density) -> Vec<Vec<(f64, f64)>> {
         let (n, m) = (d.iso as f64, d.samples as f64);
-        let steps = |f: &dyn Fn(f64) -> (f64, f64)| (0..=d.samples).map(|k| f(k as f64 / m)).collect();
+        let steps =
+            |f: &dyn Fn(f64) -> (f64, f64)| (0..=d.samples).map(|k| f(k as f64 / m)).collect();
         let mut lines = Vec::new();
         match self {
             Domain::Quad(_) => {
@@ -219,28 +223,52 @@ fn curve(out: &mut Drawing, p: &Patch<f64>, color: usize, d: Density) -> Result<
     let points = (0..=d.samples)
         .map(|k| point(p, [k as f64 / m, 0.0]))
         .collect::<Result<_, _>>()?;
-    out.strokes.push(Stroke { role: Role::Surface, color, points });
+    out.strokes.push(Stroke {
+        role: Role::Surface,
+        color,
+        points,
+    });
     if d.speed {
         for k in 0..=d.iso {
             let at = point(p, [k as f64 / d.iso as f64, 0.0])?;
-            out.dots.push(Dot { role: Role::Speed, color, at, radius: 2.5 });
+            out.dots.push(Dot {
+                role: Role::Speed,
+                color,
+                at,
+                radius: 2.5,
+            });
         }
     }
     Ok(())
 }
 
-fn piece(out: &mut Drawing, p: &Patch<f64>, dom: &Domain, color: usize, d: Density) -> Result<(), Error> {
+fn piece(
+    out: &mut Drawing,
+    p: &Patch<f64>,
+    dom: &Domain,
+    color: usize,
+    d: Density,
+) -> Result<(), Error> {
     for line in dom.iso_lines(d) {
         let points = line
             .iter()
             .map(|&(s, t)| point(p, dom.at(s, t)))
             .collect::<Result<_, _>>()?;
-        out.strokes.push(Stroke { role: Role::Surface, color, points });
+        out.strokes.push(Stroke {
+            role: Role::Surface,
+            color,
+            points,
+        });
     }
     if d.speed {
         for (s, t) in dom.nodes(d.iso) {
             let at = point(p, dom.at(s, t))?;
-            out.dots.push(Dot { role: Role::Speed, color, at, radius: 2.5 });
+            out.dots.push(Dot {
+                role: Role::Speed,
+                color,
+                at,
+                radius: 2.5,
+            });
         }
     }
     Ok(())
@@ -253,25 +281,54 @@ fn net<T: Ordered + Display>(out: &mut Drawing, p: &Patch<T>, color: usize) -> R
         Patch::Curve(c) => (vec![c.points()?], vec![c.weights()]),
         Patch::Rect(r) => (r.points()?, r.weights()),
         Patch::Tri(t) => {
-            let pts = t.rows().iter().map(|row| row.iter().map(|h| h.project()).collect()).collect::<Result<_, _>>()?;
+            let pts = t
+                .rows()
+                .iter()
+                .map(|row| row.iter().map(|h| h.project()).collect())
+                .collect::<Result<_, _>>()?;
             (pts, t.weights())
         }
     };
     let grid: Vec<Vec<[f64; 3]>> = grid
         .iter()
-        .map(|row| row.iter().map(|x| to3(&x.iter().map(Ordered::to_f64).collect::<Vec<_>>())).collect())
+        .map(|row| {
+            row.iter()
+                .map(|x| to3(&x.iter().map(Ordered::to_f64).collect::<Vec<_>>()))
+                .collect()
+        })
         .collect::<Result<_, _>>()?;
     for line in net_lines(p, &grid) {
-        out.strokes.push(Stroke { role: Role::Net, color, points: line });
+        out.strokes.push(Stroke {
+            role: Role::Net,
+            color,
+            points: line,
+        });
     }
     let all_one = weights.iter().flatten().all(|w| *w == T::one());
-    let wmax = weights.iter().flatten().map(Ordered::to_f64).fold(0.0, f64::max);
+    let wmax = weights
+        .iter()
+        .flatten()
+        .map(Ordered::to_f64)
+        .fold(0.0, f64::max);
     for (row, wrow) in grid.iter().zip(&weights) {
         for (&at, w) in row.iter().zip(wrow) {
-            let radius = if all_one { 3.0 } else { 2.0 + 5.0 * (w.to_f64() / wmax).sqrt() };
-            out.dots.push(Dot { role: Role::Ctrl, color, at, radius });
+            let radius = if all_one {
+                3.0
+            } else {
+                2.0 + 5.0 * (w.to_f64() / wmax).sqrt()
+            };
+            out.dots.push(Dot {
+                role: Role::Ctrl,
+                color,
+                at,
+                radius,
+            });
             if !all_one && matches!(p, Patch::Curve(_)) {
-                out.labels.push(Label { color, at, text: format!("w={w}") });
+                out.labels.push(Label {
+                    color,
+                    at,
+                    text: format!("w={w}"),
+                });
             }
         }
     }

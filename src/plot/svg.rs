@@ -31,7 +31,13 @@ fn escape(text: &str) -> String {
 
 /// The SVG document for `drawing` seen through `proj`, fitted into
 /// `width × height` pixels; `title` goes into a `<title>` element.
-pub(crate) fn write(drawing: &Drawing, proj: Projection, width: u32, height: u32, title: &str) -> String {
+pub(crate) fn write(
+    drawing: &Drawing,
+    proj: Projection,
+    width: u32,
+    height: u32,
+    title: &str,
+) -> String {
     let (w, h) = (f64::from(width), f64::from(height));
     let flat = drawing
         .strokes
@@ -48,7 +54,10 @@ pub(crate) fn write(drawing: &Drawing, proj: Projection, width: u32, height: u32
         r#"<svg xmlns="http://www.w3.org/2000/svg" version="1.1" width="{width}" height="{height}" viewBox="0 0 {width} {height}">"#
     );
     let _ = writeln!(s, "<title>{}</title>", escape(title));
-    let _ = writeln!(s, r#"<rect x="0" y="0" width="{width}" height="{height}" fill="white"/>"#);
+    let _ = writeln!(
+        s,
+        r#"<rect x="0" y="0" width="{width}" height="{height}" fill="white"/>"#
+    );
     // Nets under the lines, points on top.
     for role in [Role::Net, Role::Surface] {
         for st in drawing.strokes.iter().filter(|st| st.role == role) {
@@ -61,7 +70,9 @@ pub(crate) fn write(drawing: &Drawing, proj: Projection, width: u32, height: u32
                 })
                 .collect();
             let style = match role {
-                Role::Net => r#"class="net" stroke-width="1" stroke-opacity="0.45" stroke-dasharray="5 3""#,
+                Role::Net => {
+                    r#"class="net" stroke-width="1" stroke-opacity="0.45" stroke-dasharray="5 3""#
+                }
                 _ => r#"class="line" stroke-width="1.6""#,
             };
             let _ = writeln!(

@@ -37,7 +37,10 @@ pub enum Plane {
 
 impl Projection {
     /// The default for 3D input: azimuth −60°, elevation 30°.
-    pub const DEFAULT_3D: Projection = Projection::View { az: -60.0, el: 30.0 };
+    pub const DEFAULT_3D: Projection = Projection::View {
+        az: -60.0,
+        el: 30.0,
+    };
 
     /// The picture-plane point of `p` (y up).
     ///
@@ -58,7 +61,10 @@ impl Projection {
             Projection::View { az, el } => {
                 let (sa, ca) = az.to_radians().sin_cos();
                 let (se, ce) = el.to_radians().sin_cos();
-                [-sa * p[0] + ca * p[1], ce * p[2] - se * (ca * p[0] + sa * p[1])]
+                [
+                    -sa * p[0] + ca * p[1],
+                    ce * p[2] - se * (ca * p[0] + sa * p[1]),
+                ]
             }
         }
     }
@@ -73,7 +79,9 @@ impl Projection {
             .split(',')
             .map(|s| s.trim().parse::<f64>())
             .collect::<Result<_, _>>()
-            .map_err(|_| Error::BadNumber(format!("--view wants AZ,EL in degrees, not {text:?}")))?;
+            .map_err(|_| {
+                Error::BadNumber(format!("--view wants AZ,EL in degrees, not {text:?}"))
+            })?;
         match nums[..] {
             [az, el] if az.is_finite() && el.is_finite() => Ok(Projection::View { az, el }),
             _ => Err(Error::BadNumber(format!(
@@ -114,7 +122,12 @@ impl Frame {
     /// Fit the bounding box of `points` into `width × height` pixels with
     /// `margin` pixels on each side, centred. A single point (or none) is
     /// placed in the centre.
-    pub(crate) fn fit(points: impl Iterator<Item = [f64; 2]>, width: f64, height: f64, margin: f64) -> Frame {
+    pub(crate) fn fit(
+        points: impl Iterator<Item = [f64; 2]>,
+        width: f64,
+        height: f64,
+        margin: f64,
+    ) -> Frame {
         let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
         for p in points {
             for k in 0..2 {
@@ -135,12 +148,18 @@ impl Frame {
         let centre = [(lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0];
         Frame {
             scale,
-            offset: [width / 2.0 - scale * centre[0], height / 2.0 + scale * centre[1]],
+            offset: [
+                width / 2.0 - scale * centre[0],
+                height / 2.0 + scale * centre[1],
+            ],
         }
     }
 
     /// The pixel position of a picture-plane point.
     pub(crate) fn apply(&self, p: [f64; 2]) -> [f64; 2] {
-        [self.offset[0] + self.scale * p[0], self.offset[1] - self.scale * p[1]]
+        [
+            self.offset[0] + self.scale * p[0],
+            self.offset[1] - self.scale * p[1],
+        ]
     }
 }
