@@ -145,7 +145,6 @@ fn make(e: &Entry, out: &str) -> Result<String, Error> {
         }
         files.push(file);
     }
-    let mut line = String::new();
     for ext in ["svg", "png"] {
         let target = format!("{out}/{}.{ext}", e.name);
         let argv = std::iter::once("plot".to_string())
@@ -156,12 +155,13 @@ fn make(e: &Entry, out: &str) -> Result<String, Error> {
         let parsed = PlotLine::try_parse_from(argv)
             .map_err(|err| Error::Format(format!("gallery entry {}: {err}", e.name)))?;
         plot_cmd::run(&parsed.args)?;
-        line = format!(
-            "exact-bezier plot {} -o {target} {}",
-            files.join(" "),
-            e.args.join(" ")
-        );
     }
+    let line = format!(
+        "exact-bezier plot {} -o {out}/{}.png {}",
+        files.join(" "),
+        e.name,
+        e.args.join(" ")
+    );
     let mut s = format!(
         "## {}\n\n{}\n\n![{}]({}.png)\n\n",
         e.name, e.caption, e.name, e.name
@@ -169,11 +169,7 @@ fn make(e: &Entry, out: &str) -> Result<String, Error> {
     for h in how {
         let _ = writeln!(s, "- input {h}");
     }
-    let _ = writeln!(
-        s,
-        "- `{}`\n",
-        line.trim_end().replace(&format!("{out}/"), "")
-    );
+    let _ = writeln!(s, "- `{}`\n", line.trim_end());
     Ok(s)
 }
 
