@@ -225,6 +225,18 @@ fn png_decodes_to_the_size_asked_with_both_split_colours() {
 }
 
 #[test]
+fn the_smallest_picture_stays_inside_its_view_box() {
+    let o = PlotOptions {
+        width: 16,
+        height: 16,
+        speed: true,
+        ..opts(2)
+    };
+    let svg = Svg::parse(&plot_svg(&patches(EXAMPLE1), &o).unwrap());
+    assert_eq!((svg.width, svg.height), (16.0, 16.0));
+}
+
+#[test]
 fn bad_options_are_errors() {
     let p = patches(EXAMPLE1);
     for o in [

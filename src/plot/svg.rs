@@ -14,7 +14,8 @@ const PALETTE: [&str; 8] = [
     "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2",
 ];
 
-/// Margin around the drawing, in pixels.
+/// Margin around the drawing, in pixels (at most a tenth of the shorter
+/// side, so small pictures keep a positive drawing area).
 const MARGIN: f64 = 30.0;
 
 fn color(k: usize) -> &'static str {
@@ -45,7 +46,7 @@ pub(crate) fn write(
         .flat_map(|s| s.points.iter())
         .chain(drawing.dots.iter().map(|d| &d.at))
         .map(|&p| proj.apply(p));
-    let frame = Frame::fit(flat, w, h, MARGIN);
+    let frame = Frame::fit(flat, w, h, MARGIN.min(w.min(h) / 10.0));
     let px = |p: [f64; 3]| frame.apply(proj.apply(p));
     let mut s = String::new();
     let _ = writeln!(s, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
