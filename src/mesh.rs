@@ -233,7 +233,8 @@ pub struct Mesh {
 /// # Construction
 impl Mesh {
     /// Mesh every rect and tri patch of `patches` at `density` steps per
-    /// parameter, in one mesh.
+    /// parameter, in one mesh (patches are not welded: a shared boundary
+    /// appears once per patch).
     ///
     /// # Errors
     ///

@@ -274,7 +274,7 @@ fn piece(
     Ok(())
 }
 
-/// Control polygon / net, control points sized by weight, and (curves)
+/// Control polygon / net, control points sized by |weight|, and (curves)
 /// weight labels when the weights are not all 1.
 fn net<T: Ordered + Display>(out: &mut Drawing, p: &Patch<T>, color: usize) -> Result<(), Error> {
     let (grid, weights): (Vec<Vec<Vec<T>>>, Vec<Vec<T>>) = match p {
@@ -308,14 +308,14 @@ fn net<T: Ordered + Display>(out: &mut Drawing, p: &Patch<T>, color: usize) -> R
     let wmax = weights
         .iter()
         .flatten()
-        .map(Ordered::to_f64)
+        .map(|w| w.to_f64().abs())
         .fold(0.0, f64::max);
     for (row, wrow) in grid.iter().zip(&weights) {
         for (&at, w) in row.iter().zip(wrow) {
             let radius = if all_one {
                 3.0
             } else {
-                2.0 + 5.0 * (w.to_f64() / wmax).sqrt()
+                2.0 + 5.0 * (w.to_f64().abs() / wmax).sqrt()
             };
             out.dots.push(Dot {
                 role: Role::Ctrl,
