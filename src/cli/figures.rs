@@ -13,9 +13,11 @@
 //! arguments and its standard output (patches in the DESIGN §4 format) is
 //! saved as `OUT/inputs/stem.json` (`stem-K.json` for the K-th of several)
 //! and used as the input. `args` are `plot` flags. Each entry gives
-//! `OUT/stem.svg` and `OUT/stem.png`, and `OUT/README.md` lists them all
-//! with their captions and commands.
+//! `OUT/stem.svg` and `OUT/stem.png`; an optional `"mesh": ["--density",
+//! "24", …]` (`mesh` flags) also gives `OUT/stem.obj`. `OUT/README.md`
+//! lists them all with their captions and commands.
 
+use super::mesh as mesh_cmd;
 use super::plot::{self as plot_cmd, write_output};
 use super::read_input;
 use crate::error::Error;
@@ -43,14 +45,39 @@ struct Entry {
     caption: String,
     inputs: Vec<Value>,
     args: Vec<String>,
+    mesh: Option<Vec<String>>,
 }
 
-/// `plot` arguments parsed the way the command line parses them.
+/// A `plot` or `mesh` command line, parsed as the real command line is.
 #[derive(Parser, Debug)]
-#[command(name = "plot")]
-struct PlotLine {
-    #[command(flatten)]
-    args: plot_cmd::Args,
+#[command(name = "exact-bezier")]
+struct Line {
+    #[command(subcommand)]
+    command: Sub,
+}
+
+#[derive(clap::Subcommand, Debug)]
+enum Sub {
+    Plot(plot_cmd::Args),
+    Mesh(mesh_cmd::Args),
+}
+
+/// Run `exact-bezier SUB FILES… -o TARGET EXTRA…`; returns its text.
+fn render(sub: &str, files: &[String], target: &str, extra: &[String]) -> Result<String, Error> {
+    let argv: Vec<String> = ["exact-bezier", sub]
+        .into_iter()
+        .map(String::from)
+        .chain(files.iter().cloned())
+        .chain(["-o".to_string(), target.to_string()])
+        .chain(extra.iter().cloned())
+        .collect();
+    let line = Line::try_parse_from(&argv)
+        .map_err(|err| Error::Format(format!("{}: {err}", argv.join(" "))))?;
+    match line.command {
+        Sub::Plot(a) => plot_cmd::run(&a)?,
+        Sub::Mesh(a) => mesh_cmd::run(&a)?,
+    };
+    Ok(argv.join(" "))
 }
 
 fn field<'a>(v: &'a Value, key: &str, entry: usize) -> Result<&'a Value, Error> {
@@ -94,6 +121,7 @@ fn entries(manifest: &Value) -> Result<Vec<Entry>, Error> {
                 args: e
                     .get("args")
                     .map_or(Ok(Vec::new()), |a| strings(a, "\"args\""))?,
+                mesh: e.get("mesh").map(|a| strings(a, "\"mesh\"")).transpose()?,
                 name,
             })
         })
@@ -145,23 +173,20 @@ fn make(e: &Entry, out: &str) -> Result<String, Error> {
         }
         files.push(file);
     }
-    for ext in ["svg", "png"] {
-        let target = format!("{out}/{}.{ext}", e.name);
-        let argv = std::iter::once("plot".to_string())
-            .chain(files.iter().cloned())
-            .chain(["-o".to_string(), target.clone()])
-            .chain(["--title".to_string(), e.caption.clone()])
-            .chain(e.args.iter().cloned());
-        let parsed = PlotLine::try_parse_from(argv)
-            .map_err(|err| Error::Format(format!("gallery entry {}: {err}", e.name)))?;
-        plot_cmd::run(&parsed.args)?;
+    let titled: Vec<String> = ["--title".to_string(), e.caption.clone()]
+        .into_iter()
+        .chain(e.args.iter().cloned())
+        .collect();
+    render("plot", &files, &format!("{out}/{}.svg", e.name), &titled)?;
+    let mut lines = vec![render(
+        "plot",
+        &files,
+        &format!("{out}/{}.png", e.name),
+        &e.args,
+    )?];
+    if let Some(m) = &e.mesh {
+        lines.push(render("mesh", &files, &format!("{out}/{}.obj", e.name), m)?);
     }
-    let line = format!(
-        "exact-bezier plot {} -o {out}/{}.png {}",
-        files.join(" "),
-        e.name,
-        e.args.join(" ")
-    );
     let mut s = format!(
         "## {}\n\n{}\n\n![{}]({}.png)\n\n",
         e.name, e.caption, e.name, e.name
@@ -169,7 +194,10 @@ fn make(e: &Entry, out: &str) -> Result<String, Error> {
     for h in how {
         let _ = writeln!(s, "- input {h}");
     }
-    let _ = writeln!(s, "- `{}`\n", line.trim_end());
+    for line in lines {
+        let _ = writeln!(s, "- `{line}`");
+    }
+    s.push('\n');
     Ok(s)
 }
 
