@@ -39,6 +39,8 @@ mod curve;
 mod error;
 mod hpoint;
 mod io;
+mod mesh;
+pub mod plot;
 mod poly;
 mod rect;
 mod scalar;
@@ -57,6 +59,7 @@ pub use io::{
     parse_json, parse_rational, patch_from_value, patch_to_json, point_to_json, read_patches,
     JsonScalar, Patch,
 };
+pub use mesh::{curve_jet, normal_direction, rect_jet, tri_jet, Jet, Mesh, MAX_DENSITY};
 pub use poly::Poly;
 pub use rect::RectPatch;
 pub use scalar::{

@@ -13,6 +13,9 @@ use serde_json::Value;
 use std::io::Read;
 
 mod eval;
+mod figures;
+mod mesh;
+mod plot;
 mod prove;
 mod transform;
 
@@ -44,6 +47,12 @@ enum Command {
     Elevate(transform::ElevateArgs),
     /// Run every proof in proofs/ and print one line per claim.
     Prove(prove::Args),
+    /// Draw curves and patches as SVG or PNG (-o OUT.svg|OUT.png).
+    Plot(plot::Args),
+    /// Triangulate patches with normals as OBJ, STL or PLY (-o OUT.obj).
+    Mesh(mesh::Args),
+    /// Regenerate the figure gallery (docs/figures/gallery.json).
+    Figures(figures::Args),
 }
 
 /// Run the command line; returns the process exit code.
@@ -60,6 +69,9 @@ pub fn main() -> i32 {
         Command::Reparam(a) => transform::reparam(&a),
         Command::Elevate(a) => transform::elevate(&a),
         Command::Prove(a) => return prove::run(&a),
+        Command::Plot(a) => plot::run(&a),
+        Command::Mesh(a) => mesh::run(&a),
+        Command::Figures(a) => figures::run(&a),
     };
     match result {
         Ok(v) => {

@@ -1,0 +1,56 @@
+//! `mesh FILE... -o OUT.obj|OUT.stl|OUT.ply [--density N] [--scalar exact|f64]`.
+
+use super::{load, ScalarKind};
+use crate::error::Error;
+use crate::mesh::Mesh;
+use serde_json::{json, Value};
+
+/// Arguments of `mesh`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Input files (JSON) of rect and tri patches; all go into one mesh.
+    #[arg(required = true)]
+    files: Vec<String>,
+    /// Output file: .obj (with vertex normals), .stl (ASCII, facet normals) or .ply (ASCII, vertex normals).
+    #[arg(short, long)]
+    output: String,
+    /// Steps per parameter: (N+1)² vertices per rect patch, (N+1)(N+2)/2 per tri patch.
+    #[arg(long, default_value_t = 32)]
+    density: usize,
+    /// Scalar for points and normals (exact: computed exactly, then rounded).
+    #[arg(long, value_enum, default_value = "f64")]
+    scalar: ScalarKind,
+}
+
+/// Write the mesh; reports `{"output", "vertices", "triangles"}`.
+pub fn run(a: &Args) -> Result<Value, Error> {
+    let mut patches = Vec::new();
+    for f in &a.files {
+        patches.extend(load(f)?);
+    }
+    let mesh = match a.scalar {
+        ScalarKind::Exact => Mesh::from_patches(&patches, a.density)?,
+        ScalarKind::F64 => {
+            let pf: Vec<_> = patches.iter().map(|p| p.to_f64()).collect();
+            Mesh::from_patches(&pf, a.density)?
+        }
+    };
+    let lower = a.output.to_ascii_lowercase();
+    let text = match lower.rsplit('.').next() {
+        Some("obj") => mesh.to_obj(),
+        Some("stl") => mesh.to_stl(),
+        Some("ply") => mesh.to_ply(),
+        _ => {
+            return Err(Error::Format(format!(
+                "the output {} must end in .obj, .stl or .ply",
+                a.output
+            )))
+        }
+    };
+    super::plot::write_output(&a.output, text.as_bytes())?;
+    Ok(json!({
+        "output": a.output,
+        "vertices": mesh.positions.len(),
+        "triangles": mesh.triangles.len(),
+    }))
+}
