@@ -124,7 +124,7 @@ fn algorithm_claims() -> Vec<Claim> {
             },
         ),
         over_degrees(
-            "degree elevation by r = 1, 2, 3 keeps every point (homogeneous curve unchanged)",
+            "degree elevation P*_i = (i/(n+1))P_{i−1} + (1 − i/(n+1))P_i, applied r = 1, 2, 3 times, keeps every point (homogeneous curve unchanged)",
             "001 lecture, 升阶",
             1..=6,
             "symbolic t and c_i",
@@ -409,11 +409,72 @@ fn invariant_claims() -> Vec<Claim> {
     )]
 }
 
+/// `p(t)/t` for a polynomial with `p(0) = 0` (shift of coefficients).
+fn div_by_t(p: &Poly) -> Poly {
+    let t = v("t");
+    (1..=p.degree_in("t")).fold(Poly::zero(), |acc, k| acc + p.coeff_of("t", k) * t.pow(k - 1))
+}
+
+/// Bézier's original basis `f_{i,n}(t) = (−t)ⁱ/(i−1)! · d^{i−1}/dt^{i−1} [((1−t)^e − 1)/t]`
+/// (`f_{0,n} = 1`) with exponent `e` (`n` correct, `n − 1` printed).
+fn bezier_f(i: usize, e: usize) -> Poly {
+    if i == 0 {
+        return Poly::one();
+    }
+    let t = v("t");
+    let inner = div_by_t(&((Poly::one() - &t).pow(e as u32) - Poly::one()));
+    let fact: i64 = (1..i as i64).product();
+    let sign = if i % 2 == 1 { -Poly::one() } else { Poly::one() };
+    sign * t.pow(i as u32) * nth_derivative(&inner, "t", i - 1) * crate::scalar::ratio::<Poly>(1, fact)
+}
+
+fn bezier_original_claims() -> Vec<Claim> {
+    let t = v("t");
+    let tail = |i: usize, n: usize| (i..=n).fold(Poly::zero(), |a, j| a + bernstein(j, n, &t));
+    let printed_fails = (1..=8).find_map(|n| {
+        (1..=n).find(|&i| bezier_f(i, n - 1) != tail(i, n)).map(|i| (n, i))
+    });
+    let corrected = over_degrees(
+        "Bézier's original form V(t) = Σ f_{i,n}(t) A_i (A_0 = P_0, A_i = P_i − P_{i−1}) with f_{i,n} = (−t)ⁱ/(i−1)! · d^{i−1}/dt^{i−1}[((1−t)ⁿ − 1)/t] is the Bernstein–Bézier curve",
+        "ours (corrects 001 lecture, Bézier曲线: 概念及性质)",
+        1..=8,
+        "symbolic t and P_i: f_{i,n} = Σ_{j≥i} B_{j,n} for i ≥ 1, hence Σ f_{i,n}A_i = Σ P_i B_{i,n}",
+        |n| {
+            let p: Vec<Poly> = (0..=n).map(|i| v(&format!("p{i}_0"))).collect();
+            if let Some(i) = (1..=n).find(|&i| bezier_f(i, n) != tail(i, n)) {
+                return Err(format!("f_{{{i},{n}}} ≠ Σ_{{j≥{i}}} B_{{j,{n}}}"));
+            }
+            let v_t = (0..=n).fold(Poly::zero(), |a, i| {
+                let a_i = if i == 0 { p[0].clone() } else { p[i].clone() - &p[i - 1] };
+                a + bezier_f(i, n) * a_i
+            });
+            let bez = (0..=n).fold(Poly::zero(), |a, i| a + bernstein(i, n, &t) * &p[i]);
+            if v_t == bez { Ok(()) } else { Err("V(t) ≠ Σ P_i B_{i,n}(t)".into()) }
+        },
+    );
+    let printed = Claim::check(
+        "Bézier's original basis as printed: f_{i,n}(t) = (−t)ⁱ/(i−1)! · d^{i−1}/dt^{i−1}[((1−t)^{n−1} − 1)/t] (i ≥ 1), so that V(t) = Σ f_{i,n}A_i is the Bézier curve",
+        "001 lecture, Bézier曲线: 概念及性质",
+        Verdict::Refuted,
+        printed_fails.is_none(),
+        match printed_fails {
+            Some((n, i)) => format!(
+                "n = {n}, i = {i}: printed f = {} but the curve needs Σ_{{j≥{i}}} B_{{j,{n}}} = {}; e.g. n = 1: printed f_{{1,1}} = 0, so V(t) = P_0 for every t instead of the segment. Correct exponent: (1−t)ⁿ",
+                bezier_f(i, n - 1),
+                tail(i, n)
+            ),
+            None => "printed formula agrees".into(),
+        },
+    );
+    vec![printed, corrected]
+}
+
 /// The family's claims.
 pub fn claims() -> Vec<Claim> {
     let mut all = algorithm_claims();
     all.extend(derivative_claims());
     all.extend(curvature_claims());
     all.extend(invariant_claims());
+    all.extend(bezier_original_claims());
     all
 }

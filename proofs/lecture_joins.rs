@@ -223,9 +223,39 @@ fn curvature_continuity_claim() -> Claim {
     )
 }
 
+/// The lecture's example Φ: `V0 + (V1−V0)t/3` on [0,1], then
+/// `V0 + (V1−V0)/3 + (t−1)·2(V1−V0)/3` on [1,2]: printed
+/// `Φ'(1⁻) = (V1−V0)/3`, `Φ'(1⁺) = 2(V1−V0)/3`, a straight line (G¹, not C¹).
+fn phi_example_claim() -> Claim {
+    let q = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+    // V0 = (0,0), V1 = (3,6): the pieces as linear Bézier curves over [0,1].
+    let first = RationalCurve::polynomial(vec![q(0, 0), q(1, 2)]).expect("2D points");
+    let second = RationalCurve::polynomial(vec![q(1, 2), q(3, 6)]).expect("2D points");
+    let d_minus = first.deriv(&ratio(1, 1), 1).expect("polynomial");
+    let d_plus = second.deriv(&ratio(0, 1), 1).expect("polynomial");
+    let j = join(&first, &second, Tolerance::EXACT).expect("same dimension");
+    let show = |p: &[BigRational]| format!("({}, {})", p[0], p[1]);
+    let agrees = d_minus == q(1, 2) && d_plus == q(2, 4) && j.g2 && j.alpha == Some(ratio(2, 1));
+    Claim::compare(
+        "Φ example: Φ'(1⁻) = (V1−V0)/3 ≠ Φ'(1⁺) = 2(V1−V0)/3, yet Φ is a straight line (geometrically smooth, not C¹)",
+        "001 lecture, 几何连续性 vs. 函数连续性",
+        Verdict::Reproduced,
+        agrees,
+        "Φ'(1⁻) = (V1−V0)/3, Φ'(1⁺) = 2(V1−V0)/3, a straight line",
+        &format!(
+            "with V0 = (0,0), V1 = (3,6): Φ'(1⁻) = {}, Φ'(1⁺) = {}; join G1 = {}, G2 = {}, α = {}",
+            show(&d_minus),
+            show(&d_plus),
+            j.g1,
+            j.g2,
+            j.alpha.as_ref().map_or("none".into(), |a| a.to_string())
+        ),
+    )
+}
+
 /// The family's claims.
 pub fn claims() -> Vec<Claim> {
-    let mut all = vec![g1_sign_claim(), corrected_g1_claim()];
+    let mut all = vec![phi_example_claim(), g1_sign_claim(), corrected_g1_claim()];
     all.extend(printed_g2_claims());
     all.push(corrected_g2_claim());
     all.push(curvature_continuity_claim());
