@@ -12,8 +12,12 @@ use num_rational::BigRational;
 use serde_json::Value;
 use std::io::Read;
 
+mod curvature;
+mod deriv;
 mod eval;
+mod join;
 mod prove;
+mod reduce;
 mod transform;
 
 /// Rational Bézier curves and patches, exactly.
@@ -44,6 +48,14 @@ enum Command {
     Elevate(transform::ElevateArgs),
     /// Run every proof in proofs/ and print one line per claim.
     Prove(prove::Args),
+    /// Derivative of a curve: {"order": K, "derivative": [...]}.
+    Deriv(deriv::Args),
+    /// Curvature of a curve: {"curvature_squared": κ² (exact), "curvature": κ (f64)}.
+    Curvature(curvature::Args),
+    /// G0/G1/G2 verdicts for the join of curve A's end to curve B's start.
+    Join(join::Args),
+    /// Lower the degree of a curve by one (--method forrest|farin|lsq|exact).
+    Reduce(reduce::Args),
 }
 
 /// Run the command line; returns the process exit code.
@@ -60,6 +72,10 @@ pub fn main() -> i32 {
         Command::Reparam(a) => transform::reparam(&a),
         Command::Elevate(a) => transform::elevate(&a),
         Command::Prove(a) => return prove::run(&a),
+        Command::Deriv(a) => deriv::run(&a),
+        Command::Curvature(a) => curvature::run(&a),
+        Command::Join(a) => join::run(&a),
+        Command::Reduce(a) => reduce::run(&a),
     };
     match result {
         Ok(v) => {
