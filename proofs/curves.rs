@@ -73,7 +73,13 @@ fn same(a: &HPoint<Poly>, b: &HPoint<Poly>) -> Result<(), String> {
         Ok(())
     } else {
         let diff = a.sub(b);
-        Err(format!("difference {:?}", diff.coords.iter().map(|x| super::abbreviate(&x.to_string())).collect::<Vec<_>>()))
+        Err(format!(
+            "difference {:?}",
+            diff.coords
+                .iter()
+                .map(|x| super::abbreviate(&x.to_string()))
+                .collect::<Vec<_>>()
+        ))
     }
 }
 
@@ -82,7 +88,10 @@ fn same_frac(a: &(Poly, Poly), b: &(Poly, Poly)) -> Result<(), String> {
     if d.is_zero() {
         Ok(())
     } else {
-        Err(format!("cross-multiplied difference {}", super::abbreviate(&d.to_string())))
+        Err(format!(
+            "cross-multiplied difference {}",
+            super::abbreviate(&d.to_string())
+        ))
     }
 }
 
@@ -92,7 +101,9 @@ fn bernstein_sum(c: &RationalCurve<Poly>, t: &Poly) -> HPoint<Poly> {
     c.ctrl()
         .iter()
         .enumerate()
-        .fold(HPoint::zero(c.dim()), |acc, (i, p)| acc.add(&p.scale(&bernstein(i, n, t))))
+        .fold(HPoint::zero(c.dim()), |acc, (i, p)| {
+            acc.add(&p.scale(&bernstein(i, n, t)))
+        })
 }
 
 fn algorithm_claims() -> Vec<Claim> {
@@ -337,7 +348,9 @@ fn cross3_sq(a: &[Poly], b: &[Poly]) -> Poly {
 }
 
 fn curvature_claims() -> Vec<Claim> {
-    let sub = |a: &[Poly], b: &[Poly]| -> Vec<Poly> { a.iter().zip(b).map(|(x, y)| x.clone() - y).collect() };
+    let sub = |a: &[Poly], b: &[Poly]| -> Vec<Poly> {
+        a.iter().zip(b).map(|(x, y)| x.clone() - y).collect()
+    };
     let norm_sq = |a: &[Poly]| a.iter().fold(Poly::zero(), |acc, x| acc + x.clone() * x);
     vec![
         over_degrees(
@@ -390,7 +403,12 @@ fn invariant_claims() -> Vec<Claim> {
             .mobius_invariants_frac()
             .into_iter()
             .zip(orig.mobius_invariants_frac())
-            .chain(moved.local_invariants_frac().into_iter().zip(orig.local_invariants_frac()));
+            .chain(
+                moved
+                    .local_invariants_frac()
+                    .into_iter()
+                    .zip(orig.local_invariants_frac()),
+            );
         for (a, b) in pairs {
             same_frac(&a, &b)?;
         }
@@ -412,7 +430,9 @@ fn invariant_claims() -> Vec<Claim> {
 /// `p(t)/t` for a polynomial with `p(0) = 0` (shift of coefficients).
 fn div_by_t(p: &Poly) -> Poly {
     let t = v("t");
-    (1..=p.degree_in("t")).fold(Poly::zero(), |acc, k| acc + p.coeff_of("t", k) * t.pow(k - 1))
+    (1..=p.degree_in("t")).fold(Poly::zero(), |acc, k| {
+        acc + p.coeff_of("t", k) * t.pow(k - 1)
+    })
 }
 
 /// Bézier's original basis `f_{i,n}(t) = (−t)ⁱ/(i−1)! · d^{i−1}/dt^{i−1} [((1−t)^e − 1)/t]`
@@ -424,15 +444,23 @@ fn bezier_f(i: usize, e: usize) -> Poly {
     let t = v("t");
     let inner = div_by_t(&((Poly::one() - &t).pow(e as u32) - Poly::one()));
     let fact: i64 = (1..i as i64).product();
-    let sign = if i % 2 == 1 { -Poly::one() } else { Poly::one() };
-    sign * t.pow(i as u32) * nth_derivative(&inner, "t", i - 1) * crate::scalar::ratio::<Poly>(1, fact)
+    let sign = if i % 2 == 1 {
+        -Poly::one()
+    } else {
+        Poly::one()
+    };
+    sign * t.pow(i as u32)
+        * nth_derivative(&inner, "t", i - 1)
+        * crate::scalar::ratio::<Poly>(1, fact)
 }
 
 fn bezier_original_claims() -> Vec<Claim> {
     let t = v("t");
     let tail = |i: usize, n: usize| (i..=n).fold(Poly::zero(), |a, j| a + bernstein(j, n, &t));
     let printed_fails = (1..=8).find_map(|n| {
-        (1..=n).find(|&i| bezier_f(i, n - 1) != tail(i, n)).map(|i| (n, i))
+        (1..=n)
+            .find(|&i| bezier_f(i, n - 1) != tail(i, n))
+            .map(|i| (n, i))
     });
     let corrected = over_degrees(
         "Bézier's original form V(t) = Σ f_{i,n}(t) A_i (A_0 = P_0, A_i = P_i − P_{i−1}) with f_{i,n} = (−t)ⁱ/(i−1)! · d^{i−1}/dt^{i−1}[((1−t)ⁿ − 1)/t] is the Bernstein–Bézier curve",

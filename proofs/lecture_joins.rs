@@ -79,7 +79,11 @@ fn printed_q(p: &[Vec<Poly>], printed_g1: bool) -> [Vec<Poly>; 3] {
     let n = p.len() - 1;
     let (a, b) = (v("alpha"), v("beta"));
     let (pn, pn1, pn2) = (&p[n], &p[n - 1], &p[n - 2]);
-    let sign = if printed_g1 { -Poly::one() } else { Poly::one() };
+    let sign = if printed_g1 {
+        -Poly::one()
+    } else {
+        Poly::one()
+    };
     let q1 = combo(&[Poly::one() + sign.clone() * &a, -(sign * &a)], &[pn, pn1]);
     let bn = b * ratio::<Poly>(1, n as i64 - 1);
     let a2 = a.clone() * &a;
@@ -210,7 +214,11 @@ fn curvature_continuity_claim() -> Claim {
         .zip(&b)
         .map(|(x, y)| y.clone() * &alpha * &alpha + &(x.clone() * &beta))
         .collect();
-    let norm6 = |x: &[Poly]| x.iter().fold(Poly::zero(), |s, y| s + y.clone() * y).pow_u32(3);
+    let norm6 = |x: &[Poly]| {
+        x.iter()
+            .fold(Poly::zero(), |s, y| s + y.clone() * y)
+            .pow_u32(3)
+    };
     let lhs = cross_norm_sq(&qa, &qb) * norm6(&a);
     let rhs = cross_norm_sq(&a, &b) * norm6(&qa);
     Claim::identity(

@@ -18,7 +18,10 @@ const MAX_N: usize = 8;
 fn sym(n: usize, prefix: &str) -> RationalCurve<Poly> {
     let ctrl = (0..=n)
         .map(|i| HPoint {
-            coords: vec![Poly::var(&format!("{prefix}q{i}")), Poly::var(&format!("{prefix}w{i}"))],
+            coords: vec![
+                Poly::var(&format!("{prefix}q{i}")),
+                Poly::var(&format!("{prefix}w{i}")),
+            ],
         })
         .collect();
     RationalCurve::from_hom(ctrl).expect("symbols")
@@ -37,7 +40,9 @@ fn over(
         SOURCE,
         Verdict::Proved,
         failure.is_none(),
-        failure.map_or(format!("{how}; n = {lo}…{hi}"), |n| format!("fails at n = {n}")),
+        failure.map_or(format!("{how}; n = {lo}…{hi}"), |n| {
+            format!("fails at n = {n}")
+        }),
     )
 }
 

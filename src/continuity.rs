@@ -46,7 +46,10 @@ fn dot<T: Scalar>(a: &[T], b: &[T]) -> T {
 
 /// `a − k·b`.
 fn minus_scaled<T: Scalar>(a: &[T], k: &T, b: &[T]) -> Vec<T> {
-    a.iter().zip(b).map(|(x, y)| x.clone() - &(k.clone() * y)).collect()
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| x.clone() - &(k.clone() * y))
+        .collect()
 }
 
 fn is_zero_vec<T: Scalar>(v: &[T], tol: Tolerance) -> bool {
@@ -193,7 +196,9 @@ pub fn g2_leading_points<T: Scalar>(
     let c_pn2 = s * &a2;
     let combo = |cs: [&T; 3]| -> Vec<T> {
         (0..pn.len())
-            .map(|k| cs[0].clone() * &pn[k] + &(cs[1].clone() * &pn1[k]) + &(cs[2].clone() * &pn2[k]))
+            .map(|k| {
+                cs[0].clone() * &pn[k] + &(cs[1].clone() * &pn1[k]) + &(cs[2].clone() * &pn2[k])
+            })
             .collect()
     };
     let q1 = combo([&(T::one() + &r), &(-r.clone()), &T::zero()]);
@@ -231,8 +236,12 @@ mod tests {
         assert!(!join(&a, &gap, Tolerance::EXACT).unwrap().g0);
         let j = join(&a, &kink, Tolerance::EXACT).unwrap();
         assert!(j.g0 && !j.g1);
-        let three = RationalCurve::polynomial(vec![vec![ratio(1, 1), ratio(0, 1), ratio(0, 1)]; 2]).unwrap();
-        assert!(matches!(join(&a, &three, Tolerance::EXACT), Err(Error::Shape(_))));
+        let three = RationalCurve::polynomial(vec![vec![ratio(1, 1), ratio(0, 1), ratio(0, 1)]; 2])
+            .unwrap();
+        assert!(matches!(
+            join(&a, &three, Tolerance::EXACT),
+            Err(Error::Shape(_))
+        ));
     }
 
     #[test]
@@ -244,7 +253,12 @@ mod tests {
         let j = join(&a, &b, Tolerance::EXACT).unwrap();
         assert!(j.g2, "{}", j.reason);
         assert_ne!(j.alpha, Some(ratio(1, 1)));
-        let f = join(&a.map(|x| x.to_f64()), &b.map(|x| x.to_f64()), Tolerance(1e-12)).unwrap();
+        let f = join(
+            &a.map(|x| x.to_f64()),
+            &b.map(|x| x.to_f64()),
+            Tolerance(1e-12),
+        )
+        .unwrap();
         assert!(f.g2);
     }
 }

@@ -107,7 +107,9 @@ impl<T: Scalar> RationalCurve<T> {
     /// The curve with homogeneous control points known to be well formed
     /// (non-empty, equal lengths ≥ 2): the crate's algorithms build these.
     pub(crate) fn from_ctrl(ctrl: Vec<HPoint<T>>) -> Self {
-        debug_assert!(!ctrl.is_empty() && ctrl.iter().all(|p| p.coords.len() == ctrl[0].coords.len()));
+        debug_assert!(
+            !ctrl.is_empty() && ctrl.iter().all(|p| p.coords.len() == ctrl[0].coords.len())
+        );
         RationalCurve { ctrl }
     }
 

@@ -79,10 +79,7 @@ impl<T: Scalar> RationalCurve<T> {
         let (m1, m2) = (d[1].weighted(), d[2].weighted());
         let w = d[0].weight();
         let m1sq = dot(m1, m1);
-        (
-            cross_norm_sq(m1, m2) * w * w,
-            m1sq.clone() * &m1sq * &m1sq,
-        )
+        (cross_norm_sq(m1, m2) * w * w, m1sq.clone() * &m1sq * &m1sq)
     }
 
     /// The lecture's end-point curvature, extended to rational curves, as a
@@ -414,7 +411,13 @@ mod tests {
         let cubic = RationalCurve::polynomial(vec![p(0, 0), p(1, 1), p(3, 3), p(4, 0)]).unwrap();
         assert!(matches!(cubic.conic_type(), Err(Error::Shape(_))));
         let stuck = RationalCurve::polynomial(vec![p(0, 0), p(0, 0), p(3, 3)]).unwrap();
-        assert!(matches!(stuck.curvature_sq(&ratio(0, 1)), Err(Error::Domain(_))));
-        assert!(matches!(line.affine(&[vec![ratio(1, 1)]], &[]), Err(Error::Shape(_))));
+        assert!(matches!(
+            stuck.curvature_sq(&ratio(0, 1)),
+            Err(Error::Domain(_))
+        ));
+        assert!(matches!(
+            line.affine(&[vec![ratio(1, 1)]], &[]),
+            Err(Error::Shape(_))
+        ));
     }
 }

@@ -59,8 +59,8 @@ impl<T: Scalar> RationalCurve<T> {
         let n = self.require_reducible(1)?;
         let c = self.ctrl();
         let mut out: Vec<HPoint<T>> = Vec::with_capacity(n);
-        for i in 0..n {
-            let nc = c[i].scale(&T::from_i64(n as i64));
+        for (i, ci) in c.iter().take(n).enumerate() {
+            let nc = ci.scale(&T::from_i64(n as i64));
             let prev = match out.last() {
                 Some(p) => nc.sub(&p.scale(&T::from_i64(i as i64))),
                 None => nc,
@@ -137,8 +137,12 @@ impl<T: Scalar> RationalCurve<T> {
             }
             Reduction::LeastSquares => {
                 let eps = self.lsq_perturbation()?;
-                let moved: Vec<HPoint<T>> =
-                    self.ctrl().iter().zip(&eps).map(|(c, e)| c.add(e)).collect();
+                let moved: Vec<HPoint<T>> = self
+                    .ctrl()
+                    .iter()
+                    .zip(&eps)
+                    .map(|(c, e)| c.add(e))
+                    .collect();
                 RationalCurve::from_ctrl(moved).reduce_forward()?
             }
         };
@@ -241,7 +245,6 @@ fn alternating_binomial<T: Scalar>(n: usize, i: usize) -> T {
     T::from_bigint(&if i % 2 == 1 { -b } else { b })
 }
 
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -254,8 +257,8 @@ mod tests {
 
     #[test]
     fn schemes_interpolate_ends_and_differ_inside() {
-        let c = RationalCurve::polynomial(vec![p(0, 0), p(1, 4), p(2, -3), p(5, 2), p(6, 0)])
-            .unwrap();
+        let c =
+            RationalCurve::polynomial(vec![p(0, 0), p(1, 4), p(2, -3), p(5, 2), p(6, 0)]).unwrap();
         let fo = c.reduce(Reduction::Forrest).unwrap();
         let fa = c.reduce(Reduction::Farin).unwrap();
         for r in [&fo, &fa] {
@@ -281,9 +284,15 @@ mod tests {
         };
         let mut last_only = vec![HPoint::zero(2); 4];
         last_only[3] = d.scale(&ratio(1, 1)); // a_3 = −1, so ε_3 = D moves D to 0.
-        let moved2: Vec<HPoint<Q>> =
-            c.ctrl().iter().zip(&last_only).map(|(a, e)| a.add(e)).collect();
-        assert!(RationalCurve::from_ctrl(moved2).degeneracy().is_zero_within(Tolerance::EXACT));
+        let moved2: Vec<HPoint<Q>> = c
+            .ctrl()
+            .iter()
+            .zip(&last_only)
+            .map(|(a, e)| a.add(e))
+            .collect();
+        assert!(RationalCurve::from_ctrl(moved2)
+            .degeneracy()
+            .is_zero_within(Tolerance::EXACT));
         assert!(cost(&eps) < cost(&last_only));
         assert_eq!(c.reduce(Reduction::LeastSquares).unwrap().degree(), 2);
     }
@@ -291,10 +300,16 @@ mod tests {
     #[test]
     fn degree_limits() {
         let point = RationalCurve::polynomial(vec![p(1, 1)]).unwrap();
-        assert!(matches!(point.reduce(Reduction::Forrest), Err(Error::Domain(_))));
+        assert!(matches!(
+            point.reduce(Reduction::Forrest),
+            Err(Error::Domain(_))
+        ));
         assert_eq!(point.reduce_exact(Tolerance::EXACT), None);
         let seg = RationalCurve::polynomial(vec![p(1, 1), p(1, 1)]).unwrap();
-        assert!(matches!(seg.reduce(Reduction::Farin), Err(Error::Domain(_))));
+        assert!(matches!(
+            seg.reduce(Reduction::Farin),
+            Err(Error::Domain(_))
+        ));
         assert_eq!(seg.reduce_exact_fully(Tolerance::EXACT).degree(), 0);
     }
 }

@@ -1,8 +1,12 @@
 //! Property tests of curve derivatives, geometry, joins and degree
 //! reduction on random exact curves (positive rational weights).
 
-use exact_bezier::strategy::{curve, open_unit_parameter, positive_weight, small_rational, unit_parameter};
-use exact_bezier::{g2_leading_points, join, ConicType, CurveEnd, RationalCurve, Reduction, Tolerance};
+use exact_bezier::strategy::{
+    curve, open_unit_parameter, positive_weight, small_rational, unit_parameter,
+};
+use exact_bezier::{
+    g2_leading_points, join, ConicType, CurveEnd, RationalCurve, Reduction, Tolerance,
+};
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use proptest::prelude::*;
@@ -82,7 +86,7 @@ proptest! {
 
     #[test]
     fn f64_agrees_with_exact(c in any_curve(), t in unit_parameter()) {
-        let f = c.map(|x| exact_bezier::rational_to_f64(x));
+        let f = c.map(exact_bezier::rational_to_f64);
         let tf = exact_bezier::rational_to_f64(&t);
         let (de, df) = (c.derivs(&t, 2).unwrap(), f.derivs(&tf, 2).unwrap());
         for (a, b) in df.iter().zip(&de) {

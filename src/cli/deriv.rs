@@ -26,7 +26,10 @@ pub struct Args {
 }
 
 /// The curve inside `p`, or a typed error naming the command.
-pub(super) fn curve_of<'a, T: crate::scalar::Scalar>(p: &'a Patch<T>, command: &str) -> Result<&'a RationalCurve<T>, Error> {
+pub(super) fn curve_of<'a, T: crate::scalar::Scalar>(
+    p: &'a Patch<T>,
+    command: &str,
+) -> Result<&'a RationalCurve<T>, Error> {
     match p {
         Patch::Curve(c) => Ok(c),
         other => Err(Error::Shape(format!(

@@ -40,7 +40,10 @@ fn one_curve(path: &str) -> Result<Patch<BigRational>, Error> {
 
 pub fn run(a: &Args) -> Result<Value, Error> {
     if !(a.tol.is_finite() && a.tol >= 0.0) {
-        return Err(Error::NotFinite(format!("--tol {} must be finite and ≥ 0", a.tol)));
+        return Err(Error::NotFinite(format!(
+            "--tol {} must be finite and ≥ 0",
+            a.tol
+        )));
     }
     let (p, q) = (one_curve(&a.first)?, one_curve(&a.second)?);
     match a.scalar {
@@ -49,7 +52,11 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     }
 }
 
-fn join_with<T: JsonScalar + Ordered>(p: &Patch<T>, q: &Patch<T>, tol: Tolerance) -> Result<Value, Error> {
+fn join_with<T: JsonScalar + Ordered>(
+    p: &Patch<T>,
+    q: &Patch<T>,
+    tol: Tolerance,
+) -> Result<Value, Error> {
     let j = join(curve_of(p, "join")?, curve_of(q, "join")?, tol)?;
     Ok(json!({
         "g0": j.g0,

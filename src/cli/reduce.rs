@@ -44,7 +44,10 @@ pub struct Args {
 
 pub fn run(a: &Args) -> Result<Value, Error> {
     if !(a.tol.is_finite() && a.tol >= 0.0) {
-        return Err(Error::NotFinite(format!("--tol {} must be finite and ≥ 0", a.tol)));
+        return Err(Error::NotFinite(format!(
+            "--tol {} must be finite and ≥ 0",
+            a.tol
+        )));
     }
     let values = load(&a.file)?
         .iter()
@@ -56,14 +59,21 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     Ok(one_or_many(values))
 }
 
-fn reduce_with<T: JsonScalar + Ordered>(p: &Patch<T>, method: Method, tol: Tolerance) -> Result<Value, Error> {
+fn reduce_with<T: JsonScalar + Ordered>(
+    p: &Patch<T>,
+    method: Method,
+    tol: Tolerance,
+) -> Result<Value, Error> {
     let c = curve_of(p, "reduce")?;
     let scheme = match method {
         Method::Forrest => Reduction::Forrest,
         Method::Farin => Reduction::Farin,
         Method::Lsq => Reduction::LeastSquares,
         Method::Exact => {
-            let reduced = c.reduce_exact(tol).map(|r| patch_to_json(&Patch::Curve(r))).transpose()?;
+            let reduced = c
+                .reduce_exact(tol)
+                .map(|r| patch_to_json(&Patch::Curve(r)))
+                .transpose()?;
             return Ok(json!({
                 "method": "exact",
                 "reducible": reduced.is_some(),
