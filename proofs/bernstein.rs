@@ -65,6 +65,37 @@ fn homogenized(i: usize, n: usize) -> Poly {
     })
 }
 
+/// The middle step of the lecture's symmetry proof,
+/// `B_{n−i,n}(t) = C(n,n−i) [1 − (1−t)]^{n−(n−i)} (1−t)^{n−i}`, whose right
+/// side is `C(n,i) tⁱ (1−t)^{n−i} = B_{i,n}(t)`: the exponents are swapped
+/// (the statement itself, proved above, is right).
+fn printed_symmetry_step() -> Claim {
+    let s = Poly::one() - t();
+    let failure = (1..=MAX_N)
+        .flat_map(|n| (0..=n).map(move |i| (n, i)))
+        .find(|&(n, i)| {
+            let rhs = binomial_scalar::<Poly>(n, n - i)
+                * (Poly::one() - &s).pow((n - (n - i)) as u32)
+                * s.pow((n - i) as u32);
+            b((n - i) as i64, n as i64) != rhs
+        });
+    Claim::check(
+        "symmetry proof step: B_{n−i,n}(t) = C(n,n−i)[1 − (1−t)]^{n−(n−i)}(1−t)^{n−i} = C(n,i)tⁱ(1−t)^{n−i} = B_{i,n}(1−t)",
+        SOURCE,
+        Verdict::Refuted,
+        failure.is_none(),
+        match failure {
+            Some((n, i)) => format!(
+                "n = {n}, i = {i}: B_{{{},{n}}}(t) = {} but the printed middle expression is {}; correct: B_{{n−i,n}}(t) = C(n,n−i)[1 − (1−t)]^{{n−i}}(1−t)^{{i}} = B_{{i,n}}(1−t)",
+                n - i,
+                b((n - i) as i64, n as i64),
+                binomial_scalar::<Poly>(n, i) * t().pow(i as u32) * s.pow((n - i) as u32)
+            ),
+            None => "printed step holds".into(),
+        },
+    )
+}
+
 /// The family's claims.
 pub fn claims() -> Vec<Claim> {
     let one = Poly::one();
@@ -120,6 +151,7 @@ pub fn claims() -> Vec<Claim> {
                 )
             },
         ),
+        printed_symmetry_step(),
         for_all(
             "recursion: B_{i,n} = (1 − t) B_{i,n−1} + t B_{i−1,n−1}, i = 0…n",
             1..=MAX_N,

@@ -120,6 +120,20 @@ fn algorithm_claims() -> Vec<Claim> {
             },
         ),
         over_degrees(
+            "de Casteljau step: P(t) = Σ_{i=0}^{n−1} [(1−t)P_i + tP_{i+1}] B_{i,n−1}(t) (printed with upper limit n; the extra term is 0·P_{n+1} since B_{n,n−1} = 0)",
+            "001 lecture, de Casteljau算法",
+            1..=8,
+            "symbolic t and P_i; the printed upper limit n names a non-existent P_{n+1} with the zero coefficient B_{n,n−1}",
+            |n| {
+                let c = sym_rational(n, 1);
+                let cc = c.ctrl();
+                let step = (0..n).fold(HPoint::zero(1), |acc, i| {
+                    acc.add(&cc[i].lerp(&cc[i + 1], &t).scale(&bernstein(i, n - 1, &t)))
+                });
+                same(&step, &bernstein_sum(&c, &t))
+            },
+        ),
+        over_degrees(
             "linear Möbius reparameterization keeps every point: X̃(s) = X(u(s)), u = (α−1)s/(2αs−s−α), w̃_i = w_i(1−α)ⁱα^{n−i}",
             "000 Yang & Yong eqs (2), (4), curve case",
             1..=8,
