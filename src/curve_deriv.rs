@@ -122,6 +122,19 @@ impl<T: Scalar> RationalCurve<T> {
     ///
     /// Reference: ours (quotient rule in homogeneous form); proved in
     /// `proofs/curves.rs`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use exact_bezier::{RationalCurve, ratio};
+    /// use num_rational::BigRational;
+    /// // x(t) = t/(1 + t) (weights 1, 2; points 0, 1/2): x' = 1/(1 + t)².
+    /// let c = RationalCurve::new(vec![vec![ratio::<BigRational>(0, 1)], vec![ratio(1, 2)]],
+    ///                            vec![ratio(1, 1), ratio(2, 1)]).unwrap();
+    /// let d = c.derivs_hom(&ratio(1, 1), 1);
+    /// // At t = 1: w = 2, so entry 1 is (M_1, w²) = (1, 4), i.e. x'(1) = 1/4.
+    /// assert_eq!(d[1].coords, vec![ratio(1, 1), ratio(4, 1)]);
+    /// ```
     pub fn derivs_hom(&self, t: &T, k: usize) -> Vec<HPoint<T>> {
         let h = self.hom_derivs_at(t, k);
         let w: Vec<T> = h.iter().map(|p| p.weight().clone()).collect();

@@ -300,6 +300,15 @@ impl<T: Field> RationalCurve<T> {
     /// # Errors
     ///
     /// [`Error::Domain`] if an inner weight is zero.
+    ///
+    /// ```
+    /// use exact_bezier::{RationalCurve, ratio};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+    /// let w = vec![ratio(1, 1), ratio(2, 1), ratio(3, 1), ratio(1, 1)];
+    /// let c = RationalCurve::new(vec![p(0), p(1), p(2), p(3)], w).unwrap();
+    /// assert_eq!(c.local_invariants().unwrap(), vec![ratio(3, 4), ratio(2, 9)]);
+    /// ```
     pub fn local_invariants(&self) -> Result<Vec<T>, Error> {
         divide_all(self.local_invariants_frac(), "local invariant")
     }

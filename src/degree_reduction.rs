@@ -55,6 +55,17 @@ impl<T: Scalar> RationalCurve<T> {
     /// # Errors
     ///
     /// [`Error::Domain`] for degree 0.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use exact_bezier::{RationalCurve, ratio};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+    /// let c = RationalCurve::polynomial(vec![p(0), p(3), p(6)]).unwrap().elevate(1);
+    /// let back = c.reduce_forward().unwrap();
+    /// assert_eq!(back, RationalCurve::polynomial(vec![p(0), p(3), p(6)]).unwrap().ctrl());
+    /// ```
     pub fn reduce_forward(&self) -> Result<Vec<HPoint<T>>, Error> {
         let n = self.require_reducible(1)?;
         let c = self.ctrl();
@@ -154,6 +165,17 @@ impl<T: Scalar> RationalCurve<T> {
     /// homogeneous curve has degree < n.
     ///
     /// Reference: source 001 (lecture), "约束优化方法".
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use exact_bezier::{RationalCurve, ratio};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+    /// // 0, 1, 2 lie on a line (degree 1): D = 0 − 2·1 + 2 = 0.
+    /// let line = RationalCurve::polynomial(vec![p(0), p(1), p(2)]).unwrap();
+    /// assert_eq!(line.degeneracy().coords, vec![ratio(0, 1), ratio(0, 1)]);
+    /// ```
     pub fn degeneracy(&self) -> HPoint<T> {
         self.ctrl()
             .iter()
@@ -230,6 +252,14 @@ impl<T: Scalar> RationalCurve<T> {
 
     /// Reduce exactly as far as possible ([`RationalCurve::reduce_exact`]
     /// repeated): the same homogeneous curve at its true polynomial degree.
+    ///
+    /// ```
+    /// use exact_bezier::{RationalCurve, Tolerance, ratio};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+    /// let seg = RationalCurve::polynomial(vec![p(2), p(5)]).unwrap();
+    /// assert_eq!(seg.elevate(4).reduce_exact_fully(Tolerance::EXACT), seg);
+    /// ```
     pub fn reduce_exact_fully(&self, tol: Tolerance) -> Self {
         let mut cur = self.clone();
         while let Some(lower) = cur.reduce_exact(tol) {
