@@ -19,7 +19,12 @@ use crate::poly::Poly;
 use serde_json::{json, Value};
 use std::fmt;
 
+pub mod bernstein;
+pub mod calculus;
+pub mod curves;
+pub mod lecture_joins;
 pub mod quiz;
+pub mod reduction;
 
 /// The outcome of checking one claim.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -170,6 +175,10 @@ pub struct Family {
 #[rustfmt::skip]
 pub const FAMILIES: &[Family] = &[
     Family { name: "quiz", run: quiz::claims },
+    Family { name: "bernstein", run: bernstein::claims },
+    Family { name: "curves", run: curves::claims },
+    Family { name: "lecture_joins", run: lecture_joins::claims },
+    Family { name: "reduction", run: reduction::claims },
 ];
 
 /// Run every family (in parallel threads) and return the claims in order.

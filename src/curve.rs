@@ -104,6 +104,15 @@ impl<T: Scalar> RationalCurve<T> {
         Ok(RationalCurve { ctrl })
     }
 
+    /// The curve with homogeneous control points known to be well formed
+    /// (non-empty, equal lengths ≥ 2): the crate's algorithms build these.
+    pub(crate) fn from_ctrl(ctrl: Vec<HPoint<T>>) -> Self {
+        debug_assert!(
+            !ctrl.is_empty() && ctrl.iter().all(|p| p.coords.len() == ctrl[0].coords.len())
+        );
+        RationalCurve { ctrl }
+    }
+
     /// The same curve over another scalar type, coordinate by coordinate
     /// (e.g. `BigRational` → `f64` with [`Ordered::to_f64`], or → `Poly`).
     pub fn map<U: Scalar>(&self, f: impl Fn(&T) -> U) -> RationalCurve<U> {
@@ -147,6 +156,36 @@ impl<T: Scalar> RationalCurve<T> {
     /// Casteljau's algorithm. Exact for exact `T`; ring operations only.
     pub fn eval_hom(&self, t: &T) -> HPoint<T> {
         de_casteljau(&self.ctrl, t)
+    }
+
+    /// The homogeneous point at the homogeneous parameter `(a : b)`:
+    ///
+    /// ```text
+    /// Σ_i c_i C(n, i) a^{n−i} bⁱ = (a + b)ⁿ · H(b / (a + b))
+    /// ```
+    ///
+    /// where `c_i = (w_i P_i, w_i)` and `H` is [`RationalCurve::eval_hom`]
+    /// (`a = 1 − t, b = t` gives `H(t)`). de Casteljau with the step
+    /// `a·c_i + b·c_{i+1}`: ring operations only, no division, so a
+    /// parameter `u = N/D` is evaluated as `(D − N : N)` without fractions.
+    ///
+    /// ```
+    /// use exact_bezier::{RationalCurve, ratio};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+    /// let c = RationalCurve::polynomial(vec![p(0), p(3), p(9)]).unwrap();
+    /// // (2 : 1) is t = 1/3, scaled by (2 + 1)² = 9.
+    /// let h = c.eval_hom_param(&ratio(2, 1), &ratio(1, 1));
+    /// assert_eq!(h, c.eval_hom(&ratio(1, 3)).scale(&ratio(9, 1)));
+    /// ```
+    pub fn eval_hom_param(&self, a: &T, b: &T) -> HPoint<T> {
+        let mut row = self.ctrl.clone();
+        for k in (1..row.len()).rev() {
+            for i in 0..k {
+                row[i] = row[i].combine(a, &row[i + 1], b);
+            }
+        }
+        row.swap_remove(0)
     }
 
     /// The blossom (polar form) `b[t_1, …, t_n]`: symmetric, affine in each

@@ -35,7 +35,11 @@
 
 mod bernstein;
 pub mod cli;
+mod continuity;
 mod curve;
+mod curve_deriv;
+mod curve_geometry;
+mod degree_reduction;
 mod error;
 mod hpoint;
 mod io;
@@ -52,7 +56,11 @@ mod tri;
 pub mod proofs;
 
 pub use bernstein::{bernstein, bernstein_all};
+pub use continuity::{g2_leading_points, join, Join};
 pub use curve::{mobius_factors, RationalCurve};
+pub use curve_deriv::forward_differences;
+pub use curve_geometry::{cross_norm_sq, ConicType, CurveEnd};
+pub use degree_reduction::Reduction;
 pub use error::{Error, MAX_DEGREE};
 pub use hpoint::{de_casteljau, HPoint};
 pub use io::{

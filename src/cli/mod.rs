@@ -12,11 +12,15 @@ use num_rational::BigRational;
 use serde_json::Value;
 use std::io::Read;
 
+mod curvature;
+mod deriv;
 mod eval;
 mod figures;
 mod mesh;
 mod plot;
+mod join;
 mod prove;
+mod reduce;
 mod transform;
 
 /// Rational Bézier curves and patches, exactly.
@@ -53,6 +57,14 @@ enum Command {
     Mesh(mesh::Args),
     /// Regenerate the figure gallery (docs/figures/gallery.json).
     Figures(figures::Args),
+    /// Derivative of a curve: {"order": K, "derivative": [...]}.
+    Deriv(deriv::Args),
+    /// Curvature of a curve: {"curvature_squared": κ² (exact), "curvature": κ (f64)}.
+    Curvature(curvature::Args),
+    /// G0/G1/G2 verdicts for the join of curve A's end to curve B's start.
+    Join(join::Args),
+    /// Lower the degree of a curve by one (--method forrest|farin|lsq|exact).
+    Reduce(reduce::Args),
 }
 
 /// Run the command line; returns the process exit code.
@@ -72,6 +84,10 @@ pub fn main() -> i32 {
         Command::Plot(a) => plot::run(&a),
         Command::Mesh(a) => mesh::run(&a),
         Command::Figures(a) => figures::run(&a),
+        Command::Deriv(a) => deriv::run(&a),
+        Command::Curvature(a) => curvature::run(&a),
+        Command::Join(a) => join::run(&a),
+        Command::Reduce(a) => reduce::run(&a),
     };
     match result {
         Ok(v) => {

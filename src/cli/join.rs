@@ -1,0 +1,69 @@
+//! `join A B [--scalar f64 --tol T]`: G⁰/G¹/G² verdicts for the join of the
+//! end of curve A to the start of curve B, `{"g0", "g1", "g2", "alpha",
+//! "beta", "reason"}`. Exact by default (no tolerance); `--tol` applies to
+//! `f64` only.
+
+use super::deriv::curve_of;
+use super::{load, ScalarKind};
+use crate::continuity::join;
+use crate::error::Error;
+use crate::io::{JsonScalar, Patch};
+use crate::scalar::{Ordered, Tolerance};
+use num_rational::BigRational;
+use serde_json::{json, Value};
+
+/// Arguments of `join`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// The first curve (its end, t = 1), JSON file or - for standard input.
+    first: String,
+    /// The second curve (its start, t = 0).
+    second: String,
+    /// Scalar to compute with.
+    #[arg(long, value_enum, default_value_t)]
+    scalar: ScalarKind,
+    /// Absolute tolerance for f64 comparisons (ignored by exact arithmetic).
+    #[arg(long, default_value_t = 1e-9)]
+    tol: f64,
+}
+
+fn one_curve(path: &str) -> Result<Patch<BigRational>, Error> {
+    let mut patches = load(path)?;
+    if patches.len() != 1 {
+        return Err(Error::Shape(format!(
+            "{path} holds {} objects; join takes one curve per file",
+            patches.len()
+        )));
+    }
+    Ok(patches.swap_remove(0))
+}
+
+pub fn run(a: &Args) -> Result<Value, Error> {
+    if !(a.tol.is_finite() && a.tol >= 0.0) {
+        return Err(Error::NotFinite(format!(
+            "--tol {} must be finite and ≥ 0",
+            a.tol
+        )));
+    }
+    let (p, q) = (one_curve(&a.first)?, one_curve(&a.second)?);
+    match a.scalar {
+        ScalarKind::Exact => join_with(&p, &q, Tolerance::EXACT),
+        ScalarKind::F64 => join_with(&p.to_f64(), &q.to_f64(), Tolerance(a.tol)),
+    }
+}
+
+fn join_with<T: JsonScalar + Ordered>(
+    p: &Patch<T>,
+    q: &Patch<T>,
+    tol: Tolerance,
+) -> Result<Value, Error> {
+    let j = join(curve_of(p, "join")?, curve_of(q, "join")?, tol)?;
+    Ok(json!({
+        "g0": j.g0,
+        "g1": j.g1,
+        "g2": j.g2,
+        "alpha": j.alpha.as_ref().map(JsonScalar::to_json),
+        "beta": j.beta.as_ref().map(JsonScalar::to_json),
+        "reason": j.reason,
+    }))
+}

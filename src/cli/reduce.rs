@@ -1,0 +1,86 @@
+//! `reduce FILE [--method forrest|farin|lsq|exact] [--scalar f64 --tol T]`:
+//! lower the degree of a curve by one, `{"method": ..., "curve": {...}}`.
+//! `exact` adds `"reducible": true|false` and gives `"curve": null` when the
+//! curve is not of lower degree (exit 0 either way).
+
+use super::deriv::curve_of;
+use super::{load, one_or_many, ScalarKind};
+use crate::degree_reduction::Reduction;
+use crate::error::Error;
+use crate::io::{patch_to_json, JsonScalar, Patch};
+use crate::scalar::{Ordered, Tolerance};
+use clap::ValueEnum;
+use serde_json::{json, Value};
+
+/// The reduction method.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum, Default)]
+pub enum Method {
+    /// Forrest (1972): forward recursion for the first half, backward after.
+    Forrest,
+    /// Farin (1983): blend of the two recursions.
+    #[default]
+    Farin,
+    /// Constrained least squares: minimal perturbation, then exact.
+    Lsq,
+    /// Exact: only when the curve truly is of lower degree.
+    Exact,
+}
+
+/// Arguments of `reduce`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Input file (JSON), or - for standard input.
+    file: String,
+    /// Reduction method.
+    #[arg(long, value_enum, default_value_t)]
+    method: Method,
+    /// Scalar to compute with.
+    #[arg(long, value_enum, default_value_t)]
+    scalar: ScalarKind,
+    /// Absolute tolerance of the f64 degeneracy test of `exact`.
+    #[arg(long, default_value_t = 1e-9)]
+    tol: f64,
+}
+
+pub fn run(a: &Args) -> Result<Value, Error> {
+    if !(a.tol.is_finite() && a.tol >= 0.0) {
+        return Err(Error::NotFinite(format!(
+            "--tol {} must be finite and ≥ 0",
+            a.tol
+        )));
+    }
+    let values = load(&a.file)?
+        .iter()
+        .map(|p| match a.scalar {
+            ScalarKind::Exact => reduce_with(p, a.method, Tolerance::EXACT),
+            ScalarKind::F64 => reduce_with(&p.to_f64(), a.method, Tolerance(a.tol)),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(one_or_many(values))
+}
+
+fn reduce_with<T: JsonScalar + Ordered>(
+    p: &Patch<T>,
+    method: Method,
+    tol: Tolerance,
+) -> Result<Value, Error> {
+    let c = curve_of(p, "reduce")?;
+    let scheme = match method {
+        Method::Forrest => Reduction::Forrest,
+        Method::Farin => Reduction::Farin,
+        Method::Lsq => Reduction::LeastSquares,
+        Method::Exact => {
+            let reduced = c
+                .reduce_exact(tol)
+                .map(|r| patch_to_json(&Patch::Curve(r)))
+                .transpose()?;
+            return Ok(json!({
+                "method": "exact",
+                "reducible": reduced.is_some(),
+                "curve": reduced,
+            }));
+        }
+    };
+    let name = format!("{method:?}").to_lowercase();
+    Ok(json!({ "method": name, "curve": patch_to_json(&Patch::Curve(c.reduce(scheme)?))? }))
+}
