@@ -13,6 +13,7 @@ use serde_json::Value;
 use std::io::Read;
 
 mod eval;
+mod eval_trig;
 mod prove;
 mod transform;
 
