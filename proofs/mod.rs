@@ -20,6 +20,8 @@ use serde_json::{json, Value};
 use std::fmt;
 
 pub mod quiz;
+pub mod trig_basis;
+pub mod trig_stitching;
 
 /// The outcome of checking one claim.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -170,6 +172,8 @@ pub struct Family {
 #[rustfmt::skip]
 pub const FAMILIES: &[Family] = &[
     Family { name: "quiz", run: quiz::claims },
+    Family { name: "trig_basis", run: trig_basis::claims },
+    Family { name: "trig_stitching", run: trig_stitching::claims },
 ];
 
 /// Run every family (in parallel threads) and return the claims in order.
