@@ -44,7 +44,11 @@ pub(crate) fn int(n: i64) -> Poly {
 /// parameters `a1`, `a2`.
 pub(crate) fn sym_rect(name: &str, a1: &Poly, a2: &Poly) -> TrigRect<Poly> {
     let pts = (0..4)
-        .map(|i| (0..4).map(|j| vec![Poly::var(&format!("{name}{i}{j}"))]).collect())
+        .map(|i| {
+            (0..4)
+                .map(|j| vec![Poly::var(&format!("{name}{i}{j}"))])
+                .collect()
+        })
         .collect();
     TrigRect::new(pts, [a1.clone(), a2.clone()]).expect("4 × 4 net")
 }
@@ -96,10 +100,20 @@ pub(crate) fn det4(m: &[[Poly; 4]; 4]) -> Poly {
         (0..m.len()).fold(Poly::zero(), |acc, k| {
             let minor: Vec<Vec<Poly>> = m[1..]
                 .iter()
-                .map(|r| r.iter().enumerate().filter(|(j, _)| *j != k).map(|(_, x)| x.clone()).collect())
+                .map(|r| {
+                    r.iter()
+                        .enumerate()
+                        .filter(|(j, _)| *j != k)
+                        .map(|(_, x)| x.clone())
+                        .collect()
+                })
                 .collect();
             let term = m[0][k].clone() * det(&minor);
-            if k % 2 == 0 { acc + term } else { acc - term }
+            if k % 2 == 0 {
+                acc + term
+            } else {
+                acc - term
+            }
         })
     }
     det(&m.iter().map(|r| r.to_vec()).collect::<Vec<_>>())
@@ -270,19 +284,26 @@ fn curve_claims() -> Vec<Claim> {
         + p(2) * (-a.clone() * &s + int(2) * a.clone() * &s * &c)
         + p(3) * (a.clone() * &s + int(2) * (int(1) - a.clone()) * &s * &c);
     let value = curve.eval(&at)[0].clone();
-    let derivation = |f: &Poly| nf(&(c.clone() * f.derivative("s") - s.clone() * f.derivative("c")));
+    let derivation =
+        |f: &Poly| nf(&(c.clone() * f.derivative("s") - s.clone() * f.derivative("c")));
     let mut by_derivation = value.clone();
     let mut derivatives_agree = true;
     for k in 1..=4 {
         by_derivation = derivation(&by_derivation);
         derivatives_agree &= same(&curve.derivative(k, &at)[0], &by_derivation);
     }
-    let chord = TrigCurve::new(pts.clone(), Poly::zero()).expect("four points").eval(&at)[0].clone();
+    let chord = TrigCurve::new(pts.clone(), Poly::zero())
+        .expect("four points")
+        .eval(&at)[0]
+        .clone();
     // Representation: α = 1 with (0, 2, 6, 3) and α = 2 with (0, 1, 9/2, 3).
     let one_d = |v: [BigRational; 4]| v.into_iter().map(|x| vec![x]).collect::<Vec<_>>();
     let c1 = TrigCurve::new(one_d([0, 2, 6, 3].map(|k| ratio(k, 1))), ratio(1, 1)).expect("4");
-    let c2 = TrigCurve::new(one_d([ratio(0, 1), ratio(1, 1), ratio(9, 2), ratio(3, 1)]), ratio(2, 1))
-        .expect("4");
+    let c2 = TrigCurve::new(
+        one_d([ratio(0, 1), ratio(1, 1), ratio(9, 2), ratio(3, 1)]),
+        ratio(2, 1),
+    )
+    .expect("4");
     vec![
         Claim::check(
             "curve property 1): p(0) = P₀, p(π/2) = P₃, p'(0) = α(P₁ − P₀), p'(π/2) = α(P₃ − P₂)",
@@ -359,10 +380,22 @@ fn surface_claims() -> Vec<Claim> {
             .clone()
     };
     let boundaries = [
-        (s.eval(&u, &o)[0].clone(), curve((0..4).map(|i| p(i, 0)).collect(), &a1, &u)),
-        (s.eval(&u, &e)[0].clone(), curve((0..4).map(|i| p(i, 3)).collect(), &a1, &u)),
-        (s.eval(&o, &v)[0].clone(), curve((0..4).map(|j| p(0, j)).collect(), &a2, &v)),
-        (s.eval(&e, &v)[0].clone(), curve((0..4).map(|j| p(3, j)).collect(), &a2, &v)),
+        (
+            s.eval(&u, &o)[0].clone(),
+            curve((0..4).map(|i| p(i, 0)).collect(), &a1, &u),
+        ),
+        (
+            s.eval(&u, &e)[0].clone(),
+            curve((0..4).map(|i| p(i, 3)).collect(), &a1, &u),
+        ),
+        (
+            s.eval(&o, &v)[0].clone(),
+            curve((0..4).map(|j| p(0, j)).collect(), &a2, &v),
+        ),
+        (
+            s.eval(&e, &v)[0].clone(),
+            curve((0..4).map(|j| p(3, j)).collect(), &a2, &v),
+        ),
     ];
     let boundaries_ok = boundaries.iter().all(|(x, y)| same(x, y));
     let independent = boundaries[0].0.derivative("alpha2").is_zero()
@@ -376,9 +409,11 @@ fn surface_claims() -> Vec<Claim> {
         + su.pow(2) * cv.pow(2) * p(3, 0)
         + su.pow(2) * sv.pow(2) * p(3, 3);
     let at_zero = zero.eval(&u, &v)[0].clone();
-    let inner_free = (0..4).all(|i| (0..4).all(|j| {
-        (i % 3 == 0 && j % 3 == 0) || at_zero.derivative(&format!("p{i}{j}")).is_zero()
-    }));
+    let inner_free = (0..4).all(|i| {
+        (0..4).all(|j| {
+            (i % 3 == 0 && j % 3 == 0) || at_zero.derivative(&format!("p{i}{j}")).is_zero()
+        })
+    });
     vec![
         Claim::check(
             "surface property 1): S interpolates P₀₀, P₀₃, P₃₀, P₃₃ at the corners",

@@ -29,7 +29,11 @@ fn var(name: &str) -> Poly {
 }
 
 /// A symbolic 1-D net `{name}{i}{j}`, with some entries overridden.
-fn net(name: &str, alpha: [Poly; 2], over: impl Fn(usize, usize) -> Option<Poly>) -> TrigRect<Poly> {
+fn net(
+    name: &str,
+    alpha: [Poly; 2],
+    over: impl Fn(usize, usize) -> Option<Poly>,
+) -> TrigRect<Poly> {
     let pts = (0..4)
         .map(|i| {
             (0..4)
@@ -70,7 +74,11 @@ fn printed_rule(s1: &TrigRect<Q>, a2: &Q, l2: &Q, mu: &Q) -> TrigRect<Q> {
         .map(|i| {
             let p3 = &s1.points()[i][3];
             let p2 = &s1.points()[i][2];
-            let q1 = p3.iter().zip(p2).map(|(a, b)| a.clone() + &(k.clone() * (a.clone() - b))).collect();
+            let q1 = p3
+                .iter()
+                .zip(p2)
+                .map(|(a, b)| a.clone() + &(k.clone() * (a.clone() - b)))
+                .collect();
             vec![p3.clone(), q1, rest[i][2].clone(), rest[i][3].clone()]
         })
         .collect();
@@ -98,12 +106,20 @@ fn derivative_claims() -> Vec<Claim> {
     let sum_v = trig_sum(|j| p(3, j) - p(2, j), &a2, &v);
     let dv = s1.partial(0, 1, &u, &e)[0].clone();
     let du = s1.partial(1, 0, &e, &v)[0].clone();
-    let dv2_ok = same(&s2.partial(0, 1, &u, &o)[0], &(l2.clone() * trig_sum(|i| q(i, 1) - q(i, 0), &l1, &u)));
-    let du2_ok = same(&s2.partial(1, 0, &o, &v)[0], &(l1.clone() * trig_sum(|j| q(1, j) - q(0, j), &l2, &v)));
+    let dv2_ok = same(
+        &s2.partial(0, 1, &u, &o)[0],
+        &(l2.clone() * trig_sum(|i| q(i, 1) - q(i, 0), &l1, &u)),
+    );
+    let du2_ok = same(
+        &s2.partial(1, 0, &o, &v)[0],
+        &(l1.clone() * trig_sum(|j| q(1, j) - q(0, j), &l2, &v)),
+    );
     let four_plus = |a: &Poly| int(4) + int(2) * a.clone();
     // Exact counterexample: Pᵢⱼ = j (1-D), α₁ = α₂ = 1, at u = 0.
     let ce = TrigRect::new(
-        (0..4).map(|_| (0..4).map(|j| vec![ratio::<Q>(j, 1)]).collect()).collect(),
+        (0..4)
+            .map(|_| (0..4).map(|j| vec![ratio::<Q>(j, 1)]).collect())
+            .collect(),
         [ratio(1, 1), ratio(1, 1)],
     )
     .expect("4 × 4");
@@ -148,9 +164,15 @@ fn g0_claims() -> Vec<Claim> {
     let s1 = net("p", [a1.clone(), a2.clone()], |_, _| None);
     let p = |i: usize, j: usize| s1.points()[i][j][0].clone();
     let (u, o, e) = (sym_param("u"), TrigParam::start(), TrigParam::end());
-    let s2_uu = net("q", [a1.clone(), l2.clone()], |i, j| (j == 0).then(|| p(i, 3)));
-    let s2_vv = net("q", [var("lambda1"), a2.clone()], |i, j| (i == 0).then(|| p(3, j)));
-    let s2_uv = net("q", [var("lambda1"), a1.clone()], |i, j| (i == 0).then(|| p(j, 3)));
+    let s2_uu = net("q", [a1.clone(), l2.clone()], |i, j| {
+        (j == 0).then(|| p(i, 3))
+    });
+    let s2_vv = net("q", [var("lambda1"), a2.clone()], |i, j| {
+        (i == 0).then(|| p(3, j))
+    });
+    let s2_uv = net("q", [var("lambda1"), a1.clone()], |i, j| {
+        (i == 0).then(|| p(j, 3))
+    });
     let suff = same(&s1.eval(&u, &e)[0], &s2_uu.eval(&u, &o)[0])
         && same(&s1.eval(&e, &u)[0], &s2_vv.eval(&o, &u)[0])
         && same(&s1.eval(&u, &e)[0], &s2_uv.eval(&o, &u)[0]);
@@ -182,7 +204,12 @@ fn g0_claims() -> Vec<Claim> {
         + pts[3].clone() * s.pow(2)
         + alpha.clone() * (pts[1].clone() - &pts[0]) * &s * (int(1) - s.clone())
         + alpha.clone() * (pts[2].clone() - &pts[3]) * &c * (int(1) - c.clone());
-    let funcs = [c.pow(2), s.pow(2), s.clone() - s.pow(2), c.clone() - c.pow(2)];
+    let funcs = [
+        c.pow(2),
+        s.pow(2),
+        s.clone() - s.pow(2),
+        c.clone() - c.pow(2),
+    ];
     let coeff = |f: &Poly, k: usize| {
         let f = nf(f);
         let (s_pow, c_pow) = [(0, 0), (1, 0), (0, 1), (2, 0)][k];
@@ -193,8 +220,12 @@ fn g0_claims() -> Vec<Claim> {
     let (l1_, l2_) = (var("lambda1"), var("lambda2"));
     let corollary = s1.eval(&u, &e)[0].derivative("alpha2").is_zero()
         && s1.eval(&e, &u)[0].derivative("alpha1").is_zero()
-        && net("q", [l1_.clone(), l2_.clone()], |_, _| None).eval(&u, &o)[0].derivative("lambda2").is_zero()
-        && net("q", [l1_, l2_], |_, _| None).eval(&o, &u)[0].derivative("lambda1").is_zero();
+        && net("q", [l1_.clone(), l2_.clone()], |_, _| None).eval(&u, &o)[0]
+            .derivative("lambda2")
+            .is_zero()
+        && net("q", [l1_, l2_], |_, _| None).eval(&o, &u)[0]
+            .derivative("lambda1")
+            .is_zero();
     vec![
         Claim::check(
             "Theorems 3–5 1) sufficiency: Pᵢ₃ = Qᵢ₀, α₁ = λ₁ (u–u); P₃ⱼ = Q₀ⱼ, α₂ = λ₂ (v–v); \
@@ -261,35 +292,60 @@ fn printed_factor(join: TrigJoin) -> Option<Q> {
 }
 
 fn g1_claims() -> Vec<Claim> {
-    let (a1, a2, l1, l2, mu) = (var("alpha1"), var("alpha2"), var("lambda1"), var("lambda2"), var("mu"));
+    let (a1, a2, l1, l2, mu) = (
+        var("alpha1"),
+        var("alpha2"),
+        var("lambda1"),
+        var("lambda2"),
+        var("mu"),
+    );
     let d = |k: usize| var(&format!("d{k}"));
     let p3 = |k: usize| var(&format!("p{k}3"));
-    let (u, o, e) = (sym_param("u"), TrigParam::<Poly>::start(), TrigParam::<Poly>::end());
+    let (u, o, e) = (
+        sym_param("u"),
+        TrigParam::<Poly>::start(),
+        TrigParam::<Poly>::end(),
+    );
     // u–u: α₂ ΔPᵢ = μ λ₂ ΔQᵢ with ΔPᵢ = μλ₂dᵢ, ΔQᵢ = α₂dᵢ.
-    let s1 = net("p", [a1.clone(), a2.clone()], |i, j| (j == 2).then(|| p3(i) - mu.clone() * &l2 * d(i)));
+    let s1 = net("p", [a1.clone(), a2.clone()], |i, j| {
+        (j == 2).then(|| p3(i) - mu.clone() * &l2 * d(i))
+    });
     let s2 = net("q", [a1.clone(), l2.clone()], |i, j| match j {
         0 => Some(p3(i)),
         1 => Some(p3(i) + a2.clone() * d(i)),
         _ => None,
     });
-    let uu = same(&s1.partial(0, 1, &u, &e)[0], &(mu.clone() * &s2.partial(0, 1, &u, &o)[0]));
+    let uu = same(
+        &s1.partial(0, 1, &u, &e)[0],
+        &(mu.clone() * &s2.partial(0, 1, &u, &o)[0]),
+    );
     // v–v: α₁ ΔP = μ λ₁ ΔQ along u = π/2 / u = 0.
     let p3j = |k: usize| var(&format!("p3{k}"));
-    let t1 = net("p", [a1.clone(), a2.clone()], |i, j| (i == 2).then(|| p3j(j) - mu.clone() * &l1 * d(j)));
+    let t1 = net("p", [a1.clone(), a2.clone()], |i, j| {
+        (i == 2).then(|| p3j(j) - mu.clone() * &l1 * d(j))
+    });
     let t2 = net("q", [l1.clone(), a2.clone()], |i, j| match i {
         0 => Some(p3j(j)),
         1 => Some(p3j(j) + a1.clone() * d(j)),
         _ => None,
     });
-    let vv = same(&t1.partial(1, 0, &e, &u)[0], &(mu.clone() * &t2.partial(1, 0, &o, &u)[0]));
+    let vv = same(
+        &t1.partial(1, 0, &e, &u)[0],
+        &(mu.clone() * &t2.partial(1, 0, &o, &u)[0]),
+    );
     // u–v: α₂ (Pₖ₃ − Pₖ₂) = μ λ₁ (Q₁ₖ − Q₀ₖ), λ₂ = α₁.
-    let r1 = net("p", [a1.clone(), a2.clone()], |i, j| (j == 2).then(|| p3(i) - mu.clone() * &l1 * d(i)));
+    let r1 = net("p", [a1.clone(), a2.clone()], |i, j| {
+        (j == 2).then(|| p3(i) - mu.clone() * &l1 * d(i))
+    });
     let r2 = net("q", [l1.clone(), a1.clone()], |i, j| match i {
         0 => Some(p3(j)),
         1 => Some(p3(j) + a2.clone() * d(j)),
         _ => None,
     });
-    let uv = same(&r1.partial(0, 1, &u, &e)[0], &(mu.clone() * &r2.partial(1, 0, &o, &u)[0]));
+    let uv = same(
+        &r1.partial(0, 1, &u, &e)[0],
+        &(mu.clone() * &r2.partial(1, 0, &o, &u)[0]),
+    );
     let factors = [TrigJoin::UU, TrigJoin::VV, TrigJoin::UV].map(printed_factor);
     let show = |f: &Option<Q>| f.as_ref().map_or("none".to_string(), |q| q.to_string());
     vec![
@@ -348,7 +404,9 @@ fn faux_claim() -> Claim {
     )
     .expect("4 × 4");
     let s2 = TrigRect::new(
-        (0..4).map(|i| vec![p(i, 3), p(i, 4 + i), p(i, 5 + i), p(i, 6 + i)]).collect(),
+        (0..4)
+            .map(|i| vec![p(i, 3), p(i, 4 + i), p(i, 5 + i), p(i, 6 + i)])
+            .collect(),
         [one.clone(), one],
     )
     .expect("4 × 4");

@@ -49,7 +49,9 @@ fn number(v: &Value, what: &str) -> Result<BigRational, Error> {
     match v {
         Value::Number(n) => parse_rational(&n.to_string()),
         Value::String(s) => parse_rational(s),
-        _ => Err(Error::Format(format!("{what} should be a number, found {v}"))),
+        _ => Err(Error::Format(format!(
+            "{what} should be a number, found {v}"
+        ))),
     }
 }
 

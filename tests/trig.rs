@@ -103,7 +103,11 @@ fn curve_value_by_hand() {
 #[test]
 fn surface_partials_match_finite_differences() {
     let net: Vec<Vec<Vec<f64>>> = (0..4)
-        .map(|i| (0..4).map(|j| vec![i as f64, j as f64, ((i * j) % 5) as f64]).collect())
+        .map(|i| {
+            (0..4)
+                .map(|j| vec![i as f64, j as f64, ((i * j) % 5) as f64])
+                .collect()
+        })
         .collect();
     let s = TrigRect::new(net, [1.2, 0.7]).unwrap();
     let (u, v, h) = (0.4, 0.9, 1e-4);
@@ -113,7 +117,11 @@ fn surface_partials_match_finite_differences() {
         s.partial(ku, kv, &a, &b)
     };
     let fd_uv: Vec<f64> = (0..3)
-        .map(|k| (f(0, 0, u + h, v + h)[k] - f(0, 0, u + h, v - h)[k] - f(0, 0, u - h, v + h)[k] + f(0, 0, u - h, v - h)[k]) / (4.0 * h * h))
+        .map(|k| {
+            (f(0, 0, u + h, v + h)[k] - f(0, 0, u + h, v - h)[k] - f(0, 0, u - h, v + h)[k]
+                + f(0, 0, u - h, v - h)[k])
+                / (4.0 * h * h)
+        })
         .collect();
     assert!(near(&f(1, 1, u, v), &fd_uv, 1e-5));
     let fd_uu: Vec<f64> = (0..3)
@@ -124,22 +132,40 @@ fn surface_partials_match_finite_differences() {
 
 #[test]
 fn stitch_rejects_bad_parameters() {
-    let net: Vec<Vec<Vec<Q>>> = (0..4).map(|i| (0..4).map(|j| vec![ratio(i, 1), ratio(j, 1)]).collect()).collect();
+    let net: Vec<Vec<Vec<Q>>> = (0..4)
+        .map(|i| (0..4).map(|j| vec![ratio(i, 1), ratio(j, 1)]).collect())
+        .collect();
     let s1 = TrigRect::new(net, [ratio(1, 1), ratio(1, 1)]).unwrap();
     let far = || [s1.points()[0].clone(), s1.points()[1].clone()];
-    assert!(matches!(trig_stitch(&s1, ratio(1, 1), ratio(0, 1), far()), Err(Error::Domain(_))));
-    assert!(matches!(trig_stitch(&s1, ratio(0, 1), ratio(1, 1), far()), Err(Error::Domain(_))));
+    assert!(matches!(
+        trig_stitch(&s1, ratio(1, 1), ratio(0, 1), far()),
+        Err(Error::Domain(_))
+    ));
+    assert!(matches!(
+        trig_stitch(&s1, ratio(0, 1), ratio(1, 1), far()),
+        Err(Error::Domain(_))
+    ));
     assert!(matches!(
         trig_stitch(&s1, ratio(1, 1), ratio(1, 1), [vec![], vec![]]),
         Err(Error::Shape(_))
     ));
-    assert!(matches!(TrigRect::new(vec![vec![vec![ratio::<Q>(1, 1)]]], [ratio(1, 1), ratio(1, 1)]), Err(Error::Shape(_))));
+    assert!(matches!(
+        TrigRect::new(
+            vec![vec![vec![ratio::<Q>(1, 1)]]],
+            [ratio(1, 1), ratio(1, 1)]
+        ),
+        Err(Error::Shape(_))
+    ));
 }
 
 /// Fig. 6(a) shapes and Fig. 5(a) factors.
 fn bowl_parameters() -> (Q, [Q; 4], [Q; 4]) {
     let r = |k: i64| ratio::<Q>(k, 100);
-    (r(120), [r(130), r(110), r(110), r(130)], [r(100), r(80), r(80), r(70)])
+    (
+        r(120),
+        [r(130), r(110), r(110), r(130)],
+        [r(100), r(80), r(80), r(70)],
+    )
 }
 
 fn fixture(name: &str) -> String {
@@ -152,7 +178,11 @@ fn check_fixture(name: &str, surfaces: &[TrigRect<Q>]) {
     let patches: Vec<TrigPatch<Q>> = surfaces.iter().cloned().map(TrigPatch::Rect).collect();
     if std::env::var_os("EXACT_BEZIER_BLESS").is_some() {
         let json: Vec<_> = patches.iter().map(trig_patch_to_json).collect();
-        std::fs::write(fixture(name), serde_json::to_string_pretty(&json).unwrap() + "\n").unwrap();
+        std::fs::write(
+            fixture(name),
+            serde_json::to_string_pretty(&json).unwrap() + "\n",
+        )
+        .unwrap();
     }
     let text = std::fs::read_to_string(fixture(name)).unwrap();
     assert_eq!(read_trig_patches(&text).unwrap().unwrap(), patches);
@@ -166,17 +196,29 @@ fn bowl_fixtures() {
     for k in 0..4 {
         let next = (k + 1) % 4;
         assert!(trig_g0(&g0[k], &g0[next], TrigJoin::UU, Tolerance::EXACT));
-        assert_eq!(trig_g1_factor(&g1[k], &g1[next], TrigJoin::UU, Tolerance::EXACT), Some(mu[k].clone()));
+        assert_eq!(
+            trig_g1_factor(&g1[k], &g1[next], TrigJoin::UU, Tolerance::EXACT),
+            Some(mu[k].clone())
+        );
     }
     // The printed S₁ is kept: P₀₀ = (−2.18, 2.52, 0.85), P₃₃ = (0.37, 0.80, 0.02).
-    assert_eq!(g1[0].points()[0][0], vec![ratio(-218, 100), ratio(252, 100), ratio(85, 100)]);
-    assert_eq!(g1[0].points()[3][3], vec![ratio(37, 100), ratio(80, 100), ratio(2, 100)]);
+    assert_eq!(
+        g1[0].points()[0][0],
+        vec![ratio(-218, 100), ratio(252, 100), ratio(85, 100)]
+    );
+    assert_eq!(
+        g1[0].points()[3][3],
+        vec![ratio(37, 100), ratio(80, 100), ratio(2, 100)]
+    );
     check_fixture("bowl.json", &g1);
     check_fixture("bowl_g0.json", &g0);
 }
 
 fn cli(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_exact-bezier")).args(args).output().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_exact-bezier"))
+        .args(args)
+        .output()
+        .unwrap();
     (
         out.status.code().unwrap_or(-1),
         String::from_utf8_lossy(&out.stdout).into_owned(),
@@ -189,7 +231,11 @@ fn cli_evaluates_trig_patches() {
     let dir = std::env::temp_dir().join(format!("trig-cli-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let curve = dir.join("curve.json");
-    std::fs::write(&curve, r#"{"kind": "trig-curve", "alpha": 1, "points": [[0,0],[1,2],[3,2],[4,0]]}"#).unwrap();
+    std::fs::write(
+        &curve,
+        r#"{"kind": "trig-curve", "alpha": 1, "points": [[0,0],[1,2],[3,2],[4,0]]}"#,
+    )
+    .unwrap();
     let curve = curve.to_str().unwrap();
     let (code, out, _) = cli(&["eval", curve, "--at", "tau=1/2"]);
     assert_eq!(code, 0);
@@ -206,7 +252,10 @@ fn cli_evaluates_trig_patches() {
     let (code, out, _) = cli(&["eval", &bowl, "--at", "tau=0,tau=0"]);
     assert_eq!(code, 0);
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
-    assert_eq!(v[0]["point"], serde_json::json!(["-109/50", "63/25", "17/20"]));
+    assert_eq!(
+        v[0]["point"],
+        serde_json::json!(["-109/50", "63/25", "17/20"])
+    );
     for bad in [
         vec!["eval", curve, "--at", "tau=2"],
         vec!["eval", curve, "--at", "tau=1/2,0.3"],

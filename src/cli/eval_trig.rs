@@ -28,8 +28,13 @@ fn parse_at(text: &str) -> Result<TrigAt, Error> {
             .flatten()
             .map(parse_rational)
             .collect::<Result<Vec<_>, _>>()?;
-        if let Some(t) = taus.iter().find(|t| **t < BigRational::from_i64(0) || **t > BigRational::from_i64(1)) {
-            return Err(Error::Domain(format!("tau = {t} is outside [0, 1] (t ∈ [0, π/2])")));
+        if let Some(t) = taus
+            .iter()
+            .find(|t| **t < BigRational::from_i64(0) || **t > BigRational::from_i64(1))
+        {
+            return Err(Error::Domain(format!(
+                "tau = {t} is outside [0, 1] (t ∈ [0, π/2])"
+            )));
         }
         return Ok(TrigAt::Tau(taus));
     }
@@ -40,7 +45,10 @@ fn parse_at(text: &str) -> Result<TrigAt, Error> {
         .iter()
         .map(|s| parse_rational(s).map(|q| q.to_f64()))
         .collect::<Result<_, _>>()?;
-    if let Some(t) = angles.iter().find(|t| !(0.0..=std::f64::consts::FRAC_PI_2).contains(*t)) {
+    if let Some(t) = angles
+        .iter()
+        .find(|t| !(0.0..=std::f64::consts::FRAC_PI_2).contains(*t))
+    {
         return Err(Error::Domain(format!("the angle {t} is outside [0, π/2]")));
     }
     Ok(TrigAt::Angle(angles))
@@ -67,19 +75,32 @@ fn eval_one<T: JsonScalar>(p: &TrigPatch<T>, at: &[TrigParam<T>]) -> Result<Valu
 }
 
 /// Evaluate the trig patches at `--at`.
-pub fn run(patches: &[TrigPatch<BigRational>], at: &str, scalar: ScalarKind) -> Result<Value, Error> {
+pub fn run(
+    patches: &[TrigPatch<BigRational>],
+    at: &str,
+    scalar: ScalarKind,
+) -> Result<Value, Error> {
     let values = match (parse_at(at)?, scalar) {
         (TrigAt::Tau(t), ScalarKind::Exact) => {
             let at: Vec<_> = t.iter().map(TrigParam::from_tau).collect();
-            patches.iter().map(|p| eval_one(p, &at)).collect::<Result<Vec<_>, _>>()?
+            patches
+                .iter()
+                .map(|p| eval_one(p, &at))
+                .collect::<Result<Vec<_>, _>>()?
         }
         (TrigAt::Tau(t), ScalarKind::F64) => {
             let at: Vec<_> = t.iter().map(|x| TrigParam::from_tau(&x.to_f64())).collect();
-            patches.iter().map(|p| eval_one(&p.to_f64(), &at)).collect::<Result<Vec<_>, _>>()?
+            patches
+                .iter()
+                .map(|p| eval_one(&p.to_f64(), &at))
+                .collect::<Result<Vec<_>, _>>()?
         }
         (TrigAt::Angle(t), _) => {
             let at: Vec<_> = t.iter().map(|x| TrigParam::from_angle(*x)).collect();
-            patches.iter().map(|p| eval_one(&p.to_f64(), &at)).collect::<Result<Vec<_>, _>>()?
+            patches
+                .iter()
+                .map(|p| eval_one(&p.to_f64(), &at))
+                .collect::<Result<Vec<_>, _>>()?
         }
     };
     Ok(one_or_many(values))

@@ -73,10 +73,7 @@ impl<T: Field> TrigParam<T> {
     pub fn from_tau(tau: &T) -> Self {
         let tt = tau.clone() * tau;
         let den = T::one() + &tt;
-        TrigParam::new(
-            (tau.clone() + tau) / &den,
-            (T::one() - tt) / den,
-        )
+        TrigParam::new((tau.clone() + tau) / &den, (T::one() - tt) / den)
     }
 }
 
@@ -152,7 +149,13 @@ impl<T: Scalar> TrigFn<T> {
     pub fn basis(alpha: &T) -> [TrigFn<T>; 4] {
         let (z, one, a) = (T::zero(), T::one(), alpha.clone());
         [
-            [one.clone(), -a.clone(), z.clone(), a.clone() - &one, z.clone()],
+            [
+                one.clone(),
+                -a.clone(),
+                z.clone(),
+                a.clone() - &one,
+                z.clone(),
+            ],
             [z.clone(), a.clone(), z.clone(), -a.clone(), z.clone()],
             [-a.clone(), z.clone(), a.clone(), a.clone(), z.clone()],
             [a.clone(), z.clone(), -a.clone(), one - &a, z],
@@ -232,7 +235,10 @@ mod tests {
     fn tau_points_lie_on_the_circle() {
         for (p, q) in [(0, 1), (1, 3), (1, 2), (1, 1), (7, 9)] {
             let at = TrigParam::from_tau(&ratio::<BigRational>(p, q));
-            assert_eq!(at.sin.clone() * &at.sin + at.cos.clone() * &at.cos, ratio(1, 1));
+            assert_eq!(
+                at.sin.clone() * &at.sin + at.cos.clone() * &at.cos,
+                ratio(1, 1)
+            );
         }
     }
 

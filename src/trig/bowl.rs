@@ -26,9 +26,24 @@ type Printed = [[[i64; 3]; 4]; 4];
 
 /// `P_{ij}` of §5, `[i][j]`, in hundredths.
 const P: Printed = [
-    [[-218, 252, 85], [-450, -103, 98], [-398, -192, 95], [-147, -327, 89]],
-    [[-398, 87, 75], [-282, 79, 41], [-340, -154, 65], [-79, -382, 75]],
-    [[-288, 55, 40], [-165, 6, 36], [-201, -129, 50], [34, -236, 31]],
+    [
+        [-218, 252, 85],
+        [-450, -103, 98],
+        [-398, -192, 95],
+        [-147, -327, 89],
+    ],
+    [
+        [-398, 87, 75],
+        [-282, 79, 41],
+        [-340, -154, 65],
+        [-79, -382, 75],
+    ],
+    [
+        [-288, 55, 40],
+        [-165, 6, 36],
+        [-201, -129, 50],
+        [34, -236, 31],
+    ],
     [[-19, 22, 26], [-3, 24, 2], [-88, -25, 13], [37, 80, 2]],
 ];
 
@@ -42,7 +57,11 @@ const Q: Printed = [
 
 fn point<T: Ordered>(h: [i64; 3], turn: bool) -> Vec<T> {
     let sign = if turn { -1 } else { 1 };
-    vec![ratio(sign * h[0], 100), ratio(sign * h[1], 100), ratio(h[2], 100)]
+    vec![
+        ratio(sign * h[0], 100),
+        ratio(sign * h[1], 100),
+        ratio(h[2], 100),
+    ]
 }
 
 /// Column `j` of a printed net (the 4 points `·ᵢⱼ`), optionally half-turned.
@@ -102,7 +121,10 @@ pub fn trig_bowl<T: Ordered>(
             from_columns([hp(3), hq(1), hq(2), p(0)], al(3))?,
         ]);
     };
-    if mu.iter().any(|m| !m.is_positive_within(crate::Tolerance::EXACT)) {
+    if mu
+        .iter()
+        .any(|m| !m.is_positive_within(crate::Tolerance::EXACT))
+    {
         return Err(Error::Domain("the factors μ must be positive".into()));
     }
     let s2 = trig_stitch(&s1, alpha2[1].clone(), mu[0].clone(), [q(2), q(3)])?;

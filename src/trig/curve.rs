@@ -66,9 +66,12 @@ impl<T: Scalar> TrigCurve<T> {
         (0..self.points[0].len())
             .map(|d| {
                 let coeffs = std::array::from_fn(|k| {
-                    basis.iter().zip(&self.points).fold(T::zero(), |acc, (x, p)| {
-                        acc + &(x.coeffs()[k].clone() * &p[d])
-                    })
+                    basis
+                        .iter()
+                        .zip(&self.points)
+                        .fold(T::zero(), |acc, (x, p)| {
+                            acc + &(x.coeffs()[k].clone() * &p[d])
+                        })
                 });
                 TrigFn::new(coeffs)
             })
@@ -89,7 +92,11 @@ impl<T: Scalar> TrigCurve<T> {
     /// Apply `f` to every coordinate and to α (e.g. exact → `f64`).
     pub fn map<U: Scalar>(&self, f: impl Fn(&T) -> U) -> TrigCurve<U> {
         TrigCurve {
-            points: self.points.iter().map(|p| p.iter().map(&f).collect()).collect(),
+            points: self
+                .points
+                .iter()
+                .map(|p| p.iter().map(&f).collect())
+                .collect(),
             alpha: f(&self.alpha),
         }
     }

@@ -35,7 +35,11 @@ pub enum TrigJoin {
 
 impl TrigJoin {
     /// The pair reoriented so the join is the canonical u–u one.
-    fn canonical<T: Scalar>(self, s1: &TrigRect<T>, s2: &TrigRect<T>) -> (TrigRect<T>, TrigRect<T>) {
+    fn canonical<T: Scalar>(
+        self,
+        s1: &TrigRect<T>,
+        s2: &TrigRect<T>,
+    ) -> (TrigRect<T>, TrigRect<T>) {
         match self {
             TrigJoin::UU => (s1.clone(), s2.clone()),
             TrigJoin::VV => (s1.swap_uv(), s2.swap_uv()),
@@ -62,7 +66,12 @@ impl TrigJoin {
 /// let s2 = TrigRect::new(q, [ratio(1, 1), ratio(2, 1)]).unwrap();
 /// assert!(trig_g0(&s1, &s2, TrigJoin::UU, Tolerance::EXACT));
 /// ```
-pub fn trig_g0<T: Ordered>(s1: &TrigRect<T>, s2: &TrigRect<T>, join: TrigJoin, tol: Tolerance) -> bool {
+pub fn trig_g0<T: Ordered>(
+    s1: &TrigRect<T>,
+    s2: &TrigRect<T>,
+    join: TrigJoin,
+    tol: Tolerance,
+) -> bool {
     let (a, b) = join.canonical(s1, s2);
     let (fa, fb) = (
         a.u_curve(0, &TrigParam::end()).functions(),
@@ -106,7 +115,10 @@ pub fn trig_g1_factor<T: Ordered>(
     };
     let (d1, d2) = (flat(&a, TrigParam::end()), flat(&b, TrigParam::start()));
     let k = (0..d2.len()).max_by(|&i, &j| {
-        d2[i].abs_val().partial_cmp(&d2[j].abs_val()).unwrap_or(std::cmp::Ordering::Equal)
+        d2[i]
+            .abs_val()
+            .partial_cmp(&d2[j].abs_val())
+            .unwrap_or(std::cmp::Ordering::Equal)
     })?;
     if d2[k].is_zero_within(tol) {
         return None;
@@ -170,7 +182,12 @@ pub fn trig_stitch<T: Ordered>(
         .points()
         .iter()
         .zip(cross.points())
-        .map(|(p, d)| p.iter().zip(d).map(|(x, y)| x.clone() + &(y.clone() * &k)).collect())
+        .map(|(p, d)| {
+            p.iter()
+                .zip(d)
+                .map(|(x, y)| x.clone() + &(y.clone() * &k))
+                .collect()
+        })
         .collect();
     let [q2, q3] = far;
     if q2.len() != 4 || q3.len() != 4 {
