@@ -14,7 +14,7 @@ use crate::scalar::ratio;
 use crate::trig::basis::TrigParam;
 use crate::trig::bowl::trig_bowl;
 use crate::trig::curve::TrigCurve;
-use crate::trig::stitch::{trig_g0, trig_g1_factor, TrigJoin};
+use crate::trig::stitch::{trig_g0, trig_g1_factor, trig_tangent_continuous, TrigJoin};
 use crate::trig::surface::TrigRect;
 use crate::Tolerance;
 use num_rational::BigRational;
@@ -428,16 +428,17 @@ fn faux_claim() -> Claim {
     let n2 = cross(&b.partial(1, 0, &u, &o), &b.partial(0, 1, &u, &o));
     let rho = trig_sum(|i| Poly::from_int(1 + i as i64), &Poly::from_int(1), &u);
     let parallel = n1.iter().zip(&n2).all(|(x, y)| same(&(rho.clone() * x), y));
+    let checker = trig_tangent_continuous(&s1, &s2, TrigJoin::UU, EXACT) == Ok(true);
     Claim::check(
         "Theorem 3 proof: by Faux's method the normal condition (5) reduces to (6) ∂S₁/∂v = μ ∂S₂/∂v \
          (so condition 2) is necessary)",
         &format!("{SRC} §3 eqs. (5)→(6)"),
         Verdict::Refuted,
-        !(g0 && parallel) || factor.is_some(),
+        !(g0 && parallel && checker) || factor.is_some(),
         format!(
             "counterexample: Pᵢⱼ = (i, j, 0), Qᵢⱼ = (i, 3, 0), (i, 4+i, 0), (i, 5+i, 0), (i, 6+i, 0), all α = 1: \
              G⁰ {g0}, N₂ ≡ ρ(u)N₁ with ρ = Σ Xᵢ(u)(1+i) ≥ 1 (tangent planes agree, same side) = {parallel}, \
-             but no constant μ (checker: {factor:?}). Corrected: G¹ iff ∂S₁/∂v = μ(u)∂S₂/∂v + ν(u)∂S/∂u with \
+             trig_tangent_continuous = {checker}, but no constant μ (checker: {factor:?}). Corrected: G¹ iff ∂S₁/∂v = μ(u)∂S₂/∂v + ν(u)∂S/∂u with \
              μ(u) > 0; (6) is sufficient only"
         ),
     )

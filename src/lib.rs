@@ -69,6 +69,6 @@ pub use tri::TriPatch;
 pub use trig::basis::{circle_normal_form, trig_basis_values, TrigFn, TrigParam};
 pub use trig::bowl::trig_bowl;
 pub use trig::curve::TrigCurve;
-pub use trig::stitch::{trig_g0, trig_g1_factor, trig_stitch, TrigJoin};
+pub use trig::stitch::{trig_g0, trig_g1_factor, trig_stitch, trig_tangent_continuous, TrigJoin};
 pub use trig::surface::TrigRect;
 pub use trig_io::{read_trig_patches, trig_patch_to_json, TrigPatch};

@@ -5,8 +5,8 @@
 use exact_bezier::strategy::{point, positive_weight, rational_in, small_rational, unit_parameter};
 use exact_bezier::{
     ratio, read_trig_patches, trig_basis_values, trig_bowl, trig_g0, trig_g1_factor,
-    trig_patch_to_json, trig_stitch, Error, Ordered, Tolerance, TrigCurve, TrigJoin, TrigParam,
-    TrigPatch, TrigRect,
+    trig_patch_to_json, trig_stitch, trig_tangent_continuous, Error, Ordered, Tolerance, TrigCurve,
+    TrigJoin, TrigParam, TrigPatch, TrigRect,
 };
 use num_rational::BigRational;
 use num_traits::{One, Zero};
@@ -59,6 +59,15 @@ proptest! {
         let d2 = s2.partial(0, 1, &u, &TrigParam::start());
         prop_assert_eq!(d1, d2.iter().map(|x| x.clone() * &mu).collect::<Vec<_>>());
         prop_assert_eq!(s1.eval(&u, &TrigParam::end()), s2.eval(&u, &TrigParam::start()));
+        prop_assert_eq!(trig_tangent_continuous(&s1, &s2, TrigJoin::UU, Tolerance::EXACT), Ok(true));
+        // Folding the neighbour back (Qᵢ₁ ↦ 2Qᵢ₀ − Qᵢ₁) turns its normals round.
+        let mut folded = s2.points().to_vec();
+        for row in folded.iter_mut() {
+            row[1] = row[0].iter().zip(&row[1]).map(|(a, b)| a.clone() + a - b).collect();
+        }
+        let folded = TrigRect::new(folded, s2.alpha().clone()).unwrap();
+        prop_assert_eq!(trig_g1_factor(&s1, &folded, TrigJoin::UU, Tolerance::EXACT), None);
+        prop_assert_eq!(trig_tangent_continuous(&s1, &folded, TrigJoin::UU, Tolerance::EXACT), Ok(false));
     }
 
     #[test]

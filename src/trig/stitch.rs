@@ -20,7 +20,7 @@
 use super::basis::TrigParam;
 use super::surface::TrigRect;
 use crate::error::Error;
-use crate::scalar::{Ordered, Scalar, Tolerance};
+use crate::scalar::{ratio, Ordered, Scalar, Tolerance};
 
 /// Which edges of two surfaces meet.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -129,6 +129,78 @@ pub fn trig_g1_factor<T: Ordered>(
         .zip(&d2)
         .all(|(x, y)| (x.clone() - &(mu.clone() * y)).is_zero_within(tol));
     (proportional && mu.is_positive_within(tol)).then_some(mu)
+}
+
+/// `a × b` in 3-D.
+fn cross<T: Scalar>(a: &[T], b: &[T]) -> [T; 3] {
+    std::array::from_fn(|k| {
+        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+        a[i].clone() * &b[j] - a[j].clone() * &b[i]
+    })
+}
+
+/// Tangent-plane continuity (geometric G¹) of a G⁰ join of 3-D surfaces,
+/// without assuming the form (6): the normals `N₁ = ∂S₁/∂u × ∂S₁/∂v` at
+/// `v = π/2` and `N₂` of `S₂` at `v = 0` (canonical orientation) are
+/// parallel along the whole edge, `N₁ × N₂ ≡ 0`, and point to the same side.
+///
+/// Exact: each component of `N₁ × N₂` is a polynomial of degree ≤ 8 in
+/// `(sin u, cos u)`, i.e. `(1+τ²)⁻⁸` times a polynomial of degree ≤ 16 in
+/// `τ = tan(u/2)`, so vanishing at the 17 parameters `τ = k/16` proves it
+/// vanishes identically. The side (`N₁ · N₂ ≥ 0`, and `> 0` somewhere) is
+/// checked at the same 17 parameters; between them it can only change where
+/// a normal vanishes (a singular point of a surface).
+///
+/// Reference: source 002 eq. (5) (the normal condition), which (6) only
+/// implies.
+///
+/// # Errors
+///
+/// [`Error::Shape`] unless both surfaces are 3-D.
+///
+/// # Examples
+///
+/// ```
+/// use exact_bezier::{ratio, trig_g1_factor, trig_tangent_continuous, Tolerance, TrigJoin, TrigRect};
+/// use num_rational::BigRational;
+/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1), ratio(0, 1)];
+/// let one = || [ratio(1, 1), ratio(1, 1)];
+/// let s1 = TrigRect::new((0..4).map(|i| (0..4).map(|j| p(i, j)).collect()).collect(), one()).unwrap();
+/// let s2 = TrigRect::new((0..4).map(|i| vec![p(i, 3), p(i, 4 + i), p(i, 5 + i), p(i, 6 + i)]).collect(), one()).unwrap();
+/// // Both lie in the plane z = 0: G¹, but with no constant factor μ.
+/// assert_eq!(trig_tangent_continuous(&s1, &s2, TrigJoin::UU, Tolerance::EXACT), Ok(true));
+/// assert_eq!(trig_g1_factor(&s1, &s2, TrigJoin::UU, Tolerance::EXACT), None);
+/// ```
+pub fn trig_tangent_continuous<T: Ordered>(
+    s1: &TrigRect<T>,
+    s2: &TrigRect<T>,
+    join: TrigJoin,
+    tol: Tolerance,
+) -> Result<bool, Error> {
+    if s1.points()[0][0].len() != 3 || s2.points()[0][0].len() != 3 {
+        return Err(Error::Shape("normals need 3-D surfaces".into()));
+    }
+    if !trig_g0(s1, s2, join, tol) {
+        return Ok(false);
+    }
+    let (a, b) = join.canonical(s1, s2);
+    let (start, end) = (TrigParam::start(), TrigParam::end());
+    let mut dots = Vec::with_capacity(17);
+    for k in 0..=16 {
+        let u = TrigParam::from_tau(&ratio::<T>(k, 16));
+        let n1 = cross(&a.partial(1, 0, &u, &end), &a.partial(0, 1, &u, &end));
+        let n2 = cross(&b.partial(1, 0, &u, &start), &b.partial(0, 1, &u, &start));
+        if !cross(&n1, &n2).iter().all(|x| x.is_zero_within(tol)) {
+            return Ok(false);
+        }
+        dots.push(
+            n1.iter()
+                .zip(&n2)
+                .fold(T::zero(), |acc, (x, y)| acc + &(x.clone() * y)),
+        );
+    }
+    let negative = dots.iter().any(|d| (-d.clone()).is_positive_within(tol));
+    Ok(!negative && dots.iter().any(|d| d.is_positive_within(tol)))
 }
 
 /// The stitching constructor of §4 (u–u join): the neighbour `S₂` of `S₁`
