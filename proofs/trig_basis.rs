@@ -42,7 +42,7 @@ pub(crate) fn int(n: i64) -> Poly {
 
 /// A surface with symbolic 1-D control points `{name}{i}{j}` and shape
 /// parameters `a1`, `a2`.
-pub(crate) fn sym_rect(name: &str, a1: &Poly, a2: &Poly) -> TrigRect<Poly> {
+fn sym_rect(name: &str, a1: &Poly, a2: &Poly) -> TrigRect<Poly> {
     let pts = (0..4)
         .map(|i| {
             (0..4)
@@ -121,7 +121,7 @@ pub(crate) fn det4(m: &[[Poly; 4]; 4]) -> Poly {
 
 /// The coefficient matrix of `X₀…X₃` on `1, s, c, s²` (their `s c`
 /// coefficients are 0).
-pub(crate) fn basis_matrix(a: &Poly) -> ([[Poly; 4]; 4], bool) {
+fn basis_matrix(a: &Poly) -> ([[Poly; 4]; 4], bool) {
     let x = TrigFn::basis(a);
     let m = std::array::from_fn(|i| std::array::from_fn(|k| x[i].coeffs()[k].clone()));
     (m, x.iter().all(|f| f.coeffs()[4].is_zero()))

@@ -48,6 +48,32 @@ proptest! {
     }
 
     #[test]
+    fn corrected_g0_condition(s1 in rect(), l1 in shape(), rest in vec(vec(point(3), 4), 4)) {
+        // λ₁(Q₁₀ − Q₀₀) = α₁(P₁₃ − P₀₃), λ₁(Q₂₀ − Q₃₀) = α₁(P₂₃ − P₃₃), shared ends.
+        let a1 = s1.alpha()[0].clone();
+        let p = |i: usize| s1.points()[i][3].clone();
+        let toward = |from: Vec<Q>, to: Vec<Q>| -> Vec<Q> {
+            from.iter().zip(&to).map(|(a, b)| a.clone() + &((b.clone() - a) * &a1 / &l1)).collect()
+        };
+        let edge = [p(0), toward(p(0), p(1)), toward(p(3), p(2)), p(3)];
+        let mut q = rest.clone();
+        for i in 0..4 {
+            q[i][0] = edge[i].clone();
+        }
+        let s2 = TrigRect::new(q, [l1.clone(), ratio(1, 1)]).unwrap();
+        prop_assert!(trig_g0(&s1, &s2, TrigJoin::UU, Tolerance::EXACT));
+    }
+
+    #[test]
+    fn theorem_1_monotonicity(tau in unit_parameter(), a in shape(), b in shape()) {
+        // Larger α: X₁, X₂ grow, X₀, X₃ shrink (Theorem 1).
+        let at = TrigParam::from_tau(&tau);
+        let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
+        let (x, y) = (trig_basis_values(&lo, 0, &at), trig_basis_values(&hi, 0, &at));
+        prop_assert!(y[1] >= x[1] && y[2] >= x[2] && y[0] <= x[0] && y[3] <= x[3]);
+    }
+
+    #[test]
     fn constructed_joins_are_g1(s1 in rect(), l2 in shape(), mu in positive_weight(),
                                 far in vec(vec(point(3), 4), 2), tau in unit_parameter()) {
         let s2 = trig_stitch(&s1, l2, mu.clone(), [far[0].clone(), far[1].clone()]).unwrap();
