@@ -245,6 +245,17 @@ fn bowl_fixtures() {
         g1[0].points()[3][3],
         vec![ratio(37, 100), ratio(80, 100), ratio(2, 100)]
     );
+    // The f64 instantiation decides the same joins within a tolerance.
+    let tol = Tolerance(1e-9);
+    let f: Vec<TrigRect<f64>> = g1.iter().map(|s| s.map(Ordered::to_f64)).collect();
+    for k in 0..4 {
+        let mu_f = trig_g1_factor(&f[k], &f[(k + 1) % 4], TrigJoin::UU, tol).unwrap();
+        assert!((mu_f - mu[k].to_f64()).abs() < 1e-9);
+        assert_eq!(
+            trig_tangent_continuous(&f[k], &f[(k + 1) % 4], TrigJoin::UU, tol),
+            Ok(true)
+        );
+    }
     check_fixture("bowl.json", &g1);
     check_fixture("bowl_g0.json", &g0);
 }
