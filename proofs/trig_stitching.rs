@@ -14,7 +14,7 @@ use crate::scalar::ratio;
 use crate::trig::basis::TrigParam;
 use crate::trig::bowl::trig_bowl;
 use crate::trig::curve::TrigCurve;
-use crate::trig::stitch::{trig_g0, trig_g1_factor, trig_tangent_continuous, TrigJoin};
+use crate::trig::stitch::{cross, trig_g0, trig_g1_factor, trig_tangent_continuous, TrigJoin};
 use crate::trig::surface::TrigRect;
 use crate::Tolerance;
 use num_rational::BigRational;
@@ -416,14 +416,6 @@ fn faux_claim() -> Claim {
     let (a, b) = (lift(&s1), lift(&s2));
     let u = sym_param("u");
     let (o, e) = (TrigParam::start(), TrigParam::end());
-    let cross = |x: &[Poly], y: &[Poly]| -> Vec<Poly> {
-        (0..3)
-            .map(|k| {
-                let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-                x[i].clone() * &y[j] - x[j].clone() * &y[i]
-            })
-            .collect()
-    };
     let n1 = cross(&a.partial(1, 0, &u, &e), &a.partial(0, 1, &u, &e));
     let n2 = cross(&b.partial(1, 0, &u, &o), &b.partial(0, 1, &u, &o));
     let rho = trig_sum(|i| Poly::from_int(1 + i as i64), &Poly::from_int(1), &u);
@@ -457,10 +449,7 @@ fn bowl_claims() -> Vec<Claim> {
     let dq: Vec<Q> = (0..3)
         .map(|d| g0_bowl[1].points()[0][1][d].clone() - &g0_bowl[1].points()[0][0][d])
         .collect();
-    let cross_zero = (0..3).all(|k| {
-        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-        (dp[i].clone() * &dq[j] - dp[j].clone() * &dq[i]).is_zero()
-    });
+    let cross_zero = cross(&dp, &dq).iter().all(Zero::is_zero);
     let printed_not_g1 = trig_g1_factor(&g0_bowl[0], &g0_bowl[1], TrigJoin::UU, EXACT).is_none();
     let g1_bowl = trig_bowl(&alpha1, &alpha2, Some(&mu)).expect("positive μ");
     let factors: Vec<Option<Q>> = (0..4)
