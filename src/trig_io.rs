@@ -8,6 +8,8 @@
 //!
 //! `points[i][j]` is `Pᵢⱼ` (`i` the u index); a single number as the
 //! `"alpha"` of a trig-rect means `α1 = α2`. Every number is read exactly.
+//! Any α is accepted (the basis is non-negative, so the convex-hull
+//! property holds, exactly for α ∈ [0, 2]).
 //!
 //! Reference: source 002 Definitions 2–3; DESIGN.md §4.
 
