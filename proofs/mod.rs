@@ -25,6 +25,8 @@ pub mod curves;
 pub mod lecture_joins;
 pub mod quiz;
 pub mod reduction;
+pub mod trig_basis;
+pub mod trig_stitching;
 
 /// The outcome of checking one claim.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -179,6 +181,8 @@ pub const FAMILIES: &[Family] = &[
     Family { name: "curves", run: curves::claims },
     Family { name: "lecture_joins", run: lecture_joins::claims },
     Family { name: "reduction", run: reduction::claims },
+    Family { name: "trig_basis", run: trig_basis::claims },
+    Family { name: "trig_stitching", run: trig_stitching::claims },
 ];
 
 /// Run every family (in parallel threads) and return the claims in order.

@@ -51,6 +51,8 @@ mod scalar;
 #[cfg(feature = "proptest")]
 pub mod strategy;
 mod tri;
+mod trig;
+mod trig_io;
 
 #[path = "../proofs/mod.rs"]
 pub mod proofs;
@@ -75,3 +77,9 @@ pub use scalar::{
     Tolerance,
 };
 pub use tri::TriPatch;
+pub use trig::basis::{circle_normal_form, trig_basis_values, TrigFn, TrigParam};
+pub use trig::bowl::trig_bowl;
+pub use trig::curve::TrigCurve;
+pub use trig::stitch::{trig_g0, trig_g1_factor, trig_stitch, trig_tangent_continuous, TrigJoin};
+pub use trig::surface::TrigRect;
+pub use trig_io::{read_trig_patches, trig_patch_to_json, TrigPatch};

@@ -484,6 +484,32 @@ impl fmt::Display for Poly {
     }
 }
 
+impl Poly {
+    /// The partial derivative `∂/∂name` (0 if `name` does not occur).
+    ///
+    /// ```
+    /// use exact_bezier::Poly;
+    /// let (x, y) = (Poly::var("x"), Poly::var("y"));
+    /// let p = x.pow(3) * &y + y.clone();
+    /// assert_eq!(p.derivative("x"), Poly::from_int(3) * x.pow(2) * &y);
+    /// ```
+    pub fn derivative(&self, name: &str) -> Poly {
+        let id = intern(name);
+        let mut out = Poly::zero();
+        for (m, c) in &self.terms {
+            let e = m.exponent(id);
+            if e > 0 {
+                let mut rest = m.without(id);
+                if e > 1 {
+                    rest = rest.mul(&Monomial(vec![(id, e - 1)]));
+                }
+                out.add_term(rest, c.clone() * BigRational::from_integer(e.into()));
+            }
+        }
+        out
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

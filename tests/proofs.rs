@@ -42,3 +42,4 @@ macro_rules! families {
 }
 
 families!(quiz, bernstein, curves, lecture_joins, reduction);
+families!(quiz, trig_basis, trig_stitching);

@@ -1,8 +1,8 @@
 //! `eval FILE --at U[,V] [--scalar f64]`.
 
-use super::{load, one_or_many, parse_list, ScalarKind};
+use super::{one_or_many, parse_list, read_input, ScalarKind};
 use crate::error::Error;
-use crate::io::{point_to_json, JsonScalar, Patch};
+use crate::io::{point_to_json, read_patches, JsonScalar, Patch};
 use crate::scalar::Ordered;
 use serde_json::{json, Value};
 
@@ -12,6 +12,7 @@ pub struct Args {
     /// Input file (JSON), or - for standard input.
     file: String,
     /// Parameter(s): t for a curve, u,v for a rect or tri patch (exact text: 1/3, 0.25).
+    /// Trig patches: tau=1/3[,tau=1/2] (exact, τ = tan(t/2)) or angles in radians (f64).
     #[arg(long, allow_hyphen_values = true)]
     at: String,
     /// Scalar to compute with.
@@ -20,8 +21,12 @@ pub struct Args {
 }
 
 pub fn run(a: &Args) -> Result<Value, Error> {
+    let text = read_input(&a.file)?;
+    if let Some(trig) = crate::trig_io::read_trig_patches(&text)? {
+        return super::eval_trig::run(&trig, &a.at, a.scalar);
+    }
     let params = parse_list(&a.at)?;
-    let patches = load(&a.file)?;
+    let patches = read_patches(&text)?;
     let values = patches
         .iter()
         .map(|p| match a.scalar {

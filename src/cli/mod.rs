@@ -19,6 +19,7 @@ mod figures;
 mod mesh;
 mod plot;
 mod join;
+mod eval_trig;
 mod prove;
 mod reduce;
 mod transform;

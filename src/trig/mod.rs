@@ -1,0 +1,12 @@
+//! Trigonometric curves and surfaces with shape parameters (source 002,
+//! Sun & Shi): the basis (1), curves, tensor-product surfaces, G¹ stitching
+//! and the bowl of §5 — generic over the scalar, exact at the rational
+//! points of the unit circle, symbolic in `Q[s, c]/(s² + c² − 1)`.
+//!
+//! Reference: source 002.
+
+pub mod basis;
+pub mod bowl;
+pub mod curve;
+pub mod stitch;
+pub mod surface;
