@@ -41,5 +41,12 @@ macro_rules! families {
     };
 }
 
-families!(quiz, bernstein, curves, lecture_joins, reduction);
-families!(quiz, trig_basis, trig_stitching);
+families!(
+    quiz,
+    bernstein,
+    curves,
+    lecture_joins,
+    reduction,
+    trig_basis,
+    trig_stitching,
+);
