@@ -33,7 +33,9 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+mod arc;
 mod bernstein;
+mod circle;
 pub mod cli;
 mod curve;
 mod error;
@@ -49,7 +51,12 @@ mod tri;
 #[path = "../proofs/mod.rs"]
 pub mod proofs;
 
+pub use arc::{
+    check_lambda, lambda_change_delta, lambda_change_param, lambda_interval,
+    lambda_of_sigma_cubed, sigma_of_lambda, ArcCubic, LambdaFactors, QuadArc, Roots,
+};
 pub use bernstein::{bernstein, bernstein_all};
+pub use circle::{circle_of, Circle, NotCircle};
 pub use curve::{mobius_factors, RationalCurve};
 pub use error::{Error, MAX_DEGREE};
 pub use hpoint::{de_casteljau, HPoint};
