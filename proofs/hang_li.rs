@@ -797,14 +797,15 @@ mod monotonicity {
         )
     }
 
-    /// `(ω₁³, ω₂³)` exactly.
-    pub(super) fn omega_cubes(c: &BigRational, l: &BigRational) -> (BigRational, BigRational) {
-        let f = LambdaFactors::new(c, l);
-        let k = BigRational::from_i64(1) + c * BigRational::from_i64(2);
-        let k3 = &k * &k * &k / BigRational::from_i64(27);
-        (
-            k3.clone() / (&f.n * &f.n * &f.d),
-            k3 * &f.e * &f.e * &f.e / (&f.n * &f.d * &f.d),
-        )
-    }
+}
+
+/// `(ω₁³, ω₂³)` exactly.
+pub(crate) fn omega_cubes(c: &BigRational, l: &BigRational) -> (BigRational, BigRational) {
+    let f = LambdaFactors::new(c, l);
+    let k = BigRational::from_i64(1) + c * BigRational::from_i64(2);
+    let k3 = &k * &k * &k / BigRational::from_i64(27);
+    (
+        k3.clone() / (&f.n * &f.n * &f.d),
+        k3 * &f.e * &f.e * &f.e / (&f.n * &f.d * &f.d),
+    )
 }

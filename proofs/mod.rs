@@ -20,6 +20,7 @@ use serde_json::{json, Value};
 use std::fmt;
 
 pub mod hang_li;
+pub mod hang_li_tables;
 pub mod quiz;
 
 /// The outcome of checking one claim.
@@ -172,6 +173,7 @@ pub struct Family {
 pub const FAMILIES: &[Family] = &[
     Family { name: "quiz", run: quiz::claims },
     Family { name: "hang_li", run: hang_li::claims },
+    Family { name: "hang_li_tables", run: hang_li_tables::claims },
 ];
 
 /// Run every family (in parallel threads) and return the claims in order.

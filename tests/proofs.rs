@@ -41,4 +41,4 @@ macro_rules! families {
     };
 }
 
-families!(quiz, hang_li);
+families!(quiz, hang_li, hang_li_tables);
