@@ -12,7 +12,9 @@ use num_rational::BigRational;
 use serde_json::Value;
 use std::io::Read;
 
+mod arc;
 mod eval;
+mod is_circle;
 mod prove;
 mod transform;
 
@@ -44,6 +46,10 @@ enum Command {
     Elevate(transform::ElevateArgs),
     /// Run every proof in proofs/ and print one line per claim.
     Prove(prove::Args),
+    /// A circular arc as a standard-form rational cubic (source 004 eq. 1).
+    Arc(arc::Args),
+    /// Does a curve lie on a circle? Exact centre and radius², or the reason.
+    IsCircle(is_circle::Args),
 }
 
 /// Run the command line; returns the process exit code.
@@ -60,6 +66,8 @@ pub fn main() -> i32 {
         Command::Reparam(a) => transform::reparam(&a),
         Command::Elevate(a) => transform::elevate(&a),
         Command::Prove(a) => return prove::run(&a),
+        Command::Arc(a) => arc::run(&a),
+        Command::IsCircle(a) => is_circle::run(&a),
     };
     match result {
         Ok(v) => {
