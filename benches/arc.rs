@@ -5,14 +5,25 @@ use num_rational::BigRational;
 
 fn arcs(c: &mut Criterion) {
     let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
-    // θ/2 with cos 3/5, sin 4/5; λ = 43/1001... chosen from σ = 2/3 (perfect cube).
-    let arc = QuadArc::from_ends(&p(1, 3), &p(-4, 7), &ratio(3, 5), &ratio(4, 5), Tolerance::EXACT).unwrap();
+    // θ/2 with cos 3/5, sin 4/5; λ chosen from σ = 2/3, so σ³ = 8/27 is a perfect cube.
+    let arc = QuadArc::from_ends(
+        &p(1, 3),
+        &p(-4, 7),
+        &ratio(3, 5),
+        &ratio(4, 5),
+        Tolerance::EXACT,
+    )
+    .unwrap();
     let sigma = ratio::<BigRational>(2, 3);
     let lambda = exact_bezier::lambda_of_sigma_cubed(arc.cos_half(), &ratio(8, 27)).unwrap();
-    let arc_f = arc.map(|x| exact_bezier::Ordered::to_f64(x));
+    let arc_f = arc.map(exact_bezier::Ordered::to_f64);
     let lambda_f = exact_bezier::Ordered::to_f64(&lambda);
     c.bench_function("arc cubic from lambda, exact (cube root decided)", |b| {
-        b.iter(|| black_box(&arc).cubic_for_lambda(black_box(&lambda)).unwrap())
+        b.iter(|| {
+            black_box(&arc)
+                .cubic_for_lambda(black_box(&lambda))
+                .unwrap()
+        })
     });
     c.bench_function("arc cubic from lambda, f64", |b| {
         b.iter(|| {
@@ -21,7 +32,7 @@ fn arcs(c: &mut Criterion) {
         })
     });
     let cubic = arc.standard_cubic(&sigma).unwrap();
-    let cubic_f = cubic.map(|x| exact_bezier::Ordered::to_f64(x));
+    let cubic_f = cubic.map(exact_bezier::Ordered::to_f64);
     c.bench_function("circle test, exact cubic", |b| {
         b.iter(|| circle_of(black_box(&cubic), Tolerance::EXACT).unwrap())
     });

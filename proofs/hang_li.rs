@@ -63,7 +63,10 @@ fn all_zero(claim: &str, source: &str, expected: Verdict, polys: &[Poly], how: &
     let bad = polys.iter().map(reduce).find(|p| !p.is_zero());
     let detail = match &bad {
         None => how.to_string(),
-        Some(p) => format!("{how}; non-zero remainder {}", super::abbreviate(&p.to_string())),
+        Some(p) => format!(
+            "{how}; non-zero remainder {}",
+            super::abbreviate(&p.to_string())
+        ),
     };
     Claim::check(claim, source, expected, bad.is_none(), detail)
 }
@@ -82,9 +85,15 @@ fn free_arc(c: &Poly) -> QuadArc<Poly> {
 fn unit_arc() -> QuadArc<Poly> {
     let (c, s) = (v("c"), v("s"));
     QuadArc::new_raw([
-        HPoint { coords: vec![c.clone(), -s.clone(), int(1)] },
-        HPoint { coords: vec![int(1), int(0), c] },
-        HPoint { coords: vec![v("c"), s, int(1)] },
+        HPoint {
+            coords: vec![c.clone(), -s.clone(), int(1)],
+        },
+        HPoint {
+            coords: vec![int(1), int(0), c],
+        },
+        HPoint {
+            coords: vec![v("c"), s, int(1)],
+        },
     ])
 }
 
@@ -92,7 +101,9 @@ fn unit_arc() -> QuadArc<Poly> {
 fn free_semicircle() -> QuadArc<Poly> {
     QuadArc::new_raw([
         HPoint::from_cartesian(&[v("x0"), v("y0")]),
-        HPoint { coords: vec![v("bx"), v("by"), int(0)] },
+        HPoint {
+            coords: vec![v("bx"), v("by"), int(0)],
+        },
         HPoint::from_cartesian(&[v("x2"), v("y2")]),
     ])
 }
@@ -138,8 +149,18 @@ pub fn claims() -> Vec<Claim> {
         eq1_standard(),
     ];
     out.extend(eq2_semicircle());
-    out.extend([eq3_4_nonstandard(), eq3_4_coefficients(), eq5_semicircle(), eq6_reparam()]);
-    out.extend([mu_lemma(), parameter_lemma(), eq7_lambda(), eq10_as_printed()]);
+    out.extend([
+        eq3_4_nonstandard(),
+        eq3_4_coefficients(),
+        eq5_semicircle(),
+        eq6_reparam(),
+    ]);
+    out.extend([
+        mu_lemma(),
+        parameter_lemma(),
+        eq7_lambda(),
+        eq10_as_printed(),
+    ]);
     out.extend(monotonicity::claims());
     out
 }
@@ -152,7 +173,7 @@ fn eq1_first_inner() -> Claim {
     let cubic = lambda_cubic(&free_arc(&c));
     let h = &cubic.ctrl()[1];
     let norm = r.pow(2) * &f.d * &f.d; // the common factor r²D²
-    // Printed ω₁ = (1/3)·k/(1 − λk)·∛((1 − λk)/(1 + 2λck)) = k·r/(3·N·D).
+                                       // Printed ω₁ = (1/3)·k/(1 − λk)·∛((1 − λk)/(1 + 2λck)) = k·r/(3·N·D).
     let omega = h.weight().clone() * int(3) * &f.n * &f.d - kk.clone() * &r * &norm;
     // Printed b₁* = ([1 + 2λck]·b̄₀ + [2c − 2λck]·b̄₁)/(1 + 2c).
     let a = int(1) + int(2) * &l * &c * &kk;
@@ -180,8 +201,8 @@ fn eq1_second_inner() -> Claim {
     let h = &cubic.ctrl()[2];
     let norm = r.pow(2) * &f.d * &f.d;
     // Printed ω₂ = (1/3)·k·E/D·∛(D/N) = k·E·r²/(3·N·D²).
-    let omega = h.weight().clone() * int(3) * &f.n * &f.d * &f.d
-        - kk.clone() * &f.e * &r.pow(2) * &norm;
+    let omega =
+        h.weight().clone() * int(3) * &f.n * &f.d * &f.d - kk.clone() * &f.e * &r.pow(2) * &norm;
     // Printed b₂* = ((1 − λk)·b̄₂ + (2c + 4λc²k)·b̄₁)/(k·[1 − λ(1 − 4c²)]).
     let a = int(1) - l.clone() * &kk;
     let b = int(2) * &c + int(4) * &l * &c * &c * &kk;
@@ -219,11 +240,24 @@ fn eq1_two_thirds_pi() -> Claim {
         h2.weight().clone() * int(3) * &p1 * &m1 * &p1 - int(2) * v("rho").pow(2) * &norm,
     ];
     for (i, xy) in ["x", "y"].iter().enumerate() {
-        let (b0, b1, b2) = (v(&format!("{xy}0")), v(&format!("{xy}1")), v(&format!("{xy}2")));
-        polys.push(h1.coords[i].clone() * int(2) - &(h1.weight().clone() * &(p1.clone() * &b0 + &(m1.clone() * &b1))));
-        polys.push(h2.coords[i].clone() * int(2) - &(h2.weight().clone() * &(m1.clone() * &b2 + &(p1.clone() * &b1))));
+        let (b0, b1, b2) = (
+            v(&format!("{xy}0")),
+            v(&format!("{xy}1")),
+            v(&format!("{xy}2")),
+        );
+        polys.push(
+            h1.coords[i].clone() * int(2)
+                - &(h1.weight().clone() * &(p1.clone() * &b0 + &(m1.clone() * &b1))),
+        );
+        polys.push(
+            h2.coords[i].clone() * int(2)
+                - &(h2.weight().clone() * &(m1.clone() * &b2 + &(p1.clone() * &b1))),
+        );
     }
-    let polys: Vec<Poly> = polys.iter().map(|p| p.reduce_power("rho", 3, &rel)).collect();
+    let polys: Vec<Poly> = polys
+        .iter()
+        .map(|p| p.reduce_power("rho", 3, &rel))
+        .collect();
     all_zero(
         "§1 example θ = 2π/3: b₁* = ((1+2λ)b₀ + (1−2λ)b₁)/2, b₂* = ((1−2λ)b₂ + (1+2λ)b₁)/2, ω₁ = 2/(3(1−2λ))∛((1−2λ)/(1+2λ)), ω₂ = 2/(3(1+2λ))∛((1+2λ)/(1−2λ)), λ ∈ (−1/2, 1/2)",
         &format!("{SRC} §1 example after eq. (2)"),
@@ -256,14 +290,14 @@ fn eq1_interval() -> Claim {
         // c > 0: D vanishes at lo, N at hi; the other factors are positive there.
         d_lo,
         n_hi,
-        n_lo - &(kk.clone() * &kk),      // N(lo) = k/(2c) > 0
-        e_lo - &kk,                      // E(lo) = 1/(2c) > 0
-        d_hi - &(kk.clone() * &kk),      // D(hi) = k > 0
-        e_hi - &(int(2) * &c * &kk),     // E(hi) = 2c > 0
+        n_lo - &(kk.clone() * &kk),  // N(lo) = k/(2c) > 0
+        e_lo - &kk,                  // E(lo) = 1/(2c) > 0
+        d_hi - &(kk.clone() * &kk),  // D(hi) = k > 0
+        e_hi - &(int(2) * &c * &kk), // E(hi) = 2c > 0
         // c < 0: E vanishes at 1/(1−4c²), N and D are positive there.
         e_hn,
-        n_hn + &(int(2) * &c * &kk),     // N = −2ck/(1−4c²) > 0
-        d_hn - &kk,                      // D = k/(1−4c²) > 0
+        n_hn + &(int(2) * &c * &kk), // N = −2ck/(1−4c²) > 0
+        d_hn - &kk,                  // D = k/(1−4c²) > 0
     ];
     all_zero(
         "eq. (1): λ ∈ (−1/(2c(1+2c)), 1/(1+2c)) for 0 < θ < π and λ ∈ (−∞, 1/(1−4c²)) for π ≤ θ < 4π/3 — exactly where all weights are positive",
@@ -434,7 +468,11 @@ fn eq6_reparam() -> Claim {
     let c1 = arc.cubic_hom(&s1, &one);
     let c2 = arc.cubic_hom(&s2, &one);
     // (1 − u : u) = (Δ(1−ū) : ū) = (σ₁(1−ū) : σ₂ū).
-    let moved = eval_at(&c1, &(s1.clone() * &(one.clone() - &ub)), &(s2.clone() * &ub));
+    let moved = eval_at(
+        &c1,
+        &(s1.clone() * &(one.clone() - &ub)),
+        &(s2.clone() * &ub),
+    );
     let direct = eval_at(&c2, &(one - &ub), &ub);
     all_zero(
         "eq. (6): the cubic for λ₁ at u = ū/(Δ(1−ū)+ū) is the cubic for λ₂ at ū, Δ = ∛([1−λ₁k][1+2λ₂ck]/([1+2λ₁ck][1−λ₂k])); also for θ = π",
@@ -453,7 +491,10 @@ fn mu_lemma() -> Claim {
     let p = arc.to_curve().eval_hom(&s);
     let m = a0.scale(&(int(1) - &s).pow(2)).add(&a2.scale(&s.pow(2)));
     let rows = [a1, &p, &m];
-    let det = |i: usize, j: usize| rows[1].coords[i].clone() * &rows[2].coords[j] - &(rows[1].coords[j].clone() * &rows[2].coords[i]);
+    let det = |i: usize, j: usize| {
+        rows[1].coords[i].clone() * &rows[2].coords[j]
+            - &(rows[1].coords[j].clone() * &rows[2].coords[i])
+    };
     let d = rows[0].coords[0].clone() * &det(1, 2) - &(rows[0].coords[1].clone() * &det(0, 2))
         + &(rows[0].coords[2].clone() * &det(0, 1));
     all_zero(
@@ -503,12 +544,18 @@ fn eq7_lambda() -> Claim {
 /// Eq. (10) as printed carries (1 + 2λ*c)(1 + 2c) where D = 1 + 2λ*c(1 + 2c).
 fn eq10_as_printed() -> Claim {
     // c = 1/2, λ* = 0, μ = 1 (the midpoint): by symmetry ū = 1/2.
-    let (c, lam, mu) = (ratio::<BigRational>(1, 2), BigRational::from_i64(0), BigRational::from_i64(1));
+    let (c, lam, mu) = (
+        ratio::<BigRational>(1, 2),
+        BigRational::from_i64(0),
+        BigRational::from_i64(1),
+    );
     let ok = check_lambda(&c, &lam).is_ok();
     let one = BigRational::from_i64(1);
     let k = one.clone() + &c * BigRational::from_i64(2);
-    let printed_radicand = &mu * (&one + &c * &lam * BigRational::from_i64(2)) * &k / (&one - &lam * &k);
-    let ours_radicand = &mu * (&one + &c * &lam * &k * BigRational::from_i64(2)) / (&one - &lam * &k);
+    let printed_radicand =
+        &mu * (&one + &c * &lam * BigRational::from_i64(2)) * &k / (&one - &lam * &k);
+    let ours_radicand =
+        &mu * (&one + &c * &lam * &k * BigRational::from_i64(2)) / (&one - &lam * &k);
     Claim::check(
         "eq. (10) as printed: ū = X/(X+1), X = ∛(μ√μ(1+2λ*c)(1+2c)/(1−λ*(1+2c)))",
         &format!("{SRC} eq. (10)"),
@@ -590,8 +637,8 @@ mod monotonicity {
         let d_h = q.clone() + &(int(2) * &p * &c * &kk);
         let polys = vec![
             (p.clone() * int(2) * &c * &kk + &q) * int(6) * &c - &(q.clone() * int(2) * &c * &kk), // λ₀ − lo = 1/(6c)
-            (q.clone() - &(p.clone() * &kk)) * int(3) * &c - &(q.clone() * &kk),                   // hi − λ₀ = 1/(3c)
-            kk.pow(3) * &q.pow(3) - &(int(27) * &c * &c * &n_h.pow(2) * &d_h),                    // ω₁³(λ₀) = c²
+            (q.clone() - &(p.clone() * &kk)) * int(3) * &c - &(q.clone() * &kk), // hi − λ₀ = 1/(3c)
+            kk.pow(3) * &q.pow(3) - &(int(27) * &c * &c * &n_h.pow(2) * &d_h),   // ω₁³(λ₀) = c²
         ];
         all_zero(
             "property 3), 0 < θ < π: ω₁ strictly decreases on (−1/(2ck), λ₀), increases on [λ₀, 1/k), minimum c^{2/3} at λ₀ = −(1−c)/(3c(1+2c))",
@@ -609,7 +656,8 @@ mod monotonicity {
         let w = |l: &BigRational| omega_cubes(&c, l).0;
         let lambda0 = ratio::<BigRational>(10, 3); // −(1−c)/(3ck) with k = 1/2
         let decreasing = w(&l1) < w(&l0);
-        let admissible = check_lambda(&c, &l0).is_ok() && check_lambda(&c, &l1).is_ok() && l1 < lambda0;
+        let admissible =
+            check_lambda(&c, &l0).is_ok() && check_lambda(&c, &l1).is_ok() && l1 < lambda0;
         Claim::check(
             "property 3), π < θ < 4π/3: ω₁ strictly decreases on (−∞, λ₀), increases on [λ₀, 1/(1−4c²)), minimum c^{2/3} at λ₀",
             &format!("{SRC} §1 property 3)"),
@@ -628,7 +676,8 @@ mod monotonicity {
         let kk = k(&c);
         let f = factors(&c, &l);
         let g = int(3) * deriv(&f.e, "lambda") * &f.n * &f.d
-            - &(f.e.clone() * &(deriv(&f.n, "lambda") * &f.d + &(int(2) * &f.n * &deriv(&f.d, "lambda"))));
+            - &(f.e.clone()
+                * &(deriv(&f.n, "lambda") * &f.d + &(int(2) * &f.n * &deriv(&f.d, "lambda"))));
         let lin = l.clone() * &kk * &(int(1) + int(2) * &c * &c) - &(int(1) - &c);
         all_zero(
             "d/dλ (E³/(ND²)) = E²·G/(N²D³), G = 2k(λk(1+2c²) − (1 − c)): ω₂ increases iff λ > (1−c)/(k(1+2c²))",
@@ -650,9 +699,10 @@ mod monotonicity {
             q.clone() - &(p.clone() * &(int(1) - int(4) * &c * &c)),
         );
         let polys = vec![
-            (p.clone() * int(2) * &c * &kk + &q) * int(2) * &c * &c2 - &(q.clone() * int(2) * &c * &kk), // λ₀ − lo = 1/(2c(1+2c²))
-            (q.clone() - &(p.clone() * &kk)) * &c2 - &(q.clone() * &kk * &c),                            // hi − λ₀ = c/(1+2c²)
-            kk.pow(3) * &e_h.pow(3) - &(int(27) * &c * &c * &n_h * &d_h.pow(2)),                         // ω₂³(λ₀) = c²
+            (p.clone() * int(2) * &c * &kk + &q) * int(2) * &c * &c2
+                - &(q.clone() * int(2) * &c * &kk), // λ₀ − lo = 1/(2c(1+2c²))
+            (q.clone() - &(p.clone() * &kk)) * &c2 - &(q.clone() * &kk * &c), // hi − λ₀ = c/(1+2c²)
+            kk.pow(3) * &e_h.pow(3) - &(int(27) * &c * &c * &n_h * &d_h.pow(2)), // ω₂³(λ₀) = c²
         ];
         all_zero(
             "property 4), 0 < θ < π: ω₂ strictly decreases on (−1/(2ck), λ₀), increases on [λ₀, 1/k), minimum c^{2/3} at λ₀ = (1−c)/((1+2c)(1+2c²))",
@@ -681,7 +731,8 @@ mod monotonicity {
         let f = factors(&int(0), &l);
         let g1 = deriv(&(f.n.pow(2) * &f.d), "lambda") + &(int(2) * &f.n);
         let g2 = int(3) * deriv(&f.e, "lambda") * &f.n * &f.d
-            - &(f.e.clone() * &(deriv(&f.n, "lambda") * &f.d + &(int(2) * &f.n * &deriv(&f.d, "lambda"))))
+            - &(f.e.clone()
+                * &(deriv(&f.n, "lambda") * &f.d + &(int(2) * &f.n * &deriv(&f.d, "lambda"))))
             - &(int(2) * &(l - &int(1)));
         all_zero(
             "property 5), θ = π: ω₁ increases, ω₂ decreases in λ",
@@ -708,7 +759,10 @@ mod monotonicity {
 
     fn growth_above_pi() -> Claim {
         let c = ratio::<BigRational>(-1, 4);
-        let (a, b) = (omega_cubes(&c, &BigRational::from_i64(0)).0, omega_cubes(&c, &BigRational::from_i64(-1000)).0);
+        let (a, b) = (
+            omega_cubes(&c, &BigRational::from_i64(0)).0,
+            omega_cubes(&c, &BigRational::from_i64(-1000)).0,
+        );
         Claim::check(
             "property 6) for π < θ < 4π/3: ω₁, ω₂ both grow at both ends of the λ interval",
             &format!("{SRC} §1 property 6)"),
@@ -772,10 +826,16 @@ mod monotonicity {
                 .collect();
             for pair in grid.windows(2) {
                 let (a, b) = (omega_cubes(&c, &pair[0]), omega_cubes(&c, &pair[1]));
-                let s1 = BigRational::from_i64(1) - &c + &pair[0] * &c * &k * BigRational::from_i64(3);
-                let s2 = &pair[1] * &k * (BigRational::from_i64(1) + &c * &c * BigRational::from_i64(2)) - (BigRational::from_i64(1) - &c);
-                let s1b = BigRational::from_i64(1) - &c + &pair[1] * &c * &k * BigRational::from_i64(3);
-                let s2a = &pair[0] * &k * (BigRational::from_i64(1) + &c * &c * BigRational::from_i64(2)) - (BigRational::from_i64(1) - &c);
+                let s1 =
+                    BigRational::from_i64(1) - &c + &pair[0] * &c * &k * BigRational::from_i64(3);
+                let s2 =
+                    &pair[1] * &k * (BigRational::from_i64(1) + &c * &c * BigRational::from_i64(2))
+                        - (BigRational::from_i64(1) - &c);
+                let s1b =
+                    BigRational::from_i64(1) - &c + &pair[1] * &c * &k * BigRational::from_i64(3);
+                let s2a =
+                    &pair[0] * &k * (BigRational::from_i64(1) + &c * &c * BigRational::from_i64(2))
+                        - (BigRational::from_i64(1) - &c);
                 let zero = BigRational::from_i64(0);
                 // Where the sign is the same at both ends, the step must go that way.
                 let ok1 = !(s1 > zero && s1b > zero) || b.0 > a.0;
@@ -796,7 +856,6 @@ mod monotonicity {
             bad.unwrap_or_else(|| format!("{checked} consecutive λ pairs on 399-point grids over the admissible interval (lower end −∞ cut at hi − 50) for c ∈ {{1/10, 1/2, 3/5, 9/10, −1/4, −2/5, 0}}: exact ω³ = k³/(27N²D), k³E³/(27ND²) compared")),
         )
     }
-
 }
 
 /// `(ω₁³, ω₂³)` exactly.

@@ -61,11 +61,41 @@ pub fn claims() -> Vec<Claim> {
         &ratio(1, 2),
         &table1_arc(),
         &[
-            Row { lambda: "-0.3", w1: "0.6614", w2: "1.0499", x: "1.2976", y: "0.5383" },
-            Row { lambda: "-0.25", w1: "0.6410", w2: "0.9245", x: "1.2388", y: "0.5524" },
-            Row { lambda: "0", w1: "0.6667", w2: "0.6667", x: "1.0", y: "0.5774" },
-            Row { lambda: "0.2", w1: "0.8377", w2: "0.6316", x: "0.8142", y: "0.5623" },
-            Row { lambda: "0.4", w1: "1.6025", w2: "0.7704", x: "0.5509", y: "0.4864" },
+            Row {
+                lambda: "-0.3",
+                w1: "0.6614",
+                w2: "1.0499",
+                x: "1.2976",
+                y: "0.5383",
+            },
+            Row {
+                lambda: "-0.25",
+                w1: "0.6410",
+                w2: "0.9245",
+                x: "1.2388",
+                y: "0.5524",
+            },
+            Row {
+                lambda: "0",
+                w1: "0.6667",
+                w2: "0.6667",
+                x: "1.0",
+                y: "0.5774",
+            },
+            Row {
+                lambda: "0.2",
+                w1: "0.8377",
+                w2: "0.6316",
+                x: "0.8142",
+                y: "0.5623",
+            },
+            Row {
+                lambda: "0.4",
+                w1: "1.6025",
+                w2: "0.7704",
+                x: "0.5509",
+                y: "0.4864",
+            },
         ],
     );
     out.extend(table(
@@ -73,11 +103,41 @@ pub fn claims() -> Vec<Claim> {
         &BigRational::zero(),
         &semicircle().map(Ordered::to_f64),
         &[
-            Row { lambda: "-0.45", w1: "0.2602", w2: "0.4270", x: "1.1232", y: "0.9924" },
-            Row { lambda: "-0.25", w1: "0.2873", w2: "0.3868", x: "1.0742", y: "0.9972" },
-            Row { lambda: "0", w1: "0.3333", w2: "0.3333", x: "1", y: "1" },
-            Row { lambda: "0.2", w1: "0.3868", w2: "0.2873", x: "0.9258", y: "0.9972" },
-            Row { lambda: "0.3", w1: "0.4228", w2: "0.2628", x: "0.8817", y: "0.9930" },
+            Row {
+                lambda: "-0.45",
+                w1: "0.2602",
+                w2: "0.4270",
+                x: "1.1232",
+                y: "0.9924",
+            },
+            Row {
+                lambda: "-0.25",
+                w1: "0.2873",
+                w2: "0.3868",
+                x: "1.0742",
+                y: "0.9972",
+            },
+            Row {
+                lambda: "0",
+                w1: "0.3333",
+                w2: "0.3333",
+                x: "1",
+                y: "1",
+            },
+            Row {
+                lambda: "0.2",
+                w1: "0.3868",
+                w2: "0.2873",
+                x: "0.9258",
+                y: "0.9972",
+            },
+            Row {
+                lambda: "0.3",
+                w1: "0.4228",
+                w2: "0.2628",
+                x: "0.8817",
+                y: "0.9930",
+            },
         ],
     ));
     out.extend(quarter_circle());
@@ -88,8 +148,14 @@ pub fn claims() -> Vec<Claim> {
 /// Table 1's arc: b̄₀ = (0, 0), b̄₁ = (1, √3), b̄₂ = (2, 0), c = 1/2 (the
 /// printed "ρ" is a 0), in `f64`.
 fn table1_arc() -> QuadArc<f64> {
-    QuadArc::from_control(&[0.0, 0.0], &[1.0, 3f64.sqrt()], &[2.0, 0.0], &0.5, Tolerance(1e-12))
-        .expect("the 2π/3 arc")
+    QuadArc::from_control(
+        &[0.0, 0.0],
+        &[1.0, 3f64.sqrt()],
+        &[2.0, 0.0],
+        &0.5,
+        Tolerance(1e-12),
+    )
+    .expect("the 2π/3 arc")
 }
 
 /// The semicircle b̄₀ = (0, 0), b̄₂ = (2, 0), b = (0, 1), exactly.
@@ -124,7 +190,10 @@ fn table(name: &str, c: &BigRational, arc: &QuadArc<f64>, rows: &[Row]) -> Vec<C
         };
         for (label, ours, text) in [("x", point[0], row.x), ("y", point[1], row.y)] {
             out.push(Claim::compare(
-                &format!("{name}, λ = {}: shoulder point {label} = {text}", row.lambda),
+                &format!(
+                    "{name}, λ = {}: shoulder point {label} = {text}",
+                    row.lambda
+                ),
                 &source,
                 Verdict::Reproduced,
                 f64_rounds_to(ours, text),
@@ -173,26 +242,38 @@ fn quarter_circle() -> Vec<Claim> {
     ]);
     let mu = exact_ctrl.mu_of_point(&[ratio(3, 5), ratio(4, 5)]);
     let mu_star = exact_ctrl.mu_of_point(&[ratio(1, 2), ratio(1, 2)]); // same line as (√2/2, √2/2)
-    // Eq. (9): λ* = (1 − μ√μ)/((1+2c)(1 + 2μ√μc)) with μ√μ = 2√2; claimed (3√2 − 5)/5.
+                                                                       // Eq. (9): λ* = (1 − μ√μ)/((1+2c)(1 + 2μ√μc)) with μ√μ = 2√2; claimed (3√2 − 5)/5.
     let m = two.clone() * &r;
-    let (num, den) = (one.clone() - &m, (one.clone() + two.clone() * &c) * &(one.clone() + two.clone() * &m * &c));
-    let lambda_ok = root2(&(num * Poly::from_int(5) - (Poly::from_int(3) * &r - Poly::from_int(5)) * den)).is_zero();
+    let (num, den) = (
+        one.clone() - &m,
+        (one.clone() + two.clone() * &c) * &(one.clone() + two.clone() * &m * &c),
+    );
+    let lambda_ok =
+        root2(&(num * Poly::from_int(5) - (Poly::from_int(3) * &r - Poly::from_int(5)) * den))
+            .is_zero();
     // σ = √μ(1/ū − 1) = √2 at ū = 1/2; the cubic of the construction, normalized by σ² = 2.
     let cubic = arc.cubic_hom(&r, &one);
     let got: Vec<Vec<Poly>> = cubic
         .ctrl()
         .iter()
-        .map(|h| h.coords.iter().map(|x| root2(&(x.clone() * Poly::constant(ratio(1, 2))))).collect())
+        .map(|h| {
+            h.coords
+                .iter()
+                .map(|x| root2(&(x.clone() * Poly::constant(ratio(1, 2)))))
+                .collect()
+        })
         .collect();
     let want = printed_quarter();
-    let same_cubic = got
-        .iter()
-        .zip(want.ctrl())
-        .all(|(g, w)| g.iter().zip(&w.coords).all(|(a, b)| a.as_constant().as_ref() == Some(b)));
+    let same_cubic = got.iter().zip(want.ctrl()).all(|(g, w)| {
+        g.iter()
+            .zip(&w.coords)
+            .all(|(a, b)| a.as_constant().as_ref() == Some(b))
+    });
     let circle = circle_of(&want, Tolerance::EXACT);
     let shoulder = want.eval(&ratio(1, 2)).expect("finite");
     // Weights of the quadratic, eqs. (3), (4): ω̄₁/ω̄₀ = cσ, ω̄₁/ω̄₂ = c/σ = c·σ/2.
-    let ratio_ok = root2(&(c.clone() * &r)) == one && root2(&(c.clone() * &r * Poly::constant(ratio(1, 2)))) == Poly::constant(ratio(1, 2));
+    let ratio_ok = root2(&(c.clone() * &r)) == one
+        && root2(&(c.clone() * &r * Poly::constant(ratio(1, 2)))) == Poly::constant(ratio(1, 2));
     // Parameter of p* = (√2/2, √2/2) on the printed cubic.
     let sym = want.map(|x| Poly::constant(x.clone()));
     let on_curve = |u: &Poly| {
@@ -297,10 +378,15 @@ fn semicircle_example() -> Vec<Claim> {
         })
     };
     let ctrl_ok = lies(1, ratio(0, 1), ratio(8, 5)) && lies(2, ratio(2, 1), ratio(5, 2));
-    let pstar = vec![parse_rational("0.8817").expect("x"), parse_rational("0.9930").expect("y")];
+    let pstar = vec![
+        parse_rational("0.8817").expect("x"),
+        parse_rational("0.9930").expect("y"),
+    ];
     let mu_star = arc.mu_of_point(&pstar);
     let mu_star_f = mu_star.as_ref().map(Ordered::to_f64).unwrap_or(f64::NAN);
-    let u_star = fp.param_of_point(&[0.8817, 0.9930], &0.2).unwrap_or(f64::NAN);
+    let u_star = fp
+        .param_of_point(&[0.8817, 0.9930], &0.2)
+        .unwrap_or(f64::NAN);
     // The exact shoulder A of λ = 0.3 (which p* rounds): ū/(1−ū) = σ(0.3)/σ(0.2).
     let ratio_sigma = (0.7f64 / 0.8).cbrt();
     let u_of_a = ratio_sigma / (1.0 + ratio_sigma);

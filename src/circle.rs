@@ -99,7 +99,10 @@ impl fmt::Display for NotCircle {
 /// let parabola = RationalCurve::polynomial(vec![p(0, 0), p(1, 2), p(2, 0)]).unwrap();
 /// assert!(circle_of(&parabola, Tolerance::EXACT).is_err());
 /// ```
-pub fn circle_of<T: Field>(curve: &RationalCurve<T>, tol: Tolerance) -> Result<Circle<T>, NotCircle> {
+pub fn circle_of<T: Field>(
+    curve: &RationalCurve<T>,
+    tol: Tolerance,
+) -> Result<Circle<T>, NotCircle> {
     let ctrl = curve.ctrl();
     let origin = ctrl
         .iter()
@@ -129,7 +132,11 @@ pub fn circle_of<T: Field>(curve: &RationalCurve<T>, tol: Tolerance) -> Result<C
             *acc = acc.clone() + &x;
         }
     }
-    let (a, b, ww) = (product(&along(&u), &w), product(&along(&v), &w), product(&w, &w));
+    let (a, b, ww) = (
+        product(&along(&u), &w),
+        product(&along(&v), &w),
+        product(&w, &w),
+    );
     let minus_two = T::from_i64(-2);
     // Row m: −2α·a_m − 2β·b_m + K·ww_m = −sq_m.
     let rows: Vec<[T; 4]> = (0..=2 * n)
@@ -147,7 +154,10 @@ pub fn circle_of<T: Field>(curve: &RationalCurve<T>, tol: Tolerance) -> Result<C
         !(r[0].clone() * &alpha + &(r[1].clone() * &beta) + &(r[2].clone() * &k) - &r[3])
             .is_zero_within(tol)
     }) {
-        return Err(NotCircle::OffCircle { index, degree: 2 * n });
+        return Err(NotCircle::OffCircle {
+            index,
+            degree: 2 * n,
+        });
     }
     let g: Vec<T> = u
         .iter()
@@ -263,20 +273,34 @@ mod tests {
         // A semicircle in the plane 4y = 3z: direction (0, 3/5, 4/5) at infinity.
         let half = RationalCurve::from_hom(vec![
             HPoint::from_cartesian(&p(&[0, 0, 0])),
-            HPoint { coords: vec![ratio(0, 1), ratio(3, 5), ratio(4, 5), ratio(0, 1)] },
+            HPoint {
+                coords: vec![ratio(0, 1), ratio(3, 5), ratio(4, 5), ratio(0, 1)],
+            },
             HPoint::from_cartesian(&p(&[2, 0, 0])),
         ])
         .unwrap();
         let c = circle_of(&half, Tolerance::EXACT).unwrap();
         assert_eq!(c.center, p(&[1, 0, 0]));
         assert_eq!(c.radius_squared, ratio(1, 1));
-        let twisted = RationalCurve::polynomial(vec![p(&[0, 0, 0]), p(&[1, 0, 0]), p(&[0, 1, 0]), p(&[0, 0, 1])]).unwrap();
-        assert_eq!(circle_of(&twisted, Tolerance::EXACT), Err(NotCircle::NotPlanar));
+        let twisted = RationalCurve::polynomial(vec![
+            p(&[0, 0, 0]),
+            p(&[1, 0, 0]),
+            p(&[0, 1, 0]),
+            p(&[0, 0, 1]),
+        ])
+        .unwrap();
+        assert_eq!(
+            circle_of(&twisted, Tolerance::EXACT),
+            Err(NotCircle::NotPlanar)
+        );
         let line = RationalCurve::polynomial(vec![p(&[0, 0]), p(&[1, 1]), p(&[3, 3])]).unwrap();
         assert_eq!(circle_of(&line, Tolerance::EXACT), Err(NotCircle::Line));
         let dot = RationalCurve::polynomial(vec![p(&[2, 1]), p(&[2, 1])]).unwrap();
         assert_eq!(circle_of(&dot, Tolerance::EXACT), Err(NotCircle::Point));
         let parabola = RationalCurve::polynomial(vec![p(&[0, 0]), p(&[1, 2]), p(&[2, 0])]).unwrap();
-        assert!(matches!(circle_of(&parabola, Tolerance::EXACT), Err(NotCircle::OffCircle { degree: 4, .. })));
+        assert!(matches!(
+            circle_of(&parabola, Tolerance::EXACT),
+            Err(NotCircle::OffCircle { degree: 4, .. })
+        ));
     }
 }

@@ -106,8 +106,12 @@ fn lambda_outside_interval_is_a_typed_error() {
     assert!(arc.cubic_for_lambda(&q(5, 11)).is_err());
     assert!(arc.cubic_for_lambda(&q(-25, 66)).is_err());
     assert!(arc.cubic_for_lambda(&q(0, 1)).is_ok());
-    let wide = QuadArc::from_ends(&p(0, 0), &p(2, 0), &q(-3, 5), &q(4, 5), Tolerance::EXACT).unwrap();
-    assert!(wide.cubic_for_lambda(&q(0, 1)).is_err(), "θ > 4π/3 has no cubic family");
+    let wide =
+        QuadArc::from_ends(&p(0, 0), &p(2, 0), &q(-3, 5), &q(4, 5), Tolerance::EXACT).unwrap();
+    assert!(
+        wide.cubic_for_lambda(&q(0, 1)).is_err(),
+        "θ > 4π/3 has no cubic family"
+    );
 }
 
 #[test]
@@ -129,7 +133,9 @@ fn irrational_radicand_falls_back_to_f64() {
 fn bad_arcs_are_rejected() {
     let p = |x: i64, y: i64| vec![q(x, 1), q(y, 1)];
     assert!(QuadArc::from_ends(&p(0, 0), &p(2, 0), &q(1, 2), &q(1, 2), Tolerance::EXACT).is_err());
-    assert!(QuadArc::from_control(&p(0, 0), &p(1, 2), &p(2, 0), &q(1, 2), Tolerance::EXACT).is_err());
+    assert!(
+        QuadArc::from_control(&p(0, 0), &p(1, 2), &p(2, 0), &q(1, 2), Tolerance::EXACT).is_err()
+    );
     assert!(QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 2), Tolerance::EXACT).is_err());
 }
 
@@ -138,12 +144,25 @@ fn cli(args: &[&str]) -> (i32, String) {
         .args(args)
         .output()
         .expect("binary runs");
-    (out.status.code().unwrap_or(-1), String::from_utf8_lossy(&out.stdout).into_owned())
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+    )
 }
 
 #[test]
 fn cli_arc_and_is_circle() {
-    let (code, text) = cli(&["arc", "--cos-half", "0", "--lambda", "-7", "--points", "0,0;2,0", "--direction", "0,1"]);
+    let (code, text) = cli(&[
+        "arc",
+        "--cos-half",
+        "0",
+        "--lambda",
+        "-7",
+        "--points",
+        "0,0;2,0",
+        "--direction",
+        "0,1",
+    ]);
     assert_eq!(code, 0);
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
     assert_eq!(v["exact"], true);
@@ -159,6 +178,16 @@ fn cli_arc_and_is_circle() {
     assert_eq!(v["circle"], true);
     assert_eq!(v["center"].to_string(), "[1,0]");
     assert_eq!(v["radius_squared"].to_string(), "1");
-    let (code, _) = cli(&["arc", "--cos-half", "0", "--lambda", "1", "--points", "0,0;2,0", "--direction", "0,1"]);
+    let (code, _) = cli(&[
+        "arc",
+        "--cos-half",
+        "0",
+        "--lambda",
+        "1",
+        "--points",
+        "0,0;2,0",
+        "--direction",
+        "0,1",
+    ]);
     assert_eq!(code, 2);
 }

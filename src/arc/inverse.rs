@@ -78,9 +78,9 @@ impl<T: Roots> QuadArc<T> {
     pub fn sigma_for_point(&self, p: &[T], u_bar: &T) -> Result<T, Error> {
         check_open_unit(u_bar)?;
         let mu = self.mu_of_point(p)?;
-        let root = mu.square_root().ok_or_else(|| {
-            Error::NotRational(format!("√μ = √{} is irrational", mu.to_f64()))
-        })?;
+        let root = mu
+            .square_root()
+            .ok_or_else(|| Error::NotRational(format!("√μ = √{} is irrational", mu.to_f64())))?;
         Ok(root * &(T::one() - u_bar) / u_bar)
     }
 
@@ -135,10 +135,7 @@ impl<T: Roots> QuadArc<T> {
         let f = LambdaFactors::new(self.cos_half(), lambda);
         let rho6 = f.n.clone() * &f.n / &(f.d.clone() * &f.d * &mu.pow_u32(3));
         let rho = rho6.sixth_root().ok_or_else(|| {
-            Error::NotRational(format!(
-                "ρ = σ/√μ = ⁶√{} is irrational",
-                rho6.to_f64()
-            ))
+            Error::NotRational(format!("ρ = σ/√μ = ⁶√{} is irrational", rho6.to_f64()))
         })?;
         Ok((rho + &T::one()).recip())
     }
@@ -174,7 +171,10 @@ pub fn lambda_change_delta<T: Roots>(c: &T, lambda1: &T, lambda2: &T) -> Result<
     for l in [lambda1, lambda2] {
         super::check_lambda(c, l)?;
     }
-    let (f1, f2) = (LambdaFactors::new(c, lambda1), LambdaFactors::new(c, lambda2));
+    let (f1, f2) = (
+        LambdaFactors::new(c, lambda1),
+        LambdaFactors::new(c, lambda2),
+    );
     let cube = f1.n * &f2.d / &(f1.d * &f2.n);
     cube.cube_root()
         .ok_or_else(|| Error::NotRational(format!("Δ = ∛{} is irrational", cube.to_f64())))

@@ -42,7 +42,7 @@ pub use inverse::{lambda_change_delta, lambda_change_param};
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::scalar::{rational_root, ratio, Field, Ordered, Scalar, Tolerance};
+use crate::scalar::{ratio, rational_root, Field, Ordered, Scalar, Tolerance};
 use num_rational::BigRational;
 
 /// Exact roots where they exist: `BigRational` answers `Some` only for a
@@ -226,7 +226,8 @@ impl<T: Ordered> QuadArc<T> {
             ));
         }
         let c = cos_half;
-        if c.is_zero_within(tol) || !(c.abs_val() < T::one()) {
+        let inside = c.abs_val() < T::one();
+        if c.is_zero_within(tol) || !inside {
             return Err(Error::Domain(format!(
                 "cos(θ/2) = {} must lie in (−1, 1) and not be 0 (θ = π needs a direction: QuadArc::semicircle)",
                 c.to_f64()
@@ -485,10 +486,7 @@ pub fn sigma_of_lambda<T: Roots>(c: &T, lambda: &T) -> Result<T, Error> {
     let f = LambdaFactors::new(c, lambda);
     let cube = f.n / &f.d;
     cube.cube_root().ok_or_else(|| {
-        Error::NotRational(format!(
-            "σ = ∛(N/D) = ∛({}) is irrational",
-            cube.to_f64()
-        ))
+        Error::NotRational(format!("σ = ∛(N/D) = ∛({}) is irrational", cube.to_f64()))
     })
 }
 
@@ -607,8 +605,8 @@ mod tests {
     #[test]
     fn standard_cubic_has_unit_end_weights() {
         let p = |x: i64, y: i64| vec![q(x, 1), q(y, 1)];
-        let arc = QuadArc::from_ends(&p(0, 0), &p(2, 0), &q(3, 5), &q(4, 5), Tolerance::EXACT)
-            .unwrap();
+        let arc =
+            QuadArc::from_ends(&p(0, 0), &p(2, 0), &q(3, 5), &q(4, 5), Tolerance::EXACT).unwrap();
         let cubic = arc.standard_cubic(&q(3, 2)).unwrap();
         let w = cubic.weights();
         assert_eq!((w[0].clone(), w[3].clone()), (q(1, 1), q(1, 1)));
