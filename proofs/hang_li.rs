@@ -145,6 +145,7 @@ pub fn claims() -> Vec<Claim> {
         eq1_second_inner(),
         eq1_two_thirds_pi(),
         eq1_interval(),
+        eq1_angle_bound(),
         eq1_circular(),
         eq1_standard(),
     ];
@@ -305,6 +306,24 @@ fn eq1_interval() -> Claim {
         Verdict::Proved,
         &polys,
         "N, D, E are linear in λ; at each end of the printed interval one factor vanishes and the others are positive (identities at λ = p/q; for c < 0 all three → +∞ as λ → −∞), so N, D, E > 0 exactly inside; θ < 4π/3 ⇔ k = 1+2c > 0",
+    )
+}
+
+/// The bound θ < 4π/3 is sharp: positive inner weights need c > −1/2.
+fn eq1_angle_bound() -> Claim {
+    let (c, sg) = (v("c"), v("sigma"));
+    let cubic = free_arc(&c).cubic_hom(&sg, &int(1));
+    let w = cubic.weights();
+    let s3 = sg.pow(3);
+    all_zero(
+        "0 < θ < 4π/3 (source 004 §0–§1, after [6, 7]): the standard cubic family has positive weights exactly when cos(θ/2) > −1/2",
+        &format!("{SRC} §1, range of θ"),
+        Verdict::Proved,
+        &[
+            int(3) * &w[1] - &(int(2) * &c * &s3 + &int(1)),
+            int(3) * &w[2] - &(sg.clone() * &(s3 + &(int(2) * &c))),
+        ],
+        "with the common factor σ² (σ = p/q, q = 1): 3ω₁σ² = 2cσ³ + 1 and 3ω₂σ = σ³ + 2c; for c < 0 both are positive iff −2c < σ³ < −1/(2c), an interval that is non-empty iff 4c² < 1; for c ≥ 0 every σ > 0 works",
     )
 }
 

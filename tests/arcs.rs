@@ -89,7 +89,7 @@ proptest! {
         let delta = lambda_change_delta(arc.cos_half(), &l1, &l2).unwrap();
         prop_assert_eq!(&delta, &(s1.clone() / &s2));
         let ub = ratio::<Q>(2, 7);
-        let u = lambda_change_param(&delta, &ub);
+        let u = lambda_change_param(&delta, &ub).unwrap();
         prop_assert_eq!(exact(&arc, &l1).eval(&u).unwrap(), exact(&arc, &l2).eval(&ub).unwrap());
     }
 }

@@ -186,11 +186,22 @@ pub fn lambda_change_delta<T: Roots>(c: &T, lambda1: &T, lambda2: &T) -> Result<
 /// [`RationalCurve::mobius_param`](crate::RationalCurve::mobius_param) with
 /// `α = Δ/(1 + Δ)`.
 ///
+/// # Errors
+///
+/// [`Error::Domain`] when `Δ(1 − ū) + ū = 0` (never for `Δ > 0`,
+/// `0 ≤ ū ≤ 1`).
+///
 /// ```
 /// use exact_bezier::{lambda_change_param, ratio};
 /// use num_rational::BigRational;
-/// assert_eq!(lambda_change_param(&ratio::<BigRational>(2, 1), &ratio(1, 3)), ratio(1, 5));
+/// assert_eq!(lambda_change_param(&ratio::<BigRational>(2, 1), &ratio(1, 3)).unwrap(), ratio(1, 5));
 /// ```
-pub fn lambda_change_param<T: Field>(delta: &T, u_bar: &T) -> T {
-    u_bar.clone() / &(delta.clone() * &(T::one() - u_bar) + u_bar)
+pub fn lambda_change_param<T: Field>(delta: &T, u_bar: &T) -> Result<T, Error> {
+    let den = delta.clone() * &(T::one() - u_bar) + u_bar;
+    if den.is_zero() {
+        return Err(Error::Domain(
+            "Δ(1 − ū) + ū = 0: the map has a pole there".into(),
+        ));
+    }
+    Ok(u_bar.clone() / &den)
 }

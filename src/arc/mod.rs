@@ -312,6 +312,15 @@ impl<T: Scalar> QuadArc<T> {
     /// for θ = π, scaled by `1/(pq)`, `ω̄₀ = 1/σ`, `ω̄₂ = σ` and the direction
     /// `b` with coefficient 1 (eq. 5). It traces the arc with the same
     /// parameterization as [`QuadArc::cubic_hom`]`(p, q)`.
+    ///
+    /// ```
+    /// use exact_bezier::{QuadArc, ratio, Tolerance};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+    /// let arc = QuadArc::from_ends(&p(0, 0), &p(2, 0), &ratio(3, 5), &ratio(4, 5), Tolerance::EXACT).unwrap();
+    /// let quad = arc.nonstandard_quadratic(&ratio(2, 1), &ratio(1, 1));
+    /// assert_eq!(quad.weights(), vec![ratio(1, 1), ratio(6, 5), ratio(4, 1)]); // 1, cσ, σ²
+    /// ```
     pub fn nonstandard_quadratic(&self, p: &T, q: &T) -> RationalCurve<T> {
         let [a0, a1, a2] = &self.ctrl;
         let ctrl = vec![
@@ -326,6 +335,20 @@ impl<T: Scalar> QuadArc<T> {
     /// (see the module docs): `L(u)·Q̄(u)` with `Q̄` the
     /// [`nonstandard_quadratic`](QuadArc::nonstandard_quadratic) and
     /// `L(u) = p²(1 − u) + q²u`. Ring operations only, so it runs on symbols.
+    ///
+    /// ```
+    /// use exact_bezier::{QuadArc, ratio, Tolerance};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+    /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
+    /// let (two, one) = (ratio(2, 1), ratio(1, 1));
+    /// let cubic = arc.cubic_hom(&two, &one);
+    /// let quad = arc.nonstandard_quadratic(&two, &one);
+    /// // Same point at every parameter: cubic = L·quadratic.
+    /// let u = ratio(1, 3);
+    /// assert_eq!(cubic.eval(&u).unwrap(), quad.eval(&u).unwrap());
+    /// assert_eq!(cubic.weights()[0], ratio(4, 1)); // the factor p²q²
+    /// ```
     pub fn cubic_hom(&self, p: &T, q: &T) -> RationalCurve<T> {
         let [a0, a1, a2] = &self.ctrl;
         let third = ratio::<T>(1, 3);
@@ -451,6 +474,14 @@ pub fn lambda_interval<T: Ordered>(c: &T) -> Result<(Option<T>, T), Error> {
 /// # Errors
 ///
 /// [`Error::Domain`] naming the interval of [`lambda_interval`].
+///
+/// ```
+/// use exact_bezier::{check_lambda, ratio};
+/// use num_rational::BigRational;
+/// let c = ratio::<BigRational>(1, 2); // θ = 2π/3: λ ∈ (−1/2, 1/2)
+/// assert!(check_lambda(&c, &ratio(2, 5)).is_ok());
+/// assert!(check_lambda(&c, &ratio(1, 2)).is_err());
+/// ```
 pub fn check_lambda<T: Ordered>(c: &T, lambda: &T) -> Result<(), Error> {
     let (lo, hi) = lambda_interval(c)?;
     let f = LambdaFactors::new(c, lambda);
