@@ -53,7 +53,7 @@ pub mod proofs;
 
 pub use arc::{
     check_lambda, lambda_change_delta, lambda_change_param, lambda_interval, lambda_of_sigma_cubed,
-    sigma_of_lambda, ArcCubic, LambdaFactors, QuadArc, Roots,
+    sigma_of_lambda, ArcCubic, Computed, LambdaFactors, QuadArc, Roots,
 };
 pub use bernstein::{bernstein, bernstein_all};
 pub use circle::{circle_of, Circle, NotCircle};

@@ -544,26 +544,58 @@ pub fn lambda_of_sigma_cubed<T: Field>(c: &T, m: &T) -> Result<T, Error> {
     Ok((one - m) / &den)
 }
 
-/// The standard cubic of an exact arc, exact or in `f64`.
+/// A result computed exactly when every quantity is rational, else in `f64`
+/// — the variant says which.
 #[derive(Clone, Debug, PartialEq)]
-pub enum ArcCubic {
-    /// Every quantity was rational: the exact cubic.
-    Exact(RationalCurve<BigRational>),
-    /// A cube root was irrational: the cubic computed in `f64`.
-    Approx(RationalCurve<f64>),
+pub enum Computed<E, A> {
+    /// Every quantity was rational: the exact result.
+    Exact(E),
+    /// A root was irrational: the result computed in `f64`.
+    Approx(A),
 }
 
-impl ArcCubic {
-    /// Was the cubic computed exactly?
+impl<E, A> Computed<E, A> {
+    /// Was the result computed exactly?
     pub fn is_exact(&self) -> bool {
-        matches!(self, ArcCubic::Exact(_))
+        matches!(self, Computed::Exact(_))
     }
 
+    /// Try `exact`; on [`Error::NotRational`] compute `approx` instead.
+    ///
+    /// # Errors
+    ///
+    /// Any other error of `exact`, or the error of `approx`.
+    pub fn exact_or(
+        exact: Result<E, Error>,
+        approx: impl FnOnce() -> Result<A, Error>,
+    ) -> Result<Self, Error> {
+        match exact {
+            Ok(e) => Ok(Computed::Exact(e)),
+            Err(Error::NotRational(_)) => approx().map(Computed::Approx),
+            Err(e) => Err(e),
+        }
+    }
+}
+
+impl Computed<BigRational, f64> {
+    /// The value in `f64` (rounded if exact).
+    pub fn to_f64(&self) -> f64 {
+        match self {
+            Computed::Exact(x) => x.to_f64(),
+            Computed::Approx(x) => *x,
+        }
+    }
+}
+
+/// The standard cubic of an exact arc, exact or in `f64`.
+pub type ArcCubic = Computed<RationalCurve<BigRational>, RationalCurve<f64>>;
+
+impl ArcCubic {
     /// The cubic in `f64` (rounded from the exact one if exact).
     pub fn to_f64(&self) -> RationalCurve<f64> {
         match self {
-            ArcCubic::Exact(c) => c.map(Ordered::to_f64),
-            ArcCubic::Approx(c) => c.clone(),
+            Computed::Exact(c) => c.map(Ordered::to_f64),
+            Computed::Approx(c) => c.clone(),
         }
     }
 }
@@ -588,15 +620,69 @@ impl QuadArc<BigRational> {
     /// assert!(arc.cubic_for_lambda(&ratio(1, 1)).is_err());                // λ < 1 needed
     /// ```
     pub fn cubic_for_lambda(&self, lambda: &BigRational) -> Result<ArcCubic, Error> {
-        match sigma_of_lambda(self.cos_half(), lambda) {
-            Ok(sigma) => Ok(ArcCubic::Exact(self.standard_cubic(&sigma)?)),
-            Err(Error::NotRational(_)) => {
-                let arc = self.map(Ordered::to_f64);
-                let sigma = sigma_of_lambda(arc.cos_half(), &lambda.to_f64())?;
-                Ok(ArcCubic::Approx(arc.standard_cubic(&sigma)?))
-            }
-            Err(e) => Err(e),
-        }
+        let exact = sigma_of_lambda(self.cos_half(), lambda).and_then(|s| self.standard_cubic(&s));
+        Computed::exact_or(exact, || {
+            let arc = self.map(Ordered::to_f64);
+            let sigma = sigma_of_lambda(arc.cos_half(), &lambda.to_f64())?;
+            arc.standard_cubic(&sigma)
+        })
+    }
+
+    /// [`QuadArc::lambda_for_point`] (source 004 eq. 7), exact when `√μ` is
+    /// rational, else in `f64`.
+    ///
+    /// # Errors
+    ///
+    /// As [`QuadArc::lambda_for_point`], except [`Error::NotRational`].
+    ///
+    /// ```
+    /// use exact_bezier::{QuadArc, ratio, Tolerance};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+    /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
+    /// // (8/5, 4/5) has μ = 4: exact.
+    /// let l = arc.lambda_for_point_or_f64(&[ratio(8, 5), ratio(4, 5)], &ratio(1, 2)).unwrap();
+    /// assert!(l.is_exact());
+    /// assert_eq!(l.to_f64(), -7.0); // σ = 2·1 = 2, λ = 1 − 8
+    /// ```
+    pub fn lambda_for_point_or_f64(
+        &self,
+        p: &[BigRational],
+        u_bar: &BigRational,
+    ) -> Result<Computed<BigRational, f64>, Error> {
+        Computed::exact_or(self.lambda_for_point(p, u_bar), || {
+            let pf: Vec<f64> = p.iter().map(Ordered::to_f64).collect();
+            self.map(Ordered::to_f64)
+                .lambda_for_point(&pf, &u_bar.to_f64())
+        })
+    }
+
+    /// [`QuadArc::param_of_point`] (source 004 eqs. 10, 11), exact when
+    /// `σ/√μ` is rational, else in `f64`.
+    ///
+    /// # Errors
+    ///
+    /// As [`QuadArc::param_of_point`], except [`Error::NotRational`].
+    ///
+    /// ```
+    /// use exact_bezier::{QuadArc, ratio, Tolerance};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+    /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
+    /// let u = arc.param_of_point_or_f64(&p(1, 1), &ratio(1, 5)).unwrap();
+    /// assert!(!u.is_exact()); // 1/(1 + ∛0.8)
+    /// assert!((u.to_f64() - 0.5185867).abs() < 1e-7);
+    /// ```
+    pub fn param_of_point_or_f64(
+        &self,
+        p: &[BigRational],
+        lambda: &BigRational,
+    ) -> Result<Computed<BigRational, f64>, Error> {
+        Computed::exact_or(self.param_of_point(p, lambda), || {
+            let pf: Vec<f64> = p.iter().map(Ordered::to_f64).collect();
+            self.map(Ordered::to_f64)
+                .param_of_point(&pf, &lambda.to_f64())
+        })
     }
 }
 
