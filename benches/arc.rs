@@ -36,6 +36,23 @@ fn arcs(c: &mut Criterion) {
     c.bench_function("circle test, exact cubic", |b| {
         b.iter(|| circle_of(black_box(&cubic), Tolerance::EXACT).unwrap())
     });
+    let scaled = exact_bezier::integer_coords(&cubic);
+    c.bench_function(
+        "circle test, exact cubic, integer homogeneous coords",
+        |b| {
+            b.iter(|| {
+                circle_of(
+                    &exact_bezier::integer_coords(black_box(&cubic)),
+                    Tolerance::EXACT,
+                )
+                .unwrap()
+            })
+        },
+    );
+    assert_eq!(
+        circle_of(&scaled, Tolerance::EXACT),
+        circle_of(&cubic, Tolerance::EXACT)
+    );
     c.bench_function("circle test, f64 cubic (tol 1e-9)", |b| {
         b.iter(|| circle_of(black_box(&cubic_f), Tolerance(1e-9)).unwrap())
     });

@@ -56,7 +56,7 @@ pub use arc::{
     sigma_of_lambda, ArcCubic, Computed, LambdaFactors, QuadArc, Roots,
 };
 pub use bernstein::{bernstein, bernstein_all};
-pub use circle::{circle_of, Circle, NotCircle};
+pub use circle::{circle_of, integer_coords, Circle, NotCircle};
 pub use curve::{mobius_factors, RationalCurve};
 pub use error::{Error, MAX_DEGREE};
 pub use hpoint::{de_casteljau, HPoint};

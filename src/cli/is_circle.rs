@@ -1,7 +1,7 @@
 //! `is-circle FILE`: does a curve lie on a circle? Exact.
 
 use super::{load, one_or_many};
-use crate::circle::circle_of;
+use crate::circle::{circle_of, integer_coords};
 use crate::error::Error;
 use crate::io::{point_to_json, JsonScalar, Patch};
 use crate::scalar::Tolerance;
@@ -20,7 +20,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     let values = load(&a.file)?
         .iter()
         .map(|p| match p {
-            Patch::Curve(c) => Ok(match circle_of(c, Tolerance::EXACT) {
+            Patch::Curve(c) => Ok(match circle_of(&integer_coords(c), Tolerance::EXACT) {
                 Ok(circle) => json!({
                     "circle": true,
                     "center": point_to_json(&circle.center),
