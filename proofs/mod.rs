@@ -23,6 +23,8 @@ pub mod bernstein;
 pub mod calculus;
 pub mod curves;
 pub mod lecture_joins;
+pub mod hang_li;
+pub mod hang_li_tables;
 pub mod quiz;
 pub mod reduction;
 pub mod trig_basis;
@@ -183,6 +185,8 @@ pub const FAMILIES: &[Family] = &[
     Family { name: "reduction", run: reduction::claims },
     Family { name: "trig_basis", run: trig_basis::claims },
     Family { name: "trig_stitching", run: trig_stitching::claims },
+    Family { name: "hang_li", run: hang_li::claims },
+    Family { name: "hang_li_tables", run: hang_li_tables::claims },
 ];
 
 /// Run every family (in parallel threads) and return the claims in order.

@@ -33,7 +33,9 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+mod arc;
 mod bernstein;
+mod circle;
 pub mod cli;
 mod continuity;
 mod curve;
@@ -57,8 +59,13 @@ mod trig_io;
 #[path = "../proofs/mod.rs"]
 pub mod proofs;
 
+pub use arc::{
+    check_lambda, lambda_change_delta, lambda_change_param, lambda_interval, lambda_of_sigma_cubed,
+    sigma_of_lambda, ArcCubic, Computed, LambdaFactors, QuadArc, Roots,
+};
 pub use bernstein::{bernstein, bernstein_all};
 pub use continuity::{g2_leading_points, join, Join};
+pub use circle::{circle_of, integer_coords, Circle, NotCircle};
 pub use curve::{mobius_factors, RationalCurve};
 pub use curve_deriv::forward_differences;
 pub use curve_geometry::{cross_norm_sq, ConicType, CurveEnd};

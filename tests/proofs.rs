@@ -50,3 +50,4 @@ families!(
     trig_basis,
     trig_stitching,
 );
+families!(quiz, hang_li, hang_li_tables);

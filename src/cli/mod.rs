@@ -20,6 +20,9 @@ mod mesh;
 mod plot;
 mod join;
 mod eval_trig;
+mod arc;
+mod eval;
+mod is_circle;
 mod prove;
 mod reduce;
 mod transform;
@@ -66,6 +69,10 @@ enum Command {
     Join(join::Args),
     /// Lower the degree of a curve by one (--method forrest|farin|lsq|exact).
     Reduce(reduce::Args),
+    /// A circular arc as a standard-form rational cubic (source 004 eq. 1).
+    Arc(arc::Args),
+    /// Does a curve lie on a circle? Exact centre and radius², or the reason.
+    IsCircle(is_circle::Args),
 }
 
 /// Run the command line; returns the process exit code.
@@ -89,6 +96,8 @@ pub fn main() -> i32 {
         Command::Curvature(a) => curvature::run(&a),
         Command::Join(a) => join::run(&a),
         Command::Reduce(a) => reduce::run(&a),
+        Command::Arc(a) => arc::run(&a),
+        Command::IsCircle(a) => is_circle::run(&a),
     };
     match result {
         Ok(v) => {

@@ -1,0 +1,38 @@
+//! `is-circle FILE`: does a curve lie on a circle? Exact.
+
+use super::{load, one_or_many};
+use crate::circle::{circle_of, integer_coords};
+use crate::error::Error;
+use crate::io::{point_to_json, JsonScalar, Patch};
+use crate::scalar::Tolerance;
+use serde_json::{json, Value};
+
+/// Arguments of `is-circle`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Input file (JSON curve, or an array of curves), or - for standard input.
+    file: String,
+}
+
+/// `{"circle": true, "center": [...], "radius_squared": ...}` or
+/// `{"circle": false, "reason": "..."}` per curve.
+pub fn run(a: &Args) -> Result<Value, Error> {
+    let values = load(&a.file)?
+        .iter()
+        .map(|p| match p {
+            Patch::Curve(c) => Ok(match circle_of(&integer_coords(c), Tolerance::EXACT) {
+                Ok(circle) => json!({
+                    "circle": true,
+                    "center": point_to_json(&circle.center),
+                    "radius_squared": circle.radius_squared.to_json(),
+                }),
+                Err(reason) => json!({ "circle": false, "reason": reason.to_string() }),
+            }),
+            other => Err(Error::Shape(format!(
+                "is-circle takes curves, not a {}",
+                other.kind()
+            ))),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(one_or_many(values))
+}

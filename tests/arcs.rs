@@ -1,0 +1,193 @@
+//! Circular arcs of source 004: exact properties over random rational
+//! half-angles (rational points of the unit circle, c = (1−τ²)/(1+τ²),
+//! s = 2τ/(1+τ²)) and λ with perfect-cube radicands (λ built from a rational
+//! σ: σ³ = N/D by construction), plus the command line.
+
+use exact_bezier::strategy::point;
+use exact_bezier::{
+    check_lambda, circle_of, lambda_change_delta, lambda_change_param, lambda_of_sigma_cubed,
+    ratio, ArcCubic, QuadArc, RationalCurve, Scalar, Tolerance,
+};
+use num_rational::BigRational;
+use proptest::prelude::*;
+use std::process::Command;
+
+type Q = BigRational;
+
+/// A half-angle with rational cos and sin, θ ∈ (0, 4π/3): τ = tan(θ/4) < √3.
+fn half_angle() -> impl Strategy<Value = (Q, Q)> {
+    (1i64..=17, 1i64..=10)
+        .prop_filter("θ < 4π/3", |(a, b)| a * a < 3 * b * b)
+        .prop_map(|(a, b)| {
+            let t = ratio::<Q>(a, b);
+            let d = Q::from_i64(1) + &t * &t;
+            ((Q::from_i64(1) - &t * &t) / &d, t * Q::from_i64(2) / d)
+        })
+}
+
+/// A positive weight ratio σ.
+fn sigma() -> impl Strategy<Value = Q> {
+    (1i64..=12, 1i64..=12).prop_map(|(p, q)| ratio(p, q))
+}
+
+/// An arc with random distinct end points and rational half-angle.
+fn arc() -> impl Strategy<Value = QuadArc<Q>> {
+    (point(2), point(2), half_angle())
+        .prop_filter("distinct ends", |(a, b, _)| a != b)
+        .prop_map(|(a, b, (c, s))| QuadArc::from_ends(&a, &b, &c, &s, Tolerance::EXACT).unwrap())
+}
+
+/// λ of σ, if admissible.
+fn lambda_of(arc: &QuadArc<Q>, sigma: &Q) -> Option<Q> {
+    let l = lambda_of_sigma_cubed(arc.cos_half(), &sigma.pow_u32(3)).ok()?;
+    check_lambda(arc.cos_half(), &l).ok().map(|_| l)
+}
+
+fn exact(arc: &QuadArc<Q>, l: &Q) -> RationalCurve<Q> {
+    match arc.cubic_for_lambda(l).unwrap() {
+        ArcCubic::Exact(c) => c,
+        ArcCubic::Approx(_) => panic!("perfect-cube radicand computed in f64"),
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    #[test]
+    fn cubic_is_exact_standard_and_circular(arc in arc(), s in sigma()) {
+        let l = lambda_of(&arc, &s);
+        prop_assume!(l.is_some());
+        let l = l.unwrap();
+        let cubic = exact(&arc, &l);
+        let w = cubic.weights();
+        prop_assert_eq!(&w[0], &Q::from_i64(1));
+        prop_assert_eq!(&w[3], &Q::from_i64(1));
+        prop_assert!(w.iter().all(|x| *x > Q::from_i64(0)));
+        let circle = circle_of(&cubic, Tolerance::EXACT).unwrap();
+        prop_assert_eq!(circle, circle_of(&arc.to_curve(), Tolerance::EXACT).unwrap());
+    }
+
+    #[test]
+    fn shoulder_moves_towards_b0_as_lambda_grows(arc in arc(), s1 in sigma(), s2 in sigma()) {
+        prop_assume!(s1 > s2);
+        let (l1, l2) = (lambda_of(&arc, &s1), lambda_of(&arc, &s2));
+        prop_assume!(l1.is_some() && l2.is_some());
+        let (l1, l2) = (l1.unwrap(), l2.unwrap());
+        prop_assert!(l1 < l2); // σ³ = N/D decreases in λ
+        let half = ratio::<Q>(1, 2);
+        let p1 = exact(&arc, &l1).eval(&half).unwrap();
+        let p2 = exact(&arc, &l2).eval(&half).unwrap();
+        // The shoulder is the quadratic's point at s/(1−s) = σ, so μ = σ².
+        let (m1, m2) = (arc.mu_of_point(&p1).unwrap(), arc.mu_of_point(&p2).unwrap());
+        prop_assert_eq!(&m1, &(s1.clone() * &s1));
+        prop_assert_eq!(&m2, &(s2.clone() * &s2));
+        prop_assert!(m2 < m1);
+        // Both inverse problems give back λ and 1/2.
+        prop_assert_eq!(arc.lambda_for_point(&p1, &half).unwrap(), l1.clone());
+        prop_assert_eq!(arc.param_of_point(&p2, &l2).unwrap(), half.clone());
+        // Eq. (6): the point at ū on the λ₂ cubic is at u(ū) on the λ₁ cubic.
+        let delta = lambda_change_delta(arc.cos_half(), &l1, &l2).unwrap();
+        prop_assert_eq!(&delta, &(s1.clone() / &s2));
+        let ub = ratio::<Q>(2, 7);
+        let u = lambda_change_param(&delta, &ub).unwrap();
+        prop_assert_eq!(exact(&arc, &l1).eval(&u).unwrap(), exact(&arc, &l2).eval(&ub).unwrap());
+    }
+}
+
+fn q(p: i64, d: i64) -> Q {
+    ratio(p, d)
+}
+
+#[test]
+fn lambda_outside_interval_is_a_typed_error() {
+    let p = |x: i64, y: i64| vec![q(x, 1), q(y, 1)];
+    let arc = QuadArc::from_ends(&p(0, 0), &p(2, 0), &q(3, 5), &q(4, 5), Tolerance::EXACT).unwrap();
+    // c = 3/5, k = 11/5: interval (−25/66, 5/11).
+    assert!(arc.cubic_for_lambda(&q(5, 11)).is_err());
+    assert!(arc.cubic_for_lambda(&q(-25, 66)).is_err());
+    assert!(arc.cubic_for_lambda(&q(0, 1)).is_ok());
+    let wide =
+        QuadArc::from_ends(&p(0, 0), &p(2, 0), &q(-3, 5), &q(4, 5), Tolerance::EXACT).unwrap();
+    assert!(
+        wide.cubic_for_lambda(&q(0, 1)).is_err(),
+        "θ > 4π/3 has no cubic family"
+    );
+}
+
+#[test]
+fn irrational_radicand_falls_back_to_f64() {
+    let p = |x: i64, y: i64| vec![q(x, 1), q(y, 1)];
+    let half = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
+    let cubic = half.cubic_for_lambda(&q(1, 5)).unwrap();
+    assert!(!cubic.is_exact());
+    // Hand values: ω₁ = 1/(3·0.8^{2/3}), ω₂ = 0.8^{2/3}/3, b₁* = (0, 1.6), b₂* = (2, 2.5).
+    let c = cubic.to_f64();
+    let w = c.weights();
+    assert!((w[1] - 1.0 / (3.0 * 0.8f64.powf(2.0 / 3.0))).abs() < 1e-12);
+    assert!((w[2] - 0.8f64.powf(2.0 / 3.0) / 3.0).abs() < 1e-12);
+    let pts = c.points().unwrap();
+    assert!((pts[1][1] - 1.6).abs() < 1e-12 && (pts[2][1] - 2.5).abs() < 1e-12);
+}
+
+#[test]
+fn bad_arcs_are_rejected() {
+    let p = |x: i64, y: i64| vec![q(x, 1), q(y, 1)];
+    assert!(QuadArc::from_ends(&p(0, 0), &p(2, 0), &q(1, 2), &q(1, 2), Tolerance::EXACT).is_err());
+    assert!(
+        QuadArc::from_control(&p(0, 0), &p(1, 2), &p(2, 0), &q(1, 2), Tolerance::EXACT).is_err()
+    );
+    assert!(QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 2), Tolerance::EXACT).is_err());
+}
+
+fn cli(args: &[&str]) -> (i32, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_exact-bezier"))
+        .args(args)
+        .output()
+        .expect("binary runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+    )
+}
+
+#[test]
+fn cli_arc_and_is_circle() {
+    let (code, text) = cli(&[
+        "arc",
+        "--cos-half",
+        "0",
+        "--lambda",
+        "-7",
+        "--points",
+        "0,0;2,0",
+        "--direction",
+        "0,1",
+    ]);
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(v["exact"], true);
+    // σ = 2: b₁* = b̄₀ + 2(1−λ)b = (0, 16), ω₁ = 1/12, ω₂ = 4/3 (eq. 2 by hand).
+    assert_eq!(v["points"][1].to_string(), "[0,16]");
+    assert_eq!(v["weights"].to_string(), r#"[1,"1/12","4/3",1]"#);
+    let path = std::env::temp_dir().join(format!("arc-cli-{}.json", std::process::id()));
+    std::fs::write(&path, &text).unwrap();
+    let (code, text) = cli(&["is-circle", path.to_str().unwrap()]);
+    std::fs::remove_file(&path).ok();
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(v["circle"], true);
+    assert_eq!(v["center"].to_string(), "[1,0]");
+    assert_eq!(v["radius_squared"].to_string(), "1");
+    let (code, _) = cli(&[
+        "arc",
+        "--cos-half",
+        "0",
+        "--lambda",
+        "1",
+        "--points",
+        "0,0;2,0",
+        "--direction",
+        "0,1",
+    ]);
+    assert_eq!(code, 2);
+}
