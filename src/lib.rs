@@ -41,7 +41,11 @@ mod hpoint;
 mod io;
 mod poly;
 mod rect;
+mod rect_join;
+mod rect_ops;
+mod reparam;
 mod scalar;
+mod standard;
 #[cfg(feature = "proptest")]
 pub mod strategy;
 mod tri;
@@ -58,7 +62,15 @@ pub use io::{
     JsonScalar, Patch,
 };
 pub use poly::Poly;
-pub use rect::RectPatch;
+pub use rect::{RectPatch, Side};
+pub use rect_join::{g0_join, g1_join};
+pub use rect_ops::Corner;
+pub use reparam::{bernstein_product, quadratic_coefficients, Quadratic};
+pub use standard::{
+    corner_weights, standardize_curve, standardize_curve_exact_or_f64, standardize_mobius,
+    standardize_quadratic, standardize_rect, standardize_rect_exact_or_f64, theorem1_holds,
+    Exactness, NthRoot, Standard, StandardMap,
+};
 pub use scalar::{
     binomial, binomial_scalar, ratio, rational_root, rational_to_f64, Field, Ordered, Scalar,
     Tolerance,
