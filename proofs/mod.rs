@@ -20,6 +20,7 @@ use serde_json::{json, Value};
 use std::fmt;
 
 pub mod quiz;
+pub mod yang_yong;
 
 /// The outcome of checking one claim.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -170,6 +171,7 @@ pub struct Family {
 #[rustfmt::skip]
 pub const FAMILIES: &[Family] = &[
     Family { name: "quiz", run: quiz::claims },
+    Family { name: "yang_yong", run: yang_yong::claims },
 ];
 
 /// Run every family (in parallel threads) and return the claims in order.

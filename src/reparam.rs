@@ -148,7 +148,8 @@ impl<T: Scalar> RectPatch<T> {
         let c = quadratic_coefficients(m, &q.alpha2, &q.alpha1);
         let e = quadratic_coefficients(n, &q.beta2, &q.beta1);
         let d = m + n;
-        // s-factor of term (i, j) at k1 and t-factor at k2 (zero outside range).
+        // The s-factor of term (i, j) at k1 and its t-factor at k2 (None
+        // outside the range of l2 = k1 − i and l1 = k2 − j).
         let s_part = |i: usize, j: usize, k1: usize| -> Option<T> {
             let l2 = k1.checked_sub(i).filter(|l| *l <= n)?;
             let b = binomial_scalar::<T>(m, i) * binomial_scalar::<T>(n, l2);
@@ -159,6 +160,12 @@ impl<T: Scalar> RectPatch<T> {
             let b = binomial_scalar::<T>(m, l1) * binomial_scalar::<T>(n, j);
             Some(scale_down(b * &c[i][l1], d, k2))
         };
+        let table = |f: &dyn Fn(usize, usize, usize) -> Option<T>| -> Vec<Vec<Vec<Option<T>>>> {
+            (0..=m)
+                .map(|i| (0..=n).map(|j| (0..=d).map(|k| f(i, j, k)).collect()).collect())
+                .collect()
+        };
+        let (sp, tp) = (table(&s_part), table(&t_part));
         let ctrl = (0..=d)
             .map(|k1| {
                 (0..=d)
@@ -166,8 +173,8 @@ impl<T: Scalar> RectPatch<T> {
                         let mut acc = HPoint::zero(self.dim());
                         for (i, row) in self.ctrl().iter().enumerate() {
                             for (j, h) in row.iter().enumerate() {
-                                if let (Some(a), Some(b)) = (s_part(i, j, k1), t_part(i, j, k2)) {
-                                    acc = acc.add(&h.scale(&(a * &b)));
+                                if let (Some(a), Some(b)) = (&sp[i][j][k1], &tp[i][j][k2]) {
+                                    acc = acc.add(&h.scale(&(a.clone() * b)));
                                 }
                             }
                         }
