@@ -21,6 +21,7 @@ use std::fmt;
 
 pub mod quiz;
 pub mod yang_yong;
+pub mod yang_yong_examples;
 
 /// The outcome of checking one claim.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -172,6 +173,7 @@ pub struct Family {
 pub const FAMILIES: &[Family] = &[
     Family { name: "quiz", run: quiz::claims },
     Family { name: "yang_yong", run: yang_yong::claims },
+    Family { name: "yang_yong_examples", run: yang_yong_examples::claims },
 ];
 
 /// Run every family (in parallel threads) and return the claims in order.

@@ -345,3 +345,57 @@ pub fn standardize_rect_exact_or_f64(
         Err(e) => Err(e),
     }
 }
+
+/// The type of conic a rational quadratic arc lies on, from the weights
+/// alone (control points not collinear).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ConicType {
+    /// Standard-form middle weight < 1.
+    Ellipse,
+    /// Standard-form middle weight = 1.
+    Parabola,
+    /// Standard-form middle weight > 1.
+    Hyperbola,
+}
+
+/// The conic type of a quadratic arc, decided exactly without roots: the
+/// standard form has middle weight `w₁/√(w₀w₂)` (source 000 §3: < 1
+/// ellipse, = 1 parabola, > 1 hyperbola), so compare the Möbius- and
+/// scale-invariant `w₀w₂/w₁²` with 1 (> 1 ellipse, = 1 parabola, < 1
+/// hyperbola). Exact for exact `T`; `f64` compares within `tol`.
+///
+/// # Errors
+///
+/// [`Error::Shape`] unless the degree is 2; [`Error::Weight`] for a
+/// non-positive weight.
+///
+/// # Examples
+///
+/// Source 000, Example 1, boundary `X(u, 0)` with weights 8, 2, 3:
+/// `w₀w₂/w₁² = 6 > 1`, an ellipse.
+///
+/// ```
+/// use exact_bezier::{RationalCurve, conic_type, ConicType, ratio, Tolerance};
+/// use num_rational::BigRational;
+/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+/// let c = RationalCurve::new(vec![p(0, 0), p(1, 1), p(2, 0)], vec![ratio(8, 1), ratio(2, 1), ratio(3, 1)]).unwrap();
+/// assert_eq!(conic_type(&c, Tolerance::EXACT).unwrap(), ConicType::Ellipse);
+/// ```
+pub fn conic_type<T: Ordered>(c: &RationalCurve<T>, tol: Tolerance) -> Result<ConicType, Error> {
+    if c.degree() != 2 {
+        return Err(Error::Shape(format!(
+            "a conic type needs a quadratic curve, not degree {}",
+            c.degree()
+        )));
+    }
+    c.check_positive_weights()?;
+    let w = c.weights();
+    let diff = w[0].clone() * &w[2] - &(w[1].clone() * &w[1]);
+    Ok(if diff.is_zero_within(tol) {
+        ConicType::Parabola
+    } else if diff > T::zero() {
+        ConicType::Ellipse
+    } else {
+        ConicType::Hyperbola
+    })
+}
