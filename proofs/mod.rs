@@ -20,6 +20,7 @@ use serde_json::{json, Value};
 use std::fmt;
 
 pub mod quiz;
+pub mod surfaces;
 pub mod yang_yong;
 pub mod yang_yong_examples;
 
@@ -172,6 +173,7 @@ pub struct Family {
 #[rustfmt::skip]
 pub const FAMILIES: &[Family] = &[
     Family { name: "quiz", run: quiz::claims },
+    Family { name: "surfaces", run: surfaces::claims },
     Family { name: "yang_yong", run: yang_yong::claims },
     Family { name: "yang_yong_examples", run: yang_yong_examples::claims },
 ];

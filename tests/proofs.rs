@@ -41,4 +41,4 @@ macro_rules! families {
     };
 }
 
-families!(quiz, yang_yong, yang_yong_examples);
+families!(quiz, surfaces, yang_yong, yang_yong_examples);
