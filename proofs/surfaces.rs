@@ -15,8 +15,8 @@ use crate::rect::RectPatch;
 use crate::rect_join::g0_join;
 use crate::rect_ops::{cross, Corner};
 use crate::scalar::{ratio, Tolerance};
-use num_traits::{One, Zero};
 use num_rational::BigRational;
+use num_traits::{One, Zero};
 
 const SRC: &str = "001 lecture, 矩形域曲面";
 
@@ -59,7 +59,13 @@ fn orders_agree() -> Claim {
 
 /// The intermediate net after k steps in u and l steps in v:
 /// `P^{k,l}_{i,j}`, `i ≤ m − k`, `j ≤ n − l`.
-fn intermediate(p: &RectPatch<Poly>, k: usize, l: usize, u: &Poly, v: &Poly) -> Vec<Vec<HPoint<Poly>>> {
+fn intermediate(
+    p: &RectPatch<Poly>,
+    k: usize,
+    l: usize,
+    u: &Poly,
+    v: &Poly,
+) -> Vec<Vec<HPoint<Poly>>> {
     let step = |row: &[HPoint<Poly>], t: &Poly| -> Vec<HPoint<Poly>> {
         row.windows(2).map(|w| w[0].lerp(&w[1], t)).collect()
     };
@@ -72,7 +78,9 @@ fn intermediate(p: &RectPatch<Poly>, k: usize, l: usize, u: &Poly, v: &Poly) -> 
         let t: Vec<Vec<HPoint<Poly>>> = (0..cols)
             .map(|j| step(&net.iter().map(|r| r[j].clone()).collect::<Vec<_>>(), u))
             .collect();
-        net = (0..t[0].len()).map(|i| t.iter().map(|c| c[i].clone()).collect()).collect();
+        net = (0..t[0].len())
+            .map(|i| t.iter().map(|c| c[i].clone()).collect())
+            .collect();
     }
     net
 }
@@ -124,7 +132,12 @@ fn intermediate_corrected() -> Claim {
 
 /// `eval_hom_projective` is definition (1) at homogeneous parameters.
 fn projective_evaluation() -> Claim {
-    let (u0, u1, v0, v1) = (Poly::var("u0"), Poly::var("u1"), Poly::var("v0"), Poly::var("v1"));
+    let (u0, u1, v0, v1) = (
+        Poly::var("u0"),
+        Poly::var("u1"),
+        Poly::var("v0"),
+        Poly::var("v1"),
+    );
     let bad = bidegrees(4).find(|&(m, n)| {
         let p = sym_net(m, n);
         let mut want = HPoint::zero(1);
@@ -154,8 +167,15 @@ fn projective_evaluation() -> Claim {
 /// Σ_{a ≤ m, b ≤ n} h^a k^b / (a! b!) ∂^{a+b}H/∂u^a∂v^b (u, v): proves every
 /// partial derivative of every order at once.
 fn derivatives_taylor() -> Claim {
-    let (u, v, h, k) = (Poly::var("u"), Poly::var("v"), Poly::var("h"), Poly::var("k"));
-    let fact = |n: usize| -> BigRational { (1..=n as i64).fold(ratio(1, 1), |a, x| a * ratio::<BigRational>(x, 1)) };
+    let (u, v, h, k) = (
+        Poly::var("u"),
+        Poly::var("v"),
+        Poly::var("h"),
+        Poly::var("k"),
+    );
+    let fact = |n: usize| -> BigRational {
+        (1..=n as i64).fold(ratio(1, 1), |a, x| a * ratio::<BigRational>(x, 1))
+    };
     let bad = bidegrees(3).find(|&(m, n)| {
         let p = sym_net(m, n);
         let lhs = p.eval_hom(&(u.clone() + &h), &(v.clone() + &k));
@@ -167,7 +187,10 @@ fn derivatives_taylor() -> Claim {
                 rhs = rhs.add(&p.derivative_hom(a, b, &u, &v).scale(&f));
             }
         }
-        lhs != rhs || !p.derivative_hom(m + 1, 0, &u, &v).is_zero_within(Tolerance::EXACT)
+        lhs != rhs
+            || !p
+                .derivative_hom(m + 1, 0, &u, &v)
+                .is_zero_within(Tolerance::EXACT)
     });
     Claim::check(
         "partial derivatives of every order: H(u+h, v+k) = Σ h^a k^b/(a! b!) ∂^{a+b}H/∂u^a∂v^b(u, v), with ∂^{a,b}H from forward differences m!/(m−a)!·n!/(n−b)!·Δ^{a,b}",
@@ -183,20 +206,38 @@ fn derivatives_taylor() -> Claim {
 fn corner_planes() -> Claim {
     let bad = bidegrees(4).find_map(|(m, n)| {
         let pts: Vec<Vec<Vec<Poly>>> = (0..=m)
-            .map(|i| (0..=n).map(|j| ["x", "y", "z"].iter().map(|c| Poly::var(&format!("{c}{i}{j}"))).collect()).collect())
+            .map(|i| {
+                (0..=n)
+                    .map(|j| {
+                        ["x", "y", "z"]
+                            .iter()
+                            .map(|c| Poly::var(&format!("{c}{i}{j}")))
+                            .collect()
+                    })
+                    .collect()
+            })
             .collect();
-        let ws: Vec<Vec<Poly>> = (0..=m).map(|i| (0..=n).map(|j| Poly::var(&format!("w{i}{j}"))).collect()).collect();
+        let ws: Vec<Vec<Poly>> = (0..=m)
+            .map(|i| (0..=n).map(|j| Poly::var(&format!("w{i}{j}"))).collect())
+            .collect();
         let p = RectPatch::new(pts.clone(), ws).expect("symbolic weights are non-zero");
         Corner::ALL.iter().find_map(|&c| {
             let (u, v): (Poly, Poly) = c.params();
             let normal = p.normal_hom(&u, &v).expect("3D");
             let [a, b, d] = p.corner_triangle(c);
             let at = |(i, j): (usize, usize)| pts[i][j].clone();
-            let edge = |x: (usize, usize)| -> Vec<Poly> { at(x).iter().zip(at(a)).map(|(p, q)| p.clone() - &q).collect() };
+            let edge = |x: (usize, usize)| -> Vec<Poly> {
+                at(x)
+                    .iter()
+                    .zip(at(a))
+                    .map(|(p, q)| p.clone() - &q)
+                    .collect()
+            };
             let tri = cross(&edge(b), &edge(d));
             let par = cross(&normal, &tri);
             let nonzero = normal.iter().any(|x| !x.is_zero());
-            (!(par.iter().all(|x| x.is_zero()) && nonzero)).then(|| format!("(m, n) = ({m}, {n}), corner {c:?}"))
+            (!(par.iter().all(|x| x.is_zero()) && nonzero))
+                .then(|| format!("(m, n) = ({m}, {n}), corner {c:?}"))
         })
     });
     Claim::check(
@@ -240,7 +281,11 @@ fn g0_corrected() -> Claim {
     let v = Poly::var("v");
     let bad = bidegrees(4).find(|&(m, n)| {
         let p = sym_net(m, n);
-        let mut ctrl = sym_net(m, n).ctrl().iter().map(|r| r.iter().map(|h| h.scale(&Poly::var("λ"))).collect()).collect::<Vec<Vec<_>>>();
+        let mut ctrl = sym_net(m, n)
+            .ctrl()
+            .iter()
+            .map(|r| r.iter().map(|h| h.scale(&Poly::var("λ"))).collect())
+            .collect::<Vec<Vec<_>>>();
         ctrl[0] = p.ctrl()[m].clone();
         let q = RectPatch::from_hom(ctrl).expect("a net");
         de_casteljau(&p.ctrl()[m], &v) != q.eval_hom(&Poly::zero(), &v)

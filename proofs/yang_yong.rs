@@ -11,13 +11,13 @@
 //! (m, n) with 1 ≤ m, n ≤ 4.
 
 use super::{Claim, Verdict};
+use crate::bernstein::{bernstein, bernstein_all};
 use crate::hpoint::HPoint;
 use crate::poly::Poly;
 use crate::rect::RectPatch;
 use crate::reparam::{quadratic_coefficients, Quadratic};
 use crate::scalar::{binomial_scalar, ratio};
 use crate::standard::corner_weights;
-use crate::bernstein::{bernstein, bernstein_all};
 use num_rational::BigRational;
 use num_traits::Zero;
 
@@ -31,7 +31,10 @@ pub(crate) fn sym_net(m: usize, n: usize) -> RectPatch<Poly> {
         .map(|i| {
             (0..=n)
                 .map(|j| HPoint {
-                    coords: vec![Poly::var(&format!("p{i}{j}")), Poly::var(&format!("w{i}{j}"))],
+                    coords: vec![
+                        Poly::var(&format!("p{i}{j}")),
+                        Poly::var(&format!("w{i}{j}")),
+                    ],
                 })
                 .collect()
         })
@@ -49,7 +52,9 @@ fn one() -> Poly {
 
 /// All bidegrees (m, n), 1 ≤ m, n ≤ MAX.
 fn bidegrees() -> Vec<(usize, usize)> {
-    (1..=MAX).flat_map(|m| (1..=MAX).map(move |n| (m, n))).collect()
+    (1..=MAX)
+        .flat_map(|m| (1..=MAX).map(move |n| (m, n)))
+        .collect()
 }
 
 /// One claim from a per-bidegree check: proved iff it holds for all; the
@@ -69,7 +74,9 @@ fn for_all_bidegrees(
         source,
         expected,
         holds,
-        failure.unwrap_or_else(|| format!("identity in Q[symbols] for every (m, n) ≤ ({MAX}, {MAX}), fully symbolic net")),
+        failure.unwrap_or_else(|| {
+            format!("identity in Q[symbols] for every (m, n) ≤ ({MAX}, {MAX}), fully symbolic net")
+        }),
     )
 }
 
@@ -160,7 +167,10 @@ fn scaling_keeps_points() -> Claim {
         |m, n| {
             let p = sym_net(m, n);
             let (k, s, t) = (v("k"), v("s"), v("t"));
-            differ(&p.scale_weights(&k).eval_hom(&s, &t), &p.eval_hom(&s, &t).scale(&k))
+            differ(
+                &p.scale_weights(&k).eval_hom(&s, &t),
+                &p.eval_hom(&s, &t).scale(&k),
+            )
         },
     )
 }
@@ -401,7 +411,9 @@ fn eq19_equal_corners() -> Claim {
 fn paper_c(m: usize, at0: &Poly, at1: &Poly) -> Vec<Vec<Poly>> {
     let cp = quadratic_coefficients(m, at0, at1);
     let sign = if m % 2 == 0 { one() } else { -one() };
-    (0..=m).map(|l| (0..=m).map(|i| cp[i][l].clone() * &sign).collect()).collect()
+    (0..=m)
+        .map(|l| (0..=m).map(|i| cp[i][l].clone() * &sign).collect())
+        .collect()
 }
 
 /// (17) evaluated literally (with corrected c and e) for the weights, compared
@@ -483,16 +495,60 @@ fn appendix_c() -> Vec<Claim> {
         (2, 0, "−α2α1²", -a2.clone() * &a1.pow(2)),
         (3, 0, "−α1³", -a1.pow(3)),
         (0, 1, "α2²(α2 − 1)", a2.pow(2) * &(a2.clone() - one())),
-        (1, 1, "α2(3α1α2 − 2α1 − α2)/3", a2.clone() * &(Poly::from_int(3) * &a1 * &a2 - Poly::from_int(2) * &a1 - &a2) * &third),
-        (2, 1, "α1(3α1α2 − α1 − 2α2)/3", a1.clone() * &(Poly::from_int(3) * &a1 * &a2 - &a1 - Poly::from_int(2) * &a2) * &third),
+        (
+            1,
+            1,
+            "α2(3α1α2 − 2α1 − α2)/3",
+            a2.clone() * &(Poly::from_int(3) * &a1 * &a2 - Poly::from_int(2) * &a1 - &a2) * &third,
+        ),
+        (
+            2,
+            1,
+            "α1(3α1α2 − α1 − 2α2)/3",
+            a1.clone() * &(Poly::from_int(3) * &a1 * &a2 - &a1 - Poly::from_int(2) * &a2) * &third,
+        ),
         (3, 1, "α1²(α1 − 1)", a1.pow(2) * &(a1.clone() - one())),
-        (0, 2, "−α2(α2 − 1)²", -a2.clone() * &(a2.clone() - one()).pow(2)),
-        (1, 2, "−(α2 − 1)(−2α2 + 3α2α1 − α1)/3", -(a2.clone() - one()) * &(Poly::from_int(-2) * &a2 + Poly::from_int(3) * &a2 * &a1 - &a1) * &third),
-        (2, 2, "−(−1 + α1)(−2α1 + 3α2α1 − α2)/3", -(a1.clone() - one()) * &(Poly::from_int(-2) * &a1 + Poly::from_int(3) * &a2 * &a1 - &a2) * &third),
-        (3, 2, "−α1(α1 − 1)²", -a1.clone() * &(a1.clone() - one()).pow(2)),
+        (
+            0,
+            2,
+            "−α2(α2 − 1)²",
+            -a2.clone() * &(a2.clone() - one()).pow(2),
+        ),
+        (
+            1,
+            2,
+            "−(α2 − 1)(−2α2 + 3α2α1 − α1)/3",
+            -(a2.clone() - one())
+                * &(Poly::from_int(-2) * &a2 + Poly::from_int(3) * &a2 * &a1 - &a1)
+                * &third,
+        ),
+        (
+            2,
+            2,
+            "−(−1 + α1)(−2α1 + 3α2α1 − α2)/3",
+            -(a1.clone() - one())
+                * &(Poly::from_int(-2) * &a1 + Poly::from_int(3) * &a2 * &a1 - &a2)
+                * &third,
+        ),
+        (
+            3,
+            2,
+            "−α1(α1 − 1)²",
+            -a1.clone() * &(a1.clone() - one()).pow(2),
+        ),
         (0, 3, "(α2 − 1)³", (a2.clone() - one()).pow(3)),
-        (1, 3, "(α2 − 1)²(α1 − 1)", (a2.clone() - one()).pow(2) * &(a1.clone() - one())),
-        (2, 3, "(α1 − 1)²(α2 − 1)", (a1.clone() - one()).pow(2) * &(a2.clone() - one())),
+        (
+            1,
+            3,
+            "(α2 − 1)²(α1 − 1)",
+            (a2.clone() - one()).pow(2) * &(a1.clone() - one()),
+        ),
+        (
+            2,
+            3,
+            "(α1 − 1)²(α2 − 1)",
+            (a1.clone() - one()).pow(2) * &(a2.clone() - one()),
+        ),
         (3, 3, "(α1 − 1)³", (a1.clone() - one()).pow(3)),
     ];
     printed
@@ -500,7 +556,11 @@ fn appendix_c() -> Vec<Claim> {
         .map(|(l, i, text, poly)| {
             let ours = &c[l][i];
             let agrees = *ours == poly;
-            let expected = if (l, i) == (1, 0) { Verdict::Mismatch } else { Verdict::Reproduced };
+            let expected = if (l, i) == (1, 0) {
+                Verdict::Mismatch
+            } else {
+                Verdict::Reproduced
+            };
             Claim::compare(
                 &format!("Appendix 1: c_{{{l},{i}}} = {text}"),
                 &format!("{SRC} Appendix 1, eq. (12)"),
@@ -530,14 +590,43 @@ fn denominators() -> Vec<Claim> {
             let num: Poly = (0..=m).fold(Poly::zero(), |acc, l| {
                 acc + c[l][i].clone() * &bernstein::<Poly>(i, m, x) * &bernstein::<Poly>(l, m, y)
             });
-            let lhs = binomial_scalar::<Poly>(m, i) * &vn.pow(i as u32) * &(vd.clone() - &vn).pow((m - i) as u32) * den;
+            let lhs = binomial_scalar::<Poly>(m, i)
+                * &vn.pow(i as u32)
+                * &(vd.clone() - &vn).pow((m - i) as u32)
+                * den;
             lhs == num * &vd.pow(m as u32)
         })
     };
-    let d1 = (two.clone() * &s * &a1 * &t + two.clone() * &s * &a2 - two.clone() * &s * &a2 * &t - &s - a1.clone() * &t - &a2 + a2.clone() * &t).pow(3);
-    let d11 = (two.clone() * &s * &a1 + two.clone() * &s * &a2 - two.clone() * &s * &a2 * &t - &s - a1.clone() * &t - &a2 + a2.clone() * &t).pow(3);
-    let d2 = |e: u32| (two.clone() * &s * &b1 * &t + two.clone() * &t * &b2 - two.clone() * &s * &b2 * &t - &t - b1.clone() * &s - &b2 + b2.clone() * &s).pow(e);
-    let d2_printed = (two.clone() * &s * &b1 * &t + two.clone() * &t * &b2 - two.clone() * &s * &a2 * &t - &t - a1.clone() * &s - &a2 + a2.clone() * &s).pow(3);
+    let d1 = (two.clone() * &s * &a1 * &t + two.clone() * &s * &a2
+        - two.clone() * &s * &a2 * &t
+        - &s
+        - a1.clone() * &t
+        - &a2
+        + a2.clone() * &t)
+        .pow(3);
+    let d11 = (two.clone() * &s * &a1 + two.clone() * &s * &a2
+        - two.clone() * &s * &a2 * &t
+        - &s
+        - a1.clone() * &t
+        - &a2
+        + a2.clone() * &t)
+        .pow(3);
+    let d2 = |e: u32| {
+        (two.clone() * &s * &b1 * &t + two.clone() * &t * &b2
+            - two.clone() * &s * &b2 * &t
+            - &t
+            - b1.clone() * &s
+            - &b2
+            + b2.clone() * &s)
+            .pow(e)
+    };
+    let d2_printed = (two.clone() * &s * &b1 * &t + two.clone() * &t * &b2
+        - two.clone() * &s * &a2 * &t
+        - &t
+        - a1.clone() * &s
+        - &a2
+        + a2.clone() * &s)
+        .pow(3);
     let src = |eq: &str| format!("{SRC} eq. {eq}");
     vec![
         Claim::check(

@@ -71,16 +71,42 @@ pub fn claims() -> Vec<Claim> {
 
 /// The linear standard form in f64 (Examples 1 and 3) and the weights after
 /// the Möbius maps, before scaling.
-fn linear_parts(p: &RectPatch<BigRational>) -> (f64, f64, f64, Vec<Vec<f64>>, Vec<Vec<f64>>, bool) {
+/// α, β, k, the weights before and after scaling, and exactness.
+struct Linear {
+    alpha: f64,
+    beta: f64,
+    k: f64,
+    before: Vec<Vec<f64>>,
+    after: Vec<Vec<f64>>,
+    exact: bool,
+}
+
+fn linear_parts(p: &RectPatch<BigRational>) -> Linear {
     let (std, exact) = match standardize_rect_exact_or_f64(p).expect("positive weights") {
         Exactness::Exact(s) => (to_f64(&s), true),
         Exactness::Approximate(s, _) => (s, false),
     };
-    let StandardMap::Mobius { alpha, beta: Some(beta), k } = std.map.clone() else {
+    let StandardMap::Mobius {
+        alpha,
+        beta: Some(beta),
+        k,
+    } = std.map.clone()
+    else {
         panic!("Theorem 1 holds: a linear map")
     };
-    let before = p.map(Ordered::to_f64).mobius_u(&alpha).mobius_v(&beta).weights();
-    (alpha, beta, k, before, std.patch.weights(), exact)
+    let before = p
+        .map(Ordered::to_f64)
+        .mobius_u(&alpha)
+        .mobius_v(&beta)
+        .weights();
+    Linear {
+        alpha,
+        beta,
+        k,
+        before,
+        after: std.patch.weights(),
+        exact,
+    }
 }
 
 fn to_f64(s: &Standard<RectPatch<BigRational>, BigRational>) -> Standard<RectPatch<f64>, f64> {
@@ -108,13 +134,37 @@ fn to_f64(s: &Standard<RectPatch<BigRational>, BigRational>) -> Standard<RectPat
 
 /// Printed 3×3 weights in the paper's order ω00, ω10, ω20, ω01, … as
 /// `(i, j, text)`.
-fn grid_claims(example: &str, stage: &str, printed: [&str; 9], ours: &[Vec<f64>], expected: [Verdict; 9]) -> Vec<Claim> {
-    let order = [(0, 0), (1, 0), (2, 0), (0, 1), (1, 1), (2, 1), (0, 2), (1, 2), (2, 2)];
+fn grid_claims(
+    example: &str,
+    stage: &str,
+    printed: [&str; 9],
+    ours: &[Vec<f64>],
+    expected: [Verdict; 9],
+) -> Vec<Claim> {
+    let order = [
+        (0, 0),
+        (1, 0),
+        (2, 0),
+        (0, 1),
+        (1, 1),
+        (2, 1),
+        (0, 2),
+        (1, 2),
+        (2, 2),
+    ];
     order
         .iter()
         .zip(printed)
         .zip(expected)
-        .map(|((&(i, j), text), e)| number(example, &format!("{stage} ω_{{{i},{j}}}"), text, ours[i][j], e))
+        .map(|((&(i, j), text), e)| {
+            number(
+                example,
+                &format!("{stage} ω_{{{i},{j}}}"),
+                text,
+                ours[i][j],
+                e,
+            )
+        })
         .collect()
 }
 
@@ -122,19 +172,28 @@ fn example1_claims() -> Vec<Claim> {
     let ex = "Example 1";
     let p = example1();
     let [w00, w20, w02, w22] = corner_weights(&p);
-    let mut out = vec![
-        Claim::compare(
-            &format!("{ex}: ω00ω22 = 6 = ω02ω20, so Theorem 1 applies"),
-            SRC,
-            Y,
-            w00.clone() * &w22 == ratio(6, 1) && w02.clone() * &w20 == ratio(6, 1) && theorem1_holds(&p, Tolerance::EXACT),
-            "6 = 6",
-            &format!("{} = {}", w00 * &w22, w02 * &w20),
-        ),
-    ];
-    let (alpha, beta, k, before, after, exact) = linear_parts(&p);
+    let mut out = vec![Claim::compare(
+        &format!("{ex}: ω00ω22 = 6 = ω02ω20, so Theorem 1 applies"),
+        SRC,
+        Y,
+        w00.clone() * &w22 == ratio(6, 1)
+            && w02.clone() * &w20 == ratio(6, 1)
+            && theorem1_holds(&p, Tolerance::EXACT),
+        "6 = 6",
+        &format!("{} = {}", w00 * &w22, w02 * &w20),
+    )];
+    let Linear {
+        alpha,
+        beta,
+        k,
+        before,
+        after,
+        exact,
+    } = linear_parts(&p);
     out.push(Claim::check(
-        &format!("{ex}: the standardization is not exact over Q (α = 1/(1 + √(8/3)) is irrational)"),
+        &format!(
+            "{ex}: the standardization is not exact over Q (α = 1/(1 + √(8/3)) is irrational)"
+        ),
         SRC,
         P,
         !exact,
@@ -146,22 +205,47 @@ fn example1_claims() -> Vec<Claim> {
     out.extend(grid_claims(
         ex,
         "after (2)(3), before scaling,",
-        ["0.1282", "0.0523", "0.1282", "0.1603", "0.1570", "0.1709", "0.1282", "0.1047", "0.1282"],
+        [
+            "0.1282", "0.0523", "0.1282", "0.1603", "0.1570", "0.1709", "0.1282", "0.1047",
+            "0.1282",
+        ],
         &before,
         [Y, Y, Y, Y, Y, M, Y, Y, Y],
     ));
     out.extend(grid_claims(
         ex,
         "standardized",
-        ["1", "0.4099", "1", "1.2564", "1.2305", "1.3395", "1", "0.8206", "1"],
+        [
+            "1", "0.4099", "1", "1.2564", "1.2305", "1.3395", "1", "0.8206", "1",
+        ],
         &after,
         [Y, M, Y, M, M, M, Y, M, Y],
     ));
     let sides = [
-        (Side::V0, "X(u, 0)", ConicType::Ellipse, "ω10 = 0.4099 < 1: ellipse"),
-        (Side::U0, "X(0, v)", ConicType::Hyperbola, "ω01 = 1.2564 > 1: hyperbola"),
-        (Side::V1, "X(u, 1)", ConicType::Ellipse, "ω12 = 0.8206 < 1: ellipse"),
-        (Side::U1, "X(1, v)", ConicType::Hyperbola, "ω21 = 1.3395 > 1: hyperbola"),
+        (
+            Side::V0,
+            "X(u, 0)",
+            ConicType::Ellipse,
+            "ω10 = 0.4099 < 1: ellipse",
+        ),
+        (
+            Side::U0,
+            "X(0, v)",
+            ConicType::Hyperbola,
+            "ω01 = 1.2564 > 1: hyperbola",
+        ),
+        (
+            Side::V1,
+            "X(u, 1)",
+            ConicType::Ellipse,
+            "ω12 = 0.8206 < 1: ellipse",
+        ),
+        (
+            Side::U1,
+            "X(1, v)",
+            ConicType::Hyperbola,
+            "ω21 = 1.3395 > 1: hyperbola",
+        ),
     ];
     for (side, name, printed, text) in sides {
         let c = p.boundary(side);
@@ -173,7 +257,10 @@ fn example1_claims() -> Vec<Claim> {
             Y,
             ours == printed,
             text,
-            &format!("{ours:?}: exact invariant w0·w2/w1² = {}", w[0].clone() * &w[2] / (w[1].clone() * &w[1])),
+            &format!(
+                "{ours:?}: exact invariant w0·w2/w1² = {}",
+                w[0].clone() * &w[2] / (w[1].clone() * &w[1])
+            ),
         ));
     }
     out
@@ -187,7 +274,9 @@ fn example2_claims() -> Vec<Claim> {
         &format!("{ex}: ω00ω33 = 24 ≠ ω30ω03 = 10, so Theorem 1 fails"),
         SRC,
         Y,
-        w00.clone() * &w33 == ratio(24, 1) && w30.clone() * &w03 == ratio(10, 1) && !theorem1_holds(&p, Tolerance::EXACT),
+        w00.clone() * &w33 == ratio(24, 1)
+            && w30.clone() * &w03 == ratio(10, 1)
+            && !theorem1_holds(&p, Tolerance::EXACT),
         "24 ≠ 10",
         &format!("{} ≠ {}", w00.clone() * &w33, w30.clone() * &w03),
     )];
@@ -209,7 +298,13 @@ fn example2_claims() -> Vec<Claim> {
     out.push(number(ex, "α1", "0.5391", map.alpha1, Y));
     out.push(number(ex, "β1", "0.5782", map.beta1, Y));
     out.push(number(ex, "β2", "0.5782", map.beta2, Y));
-    out.push(number(ex, "common corner weight α2³ω00β1³", "0.0588", 1.0 / k, Y));
+    out.push(number(
+        ex,
+        "common corner weight α2³ω00β1³",
+        "0.0588",
+        1.0 / k,
+        Y,
+    ));
     // The printed formula shapes: 1/∛(3/2 + 1) and 1/∛(5/8 + 1).
     let printed_a2 = 1.0 / (1.5f64 + 1.0).cbrt();
     let printed_a1 = 1.0 / (0.625f64 + 1.0).cbrt();
@@ -219,7 +314,10 @@ fn example2_claims() -> Vec<Claim> {
         M,
         at_precision("0.4663", printed_a2) == "0.4663",
         "1/∛(3/2 + 1) ≈ 0.4663",
-        &format!("1/∛(5/2) = {printed_a2:.4}; (19) reads 1/(1 + ∛(ω00/ω30)) = 1/(1 + ∛(3/2)) = {:.4}", map.alpha2),
+        &format!(
+            "1/∛(5/2) = {printed_a2:.4}; (19) reads 1/(1 + ∛(ω00/ω30)) = 1/(1 + ∛(3/2)) = {:.4}",
+            map.alpha2
+        ),
     ));
     out.push(Claim::compare(
         &format!("{ex}: the printed expression α1 = 1/∛(5/8 + 1) gives the printed 0.5391"),
@@ -227,7 +325,10 @@ fn example2_claims() -> Vec<Claim> {
         M,
         at_precision("0.5391", printed_a1) == "0.5391",
         "1/∛(5/8 + 1) ≈ 0.5391",
-        &format!("1/∛(13/8) = {printed_a1:.4}; (19) reads 1/(1 + ∛(ω03/ω33)) = 1/(1 + ∛(5/8)) = {:.4}", map.alpha1),
+        &format!(
+            "1/∛(13/8) = {printed_a1:.4}; (19) reads 1/(1 + ∛(ω03/ω33)) = 1/(1 + ∛(5/8)) = {:.4}",
+            map.alpha1
+        ),
     ));
     out.extend(example2_carried(&p, &std));
     out
@@ -251,7 +352,11 @@ fn example2_carried(p: &RectPatch<BigRational>, std: &Standard<RectPatch<f64>, f
             let (u, v) = map.param(&s, &t).expect("no pole inside the square");
             let x = std.patch.eval(&s, &t).expect("positive weights");
             let y = orig.eval(&u, &v).expect("positive weights");
-            worst = x.iter().zip(&y).map(|(a, b)| (a - b).abs()).fold(worst, f64::max);
+            worst = x
+                .iter()
+                .zip(&y)
+                .map(|(a, b)| (a - b).abs())
+                .fold(worst, f64::max);
         }
     }
     vec![
@@ -294,7 +399,14 @@ fn example3_claims() -> Vec<Claim> {
             &format!("{} = {}", w00.clone() * &w22, w02.clone() * &w20),
         ),
     ];
-    let (alpha, beta, k, before, after, exact) = linear_parts(&p);
+    let Linear {
+        alpha,
+        beta,
+        k,
+        before,
+        after,
+        exact,
+    } = linear_parts(&p);
     out.push(Claim::check(
         &format!("{ex}: the standardization is exact over Q (α = 3/5, β = 7/10)"),
         SRC,
@@ -308,14 +420,18 @@ fn example3_claims() -> Vec<Claim> {
     out.extend(grid_claims(
         ex,
         "after (2)(3), before scaling,",
-        ["0.254", "0.104", "0.254", "0.319", "0.3125", "0.34", "0.254", "0.2084", "0.254"],
+        [
+            "0.254", "0.104", "0.254", "0.319", "0.3125", "0.34", "0.254", "0.2084", "0.254",
+        ],
         &before,
         [Y, Y, Y, Y, Y, Y, Y, Y, Y],
     ));
     out.extend(grid_claims(
         ex,
         "standardized",
-        ["1", "0.4099", "1", "1.2564", "1.2305", "1.3395", "1", "0.8206", "1"],
+        [
+            "1", "0.4099", "1", "1.2564", "1.2305", "1.3395", "1", "0.8206", "1",
+        ],
         &after,
         [Y, M, Y, M, M, M, Y, Y, Y],
     ));

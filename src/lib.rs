@@ -66,13 +66,13 @@ pub use rect::{RectPatch, Side};
 pub use rect_join::{g0_join, g1_join};
 pub use rect_ops::Corner;
 pub use reparam::{bernstein_product, quadratic_coefficients, Quadratic};
-pub use standard::{
-    conic_type, corner_weights, standardize_curve, standardize_curve_exact_or_f64, standardize_mobius,
-    standardize_quadratic, standardize_rect, standardize_rect_exact_or_f64, theorem1_holds,
-    ConicType, Exactness, NthRoot, Standard, StandardMap,
-};
 pub use scalar::{
     binomial, binomial_scalar, ratio, rational_root, rational_to_f64, Field, Ordered, Scalar,
     Tolerance,
+};
+pub use standard::{
+    conic_type, corner_weights, standardize_curve, standardize_curve_exact_or_f64,
+    standardize_mobius, standardize_quadratic, standardize_rect, standardize_rect_exact_or_f64,
+    theorem1_holds, ConicType, Exactness, NthRoot, Standard, StandardMap,
 };
 pub use tri::TriPatch;

@@ -78,7 +78,11 @@ pub fn g0_join<T: Scalar>(p: &RectPatch<T>, q: &RectPatch<T>, tol: Tolerance) ->
 /// assert!(g1_join(&a, &flat, Tolerance::EXACT).unwrap());
 /// assert!(!g1_join(&a, &bent, Tolerance::EXACT).unwrap());
 /// ```
-pub fn g1_join<T: Scalar>(p: &RectPatch<T>, q: &RectPatch<T>, tol: Tolerance) -> Result<bool, Error> {
+pub fn g1_join<T: Scalar>(
+    p: &RectPatch<T>,
+    q: &RectPatch<T>,
+    tol: Tolerance,
+) -> Result<bool, Error> {
     if p.dim() != 3 || q.dim() != 3 {
         return Err(Error::Shape(format!(
             "a G¹ join needs 3D patches, not {}D and {}D",
@@ -121,15 +125,12 @@ pub(crate) fn det4<T: Scalar>(rows: &[HPoint<T>; 4]) -> T {
             + &(e(1, 2) * &(e(2, 0) * &e(3, 1) - &(e(2, 1) * &e(3, 0))))
     };
     let minors = [[1, 2, 3], [0, 2, 3], [0, 1, 3], [0, 1, 2]];
-    minors
-        .iter()
-        .enumerate()
-        .fold(T::zero(), |acc, (k, c)| {
-            let term = m[0][k].clone() * &det3(*c);
-            if k % 2 == 0 {
-                acc + term
-            } else {
-                acc - term
-            }
-        })
+    minors.iter().enumerate().fold(T::zero(), |acc, (k, c)| {
+        let term = m[0][k].clone() * &det3(*c);
+        if k % 2 == 0 {
+            acc + term
+        } else {
+            acc - term
+        }
+    })
 }

@@ -308,17 +308,17 @@ mod tests {
 
     #[test]
     fn derivatives_match_difference_quotients_of_the_exact_function() {
-        // Finite differences of the exact rational function converge; here we
-        // check X_u against the closed form from the homogeneous derivative.
+        // X_u against the quotient rule (N'D − N D')/D² of the homogeneous form.
         let s = sample();
         let (u, v) = (ratio::<Q>(1, 3), ratio::<Q>(2, 5));
         let d = s.derivatives(1, 1, &u, &v).unwrap();
         let h = s.eval_hom(&u, &v);
         let hu = s.derivative_hom(1, 0, &u, &v);
         let w = h.weight().clone();
-        for k in 0..3 {
-            let expect = (hu.coords[k].clone() * &w - h.coords[k].clone() * hu.weight()) / (w.clone() * &w);
-            assert_eq!(d[1][0][k], expect);
+        for (k, got) in d[1][0].iter().enumerate() {
+            let expect =
+                (hu.coords[k].clone() * &w - h.coords[k].clone() * hu.weight()) / (w.clone() * &w);
+            assert_eq!(*got, expect);
         }
         assert_eq!(d[0][0], s.eval(&u, &v).unwrap());
     }

@@ -162,7 +162,11 @@ impl<T: Scalar> RectPatch<T> {
         };
         let table = |f: &dyn Fn(usize, usize, usize) -> Option<T>| -> Vec<Vec<Vec<Option<T>>>> {
             (0..=m)
-                .map(|i| (0..=n).map(|j| (0..=d).map(|k| f(i, j, k)).collect()).collect())
+                .map(|i| {
+                    (0..=n)
+                        .map(|j| (0..=d).map(|k| f(i, j, k)).collect())
+                        .collect()
+                })
                 .collect()
         };
         let (sp, tp) = (table(&s_part), table(&t_part));
@@ -198,7 +202,10 @@ impl<T: Scalar> Quadratic<T> {
         let alpha = self.alpha1.clone() * t + &(self.alpha2.clone() * &(one.clone() - t));
         let beta = self.beta1.clone() * s + &(self.beta2.clone() * &(one.clone() - s));
         (
-            [alpha.clone() * &(one.clone() - s), (one.clone() - &alpha) * s],
+            [
+                alpha.clone() * &(one.clone() - s),
+                (one.clone() - &alpha) * s,
+            ],
             [beta.clone() * &(one.clone() - t), (one - &beta) * t],
         )
     }

@@ -103,6 +103,14 @@ pub enum Exactness<E, F> {
     Approximate(F, String),
 }
 
+/// A curve's standard form over Q, or in `f64`.
+pub type CurveOutcome =
+    Exactness<Standard<RationalCurve<BigRational>, BigRational>, Standard<RationalCurve<f64>, f64>>;
+
+/// A rect patch's standard form over Q, or in `f64`.
+pub type RectOutcome =
+    Exactness<Standard<RectPatch<BigRational>, BigRational>, Standard<RectPatch<f64>, f64>>;
+
 /// `1 / (1 + (num/den)^{1/n})`, the Möbius α that maps end weights
 /// `num, den` to equal ones (`1/2` when `n = 0`).
 fn alpha_for<T: NthRoot>(num: &T, den: &T, n: usize, what: &str) -> Result<T, Error> {
@@ -111,7 +119,10 @@ fn alpha_for<T: NthRoot>(num: &T, den: &T, n: usize, what: &str) -> Result<T, Er
     }
     let q = num.clone() / den;
     let r = q.nth_root_of(n as u32).ok_or_else(|| {
-        Error::NotRational(format!("{what}: the {n}-th root of {} is irrational", q.to_f64()))
+        Error::NotRational(format!(
+            "{what}: the {n}-th root of {} is irrational",
+            q.to_f64()
+        ))
     })?;
     Ok((T::one() + &r).recip())
 }
@@ -162,7 +173,7 @@ pub fn standardize_curve<T: NthRoot>(
 /// As [`standardize_curve`], except that `NotRational` becomes `Approximate`.
 pub fn standardize_curve_exact_or_f64(
     c: &RationalCurve<BigRational>,
-) -> Result<Exactness<Standard<RationalCurve<BigRational>, BigRational>, Standard<RationalCurve<f64>, f64>>, Error> {
+) -> Result<CurveOutcome, Error> {
     match standardize_curve(c) {
         Ok(s) => Ok(Exactness::Exact(s)),
         Err(Error::NotRational(why)) => Ok(Exactness::Approximate(
@@ -322,9 +333,7 @@ pub fn standardize_rect<T: NthRoot>(
 /// # Errors
 ///
 /// As [`standardize_rect`], except that `NotRational` becomes `Approximate`.
-pub fn standardize_rect_exact_or_f64(
-    p: &RectPatch<BigRational>,
-) -> Result<Exactness<Standard<RectPatch<BigRational>, BigRational>, Standard<RectPatch<f64>, f64>>, Error> {
+pub fn standardize_rect_exact_or_f64(p: &RectPatch<BigRational>) -> Result<RectOutcome, Error> {
     let linear = theorem1_holds(p, Tolerance::EXACT);
     let exact = if linear {
         standardize_mobius(p, Tolerance::EXACT)

@@ -111,11 +111,11 @@ proptest! {
         let d = p.derivatives(2, 0, &u, &v).unwrap();
         let h: Vec<HPoint<Q>> = (0..=2).map(|a| p.derivative_hom(a, 0, &u, &v)).collect();
         let w: Vec<Q> = h.iter().map(|x| x.weight().clone()).collect();
-        for k in 0..3 {
+        for (k, got) in d[2][0].iter().enumerate() {
             let n: Vec<Q> = h.iter().map(|x| x.coords[k].clone()).collect();
             let num = n[2].clone() * &w[0] * &w[0] - q(2, 1) * &n[1] * &w[1] * &w[0]
                 - n[0].clone() * &w[2] * &w[0] + q(2, 1) * &n[0] * &w[1] * &w[1];
-            prop_assert_eq!(d[2][0][k].clone(), num / (w[0].clone() * &w[0] * &w[0]));
+            prop_assert_eq!(got.clone(), num / (w[0].clone() * &w[0] * &w[0]));
         }
     }
 
@@ -221,8 +221,8 @@ proptest! {
         let nrm = poly.normal_hom(&one(), &q(0, 1)).unwrap();
         prop_assume!(nrm.iter().any(|x| *x != q(0, 1)));
         let mut bent = qp;
-        for k in 0..3 {
-            bent[1][0][k] = bent[1][0][k].clone() + &nrm[k];
+        for (x, dx) in bent[1][0].iter_mut().zip(&nrm) {
+            *x = x.clone() + dx;
         }
         let bent = RectPatch::polynomial(bent).unwrap();
         prop_assert!(!g1_join(&poly, &bent, Tolerance::EXACT).unwrap());
@@ -235,8 +235,14 @@ fn g0_fails_for_a_different_boundary_and_dimensions_are_checked() {
     let a = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 1)], vec![p(1, 0), p(1, 1)]]).unwrap();
     let b = RectPatch::polynomial(vec![vec![p(1, 0), p(1, 2)], vec![p(2, 0), p(2, 1)]]).unwrap();
     assert!(!g0_join(&a, &b, Tolerance::EXACT));
-    assert!(matches!(g1_join(&a, &a, Tolerance::EXACT), Err(Error::Shape(_))));
-    assert!(matches!(a.normal_hom(&q(0, 1), &q(0, 1)), Err(Error::Shape(_))));
+    assert!(matches!(
+        g1_join(&a, &a, Tolerance::EXACT),
+        Err(Error::Shape(_))
+    ));
+    assert!(matches!(
+        a.normal_hom(&q(0, 1), &q(0, 1)),
+        Err(Error::Shape(_))
+    ));
 }
 
 #[test]
@@ -268,14 +274,23 @@ fn theorem1_failure_names_the_condition() {
         vec![vec![q(1, 1), q(-2, 1)], vec![q(3, 1), q(5, 1)]],
     )
     .unwrap();
-    assert!(matches!(standardize_rect(&neg, Tolerance::EXACT), Err(Error::Weight { .. })));
+    assert!(matches!(
+        standardize_rect(&neg, Tolerance::EXACT),
+        Err(Error::Weight { .. })
+    ));
 }
 
 #[test]
 fn conic_types_are_exact() {
     let p = |x: i64, y: i64| vec![q(x, 1), q(y, 1)];
     let pts = vec![p(0, 0), p(1, 1), p(2, 0)];
-    let kind = |w: [Q; 3]| conic_type(&RationalCurve::new(pts.clone(), w.to_vec()).unwrap(), Tolerance::EXACT).unwrap();
+    let kind = |w: [Q; 3]| {
+        conic_type(
+            &RationalCurve::new(pts.clone(), w.to_vec()).unwrap(),
+            Tolerance::EXACT,
+        )
+        .unwrap()
+    };
     assert_eq!(kind([q(1, 1), q(1, 1), q(1, 1)]), ConicType::Parabola);
     assert_eq!(kind([q(4, 1), q(2, 1), q(1, 1)]), ConicType::Parabola);
     assert_eq!(kind([q(4, 1), q(3, 1), q(1, 1)]), ConicType::Hyperbola);

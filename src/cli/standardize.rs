@@ -32,7 +32,9 @@ pub fn run(a: &Args) -> Result<Value, Error> {
             },
             Patch::Rect(r) => match standardize_rect_exact_or_f64(r)? {
                 Exactness::Exact(s) => describe(&Patch::Rect(s.patch), &s.map, None),
-                Exactness::Approximate(s, why) => describe(&Patch::Rect(s.patch), &s.map, Some(why)),
+                Exactness::Approximate(s, why) => {
+                    describe(&Patch::Rect(s.patch), &s.map, Some(why))
+                }
             },
             Patch::Tri(_) => Err(Error::Shape(
                 "standardize applies to a curve or a rect patch, not a tri patch".into(),

@@ -15,7 +15,11 @@ pub struct ReparamArgs {
     file: String,
     /// Linear Möbius map u = (α−1)s/(2αs−s−α): ALPHA for a curve, ALPHA,BETA
     /// for a rect patch; each strictly between 0 and 1.
-    #[arg(long, conflicts_with = "quadratic", required_unless_present = "quadratic")]
+    #[arg(
+        long,
+        conflicts_with = "quadratic",
+        required_unless_present = "quadratic"
+    )]
     mobius: Option<String>,
     /// Quadratic map of a rect patch (source 000, eqs 9-17), the paper's
     /// convention: α(t) = α1·t + α2·(1−t) in u(s,t), β(s) = β1·s + β2·(1−s)
@@ -77,14 +81,14 @@ fn reparam_with<T: JsonScalar + Ordered>(
 ) -> Result<Value, Error> {
     if quadratic {
         return match (p, params) {
-            (Patch::Rect(r), [a1, a2, b1, b2]) => patch_to_json(&Patch::Rect(
-                r.quadratic_reparam(&Quadratic {
+            (Patch::Rect(r), [a1, a2, b1, b2]) => {
+                patch_to_json(&Patch::Rect(r.quadratic_reparam(&Quadratic {
                     alpha1: a1.clone(),
                     alpha2: a2.clone(),
                     beta1: b1.clone(),
                     beta2: b2.clone(),
-                }),
-            )),
+                })))
+            }
             (Patch::Rect(_), _) => Err(Error::Shape(format!(
                 "--quadratic takes 4 values A1,A2,B1,B2, not {}",
                 params.len()
