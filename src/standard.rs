@@ -145,7 +145,8 @@ fn alpha_for<T: NthRoot>(num: &T, den: &T, n: usize, what: &str) -> Result<T, Er
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let c = RationalCurve::new(vec![p(0), p(1), p(3)], vec![ratio(4, 1), ratio(1, 1), ratio(1, 1)]).unwrap();
 /// let s = standardize_curve(&c).unwrap();
-/// assert_eq!(s.patch.weights(), vec![ratio(1, 1), ratio(3, 8), ratio(1, 1)]);
+/// // The standard middle weight is w₁/√(w₀w₂) = 1/√4.
+/// assert_eq!(s.patch.weights(), vec![ratio(1, 1), ratio(1, 2), ratio(1, 1)]);
 /// ```
 pub fn standardize_curve<T: NthRoot>(
     c: &RationalCurve<T>,
