@@ -99,6 +99,7 @@ pub fn claims() -> Vec<Claim> {
         quadratic_corner_weights(),
         eq19_equal_corners(),
         eq17_matches(),
+        compact_form(),
         bernstein_product_eq15(),
     ];
     out.extend(appendix_c());
@@ -401,6 +402,23 @@ fn eq19_equal_corners() -> Claim {
             let q = Quadratic { alpha1: a1.clone(), alpha2: a2.clone(), beta1: b.clone(), beta2: b.clone() };
             let c = corner_weights(&p.quadratic_reparam(&q));
             (c.iter().any(|x| *x != c[0])).then(|| "corners differ".into())
+        },
+    )
+}
+
+/// With β1 = β2 = β the (m+n, m+n) patch is an n-fold degree elevation in s
+/// of the (m, m+n) patch `mobius_v(β)` then `quadratic_reparam_u(α1, α2)`.
+fn compact_form() -> Claim {
+    for_all_bidegrees(
+        "ours: with β1 = β2 = β (as in (19)) the (m+n, m+n) result is the n-fold degree elevation in s of an exact (m, m+n) patch (Möbius in v, then the quadratic map in u only), so the standard form exists in bidegree (m, m+n)",
+        &format!("{SRC} eqs. (16), (19)"),
+        Verdict::Proved,
+        |m, n| {
+            let p = weight_net(m, n);
+            let (a1, a2, b) = (v("α1"), v("α2"), v("β"));
+            let q = Quadratic { alpha1: a1.clone(), alpha2: a2.clone(), beta1: b.clone(), beta2: b.clone() };
+            let compact = p.mobius_v(&b).quadratic_reparam_u(&a1, &a2);
+            (compact.elevate(n, 0) != p.quadratic_reparam(&q)).then(|| "differ".into())
         },
     )
 }

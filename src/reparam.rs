@@ -191,6 +191,57 @@ impl<T: Scalar> RectPatch<T> {
     }
 }
 
+/// # The u-only quadratic map (β constant)
+impl<T: Scalar> RectPatch<T> {
+    /// The quadratic map in u alone, `u(s, t)` with `α(t) = α1·t + α2·(1 − t)`
+    /// and `v = t`: a patch of bidegree `(m, m + n)` with
+    /// `H̃_{i,k} = Σ_j ω_{i,j}(P_{i,j}, 1) · C(m,l)C(n,j)/C(m+n,k) · c′_{l,i}`,
+    /// `l = k − j`. When `β1 = β2 = β`, [`RectPatch::quadratic_reparam`] is
+    /// this map after [`RectPatch::mobius_v`]`(β)`, degree-elevated n times
+    /// in s (proofs family `yang_yong`): the standard form of
+    /// [`crate::standardize_quadratic`] exists already in bidegree
+    /// `(m, m + n)`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use exact_bezier::{RectPatch, Quadratic, ratio};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+    /// let s = RectPatch::new(vec![vec![p(0, 0), p(0, 2)], vec![p(2, 0), p(4, 4)]],
+    ///                        vec![vec![ratio(1, 1), ratio(2, 1)], vec![ratio(3, 1), ratio(1, 2)]]).unwrap();
+    /// let (a1, a2, b): (BigRational, BigRational, BigRational) = (ratio(1, 3), ratio(1, 2), ratio(2, 5));
+    /// let q = Quadratic { alpha1: a1.clone(), alpha2: a2.clone(), beta1: b.clone(), beta2: b.clone() };
+    /// let compact = s.mobius_v(&b).quadratic_reparam_u(&a1, &a2);
+    /// assert_eq!(compact.degree(), (1, 2));
+    /// assert_eq!(compact.elevate(1, 0), s.quadratic_reparam(&q));
+    /// ```
+    pub fn quadratic_reparam_u(&self, alpha1: &T, alpha2: &T) -> RectPatch<T> {
+        let (m, n) = self.degree();
+        let c = quadratic_coefficients(m, alpha2, alpha1);
+        let ctrl = self
+            .ctrl()
+            .iter()
+            .enumerate()
+            .map(|(i, row)| {
+                (0..=m + n)
+                    .map(|k| {
+                        let mut acc = HPoint::zero(self.dim());
+                        for (j, h) in row.iter().enumerate() {
+                            if let Some(l) = k.checked_sub(j).filter(|l| *l <= m) {
+                                let b = binomial_scalar::<T>(m, l) * binomial_scalar::<T>(n, j);
+                                acc = acc.add(&h.scale(&scale_down(b * &c[i][l], m + n, k)));
+                            }
+                        }
+                        acc
+                    })
+                    .collect()
+            })
+            .collect();
+        RectPatch::from_hom(ctrl).expect("an (m, m+n) grid of points of one dimension")
+    }
+}
+
 impl<T: Scalar> Quadratic<T> {
     /// The homogeneous parameters of the map at `(s, t)`:
     /// `([α(1 − s), (1 − α)s], [β(1 − t), (1 − β)t])`, i.e.
