@@ -296,3 +296,57 @@ fn conic_types_are_exact() {
     assert_eq!(kind([q(4, 1), q(3, 1), q(1, 1)]), ConicType::Hyperbola);
     assert_eq!(kind([q(4, 1), q(1, 1), q(1, 1)]), ConicType::Ellipse);
 }
+
+/// Run the binary; (exit code, parsed standard output).
+fn cli(args: &[&str]) -> (i32, serde_json::Value) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_exact-bezier"))
+        .args(args)
+        .output()
+        .expect("the binary runs");
+    let json = serde_json::from_slice(&out.stdout).unwrap_or(serde_json::Value::Null);
+    (out.status.code().unwrap_or(-1), json)
+}
+
+#[test]
+fn cli_standardize_example3_is_exact() {
+    let (code, v) = cli(&["standardize", "tests/fixtures/yang_yong_example3.json"]);
+    assert_eq!(code, 0);
+    assert_eq!(v["exact"], true);
+    let r = &v["reparameterization"];
+    assert_eq!(
+        (r["kind"].as_str(), r["alpha"].as_str(), r["beta"].as_str()),
+        (Some("mobius"), Some("3/5"), Some("7/10"))
+    );
+    // k = 1/(1.44 · 0.6² · 0.7²) = 1/0.254016 = 15625/3969 (by hand).
+    assert_eq!(r["k"].as_str(), Some("15625/3969"));
+    // Standardized ω10 = 0.885 · 0.4/(1.44 · 0.6) = 59/144 (by hand).
+    assert_eq!(v["patch"]["weights"][1][0].as_str(), Some("59/144"));
+}
+
+#[test]
+fn cli_standardize_example2_is_quadratic_and_approximate() {
+    let (code, v) = cli(&["standardize", "tests/fixtures/yang_yong_example2.json"]);
+    assert_eq!(code, 0);
+    assert_eq!(v["exact"], false);
+    assert_eq!(v["reparameterization"]["kind"], "quadratic");
+    assert_eq!(v["patch"]["degree"], serde_json::json!([6, 6]));
+    assert!(v["why_not_exact"].as_str().unwrap().contains("irrational"));
+}
+
+#[test]
+fn cli_reparam_and_elevate_rects() {
+    let f = "tests/fixtures/yang_yong_example1.json";
+    let (code, v) = cli(&["reparam", f, "--quadratic", "1/2,1/3,1/4,1/5"]);
+    assert_eq!(code, 0);
+    assert_eq!(v["degree"], serde_json::json!([4, 4]));
+    let (code, v) = cli(&["elevate", f, "--by", "1,2"]);
+    assert_eq!(code, 0);
+    assert_eq!(v["degree"], serde_json::json!([3, 4]));
+    let (code, v) = cli(&["reparam", f, "--mobius", "1/2,1/3"]);
+    assert_eq!(code, 0);
+    // ω00 · α² β² = 8 · 1/4 · 1/9 = 2/9.
+    assert_eq!(v["weights"][0][0].as_str(), Some("2/9"));
+    assert_eq!(cli(&["reparam", f, "--quadratic", "1/2,1/3,1/4"]).0, 2);
+    assert_eq!(cli(&["reparam", f, "--quadratic", "1/2,1/3,1/4,1"]).0, 2);
+    assert_eq!(cli(&["reparam", f]).0, 2);
+}
