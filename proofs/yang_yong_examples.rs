@@ -82,7 +82,7 @@ struct Linear {
 }
 
 fn linear_parts(p: &RectPatch<BigRational>) -> Linear {
-    let (std, exact) = match standardize_rect_exact_or_f64(p).expect("positive weights") {
+    let (std, exact) = match standardize_rect_exact_or_f64(p, false).expect("positive weights") {
         Exactness::Exact(s) => (to_f64(&s), true),
         Exactness::Approximate(s, _) => (s, false),
     };
@@ -280,7 +280,7 @@ fn example2_claims() -> Vec<Claim> {
         "24 ≠ 10",
         &format!("{} ≠ {}", w00.clone() * &w33, w30.clone() * &w03),
     )];
-    let (std, exact) = match standardize_rect_exact_or_f64(&p).expect("positive weights") {
+    let (std, exact) = match standardize_rect_exact_or_f64(&p, false).expect("positive weights") {
         Exactness::Exact(s) => (to_f64(&s), true),
         Exactness::Approximate(s, _) => (s, false),
     };

@@ -72,7 +72,8 @@ pub use scalar::{
 };
 pub use standard::{
     conic_type, corner_weights, standardize_curve, standardize_curve_exact_or_f64,
-    standardize_mobius, standardize_quadratic, standardize_rect, standardize_rect_exact_or_f64,
-    theorem1_holds, ConicType, Exactness, NthRoot, Standard, StandardMap,
+    standardize_mobius, standardize_quadratic, standardize_quadratic_compact, standardize_rect,
+    standardize_rect_exact_or_f64, theorem1_holds, ConicType, Exactness, NthRoot, Standard,
+    StandardMap,
 };
 pub use tri::TriPatch;

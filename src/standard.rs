@@ -288,6 +288,43 @@ fn mobius_unchecked<T: NthRoot>(p: &RectPatch<T>) -> Result<Standard<RectPatch<T
 pub fn standardize_quadratic<T: NthRoot>(
     p: &RectPatch<T>,
 ) -> Result<Standard<RectPatch<T>, T>, Error> {
+    let map = quadratic_params(p)?;
+    Ok(scaled(p.quadratic_reparam(&map), map))
+}
+
+/// [`standardize_quadratic`] in the compact bidegree `(m, m + n)`: since
+/// β1 = β2, the map is a Möbius map in v followed by the quadratic map in u
+/// alone ([`RectPatch::quadratic_reparam_u`]); the paper's `(m + n, m + n)`
+/// patch is this one degree-elevated n times in s (proved in `yang_yong`).
+///
+/// # Errors
+///
+/// As [`standardize_quadratic`].
+///
+/// # Examples
+///
+/// ```
+/// use exact_bezier::{RectPatch, standardize_quadratic, standardize_quadratic_compact, ratio};
+/// use num_rational::BigRational;
+/// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+/// let w = vec![vec![ratio(1, 1), ratio(1, 1)], vec![ratio(4, 1), ratio(9, 1)]];
+/// let patch = RectPatch::new(vec![vec![p(0), p(1)], vec![p(2), p(3)]], w).unwrap();
+/// let compact = standardize_quadratic_compact(&patch).unwrap();
+/// assert_eq!(compact.patch.degree(), (1, 2));
+/// assert_eq!(compact.patch.elevate(1, 0), standardize_quadratic(&patch).unwrap().patch);
+/// ```
+pub fn standardize_quadratic_compact<T: NthRoot>(
+    p: &RectPatch<T>,
+) -> Result<Standard<RectPatch<T>, T>, Error> {
+    let map = quadratic_params(p)?;
+    let moved = p
+        .mobius_v(&map.beta1)
+        .quadratic_reparam_u(&map.alpha1, &map.alpha2);
+    Ok(scaled(moved, map))
+}
+
+/// The generalized (19): α1, α2 and β1 = β2 (module docs).
+fn quadratic_params<T: NthRoot>(p: &RectPatch<T>) -> Result<Quadratic<T>, Error> {
     p.check_positive_weights()?;
     let (m, n) = p.degree();
     let [w00, wm0, w0n, wmn] = corner_weights(p);
@@ -296,18 +333,21 @@ pub fn standardize_quadratic<T: NthRoot>(
     let a2m = alpha2.pow_u32(m as u32) * &w00;
     let a1m = alpha1.pow_u32(m as u32) * &w0n;
     let beta = alpha_for(&a2m, &a1m, n, "eq. (19) β1 = β2")?;
-    let map = Quadratic {
+    Ok(Quadratic {
         alpha1,
         alpha2,
         beta1: beta.clone(),
         beta2: beta,
-    };
-    let moved = p.quadratic_reparam(&map);
+    })
+}
+
+/// Scale the weights so that `ω_{0,0}` becomes 1.
+fn scaled<T: NthRoot>(moved: RectPatch<T>, map: Quadratic<T>) -> Standard<RectPatch<T>, T> {
     let k = moved.ctrl()[0][0].weight().recip();
-    Ok(Standard {
+    Standard {
         patch: moved.scale_weights(&k),
         map: StandardMap::Quadratic { map, k },
-    })
+    }
 }
 
 /// The standard form of a rect patch: linear (8) when Theorem 1 holds
@@ -329,17 +369,28 @@ pub fn standardize_rect<T: NthRoot>(
 
 /// [`standardize_rect`] exactly, or in `f64` when a root is irrational. The
 /// choice between the linear and the quadratic method is made exactly on the
-/// exact input.
+/// exact input. `compact` selects [`standardize_quadratic_compact`]
+/// (bidegree (m, m + n)) over the paper's (m + n, m + n) form.
 ///
 /// # Errors
 ///
 /// As [`standardize_rect`], except that `NotRational` becomes `Approximate`.
-pub fn standardize_rect_exact_or_f64(p: &RectPatch<BigRational>) -> Result<RectOutcome, Error> {
+pub fn standardize_rect_exact_or_f64(
+    p: &RectPatch<BigRational>,
+    compact: bool,
+) -> Result<RectOutcome, Error> {
     let linear = theorem1_holds(p, Tolerance::EXACT);
+    let quadratic = |p: &RectPatch<BigRational>| {
+        if compact {
+            standardize_quadratic_compact(p)
+        } else {
+            standardize_quadratic(p)
+        }
+    };
     let exact = if linear {
         standardize_mobius(p, Tolerance::EXACT)
     } else {
-        standardize_quadratic(p)
+        quadratic(p)
     };
     match exact {
         Ok(s) => Ok(Exactness::Exact(s)),
@@ -347,6 +398,8 @@ pub fn standardize_rect_exact_or_f64(p: &RectPatch<BigRational>) -> Result<RectO
             let f = p.map(Ordered::to_f64);
             let approx = if linear {
                 mobius_unchecked(&f)?
+            } else if compact {
+                standardize_quadratic_compact(&f)?
             } else {
                 standardize_quadratic(&f)?
             };

@@ -162,7 +162,7 @@ proptest! {
         }
         let patch = RectPatch::new(pts, w).unwrap();
         prop_assume!(!theorem1_holds(&patch, Tolerance::EXACT));
-        let Exactness::Exact(st) = standardize_rect_exact_or_f64(&patch).unwrap() else {
+        let Exactness::Exact(st) = standardize_rect_exact_or_f64(&patch, false).unwrap() else {
             panic!("all roots are rational by construction")
         };
         prop_assert_eq!(corner_weights(&st.patch), [one(), one(), one(), one()]);
@@ -175,7 +175,7 @@ proptest! {
     /// Any positive weights: exact or f64, the corners come out 1.
     #[test]
     fn standardization_gives_unit_corners(p in any_rect()) {
-        match standardize_rect_exact_or_f64(&p).unwrap() {
+        match standardize_rect_exact_or_f64(&p, false).unwrap() {
             Exactness::Exact(st) => prop_assert_eq!(corner_weights(&st.patch), [one(), one(), one(), one()]),
             Exactness::Approximate(st, _) => {
                 for w in corner_weights(&st.patch) {
@@ -331,6 +331,13 @@ fn cli_standardize_example2_is_quadratic_and_approximate() {
     assert_eq!(v["reparameterization"]["kind"], "quadratic");
     assert_eq!(v["patch"]["degree"], serde_json::json!([6, 6]));
     assert!(v["why_not_exact"].as_str().unwrap().contains("irrational"));
+    let (code, v) = cli(&[
+        "standardize",
+        "--compact",
+        "tests/fixtures/yang_yong_example2.json",
+    ]);
+    assert_eq!(code, 0);
+    assert_eq!(v["patch"]["degree"], serde_json::json!([3, 6]));
 }
 
 #[test]

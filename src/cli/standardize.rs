@@ -16,6 +16,11 @@ use serde_json::{json, Value};
 pub struct Args {
     /// Input file (JSON), or - for standard input.
     file: String,
+    /// For a rect patch that needs the quadratic map: write the standard
+    /// form in bidegree (m, m+n) instead of the paper's (m+n, m+n) (the same
+    /// surface: the latter is the former degree-elevated n times in u).
+    #[arg(long)]
+    compact: bool,
 }
 
 /// The subcommand: `{"exact": bool, "reparameterization": {...}, "patch": {...}}` per input
@@ -30,7 +35,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
                     describe(&Patch::Curve(s.patch), &s.map, Some(why))
                 }
             },
-            Patch::Rect(r) => match standardize_rect_exact_or_f64(r)? {
+            Patch::Rect(r) => match standardize_rect_exact_or_f64(r, a.compact)? {
                 Exactness::Exact(s) => describe(&Patch::Rect(s.patch), &s.map, None),
                 Exactness::Approximate(s, why) => {
                     describe(&Patch::Rect(s.patch), &s.map, Some(why))
