@@ -201,7 +201,9 @@ fn example1_claims() -> Vec<Claim> {
     ));
     out.push(number(ex, "α = 1/(1 + √(8/3))", "0.3798", alpha, Y));
     out.push(number(ex, "β = 1/(1 + √(8/2))", "0.3333", beta, Y));
-    out.push(number(ex, "k = 1/(ω00 α² β²)", "7.8378", k, M));
+    let mut k_claim = number(ex, "k = 1/(ω00 α² β²)", "7.8378", k, M);
+    k_claim.detail += "; k·ω̃00 must be 1, but 7.8378 × 0.1282 = 1.0048. The printed standardized weights are the printed Möbius weights times 7.8378 (0.0523 × 7.8378 = 0.4099, 0.1603 × 7.8378 = 1.2564), so they inherit the error";
+    out.push(k_claim);
     out.extend(grid_claims(
         ex,
         "after (2)(3), before scaling,",
@@ -416,7 +418,9 @@ fn example3_claims() -> Vec<Claim> {
     ));
     out.push(number(ex, "α", "0.6", alpha, Y));
     out.push(number(ex, "β", "0.7", beta, Y));
-    out.push(number(ex, "k", "3.9367", k, M));
+    let mut k_claim = number(ex, "k", "3.9367", k, M);
+    k_claim.detail += "; exactly 15625/3969 = 3.93676…: printed truncated, not rounded";
+    out.push(k_claim);
     out.extend(grid_claims(
         ex,
         "after (2)(3), before scaling,",

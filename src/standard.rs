@@ -35,6 +35,11 @@
 //! which is (19) for m = n = 3. (Fixing α1 = α2 instead is the mirror image.)
 //! When Theorem 1 holds, α1 = α2 and the map is linear: we then use (8),
 //! which keeps the bidegree (m, n).
+//!
+//! With β1 = β2 the result of the quadratic map, of bidegree (m + n, m + n)
+//! as the paper states, is the n-fold degree elevation in s of a patch of
+//! bidegree (m, m + n) (ours, proved in `yang_yong`):
+//! [`standardize_quadratic_compact`] returns that smaller form.
 
 use crate::curve::RationalCurve;
 use crate::error::Error;
