@@ -29,6 +29,9 @@ pub mod quiz;
 pub mod reduction;
 pub mod trig_basis;
 pub mod trig_stitching;
+pub mod surfaces;
+pub mod yang_yong;
+pub mod yang_yong_examples;
 
 /// The outcome of checking one claim.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -187,6 +190,9 @@ pub const FAMILIES: &[Family] = &[
     Family { name: "trig_stitching", run: trig_stitching::claims },
     Family { name: "hang_li", run: hang_li::claims },
     Family { name: "hang_li_tables", run: hang_li_tables::claims },
+    Family { name: "surfaces", run: surfaces::claims },
+    Family { name: "yang_yong", run: yang_yong::claims },
+    Family { name: "yang_yong_examples", run: yang_yong_examples::claims },
 ];
 
 /// Run every family (in parallel threads) and return the claims in order.

@@ -49,7 +49,11 @@ mod mesh;
 pub mod plot;
 mod poly;
 mod rect;
+mod rect_join;
+mod rect_ops;
+mod reparam;
 mod scalar;
+mod standard;
 #[cfg(feature = "proptest")]
 pub mod strategy;
 mod tri;
@@ -78,10 +82,19 @@ pub use io::{
 };
 pub use mesh::{curve_jet, normal_direction, rect_jet, tri_jet, Jet, Mesh, MAX_DENSITY};
 pub use poly::Poly;
-pub use rect::RectPatch;
+pub use rect::{RectPatch, Side};
+pub use rect_join::{g0_join, g1_join};
+pub use rect_ops::Corner;
+pub use reparam::{bernstein_product, quadratic_coefficients, Quadratic};
 pub use scalar::{
     binomial, binomial_scalar, ratio, rational_root, rational_to_f64, Field, Ordered, Scalar,
     Tolerance,
+};
+pub use standard::{
+    conic_type, corner_weights, standardize_curve, standardize_curve_exact_or_f64,
+    standardize_mobius, standardize_quadratic, standardize_quadratic_compact, standardize_rect,
+    standardize_rect_exact_or_f64, theorem1_holds, ConicType, Exactness, NthRoot, Standard,
+    StandardMap,
 };
 pub use tri::TriPatch;
 pub use trig::basis::{circle_normal_form, trig_basis_values, TrigFn, TrigParam};

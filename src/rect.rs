@@ -11,7 +11,7 @@
 //!
 //! Reference: source 001 (lecture), "矩形域曲面"; source 000 eq. (1).
 
-use crate::curve::{elevate_once, mobius_factors};
+use crate::curve::{elevate_once, mobius_factors, RationalCurve};
 use crate::error::Error;
 use crate::hpoint::{de_casteljau, HPoint};
 use crate::scalar::{Field, Ordered, Scalar, Tolerance};
@@ -239,6 +239,163 @@ impl<T: Scalar> RectPatch<T> {
         let cols: Vec<Vec<HPoint<T>>> = swapped.ctrl.iter().map(|c| elevate_row(c, r)).collect();
         RectPatch { ctrl: cols }.swap_uv()
     }
+}
+
+/// # The lecture's two de Casteljau orders, and homogeneous parameters
+impl<T: Scalar> RectPatch<T> {
+    /// The homogeneous point at `(u, v)` by the lecture's **first** order:
+    /// `P^{k,0}_{i,j} = (1 − u) P^{k−1,0}_{i,j} + u P^{k−1,0}_{i+1,j}` for
+    /// `k = 1…m` (every column reduced in u), then
+    /// `P^{m,l}_{0,j} = (1 − v) P^{m,l−1}_{0,j} + v P^{m,l−1}_{0,j+1}` for
+    /// `l = 1…n`. [`RectPatch::eval_hom`] is the second order (v first); the
+    /// two agree for every (u, v) (proofs family `surfaces`).
+    ///
+    /// Reference: source 001 (lecture), "de Casteljau算法" for surfaces.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use exact_bezier::{RectPatch, ratio};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+    /// let s = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 2)], vec![p(2, 0), p(4, 4)]]).unwrap();
+    /// let (u, v) = (ratio(1, 3), ratio(3, 4));
+    /// assert_eq!(s.eval_hom_u_first(&u, &v), s.eval_hom(&u, &v));
+    /// ```
+    pub fn eval_hom_u_first(&self, u: &T, v: &T) -> HPoint<T> {
+        let (_, n) = self.degree();
+        let row: Vec<HPoint<T>> = (0..=n)
+            .map(|j| {
+                let col: Vec<HPoint<T>> = self.ctrl.iter().map(|r| r[j].clone()).collect();
+                de_casteljau(&col, u)
+            })
+            .collect();
+        de_casteljau(&row, v)
+    }
+
+    /// Evaluation at homogeneous parameters: `Σ_i Σ_j C(m,i) C(n,j)
+    /// u₁^i u₀^{m−i} v₁^j v₀^{n−j} ω_{i,j}(P_{i,j}, 1)`, which is
+    /// `(u₀ + u₁)^m (v₀ + v₁)^n` times the homogeneous point at
+    /// `(u₁/(u₀+u₁), v₁/(v₀+v₁))`. With `(u₀, u₁) = (1 − u, u)` it is
+    /// [`RectPatch::eval_hom`]. Ring operations only, so a rational parameter
+    /// map such as a Möbius map can be substituted without division.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use exact_bezier::{RectPatch, ratio};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+    /// let s = RectPatch::polynomial(vec![vec![p(0), p(1)], vec![p(2), p(5)]]).unwrap();
+    /// // (u₀, u₁) = (2, 2) is u = 1/2 scaled by 4; (v₀, v₁) = (1, 0) is v = 0.
+    /// let h = s.eval_hom_projective(&[ratio(2, 1), ratio(2, 1)], &[ratio(1, 1), ratio(0, 1)]);
+    /// assert_eq!(h, s.eval_hom(&ratio(1, 2), &ratio(0, 1)).scale(&ratio(4, 1)));
+    /// ```
+    pub fn eval_hom_projective(&self, u: &[T; 2], v: &[T; 2]) -> HPoint<T> {
+        let col: Vec<HPoint<T>> = self
+            .ctrl
+            .iter()
+            .map(|row| de_casteljau_projective(row, v))
+            .collect();
+        de_casteljau_projective(&col, u)
+    }
+}
+
+/// de Casteljau with homogeneous parameter `(a, b)`: `b_i ← a·b_i + b·b_{i+1}`.
+fn de_casteljau_projective<T: Scalar>(points: &[HPoint<T>], ab: &[T; 2]) -> HPoint<T> {
+    let mut row = points.to_vec();
+    for k in (1..row.len()).rev() {
+        for i in 0..k {
+            row[i] = row[i].combine(&ab[0], &row[i + 1], &ab[1]);
+        }
+    }
+    row.swap_remove(0)
+}
+
+/// # Rows, columns, iso-parameter and boundary curves
+impl<T: Scalar> RectPatch<T> {
+    /// Column `j` (fixed v index): the homogeneous points `ctrl[0..=m][j]`.
+    pub fn column(&self, j: usize) -> Vec<HPoint<T>> {
+        self.ctrl.iter().map(|r| r[j].clone()).collect()
+    }
+
+    /// Apply a curve operation to every column (the u direction): column `j`
+    /// becomes `f(column j)`; all results must have the same length.
+    pub(crate) fn map_columns(&self, f: impl Fn(&[HPoint<T>]) -> Vec<HPoint<T>>) -> Self {
+        let cols: Vec<Vec<HPoint<T>>> = (0..=self.degree().1).map(|j| f(&self.column(j))).collect();
+        RectPatch { ctrl: cols }.swap_uv()
+    }
+
+    /// Apply a curve operation to every row (the v direction).
+    pub(crate) fn map_rows(&self, f: impl Fn(&[HPoint<T>]) -> Vec<HPoint<T>>) -> Self {
+        RectPatch {
+            ctrl: self.ctrl.iter().map(|r| f(r)).collect(),
+        }
+    }
+
+    /// The iso-parameter curve `v ↦ X(u₀, v)`, a rational curve of degree n:
+    /// control points `Σ_i B_{i,m}(u₀) ω_{i,j}(P_{i,j}, 1)` (de Casteljau in u
+    /// on every column). Exact for exact `T`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use exact_bezier::{RectPatch, ratio};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+    /// let s = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 2)], vec![p(2, 0), p(4, 4)]]).unwrap();
+    /// let c = s.iso_u(&ratio(1, 2));
+    /// assert_eq!(c.eval(&ratio(1, 3)).unwrap(), s.eval(&ratio(1, 2), &ratio(1, 3)).unwrap());
+    /// ```
+    pub fn iso_u(&self, u0: &T) -> RationalCurve<T> {
+        let ctrl = (0..=self.degree().1)
+            .map(|j| de_casteljau(&self.column(j), u0))
+            .collect();
+        RationalCurve::from_hom(ctrl).expect("a patch has at least one column")
+    }
+
+    /// The iso-parameter curve `u ↦ X(u, v₀)`, a rational curve of degree m.
+    /// Exact for exact `T`.
+    pub fn iso_v(&self, v0: &T) -> RationalCurve<T> {
+        let ctrl = self.ctrl.iter().map(|r| de_casteljau(r, v0)).collect();
+        RationalCurve::from_hom(ctrl).expect("a patch has at least one row")
+    }
+
+    /// A boundary curve, read off the control net (no arithmetic):
+    /// `X(u, 0)` is row `j = 0` of the net, `X(1, v)` is `P_{m,0…n}`, etc.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use exact_bezier::{RectPatch, Side, ratio};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+    /// let s = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 2)], vec![p(2, 0), p(4, 4)]]).unwrap();
+    /// assert_eq!(s.boundary(Side::U1).points().unwrap(), vec![p(2, 0), p(4, 4)]);
+    /// ```
+    pub fn boundary(&self, side: Side) -> RationalCurve<T> {
+        let (m, n) = self.degree();
+        let ctrl = match side {
+            Side::U0 => self.ctrl[0].clone(),
+            Side::U1 => self.ctrl[m].clone(),
+            Side::V0 => self.column(0),
+            Side::V1 => self.column(n),
+        };
+        RationalCurve::from_hom(ctrl).expect("a patch has at least one control point")
+    }
+}
+
+/// A side of the parameter square `[0, 1]²`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Side {
+    /// `u = 0`: the curve `v ↦ X(0, v)`.
+    U0,
+    /// `u = 1`: the curve `v ↦ X(1, v)`.
+    U1,
+    /// `v = 0`: the curve `u ↦ X(u, 0)`.
+    V0,
+    /// `v = 1`: the curve `u ↦ X(u, 1)`.
+    V1,
 }
 
 fn elevate_row<T: Scalar>(row: &[HPoint<T>], times: usize) -> Vec<HPoint<T>> {

@@ -51,3 +51,4 @@ families!(
     trig_stitching,
 );
 families!(quiz, hang_li, hang_li_tables);
+families!(quiz, surfaces, yang_yong, yang_yong_examples);

@@ -25,6 +25,7 @@ mod eval;
 mod is_circle;
 mod prove;
 mod reduce;
+mod standardize;
 mod transform;
 
 /// Rational Bézier curves and patches, exactly.
@@ -49,8 +50,10 @@ pub enum ScalarKind {
 enum Command {
     /// Evaluate a curve or patch: {"point": [...]}.
     Eval(eval::Args),
-    /// Reparameterize: linear Möbius map (--mobius ALPHA[,BETA]).
+    /// Reparameterize: linear Möbius map (--mobius ALPHA[,BETA]) or quadratic map of a rect (--quadratic A1,A2,B1,B2).
     Reparam(transform::ReparamArgs),
+    /// Standard form: end weights 1 (curve) or corner weights 1 (rect).
+    Standardize(standardize::Args),
     /// Raise the degree (--by R[,S]).
     Elevate(transform::ElevateArgs),
     /// Run every proof in proofs/ and print one line per claim.
@@ -88,6 +91,7 @@ pub fn main() -> i32 {
         Command::Eval(a) => eval::run(&a),
         Command::Reparam(a) => transform::reparam(&a),
         Command::Elevate(a) => transform::elevate(&a),
+        Command::Standardize(a) => standardize::run(&a),
         Command::Prove(a) => return prove::run(&a),
         Command::Plot(a) => plot::run(&a),
         Command::Mesh(a) => mesh::run(&a),

@@ -3,6 +3,7 @@
 use super::{load, one_or_many, parse_list, ScalarKind};
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
+use crate::reparam::Quadratic;
 use crate::scalar::Ordered;
 use num_rational::BigRational;
 use serde_json::Value;
@@ -14,8 +15,18 @@ pub struct ReparamArgs {
     file: String,
     /// Linear Möbius map u = (α−1)s/(2αs−s−α): ALPHA for a curve, ALPHA,BETA
     /// for a rect patch; each strictly between 0 and 1.
+    #[arg(
+        long,
+        conflicts_with = "quadratic",
+        required_unless_present = "quadratic"
+    )]
+    mobius: Option<String>,
+    /// Quadratic map of a rect patch (source 000, eqs 9-17), the paper's
+    /// convention: α(t) = α1·t + α2·(1−t) in u(s,t), β(s) = β1·s + β2·(1−s)
+    /// in v(s,t); A1,A2,B1,B2 each strictly between 0 and 1. The result has
+    /// bidegree (m+n, m+n).
     #[arg(long)]
-    mobius: String,
+    quadratic: Option<String>,
     /// Scalar to compute with.
     #[arg(long, value_enum, default_value_t)]
     scalar: ScalarKind,
@@ -32,28 +43,62 @@ pub struct ElevateArgs {
 }
 
 pub fn reparam(a: &ReparamArgs) -> Result<Value, Error> {
-    let params = parse_list(&a.mobius)?;
+    let (text, quadratic) = match (&a.mobius, &a.quadratic) {
+        (Some(m), None) => (m, false),
+        (None, Some(q)) => (q, true),
+        _ => {
+            return Err(Error::Domain(
+                "give exactly one of --mobius and --quadratic".into(),
+            ))
+        }
+    };
+    let params = parse_list(text)?;
     for p in &params {
         if !(p > &BigRational::from_integer(0.into()) && p < &BigRational::from_integer(1.into())) {
             return Err(Error::Domain(format!(
-                "Möbius parameter {p} must lie strictly between 0 and 1 (weights stay positive and [0,1] maps onto itself)"
+                "reparameterization parameter {p} must lie strictly between 0 and 1 (weights stay positive and [0,1] maps onto itself)"
             )));
         }
     }
     let out = load(&a.file)?
         .iter()
         .map(|p| match a.scalar {
-            ScalarKind::Exact => mobius_with(p, &params),
-            ScalarKind::F64 => mobius_with(
+            ScalarKind::Exact => reparam_with(p, &params, quadratic),
+            ScalarKind::F64 => reparam_with(
                 &p.to_f64(),
                 &params.iter().map(Ordered::to_f64).collect::<Vec<_>>(),
+                quadratic,
             ),
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(one_or_many(out))
 }
 
-fn mobius_with<T: JsonScalar + Ordered>(p: &Patch<T>, params: &[T]) -> Result<Value, Error> {
+fn reparam_with<T: JsonScalar + Ordered>(
+    p: &Patch<T>,
+    params: &[T],
+    quadratic: bool,
+) -> Result<Value, Error> {
+    if quadratic {
+        return match (p, params) {
+            (Patch::Rect(r), [a1, a2, b1, b2]) => {
+                patch_to_json(&Patch::Rect(r.quadratic_reparam(&Quadratic {
+                    alpha1: a1.clone(),
+                    alpha2: a2.clone(),
+                    beta1: b1.clone(),
+                    beta2: b2.clone(),
+                })))
+            }
+            (Patch::Rect(_), _) => Err(Error::Shape(format!(
+                "--quadratic takes 4 values A1,A2,B1,B2, not {}",
+                params.len()
+            ))),
+            _ => Err(Error::Shape(format!(
+                "--quadratic applies to a rect patch, not a {}",
+                p.kind()
+            ))),
+        };
+    }
     let moved = match (p, params) {
         (Patch::Curve(c), [alpha]) => Patch::Curve(c.mobius(alpha)),
         (Patch::Rect(r), [alpha, beta]) => Patch::Rect(r.mobius_u(alpha).mobius_v(beta)),
@@ -95,6 +140,7 @@ pub fn elevate(a: &ElevateArgs) -> Result<Value, Error> {
         .map(|p| {
             let raised = match (p, by.as_slice()) {
                 (Patch::Curve(c), [r]) => Patch::Curve(c.elevate(*r)),
+                (Patch::Rect(q), [r, s]) => Patch::Rect(q.elevate(*r, *s)),
                 _ => {
                     return Err(Error::Shape(format!(
                         "--by {} does not apply to a {}",

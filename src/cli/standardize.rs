@@ -1,0 +1,74 @@
+//! `standardize FILE`: the standard form of a curve (end weights 1) or a
+//! rect patch (corner weights 1), source 000. The JSON says whether the
+//! result is exact and names the reparameterization with its parameters.
+
+use super::{load, one_or_many};
+use crate::error::Error;
+use crate::io::{patch_to_json, JsonScalar, Patch};
+use crate::scalar::Ordered;
+use crate::standard::{
+    standardize_curve_exact_or_f64, standardize_rect_exact_or_f64, Exactness, StandardMap,
+};
+use serde_json::{json, Value};
+
+/// Arguments of `standardize`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Input file (JSON), or - for standard input.
+    file: String,
+    /// For a rect patch that needs the quadratic map: write the standard
+    /// form in bidegree (m, m+n) instead of the paper's (m+n, m+n) (the same
+    /// surface: the latter is the former degree-elevated n times in u).
+    #[arg(long)]
+    compact: bool,
+}
+
+/// The subcommand: `{"exact": bool, "reparameterization": {...}, "patch": {...}}` per input
+/// (plus `"why_not_exact"` when a root is irrational).
+pub fn run(a: &Args) -> Result<Value, Error> {
+    let out = load(&a.file)?
+        .iter()
+        .map(|p| match p {
+            Patch::Curve(c) => match standardize_curve_exact_or_f64(c)? {
+                Exactness::Exact(s) => describe(&Patch::Curve(s.patch), &s.map, None),
+                Exactness::Approximate(s, why) => {
+                    describe(&Patch::Curve(s.patch), &s.map, Some(why))
+                }
+            },
+            Patch::Rect(r) => match standardize_rect_exact_or_f64(r, a.compact)? {
+                Exactness::Exact(s) => describe(&Patch::Rect(s.patch), &s.map, None),
+                Exactness::Approximate(s, why) => {
+                    describe(&Patch::Rect(s.patch), &s.map, Some(why))
+                }
+            },
+            Patch::Tri(_) => Err(Error::Shape(
+                "standardize applies to a curve or a rect patch, not a tri patch".into(),
+            )),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(one_or_many(out))
+}
+
+fn describe<T: JsonScalar + Ordered>(
+    patch: &Patch<T>,
+    map: &StandardMap<T>,
+    why: Option<String>,
+) -> Result<Value, Error> {
+    let j = |x: &T| x.to_json();
+    let reparam = match map {
+        StandardMap::Mobius { alpha, beta, k } => match beta {
+            Some(b) => json!({"kind": "mobius", "alpha": j(alpha), "beta": j(b), "k": j(k)}),
+            None => json!({"kind": "mobius", "alpha": j(alpha), "k": j(k)}),
+        },
+        StandardMap::Quadratic { map, k } => json!({
+            "kind": "quadratic",
+            "alpha1": j(&map.alpha1), "alpha2": j(&map.alpha2),
+            "beta1": j(&map.beta1), "beta2": j(&map.beta2), "k": j(k)
+        }),
+    };
+    let mut v = json!({"exact": why.is_none(), "reparameterization": reparam, "patch": patch_to_json(patch)?});
+    if let Some(why) = why {
+        v["why_not_exact"] = Value::String(why);
+    }
+    Ok(v)
+}

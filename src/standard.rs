@@ -1,0 +1,469 @@
+//! Standard forms: end weights 1 for curves, corner weights 1 for rect
+//! patches (source 000, Theorem 1, eq. (8), and (18)(19) generalized to any
+//! bidegree).
+//!
+//! Every standard form here is a reparameterization that keeps the point set
+//! (a Möbius map, or the quadratic map of [`crate::Quadratic`]) followed by a
+//! uniform weight scaling (eq. 5), both proved to keep every point in the
+//! proofs family `yang_yong`.
+//!
+//! The formulas need m-th and n-th roots. They are exact when the roots are
+//! rational ([`rational_root`]); otherwise the caller falls back to `f64` and
+//! says so ([`standardize_rect_exact_or_f64`], [`standardize_curve_exact_or_f64`]).
+//!
+//! ## Generalizing (18)(19) to bidegree (m, n)
+//!
+//! The quadratic map gives the corner weights (ours, proved for all
+//! (m, n) ≤ (4, 4); the paper prints the bicubic case before (18), correctly)
+//!
+//! ```text
+//! ω̃_{0,0}     = α2^m β2^n ω_{0,0}          ω̃_{m+n,0}   = (1 − α2)^m β1^n ω_{m,0}
+//! ω̃_{0,m+n}   = α1^m (1 − β2)^n ω_{0,n}    ω̃_{m+n,m+n} = (1 − α1)^m (1 − β1)^n ω_{m,n}
+//! ```
+//!
+//! Three equations in four unknowns. We fix **β1 = β2 = β** as the paper
+//! does: then v is a plain linear Möbius map of t (the extra freedom is spent
+//! in u only), and the equations decouple into closed forms with one root
+//! each:
+//!
+//! ```text
+//! α2 = 1 / (1 + (ω_{0,0}/ω_{m,0})^{1/m})      (side v = 0)
+//! α1 = 1 / (1 + (ω_{0,n}/ω_{m,n})^{1/m})      (side v = 1)
+//! β  = 1 / (1 + (α2^m ω_{0,0} / (α1^m ω_{0,n}))^{1/n})
+//! ```
+//!
+//! which is (19) for m = n = 3. (Fixing α1 = α2 instead is the mirror image.)
+//! When Theorem 1 holds, α1 = α2 and the map is linear: we then use (8),
+//! which keeps the bidegree (m, n).
+//!
+//! With β1 = β2 the result of the quadratic map, of bidegree (m + n, m + n)
+//! as the paper states, is the n-fold degree elevation in s of a patch of
+//! bidegree (m, m + n) (ours, proved in `yang_yong`):
+//! [`standardize_quadratic_compact`] returns that smaller form.
+
+use crate::curve::RationalCurve;
+use crate::error::Error;
+use crate::rect::RectPatch;
+use crate::reparam::Quadratic;
+use crate::scalar::{ratio, rational_root, Ordered, Scalar, Tolerance};
+use num_rational::BigRational;
+
+/// Scalars with a real n-th root of non-negative values: exactly (rationals,
+/// `None` when the root is irrational) or rounded (`f64`).
+pub trait NthRoot: Ordered {
+    /// The non-negative real `r` with `rⁿ = self`, if representable.
+    fn nth_root_of(&self, n: u32) -> Option<Self>;
+}
+
+impl NthRoot for BigRational {
+    fn nth_root_of(&self, n: u32) -> Option<Self> {
+        rational_root(self, n)
+    }
+}
+
+impl NthRoot for f64 {
+    fn nth_root_of(&self, n: u32) -> Option<Self> {
+        (n > 0 && *self >= 0.0).then(|| self.powf(1.0 / f64::from(n)))
+    }
+}
+
+/// The reparameterization a standard form applied, with its parameters.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StandardMap<T> {
+    /// Linear Möbius maps (eqs 2, 3) in u with `alpha` and in v with `beta`
+    /// (for a curve `beta` is `None`), then weights times `k` (eq. 5).
+    Mobius {
+        /// α of eq. (2).
+        alpha: T,
+        /// β of eq. (3); `None` for a curve.
+        beta: Option<T>,
+        /// The weight scale k of eq. (5).
+        k: T,
+    },
+    /// The quadratic map (eqs 9, 10), then weights times `k`.
+    Quadratic {
+        /// α1, α2, β1, β2.
+        map: Quadratic<T>,
+        /// The weight scale.
+        k: T,
+    },
+}
+
+/// A standard form and the map that produced it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Standard<P, T> {
+    /// The curve or patch in standard form.
+    pub patch: P,
+    /// How it was obtained.
+    pub map: StandardMap<T>,
+}
+
+/// An exact result, or an `f64` one when an exact answer would need an
+/// irrational root.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Exactness<E, F> {
+    /// Computed over Q.
+    Exact(E),
+    /// Computed in `f64` (the reason is the `NotRational` message).
+    Approximate(F, String),
+}
+
+/// A curve's standard form over Q, or in `f64`.
+pub type CurveOutcome =
+    Exactness<Standard<RationalCurve<BigRational>, BigRational>, Standard<RationalCurve<f64>, f64>>;
+
+/// A rect patch's standard form over Q, or in `f64`.
+pub type RectOutcome =
+    Exactness<Standard<RectPatch<BigRational>, BigRational>, Standard<RectPatch<f64>, f64>>;
+
+/// `1 / (1 + (num/den)^{1/n})`, the Möbius α that maps end weights
+/// `num, den` to equal ones (`1/2` when `n = 0`).
+fn alpha_for<T: NthRoot>(num: &T, den: &T, n: usize, what: &str) -> Result<T, Error> {
+    if n == 0 {
+        return Ok(ratio(1, 2));
+    }
+    let q = num.clone() / den;
+    let r = q.nth_root_of(n as u32).ok_or_else(|| {
+        Error::NotRational(format!(
+            "{what}: the {n}-th root of {} is irrational",
+            q.to_f64()
+        ))
+    })?;
+    Ok((T::one() + &r).recip())
+}
+
+/// The standard form of a curve (end weights 1): Möbius `α = 1/(1 + (w₀/w_n)^{1/n})`
+/// then `k = 1/(w₀ αⁿ)`. Exact when `w₀/w_n` is an n-th power in Q.
+///
+/// Reference: source 000 §0 (Farin's standard form), eqs (2)(4)(5), curve case.
+///
+/// # Errors
+///
+/// [`Error::Weight`] for a non-positive weight; [`Error::NotRational`] when
+/// the root is irrational for exact `T`.
+///
+/// # Examples
+///
+/// ```
+/// use exact_bezier::{RationalCurve, standardize_curve, ratio};
+/// use num_rational::BigRational;
+/// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+/// let c = RationalCurve::new(vec![p(0), p(1), p(3)], vec![ratio(4, 1), ratio(1, 1), ratio(1, 1)]).unwrap();
+/// let s = standardize_curve(&c).unwrap();
+/// // The standard middle weight is w₁/√(w₀w₂) = 1/√4.
+/// assert_eq!(s.patch.weights(), vec![ratio(1, 1), ratio(1, 2), ratio(1, 1)]);
+/// ```
+pub fn standardize_curve<T: NthRoot>(
+    c: &RationalCurve<T>,
+) -> Result<Standard<RationalCurve<T>, T>, Error> {
+    c.check_positive_weights()?;
+    let w = c.weights();
+    let n = c.degree();
+    let alpha = alpha_for(&w[0], &w[n], n, "curve standard form α")?;
+    let moved = c.mobius(&alpha);
+    let k = moved.weights()[0].recip();
+    Ok(Standard {
+        patch: moved.scale_weights(&k),
+        map: StandardMap::Mobius {
+            alpha,
+            beta: None,
+            k,
+        },
+    })
+}
+
+/// [`standardize_curve`] exactly, or in `f64` when a root is irrational.
+///
+/// # Errors
+///
+/// As [`standardize_curve`], except that `NotRational` becomes `Approximate`.
+pub fn standardize_curve_exact_or_f64(
+    c: &RationalCurve<BigRational>,
+) -> Result<CurveOutcome, Error> {
+    match standardize_curve(c) {
+        Ok(s) => Ok(Exactness::Exact(s)),
+        Err(Error::NotRational(why)) => Ok(Exactness::Approximate(
+            standardize_curve(&c.map(Ordered::to_f64))?,
+            why,
+        )),
+        Err(e) => Err(e),
+    }
+}
+
+/// The corner weights `(ω_{0,0}, ω_{m,0}, ω_{0,n}, ω_{m,n})`.
+pub fn corner_weights<T: Scalar>(p: &RectPatch<T>) -> [T; 4] {
+    let (m, n) = p.degree();
+    let w = |i: usize, j: usize| p.ctrl()[i][j].weight().clone();
+    [w(0, 0), w(m, 0), w(0, n), w(m, n)]
+}
+
+/// Theorem 1 (source 000): a patch can be standardized by linear Möbius maps
+/// (2)(3) and a scaling (5) iff `ω_{m,0} ω_{0,n} = ω_{0,0} ω_{m,n}`
+/// (`|difference| ≤ tol` for `f64`).
+///
+/// ```
+/// use exact_bezier::{RectPatch, theorem1_holds, ratio, Tolerance};
+/// use num_rational::BigRational;
+/// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+/// let w = |a: i64, b: i64, c: i64, d: i64| vec![vec![ratio(a, 1), ratio(b, 1)], vec![ratio(c, 1), ratio(d, 1)]];
+/// let net = vec![vec![p(0), p(1)], vec![p(2), p(3)]];
+/// assert!(theorem1_holds(&RectPatch::new(net.clone(), w(2, 3, 4, 6)).unwrap(), Tolerance::EXACT));
+/// assert!(!theorem1_holds(&RectPatch::new(net, w(2, 3, 4, 5)).unwrap(), Tolerance::EXACT));
+/// ```
+pub fn theorem1_holds<T: Scalar>(p: &RectPatch<T>, tol: Tolerance) -> bool {
+    let [w00, wm0, w0n, wmn] = corner_weights(p);
+    (wm0 * &w0n - &(w00 * &wmn)).is_zero_within(tol)
+}
+
+/// The linear standardization (8): `α = 1/(1 + (ω_{0,0}/ω_{m,0})^{1/m})`,
+/// `β = 1/(1 + (ω_{0,0}/ω_{0,n})^{1/n})`, `k = 1/(ω_{0,0} α^m β^n)`; the
+/// result has bidegree (m, n) and corner weights 1.
+///
+/// # Errors
+///
+/// [`Error::Weight`] for a non-positive weight; [`Error::Domain`] naming the
+/// violated condition when Theorem 1 fails (`|…| > tol` for `f64`);
+/// [`Error::NotRational`] when a root is irrational for exact `T`.
+///
+/// # Examples
+///
+/// Source 000, Example 3 (exact: α = 3/5, β = 7/10):
+///
+/// ```
+/// use exact_bezier::{read_patches, Patch, standardize_mobius, StandardMap, ratio, Tolerance};
+/// let text = std::fs::read_to_string("tests/fixtures/yang_yong_example3.json").unwrap();
+/// let Patch::Rect(r) = &read_patches(&text).unwrap()[0] else { panic!() };
+/// let s = standardize_mobius(r, Tolerance::EXACT).unwrap();
+/// let StandardMap::Mobius { alpha, beta, .. } = &s.map else { panic!() };
+/// assert_eq!((alpha.clone(), beta.clone()), (ratio(3, 5), Some(ratio(7, 10))));
+/// ```
+pub fn standardize_mobius<T: NthRoot>(
+    p: &RectPatch<T>,
+    tol: Tolerance,
+) -> Result<Standard<RectPatch<T>, T>, Error> {
+    p.check_positive_weights()?;
+    if !theorem1_holds(p, tol) {
+        let [w00, wm0, w0n, wmn] = corner_weights(p);
+        let (m, n) = p.degree();
+        return Err(Error::Domain(format!(
+            "Theorem 1 fails: ω_{{{m},0}}·ω_{{0,{n}}} = {} ≠ ω_{{0,0}}·ω_{{{m},{n}}} = {}, so no linear Möbius map standardizes this patch (use the quadratic reparameterization)",
+            (wm0 * &w0n).to_f64(),
+            (w00 * &wmn).to_f64()
+        )));
+    }
+    mobius_unchecked(p)
+}
+
+fn mobius_unchecked<T: NthRoot>(p: &RectPatch<T>) -> Result<Standard<RectPatch<T>, T>, Error> {
+    let (m, n) = p.degree();
+    let [w00, wm0, w0n, _] = corner_weights(p);
+    let alpha = alpha_for(&w00, &wm0, m, "eq. (8) α")?;
+    let beta = alpha_for(&w00, &w0n, n, "eq. (8) β")?;
+    let moved = p.mobius_u(&alpha).mobius_v(&beta);
+    let k = moved.ctrl()[0][0].weight().recip();
+    Ok(Standard {
+        patch: moved.scale_weights(&k),
+        map: StandardMap::Mobius {
+            alpha,
+            beta: Some(beta),
+            k,
+        },
+    })
+}
+
+/// Standardization of any (m, n) patch by the quadratic map with β1 = β2
+/// (the generalized (19), see the module docs), then `k = 1/(α2^m β^n ω_{0,0})`.
+/// The result has bidegree (m + n, m + n) and corner weights 1.
+///
+/// # Errors
+///
+/// [`Error::Weight`] for a non-positive weight; [`Error::NotRational`] when
+/// a root is irrational for exact `T`.
+///
+/// # Examples
+///
+/// ```
+/// use exact_bezier::{RectPatch, standardize_quadratic, corner_weights, ratio};
+/// use num_rational::BigRational;
+/// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+/// let w = vec![vec![ratio(1, 1), ratio(1, 1)], vec![ratio(4, 1), ratio(9, 1)]];
+/// let s = standardize_quadratic(&RectPatch::new(vec![vec![p(0), p(1)], vec![p(2), p(3)]], w).unwrap()).unwrap();
+/// assert_eq!(corner_weights(&s.patch), [ratio(1, 1), ratio(1, 1), ratio(1, 1), ratio(1, 1)]);
+/// ```
+pub fn standardize_quadratic<T: NthRoot>(
+    p: &RectPatch<T>,
+) -> Result<Standard<RectPatch<T>, T>, Error> {
+    let map = quadratic_params(p)?;
+    Ok(scaled(p.quadratic_reparam(&map), map))
+}
+
+/// [`standardize_quadratic`] in the compact bidegree `(m, m + n)`: since
+/// β1 = β2, the map is a Möbius map in v followed by the quadratic map in u
+/// alone ([`RectPatch::quadratic_reparam_u`]); the paper's `(m + n, m + n)`
+/// patch is this one degree-elevated n times in s (proved in `yang_yong`).
+///
+/// # Errors
+///
+/// As [`standardize_quadratic`].
+///
+/// # Examples
+///
+/// ```
+/// use exact_bezier::{RectPatch, standardize_quadratic, standardize_quadratic_compact, ratio};
+/// use num_rational::BigRational;
+/// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+/// let w = vec![vec![ratio(1, 1), ratio(1, 1)], vec![ratio(4, 1), ratio(9, 1)]];
+/// let patch = RectPatch::new(vec![vec![p(0), p(1)], vec![p(2), p(3)]], w).unwrap();
+/// let compact = standardize_quadratic_compact(&patch).unwrap();
+/// assert_eq!(compact.patch.degree(), (1, 2));
+/// assert_eq!(compact.patch.elevate(1, 0), standardize_quadratic(&patch).unwrap().patch);
+/// ```
+pub fn standardize_quadratic_compact<T: NthRoot>(
+    p: &RectPatch<T>,
+) -> Result<Standard<RectPatch<T>, T>, Error> {
+    let map = quadratic_params(p)?;
+    let moved = p
+        .mobius_v(&map.beta1)
+        .quadratic_reparam_u(&map.alpha1, &map.alpha2);
+    Ok(scaled(moved, map))
+}
+
+/// The generalized (19): α1, α2 and β1 = β2 (module docs).
+fn quadratic_params<T: NthRoot>(p: &RectPatch<T>) -> Result<Quadratic<T>, Error> {
+    p.check_positive_weights()?;
+    let (m, n) = p.degree();
+    let [w00, wm0, w0n, wmn] = corner_weights(p);
+    let alpha2 = alpha_for(&w00, &wm0, m, "eq. (19) α2")?;
+    let alpha1 = alpha_for(&w0n, &wmn, m, "eq. (19) α1")?;
+    let a2m = alpha2.pow_u32(m as u32) * &w00;
+    let a1m = alpha1.pow_u32(m as u32) * &w0n;
+    let beta = alpha_for(&a2m, &a1m, n, "eq. (19) β1 = β2")?;
+    Ok(Quadratic {
+        alpha1,
+        alpha2,
+        beta1: beta.clone(),
+        beta2: beta,
+    })
+}
+
+/// Scale the weights so that `ω_{0,0}` becomes 1.
+fn scaled<T: NthRoot>(moved: RectPatch<T>, map: Quadratic<T>) -> Standard<RectPatch<T>, T> {
+    let k = moved.ctrl()[0][0].weight().recip();
+    Standard {
+        patch: moved.scale_weights(&k),
+        map: StandardMap::Quadratic { map, k },
+    }
+}
+
+/// The standard form of a rect patch: linear (8) when Theorem 1 holds
+/// (bidegree kept), quadratic otherwise (bidegree (m + n, m + n)).
+///
+/// # Errors
+///
+/// As [`standardize_mobius`] and [`standardize_quadratic`].
+pub fn standardize_rect<T: NthRoot>(
+    p: &RectPatch<T>,
+    tol: Tolerance,
+) -> Result<Standard<RectPatch<T>, T>, Error> {
+    if theorem1_holds(p, tol) {
+        standardize_mobius(p, tol)
+    } else {
+        standardize_quadratic(p)
+    }
+}
+
+/// [`standardize_rect`] exactly, or in `f64` when a root is irrational. The
+/// choice between the linear and the quadratic method is made exactly on the
+/// exact input. `compact` selects [`standardize_quadratic_compact`]
+/// (bidegree (m, m + n)) over the paper's (m + n, m + n) form.
+///
+/// # Errors
+///
+/// As [`standardize_rect`], except that `NotRational` becomes `Approximate`.
+pub fn standardize_rect_exact_or_f64(
+    p: &RectPatch<BigRational>,
+    compact: bool,
+) -> Result<RectOutcome, Error> {
+    let linear = theorem1_holds(p, Tolerance::EXACT);
+    let quadratic = |p: &RectPatch<BigRational>| {
+        if compact {
+            standardize_quadratic_compact(p)
+        } else {
+            standardize_quadratic(p)
+        }
+    };
+    let exact = if linear {
+        standardize_mobius(p, Tolerance::EXACT)
+    } else {
+        quadratic(p)
+    };
+    match exact {
+        Ok(s) => Ok(Exactness::Exact(s)),
+        Err(Error::NotRational(why)) => {
+            let f = p.map(Ordered::to_f64);
+            let approx = if linear {
+                mobius_unchecked(&f)?
+            } else if compact {
+                standardize_quadratic_compact(&f)?
+            } else {
+                standardize_quadratic(&f)?
+            };
+            Ok(Exactness::Approximate(approx, why))
+        }
+        Err(e) => Err(e),
+    }
+}
+
+/// The type of conic a rational quadratic arc lies on, from the weights
+/// alone (control points not collinear).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ConicType {
+    /// Standard-form middle weight < 1.
+    Ellipse,
+    /// Standard-form middle weight = 1.
+    Parabola,
+    /// Standard-form middle weight > 1.
+    Hyperbola,
+}
+
+/// The conic type of a quadratic arc, decided exactly without roots: the
+/// standard form has middle weight `w₁/√(w₀w₂)` (source 000 §3: < 1
+/// ellipse, = 1 parabola, > 1 hyperbola), so compare the Möbius- and
+/// scale-invariant `w₀w₂/w₁²` with 1 (> 1 ellipse, = 1 parabola, < 1
+/// hyperbola). Exact for exact `T`; `f64` compares within `tol`.
+///
+/// # Errors
+///
+/// [`Error::Shape`] unless the degree is 2; [`Error::Weight`] for a
+/// non-positive weight.
+///
+/// # Examples
+///
+/// Source 000, Example 1, boundary `X(u, 0)` with weights 8, 2, 3:
+/// `w₀w₂/w₁² = 6 > 1`, an ellipse.
+///
+/// ```
+/// use exact_bezier::{RationalCurve, conic_type, ConicType, ratio, Tolerance};
+/// use num_rational::BigRational;
+/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+/// let c = RationalCurve::new(vec![p(0, 0), p(1, 1), p(2, 0)], vec![ratio(8, 1), ratio(2, 1), ratio(3, 1)]).unwrap();
+/// assert_eq!(conic_type(&c, Tolerance::EXACT).unwrap(), ConicType::Ellipse);
+/// ```
+pub fn conic_type<T: Ordered>(c: &RationalCurve<T>, tol: Tolerance) -> Result<ConicType, Error> {
+    if c.degree() != 2 {
+        return Err(Error::Shape(format!(
+            "a conic type needs a quadratic curve, not degree {}",
+            c.degree()
+        )));
+    }
+    c.check_positive_weights()?;
+    let w = c.weights();
+    let diff = w[0].clone() * &w[2] - &(w[1].clone() * &w[1]);
+    Ok(if diff.is_zero_within(tol) {
+        ConicType::Parabola
+    } else if diff > T::zero() {
+        ConicType::Ellipse
+    } else {
+        ConicType::Hyperbola
+    })
+}
