@@ -22,14 +22,14 @@ use std::fmt;
 pub mod bernstein;
 pub mod calculus;
 pub mod curves;
-pub mod lecture_joins;
 pub mod hang_li;
 pub mod hang_li_tables;
+pub mod lecture_joins;
 pub mod quiz;
 pub mod reduction;
+pub mod surfaces;
 pub mod trig_basis;
 pub mod trig_stitching;
-pub mod surfaces;
 pub mod yang_yong;
 pub mod yang_yong_examples;
 

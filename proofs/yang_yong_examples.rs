@@ -5,12 +5,12 @@
 //! `reproduced` if equal, else `mismatch` with both values.
 
 use super::{Claim, Verdict};
+use crate::curve_geometry::ConicType;
 use crate::io::{read_patches, Patch};
 use crate::rect::{RectPatch, Side};
 use crate::scalar::{ratio, Ordered, Tolerance};
 use crate::standard::{
-    conic_type, corner_weights, standardize_rect_exact_or_f64, theorem1_holds, ConicType,
-    Exactness, Standard, StandardMap,
+    corner_weights, standardize_rect_exact_or_f64, theorem1_holds, Exactness, Standard, StandardMap,
 };
 use num_rational::BigRational;
 use Verdict::{Mismatch as M, Proved as P, Refuted as R, Reproduced as Y};
@@ -251,7 +251,7 @@ fn example1_claims() -> Vec<Claim> {
     ];
     for (side, name, printed, text) in sides {
         let c = p.boundary(side);
-        let ours = conic_type(&c, Tolerance::EXACT).expect("quadratic, positive weights");
+        let ours = c.conic_type().expect("quadratic, positive weights");
         let w = c.weights();
         out.push(Claim::compare(
             &format!("{ex}: boundary {name} is {printed:?} ({text})"),

@@ -68,8 +68,8 @@ pub use arc::{
     sigma_of_lambda, ArcCubic, Computed, LambdaFactors, QuadArc, Roots,
 };
 pub use bernstein::{bernstein, bernstein_all};
-pub use continuity::{g2_leading_points, join, Join};
 pub use circle::{circle_of, integer_coords, Circle, NotCircle};
+pub use continuity::{g2_leading_points, join, Join};
 pub use curve::{mobius_factors, RationalCurve};
 pub use curve_deriv::forward_differences;
 pub use curve_geometry::{cross_norm_sq, ConicType, CurveEnd};
@@ -91,10 +91,9 @@ pub use scalar::{
     Tolerance,
 };
 pub use standard::{
-    conic_type, corner_weights, standardize_curve, standardize_curve_exact_or_f64,
-    standardize_mobius, standardize_quadratic, standardize_quadratic_compact, standardize_rect,
-    standardize_rect_exact_or_f64, theorem1_holds, ConicType, Exactness, NthRoot, Standard,
-    StandardMap,
+    corner_weights, standardize_curve, standardize_curve_exact_or_f64, standardize_mobius,
+    standardize_quadratic, standardize_quadratic_compact, standardize_rect,
+    standardize_rect_exact_or_f64, theorem1_holds, Exactness, NthRoot, Standard, StandardMap,
 };
 pub use tri::TriPatch;
 pub use trig::basis::{circle_normal_form, trig_basis_values, TrigFn, TrigParam};

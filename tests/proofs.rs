@@ -49,6 +49,9 @@ families!(
     reduction,
     trig_basis,
     trig_stitching,
+    hang_li,
+    hang_li_tables,
+    surfaces,
+    yang_yong,
+    yang_yong_examples,
 );
-families!(quiz, hang_li, hang_li_tables);
-families!(quiz, surfaces, yang_yong, yang_yong_examples);

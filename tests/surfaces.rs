@@ -280,23 +280,6 @@ fn theorem1_failure_names_the_condition() {
     ));
 }
 
-#[test]
-fn conic_types_are_exact() {
-    let p = |x: i64, y: i64| vec![q(x, 1), q(y, 1)];
-    let pts = vec![p(0, 0), p(1, 1), p(2, 0)];
-    let kind = |w: [Q; 3]| {
-        conic_type(
-            &RationalCurve::new(pts.clone(), w.to_vec()).unwrap(),
-            Tolerance::EXACT,
-        )
-        .unwrap()
-    };
-    assert_eq!(kind([q(1, 1), q(1, 1), q(1, 1)]), ConicType::Parabola);
-    assert_eq!(kind([q(4, 1), q(2, 1), q(1, 1)]), ConicType::Parabola);
-    assert_eq!(kind([q(4, 1), q(3, 1), q(1, 1)]), ConicType::Hyperbola);
-    assert_eq!(kind([q(4, 1), q(1, 1), q(1, 1)]), ConicType::Ellipse);
-}
-
 /// Run the binary; (exit code, parsed standard output).
 fn cli(args: &[&str]) -> (i32, serde_json::Value) {
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_exact-bezier"))

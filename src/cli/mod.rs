@@ -12,17 +12,16 @@ use num_rational::BigRational;
 use serde_json::Value;
 use std::io::Read;
 
+mod arc;
 mod curvature;
 mod deriv;
 mod eval;
+mod eval_trig;
 mod figures;
+mod is_circle;
+mod join;
 mod mesh;
 mod plot;
-mod join;
-mod eval_trig;
-mod arc;
-mod eval;
-mod is_circle;
 mod prove;
 mod reduce;
 mod standardize;
@@ -105,7 +104,7 @@ pub fn main() -> i32 {
     };
     match result {
         Ok(v) => {
-            println!("{}", serde_json::to_string_pretty(&v).unwrap_or_default());
+            emit(&serde_json::to_string_pretty(&v).unwrap_or_default());
             0
         }
         Err(e) => {
@@ -113,6 +112,16 @@ pub fn main() -> i32 {
             2
         }
     }
+}
+
+/// Write `text` and a newline to standard output. A closed pipe (e.g.
+/// `exact-bezier prove | head`) is not an error: the reader has what it
+/// wanted, so write errors are ignored rather than panicking as `println!`
+/// would.
+pub(crate) fn emit(text: &str) {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    let _ = writeln!(out, "{text}").and_then(|()| out.flush());
 }
 
 /// Read the text of `path` (`-` for standard input).
