@@ -34,7 +34,9 @@
 #![warn(missing_docs)]
 
 mod bernstein;
+mod blossom;
 pub mod cli;
+mod convert;
 mod curve;
 mod error;
 mod hpoint;
@@ -50,6 +52,12 @@ mod tri;
 pub mod proofs;
 
 pub use bernstein::{bernstein, bernstein_all};
+pub use blossom::{polar_bivariate, polar_tensor, polar_univariate, rect_blossom, ShiftOp};
+pub use convert::{
+    bilinear, degree_raising_matrix, rect_to_tri, rect_to_tris, square_corners,
+    tri_to_degenerate_rect, tri_to_rect_hu, tri_to_rect_on_quad, tri_to_rects,
+    tri_to_rects_operators, Half, Split,
+};
 pub use curve::{mobius_factors, RationalCurve};
 pub use error::{Error, MAX_DEGREE};
 pub use hpoint::{de_casteljau, HPoint};
@@ -63,4 +71,4 @@ pub use scalar::{
     binomial, binomial_scalar, ratio, rational_root, rational_to_f64, Field, Ordered, Scalar,
     Tolerance,
 };
-pub use tri::TriPatch;
+pub use tri::{affine_combination, tri_bernstein, Bary, TriPatch, SYMMETRIES};
