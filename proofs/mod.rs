@@ -19,7 +19,11 @@ use crate::poly::Poly;
 use serde_json::{json, Value};
 use std::fmt;
 
+pub mod blossoms;
+pub mod conversions;
 pub mod quiz;
+pub mod triangles;
+pub mod zhang_chen_feng;
 
 /// The outcome of checking one claim.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -170,6 +174,10 @@ pub struct Family {
 #[rustfmt::skip]
 pub const FAMILIES: &[Family] = &[
     Family { name: "quiz", run: quiz::claims },
+    Family { name: "zhang_chen_feng", run: zhang_chen_feng::claims },
+    Family { name: "triangles", run: triangles::claims },
+    Family { name: "blossoms", run: blossoms::claims },
+    Family { name: "conversions", run: conversions::claims },
 ];
 
 /// Run every family (in parallel threads) and return the claims in order.
