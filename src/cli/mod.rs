@@ -12,6 +12,7 @@ use num_rational::BigRational;
 use serde_json::Value;
 use std::io::Read;
 
+mod convert;
 mod eval;
 mod prove;
 mod transform;
@@ -42,6 +43,8 @@ enum Command {
     Reparam(transform::ReparamArgs),
     /// Raise the degree (--by R[,S]).
     Elevate(transform::ElevateArgs),
+    /// Convert rect ↔ tri (--to tri | --to rect [--split a,b,c,d,e,f] [--degenerate]).
+    Convert(convert::Args),
     /// Run every proof in proofs/ and print one line per claim.
     Prove(prove::Args),
 }
@@ -59,6 +62,7 @@ pub fn main() -> i32 {
         Command::Eval(a) => eval::run(&a),
         Command::Reparam(a) => transform::reparam(&a),
         Command::Elevate(a) => transform::elevate(&a),
+        Command::Convert(a) => convert::run(&a),
         Command::Prove(a) => return prove::run(&a),
     };
     match result {
