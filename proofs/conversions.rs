@@ -271,11 +271,58 @@ fn round_trip_claims() -> Vec<Claim> {
     out
 }
 
+/// Source 003 §3.2, conversion algorithm step (II): the recursion
+/// `f^(r)_k = (n−i+r−(j−k))/(n−i+r) f^(r−1)_k + (j−k)/(n−i+r) f^(r−1)_(k+1)`,
+/// `f^(0)_k = Q^(i)_(k,j−k)`, `P_ij = f^(i)_0`, against the sum of eq. (22)
+/// `Σ_k C(i,k) C(n−i,j−k)/C(n,j) Q^(i)_(k,j−k)`. Every `Q^(i)_(k,j−k)` is a
+/// distinct symbol, including those with `j − k` outside `0…n−i` (which
+/// must drop out).
+fn algorithm_ii_claims() -> Vec<Claim> {
+    (1..=6usize)
+        .map(|n| {
+            let mut bad = None;
+            for (i, j) in (0..=n).flat_map(|i| (0..=n).map(move |j| (i, j))) {
+                let q: Vec<Poly> = (0..=i).map(|k| v(&format!("Q{k}"))).collect();
+                let direct = (0..=i).fold(Poly::zero(), |acc, k| {
+                    let in_range = k <= j && j - k <= n - i;
+                    if !in_range {
+                        return acc;
+                    }
+                    let w = BigRational::new(
+                        crate::scalar::binomial(i, k) * crate::scalar::binomial(n - i, j - k),
+                        crate::scalar::binomial(n, j),
+                    );
+                    acc + q[k].clone() * Poly::constant(w)
+                });
+                let mut f = q.clone();
+                for r in 1..=i {
+                    let den = (n - i + r) as i64;
+                    for k in 0..=i - r {
+                        let jk = j as i64 - k as i64;
+                        f[k] = f[k].clone() * ratio::<Poly>(den - jk, den)
+                            + f[k + 1].clone() * ratio::<Poly>(jk, den);
+                    }
+                }
+                if f[0] != direct && bad.is_none() {
+                    bad = Some(format!("n = {n}, i = {i}, j = {j}: recursion gives {}, eq. (22) gives {}", f[0], direct));
+                }
+            }
+            holds(
+                &format!("§3.2 algorithm (II), n = {n}: the f^(r) recursion computes P_ij = Σ_k C(i,k) C(n−i,j−k)/C(n,j) Q^(i)_(k,j−k) for all i, j"),
+                "003 §3.2, conversion algorithm (II)",
+                bad.is_none(),
+                &bad.unwrap_or_else(|| "symbolic Q^(i)_(k,l), out-of-range ones included".into()),
+            )
+        })
+        .collect()
+}
+
 /// All claims of the family.
 pub fn claims() -> Vec<Claim> {
     let mut out = rect_to_tri_claims();
     out.extend(tri_to_rect_claims());
     out.extend(degenerate_claims());
     out.extend(round_trip_claims());
+    out.extend(algorithm_ii_claims());
     out
 }

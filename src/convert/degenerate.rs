@@ -39,7 +39,7 @@ use crate::tri::TriPatch;
 /// use exact_bezier::{degree_raising_matrix, ratio};
 /// use num_rational::BigRational;
 /// let a = degree_raising_matrix::<BigRational>(2, 1).unwrap();
-/// let z = ratio(0, 1);
+/// let z: BigRational = ratio(0, 1);
 /// assert_eq!(a, vec![vec![ratio(1, 1), z.clone()], vec![ratio(1, 2), ratio(1, 2)], vec![z, ratio(1, 1)]]);
 /// ```
 pub fn degree_raising_matrix<T: Scalar>(n: usize, k: usize) -> Result<Vec<Vec<T>>, Error> {
