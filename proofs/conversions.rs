@@ -143,6 +143,31 @@ fn tri_to_rect_claims() -> Vec<Claim> {
             how,
         ));
     }
+    // Eq. (5)'s ranges: k = 0…i and l = 0…n−i with k + l = j select exactly
+    // the non-zero weights, which then sum to 1 (Vandermonde, eq. 15).
+    let ranges_ok = (0..=6usize).all(|n| {
+        (0..=n).all(|i| {
+            (0..=n).all(|j| {
+                let total: BigRational = (0..=i)
+                    .flat_map(|k| (0..=n - i).map(move |l| (k, l)))
+                    .filter(|(k, l)| k + l == j)
+                    .map(|(k, l)| {
+                        BigRational::new(
+                            crate::scalar::binomial(i, k) * crate::scalar::binomial(n - i, l),
+                            crate::scalar::binomial(n, j),
+                        )
+                    })
+                    .sum();
+                total == ratio(1, 1)
+            })
+        })
+    });
+    out.push(holds(
+        "Hu 1996 eq. (5), n ≤ 6: over the printed ranges k = 0…i, l = 0…n−i, k + l = j, the weights C(i,k) C(n−i,l)/C(n,j) sum to 1 for every 0 ≤ i, j ≤ n (an affine combination; no term missing)",
+        "001 lecture, Hu 1996 eq. (5); 003 eq. (15)",
+        ranges_ok,
+        "exact rationals",
+    ));
     for n in [1usize, 2, 4] {
         let tri = TriPatch::polynomial(
             (0..=n)
