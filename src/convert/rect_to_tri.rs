@@ -1,10 +1,10 @@
 //! Rectangle (m, n) → two triangles of degree m + n (source 003 §2).
 
+use super::{pascal, recip_binomial};
 use crate::hpoint::HPoint;
 use crate::rect::RectPatch;
-use crate::scalar::{binomial, Scalar};
+use crate::scalar::Scalar;
 use crate::tri::{Bary, TriPatch};
-use num_rational::BigRational;
 
 /// Which half of the unit square a triangle covers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -27,28 +27,6 @@ impl Half {
     }
 }
 
-/// The coefficient of `P̂_{ij}` in `Q̂_{rst}` (source 003 eq. 14):
-/// `C(r, i) C(s, j) C(t, n − j − r + i) / C(m + n, m)`, zero outside the
-/// summation range.
-fn coefficient(
-    (m, n): (usize, usize),
-    (r, s, t): (usize, usize, usize),
-    i: usize,
-    j: usize,
-) -> BigRational {
-    // n − j − r + i T3-arguments go to the v-blossom; they must exist.
-    let Some(k) = (n + i).checked_sub(j + r) else {
-        return BigRational::from_integer(0.into());
-    };
-    if i > r || j > s || k > t {
-        return BigRational::from_integer(0.into());
-    }
-    BigRational::new(
-        binomial(r, i) * binomial(s, j) * binomial(t, k),
-        binomial(m + n, m),
-    )
-}
-
 /// The rectangle restricted to one half of the unit square, as a triangle
 /// of degree m + n (source 003 Theorem 2.3):
 ///
@@ -64,8 +42,7 @@ fn coefficient(
 ///
 /// ```
 /// use exact_bezier::{rect_to_tri, Half, RectPatch, ratio};
-/// use num_rational::BigRational;
-/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+/// /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let r = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 1)], vec![p(1, 0), p(1, 1)]]).unwrap();
 /// let t = rect_to_tri(&r, Half::Upper);
 /// let (u, v) = (ratio(1, 4), ratio(1, 2));
@@ -78,16 +55,23 @@ pub fn rect_to_tri<T: Scalar>(r: &RectPatch<T>, half: Half) -> TriPatch<T> {
         Half::Lower => &ctrl[i][j],
         Half::Upper => &ctrl[m - i][n - j],
     };
+    let c = pascal::<T>(m + n);
+    let inv = recip_binomial::<T>(m + n, m);
     TriPatch::from_fn(m + n, |rr, s, t| {
         let mut acc = HPoint::zero(r.dim());
         for i in 0..=m.min(rr) {
             let lo = (s + i).saturating_sub(m);
             let hi = s.min((n + i).saturating_sub(rr));
             for j in lo..=hi {
-                let c = coefficient((m, n), (rr, s, t), i, j);
-                if c != BigRational::from_integer(0.into()) {
-                    acc = acc.add(&net(i, j).scale(&T::from_rational(&c)));
+                // n − j − r + i of the T3 arguments go to the v-blossom (eq. 14).
+                let Some(k) = (n + i).checked_sub(j + rr) else {
+                    continue;
+                };
+                if k > t {
+                    continue;
                 }
+                let w = c[rr][i].clone() * &c[s][j] * &c[t][k] * &inv;
+                acc = acc.add(&net(i, j).scale(&w));
             }
         }
         acc

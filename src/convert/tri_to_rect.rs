@@ -14,12 +14,13 @@
 //! ([`Split::standard`]) is the centroid and the edge midpoints:
 //! `a = c = 1/3`, `b = d = e = f = 1/2`.
 
+use super::{pascal, recip_binomial};
 use crate::blossom::ShiftOp;
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::rect::RectPatch;
 use crate::scalar::{binomial, ratio, Ordered, Scalar};
-use crate::tri::{Bary, TriPatch};
+use crate::tri::{casteljau_level, Bary, TriPatch};
 use num_rational::BigRational;
 
 /// The split parameters `a, b, c, d, e, f` of source 003 eq. (19).
@@ -167,14 +168,13 @@ pub fn bilinear<T: Scalar>(corners: &[Bary<T>; 4], s: &T, t: &T) -> Bary<T> {
     std::array::from_fn(|c| (0..4).fold(T::zero(), |acc, k| acc + &(f[k].clone() * &corners[k][c])))
 }
 
-/// The hypergeometric weight `C(i, k) C(n − i, j − k) / C(n, j)` of eq. (22):
-/// the share of pairings of `(0^{n−i}, 1^i)` with `(0^{n−j}, 1^j)` that
-/// have `k` pairs `(1, 1)`.
-fn pairing_weight(n: usize, i: usize, j: usize, k: usize) -> BigRational {
-    if k > j || j - k > n - i {
-        return BigRational::from_integer(0.into());
-    }
-    BigRational::new(binomial(i, k) * binomial(n - i, j - k), binomial(n, j))
+/// The hypergeometric weights `C(i, k) C(n − i, j − k) / C(n, j)` of eq.
+/// (22) — the share of pairings of `(0^{n−i}, 1^i)` with `(0^{n−j}, 1^j)`
+/// that have `k` pairs `(1, 1)` — as `weights(i, j, k)` for `k` in [`k_range`].
+fn pairing_weights<T: Scalar>(n: usize) -> impl Fn(usize, usize, usize) -> T {
+    let c = pascal::<T>(n);
+    let inv: Vec<T> = (0..=n).map(|j| recip_binomial::<T>(n, j)).collect();
+    move |i, j, k| c[i][k].clone() * &c[n - i][j - k] * &inv[j]
 }
 
 /// The range of `k` in eq. (22) for `(i, j)`: `max(0, i + j − n) ≤ k ≤ min(i, j)`.
@@ -209,25 +209,57 @@ fn k_range(n: usize, i: usize, j: usize) -> std::ops::RangeInclusive<usize> {
 /// ```
 pub fn tri_to_rect_on_quad<T: Scalar>(tri: &TriPatch<T>, corners: &[Bary<T>; 4]) -> RectPatch<T> {
     let n = tri.degree();
-    let [c00, c10, c11, c01] = corners;
+    let weight = pairing_weights::<T>(n);
+    let table = quad_blossoms(tri, corners);
     let ctrl = (0..=n)
         .map(|i| {
             (0..=n)
                 .map(|j| {
                     k_range(n, i, j).fold(HPoint::zero(tri.dim()), |acc, k| {
-                        let mut args = Vec::with_capacity(n);
-                        args.extend(std::iter::repeat_n(c00.clone(), n + k - i - j));
-                        args.extend(std::iter::repeat_n(c10.clone(), i - k));
-                        args.extend(std::iter::repeat_n(c11.clone(), k));
-                        args.extend(std::iter::repeat_n(c01.clone(), j - k));
-                        let w = T::from_rational(&pairing_weight(n, i, j, k));
-                        acc.add(&tri.blossom_unchecked(&args).scale(&w))
+                        acc.add(&table[j - k][k][i - k].scale(&weight(i, j, k)))
                     })
                 })
                 .collect()
         })
         .collect();
     RectPatch::from_hom(ctrl).expect("a non-empty square net of equal-length points")
+}
+
+/// Every blossom value `b[c₀₀^{n−x−y−z}, c₁₀^x, c₁₁^y, c₀₁^z]`
+/// (`x + y + z ≤ n`) as `table[z][y][x]`, by the blossoming algorithm (26)
+/// with the levels for common leading arguments computed once.
+fn quad_blossoms<T: Scalar>(tri: &TriPatch<T>, corners: &[Bary<T>; 4]) -> Vec<Vec<Vec<HPoint<T>>>> {
+    let n = tri.degree();
+    let [c00, c10, c11, c01] = corners;
+    let mut table = Vec::with_capacity(n + 1);
+    let mut after_z = tri.rows().to_vec();
+    for z in 0..=n {
+        if z > 0 {
+            after_z = casteljau_level(&after_z, c01);
+        }
+        let mut by_y = Vec::with_capacity(n - z + 1);
+        let mut after_y = after_z.clone();
+        for y in 0..=n - z {
+            if y > 0 {
+                after_y = casteljau_level(&after_y, c11);
+            }
+            let mut by_x = Vec::with_capacity(n - z - y + 1);
+            let mut after_x = after_y.clone();
+            for x in 0..=n - z - y {
+                if x > 0 {
+                    after_x = casteljau_level(&after_x, c10);
+                }
+                let mut rest = after_x.clone();
+                for _ in 0..n - z - y - x {
+                    rest = casteljau_level(&rest, c00);
+                }
+                by_x.push(rest.swap_remove(0).swap_remove(0));
+            }
+            by_y.push(by_x);
+        }
+        table.push(by_y);
+    }
+    table
 }
 
 /// The triangle as three rectangles of bidegree (n, n) over the split
@@ -284,18 +316,19 @@ pub fn tri_to_rects_operators<T: Scalar>(tri: &TriPatch<T>, split: &Split<T>) ->
     })
 }
 
-/// `P̂_{ij} = Σ_{k ∈ k_range} pairing_weight · op(n, i, j, k) Q̂_{000}`.
+/// `P̂_{ij} = Σ_{k ∈ k_range} pairing weight · op(n, i, j, k) Q̂_{000}`.
 fn operator_rect<T: Scalar>(
     tri: &TriPatch<T>,
     op: impl Fn(usize, usize, usize, usize) -> ShiftOp<T>,
 ) -> RectPatch<T> {
     let n = tri.degree();
+    let weight = pairing_weights::<T>(n);
     let ctrl = (0..=n)
         .map(|i| {
             (0..=n)
                 .map(|j| {
                     k_range(n, i, j).fold(HPoint::zero(tri.dim()), |acc, k| {
-                        let w = T::from_rational(&pairing_weight(n, i, j, k));
+                        let w = weight(i, j, k);
                         let q = op(n, i, j, k).apply(tri).expect("operator degree n");
                         acc.add(&q.scale(&w))
                     })
