@@ -268,6 +268,8 @@ fn round_trip_claims() -> Vec<Claim> {
         (3, 3),
         (2, 5),
         (4, 4),
+        (5, 3),
+        (5, 5),
     ] {
         let r = symbolic_rect(m, n);
         let tris = [rect_to_tri(&r, Half::Lower), rect_to_tri(&r, Half::Upper)];
