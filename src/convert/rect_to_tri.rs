@@ -42,7 +42,8 @@ impl Half {
 ///
 /// ```
 /// use exact_bezier::{rect_to_tri, Half, RectPatch, ratio};
-/// /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+/// use num_rational::BigRational;
+/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let r = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 1)], vec![p(1, 0), p(1, 1)]]).unwrap();
 /// let t = rect_to_tri(&r, Half::Upper);
 /// let (u, v) = (ratio(1, 4), ratio(1, 2));
