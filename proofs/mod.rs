@@ -32,6 +32,10 @@ pub mod trig_basis;
 pub mod trig_stitching;
 pub mod yang_yong;
 pub mod yang_yong_examples;
+pub mod blossoms;
+pub mod conversions;
+pub mod triangles;
+pub mod zhang_chen_feng;
 
 /// The outcome of checking one claim.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -193,6 +197,10 @@ pub const FAMILIES: &[Family] = &[
     Family { name: "surfaces", run: surfaces::claims },
     Family { name: "yang_yong", run: yang_yong::claims },
     Family { name: "yang_yong_examples", run: yang_yong_examples::claims },
+    Family { name: "zhang_chen_feng", run: zhang_chen_feng::claims },
+    Family { name: "triangles", run: triangles::claims },
+    Family { name: "blossoms", run: blossoms::claims },
+    Family { name: "conversions", run: conversions::claims },
 ];
 
 /// Run every family (in parallel threads) and return the claims in order.

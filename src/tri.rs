@@ -19,6 +19,32 @@ use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::scalar::{Field, Ordered, Scalar, Tolerance};
 
+mod ops;
+pub use ops::{affine_combination, tri_bernstein, Bary, SYMMETRIES};
+
+/// One level of triangular de Casteljau with barycentric `b = (u, v, w)`:
+/// from the rows of level r (entries `(i, j)`, `i + j ≤ r`) to level r − 1,
+/// `P'_{i,j} = u P_{i+1,j} + v P_{i,j+1} + w P_{i,j}` (k implicit).
+/// **Panics if `rows` has a single row (level 0).**
+pub(crate) fn casteljau_level<T: Scalar>(
+    rows: &[Vec<HPoint<T>>],
+    b: &Bary<T>,
+) -> Vec<Vec<HPoint<T>>> {
+    let r = rows.len() - 1;
+    (0..r)
+        .map(|j| {
+            (0..r - j)
+                .map(|i| {
+                    rows[j][i + 1]
+                        .scale(&b[0])
+                        .add(&rows[j + 1][i].scale(&b[1]))
+                        .add(&rows[j][i].scale(&b[2]))
+                })
+                .collect()
+        })
+        .collect()
+}
+
 /// A rational triangular Bézier patch of degree n.
 ///
 /// # Examples
@@ -175,21 +201,10 @@ impl<T: Scalar> TriPatch<T> {
     /// w P^{r−1}_{i,j,k+1}` (source 001). `u + v + w = 1` is not required:
     /// other triples give the homogeneous extension.
     pub fn eval_hom_bary(&self, u: &T, v: &T, w: &T) -> HPoint<T> {
+        let b = [u.clone(), v.clone(), w.clone()];
         let mut rows = self.rows.clone();
-        for r in (1..=self.n).rev() {
-            // Level r − 1 from level r: entries (i, j) with i + j ≤ r − 1.
-            let mut next: Vec<Vec<HPoint<T>>> = Vec::with_capacity(r);
-            for j in 0..r {
-                let mut row = Vec::with_capacity(r - j);
-                for i in 0..r - j {
-                    let a = rows[j][i + 1].scale(u);
-                    let b = rows[j + 1][i].scale(v);
-                    let c = rows[j][i].scale(w);
-                    row.push(a.add(&b).add(&c));
-                }
-                next.push(row);
-            }
-            rows = next;
+        for _ in 0..self.n {
+            rows = casteljau_level(&rows, &b);
         }
         rows.swap_remove(0).swap_remove(0)
     }

@@ -41,6 +41,7 @@ macro_rules! families {
     };
 }
 
+
 families!(
     quiz,
     bernstein,
@@ -54,4 +55,8 @@ families!(
     surfaces,
     yang_yong,
     yang_yong_examples,
+    zhang_chen_feng,
+    triangles,
+    blossoms,
+    conversions,
 );

@@ -15,6 +15,7 @@ use std::io::Read;
 mod arc;
 mod curvature;
 mod deriv;
+mod convert;
 mod eval;
 mod eval_trig;
 mod figures;
@@ -55,6 +56,8 @@ enum Command {
     Standardize(standardize::Args),
     /// Raise the degree (--by R[,S]).
     Elevate(transform::ElevateArgs),
+    /// Convert rect ↔ tri (--to tri | --to rect [--split a,b,c,d,e,f] [--degenerate]).
+    Convert(convert::Args),
     /// Run every proof in proofs/ and print one line per claim.
     Prove(prove::Args),
     /// Draw curves and patches as SVG or PNG (-o OUT.svg|OUT.png).
@@ -91,6 +94,7 @@ pub fn main() -> i32 {
         Command::Reparam(a) => transform::reparam(&a),
         Command::Elevate(a) => transform::elevate(&a),
         Command::Standardize(a) => standardize::run(&a),
+        Command::Convert(a) => convert::run(&a),
         Command::Prove(a) => return prove::run(&a),
         Command::Plot(a) => plot::run(&a),
         Command::Mesh(a) => mesh::run(&a),

@@ -1,0 +1,92 @@
+//! Triangle evaluation and the rect ↔ tri conversions, f64 and exact, at
+//! degrees 3 and 6 (rect bidegree (3, 3) and (6, 6)).
+//!
+//! `cargo bench --bench tri -- --warm-up-time 1 --measurement-time 3`
+
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use exact_bezier::{
+    ratio, rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Field, RectPatch, Split, TriPatch,
+};
+use num_rational::BigRational;
+
+fn tri_patch<T: Field>(n: usize) -> TriPatch<T> {
+    let pts = (0..=n)
+        .map(|j| {
+            (0..=n - j)
+                .map(|i| {
+                    vec![
+                        ratio(i as i64, 3),
+                        ratio(j as i64 * 2, 5),
+                        ratio((i * j) as i64 + 1, 7),
+                    ]
+                })
+                .collect()
+        })
+        .collect::<Vec<Vec<Vec<T>>>>();
+    let ws = (0..=n)
+        .map(|j| {
+            (0..=n - j)
+                .map(|i| ratio((i + 2 * j) as i64 % 5 + 1, 3))
+                .collect()
+        })
+        .collect();
+    TriPatch::new(pts, ws).unwrap()
+}
+
+fn rect_patch<T: Field>(n: usize) -> RectPatch<T> {
+    let pts = (0..=n)
+        .map(|i| {
+            (0..=n)
+                .map(|j| {
+                    vec![
+                        ratio(i as i64, 3),
+                        ratio(j as i64, 4),
+                        ratio((i * j) as i64 % 5, 7),
+                    ]
+                })
+                .collect()
+        })
+        .collect::<Vec<Vec<Vec<T>>>>();
+    let ws = (0..=n)
+        .map(|i| {
+            (0..=n)
+                .map(|j| ratio((i + 3 * j) as i64 % 4 + 1, 2))
+                .collect()
+        })
+        .collect();
+    RectPatch::new(pts, ws).unwrap()
+}
+
+fn run<T: Field>(c: &mut Criterion, label: &str) {
+    let (u, v) = (ratio::<T>(2, 7), ratio::<T>(3, 11));
+    let split = Split::new_unchecked(
+        Split::<BigRational>::standard()
+            .params()
+            .clone()
+            .map(|x| T::from_rational(&x)),
+    );
+    for n in [3usize, 6] {
+        let t = tri_patch::<T>(n);
+        let r = rect_patch::<T>(n);
+        c.bench_function(&format!("tri eval n={n} {label}"), |b| {
+            b.iter(|| black_box(&t).eval(black_box(&u), black_box(&v)))
+        });
+        c.bench_function(&format!("rect->2 tris ({n},{n}) {label}"), |b| {
+            b.iter(|| rect_to_tris(black_box(&r)))
+        });
+        c.bench_function(&format!("tri->3 rects n={n} {label}"), |b| {
+            b.iter(|| tri_to_rects(black_box(&t), black_box(&split)))
+        });
+        c.bench_function(&format!("tri->degenerate rect n={n} {label}"), |b| {
+            b.iter(|| tri_to_degenerate_rect(black_box(&t)))
+        });
+    }
+}
+
+fn benches(c: &mut Criterion) {
+    run::<f64>(c, "f64");
+    run::<BigRational>(c, "exact");
+}
+
+criterion_group!(tri, benches);
+criterion_main!(tri);

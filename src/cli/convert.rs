@@ -1,0 +1,155 @@
+//! `convert FILE --to tri|rect [--split a,b,c,d,e,f] [--degenerate]
+//! [--normalize] [--scalar f64]`: rectangle ↔ triangle conversions
+//! (source 003; source 001, Hu 2001). Output: a JSON array of patches.
+
+use super::{load, parse_list, ScalarKind};
+use crate::convert::{rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Split};
+use crate::error::Error;
+use crate::io::{patch_to_json, JsonScalar, Patch};
+use crate::scalar::{Field, Ordered};
+use num_rational::BigRational;
+use serde_json::Value;
+
+/// What to convert to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Target {
+    /// rect (m, n) → two tris of degree m + n, on Δ1 (u + v ≤ 1) then Δ2.
+    Tri,
+    /// tri of degree n → three rects (n, n) on D1, D2, D3, or one degenerate rect.
+    Rect,
+}
+
+/// Arguments of `convert`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Input file (JSON), or - for standard input.
+    file: String,
+    /// Target kind.
+    #[arg(long, value_enum)]
+    to: Target,
+    /// Split of the triangle for --to rect: a,b,c,d,e,f with p2 = (b, 0),
+    /// p3 = (a, c), p4 = (0, d), p5 = (e, f), e + f = 1 (source 003 eq. 19).
+    /// Default: the centroid and edge midpoints, 1/3,1/2,1/3,1/2,1/2,1/2.
+    #[arg(long)]
+    split: Option<String>,
+    /// For --to rect: one degenerate rect (n, n) instead of three
+    /// (rect(s, t) = tri(s, (1 − s)t)).
+    #[arg(long)]
+    degenerate: bool,
+    /// Scale the weights of each output patch to sum 1 (as in source 003 §4).
+    #[arg(long)]
+    normalize: bool,
+    /// Scalar to compute with.
+    #[arg(long, value_enum, default_value_t)]
+    scalar: ScalarKind,
+}
+
+/// The options that shape each conversion.
+struct Plan<T> {
+    to: Target,
+    split: Split<T>,
+    degenerate: bool,
+    normalize: bool,
+}
+
+pub fn run(a: &Args) -> Result<Value, Error> {
+    if a.to == Target::Tri && (a.split.is_some() || a.degenerate) {
+        return Err(Error::Format(
+            "--split and --degenerate apply to --to rect only".into(),
+        ));
+    }
+    if a.degenerate && a.split.is_some() {
+        return Err(Error::Format(
+            "--degenerate gives one rect and takes no --split".into(),
+        ));
+    }
+    let split = match &a.split {
+        Some(text) => {
+            let p = parse_list(text)?;
+            let params: [BigRational; 6] = p.try_into().map_err(|p: Vec<BigRational>| {
+                Error::Shape(format!(
+                    "--split needs 6 numbers a,b,c,d,e,f, not {}",
+                    p.len()
+                ))
+            })?;
+            Split::new(params)?
+        }
+        None => Split::standard(),
+    };
+    let plan = Plan {
+        to: a.to,
+        split,
+        degenerate: a.degenerate,
+        normalize: a.normalize,
+    };
+    let mut out = Vec::new();
+    for p in &load(&a.file)? {
+        match a.scalar {
+            ScalarKind::Exact => out.extend(convert_with(p, &plan)?),
+            ScalarKind::F64 => {
+                let plan64 = Plan {
+                    to: plan.to,
+                    split: Split::new_unchecked(plan.split.params().clone().map(|x| x.to_f64())),
+                    degenerate: plan.degenerate,
+                    normalize: plan.normalize,
+                };
+                out.extend(convert_with(&p.to_f64(), &plan64)?);
+            }
+        }
+    }
+    Ok(Value::Array(out))
+}
+
+fn convert_with<T: JsonScalar + Ordered>(
+    p: &Patch<T>,
+    plan: &Plan<T>,
+) -> Result<Vec<Value>, Error> {
+    let converted: Vec<Patch<T>> = match (p, plan.to) {
+        (Patch::Rect(r), Target::Tri) => rect_to_tris(r).into_iter().map(Patch::Tri).collect(),
+        (Patch::Tri(t), Target::Rect) if plan.degenerate => {
+            vec![Patch::Rect(tri_to_degenerate_rect(t))]
+        }
+        (Patch::Tri(t), Target::Rect) => tri_to_rects(t, &plan.split)
+            .into_iter()
+            .map(Patch::Rect)
+            .collect(),
+        (other, to) => {
+            return Err(Error::Format(format!(
+                "convert --to {} needs {} patches, not a {}",
+                if to == Target::Tri { "tri" } else { "rect" },
+                if to == Target::Tri { "rect" } else { "tri" },
+                other.kind()
+            )))
+        }
+    };
+    converted
+        .iter()
+        .map(|q| {
+            let q = if plan.normalize {
+                normalized(q)?
+            } else {
+                q.clone()
+            };
+            patch_to_json(&q)
+        })
+        .collect()
+}
+
+/// The patch with weights scaled to sum 1.
+fn normalized<T: Field>(p: &Patch<T>) -> Result<Patch<T>, Error> {
+    let sum = |w: Vec<Vec<T>>| w.into_iter().flatten().fold(T::zero(), |acc, x| acc + &x);
+    let total = match p {
+        Patch::Rect(r) => sum(r.weights()),
+        Patch::Tri(t) => t.weight_sum(),
+        Patch::Curve(c) => c.weights().into_iter().fold(T::zero(), |acc, x| acc + &x),
+    };
+    if total.is_zero() {
+        return Err(Error::PointAtInfinity);
+    }
+    let k = total.recip();
+    Ok(match p {
+        Patch::Rect(r) => Patch::Rect(r.scale_weights(&k)),
+        Patch::Tri(t) => Patch::Tri(t.scale_weights(&k)),
+        Patch::Curve(c) => Patch::Curve(c.scale_weights(&k)),
+    })
+}
