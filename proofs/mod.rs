@@ -20,7 +20,9 @@ use serde_json::{json, Value};
 use std::fmt;
 
 pub mod bernstein;
+pub mod blossoms;
 pub mod calculus;
+pub mod conversions;
 pub mod curves;
 pub mod hang_li;
 pub mod hang_li_tables;
@@ -28,13 +30,11 @@ pub mod lecture_joins;
 pub mod quiz;
 pub mod reduction;
 pub mod surfaces;
+pub mod triangles;
 pub mod trig_basis;
 pub mod trig_stitching;
 pub mod yang_yong;
 pub mod yang_yong_examples;
-pub mod blossoms;
-pub mod conversions;
-pub mod triangles;
 pub mod zhang_chen_feng;
 
 /// The outcome of checking one claim.

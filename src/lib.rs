@@ -35,9 +35,9 @@
 
 mod arc;
 mod bernstein;
+mod blossom;
 mod circle;
 pub mod cli;
-mod blossom;
 mod continuity;
 mod convert;
 mod curve;
@@ -70,9 +70,9 @@ pub use arc::{
     sigma_of_lambda, ArcCubic, Computed, LambdaFactors, QuadArc, Roots,
 };
 pub use bernstein::{bernstein, bernstein_all};
+pub use blossom::{polar_bivariate, polar_tensor, polar_univariate, rect_blossom, ShiftOp};
 pub use circle::{circle_of, integer_coords, Circle, NotCircle};
 pub use continuity::{g2_leading_points, join, Join};
-pub use blossom::{polar_bivariate, polar_tensor, polar_univariate, rect_blossom, ShiftOp};
 pub use convert::{
     bilinear, degree_raising_matrix, rect_to_tri, rect_to_tris, square_corners,
     tri_to_degenerate_rect, tri_to_rect_hu, tri_to_rect_on_quad, tri_to_rects,
@@ -103,10 +103,10 @@ pub use standard::{
     standardize_quadratic, standardize_quadratic_compact, standardize_rect,
     standardize_rect_exact_or_f64, theorem1_holds, Exactness, NthRoot, Standard, StandardMap,
 };
+pub use tri::{affine_combination, tri_bernstein, Bary, TriPatch, SYMMETRIES};
 pub use trig::basis::{circle_normal_form, trig_basis_values, TrigFn, TrigParam};
 pub use trig::bowl::trig_bowl;
 pub use trig::curve::TrigCurve;
 pub use trig::stitch::{trig_g0, trig_g1_factor, trig_stitch, trig_tangent_continuous, TrigJoin};
 pub use trig::surface::TrigRect;
 pub use trig_io::{read_trig_patches, trig_patch_to_json, TrigPatch};
-pub use tri::{affine_combination, tri_bernstein, Bary, TriPatch, SYMMETRIES};

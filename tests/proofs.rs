@@ -41,7 +41,6 @@ macro_rules! families {
     };
 }
 
-
 families!(
     quiz,
     bernstein,

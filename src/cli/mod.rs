@@ -13,9 +13,9 @@ use serde_json::Value;
 use std::io::Read;
 
 mod arc;
+mod convert;
 mod curvature;
 mod deriv;
-mod convert;
 mod eval;
 mod eval_trig;
 mod figures;
