@@ -34,29 +34,45 @@
 #![warn(missing_docs)]
 
 mod bernstein;
+mod canonical;
+mod coincide;
 pub mod cli;
 mod curve;
 mod error;
 mod hpoint;
+mod interval;
 mod io;
+mod minimal_degree;
+mod modp;
 mod poly;
 mod rect;
 mod scalar;
 #[cfg(feature = "proptest")]
 pub mod strategy;
 mod tri;
+mod upoly;
 
 #[path = "../proofs/mod.rs"]
 pub mod proofs;
 
 pub use bernstein::{bernstein, bernstein_all};
+pub use canonical::{canonical_key, dedup, CanonicalKey};
+pub use coincide::{
+    boundary_curve, coincide, coincide_curves, coincide_f64, coincide_rects, shared_boundaries,
+    Coincidence, Edge, MobiusParam, NthRoot, ReductionInfo, Symmetry, Witness,
+};
 pub use curve::{mobius_factors, RationalCurve};
 pub use error::{Error, MAX_DEGREE};
 pub use hpoint::{de_casteljau, HPoint};
+pub use interval::{coincide_filtered, DecidedBy, Interval};
 pub use io::{
     parse_json, parse_rational, patch_from_value, patch_to_json, point_to_json, read_patches,
     JsonScalar, Patch,
 };
+pub use minimal_degree::{
+    bernstein_to_power, minimal_curve, minimal_rect, power_to_bernstein, Minimal,
+};
+pub use modp::Fp;
 pub use poly::Poly;
 pub use rect::RectPatch;
 pub use scalar::{
@@ -64,3 +80,4 @@ pub use scalar::{
     Tolerance,
 };
 pub use tri::TriPatch;
+pub use upoly::{BPoly, UPoly};
