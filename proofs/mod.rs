@@ -19,6 +19,7 @@ use crate::poly::Poly;
 use serde_json::{json, Value};
 use std::fmt;
 
+pub mod coincide;
 pub mod quiz;
 
 /// The outcome of checking one claim.
@@ -170,6 +171,7 @@ pub struct Family {
 #[rustfmt::skip]
 pub const FAMILIES: &[Family] = &[
     Family { name: "quiz", run: quiz::claims },
+    Family { name: "coincide", run: coincide::claims },
 ];
 
 /// Run every family (in parallel threads) and return the claims in order.

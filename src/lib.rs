@@ -70,7 +70,8 @@ pub use io::{
     JsonScalar, Patch,
 };
 pub use minimal_degree::{
-    bernstein_to_power, minimal_curve, minimal_rect, power_to_bernstein, Minimal,
+    bernstein_to_power, minimal_curve, minimal_rect, multiply_components, power_to_bernstein,
+    Minimal,
 };
 pub use modp::Fp;
 pub use poly::Poly;

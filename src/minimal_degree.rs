@@ -28,7 +28,6 @@ use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::modp::Fp;
-use crate::poly::Poly;
 use crate::rect::RectPatch;
 use crate::scalar::{binomial_scalar, Field, Scalar, Tolerance};
 use crate::upoly::{BPoly, UPoly};
@@ -203,8 +202,11 @@ pub struct Minimal<P> {
     /// The (bi)degree after reduction.
     pub degree_after: (usize, usize),
     /// The common factor `g(u, v)` removed from every homogeneous component,
-    /// normalized to leading coefficient 1 and sign `g(0, 0) > 0`; `"1"` if none.
+    /// normalized to leading coefficient 1 and sign `g(0, 0) > 0`, as a
+    /// formula in `u`, `v`; `"1"` if none.
     pub common_factor: String,
+    /// The same factor `g(u, v)` as a polynomial.
+    pub factor: BPoly<BigRational>,
     /// Was minimality certified modulo `p` (no exact gcd was needed)?
     pub certified: bool,
 }
@@ -222,6 +224,7 @@ pub(crate) fn minimal_net(net: &Net<BigRational>) -> Minimal<Net<BigRational>> {
             degree_before: before,
             degree_after: before,
             common_factor: "1".into(),
+            factor: BPoly::from_grid(&[vec![BigRational::from_integer(1.into())]]),
             certified: true,
         };
     }
@@ -242,20 +245,14 @@ pub(crate) fn minimal_net(net: &Net<BigRational>) -> Minimal<Net<BigRational>> {
         degree_before: before,
         degree_after: (m, n),
         common_factor: factor_text(&g),
+        factor: g,
         certified: false,
     }
 }
 
 /// `g(u, v)` as a formula.
 fn factor_text(g: &BPoly<BigRational>) -> String {
-    let (u, v) = (Poly::var("u"), Poly::var("v"));
-    let mut sum = Poly::zero();
-    for (p, c) in g.coeffs().iter().enumerate() {
-        for (q, a) in c.coeffs().iter().enumerate() {
-            sum = sum + u.pow(p as u32) * v.pow(q as u32) * Poly::constant(a.clone());
-        }
-    }
-    sum.to_string()
+    g.to_poly("u", "v").to_string()
 }
 
 /// Fixed evaluation points in `Z/pZ` for the coprimality certificate.
@@ -330,6 +327,58 @@ fn specialize_u(grid: &[Vec<Fp>], u0: Fp) -> UPoly<Fp> {
     )
 }
 
+/// Multiply every homogeneous component of `r` (bidegree (m, n)) by the
+/// polynomial `f(u, v) = Σ f_{a,b} B_{a,p}(u) B_{b,q}(v)` (bidegree (p, q)):
+/// the result, of bidegree (m + p, n + q), is the same parametric map
+/// wherever `f ≠ 0`, with `f` a common factor of its components. Bernstein
+/// product: `H'_{k,l} = Σ C(m,i)C(p,a)C(n,j)C(q,b) / (C(m+p,k)C(n+q,l)) · f_{a,b} H_{i,j}`
+/// over `i + a = k`, `j + b = l`. Ring operations only.
+///
+/// **Panics if `f` is empty or ragged.**
+///
+/// ```
+/// use exact_bezier::{multiply_components, minimal_rect, RectPatch, ratio};
+/// use num_rational::BigRational;
+/// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+/// let r = RectPatch::polynomial(vec![vec![p(0), p(1)], vec![p(2), p(5)]]).unwrap();
+/// // f = 1 + uv has Bernstein net [[1, 1], [1, 2]].
+/// let f = vec![vec![ratio(1, 1), ratio(1, 1)], vec![ratio(1, 1), ratio(2, 1)]];
+/// let big = multiply_components(&r, &f);
+/// assert_eq!(big.degree(), (2, 2));
+/// assert_eq!(minimal_rect(&big).unwrap().common_factor, "u*v + 1");
+/// ```
+pub fn multiply_components<T: Scalar>(r: &RectPatch<T>, f: &[Vec<T>]) -> RectPatch<T> {
+    let ((m, n), (p, q)) = (r.degree(), (f.len() - 1, f[0].len() - 1));
+    let net = r.ctrl();
+    let coef = |a: usize, i: usize, k: usize, deg: usize, extra: usize| {
+        BigRational::new(
+            crate::scalar::binomial(deg, i) * crate::scalar::binomial(extra, a),
+            crate::scalar::binomial(deg + extra, k),
+        )
+    };
+    let ctrl = (0..=m + p)
+        .map(|k| {
+            (0..=n + q)
+                .map(|l| {
+                    let mut acc = HPoint::zero(r.dim());
+                    for (a, row) in f.iter().enumerate() {
+                        for (b, fv) in row.iter().enumerate() {
+                            if k < a || l < b || k - a > m || l - b > n {
+                                continue;
+                            }
+                            let (i, j) = (k - a, l - b);
+                            let c = T::from_rational(&(coef(a, i, k, m, p) * coef(b, j, l, n, q)));
+                            acc = acc.add(&net[i][j].scale(&(c * fv)));
+                        }
+                    }
+                    acc
+                })
+                .collect()
+        })
+        .collect();
+    RectPatch::from_hom(ctrl).expect("a product of valid nets")
+}
+
 /// Reduce a rational tensor-product patch over Q to its minimal bidegree:
 /// divide the homogeneous components by their gcd and undo elevation.
 ///
@@ -367,6 +416,7 @@ pub fn minimal_rect(r: &RectPatch<BigRational>) -> Result<Minimal<RectPatch<BigR
         degree_before: red.degree_before,
         degree_after: red.degree_after,
         common_factor: red.common_factor,
+        factor: red.factor,
         certified: red.certified,
     })
 }
@@ -397,6 +447,7 @@ pub fn minimal_curve(
         degree_before: red.degree_before,
         degree_after: red.degree_after,
         common_factor: red.common_factor,
+        factor: red.factor,
         certified: red.certified,
     })
 }

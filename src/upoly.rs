@@ -15,7 +15,9 @@
 //! Reference: the primitive pseudo-remainder sequence for gcds in `K[v][u]`
 //! (Collins 1967; Knuth, TAOCP vol. 2, §4.6.1, Algorithm E).
 
+use crate::poly::Poly;
 use crate::scalar::Field;
+use num_rational::BigRational;
 
 /// A univariate polynomial `Σ c_k x^k` over a field, trailing zeros trimmed.
 ///
@@ -355,11 +357,30 @@ impl<T: Field> BPoly<T> {
     }
 }
 
+impl BPoly<BigRational> {
+    /// The symbolic polynomial `Σ a_{p,q} u^p v^q` in the named variables.
+    ///
+    /// ```
+    /// use exact_bezier::{BPoly, ratio};
+    /// let g = BPoly::from_grid(&[vec![ratio(1, 1), ratio(0, 1)], vec![ratio(0, 1), ratio(2, 1)]]);
+    /// assert_eq!(g.to_poly("u", "v").to_string(), "2*u*v + 1");
+    /// ```
+    pub fn to_poly(&self, u: &str, v: &str) -> Poly {
+        let (u, v) = (Poly::var(u), Poly::var(v));
+        let mut sum = Poly::from_int(0);
+        for (p, c) in self.coeffs.iter().enumerate() {
+            for (q, a) in c.coeffs().iter().enumerate() {
+                sum = sum + u.pow(p as u32) * v.pow(q as u32) * Poly::constant(a.clone());
+            }
+        }
+        sum
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::scalar::ratio;
-    use num_rational::BigRational;
     type Q = BigRational;
 
     fn grid(g: &[&[i64]]) -> BPoly<Q> {

@@ -41,4 +41,4 @@ macro_rules! families {
     };
 }
 
-families!(quiz);
+families!(quiz, coincide);

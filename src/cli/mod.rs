@@ -12,6 +12,8 @@ use num_rational::BigRational;
 use serde_json::Value;
 use std::io::Read;
 
+mod coincide;
+mod dedup;
 mod eval;
 mod prove;
 mod transform;
@@ -44,6 +46,10 @@ enum Command {
     Elevate(transform::ElevateArgs),
     /// Run every proof in proofs/ and print one line per claim.
     Prove(prove::Args),
+    /// Are two curves or rect patches the same up to reparameterization?
+    Coincide(coincide::Args),
+    /// Group a JSON array of curves/rect patches into coincidence classes.
+    Dedup(dedup::Args),
 }
 
 /// Run the command line; returns the process exit code.
@@ -60,6 +66,8 @@ pub fn main() -> i32 {
         Command::Reparam(a) => transform::reparam(&a),
         Command::Elevate(a) => transform::elevate(&a),
         Command::Prove(a) => return prove::run(&a),
+        Command::Coincide(a) => coincide::run(&a),
+        Command::Dedup(a) => dedup::run(&a),
     };
     match result {
         Ok(v) => {

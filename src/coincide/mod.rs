@@ -31,7 +31,7 @@ mod boundary;
 mod view;
 
 pub use boundary::{boundary_curve, shared_boundaries, Edge};
-pub(crate) use view::{Prepared, View};
+pub(crate) use view::{invariant_parts, Prepared, View};
 
 use crate::curve::RationalCurve;
 use crate::error::Error;

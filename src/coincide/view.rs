@@ -23,7 +23,7 @@
 use super::Symmetry;
 use crate::hpoint::HPoint;
 use crate::minimal_degree::Net;
-use crate::scalar::{Field, Ordered, Tolerance};
+use crate::scalar::{Field, Ordered, Scalar, Tolerance};
 
 /// A net split into normalized points and scales, in its own orientation.
 #[derive(Clone, Debug)]
@@ -145,22 +145,38 @@ impl<'a, T: Ordered> View<'a, T> {
             return T::zero();
         }
         let (pu, pv) = self.pivots();
-        let (a, b) = (pu.unwrap_or(1), pv.unwrap_or(1));
-        let s00 = self.scale(0, 0);
-        let mut num = self.scale(i, j).pow_u32((a * b) as u32);
-        let mut den = T::one();
-        let e00 = (i * b + j * a) as i64 - (a * b) as i64;
-        if e00 >= 0 {
-            num = num * s00.pow_u32(e00 as u32);
-        } else {
-            den = den * s00.pow_u32((-e00) as u32);
-        }
-        if let Some(a) = pu {
-            den = den * self.scale(a, 0).pow_u32((i * b) as u32);
-        }
-        if let Some(b) = pv {
-            den = den * self.scale(0, b).pow_u32((j * a) as u32);
-        }
+        let (num, den) = invariant_parts(|a, b| self.scale(a, b).clone(), i, j, pu, pv);
         num / den
     }
+}
+
+/// Numerator and denominator of the weight invariant
+/// `I_{i,j} = s_{i,j}^{ab} · s_{0,0}^{ib + ja − ab} / (s_{a,0}^{ib} · s_{0,b}^{ja})`
+/// from the scales `s`, with pivots `a = pu`, `b = pv` (a missing pivot, for
+/// a direction of degree 0, counts as 1 with no factor). Ring operations
+/// only, so the proofs run it on symbols.
+pub(crate) fn invariant_parts<T: Scalar>(
+    s: impl Fn(usize, usize) -> T,
+    i: usize,
+    j: usize,
+    pu: Option<usize>,
+    pv: Option<usize>,
+) -> (T, T) {
+    let (a, b) = (pu.unwrap_or(1), pv.unwrap_or(1));
+    let s00 = s(0, 0);
+    let mut num = s(i, j).pow_u32((a * b) as u32);
+    let mut den = T::one();
+    let e00 = (i * b + j * a) as i64 - (a * b) as i64;
+    if e00 >= 0 {
+        num = num * s00.pow_u32(e00 as u32);
+    } else {
+        den = den * s00.pow_u32((-e00) as u32);
+    }
+    if let Some(a) = pu {
+        den = den * s(a, 0).pow_u32((i * b) as u32);
+    }
+    if let Some(b) = pv {
+        den = den * s(0, b).pow_u32((j * a) as u32);
+    }
+    (num, den)
 }
