@@ -29,7 +29,7 @@ use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::modp::Fp;
 use crate::rect::RectPatch;
-use crate::scalar::{binomial_scalar, Field, Scalar, Tolerance};
+use crate::scalar::{binomial_scalar, Field, Ordered, Scalar, Tolerance};
 use crate::upoly::{BPoly, UPoly};
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
@@ -120,13 +120,13 @@ pub(crate) fn power_components<T: Scalar>(net: &Net<T>) -> Vec<Vec<Vec<T>>> {
 }
 
 /// The actual bidegree of power grids: the largest `(p, q)` with a
-/// coefficient that is not zero within `tol`, over all components.
-fn actual_degree<T: Scalar>(comps: &[Vec<Vec<T>>], tol: Tolerance) -> (usize, usize) {
+/// coefficient that is not zero by `is_zero`, over all components.
+fn actual_degree<T>(comps: &[Vec<Vec<T>>], is_zero: impl Fn(&T, &[Vec<T>]) -> bool) -> (usize, usize) {
     let (mut m, mut n) = (0, 0);
     for grid in comps {
         for (p, row) in grid.iter().enumerate() {
             for (q, a) in row.iter().enumerate() {
-                if !a.is_zero_within(tol) {
+                if !is_zero(a, grid) {
                     m = m.max(p);
                     n = n.max(q);
                 }
@@ -161,20 +161,62 @@ fn net_from_power<T: Field>(comps: &[Vec<Vec<T>>], m: usize, n: usize) -> Net<T>
 }
 
 /// Undo degree elevation only: write the net in the Bernstein basis of its
-/// actual bidegree, treating power coefficients within `tol` of zero as
-/// zero (exact for exact `T`; the `f64` path of [`coincide`](crate::coincide)).
-pub(crate) fn drop_elevation<T: Field>(net: &Net<T>, tol: Tolerance) -> Net<T> {
+/// actual bidegree, treating a power coefficient as zero when it is within
+/// `tol` relative to the largest coefficient of its component (exact for
+/// exact `T`; the `f64` path of [`coincide`](crate::coincide)).
+pub(crate) fn drop_elevation<T: Ordered>(net: &Net<T>, tol: Tolerance) -> Net<T> {
     let comps = power_components(net);
-    let (m, n) = actual_degree(&comps, tol);
+    let (m, n) = actual_degree(&comps, |a, grid| {
+        let big = grid
+            .iter()
+            .flatten()
+            .map(Ordered::abs_val)
+            .fold(T::zero(), |x, y| if y > x { y } else { x });
+        a.is_zero() || (big.is_positive_within(Tolerance::EXACT) && (a.clone() / &big).is_zero_within(tol))
+    });
     if (m, n) == (net.len() - 1, net[0].len() - 1) {
         return net.clone();
     }
     net_from_power(&comps, m, n)
 }
 
-/// The gcd of the components and the components divided by it.
-fn remove_common_factor<T: Field>(comps: &[Vec<Vec<T>>]) -> (Vec<BPoly<T>>, BPoly<T>) {
+/// Divide every polynomial by the gcd of their contents in `K[v]` (the
+/// common factor that depends on `v` alone); returns the quotients and it.
+fn divide_pure_v<T: Field>(polys: Vec<BPoly<T>>) -> (Vec<BPoly<T>>, UPoly<T>) {
+    let mut c = UPoly::zero();
+    for p in &polys {
+        if c.degree() == Some(0) {
+            break;
+        }
+        c = c.gcd(&p.content());
+    }
+    if c.degree().is_none_or(|d| d == 0) {
+        return (polys, UPoly::constant(T::one()));
+    }
+    let q = polys
+        .iter()
+        .map(|p| p.div_v(&c).expect("the content divides every coefficient"))
+        .collect();
+    (q, c)
+}
+
+/// The gcd of the components and the components divided by it, in three
+/// steps: the factor in v alone (gcd of contents), the factor in u alone
+/// (the same on the transposed polynomials), then a mixed factor by the
+/// primitive pseudo-remainder gcd — skipped when `coprime` certifies there
+/// is none. The factor returned has leading coefficient 1.
+fn remove_common_factor<T: Field>(
+    comps: &[Vec<Vec<T>>],
+    coprime: impl Fn(&[BPoly<T>]) -> bool,
+) -> (Vec<BPoly<T>>, BPoly<T>) {
     let polys: Vec<BPoly<T>> = comps.iter().map(|g| BPoly::from_grid(g)).collect();
+    let (polys, gv) = divide_pure_v(polys);
+    let (transposed, gu) = divide_pure_v(polys.iter().map(BPoly::transpose).collect());
+    let polys: Vec<BPoly<T>> = transposed.iter().map(BPoly::transpose).collect();
+    let pure = BPoly::new(vec![gv]).mul(&BPoly::new(vec![gu]).transpose());
+    if coprime(&polys) {
+        return (polys, pure);
+    }
     let mut g = BPoly::new(vec![]);
     for p in &polys {
         if g.is_nonzero_constant() {
@@ -183,13 +225,13 @@ fn remove_common_factor<T: Field>(comps: &[Vec<Vec<T>>]) -> (Vec<BPoly<T>>, BPol
         g = g.gcd(p);
     }
     if g.is_zero() || g.is_nonzero_constant() {
-        return (polys, BPoly::from_grid(&[vec![T::one()]]));
+        return (polys, pure);
     }
     let quotients = polys
         .iter()
         .map(|p| p.div_exact(&g).expect("the gcd divides every component"))
         .collect();
-    (quotients, g)
+    (quotients, pure.mul(&g))
 }
 
 /// The result of reducing a curve or patch to its minimal degree.
@@ -229,7 +271,7 @@ pub(crate) fn minimal_net(net: &Net<BigRational>) -> Minimal<Net<BigRational>> {
         };
     }
     let comps = power_components(net);
-    let (mut quotients, mut g) = remove_common_factor(&comps);
+    let (mut quotients, mut g) = remove_common_factor(&comps, coprime_mod_p);
     let g00 = g.coeffs().first().and_then(|c| c.coeffs().first()).cloned();
     if g00.is_some_and(|x| x.is_negative()) {
         let minus = UPoly::constant(-BigRational::from_integer(1.into()));
@@ -285,9 +327,31 @@ pub(crate) fn certified_minimal(net: &Net<BigRational>) -> bool {
     }
     let comps = power_components(&image);
     let (m, n) = (net.len() - 1, net[0].len() - 1);
-    actual_degree(&comps, Tolerance::EXACT) == (m, n)
-        && coprime_in(&comps, m, |g| specialize_v(g, Fp::new(PROBE_V)))
-        && coprime_in(&comps, n, |g| specialize_u(g, Fp::new(PROBE_U)))
+    actual_degree(&comps, |a, _| a.is_zero()) == (m, n) && coprime_fp(&comps, (m, n))
+}
+
+/// Both coprimality checks of [`certified_minimal`] on power grids over
+/// F_p whose (maximal) bidegree is `(m, n)`.
+fn coprime_fp(comps: &[Vec<Vec<Fp>>], (m, n): (usize, usize)) -> bool {
+    coprime_in(comps, m, |g| specialize_v(g, Fp::new(PROBE_V)))
+        && coprime_in(comps, n, |g| specialize_u(g, Fp::new(PROBE_U)))
+}
+
+/// The certificate of [`certified_minimal`] for polynomials over Q: `true`
+/// proves they have no common factor of positive degree.
+fn coprime_mod_p(polys: &[BPoly<BigRational>]) -> bool {
+    let m = polys.iter().filter_map(BPoly::deg_u).max().unwrap_or(0);
+    let n = polys.iter().filter_map(BPoly::deg_v).max().unwrap_or(0);
+    let image: Option<Vec<Vec<Vec<Fp>>>> = polys
+        .iter()
+        .map(|p| {
+            p.to_grid(m, n)
+                .iter()
+                .map(|row| row.iter().map(Fp::from_rational_checked).collect())
+                .collect()
+        })
+        .collect();
+    image.is_some_and(|g| coprime_fp(&g, (m, n)))
 }
 
 /// No common factor of positive degree in the direction whose specialized

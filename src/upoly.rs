@@ -331,6 +331,36 @@ impl<T: Field> BPoly<T> {
         a.primitive_part().mul_v(&c).normalized()
     }
 
+    /// `self / c(v)` when `c` divides every coefficient, else `None`.
+    pub fn div_v(&self, c: &UPoly<T>) -> Option<Self> {
+        let q: Option<Vec<UPoly<T>>> = self.coeffs.iter().map(|a| a.div_exact(c)).collect();
+        q.map(Self::new)
+    }
+
+    /// `self · other`.
+    pub fn mul(&self, other: &Self) -> Self {
+        let mut out = vec![UPoly::zero(); (self.coeffs.len() + other.coeffs.len()).saturating_sub(1)];
+        for (i, a) in self.coeffs.iter().enumerate() {
+            for (j, b) in other.coeffs.iter().enumerate() {
+                out[i + j] = out[i + j].add(&a.mul(b));
+            }
+        }
+        Self::new(out)
+    }
+
+    /// The same polynomial with `u` and `v` exchanged.
+    pub fn transpose(&self) -> Self {
+        let (Some(m), Some(n)) = (self.deg_u(), self.deg_v()) else {
+            return self.clone();
+        };
+        let g = self.to_grid(m, n);
+        Self::new(
+            (0..=n)
+                .map(|q| UPoly::new(g.iter().map(|r| r[q].clone()).collect()))
+                .collect(),
+        )
+    }
+
     /// The multiple with leading coefficient 1 (zero stays zero).
     pub fn normalized(&self) -> Self {
         match self.lead().and_then(UPoly::lead) {
