@@ -118,9 +118,90 @@ pub fn canonical_key(p: &Patch<BigRational>) -> Result<CanonicalKey, Error> {
     })
 }
 
+impl CanonicalKey {
+    /// An injective byte encoding of the key (length-prefixed numerators
+    /// and denominators), compact enough to keep one per class in memory.
+    pub fn to_bytes(&self) -> Vec<u8> {
+        let mut out = vec![u8::from(self.curve)];
+        let usize_bytes = |out: &mut Vec<u8>, x: usize| out.extend_from_slice(&(x as u64).to_le_bytes());
+        usize_bytes(&mut out, self.degree.0);
+        usize_bytes(&mut out, self.degree.1);
+        let rational = |out: &mut Vec<u8>, q: &BigRational| {
+            for part in [q.numer(), q.denom()] {
+                let (sign, bytes) = part.to_bytes_le();
+                out.push(sign as u8);
+                out.extend_from_slice(&(bytes.len() as u32).to_le_bytes());
+                out.extend_from_slice(&bytes);
+            }
+        };
+        for p in &self.points {
+            match p {
+                None => out.push(0),
+                Some(p) => {
+                    out.push(1);
+                    out.extend_from_slice(&(p.len() as u32).to_le_bytes());
+                    p.iter().for_each(|x| rational(&mut out, x));
+                }
+            }
+        }
+        for (sign, x) in &self.invariants {
+            out.push(*sign as u8);
+            rational(&mut out, x);
+        }
+        out
+    }
+}
+
+/// Streaming grouping into coincidence classes: one exact canonical key
+/// per input, one compact key ([`CanonicalKey::to_bytes`]) kept per class,
+/// O(1) expected time per input.
+///
+/// ```
+/// use exact_bezier::{Deduper, Patch, RationalCurve, ratio};
+/// use num_rational::BigRational;
+/// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+/// let a = RationalCurve::new(vec![p(0), p(1), p(3)], vec![ratio(1, 1), ratio(2, 1), ratio(1, 1)]).unwrap();
+/// let mut d = Deduper::default();
+/// assert_eq!(d.insert(&Patch::Curve(a.clone())).unwrap(), 0);
+/// assert_eq!(d.insert(&Patch::Curve(a.mobius(&ratio(1, 5)))).unwrap(), 0);
+/// assert_eq!(d.insert(&Patch::Curve(a.elevate(1).scale_weights(&ratio(1, 2)).reverse())).unwrap(), 0);
+/// assert_eq!(d.classes(), vec![vec![0, 1, 2]]);
+/// ```
+#[derive(Clone, Debug, Default)]
+pub struct Deduper {
+    index: HashMap<Box<[u8]>, usize>,
+    classes: Vec<Vec<usize>>,
+    seen: usize,
+}
+
+impl Deduper {
+    /// Add the next input (its index is the number inserted before it);
+    /// returns its class id (classes are numbered by first appearance).
+    ///
+    /// # Errors
+    ///
+    /// As [`canonical_key`].
+    pub fn insert(&mut self, p: &Patch<BigRational>) -> Result<usize, Error> {
+        let key = canonical_key(p)?.to_bytes().into_boxed_slice();
+        let next = self.classes.len();
+        let id = *self.index.entry(key).or_insert(next);
+        if id == next {
+            self.classes.push(Vec::new());
+        }
+        self.classes[id].push(self.seen);
+        self.seen += 1;
+        Ok(id)
+    }
+
+    /// The classes: member indices in input order, classes by first member.
+    pub fn classes(self) -> Vec<Vec<usize>> {
+        self.classes
+    }
+}
+
 /// Group patches into coincidence classes by their canonical keys, in
-/// O(N) expected time: each class lists member indices in input order;
-/// classes are ordered by their first member.
+/// O(N) expected time (see [`Deduper`]): each class lists member indices in
+/// input order; classes are ordered by their first member.
 ///
 /// ```
 /// use exact_bezier::{dedup, Patch, RationalCurve, ratio};
@@ -137,16 +218,10 @@ pub fn canonical_key(p: &Patch<BigRational>) -> Result<CanonicalKey, Error> {
 ///
 /// As [`canonical_key`], naming the element.
 pub fn dedup(patches: &[Patch<BigRational>]) -> Result<Vec<Vec<usize>>, Error> {
-    let mut index: HashMap<CanonicalKey, usize> = HashMap::with_capacity(patches.len());
-    let mut classes: Vec<Vec<usize>> = Vec::new();
+    let mut d = Deduper::default();
     for (k, p) in patches.iter().enumerate() {
-        let key = canonical_key(p).map_err(|e| Error::Format(format!("element {k}: {e}")))?;
-        let next = classes.len();
-        let id = *index.entry(key).or_insert(next);
-        if id == next {
-            classes.push(Vec::new());
-        }
-        classes[id].push(k);
+        d.insert(p)
+            .map_err(|e| Error::Format(format!("element {k}: {e}")))?;
     }
-    Ok(classes)
+    Ok(d.classes())
 }

@@ -56,7 +56,7 @@ mod upoly;
 pub mod proofs;
 
 pub use bernstein::{bernstein, bernstein_all};
-pub use canonical::{canonical_key, dedup, CanonicalKey};
+pub use canonical::{canonical_key, dedup, CanonicalKey, Deduper};
 pub use coincide::{
     boundary_curve, coincide, coincide_curves, coincide_f64, coincide_rects, shared_boundaries,
     Coincidence, Edge, MobiusParam, NthRoot, ReductionInfo, Symmetry, Witness,
