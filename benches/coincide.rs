@@ -27,13 +27,20 @@ impl Gen {
     }
     fn rational(&mut self, lo: i64, hi: i64) -> Q {
         let span = (hi - lo + 1) as u64;
-        ratio(lo + (self.next() % span) as i64, 1 + (self.next() % 100) as i64)
+        ratio(
+            lo + (self.next() % span) as i64,
+            1 + (self.next() % 100) as i64,
+        )
     }
 }
 
 fn bicubic(g: &mut Gen) -> RectPatch<Q> {
     let pts = (0..4)
-        .map(|_| (0..4).map(|_| (0..3).map(|_| g.rational(-1000, 1000)).collect()).collect())
+        .map(|_| {
+            (0..4)
+                .map(|_| (0..3).map(|_| g.rational(-1000, 1000)).collect())
+                .collect()
+        })
         .collect();
     let ws = (0..4)
         .map(|_| (0..4).map(|_| g.rational(1, 1000)).collect())
@@ -45,8 +52,14 @@ fn bicubic(g: &mut Gen) -> RectPatch<Q> {
 fn copy_of(r: &RectPatch<Q>, g: &mut Gen) -> RectPatch<Q> {
     let alpha = ratio(1 + (g.next() % 98) as i64, 99);
     let beta = ratio(1 + (g.next() % 98) as i64, 99);
-    let sym = Symmetry::all().nth((g.next() % 8) as usize).expect("8 symmetries");
-    sym.apply_rect(&r.mobius_u(&alpha).mobius_v(&beta).scale_weights(&ratio(7, 3)))
+    let sym = Symmetry::all()
+        .nth((g.next() % 8) as usize)
+        .expect("8 symmetries");
+    sym.apply_rect(
+        &r.mobius_u(&alpha)
+            .mobius_v(&beta)
+            .scale_weights(&ratio(7, 3)),
+    )
 }
 
 fn pairs(c: &mut Criterion) {
@@ -65,7 +78,9 @@ fn pairs(c: &mut Criterion) {
             bch.iter(|| coincide(black_box(&pa), black_box(&pb)).expect("valid"))
         });
         group.bench_function("f64", |bch| {
-            bch.iter(|| coincide_f64(black_box(&fa), black_box(&fb), Tolerance(1e-9)).expect("valid"))
+            bch.iter(|| {
+                coincide_f64(black_box(&fa), black_box(&fb), Tolerance(1e-9)).expect("valid")
+            })
         });
         group.bench_function("filtered", |bch| {
             bch.iter(|| coincide_filtered(black_box(&pa), black_box(&pb)).expect("valid"))
@@ -91,20 +106,23 @@ fn dedup_100k(c: &mut Criterion) {
     const N: usize = 100_000;
     let mut group = c.benchmark_group("dedup");
     group.sample_size(10);
-    group.bench_function("100k bicubics, 50k planted copies (incl. generation)", |bch| {
-        bch.iter_batched(
-            Deduper::default,
-            |mut d| {
-                for k in 0..N {
-                    d.insert(&stream_patch(k, N)).expect("valid");
-                }
-                let classes = d.classes();
-                assert_eq!(classes.len(), N / 2);
-                classes
-            },
-            BatchSize::PerIteration,
-        )
-    });
+    group.bench_function(
+        "100k bicubics, 50k planted copies (incl. generation)",
+        |bch| {
+            bch.iter_batched(
+                Deduper::default,
+                |mut d| {
+                    for k in 0..N {
+                        d.insert(&stream_patch(k, N)).expect("valid");
+                    }
+                    let classes = d.classes();
+                    assert_eq!(classes.len(), N / 2);
+                    classes
+                },
+                BatchSize::PerIteration,
+            )
+        },
+    );
     group.bench_function("generation of the 100k stream alone", |bch| {
         bch.iter(|| (0..N).map(|k| black_box(stream_patch(k, N))).count())
     });

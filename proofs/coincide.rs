@@ -24,9 +24,9 @@
 
 use super::{Claim, Verdict};
 use crate::coincide::{coincide, invariant_parts};
-use crate::interval::coincide_filtered;
 use crate::curve::RationalCurve;
 use crate::hpoint::HPoint;
+use crate::interval::coincide_filtered;
 use crate::io::{read_patches, Patch};
 use crate::minimal_degree::{minimal_rect, multiply_components};
 use crate::poly::Poly;
@@ -39,7 +39,11 @@ const SOURCE: &str = "ours (issue 4)";
 /// Symbolic weights `prefix{i}_{j}` of bidegree (m, n).
 fn weights(prefix: &str, m: usize, n: usize) -> Vec<Vec<Poly>> {
     (0..=m)
-        .map(|i| (0..=n).map(|j| Poly::var(&format!("{prefix}{i}_{j}"))).collect())
+        .map(|i| {
+            (0..=n)
+                .map(|j| Poly::var(&format!("{prefix}{i}_{j}")))
+                .collect()
+        })
         .collect()
 }
 
@@ -47,7 +51,11 @@ fn symbolic_patch(w: &[Vec<Poly>]) -> RectPatch<Poly> {
     let pts = w
         .iter()
         .enumerate()
-        .map(|(i, r)| (0..r.len()).map(|j| vec![Poly::var(&format!("p{i}_{j}"))]).collect())
+        .map(|(i, r)| {
+            (0..r.len())
+                .map(|j| vec![Poly::var(&format!("p{i}_{j}"))])
+                .collect()
+        })
         .collect();
     RectPatch::new(pts, w.to_vec()).expect("symbolic weights are non-zero")
 }
@@ -138,11 +146,14 @@ fn mobius_after_elevation(m: usize) -> Claim {
         .map(|k| {
             let mut acc = HPoint::zero(1);
             if k <= m {
-                let f = alpha.clone() * binomial_scalar::<Poly>(m + 1 - k, 1) * ratio::<Poly>(1, m as i64 + 1);
+                let f = alpha.clone()
+                    * binomial_scalar::<Poly>(m + 1 - k, 1)
+                    * ratio::<Poly>(1, m as i64 + 1);
                 acc = acc.add(&s[k].scale(&f));
             }
             if k > 0 {
-                let f = one_minus.clone() * Poly::from_int(k as i64) * ratio::<Poly>(1, m as i64 + 1);
+                let f =
+                    one_minus.clone() * Poly::from_int(k as i64) * ratio::<Poly>(1, m as i64 + 1);
                 acc = acc.add(&s[k - 1].scale(&f));
             }
             acc
@@ -160,8 +171,14 @@ fn mobius_after_elevation(m: usize) -> Claim {
 fn factor_splitting() -> Claim {
     let p = |x: i64, y: i64, z: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1), ratio(z, 1)];
     let base = RectPatch::new(
-        vec![vec![p(0, 0, 0), p(0, 1, 2), p(0, 3, 1)], vec![p(2, 0, 1), p(2, 2, 5), p(1, 3, 0)]],
-        vec![vec![ratio(1, 1), ratio(2, 1), ratio(1, 2)], vec![ratio(3, 1), ratio(1, 1), ratio(1, 1)]],
+        vec![
+            vec![p(0, 0, 0), p(0, 1, 2), p(0, 3, 1)],
+            vec![p(2, 0, 1), p(2, 2, 5), p(1, 3, 0)],
+        ],
+        vec![
+            vec![ratio(1, 1), ratio(2, 1), ratio(1, 2)],
+            vec![ratio(3, 1), ratio(1, 1), ratio(1, 1)],
+        ],
     )
     .expect("valid patch");
     let one = || ratio::<BigRational>(1, 1);

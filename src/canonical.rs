@@ -123,7 +123,8 @@ impl CanonicalKey {
     /// and denominators), compact enough to keep one per class in memory.
     pub fn to_bytes(&self) -> Vec<u8> {
         let mut out = vec![u8::from(self.curve)];
-        let usize_bytes = |out: &mut Vec<u8>, x: usize| out.extend_from_slice(&(x as u64).to_le_bytes());
+        let usize_bytes =
+            |out: &mut Vec<u8>, x: usize| out.extend_from_slice(&(x as u64).to_le_bytes());
         usize_bytes(&mut out, self.degree.0);
         usize_bytes(&mut out, self.degree.1);
         let rational = |out: &mut Vec<u8>, q: &BigRational| {

@@ -216,9 +216,12 @@ fn points_disjoint(p: Option<&Vec<Interval>>, q: Option<&Vec<Interval>>) -> bool
 fn corners_differ(a: &Bounds, b: &Bounds, sym: Symmetry) -> bool {
     let (am, an) = a.tdims(sym);
     let (bm, bn) = b.dims();
-    [(0, 0), (1, 0), (0, 1), (1, 1)]
-        .iter()
-        .any(|&(cu, cv)| points_disjoint(a.point(sym, cu * am, cv * an), b.point(Symmetry::IDENTITY, cu * bm, cv * bn)))
+    [(0, 0), (1, 0), (0, 1), (1, 1)].iter().any(|&(cu, cv)| {
+        points_disjoint(
+            a.point(sym, cu * am, cv * an),
+            b.point(Symmetry::IDENTITY, cu * bm, cv * bn),
+        )
+    })
 }
 
 /// Stage 2: under `sym` (same shape), does a control point or an invariant
@@ -227,14 +230,18 @@ fn net_differs(a: &Bounds, b: &Bounds, sym: Symmetry) -> Option<String> {
     let (m, n) = b.dims();
     let id = Symmetry::IDENTITY;
     let positions = || (0..=m).flat_map(move |i| (0..=n).map(move |j| (i, j)));
-    if let Some((i, j)) = positions().find(|&(i, j)| points_disjoint(a.point(sym, i, j), b.point(id, i, j))) {
+    if let Some((i, j)) =
+        positions().find(|&(i, j)| points_disjoint(a.point(sym, i, j), b.point(id, i, j)))
+    {
         return Some(format!("control point P_{{{i},{j}}} differs"));
     }
     positions()
-        .find(|&(i, j)| match (a.invariant(sym, i, j), b.invariant(id, i, j)) {
-            (Some(x), Some(y)) => x.disjoint(&y),
-            _ => false,
-        })
+        .find(
+            |&(i, j)| match (a.invariant(sym, i, j), b.invariant(id, i, j)) {
+                (Some(x), Some(y)) => x.disjoint(&y),
+                _ => false,
+            },
+        )
         .map(|(i, j)| format!("weight invariant I_{{{i},{j}}} differs"))
 }
 
@@ -249,7 +256,11 @@ pub enum DecidedBy {
     Exact,
 }
 
-fn not_coincident(reason: String, a: &Net<BigRational>, b: &Net<BigRational>) -> Coincidence<BigRational> {
+fn not_coincident(
+    reason: String,
+    a: &Net<BigRational>,
+    b: &Net<BigRational>,
+) -> Coincidence<BigRational> {
     let info = |n: &Net<BigRational>| ReductionInfo {
         from: (n.len() - 1, n[0].len() - 1),
         to: (n.len() - 1, n[0].len() - 1),
@@ -295,17 +306,29 @@ pub fn coincide_filtered(
         .filter(|s| !curve || (!s.swap && !s.reverse_v))
         .collect();
     if syms.iter().all(|&s| corners_differ(&ba, &bb, s)) {
-        let reason = format!("corner points differ under all {} symmetries (interval bounds)", syms.len());
+        let reason = format!(
+            "corner points differ under all {} symmetries (interval bounds)",
+            syms.len()
+        );
         return Ok((not_coincident(reason, &na, &nb), DecidedBy::Corners));
     }
     if certified_minimal(&na) && certified_minimal(&nb) {
-        let admissible: Vec<Symmetry> =
-            Symmetry::admissible(curve, ba.dims(), bb.dims()).collect();
-        let reasons: Vec<Option<String>> = admissible.iter().map(|&s| net_differs(&ba, &bb, s)).collect();
+        let admissible: Vec<Symmetry> = Symmetry::admissible(curve, ba.dims(), bb.dims()).collect();
+        let reasons: Vec<Option<String>> = admissible
+            .iter()
+            .map(|&s| net_differs(&ba, &bb, s))
+            .collect();
         if reasons.iter().all(Option::is_some) {
             let reason = match reasons.into_iter().next() {
-                Some(Some(r)) => format!("{r} (interval bounds, best of {} symmetries)", admissible.len()),
-                _ => format!("minimal (bi)degrees differ: {:?} vs {:?}", ba.dims(), bb.dims()),
+                Some(Some(r)) => format!(
+                    "{r} (interval bounds, best of {} symmetries)",
+                    admissible.len()
+                ),
+                _ => format!(
+                    "minimal (bi)degrees differ: {:?} vs {:?}",
+                    ba.dims(),
+                    bb.dims()
+                ),
             };
             return Ok((not_coincident(reason, &na, &nb), DecidedBy::Intervals));
         }

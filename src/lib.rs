@@ -35,8 +35,8 @@
 
 mod bernstein;
 mod canonical;
-mod coincide;
 pub mod cli;
+mod coincide;
 mod curve;
 mod error;
 mod hpoint;

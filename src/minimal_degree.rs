@@ -121,7 +121,10 @@ pub(crate) fn power_components<T: Scalar>(net: &Net<T>) -> Vec<Vec<Vec<T>>> {
 
 /// The actual bidegree of power grids: the largest `(p, q)` with a
 /// coefficient that is not zero by `is_zero`, over all components.
-fn actual_degree<T>(comps: &[Vec<Vec<T>>], is_zero: impl Fn(&T, &[Vec<T>]) -> bool) -> (usize, usize) {
+fn actual_degree<T>(
+    comps: &[Vec<Vec<T>>],
+    is_zero: impl Fn(&T, &[Vec<T>]) -> bool,
+) -> (usize, usize) {
     let (mut m, mut n) = (0, 0);
     for grid in comps {
         for (p, row) in grid.iter().enumerate() {
@@ -144,9 +147,13 @@ fn net_from_power<T: Field>(comps: &[Vec<Vec<T>>], m: usize, n: usize) -> Net<T>
             let cut: Vec<Vec<T>> = g.iter().take(m + 1).map(|r| r[..=n].to_vec()).collect();
             let rows: Vec<Vec<T>> = cut.iter().map(|r| power_to_bernstein(r, n)).collect();
             let cols: Vec<Vec<T>> = (0..=n)
-                .map(|j| power_to_bernstein(&rows.iter().map(|r| r[j].clone()).collect::<Vec<_>>(), m))
+                .map(|j| {
+                    power_to_bernstein(&rows.iter().map(|r| r[j].clone()).collect::<Vec<_>>(), m)
+                })
                 .collect();
-            (0..=m).map(|i| cols.iter().map(|c| c[i].clone()).collect()).collect()
+            (0..=m)
+                .map(|i| cols.iter().map(|c| c[i].clone()).collect())
+                .collect()
         })
         .collect();
     (0..=m)
@@ -172,7 +179,8 @@ pub(crate) fn drop_elevation<T: Ordered>(net: &Net<T>, tol: Tolerance) -> Net<T>
             .flatten()
             .map(Ordered::abs_val)
             .fold(T::zero(), |x, y| if y > x { y } else { x });
-        a.is_zero() || (big.is_positive_within(Tolerance::EXACT) && (a.clone() / &big).is_zero_within(tol))
+        a.is_zero()
+            || (big.is_positive_within(Tolerance::EXACT) && (a.clone() / &big).is_zero_within(tol))
     });
     if (m, n) == (net.len() - 1, net[0].len() - 1) {
         return net.clone();
@@ -278,9 +286,9 @@ pub(crate) fn minimal_net(net: &Net<BigRational>) -> Minimal<Net<BigRational>> {
         g = g.mul_v(&minus);
         quotients = quotients.iter().map(|q| q.mul_v(&minus)).collect();
     }
-    let (m, n) = quotients
-        .iter()
-        .fold((0, 0), |(m, n), q| (m.max(q.deg_u().unwrap_or(0)), n.max(q.deg_v().unwrap_or(0))));
+    let (m, n) = quotients.iter().fold((0, 0), |(m, n), q| {
+        (m.max(q.deg_u().unwrap_or(0)), n.max(q.deg_v().unwrap_or(0)))
+    });
     let grids: Vec<Vec<Vec<BigRational>>> = quotients.iter().map(|q| q.to_grid(m, n)).collect();
     Minimal {
         patch: net_from_power(&grids, m, n),
@@ -356,11 +364,7 @@ fn coprime_mod_p(polys: &[BPoly<BigRational>]) -> bool {
 
 /// No common factor of positive degree in the direction whose specialized
 /// components `spec` gives (degree `deg` expected).
-fn coprime_in(
-    comps: &[Vec<Vec<Fp>>],
-    deg: usize,
-    spec: impl Fn(&[Vec<Fp>]) -> UPoly<Fp>,
-) -> bool {
+fn coprime_in(comps: &[Vec<Vec<Fp>>], deg: usize, spec: impl Fn(&[Vec<Fp>]) -> UPoly<Fp>) -> bool {
     if deg == 0 {
         return true;
     }
@@ -379,7 +383,11 @@ fn coprime_in(
 }
 
 fn specialize_v(grid: &[Vec<Fp>], v0: Fp) -> UPoly<Fp> {
-    UPoly::new(grid.iter().map(|row| UPoly::new(row.clone()).eval(&v0)).collect())
+    UPoly::new(
+        grid.iter()
+            .map(|row| UPoly::new(row.clone()).eval(&v0))
+            .collect(),
+    )
 }
 
 fn specialize_u(grid: &[Vec<Fp>], u0: Fp) -> UPoly<Fp> {
@@ -567,7 +575,10 @@ mod tests {
         let s = sample();
         let f = RectPatch::new(
             vec![vec![vec![ratio::<Q>(0, 1)]; 2]; 2],
-            vec![vec![ratio(1, 1), ratio(1, 1)], vec![ratio(1, 1), ratio(2, 1)]],
+            vec![
+                vec![ratio(1, 1), ratio(1, 1)],
+                vec![ratio(1, 1), ratio(2, 1)],
+            ],
         )
         .unwrap();
         let comps_s = power_components(&s.ctrl().to_vec());

@@ -254,9 +254,13 @@ impl<T: Field> BPoly<T> {
 
     /// The content in `K[v]`: the monic gcd of the coefficients `a_k(v)`.
     pub fn content(&self) -> UPoly<T> {
-        self.coeffs
-            .iter()
-            .fold(UPoly::zero(), |g, c| if g.degree() == Some(0) { g } else { g.gcd(c) })
+        self.coeffs.iter().fold(UPoly::zero(), |g, c| {
+            if g.degree() == Some(0) {
+                g
+            } else {
+                g.gcd(c)
+            }
+        })
     }
 
     fn map_coeffs(&self, f: impl Fn(&UPoly<T>) -> UPoly<T>) -> Self {
@@ -269,7 +273,10 @@ impl<T: Field> BPoly<T> {
         if c.is_zero() {
             return self.clone();
         }
-        self.map_coeffs(|a| a.div_exact(&c).expect("the content divides every coefficient"))
+        self.map_coeffs(|a| {
+            a.div_exact(&c)
+                .expect("the content divides every coefficient")
+        })
     }
 
     fn lead(&self) -> Option<&UPoly<T>> {
@@ -339,7 +346,8 @@ impl<T: Field> BPoly<T> {
 
     /// `self · other`.
     pub fn mul(&self, other: &Self) -> Self {
-        let mut out = vec![UPoly::zero(); (self.coeffs.len() + other.coeffs.len()).saturating_sub(1)];
+        let mut out =
+            vec![UPoly::zero(); (self.coeffs.len() + other.coeffs.len()).saturating_sub(1)];
         for (i, a) in self.coeffs.iter().enumerate() {
             for (j, b) in other.coeffs.iter().enumerate() {
                 out[i + j] = out[i + j].add(&a.mul(b));

@@ -198,7 +198,11 @@ fn example1_against_a_standardizing_map_of_itself() {
     let ex1 = fixture("yang_yong_example1");
     let Patch::Rect(r) = &ex1 else { panic!() };
     // α = 3/5, β = 7/10 (Example 3's printed parameters, applied exactly).
-    let moved = Patch::Rect(r.mobius_u(&ratio(3, 5)).mobius_v(&ratio(7, 10)).scale_weights(&ratio(4, 1)));
+    let moved = Patch::Rect(
+        r.mobius_u(&ratio(3, 5))
+            .mobius_v(&ratio(7, 10))
+            .scale_weights(&ratio(4, 1)),
+    );
     let c = coincide(&ex1, &moved).unwrap();
     assert!(c.coincident);
     let w = c.witness.unwrap();
@@ -213,12 +217,18 @@ fn shared_boundary_between_two_patches() {
     let p = |x: i64, y: i64, z: i64| vec![ratio::<Q>(x, 1), ratio(y, 1), ratio(z, 1)];
     let w = |x: i64| ratio::<Q>(x, 1);
     let a = RectPatch::new(
-        vec![vec![p(0, 0, 0), p(0, 1, 1), p(0, 2, 0)], vec![p(1, 0, 2), p(1, 1, 3), p(1, 2, 1)]],
+        vec![
+            vec![p(0, 0, 0), p(0, 1, 1), p(0, 2, 0)],
+            vec![p(1, 0, 2), p(1, 1, 3), p(1, 2, 1)],
+        ],
         vec![vec![w(1), w(2), w(3)], vec![w(2), w(5), w(1)]],
     )
     .unwrap();
     // b's v = 0 column is a's u = 1 row reversed, Möbius-moved and elevated.
-    let edge = exact_bezier::boundary_curve(&a, Edge::U1).reverse().mobius(&ratio(1, 3)).elevate(1);
+    let edge = exact_bezier::boundary_curve(&a, Edge::U1)
+        .reverse()
+        .mobius(&ratio(1, 3))
+        .elevate(1);
     let ctrl: Vec<Vec<_>> = edge
         .ctrl()
         .iter()
@@ -250,7 +260,14 @@ fn dedup_finds_planted_duplicates() {
     let classes = dedup(&all).unwrap();
     assert_eq!(
         classes,
-        vec![vec![0], vec![1, 6, 8], vec![2], vec![3], vec![4, 7], vec![5]]
+        vec![
+            vec![0],
+            vec![1, 6, 8],
+            vec![2],
+            vec![3],
+            vec![4, 7],
+            vec![5]
+        ]
     );
 }
 
@@ -259,12 +276,18 @@ fn minimal_degree_of_elevated_then_moved_patch() {
     let p = |x: i64, y: i64| vec![ratio::<Q>(x, 1), ratio(y, 1)];
     let a = RectPatch::new(
         vec![vec![p(0, 0), p(0, 1)], vec![p(1, 0), p(2, 3)]],
-        vec![vec![ratio(1, 1), ratio(2, 1)], vec![ratio(3, 1), ratio(1, 2)]],
+        vec![
+            vec![ratio(1, 1), ratio(2, 1)],
+            vec![ratio(3, 1), ratio(1, 2)],
+        ],
     )
     .unwrap();
     // Möbius after elevation: the factors (α(1−u) + (1−α)u)² (u: elevated twice)
     // and β(1−v) + (1−β)v, found by the gcd.
-    let big = a.elevate(2, 1).mobius_u(&ratio(1, 3)).mobius_v(&ratio(1, 4));
+    let big = a
+        .elevate(2, 1)
+        .mobius_u(&ratio(1, 3))
+        .mobius_v(&ratio(1, 4));
     let red = minimal_rect(&big).unwrap();
     assert!(!red.certified);
     assert_eq!(red.degree_after, (1, 1));
@@ -274,7 +297,10 @@ fn minimal_degree_of_elevated_then_moved_patch() {
     // Möbius before elevation: pure elevation, no factor.
     let plain = a.mobius_u(&ratio(1, 3)).elevate(2, 1);
     assert_eq!(minimal_rect(&plain).unwrap().common_factor, "1");
-    assert_eq!(minimal_rect(&plain).unwrap().patch, a.mobius_u(&ratio(1, 3)));
+    assert_eq!(
+        minimal_rect(&plain).unwrap().patch,
+        a.mobius_u(&ratio(1, 3))
+    );
 }
 
 #[test]
@@ -285,5 +311,55 @@ fn degree_zero_direction_and_curve_patch_mismatch_are_handled() {
     let res = coincide(&Patch::Curve(c), &Patch::Rect(r.clone())).unwrap();
     assert!(!res.coincident);
     let copy = r.mobius_v(&ratio(2, 9)).swap_uv();
-    assert!(coincide(&Patch::Rect(r), &Patch::Rect(copy)).unwrap().coincident);
+    assert!(
+        coincide(&Patch::Rect(r), &Patch::Rect(copy))
+            .unwrap()
+            .coincident
+    );
+}
+
+fn cli(args: &[&str]) -> (i32, serde_json::Value) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_exact-bezier"))
+        .args(args)
+        .output()
+        .unwrap();
+    let v = serde_json::from_slice(&out.stdout).unwrap_or(serde_json::Value::Null);
+    (out.status.code().unwrap(), v)
+}
+
+#[test]
+fn cli_coincide_and_dedup() {
+    let (ex1, ex3) = (
+        "tests/fixtures/yang_yong_example1.json",
+        "tests/fixtures/yang_yong_example3.json",
+    );
+    let (code, v) = cli(&["coincide", ex1, ex3]);
+    assert_eq!(code, 0);
+    assert_eq!(v["coincident"], false);
+    assert!(v["reason"].as_str().unwrap().contains("I_{0,2}"));
+    let (code, v) = cli(&["coincide", ex1, ex1, "--filtered"]);
+    assert_eq!((code, v["coincident"].clone()), (0, true.into()));
+    assert_eq!(v["decided_by"], "exact");
+    let (code, v) = cli(&["coincide", ex1, ex3, "--scalar", "f64", "--tol", "0.05"]);
+    assert_eq!((code, v["coincident"].clone()), (0, true.into()));
+    assert_eq!(cli(&["coincide", ex1, "tests/fixtures/README.md"]).0, 2);
+    assert_eq!(cli(&["coincide", ex1, ex3, "--tol", "1e-3"]).0, 2);
+
+    let dir = std::env::temp_dir().join(format!("coincide-dedup-{}.json", std::process::id()));
+    let text = format!(
+        "[{}, {}, {}]",
+        std::fs::read_to_string(ex1).unwrap(),
+        std::fs::read_to_string(ex3).unwrap(),
+        std::fs::read_to_string(ex1).unwrap()
+    );
+    std::fs::write(&dir, text).unwrap();
+    let (code, v) = cli(&["dedup", dir.to_str().unwrap()]);
+    std::fs::remove_file(&dir).unwrap();
+    assert_eq!(code, 0);
+    assert_eq!(v["classes"], 2);
+    assert_eq!(v["groups"][0]["members"][1]["index"], 2);
+    assert_eq!(
+        v["groups"][0]["members"][1]["witness"]["symmetry"],
+        "identity"
+    );
 }

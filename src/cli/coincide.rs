@@ -46,9 +46,17 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     let (pa, pb) = (load_one(&a.a)?, load_one(&a.b)?);
     match a.scalar {
         ScalarKind::F64 => {
+            if a.filtered {
+                return Err(Error::Domain(
+                    "--filtered is the exact predicate: it does not combine with --scalar f64"
+                        .into(),
+                ));
+            }
             let tol = a.tol.unwrap_or(Tolerance::default().0);
             if !tol.is_finite() || tol < 0.0 {
-                return Err(Error::Domain(format!("--tol {tol} must be a finite number ≥ 0")));
+                return Err(Error::Domain(format!(
+                    "--tol {tol} must be a finite number ≥ 0"
+                )));
             }
             let c = crate::coincide::coincide_f64(&pa.to_f64(), &pb.to_f64(), Tolerance(tol))?;
             let mut v = c.to_json();
@@ -58,7 +66,8 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         ScalarKind::Exact => {
             if a.tol.is_some() {
                 return Err(Error::Domain(
-                    "--tol applies to --scalar f64 only: the exact decision has no tolerance".into(),
+                    "--tol applies to --scalar f64 only: the exact decision has no tolerance"
+                        .into(),
                 ));
             }
             if a.filtered {

@@ -10,7 +10,7 @@
 //! The decision: reduce both inputs to minimal bidegree
 //! ([`minimal_rect`](crate::minimal_rect)); then for each admissible symmetry
 //! compare the normalized control points exactly and the weight invariants
-//! `I_{i,j}` (see [`Prepared`](view)). After reduction, Möbius maps and
+//! `I_{i,j}` (module `view`). After reduction, Möbius maps and
 //! scaling act on the homogeneous control points by `H_{i,j} ↦ k ρ^i σ^j H_{i,j}`
 //! with `ρ = (1 − α)/α > 0`, `σ = (1 − β)/β > 0` (eq. 4 with `k` absorbing
 //! `α^m β^n`), so two reduced nets coincide iff their normalized points agree
@@ -226,7 +226,9 @@ pub struct Coincidence<T> {
 fn param_json<T: JsonScalar>(p: &MobiusParam<T>) -> Value {
     match p {
         MobiusParam::None => Value::Null,
-        MobiusParam::Value { rho, alpha } => json!({"rho": rho.to_json(), "alpha": alpha.to_json()}),
+        MobiusParam::Value { rho, alpha } => {
+            json!({"rho": rho.to_json(), "alpha": alpha.to_json()})
+        }
         MobiusParam::Power { exponent, power } => {
             json!({"rho_power": {"exponent": exponent, "value": power.to_json()}})
         }
@@ -236,9 +238,7 @@ fn param_json<T: JsonScalar>(p: &MobiusParam<T>) -> Value {
 impl<T: JsonScalar> Coincidence<T> {
     /// The CLI object `{"coincident", "reason", "witness", "reductions"}`.
     pub fn to_json(&self) -> Value {
-        let red = |r: &ReductionInfo| {
-            json!({"from": [r.from.0, r.from.1], "to": [r.to.0, r.to.1], "common_factor": r.common_factor})
-        };
+        let red = |r: &ReductionInfo| json!({"from": [r.from.0, r.from.1], "to": [r.to.0, r.to.1], "common_factor": r.common_factor});
         let witness = self.witness.as_ref().map_or(Value::Null, |w| {
             json!({
                 "symmetry": w.symmetry.to_string(),
@@ -298,7 +298,10 @@ fn compare<T: NthRoot + fmt::Display>(
     for (idx, &(i, j)) in positions.iter().enumerate() {
         let same = match (va.hat(i, j), vb.hat(i, j)) {
             (None, None) => true,
-            (Some(p), Some(q)) => p.iter().zip(q).all(|(x, y)| (x.clone() - y).is_zero_within(tol)),
+            (Some(p), Some(q)) => p
+                .iter()
+                .zip(q)
+                .all(|(x, y)| (x.clone() - y).is_zero_within(tol)),
             _ => false,
         };
         if !same {
@@ -403,7 +406,10 @@ fn decide<T: NthRoot + fmt::Display>(
                 };
             }
             Err(e) => {
-                if best.as_ref().is_none_or(|b| (e.stage, e.position) > (b.stage, b.position)) {
+                if best
+                    .as_ref()
+                    .is_none_or(|b| (e.stage, e.position) > (b.stage, b.position))
+                {
                     best = Some(e);
                 }
             }
@@ -596,7 +602,11 @@ mod tests {
     #[test]
     fn curve_copies_coincide_with_exact_witness() {
         let a = curve();
-        let b = a.mobius(&ratio(2, 7)).scale_weights(&ratio(5, 3)).reverse().elevate(2);
+        let b = a
+            .mobius(&ratio(2, 7))
+            .scale_weights(&ratio(5, 3))
+            .reverse()
+            .elevate(2);
         let c = coincide_curves(&a, &b).unwrap();
         assert!(c.coincident, "{}", c.reason);
         let w = c.witness.unwrap();
@@ -622,6 +632,11 @@ mod tests {
         let b = RationalCurve::new(pts, w2).unwrap();
         let c = coincide_curves(&a, &b).unwrap();
         assert!(!c.coincident);
-        assert!(c.reason.starts_with("weight invariant I_{2,0} is 1/12 vs 1/8"), "{}", c.reason);
+        assert!(
+            c.reason
+                .starts_with("weight invariant I_{2,0} is 1/12 vs 1/8"),
+            "{}",
+            c.reason
+        );
     }
 }
