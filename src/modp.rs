@@ -43,27 +43,34 @@ impl Fp {
     /// The image of a rational `a/b` (`a·b⁻¹ mod p`), or `None` when `p`
     /// divides the denominator.
     pub fn from_rational_checked(q: &BigRational) -> Option<Fp> {
+        let num = reduce(q.numer());
+        if q.denom().is_one() {
+            return Some(num);
+        }
         let den = reduce(q.denom());
         if den.is_zero() {
             return None;
         }
-        Some(reduce(q.numer()) / den)
+        Some(num / den)
     }
 
-    fn pow(self, mut e: u64) -> Fp {
-        let (mut acc, mut base) = (Fp(1), self);
-        while e > 0 {
-            if e & 1 == 1 {
-                acc = acc * base;
-            }
-            base = base * base;
-            e >>= 1;
+    /// `self⁻¹` by the extended Euclidean algorithm (`None` for 0).
+    fn inverse(self) -> Option<Fp> {
+        let (mut r0, mut r1) = (MODULUS as i128, self.0 as i128);
+        let (mut t0, mut t1) = (0i128, 1i128);
+        while r1 != 0 {
+            let q = r0 / r1;
+            (r0, r1) = (r1, r0 - q * r1);
+            (t0, t1) = (t1, t0 - q * t1);
         }
-        acc
+        (r0 == 1).then(|| Fp(t0.rem_euclid(MODULUS as i128) as u64))
     }
 }
 
 fn reduce(n: &BigInt) -> Fp {
+    if let Some(small) = n.to_i128() {
+        return Fp(small.rem_euclid(MODULUS as i128) as u64);
+    }
     let r = n.mod_floor(&BigInt::from(MODULUS));
     Fp(r.to_u64().expect("a residue below p fits in u64"))
 }
@@ -107,9 +114,7 @@ impl Div for Fp {
     type Output = Fp;
     /// **Panics if `o` is zero.**
     fn div(self, o: Fp) -> Fp {
-        assert!(o.0 != 0, "division by zero in Z/pZ");
-        // Fermat: o⁻¹ = o^{p−2}.
-        self * o.pow(MODULUS - 2)
+        self * o.inverse().expect("division by zero in Z/pZ")
     }
 }
 impl<'a> Add<&'a Fp> for Fp {
@@ -152,7 +157,10 @@ impl One for Fp {
 
 impl Scalar for Fp {
     fn from_i64(n: i64) -> Self {
-        reduce(&BigInt::from(n))
+        Fp(n.rem_euclid(MODULUS as i64) as u64)
+    }
+    fn from_bigint(n: &BigInt) -> Self {
+        reduce(n)
     }
     /// **Panics if `p` divides the denominator** (use
     /// [`Fp::from_rational_checked`] on data).

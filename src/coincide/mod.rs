@@ -259,10 +259,12 @@ impl<T: JsonScalar> Coincidence<T> {
 
 /// Why one symmetry failed: `stage` 0 points, 1 signs, 2 invariants; the
 /// furthest failure over all symmetries is reported.
-struct Mismatch {
+/// The text is built only for the reported failure (formatting numbers,
+/// especially `f64`, costs more than the comparison).
+struct Mismatch<'a> {
     stage: u8,
     position: usize,
-    text: String,
+    text: Box<dyn Fn() -> String + 'a>,
 }
 
 fn point_text<T: fmt::Display>(h: &[T]) -> String {
@@ -287,11 +289,11 @@ fn close<T: Ordered>(x: &T, y: &T, tol: Tolerance) -> bool {
 }
 
 /// Compare b's view with a's view position by position (same shape).
-fn compare<T: NthRoot + fmt::Display>(
-    va: &View<'_, T>,
-    vb: &View<'_, T>,
+fn compare<'a, T: NthRoot + fmt::Display>(
+    va: View<'a, T>,
+    vb: View<'a, T>,
     tol: Tolerance,
-) -> Result<Witness<T>, Mismatch> {
+) -> Result<Witness<T>, Mismatch<'a>> {
     let positions: Vec<(usize, usize)> = (0..=va.m)
         .flat_map(|i| (0..=va.n).map(move |j| (i, j)))
         .collect();
@@ -309,11 +311,13 @@ fn compare<T: NthRoot + fmt::Display>(
             return Err(Mismatch {
                 stage: 0,
                 position: idx,
-                text: format!(
-                    "control point P_{{{i},{j}}} differs: {} vs {}",
-                    show(va.hat(i, j)),
-                    show(vb.hat(i, j))
-                ),
+                text: Box::new(move || {
+                    format!(
+                        "control point P_{{{i},{j}}} differs: {} vs {}",
+                        show(va.hat(i, j)),
+                        show(vb.hat(i, j))
+                    )
+                }),
             });
         }
     }
@@ -322,7 +326,7 @@ fn compare<T: NthRoot + fmt::Display>(
             return Err(Mismatch {
                 stage: 1,
                 position: idx,
-                text: format!("the sign of ω_{{{i},{j}}}·ω_{{0,0}} differs"),
+                text: Box::new(move || format!("the sign of ω_{{{i},{j}}}·ω_{{0,0}} differs")),
             });
         }
     }
@@ -332,11 +336,11 @@ fn compare<T: NthRoot + fmt::Display>(
             return Err(Mismatch {
                 stage: 2,
                 position: idx,
-                text: format!("weight invariant I_{{{i},{j}}} is {ia} vs {ib}"),
+                text: Box::new(move || format!("weight invariant I_{{{i},{j}}} is {ia} vs {ib}")),
             });
         }
     }
-    Ok(witness(va, vb))
+    Ok(witness(&va, &vb))
 }
 
 /// The Möbius parameters and scale once the nets are known to match.
@@ -391,7 +395,7 @@ fn decide<T: NthRoot + fmt::Display>(
     let mut tried = 0;
     for sym in Symmetry::admissible(curve, (pa.m, pa.n), (pb.m, pb.n)) {
         tried += 1;
-        match compare(&pa.view(sym), &vb, tol) {
+        match compare(pa.view(sym), vb, tol) {
             Ok(w) => {
                 let reason = format!(
                     "same {} up to {} and Möbius/weight scaling",
@@ -420,7 +424,7 @@ fn decide<T: NthRoot + fmt::Display>(
             "minimal (bi)degrees differ: {:?} vs {:?}",
             reductions[0].to, reductions[1].to
         ),
-        Some(e) => format!("{} (best of {tried} symmetries)", e.text),
+        Some(e) => format!("{} (best of {tried} symmetries)", (e.text)()),
     };
     Coincidence {
         coincident: false,

@@ -85,13 +85,21 @@ impl<T: Ordered> Prepared<T> {
 
 /// A [`Prepared`] net seen through a symmetry: position (i, j) of the
 /// transformed net reads position `src(i, j)` of the original.
-#[derive(Clone, Copy, Debug)]
+#[derive(Debug)]
 pub(crate) struct View<'a, T> {
     p: &'a Prepared<T>,
     pub sym: Symmetry,
     pub m: usize,
     pub n: usize,
 }
+
+// Manual impls: a view is a reference, copyable whatever `T` is.
+impl<T> Clone for View<'_, T> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+impl<T> Copy for View<'_, T> {}
 
 impl<'a, T: Ordered> View<'a, T> {
     /// The original position of transformed position (i, j).
