@@ -131,6 +131,9 @@ impl Interval {
     }
 }
 
+/// Interval images of one row of a net: Cartesian points and weights.
+type RowBounds = (Vec<Option<Vec<Interval>>>, Vec<Interval>);
+
 /// Interval images of a net: Cartesian points `P_{i,j}` and weights.
 struct Bounds {
     points: Vec<Vec<Option<Vec<Interval>>>>,
@@ -149,12 +152,11 @@ fn cartesian(h: &HPoint<BigRational>) -> (Option<Vec<Interval>>, Interval) {
 
 impl Bounds {
     fn new(net: &Net<BigRational>) -> Bounds {
-        let (points, weights): (Vec<Vec<Option<Vec<Interval>>>>, Vec<Vec<Interval>>) = net
+        let rows: Vec<RowBounds> = net
             .iter()
-            .map(|row| -> (Vec<Option<Vec<Interval>>>, Vec<Interval>) {
-                row.iter().map(cartesian).unzip()
-            })
-            .unzip();
+            .map(|row| row.iter().map(cartesian).unzip())
+            .collect();
+        let (points, weights) = rows.into_iter().unzip();
         Bounds { points, weights }
     }
 

@@ -410,7 +410,7 @@ fn specialize_u(grid: &[Vec<Fp>], u0: Fp) -> UPoly<Fp> {
     let n = grid.first().map_or(0, Vec::len);
     UPoly::new(
         (0..n)
-            .map(|q| UPoly::new(grid.iter().map(|r| r[q].clone()).collect()).eval(&u0))
+            .map(|q| UPoly::new(grid.iter().map(|r| r[q]).collect()).eval(&u0))
             .collect(),
     )
 }

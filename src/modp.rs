@@ -114,28 +114,29 @@ impl Div for Fp {
     type Output = Fp;
     /// **Panics if `o` is zero.**
     fn div(self, o: Fp) -> Fp {
-        self * o.inverse().expect("division by zero in Z/pZ")
+        let inv = o.inverse().expect("division by zero in Z/pZ");
+        Fp::mul(self, inv)
     }
 }
-impl<'a> Add<&'a Fp> for Fp {
+impl Add<&Fp> for Fp {
     type Output = Fp;
     fn add(self, o: &Fp) -> Fp {
         self + *o
     }
 }
-impl<'a> Sub<&'a Fp> for Fp {
+impl Sub<&Fp> for Fp {
     type Output = Fp;
     fn sub(self, o: &Fp) -> Fp {
         self - *o
     }
 }
-impl<'a> Mul<&'a Fp> for Fp {
+impl Mul<&Fp> for Fp {
     type Output = Fp;
     fn mul(self, o: &Fp) -> Fp {
         self * *o
     }
 }
-impl<'a> Div<&'a Fp> for Fp {
+impl Div<&Fp> for Fp {
     type Output = Fp;
     fn div(self, o: &Fp) -> Fp {
         self / *o
