@@ -26,7 +26,6 @@ use crate::coincide::{net_of, Prepared, Symmetry, View};
 use crate::error::Error;
 use crate::io::Patch;
 use crate::minimal_degree::minimal_net;
-use crate::scalar::Tolerance;
 use num_rational::BigRational;
 use std::cmp::Ordering;
 use std::collections::HashMap;
@@ -77,7 +76,8 @@ fn cmp_points(a: &View<'_, BigRational>, b: &View<'_, BigRational>) -> Ordering 
 
 fn invariants(v: &View<'_, BigRational>) -> Vec<(i8, BigRational)> {
     positions(v.m, v.n)
-        .map(|(i, j)| (v.sign(i, j), v.invariant(i, j)))
+        .map(|(i, j)| v.sign(i, j))
+        .zip(v.invariants())
         .collect()
 }
 
@@ -89,7 +89,7 @@ fn invariants(v: &View<'_, BigRational>) -> Vec<(i8, BigRational)> {
 pub fn canonical_key(p: &Patch<BigRational>) -> Result<CanonicalKey, Error> {
     let (net, curve) = net_of(p)?;
     let red = minimal_net(&net).patch;
-    let prep = Prepared::new(&red, Tolerance::EXACT);
+    let prep = Prepared::new(&red);
     let (m, n) = (prep.m, prep.n);
     let target = if curve { (m, n) } else { (m.min(n), m.max(n)) };
     let views: Vec<View<'_, BigRational>> = Symmetry::admissible(curve, (m, n), target)

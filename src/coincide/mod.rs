@@ -330,8 +330,12 @@ fn compare<'a, T: NthRoot + fmt::Display>(
             });
         }
     }
-    for (idx, &(i, j)) in positions.iter().enumerate() {
-        let (ia, ib) = (va.invariant(i, j), vb.invariant(i, j));
+    let (inv_a, inv_b) = (va.invariants(), vb.invariants());
+    for (idx, (&(i, j), (ia, ib))) in positions
+        .iter()
+        .zip(inv_a.into_iter().zip(inv_b))
+        .enumerate()
+    {
         if !close(&ia, &ib, tol) {
             return Err(Mismatch {
                 stage: 2,
@@ -389,7 +393,7 @@ fn decide<T: NthRoot + fmt::Display>(
     tol: Tolerance,
     reductions: [ReductionInfo; 2],
 ) -> Coincidence<T> {
-    let (pa, pb) = (Prepared::new(na, tol), Prepared::new(nb, tol));
+    let (pa, pb) = (Prepared::new(na), Prepared::new(nb));
     let vb = pb.view(Symmetry::IDENTITY);
     let mut best: Option<Mismatch> = None;
     let mut tried = 0;

@@ -23,7 +23,7 @@
 use super::Symmetry;
 use crate::hpoint::HPoint;
 use crate::minimal_degree::Net;
-use crate::scalar::{Field, Ordered, Scalar, Tolerance};
+use crate::scalar::{Field, Ordered, Scalar};
 
 /// A net split into normalized points and scales, in its own orientation.
 #[derive(Clone, Debug)]
@@ -37,16 +37,19 @@ pub(crate) struct Prepared<T> {
 }
 
 /// The scale coordinate of a homogeneous point: the weight if non-zero,
-/// else the first non-zero coordinate.
-fn scale_of<T: Field>(h: &HPoint<T>, tol: Tolerance) -> Option<T> {
-    if !h.weight().is_zero_within(tol) {
+/// else the first non-zero coordinate. Exact zero tests even for `f64`: a
+/// tiny weight (a Möbius parameter near 0 or 1 makes weights span many
+/// orders of magnitude) is still the scale, and tolerances apply only when
+/// normalized quantities are compared.
+fn scale_of<T: Field>(h: &HPoint<T>) -> Option<T> {
+    if !h.weight().is_zero() {
         return Some(h.weight().clone());
     }
-    h.coords.iter().find(|c| !c.is_zero_within(tol)).cloned()
+    h.coords.iter().find(|c| !c.is_zero()).cloned()
 }
 
 impl<T: Ordered> Prepared<T> {
-    pub fn new(net: &Net<T>, tol: Tolerance) -> Self {
+    pub fn new(net: &Net<T>) -> Self {
         let (m, n) = (net.len() - 1, net[0].len() - 1);
         let mut hat = Vec::with_capacity(m + 1);
         let mut scale = Vec::with_capacity(m + 1);
@@ -54,7 +57,7 @@ impl<T: Ordered> Prepared<T> {
             let mut hr = Vec::with_capacity(n + 1);
             let mut sr = Vec::with_capacity(n + 1);
             for h in row {
-                match scale_of(h, tol) {
+                match scale_of(h) {
                     Some(s) => {
                         let inv = s.recip();
                         hr.push(Some(h.coords.iter().map(|c| c.clone() * &inv).collect()));
@@ -147,14 +150,45 @@ impl<'a, T: Ordered> View<'a, T> {
         }
     }
 
-    /// The weight invariant `I_{i,j}` (0 at a zero position).
-    pub fn invariant(&self, i: usize, j: usize) -> T {
-        if !self.nonzero(i, j) {
-            return T::zero();
-        }
+    /// All weight invariants `I_{i,j}`, row by row (0 at a zero position).
+    ///
+    /// With pivots a = b = 1 (always, for positive weights) they are the
+    /// scales normalized by an exact Möbius map and scaling,
+    /// `I_{i,j} = (s_{i,j}/s_{0,0}) · A^i · B^j` with `A = s_{0,0}/s_{1,0}`,
+    /// `B = s_{0,0}/s_{0,1}` — the same rational as [`invariant_parts`] gives,
+    /// computed with two products per position; otherwise that formula.
+    pub fn invariants(&self) -> Vec<T> {
         let (pu, pv) = self.pivots();
-        let (num, den) = invariant_parts(|a, b| self.scale(a, b).clone(), i, j, pu, pv);
-        num / den
+        let s00 = self.scale(0, 0);
+        let ok = |p: Option<usize>, deg: usize| p == Some(1) || (p.is_none() && deg == 0);
+        let positions = (0..=self.m).flat_map(|i| (0..=self.n).map(move |j| (i, j)));
+        if !(ok(pu, self.m) && ok(pv, self.n)) {
+            return positions
+                .map(|(i, j)| {
+                    if !self.nonzero(i, j) {
+                        return T::zero();
+                    }
+                    let (num, den) = invariant_parts(|a, b| self.scale(a, b).clone(), i, j, pu, pv);
+                    num / den
+                })
+                .collect();
+        }
+        let powers = |pivot: Option<(usize, usize)>, deg: usize| {
+            let base = pivot.map_or_else(T::one, |(a, b)| s00.clone() / self.scale(a, b));
+            let mut out = vec![T::one()];
+            for k in 0..deg {
+                out.push(out[k].clone() * &base);
+            }
+            out
+        };
+        let (pa, pb) = (
+            powers(pu.map(|a| (a, 0)), self.m),
+            powers(pv.map(|b| (0, b)), self.n),
+        );
+        let inv00 = s00.recip();
+        positions
+            .map(|(i, j)| self.scale(i, j).clone() * &inv00 * &pa[i] * &pb[j])
+            .collect()
     }
 }
 
