@@ -1,7 +1,9 @@
 //! Coincidence of bicubic patches: exact vs f64 vs filtered, on three kinds
 //! of pairs (a Möbius/reversed/scaled copy; the same net with one weight
 //! perturbed; an unrelated patch), and `dedup` of 100 000 bicubics with
-//! planted duplicates (streamed through `Deduper`, generated on the fly).
+//! planted duplicates (streamed through `Deduper`, generated on the fly;
+//! `DEDUP_N` overrides the count — one 100 000 iteration takes minutes, and
+//! criterion needs 10).
 //!
 //! Run: `cargo bench --bench coincide -- --warm-up-time 1 --measurement-time 3`
 
@@ -103,30 +105,31 @@ fn stream_patch(k: usize, n: usize) -> Patch<Q> {
 }
 
 fn dedup_100k(c: &mut Criterion) {
-    const N: usize = 100_000;
+    let n: usize = std::env::var("DEDUP_N")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(100_000);
     let mut group = c.benchmark_group("dedup");
     group.sample_size(10);
-    group.bench_function(
-        "100k bicubics, 50k planted copies (incl. generation)",
-        |bch| {
-            bch.iter_batched(
-                Deduper::default,
-                |mut d| {
-                    for k in 0..N {
-                        d.insert(&stream_patch(k, N)).expect("valid");
-                    }
-                    let classes = d.classes();
-                    assert_eq!(classes.len(), N / 2);
-                    classes
-                },
-                BatchSize::PerIteration,
-            )
-        },
-    );
-    group.bench_function("generation of the 100k stream alone", |bch| {
+    let name = format!("{n} bicubics, half planted copies (incl. generation)");
+    group.bench_function(name, |bch| {
+        bch.iter_batched(
+            Deduper::default,
+            |mut d| {
+                for k in 0..n {
+                    d.insert(&stream_patch(k, n)).expect("valid");
+                }
+                let classes = d.classes();
+                assert_eq!(classes.len(), n / 2);
+                classes
+            },
+            BatchSize::PerIteration,
+        )
+    });
+    group.bench_function(format!("generation of the {n} stream alone"), |bch| {
         bch.iter(|| {
-            for k in 0..N {
-                black_box(stream_patch(k, N));
+            for k in 0..n {
+                black_box(stream_patch(k, n));
             }
         })
     });

@@ -223,14 +223,13 @@ pub struct Coincidence<T> {
     pub reductions: [ReductionInfo; 2],
 }
 
-fn param_json<T: JsonScalar>(p: &MobiusParam<T>) -> Value {
+/// `{"rho", "alpha"}` in u, `{"sigma", "beta"}` in v (the paper's names).
+fn param_json<T: JsonScalar>(p: &MobiusParam<T>, (ratio, param): (&str, &str)) -> Value {
     match p {
         MobiusParam::None => Value::Null,
-        MobiusParam::Value { rho, alpha } => {
-            json!({"rho": rho.to_json(), "alpha": alpha.to_json()})
-        }
+        MobiusParam::Value { rho, alpha } => json!({ratio: rho.to_json(), param: alpha.to_json()}),
         MobiusParam::Power { exponent, power } => {
-            json!({"rho_power": {"exponent": exponent, "value": power.to_json()}})
+            json!({format!("{ratio}_power"): {"exponent": exponent, "value": power.to_json()}})
         }
     }
 }
@@ -242,8 +241,8 @@ impl<T: JsonScalar> Coincidence<T> {
         let witness = self.witness.as_ref().map_or(Value::Null, |w| {
             json!({
                 "symmetry": w.symmetry.to_string(),
-                "u": param_json(&w.u),
-                "v": param_json(&w.v),
+                "u": param_json(&w.u, ("rho", "alpha")),
+                "v": param_json(&w.v, ("sigma", "beta")),
                 "k": w.k.as_ref().map_or(Value::Null, JsonScalar::to_json),
                 "corner_weight_ratio": w.corner_ratio.to_json(),
             })
