@@ -151,8 +151,10 @@ proptest! {
         let mut ws = a.weights();
         ws[0][0] = ws[0][0].clone() * ratio::<Q>(3, 2);
         let bent = RectPatch::new(a.points().unwrap(), ws).unwrap();
-        let fbent = Patch::Rect(moved(&bent)).to_f64();
-        prop_assert!(!coincide_f64(&fa, &fbent, Tolerance(1e-6)).unwrap().coincident);
+        let (qa, qbent) = (Patch::Rect(a.clone()), Patch::Rect(moved(&bent)));
+        let exact = coincide(&qa, &qbent).unwrap();
+        let float = coincide_f64(&fa, &qbent.to_f64(), Tolerance(1e-6)).unwrap();
+        prop_assert_eq!(float.coincident, exact.coincident, "{} / {}", float.reason, exact.reason);
     }
 
     #[test]

@@ -276,15 +276,16 @@ fn point_text<T: fmt::Display>(h: &[T]) -> String {
     format!("({})", parts.join(", "))
 }
 
-/// Relative closeness `|x − y| ≤ tol · max(1, |x|, |y|)` (exact equality for
-/// exact scalars).
+/// Relative closeness `|x − y| ≤ tol · max(|x|, |y|)` (exact equality for
+/// exact scalars). Purely relative: invariants of Möbius-moved weights span
+/// many orders of magnitude, so no absolute floor.
 fn close<T: Ordered>(x: &T, y: &T, tol: Tolerance) -> bool {
-    let one = T::one();
-    let ax = x.abs_val();
-    let ay = y.abs_val();
+    let (ax, ay) = (x.abs_val(), y.abs_val());
     let big = if ax > ay { ax } else { ay };
-    let scale = if big > one { big } else { one };
-    ((x.clone() - y) / scale).is_zero_within(tol)
+    if big.is_zero() {
+        return true;
+    }
+    ((x.clone() - y) / big).is_zero_within(tol)
 }
 
 /// Compare b's view with a's view position by position (same shape).
@@ -530,7 +531,7 @@ pub(crate) fn coincide_nets(
 }
 
 /// The same decision in `f64` with an explicit tolerance: points within
-/// `tol` (absolute), invariants within `tol` (relative). Degree elevation
+/// `tol` (absolute), invariants within `tol` (relative to their size). Degree elevation
 /// is undone with power coefficients within `tol` treated as zero; common
 /// factors of degree ≥ 1 are **not** removed (a floating-point gcd is not a
 /// decision: use [`coincide`] or [`coincide_filtered`](crate::coincide_filtered)).
