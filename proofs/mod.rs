@@ -22,6 +22,7 @@ use std::fmt;
 pub mod bernstein;
 pub mod blossoms;
 pub mod calculus;
+pub mod coincide;
 pub mod conversions;
 pub mod curves;
 pub mod hang_li;
@@ -201,6 +202,7 @@ pub const FAMILIES: &[Family] = &[
     Family { name: "triangles", run: triangles::claims },
     Family { name: "blossoms", run: blossoms::claims },
     Family { name: "conversions", run: conversions::claims },
+    Family { name: "coincide", run: coincide::claims },
 ];
 
 /// Run every family (in parallel threads) and return the claims in order.

@@ -36,8 +36,10 @@
 mod arc;
 mod bernstein;
 mod blossom;
+mod canonical;
 mod circle;
 pub mod cli;
+mod coincide;
 mod continuity;
 mod convert;
 mod curve;
@@ -46,8 +48,11 @@ mod curve_geometry;
 mod degree_reduction;
 mod error;
 mod hpoint;
+mod interval;
 mod io;
 mod mesh;
+mod minimal_degree;
+mod modp;
 pub mod plot;
 mod poly;
 mod rect;
@@ -61,17 +66,23 @@ pub mod strategy;
 mod tri;
 mod trig;
 mod trig_io;
+mod upoly;
 
 #[path = "../proofs/mod.rs"]
 pub mod proofs;
 
 pub use arc::{
     check_lambda, lambda_change_delta, lambda_change_param, lambda_interval, lambda_of_sigma_cubed,
-    sigma_of_lambda, ArcCubic, Computed, LambdaFactors, QuadArc, Roots,
+    sigma_of_lambda, ArcCubic, Computed, LambdaFactors, QuadArc,
 };
 pub use bernstein::{bernstein, bernstein_all};
 pub use blossom::{polar_bivariate, polar_tensor, polar_univariate, rect_blossom, ShiftOp};
+pub use canonical::{canonical_key, dedup, CanonicalKey, Deduper};
 pub use circle::{circle_of, integer_coords, Circle, NotCircle};
+pub use coincide::{
+    boundary_curve, coincide, coincide_curves, coincide_f64, coincide_rects, shared_boundaries,
+    Coincidence, Edge, MobiusParam, ReductionInfo, Symmetry, Witness,
+};
 pub use continuity::{g2_leading_points, join, Join};
 pub use convert::{
     bilinear, degree_raising_matrix, rect_to_tri, rect_to_tris, square_corners,
@@ -84,24 +95,30 @@ pub use curve_geometry::{cross_norm_sq, ConicType, CurveEnd};
 pub use degree_reduction::Reduction;
 pub use error::{Error, MAX_DEGREE};
 pub use hpoint::{de_casteljau, HPoint};
+pub use interval::{coincide_filtered, DecidedBy, Interval};
 pub use io::{
     parse_json, parse_rational, patch_from_value, patch_to_json, point_to_json, read_patches,
     JsonScalar, Patch,
 };
 pub use mesh::{curve_jet, normal_direction, rect_jet, tri_jet, Jet, Mesh, MAX_DENSITY};
+pub use minimal_degree::{
+    bernstein_to_power, minimal_curve, minimal_rect, multiply_components, power_to_bernstein,
+    Minimal,
+};
+pub use modp::Fp;
 pub use poly::Poly;
 pub use rect::{RectPatch, Side};
 pub use rect_join::{g0_join, g1_join};
 pub use rect_ops::Corner;
 pub use reparam::{bernstein_product, quadratic_coefficients, Quadratic};
 pub use scalar::{
-    binomial, binomial_scalar, ratio, rational_root, rational_to_f64, Field, Ordered, Scalar,
-    Tolerance,
+    binomial, binomial_scalar, ratio, rational_root, rational_to_f64, Field, Ordered, Roots,
+    Scalar, Tolerance,
 };
 pub use standard::{
     corner_weights, standardize_curve, standardize_curve_exact_or_f64, standardize_mobius,
     standardize_quadratic, standardize_quadratic_compact, standardize_rect,
-    standardize_rect_exact_or_f64, theorem1_holds, Exactness, NthRoot, Standard, StandardMap,
+    standardize_rect_exact_or_f64, theorem1_holds, Exactness, Standard, StandardMap,
 };
 pub use tri::{affine_combination, tri_bernstein, Bary, TriPatch, SYMMETRIES};
 pub use trig::basis::{circle_normal_form, trig_basis_values, TrigFn, TrigParam};
@@ -110,3 +127,4 @@ pub use trig::curve::TrigCurve;
 pub use trig::stitch::{trig_g0, trig_g1_factor, trig_stitch, trig_tangent_continuous, TrigJoin};
 pub use trig::surface::TrigRect;
 pub use trig_io::{read_trig_patches, trig_patch_to_json, TrigPatch};
+pub use upoly::{BPoly, UPoly};

@@ -249,6 +249,47 @@ pub fn ratio<T: Scalar>(p: i64, q: i64) -> T {
     T::from_rational(&BigRational::new(BigInt::from(p), BigInt::from(q)))
 }
 
+/// Real n-th roots, exact where they exist: `BigRational` answers `Some`
+/// only when the root is rational (decided exactly by [`rational_root`]);
+/// `f64` always answers, rounded.
+///
+/// ```text
+/// nth_root(x, n) = r  with  rⁿ = x;  r ≥ 0 for even n (x ≥ 0 required),
+///                  the real root (sign of x) for odd n;  None for n = 0
+/// ```
+///
+/// ```
+/// use exact_bezier::{ratio, Roots};
+/// use num_rational::BigRational;
+/// assert_eq!(ratio::<BigRational>(-8, 27).nth_root(3), Some(ratio(-2, 3)));
+/// assert_eq!(ratio::<BigRational>(2, 1).nth_root(2), None);
+/// assert_eq!(ratio::<BigRational>(-4, 1).nth_root(2), None);
+/// assert!((2.0_f64.nth_root(2).unwrap() - 2f64.sqrt()).abs() < 1e-15);
+/// ```
+pub trait Roots: Ordered {
+    /// The real n-th root of `self`, if it exists and is representable.
+    fn nth_root(&self, n: u32) -> Option<Self>;
+}
+
+impl Roots for BigRational {
+    fn nth_root(&self, n: u32) -> Option<Self> {
+        if self.is_negative() && n % 2 == 1 {
+            return rational_root(&-self.clone(), n).map(|r| -r);
+        }
+        rational_root(self, n)
+    }
+}
+
+impl Roots for f64 {
+    fn nth_root(&self, n: u32) -> Option<Self> {
+        match (n, *self < 0.0) {
+            (0, _) | (_, true) if n % 2 == 0 => None,
+            (_, true) => Some(-(-self).powf(1.0 / f64::from(n))),
+            _ => Some(self.powf(1.0 / f64::from(n))),
+        }
+    }
+}
+
 /// The exact n-th root of a non-negative rational, if it is rational:
 /// `Some(r)` with `r ≥ 0` and `rⁿ = q`, else `None` (also for `q < 0` or
 /// `n = 0`). Decided exactly with integer roots of numerator and denominator

@@ -45,27 +45,8 @@ use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::rect::RectPatch;
 use crate::reparam::Quadratic;
-use crate::scalar::{ratio, rational_root, Ordered, Scalar, Tolerance};
+use crate::scalar::{ratio, Ordered, Roots, Scalar, Tolerance};
 use num_rational::BigRational;
-
-/// Scalars with a real n-th root of non-negative values: exactly (rationals,
-/// `None` when the root is irrational) or rounded (`f64`).
-pub trait NthRoot: Ordered {
-    /// The non-negative real `r` with `rⁿ = self`, if representable.
-    fn nth_root_of(&self, n: u32) -> Option<Self>;
-}
-
-impl NthRoot for BigRational {
-    fn nth_root_of(&self, n: u32) -> Option<Self> {
-        rational_root(self, n)
-    }
-}
-
-impl NthRoot for f64 {
-    fn nth_root_of(&self, n: u32) -> Option<Self> {
-        (n > 0 && *self >= 0.0).then(|| self.powf(1.0 / f64::from(n)))
-    }
-}
 
 /// The reparameterization a standard form applied, with its parameters.
 #[derive(Clone, Debug, PartialEq)]
@@ -118,12 +99,12 @@ pub type RectOutcome =
 
 /// `1 / (1 + (num/den)^{1/n})`, the Möbius α that maps end weights
 /// `num, den` to equal ones (`1/2` when `n = 0`).
-fn alpha_for<T: NthRoot>(num: &T, den: &T, n: usize, what: &str) -> Result<T, Error> {
+fn alpha_for<T: Roots>(num: &T, den: &T, n: usize, what: &str) -> Result<T, Error> {
     if n == 0 {
         return Ok(ratio(1, 2));
     }
     let q = num.clone() / den;
-    let r = q.nth_root_of(n as u32).ok_or_else(|| {
+    let r = q.nth_root(n as u32).ok_or_else(|| {
         Error::NotRational(format!(
             "{what}: the {n}-th root of {} is irrational",
             q.to_f64()
@@ -153,7 +134,7 @@ fn alpha_for<T: NthRoot>(num: &T, den: &T, n: usize, what: &str) -> Result<T, Er
 /// // The standard middle weight is w₁/√(w₀w₂) = 1/√4.
 /// assert_eq!(s.patch.weights(), vec![ratio(1, 1), ratio(1, 2), ratio(1, 1)]);
 /// ```
-pub fn standardize_curve<T: NthRoot>(
+pub fn standardize_curve<T: Roots>(
     c: &RationalCurve<T>,
 ) -> Result<Standard<RationalCurve<T>, T>, Error> {
     c.check_positive_weights()?;
@@ -237,7 +218,7 @@ pub fn theorem1_holds<T: Scalar>(p: &RectPatch<T>, tol: Tolerance) -> bool {
 /// let StandardMap::Mobius { alpha, beta, .. } = &s.map else { panic!() };
 /// assert_eq!((alpha.clone(), beta.clone()), (ratio(3, 5), Some(ratio(7, 10))));
 /// ```
-pub fn standardize_mobius<T: NthRoot>(
+pub fn standardize_mobius<T: Roots>(
     p: &RectPatch<T>,
     tol: Tolerance,
 ) -> Result<Standard<RectPatch<T>, T>, Error> {
@@ -254,7 +235,7 @@ pub fn standardize_mobius<T: NthRoot>(
     mobius_unchecked(p)
 }
 
-fn mobius_unchecked<T: NthRoot>(p: &RectPatch<T>) -> Result<Standard<RectPatch<T>, T>, Error> {
+fn mobius_unchecked<T: Roots>(p: &RectPatch<T>) -> Result<Standard<RectPatch<T>, T>, Error> {
     let (m, n) = p.degree();
     let [w00, wm0, w0n, _] = corner_weights(p);
     let alpha = alpha_for(&w00, &wm0, m, "eq. (8) α")?;
@@ -290,7 +271,7 @@ fn mobius_unchecked<T: NthRoot>(p: &RectPatch<T>) -> Result<Standard<RectPatch<T
 /// let s = standardize_quadratic(&RectPatch::new(vec![vec![p(0), p(1)], vec![p(2), p(3)]], w).unwrap()).unwrap();
 /// assert_eq!(corner_weights(&s.patch), [ratio(1, 1), ratio(1, 1), ratio(1, 1), ratio(1, 1)]);
 /// ```
-pub fn standardize_quadratic<T: NthRoot>(
+pub fn standardize_quadratic<T: Roots>(
     p: &RectPatch<T>,
 ) -> Result<Standard<RectPatch<T>, T>, Error> {
     let map = quadratic_params(p)?;
@@ -318,7 +299,7 @@ pub fn standardize_quadratic<T: NthRoot>(
 /// assert_eq!(compact.patch.degree(), (1, 2));
 /// assert_eq!(compact.patch.elevate(1, 0), standardize_quadratic(&patch).unwrap().patch);
 /// ```
-pub fn standardize_quadratic_compact<T: NthRoot>(
+pub fn standardize_quadratic_compact<T: Roots>(
     p: &RectPatch<T>,
 ) -> Result<Standard<RectPatch<T>, T>, Error> {
     let map = quadratic_params(p)?;
@@ -329,7 +310,7 @@ pub fn standardize_quadratic_compact<T: NthRoot>(
 }
 
 /// The generalized (19): α1, α2 and β1 = β2 (module docs).
-fn quadratic_params<T: NthRoot>(p: &RectPatch<T>) -> Result<Quadratic<T>, Error> {
+fn quadratic_params<T: Roots>(p: &RectPatch<T>) -> Result<Quadratic<T>, Error> {
     p.check_positive_weights()?;
     let (m, n) = p.degree();
     let [w00, wm0, w0n, wmn] = corner_weights(p);
@@ -347,7 +328,7 @@ fn quadratic_params<T: NthRoot>(p: &RectPatch<T>) -> Result<Quadratic<T>, Error>
 }
 
 /// Scale the weights so that `ω_{0,0}` becomes 1.
-fn scaled<T: NthRoot>(moved: RectPatch<T>, map: Quadratic<T>) -> Standard<RectPatch<T>, T> {
+fn scaled<T: Roots>(moved: RectPatch<T>, map: Quadratic<T>) -> Standard<RectPatch<T>, T> {
     let k = moved.ctrl()[0][0].weight().recip();
     Standard {
         patch: moved.scale_weights(&k),
@@ -361,7 +342,7 @@ fn scaled<T: NthRoot>(moved: RectPatch<T>, map: Quadratic<T>) -> Standard<RectPa
 /// # Errors
 ///
 /// As [`standardize_mobius`] and [`standardize_quadratic`].
-pub fn standardize_rect<T: NthRoot>(
+pub fn standardize_rect<T: Roots>(
     p: &RectPatch<T>,
     tol: Tolerance,
 ) -> Result<Standard<RectPatch<T>, T>, Error> {

@@ -58,4 +58,5 @@ families!(
     triangles,
     blossoms,
     conversions,
+    coincide,
 );

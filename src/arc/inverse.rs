@@ -6,8 +6,9 @@
 //! On the cubic with weight ratio `σ` the same point has parameter `ū` with
 //! `σ·ū/(1 − ū) = √μ`. Everything below follows from that.
 
-use super::{lambda_of_sigma_cubed, LambdaFactors, QuadArc, Roots};
+use super::{lambda_of_sigma_cubed, LambdaFactors, QuadArc};
 use crate::error::Error;
+use crate::scalar::Roots;
 use crate::scalar::{Field, Ordered};
 
 /// # Inverse problems (source 004 §3)
@@ -79,7 +80,7 @@ impl<T: Roots> QuadArc<T> {
         check_open_unit(u_bar)?;
         let mu = self.mu_of_point(p)?;
         let root = mu
-            .square_root()
+            .nth_root(2)
             .ok_or_else(|| Error::NotRational(format!("√μ = √{} is irrational", mu.to_f64())))?;
         Ok(root * &(T::one() - u_bar) / u_bar)
     }
@@ -134,7 +135,7 @@ impl<T: Roots> QuadArc<T> {
         let mu = self.mu_of_point(p)?;
         let f = LambdaFactors::new(self.cos_half(), lambda);
         let rho6 = f.n.clone() * &f.n / &(f.d.clone() * &f.d * &mu.pow_u32(3));
-        let rho = rho6.sixth_root().ok_or_else(|| {
+        let rho = rho6.nth_root(6).ok_or_else(|| {
             Error::NotRational(format!("ρ = σ/√μ = ⁶√{} is irrational", rho6.to_f64()))
         })?;
         Ok((rho + &T::one()).recip())
@@ -176,7 +177,7 @@ pub fn lambda_change_delta<T: Roots>(c: &T, lambda1: &T, lambda2: &T) -> Result<
         LambdaFactors::new(c, lambda2),
     );
     let cube = f1.n * &f2.d / &(f1.d * &f2.n);
-    cube.cube_root()
+    cube.nth_root(3)
         .ok_or_else(|| Error::NotRational(format!("Δ = ∛{} is irrational", cube.to_f64())))
 }
 

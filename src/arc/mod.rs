@@ -42,47 +42,8 @@ pub use inverse::{lambda_change_delta, lambda_change_param};
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::scalar::{ratio, rational_root, Field, Ordered, Scalar, Tolerance};
+use crate::scalar::{ratio, Field, Ordered, Roots, Scalar, Tolerance};
 use num_rational::BigRational;
-
-/// Exact roots where they exist: `BigRational` answers `Some` only for a
-/// rational root, `f64` always answers (rounded; `None` for an even root of
-/// a negative number).
-pub trait Roots: Ordered {
-    /// The real cube root, if representable.
-    fn cube_root(&self) -> Option<Self>;
-    /// The non-negative square root, if representable (`None` for `x < 0`).
-    fn square_root(&self) -> Option<Self>;
-    /// The positive sixth root of `x > 0`, if representable.
-    fn sixth_root(&self) -> Option<Self>;
-}
-
-impl Roots for f64 {
-    fn cube_root(&self) -> Option<f64> {
-        Some(self.cbrt())
-    }
-    fn square_root(&self) -> Option<f64> {
-        (*self >= 0.0).then(|| self.sqrt())
-    }
-    fn sixth_root(&self) -> Option<f64> {
-        (*self >= 0.0).then(|| self.powf(1.0 / 6.0))
-    }
-}
-
-impl Roots for BigRational {
-    fn cube_root(&self) -> Option<BigRational> {
-        if *self < BigRational::from_i64(0) {
-            return rational_root(&-self.clone(), 3).map(|r| -r);
-        }
-        rational_root(self, 3)
-    }
-    fn square_root(&self) -> Option<BigRational> {
-        rational_root(self, 2)
-    }
-    fn sixth_root(&self) -> Option<BigRational> {
-        rational_root(self, 6)
-    }
-}
 
 /// A circular arc as a rational quadratic Bézier curve with weights
 /// `1, c, 1`, `c = cos(θ/2)`; for `θ = π` the middle point is the direction
@@ -516,7 +477,7 @@ pub fn sigma_of_lambda<T: Roots>(c: &T, lambda: &T) -> Result<T, Error> {
     check_lambda(c, lambda)?;
     let f = LambdaFactors::new(c, lambda);
     let cube = f.n / &f.d;
-    cube.cube_root().ok_or_else(|| {
+    cube.nth_root(3).ok_or_else(|| {
         Error::NotRational(format!("σ = ∛(N/D) = ∛({}) is irrational", cube.to_f64()))
     })
 }
@@ -696,9 +657,9 @@ mod tests {
 
     #[test]
     fn cube_roots_exact_and_signed() {
-        assert_eq!(q(-8, 27).cube_root(), Some(q(-2, 3)));
-        assert_eq!(q(4, 1).cube_root(), None);
-        assert_eq!(q(64, 1).sixth_root(), Some(q(2, 1)));
+        assert_eq!(q(-8, 27).nth_root(3), Some(q(-2, 3)));
+        assert_eq!(q(4, 1).nth_root(3), None);
+        assert_eq!(q(64, 1).nth_root(6), Some(q(2, 1)));
     }
 
     #[test]

@@ -13,8 +13,10 @@ use serde_json::Value;
 use std::io::Read;
 
 mod arc;
+mod coincide;
 mod convert;
 mod curvature;
+mod dedup;
 mod deriv;
 mod eval;
 mod eval_trig;
@@ -78,6 +80,10 @@ enum Command {
     Arc(arc::Args),
     /// Does a curve lie on a circle? Exact centre and radius², or the reason.
     IsCircle(is_circle::Args),
+    /// Are two curves or rect patches the same up to reparameterization?
+    Coincide(coincide::Args),
+    /// Group a JSON array of curves/rect patches into coincidence classes.
+    Dedup(dedup::Args),
 }
 
 /// Run the command line; returns the process exit code.
@@ -105,6 +111,8 @@ pub fn main() -> i32 {
         Command::Reduce(a) => reduce::run(&a),
         Command::Arc(a) => arc::run(&a),
         Command::IsCircle(a) => is_circle::run(&a),
+        Command::Coincide(a) => coincide::run(&a),
+        Command::Dedup(a) => dedup::run(&a),
     };
     match result {
         Ok(v) => {

@@ -1,0 +1,631 @@
+//! Exact coincidence of rational curves and tensor-product patches: are two
+//! inputs the same parametric patch up to
+//!
+//! 1. an orientation-preserving Möbius map of each parameter,
+//!    `u = (α − 1)s / (2αs − s − α)`, α ∈ (0, 1) (source 000 eqs 2, 3);
+//! 2. reversal of either parameter; 3. swapping u and v;
+//! 4. degree elevation; 5. common factors of the homogeneous components;
+//! 6. uniform scaling of the weights (source 000 eq. 5)?
+//!
+//! The decision: reduce both inputs to minimal bidegree
+//! ([`minimal_rect`](crate::minimal_rect)); then for each admissible symmetry
+//! compare the normalized control points exactly and the weight invariants
+//! `I_{i,j}` (module `view`). After reduction, Möbius maps and
+//! scaling act on the homogeneous control points by `H_{i,j} ↦ k ρ^i σ^j H_{i,j}`
+//! with `ρ = (1 − α)/α > 0`, `σ = (1 − β)/β > 0` (eq. 4 with `k` absorbing
+//! `α^m β^n`), so two reduced nets coincide iff their normalized points agree
+//! and their invariants and signs agree (proved in `proofs/coincide.rs`).
+//! The witness is exact: `ρ = x_{1,0}` is rational whenever both nets have
+//! non-zero `H_{1,0}` (always, for positive weights), hence `α = 1/(1 + ρ)`
+//! is rational too; otherwise `ρ^a` is given.
+//!
+//! Beyond source 000 §3, which compares standardized patches (needing m-th
+//! roots, so not exact over Q, and blind to reversal, swapping and common
+//! factors). Two patches related by a reparameterization of higher degree
+//! (e.g. the quadratic one of eqs 9–17) are *not* coincident in this sense.
+//!
+//! Module layout: `view` (normalized nets under symmetries), this file (the
+//! decision and its witness), `boundary` (shared boundary curves).
+
+mod boundary;
+mod view;
+
+pub use boundary::{boundary_curve, shared_boundaries, Edge};
+pub(crate) use view::{invariant_parts, Prepared, View};
+
+use crate::curve::RationalCurve;
+use crate::error::Error;
+use crate::io::{JsonScalar, Patch};
+use crate::minimal_degree::{curve_net, drop_elevation, minimal_net, Net};
+use crate::rect::RectPatch;
+use crate::scalar::{Ordered, Roots, Scalar, Tolerance};
+use num_rational::BigRational;
+use serde_json::{json, Value};
+use std::fmt;
+
+/// One of the 8 symmetries of the parameter square: first swap u and v (if
+/// `swap`), then reverse u, then reverse v. Curves use only `reverse_u`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Symmetry {
+    /// Swap the parameters: new (u, v) is old (v, u).
+    pub swap: bool,
+    /// Reverse u: new u is old 1 − u.
+    pub reverse_u: bool,
+    /// Reverse v: new v is old 1 − v.
+    pub reverse_v: bool,
+}
+
+impl Symmetry {
+    /// The identity.
+    pub const IDENTITY: Symmetry = Symmetry {
+        swap: false,
+        reverse_u: false,
+        reverse_v: false,
+    };
+
+    /// All 8 symmetries, identity first.
+    pub fn all() -> impl Iterator<Item = Symmetry> {
+        (0..8u8).map(|b| Symmetry {
+            swap: b & 4 != 0,
+            reverse_u: b & 1 != 0,
+            reverse_v: b & 2 != 0,
+        })
+    }
+
+    /// The symmetries that map a net of bidegree `(m, n)` to one of
+    /// bidegree `(m2, n2)`; for curves (`curve`) only the reversals of u.
+    pub(crate) fn admissible(
+        curve: bool,
+        (m, n): (usize, usize),
+        (m2, n2): (usize, usize),
+    ) -> impl Iterator<Item = Symmetry> {
+        Symmetry::all().filter(move |s| {
+            if curve {
+                !s.swap && !s.reverse_v && (m, n) == (m2, n2)
+            } else if s.swap {
+                (n, m) == (m2, n2)
+            } else {
+                (m, n) == (m2, n2)
+            }
+        })
+    }
+
+    /// Apply to a patch: swap, then reverse u, then reverse v.
+    ///
+    /// ```
+    /// use exact_bezier::{RectPatch, Symmetry, ratio};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+    /// let r = RectPatch::polynomial(vec![vec![p(0), p(1)], vec![p(2), p(3)]]).unwrap();
+    /// let s = Symmetry { swap: true, reverse_u: true, reverse_v: false };
+    /// // New (u, v) = (0, 0) reads old (u, v) = (0, 1) → P_{0,1} = 1.
+    /// assert_eq!(s.apply_rect(&r).points().unwrap()[0][0], p(1));
+    /// ```
+    pub fn apply_rect<T: Scalar>(&self, r: &RectPatch<T>) -> RectPatch<T> {
+        let mut out = if self.swap { r.swap_uv() } else { r.clone() };
+        if self.reverse_u {
+            out = out.reverse_u();
+        }
+        if self.reverse_v {
+            out = out.reverse_v();
+        }
+        out
+    }
+
+    /// Apply to a curve (only `reverse_u` acts).
+    pub fn apply_curve<T: Scalar>(&self, c: &RationalCurve<T>) -> RationalCurve<T> {
+        if self.reverse_u {
+            c.reverse()
+        } else {
+            c.clone()
+        }
+    }
+}
+
+impl fmt::Display for Symmetry {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let parts: Vec<&str> = [
+            (self.swap, "swap u,v"),
+            (self.reverse_u, "reverse u"),
+            (self.reverse_v, "reverse v"),
+        ]
+        .iter()
+        .filter(|(on, _)| *on)
+        .map(|(_, name)| *name)
+        .collect();
+        if parts.is_empty() {
+            f.write_str("identity")
+        } else {
+            f.write_str(&parts.join(" + "))
+        }
+    }
+}
+
+/// A Möbius parameter of the witness, in one direction.
+#[derive(Clone, Debug, PartialEq)]
+pub enum MobiusParam<T> {
+    /// The direction has degree 0: no parameter.
+    None,
+    /// `ρ = (1 − α)/α` and `α = 1/(1 + ρ)`, both exact for exact scalars.
+    Value {
+        /// `ρ`.
+        rho: T,
+        /// `α`.
+        alpha: T,
+    },
+    /// `ρ` is irrational: `ρ^exponent = power` (then `α = 1/(1 + ρ)`).
+    Power {
+        /// The exponent `a`.
+        exponent: usize,
+        /// `ρ^a`.
+        power: T,
+    },
+}
+
+/// How b is obtained from a (after both are reduced to minimal degree):
+/// `b = k · Möbius_v(β) · Möbius_u(α) · symmetry(a)`, i.e. weights
+/// `ω^b_{i,j} = k (1 − α)^i α^{m−i} (1 − β)^j β^{n−j} ω^{S(a)}_{i,j}`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Witness<T> {
+    /// The symmetry applied to a first.
+    pub symmetry: Symmetry,
+    /// The Möbius parameter in u.
+    pub u: MobiusParam<T>,
+    /// The Möbius parameter in v.
+    pub v: MobiusParam<T>,
+    /// The uniform weight scale `k` (when α and β are exact).
+    pub k: Option<T>,
+    /// `ω^b_{0,0} / ω^{S(a)}_{0,0} = k α^m β^n`.
+    pub corner_ratio: T,
+}
+
+/// The minimal-degree reduction applied to one input.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ReductionInfo {
+    /// (Bi)degree before.
+    pub from: (usize, usize),
+    /// (Bi)degree after.
+    pub to: (usize, usize),
+    /// The common factor removed (`"1"` if none; always `"1"` on the f64 path,
+    /// which undoes elevation only).
+    pub common_factor: String,
+}
+
+/// The answer of [`coincide`]: a decision with its reason and witness.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Coincidence<T> {
+    /// Are the inputs the same patch up to the maps (1)–(6)?
+    pub coincident: bool,
+    /// Why: the witness in words, or the first difference found.
+    pub reason: String,
+    /// The maps taking a to b, when coincident.
+    pub witness: Option<Witness<T>>,
+    /// The reductions of a and b.
+    pub reductions: [ReductionInfo; 2],
+}
+
+/// `{"rho", "alpha"}` in u, `{"sigma", "beta"}` in v (the paper's names).
+fn param_json<T: JsonScalar>(p: &MobiusParam<T>, (ratio, param): (&str, &str)) -> Value {
+    match p {
+        MobiusParam::None => Value::Null,
+        MobiusParam::Value { rho, alpha } => json!({ratio: rho.to_json(), param: alpha.to_json()}),
+        MobiusParam::Power { exponent, power } => {
+            json!({format!("{ratio}_power"): {"exponent": exponent, "value": power.to_json()}})
+        }
+    }
+}
+
+impl<T: JsonScalar> Coincidence<T> {
+    /// The CLI object `{"coincident", "reason", "witness", "reductions"}`.
+    pub fn to_json(&self) -> Value {
+        let red = |r: &ReductionInfo| json!({"from": [r.from.0, r.from.1], "to": [r.to.0, r.to.1], "common_factor": r.common_factor});
+        let witness = self.witness.as_ref().map_or(Value::Null, |w| {
+            json!({
+                "symmetry": w.symmetry.to_string(),
+                "u": param_json(&w.u, ("rho", "alpha")),
+                "v": param_json(&w.v, ("sigma", "beta")),
+                "k": w.k.as_ref().map_or(Value::Null, JsonScalar::to_json),
+                "corner_weight_ratio": w.corner_ratio.to_json(),
+            })
+        });
+        json!({
+            "coincident": self.coincident,
+            "reason": self.reason,
+            "witness": witness,
+            "reductions": [red(&self.reductions[0]), red(&self.reductions[1])],
+        })
+    }
+}
+
+/// Why one symmetry failed: `stage` 0 points, 1 signs, 2 invariants; the
+/// furthest failure over all symmetries is reported.
+/// The text is built only for the reported failure (formatting numbers,
+/// especially `f64`, costs more than the comparison).
+struct Mismatch<'a> {
+    stage: u8,
+    position: usize,
+    text: Box<dyn Fn() -> String + 'a>,
+}
+
+fn point_text<T: fmt::Display>(h: &[T]) -> String {
+    let shown = if h.last().is_some_and(|w| w.to_string() == "1") {
+        &h[..h.len() - 1]
+    } else {
+        h
+    };
+    let parts: Vec<String> = shown.iter().map(ToString::to_string).collect();
+    format!("({})", parts.join(", "))
+}
+
+/// Relative closeness `|x − y| ≤ tol · max(|x|, |y|)` (exact equality for
+/// exact scalars). Purely relative: invariants of Möbius-moved weights span
+/// many orders of magnitude, so no absolute floor.
+fn close<T: Ordered>(x: &T, y: &T, tol: Tolerance) -> bool {
+    let (ax, ay) = (x.abs_val(), y.abs_val());
+    let big = if ax > ay { ax } else { ay };
+    if big.is_zero() {
+        return true;
+    }
+    ((x.clone() - y) / big).is_zero_within(tol)
+}
+
+/// Compare b's view with a's view position by position (same shape).
+fn compare<'a, T: Roots + fmt::Display>(
+    va: View<'a, T>,
+    vb: View<'a, T>,
+    tol: Tolerance,
+) -> Result<Witness<T>, Mismatch<'a>> {
+    let positions: Vec<(usize, usize)> = (0..=va.m)
+        .flat_map(|i| (0..=va.n).map(move |j| (i, j)))
+        .collect();
+    for (idx, &(i, j)) in positions.iter().enumerate() {
+        let same = match (va.hat(i, j), vb.hat(i, j)) {
+            (None, None) => true,
+            (Some(p), Some(q)) => p
+                .iter()
+                .zip(q)
+                .all(|(x, y)| (x.clone() - y).is_zero_within(tol)),
+            _ => false,
+        };
+        if !same {
+            let show = |h: Option<&Vec<T>>| h.map_or("0".to_string(), |h| point_text(h));
+            return Err(Mismatch {
+                stage: 0,
+                position: idx,
+                text: Box::new(move || {
+                    format!(
+                        "control point P_{{{i},{j}}} differs: {} vs {}",
+                        show(va.hat(i, j)),
+                        show(vb.hat(i, j))
+                    )
+                }),
+            });
+        }
+    }
+    for (idx, &(i, j)) in positions.iter().enumerate() {
+        if va.sign(i, j) != vb.sign(i, j) {
+            return Err(Mismatch {
+                stage: 1,
+                position: idx,
+                text: Box::new(move || format!("the sign of ω_{{{i},{j}}}·ω_{{0,0}} differs")),
+            });
+        }
+    }
+    let (inv_a, inv_b) = (va.invariants(), vb.invariants());
+    for (idx, (&(i, j), (ia, ib))) in positions
+        .iter()
+        .zip(inv_a.into_iter().zip(inv_b))
+        .enumerate()
+    {
+        if !close(&ia, &ib, tol) {
+            return Err(Mismatch {
+                stage: 2,
+                position: idx,
+                text: Box::new(move || format!("weight invariant I_{{{i},{j}}} is {ia} vs {ib}")),
+            });
+        }
+    }
+    Ok(witness(&va, &vb))
+}
+
+/// The Möbius parameters and scale once the nets are known to match.
+fn witness<T: Roots>(va: &View<'_, T>, vb: &View<'_, T>) -> Witness<T> {
+    let lambda = |i: usize, j: usize| vb.scale(i, j).clone() / va.scale(i, j);
+    let l00 = lambda(0, 0);
+    let (pu, pv) = va.pivots();
+    let param = |pivot: Option<usize>, at: &dyn Fn(usize) -> (usize, usize)| match pivot {
+        None => MobiusParam::None,
+        Some(a) => {
+            let (i, j) = at(a);
+            let power = lambda(i, j) / &l00;
+            match power.nth_root(a as u32) {
+                Some(rho) => {
+                    let alpha = (T::one() + &rho).recip();
+                    MobiusParam::Value { rho, alpha }
+                }
+                None => MobiusParam::Power { exponent: a, power },
+            }
+        }
+    };
+    let u = param(pu, &|a| (a, 0));
+    let v = param(pv, &|b| (0, b));
+    let factor = |p: &MobiusParam<T>, deg: usize| match p {
+        MobiusParam::None => Some(T::one()),
+        MobiusParam::Value { alpha, .. } => Some(alpha.pow_u32(deg as u32)),
+        MobiusParam::Power { .. } => None,
+    };
+    let k = factor(&u, va.m)
+        .zip(factor(&v, va.n))
+        .map(|(fu, fv)| l00.clone() / &(fu * &fv));
+    Witness {
+        symmetry: va.sym,
+        u,
+        v,
+        k,
+        corner_ratio: l00,
+    }
+}
+
+/// Decide for two reduced nets.
+fn decide<T: Roots + fmt::Display>(
+    na: &Net<T>,
+    nb: &Net<T>,
+    curve: bool,
+    tol: Tolerance,
+    reductions: [ReductionInfo; 2],
+) -> Coincidence<T> {
+    let (pa, pb) = (Prepared::new(na), Prepared::new(nb));
+    let vb = pb.view(Symmetry::IDENTITY);
+    let mut best: Option<Mismatch> = None;
+    let mut tried = 0;
+    for sym in Symmetry::admissible(curve, (pa.m, pa.n), (pb.m, pb.n)) {
+        tried += 1;
+        match compare(pa.view(sym), vb, tol) {
+            Ok(w) => {
+                let reason = format!(
+                    "same {} up to {} and Möbius/weight scaling",
+                    if curve { "curve" } else { "patch" },
+                    w.symmetry
+                );
+                return Coincidence {
+                    coincident: true,
+                    reason,
+                    witness: Some(w),
+                    reductions,
+                };
+            }
+            Err(e) => {
+                if best
+                    .as_ref()
+                    .is_none_or(|b| (e.stage, e.position) > (b.stage, b.position))
+                {
+                    best = Some(e);
+                }
+            }
+        }
+    }
+    let reason = match best {
+        None => format!(
+            "minimal (bi)degrees differ: {:?} vs {:?}",
+            reductions[0].to, reductions[1].to
+        ),
+        Some(e) => format!("{} (best of {tried} symmetries)", (e.text)()),
+    };
+    Coincidence {
+        coincident: false,
+        reason,
+        witness: None,
+        reductions,
+    }
+}
+
+fn info<T>(red: &crate::minimal_degree::Minimal<Net<T>>) -> ReductionInfo {
+    ReductionInfo {
+        from: red.degree_before,
+        to: red.degree_after,
+        common_factor: red.common_factor.clone(),
+    }
+}
+
+fn shape_of<T>(net: &Net<T>) -> (usize, usize) {
+    (net.len() - 1, net[0].len() - 1)
+}
+
+/// The homogeneous net of a curve or rect patch with positive weights.
+pub(crate) fn net_of<T: Ordered>(p: &Patch<T>) -> Result<(Net<T>, bool), Error> {
+    match p {
+        Patch::Curve(c) => {
+            c.check_positive_weights()?;
+            Ok((curve_net(c), true))
+        }
+        Patch::Rect(r) => {
+            r.check_positive_weights()?;
+            Ok((r.ctrl().to_vec(), false))
+        }
+        Patch::Tri(_) => Err(Error::Shape(
+            "coincide compares curves and rect patches, not tri patches".into(),
+        )),
+    }
+}
+
+fn kinds_differ<T: Scalar>(a: &Patch<T>, b: &Patch<T>) -> Option<Coincidence<T>> {
+    (a.kind() != b.kind()).then(|| Coincidence {
+        coincident: false,
+        reason: format!("a {} and a {} are never the same patch", a.kind(), b.kind()),
+        witness: None,
+        reductions: std::array::from_fn(|_| ReductionInfo {
+            from: (0, 0),
+            to: (0, 0),
+            common_factor: "1".into(),
+        }),
+    })
+}
+
+/// Exact coincidence of two curves or two rect patches (see the module
+/// docs): no roots, no tolerance.
+///
+/// # Examples
+///
+/// Source 000 Example 1 against a Möbius-reparameterized, reversed and
+/// elevated copy of itself:
+///
+/// ```
+/// use exact_bezier::{coincide, read_patches, Patch, ratio};
+/// let text = std::fs::read_to_string("tests/fixtures/yang_yong_example1.json").unwrap();
+/// let a = read_patches(&text).unwrap().remove(0);
+/// let Patch::Rect(r) = &a else { unreachable!() };
+/// let b = Patch::Rect(r.mobius_u(&ratio(3, 5)).mobius_v(&ratio(7, 10)).reverse_v().elevate(1, 2));
+/// let c = coincide(&a, &b).unwrap();
+/// assert!(c.coincident);
+/// assert_eq!(c.witness.unwrap().symmetry.to_string(), "reverse v");
+/// ```
+///
+/// # Errors
+///
+/// [`Error::Shape`] for tri patches; [`Error::Weight`] for a non-positive
+/// weight.
+pub fn coincide(
+    a: &Patch<BigRational>,
+    b: &Patch<BigRational>,
+) -> Result<Coincidence<BigRational>, Error> {
+    let ((na, curve), (nb, _)) = (net_of(a)?, net_of(b)?);
+    if let Some(c) = kinds_differ(a, b) {
+        return Ok(c);
+    }
+    Ok(coincide_nets(&na, &nb, curve))
+}
+
+/// The exact decision for two homogeneous nets of the same kind.
+pub(crate) fn coincide_nets(
+    na: &Net<BigRational>,
+    nb: &Net<BigRational>,
+    curve: bool,
+) -> Coincidence<BigRational> {
+    let (ra, rb) = (minimal_net(na), minimal_net(nb));
+    decide(
+        &ra.patch,
+        &rb.patch,
+        curve,
+        Tolerance::EXACT,
+        [info(&ra), info(&rb)],
+    )
+}
+
+/// The same decision in `f64` with an explicit tolerance: points within
+/// `tol` (absolute), invariants within `tol` (relative to their size). Degree elevation
+/// is undone with power coefficients within `tol` treated as zero; common
+/// factors of degree ≥ 1 are **not** removed (a floating-point gcd is not a
+/// decision: use [`coincide`] or [`coincide_filtered`](crate::coincide_filtered)).
+///
+/// ```
+/// use exact_bezier::{coincide_f64, read_patches, Tolerance};
+/// let text = std::fs::read_to_string("tests/fixtures/yang_yong_example1.json").unwrap();
+/// let ex1 = read_patches(&text).unwrap().remove(0).to_f64();
+/// let text = std::fs::read_to_string("tests/fixtures/yang_yong_example3.json").unwrap();
+/// let ex3 = read_patches(&text).unwrap().remove(0).to_f64();
+/// assert!(!coincide_f64(&ex1, &ex3, Tolerance(1e-9)).unwrap().coincident);
+/// assert!(coincide_f64(&ex1, &ex3, Tolerance(0.05)).unwrap().coincident);
+/// ```
+///
+/// # Errors
+///
+/// As [`coincide`].
+pub fn coincide_f64(
+    a: &Patch<f64>,
+    b: &Patch<f64>,
+    tol: Tolerance,
+) -> Result<Coincidence<f64>, Error> {
+    let ((na, curve), (nb, _)) = (net_of(a)?, net_of(b)?);
+    if let Some(c) = kinds_differ(a, b) {
+        return Ok(c);
+    }
+    let (ra, rb) = (drop_elevation(&na, tol), drop_elevation(&nb, tol));
+    let info = |from: &Net<f64>, to: &Net<f64>| ReductionInfo {
+        from: shape_of(from),
+        to: shape_of(to),
+        common_factor: "1".into(),
+    };
+    let reductions = [info(&na, &ra), info(&nb, &rb)];
+    Ok(decide(&ra, &rb, curve, tol, reductions))
+}
+
+/// Exact coincidence of two rect patches (see [`coincide`]).
+///
+/// # Errors
+///
+/// [`Error::Weight`] for a non-positive weight.
+pub fn coincide_rects(
+    a: &RectPatch<BigRational>,
+    b: &RectPatch<BigRational>,
+) -> Result<Coincidence<BigRational>, Error> {
+    coincide(&Patch::Rect(a.clone()), &Patch::Rect(b.clone()))
+}
+
+/// Exact coincidence of two curves (see [`coincide`]; symmetries: reversal).
+///
+/// # Errors
+///
+/// [`Error::Weight`] for a non-positive weight.
+pub fn coincide_curves(
+    a: &RationalCurve<BigRational>,
+    b: &RationalCurve<BigRational>,
+) -> Result<Coincidence<BigRational>, Error> {
+    coincide(&Patch::Curve(a.clone()), &Patch::Curve(b.clone()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::ratio;
+    type Q = BigRational;
+
+    fn curve() -> RationalCurve<Q> {
+        let p = |x: i64, y: i64| vec![ratio::<Q>(x, 1), ratio(y, 1)];
+        RationalCurve::new(
+            vec![p(0, 0), p(1, 3), p(4, 3), p(5, -1)],
+            vec![ratio(1, 1), ratio(2, 1), ratio(1, 3), ratio(3, 2)],
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn curve_copies_coincide_with_exact_witness() {
+        let a = curve();
+        let b = a
+            .mobius(&ratio(2, 7))
+            .scale_weights(&ratio(5, 3))
+            .reverse()
+            .elevate(2);
+        let c = coincide_curves(&a, &b).unwrap();
+        assert!(c.coincident, "{}", c.reason);
+        let w = c.witness.unwrap();
+        assert!(w.symmetry.reverse_u);
+        // b reversed back is a.mobius(2/7); reversing turns α into 1 − α.
+        assert_eq!(
+            w.u,
+            MobiusParam::Value {
+                rho: ratio(2, 5),
+                alpha: ratio(5, 7)
+            }
+        );
+        assert_eq!(w.k, Some(ratio(5, 3)));
+    }
+
+    #[test]
+    fn perturbed_weight_is_named() {
+        let a = curve();
+        let w = a.weights();
+        let pts = a.points().unwrap();
+        let mut w2 = w.clone();
+        w2[2] = ratio(1, 2);
+        let b = RationalCurve::new(pts, w2).unwrap();
+        let c = coincide_curves(&a, &b).unwrap();
+        assert!(!c.coincident);
+        assert!(
+            c.reason
+                .starts_with("weight invariant I_{2,0} is 1/12 vs 1/8"),
+            "{}",
+            c.reason
+        );
+    }
+}
