@@ -71,6 +71,11 @@ mod upoly;
 #[path = "../proofs/mod.rs"]
 pub mod proofs;
 
+/// The README's Rust examples, run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
+
 pub use arc::{
     check_lambda, lambda_change_delta, lambda_change_param, lambda_interval, lambda_of_sigma_cubed,
     sigma_of_lambda, ArcCubic, Computed, LambdaFactors, QuadArc,
