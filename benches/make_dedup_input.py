@@ -1,0 +1,52 @@
+#!/usr/bin/env python3
+"""Write N random bicubic rect patches plus one transformed copy of each
+(exact Möbius map in u and v, weight scaling, random reversal and u/v swap)
+as one JSON array, for timing `exact-bezier dedup` on 2N patches:
+
+    python3 benches/make_dedup_input.py 50000 > /tmp/p100k.json
+    time target/release/exact-bezier dedup /tmp/p100k.json > /tmp/classes.json
+
+The answer must be N classes, each {2k, 2k+1}.
+"""
+import json
+import random
+import sys
+from fractions import Fraction as F
+
+
+def patch(rng):
+    pts = [[[rng.randint(-50, 50) for _ in range(3)] for _ in range(4)] for _ in range(4)]
+    w = [[F(rng.randint(1, 9)) for _ in range(4)] for _ in range(4)]
+    return pts, w
+
+
+def transformed(rng, pts, w):
+    a, b = F(rng.randint(1, 9), 10), F(rng.randint(1, 9), 10)
+    k = F(rng.randint(1, 5))
+    w = [[w[i][j] * k * (1 - a) ** i * a ** (3 - i) * (1 - b) ** j * b ** (3 - j)
+          for j in range(4)] for i in range(4)]
+    if rng.random() < 0.5:
+        pts, w = pts[::-1], w[::-1]
+    if rng.random() < 0.5:
+        pts, w = [list(r) for r in zip(*pts)], [list(r) for r in zip(*w)]
+    return pts, w
+
+
+def as_json(pts, w):
+    return {"kind": "rect", "degree": [3, 3], "points": pts,
+            "weights": [[str(x) for x in row] for row in w]}
+
+
+def main():
+    n = int(sys.argv[1]) if len(sys.argv) > 1 else 50000
+    rng = random.Random(7)
+    out = []
+    for _ in range(n):
+        pts, w = patch(rng)
+        out.append(as_json(pts, w))
+        out.append(as_json(*transformed(rng, pts, w)))
+    json.dump(out, sys.stdout)
+
+
+if __name__ == "__main__":
+    main()
