@@ -33,6 +33,7 @@ pub mod reduction;
 pub mod surfaces;
 pub mod triangles;
 pub mod trig_basis;
+pub mod trig_rational;
 pub mod trig_stitching;
 pub mod yang_yong;
 pub mod yang_yong_examples;
@@ -193,6 +194,7 @@ pub const FAMILIES: &[Family] = &[
     Family { name: "reduction", run: reduction::claims },
     Family { name: "trig_basis", run: trig_basis::claims },
     Family { name: "trig_stitching", run: trig_stitching::claims },
+    Family { name: "trig_rational", run: trig_rational::claims },
     Family { name: "hang_li", run: hang_li::claims },
     Family { name: "hang_li_tables", run: hang_li_tables::claims },
     Family { name: "surfaces", run: surfaces::claims },

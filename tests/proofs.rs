@@ -49,6 +49,7 @@ families!(
     reduction,
     trig_basis,
     trig_stitching,
+    trig_rational,
     hang_li,
     hang_li_tables,
     surfaces,

@@ -328,3 +328,42 @@ fn cli_evaluates_trig_patches() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    /// The rational (4,4) form agrees with the trig surface at every rational τ.
+    #[test]
+    fn rational_form_matches_trig_surface(s in rect(), tu in unit_parameter(), tv in unit_parameter()) {
+        let (u, v) = (TrigParam::from_tau(&tu), TrigParam::from_tau(&tv));
+        prop_assert_eq!(s.to_rational().eval(&tu, &tv).unwrap(), s.eval(&u, &v));
+    }
+}
+
+#[test]
+fn cli_converts_the_bowl_to_rational_patches() {
+    let (code, out, _) = cli(&["convert", &fixture("bowl.json"), "--to", "rational"]);
+    assert_eq!(code, 0);
+    let rational = exact_bezier::read_patches(&out).unwrap();
+    let trig = read_trig_patches(&std::fs::read_to_string(fixture("bowl.json")).unwrap())
+        .unwrap()
+        .unwrap();
+    assert_eq!(rational.len(), trig.len());
+    let (tu, tv) = (ratio::<Q>(1, 3), ratio::<Q>(2, 7));
+    for (r, t) in rational.iter().zip(&trig) {
+        let (exact_bezier::Patch::Rect(r), TrigPatch::Rect(t)) = (r, t) else {
+            panic!("the bowl is made of trig-rects");
+        };
+        assert_eq!(r.degree(), (4, 4));
+        let expected = t.eval(&TrigParam::from_tau(&tu), &TrigParam::from_tau(&tv));
+        assert_eq!(r.eval(&tu, &tv).unwrap(), expected);
+    }
+    let (code, _, err) = cli(&[
+        "convert",
+        &fixture("yang_yong_example1.json"),
+        "--to",
+        "rational",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("trig-curve or trig-rect"), "{err}");
+}

@@ -1,12 +1,14 @@
-//! `convert FILE --to tri|rect [--split a,b,c,d,e,f] [--degenerate]
+//! `convert FILE --to tri|rect|rational [--split a,b,c,d,e,f] [--degenerate]
 //! [--normalize] [--scalar f64]`: rectangle ↔ triangle conversions
-//! (source 003; source 001, Hu 2001). Output: a JSON array of patches.
+//! (source 003; source 001, Hu 2001), and trigonometric patches (source
+//! 002) to their exact rational Bézier form. Output: a JSON array of patches.
 
-use super::{load, parse_list, ScalarKind};
+use super::{load, parse_list, read_input, ScalarKind};
 use crate::convert::{rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Split};
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
 use crate::scalar::{Field, Ordered};
+use crate::trig_io::{read_trig_patches, TrigPatch};
 use num_rational::BigRational;
 use serde_json::Value;
 
@@ -17,6 +19,9 @@ pub enum Target {
     Tri,
     /// tri of degree n → three rects (n, n) on D1, D2, D3, or one degenerate rect.
     Rect,
+    /// trig-curve → rational quartic, trig-rect → rational (4, 4) rect, exactly,
+    /// in τ = tan(t/2) (source 002 patches for every rational-Bézier command).
+    Rational,
 }
 
 /// Arguments of `convert`.
@@ -53,6 +58,9 @@ struct Plan<T> {
 }
 
 pub fn run(a: &Args) -> Result<Value, Error> {
+    if a.to == Target::Rational {
+        return trig_to_rational(a);
+    }
     if a.to == Target::Tri && (a.split.is_some() || a.degenerate) {
         return Err(Error::Format(
             "--split and --degenerate apply to --to rect only".into(),
@@ -152,4 +160,41 @@ fn normalized<T: Field>(p: &Patch<T>) -> Result<Patch<T>, Error> {
         Patch::Tri(t) => Patch::Tri(t.scale_weights(&k)),
         Patch::Curve(c) => Patch::Curve(c.scale_weights(&k)),
     })
+}
+
+/// `--to rational`: every trig patch of the file as its exact rational
+/// Bézier form (see `TrigCurve::to_rational`, `TrigRect::to_rational`).
+fn trig_to_rational(a: &Args) -> Result<Value, Error> {
+    if a.split.is_some() || a.degenerate {
+        return Err(Error::Format(
+            "--split and --degenerate apply to --to rect only".into(),
+        ));
+    }
+    let patches = read_trig_patches(&read_input(&a.file)?)?.ok_or_else(|| {
+        Error::Format("convert --to rational needs trig-curve or trig-rect patches".into())
+    })?;
+    let out = patches
+        .iter()
+        .map(|p| match a.scalar {
+            ScalarKind::Exact => trig_rational_json(p, a.normalize),
+            ScalarKind::F64 => trig_rational_json(&p.to_f64(), a.normalize),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Value::Array(out))
+}
+
+fn trig_rational_json<T: JsonScalar + Ordered>(
+    p: &TrigPatch<T>,
+    normalize: bool,
+) -> Result<Value, Error> {
+    let patch = match p {
+        TrigPatch::Curve(c) => Patch::Curve(c.to_rational()),
+        TrigPatch::Rect(r) => Patch::Rect(r.to_rational()),
+    };
+    let patch = if normalize {
+        normalized(&patch)?
+    } else {
+        patch
+    };
+    patch_to_json(&patch)
 }

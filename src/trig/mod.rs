@@ -8,5 +8,6 @@
 pub mod basis;
 pub mod bowl;
 pub mod curve;
+pub mod rational;
 pub mod stitch;
 pub mod surface;
