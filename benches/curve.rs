@@ -9,10 +9,12 @@
 //! ([`RationalCurve::scale_weights`] by the lcm of the denominators, which
 //! keeps every point), `t = p/q` becomes the homogeneous parameter
 //! `(q − p : p)` ([`RationalCurve::eval_hom_param`]), and the one division
-//! happens in `project`.
+//! happens in `project`. A fourth runs [`FastCurve`], the same
+//! fraction-free evaluation on machine integers (`i128`, big integers only
+//! on overflow).
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use exact_bezier::{ratio, rational_to_f64, RationalCurve};
+use exact_bezier::{ratio, rational_to_f64, FastCurve, RationalCurve};
 use num_integer::Integer;
 use num_rational::BigRational;
 
@@ -64,6 +66,11 @@ fn eval(c: &mut Criterion) {
                     .eval_hom_param(black_box(&a), black_box(&p))
                     .project()
             })
+        });
+        let fast = FastCurve::new(&exact);
+        assert_eq!(fast.eval(&t).unwrap(), exact.eval(&t).unwrap());
+        c.bench_function(&format!("eval degree {n} exact FastCurve"), |b| {
+            b.iter(|| black_box(&fast).eval(black_box(&t)))
         });
     }
 }

@@ -1,8 +1,9 @@
 //! Rect patches: bicubic evaluation (f64 vs exact) and the exact quadratic
 //! reparameterization of a bicubic (source 000, eqs 9-17), on Example 2 of
-//! source 000 (read exactly from its fixture).
+//! source 000 (read exactly from its fixture); exact evaluation also by the
+//! fraction-free [`FastRect`].
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use exact_bezier::{ratio, read_patches, Ordered, Patch, Quadratic, RectPatch};
+use exact_bezier::{ratio, read_patches, FastRect, Ordered, Patch, Quadratic, RectPatch};
 use num_rational::BigRational;
 
 fn example2() -> RectPatch<BigRational> {
@@ -23,6 +24,11 @@ fn eval(c: &mut Criterion) {
     });
     c.bench_function("bicubic eval exact", |b| {
         b.iter(|| black_box(&exact).eval(black_box(&u), black_box(&v)))
+    });
+    let fast = FastRect::new(&exact);
+    assert_eq!(fast.eval(&u, &v).unwrap(), exact.eval(&u, &v).unwrap());
+    c.bench_function("bicubic eval exact FastRect", |b| {
+        b.iter(|| black_box(&fast).eval(black_box(&u), black_box(&v)))
     });
 }
 

@@ -14,7 +14,7 @@
 //! source 000 (Yang & Yong) eqs (2)–(5) for the Möbius map and weight scaling.
 
 use crate::error::Error;
-use crate::hpoint::{de_casteljau, HPoint};
+use crate::hpoint::{de_casteljau, de_casteljau_hom, HPoint};
 use crate::scalar::{ratio, Field, Ordered, Scalar, Tolerance};
 
 /// A rational Bézier curve `X(t) = Σ w_i P_i B_{i,n}(t) / Σ w_i B_{i,n}(t)`.
@@ -179,13 +179,7 @@ impl<T: Scalar> RationalCurve<T> {
     /// assert_eq!(h, c.eval_hom(&ratio(1, 3)).scale(&ratio(9, 1)));
     /// ```
     pub fn eval_hom_param(&self, a: &T, b: &T) -> HPoint<T> {
-        let mut row = self.ctrl.clone();
-        for k in (1..row.len()).rev() {
-            for i in 0..k {
-                row[i] = row[i].combine(a, &row[i + 1], b);
-            }
-        }
-        row.swap_remove(0)
+        de_casteljau_hom(&self.ctrl, a, b)
     }
 
     /// The blossom (polar form) `b[t_1, …, t_n]`: symmetric, affine in each

@@ -6,7 +6,7 @@
 //! Division happens once, in [`HPoint::project`].
 
 use crate::error::Error;
-use crate::scalar::{Field, Scalar, Tolerance};
+use crate::scalar::{Field, Ring, Scalar, Tolerance};
 
 /// A homogeneous point: `coords = [w·x₁, …, w·x_d, w]` (weight last).
 ///
@@ -25,7 +25,7 @@ pub struct HPoint<T> {
     pub coords: Vec<T>,
 }
 
-impl<T: Scalar> HPoint<T> {
+impl<T: Ring> HPoint<T> {
     /// `(w·P, w)` from a Cartesian point `P` and weight `w`.
     pub fn from_point(point: &[T], weight: &T) -> Self {
         let mut coords: Vec<T> = point.iter().map(|x| x.clone() * weight).collect();
@@ -108,7 +108,10 @@ impl<T: Scalar> HPoint<T> {
                 .collect(),
         }
     }
+}
 
+/// # Comparisons
+impl<T: Scalar> HPoint<T> {
     /// Are all coordinates zero (within `tol` for `f64`)?
     pub fn is_zero_within(&self, tol: Tolerance) -> bool {
         self.coords.iter().all(|x| x.is_zero_within(tol))
@@ -157,11 +160,30 @@ impl<T: Field> HPoint<T> {
 ///
 /// Reference: source 001 (lecture), "de Casteljau算法", P_i^k recursion.
 pub fn de_casteljau<T: Scalar>(points: &[HPoint<T>], t: &T) -> HPoint<T> {
-    let s = T::one() - t;
+    de_casteljau_hom(points, &(T::one() - t), t)
+}
+
+/// de Casteljau at the homogeneous parameter `(a : b)`:
+/// `b_i^{k} = a·b_i^{k−1} + b·b_{i+1}^{k−1}`, which is `(a + b)ⁿ` times the
+/// value at `t = b/(a + b)`. Ring operations only: with integer control
+/// points and `t = p/q`, `(a, b) = (q − p, p)` keeps every step integral
+/// (fraction-free evaluation).
+///
+/// **Panics if `points` is empty.**
+///
+/// ```
+/// use exact_bezier::{de_casteljau, de_casteljau_hom, HPoint, ratio};
+/// use num_rational::BigRational;
+/// let pts: Vec<HPoint<BigRational>> = (0..4).map(|i| HPoint::from_cartesian(&[ratio(i * i, 1)])).collect();
+/// let t = ratio(1, 3);
+/// let scaled = de_casteljau_hom(&pts, &ratio(2, 1), &ratio(1, 1)); // (2 : 1) is t = 1/3, times 3³
+/// assert_eq!(scaled, de_casteljau(&pts, &t).scale(&ratio(27, 1)));
+/// ```
+pub fn de_casteljau_hom<T: Ring>(points: &[HPoint<T>], a: &T, b: &T) -> HPoint<T> {
     let mut row: Vec<HPoint<T>> = points.to_vec();
     for k in (1..row.len()).rev() {
         for i in 0..k {
-            row[i] = row[i].combine(&s, &row[i + 1], t);
+            row[i] = row[i].combine(a, &row[i + 1], b);
         }
     }
     row.swap_remove(0)

@@ -47,7 +47,9 @@ mod curve_deriv;
 mod curve_geometry;
 mod degree_reduction;
 mod error;
+mod fast_eval;
 mod hpoint;
+mod int;
 mod interval;
 mod io;
 mod mesh;
@@ -99,7 +101,9 @@ pub use curve_deriv::forward_differences;
 pub use curve_geometry::{cross_norm_sq, ConicType, CurveEnd};
 pub use degree_reduction::Reduction;
 pub use error::{Error, MAX_DEGREE};
-pub use hpoint::{de_casteljau, HPoint};
+pub use fast_eval::{FastCurve, FastRect};
+pub use hpoint::{de_casteljau, de_casteljau_hom, HPoint};
+pub use int::Int;
 pub use interval::{coincide_filtered, DecidedBy, Interval};
 pub use io::{
     parse_json, parse_rational, patch_from_value, patch_to_json, point_to_json, read_patches,
@@ -117,7 +121,7 @@ pub use rect_join::{g0_join, g1_join};
 pub use rect_ops::Corner;
 pub use reparam::{bernstein_product, quadratic_coefficients, Quadratic};
 pub use scalar::{
-    binomial, binomial_scalar, ratio, rational_root, rational_to_f64, Field, Ordered, Roots,
+    binomial, binomial_scalar, ratio, rational_root, rational_to_f64, Field, Ordered, Ring, Roots,
     Scalar, Tolerance,
 };
 pub use standard::{

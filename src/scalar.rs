@@ -50,20 +50,13 @@ impl Default for Tolerance {
     }
 }
 
-/// A commutative ring that contains Q (a Q-algebra): `+ − ×`, negation, zero,
-/// one, integer and rational constants, and an exact zero test.
-///
-/// This is all that homogeneous Bézier algorithms need (de Casteljau on
-/// `(w·P, w)`, blossoms, elevation, subdivision, Möbius substitution,
-/// rectangle↔triangle conversion).
-///
-/// ```text
-/// Laws (exact for BigRational and Poly, up to rounding for f64):
-///   a + b = b + a,  a·b = b·a,  (a + b)·c = a·c + b·c,
-///   0 + a = a,      1·a = a,    a + (−a) = 0,
-///   from_rational(p/q)·from_i64(q) = from_i64(p)
-/// ```
-pub trait Scalar:
+/// A commutative ring with exact `==`: `+ − ×`, negation, zero and one,
+/// by value and by reference. Every [`Scalar`] is a `Ring`; so is the
+/// machine-or-big integer [`Int`](crate::Int) of the fraction-free fast
+/// paths, which contains no 1/2 and so is no `Scalar`. Algorithms that need
+/// only these operations (homogeneous de Casteljau with a homogeneous
+/// parameter) are bounded by `Ring`.
+pub trait Ring:
     Clone
     + PartialEq
     + Debug
@@ -79,6 +72,40 @@ pub trait Scalar:
     + for<'a> Sub<&'a Self, Output = Self>
     + for<'a> Mul<&'a Self, Output = Self>
 {
+}
+
+impl<T> Ring for T where
+    T: Clone
+        + PartialEq
+        + Debug
+        + Send
+        + Sync
+        + Zero
+        + One
+        + Neg<Output = T>
+        + Add<Output = T>
+        + Sub<Output = T>
+        + Mul<Output = T>
+        + for<'a> Add<&'a T, Output = T>
+        + for<'a> Sub<&'a T, Output = T>
+        + for<'a> Mul<&'a T, Output = T>
+{
+}
+
+/// A commutative ring that contains Q (a Q-algebra): `+ − ×`, negation, zero,
+/// one, integer and rational constants, and an exact zero test.
+///
+/// This is all that homogeneous Bézier algorithms need (de Casteljau on
+/// `(w·P, w)`, blossoms, elevation, subdivision, Möbius substitution,
+/// rectangle↔triangle conversion).
+///
+/// ```text
+/// Laws (exact for BigRational and Poly, up to rounding for f64):
+///   a + b = b + a,  a·b = b·a,  (a + b)·c = a·c + b·c,
+///   0 + a = a,      1·a = a,    a + (−a) = 0,
+///   from_rational(p/q)·from_i64(q) = from_i64(p)
+/// ```
+pub trait Scalar: Ring {
     /// The integer `n` as a scalar.
     fn from_i64(n: i64) -> Self;
 
