@@ -131,7 +131,9 @@ fn parse_decimal(t: &str) -> Option<BigRational> {
     Some(if neg { -q } else { q })
 }
 
-fn number(v: &Value, what: &str) -> Result<BigRational, Error> {
+/// `v` (a JSON number or a string) as an exact rational; `what` names it in
+/// the error.
+pub(crate) fn number(v: &Value, what: &str) -> Result<BigRational, Error> {
     match v {
         Value::Number(n) => parse_rational(&n.to_string()),
         Value::String(s) => parse_rational(s),
@@ -141,7 +143,8 @@ fn number(v: &Value, what: &str) -> Result<BigRational, Error> {
     }
 }
 
-fn array<'a>(v: &'a Value, what: &str) -> Result<&'a Vec<Value>, Error> {
+/// `v` as a JSON array; `what` names it in the error.
+pub(crate) fn array<'a>(v: &'a Value, what: &str) -> Result<&'a Vec<Value>, Error> {
     v.as_array()
         .ok_or_else(|| Error::Format(format!("{what} should be an array, found {v}")))
 }
@@ -351,7 +354,8 @@ fn read_tri(obj: &Map<String, Value>) -> Result<TriPatch<BigRational>, Error> {
     TriPatch::new(p, w)
 }
 
-fn missing(field: &str) -> Error {
+/// The error for a missing object field.
+pub(crate) fn missing(field: &str) -> Error {
     Error::Format(format!("missing field \"{field}\""))
 }
 
