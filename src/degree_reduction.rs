@@ -278,12 +278,9 @@ fn alternating_binomial<T: Scalar>(n: usize, i: usize) -> T {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::samples::p2 as p;
 
     type Q = BigRational;
-
-    fn p(x: i64, y: i64) -> Vec<Q> {
-        vec![ratio(x, 1), ratio(y, 1)]
-    }
 
     #[test]
     fn schemes_interpolate_ends_and_differ_inside() {

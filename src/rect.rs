@@ -450,23 +450,14 @@ impl<T: Ordered> RectPatch<T> {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::samples::{rect_1x2, rect_1x2_points};
     use crate::scalar::ratio;
     use num_rational::BigRational;
     type Q = BigRational;
 
     #[test]
     fn corners_interpolate_and_mobius_keeps_points() {
-        let p = |x: i64, y: i64, z: i64| vec![ratio::<Q>(x, 1), ratio(y, 1), ratio(z, 1)];
-        let pts = vec![
-            vec![p(0, 0, 0), p(0, 1, 2), p(0, 3, 1)],
-            vec![p(2, 0, 1), p(2, 2, 5), p(1, 3, 0)],
-        ];
-        let w = vec![
-            vec![ratio(1, 1), ratio(2, 1), ratio(1, 2)],
-            vec![ratio(3, 1), ratio(1, 1), ratio(1, 1)],
-        ];
-        let s = RectPatch::new(pts.clone(), w).unwrap();
+        let (pts, s) = (rect_1x2_points(), rect_1x2());
         assert_eq!(s.degree(), (1, 2));
         assert_eq!(s.eval(&ratio(1, 1), &ratio(1, 1)).unwrap(), pts[1][2]);
         let (a, b) = (ratio::<Q>(1, 3), ratio::<Q>(3, 5));
