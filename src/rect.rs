@@ -13,7 +13,7 @@
 
 use crate::curve::{elevate_once, mobius_factors, RationalCurve};
 use crate::error::Error;
-use crate::hpoint::{de_casteljau, HPoint};
+use crate::hpoint::{check_same_dimension, de_casteljau, hom_rows, HPoint};
 use crate::scalar::{Field, Ordered, Scalar, Tolerance};
 
 /// A rational tensor-product Bézier patch of bidegree (m, n).
@@ -44,32 +44,9 @@ impl<T: Scalar> RectPatch<T> {
     /// [`Error::Shape`] if the grids are empty, ragged or of different sizes,
     /// or the points differ in dimension; [`Error::Weight`] if a weight is 0.
     pub fn new(points: Vec<Vec<Vec<T>>>, weights: Vec<Vec<T>>) -> Result<Self, Error> {
-        if points.len() != weights.len()
-            || points.iter().zip(&weights).any(|(p, w)| p.len() != w.len())
-        {
-            return Err(Error::Shape(
-                "the weight grid must have the same shape as the point grid".into(),
-            ));
-        }
-        for (i, row) in weights.iter().enumerate() {
-            if let Some(j) = row.iter().position(|w| w.is_zero()) {
-                return Err(Error::Weight {
-                    index: format!("w_{{{i},{j}}}"),
-                    value: "0".into(),
-                });
-            }
-        }
-        let ctrl = points
-            .iter()
-            .zip(&weights)
-            .map(|(pr, wr)| {
-                pr.iter()
-                    .zip(wr)
-                    .map(|(p, w)| HPoint::from_point(p, w))
-                    .collect()
-            })
-            .collect();
-        Self::from_hom(ctrl)
+        Self::from_hom(hom_rows(&points, &weights, "grid", |i, j| {
+            format!("{{{i},{j}}}")
+        })?)
     }
 
     /// The polynomial patch (all weights 1) with control points `points[i][j]`.
@@ -102,21 +79,9 @@ impl<T: Scalar> RectPatch<T> {
                 ctrl[i].len()
             )));
         }
-        let len = ctrl[0][0].coords.len();
-        if len < 2 {
-            return Err(Error::Shape(
-                "control points need at least one coordinate".into(),
-            ));
-        }
-        for (i, row) in ctrl.iter().enumerate() {
-            if let Some(j) = row.iter().position(|p| p.coords.len() != len) {
-                return Err(Error::Shape(format!(
-                    "control point P_{{{i},{j}}} has dimension {}, P_{{0,0}} has {}",
-                    row[j].coords.len() - 1,
-                    len - 1
-                )));
-            }
-        }
+        check_same_dimension(&ctrl, |i, j, dim, first| {
+            format!("control point P_{{{i},{j}}} has dimension {dim}, P_{{0,0}} has {first}")
+        })?;
         Ok(RectPatch { ctrl })
     }
 
