@@ -14,7 +14,7 @@
 //! Reference: source 002 Definitions 2–3; DESIGN.md §4.
 
 use crate::error::Error;
-use crate::io::{array, missing, number, parse_json, point_to_json, JsonScalar};
+use crate::io::{array, field_array, missing, number, parse_json, point_to_json, JsonScalar};
 use crate::scalar::{Ordered, Scalar};
 use crate::trig::curve::TrigCurve;
 use crate::trig::surface::TrigRect;
@@ -87,7 +87,7 @@ fn read_one(obj: &Map<String, Value>) -> Result<TrigPatch<BigRational>, Error> {
             [a.clone(), a]
         }
     };
-    let rows = array(pts.ok_or_else(|| missing("points"))?, "points")?
+    let rows = field_array(obj, "points")?
         .iter()
         .enumerate()
         .map(|(i, row)| points(row, &format!("row {i} of points")))
