@@ -14,7 +14,7 @@
 //! source 000 (Yang & Yong) eqs (2)–(5) for the Möbius map and weight scaling.
 
 use crate::error::Error;
-use crate::hpoint::{de_casteljau, HPoint};
+use crate::hpoint::{check_positive_weights, de_casteljau, HPoint};
 use crate::scalar::{ratio, Field, Ordered, Scalar, Tolerance};
 
 /// A rational Bézier curve `X(t) = Σ w_i P_i B_{i,n}(t) / Σ w_i B_{i,n}(t)`.
@@ -383,15 +383,7 @@ impl<T: Ordered> RationalCurve<T> {
     ///
     /// [`Error::Weight`] naming the first non-positive weight.
     pub fn check_positive_weights(&self) -> Result<(), Error> {
-        for (i, p) in self.ctrl.iter().enumerate() {
-            if !p.weight().is_positive_within(Tolerance::EXACT) {
-                return Err(Error::Weight {
-                    index: format!("w_{i}"),
-                    value: format!("{}", p.weight().to_f64()),
-                });
-            }
-        }
-        Ok(())
+        check_positive_weights(std::slice::from_ref(&self.ctrl), |_, i| i.to_string())
     }
 }
 

@@ -6,7 +6,7 @@
 //! Division happens once, in [`HPoint::project`].
 
 use crate::error::Error;
-use crate::scalar::{Field, Scalar, Tolerance};
+use crate::scalar::{Field, Ordered, Scalar, Tolerance};
 
 /// A homogeneous point: `coords = [w·x₁, …, w·x_d, w]` (weight last).
 ///
@@ -232,6 +232,30 @@ pub(crate) fn check_same_dimension<T>(
         if let Some(b) = row.iter().position(|p| p.coords.len() != len) {
             let dim = row[b].coords.len() - 1;
             return Err(Error::Shape(mismatch(a, b, dim, len - 1)));
+        }
+    }
+    Ok(())
+}
+
+/// Checks that every weight in `rows` is positive (exactly for exact `T`).
+/// `label(a, b)` names the weight in row `a`, position `b` (`"{0,2}"`).
+///
+/// # Errors
+///
+/// [`Error::Weight`] naming the first non-positive weight, row by row.
+pub(crate) fn check_positive_weights<T: Ordered>(
+    rows: &[Vec<HPoint<T>>],
+    label: impl Fn(usize, usize) -> String,
+) -> Result<(), Error> {
+    for (a, row) in rows.iter().enumerate() {
+        let bad = row
+            .iter()
+            .position(|p| !p.weight().is_positive_within(Tolerance::EXACT));
+        if let Some(b) = bad {
+            return Err(Error::Weight {
+                index: format!("w_{}", label(a, b)),
+                value: format!("{}", row[b].weight().to_f64()),
+            });
         }
     }
     Ok(())

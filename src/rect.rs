@@ -13,8 +13,8 @@
 
 use crate::curve::{elevate_once, mobius_factors, RationalCurve};
 use crate::error::Error;
-use crate::hpoint::{check_same_dimension, de_casteljau, hom_rows, HPoint};
-use crate::scalar::{Field, Ordered, Scalar, Tolerance};
+use crate::hpoint::{check_positive_weights, check_same_dimension, de_casteljau, hom_rows, HPoint};
+use crate::scalar::{Field, Ordered, Scalar};
 
 /// A rational tensor-product Bézier patch of bidegree (m, n).
 ///
@@ -399,17 +399,7 @@ impl<T: Ordered> RectPatch<T> {
     ///
     /// [`Error::Weight`] naming the first non-positive weight.
     pub fn check_positive_weights(&self) -> Result<(), Error> {
-        for (i, row) in self.ctrl.iter().enumerate() {
-            for (j, p) in row.iter().enumerate() {
-                if !p.weight().is_positive_within(Tolerance::EXACT) {
-                    return Err(Error::Weight {
-                        index: format!("w_{{{i},{j}}}"),
-                        value: format!("{}", p.weight().to_f64()),
-                    });
-                }
-            }
-        }
-        Ok(())
+        check_positive_weights(&self.ctrl, |i, j| format!("{{{i},{j}}}"))
     }
 }
 

@@ -16,8 +16,8 @@
 //! Reference: source 001 (lecture), "三角域Bézier曲面".
 
 use crate::error::Error;
-use crate::hpoint::{check_same_dimension, hom_rows, HPoint};
-use crate::scalar::{Field, Ordered, Scalar, Tolerance};
+use crate::hpoint::{check_positive_weights, check_same_dimension, hom_rows, HPoint};
+use crate::scalar::{Field, Ordered, Scalar};
 
 mod ops;
 pub use ops::{affine_combination, tri_bernstein, Bary, SYMMETRIES};
@@ -203,17 +203,7 @@ impl<T: Ordered> TriPatch<T> {
     ///
     /// [`Error::Weight`] naming the first non-positive weight.
     pub fn check_positive_weights(&self) -> Result<(), Error> {
-        for (j, row) in self.rows.iter().enumerate() {
-            for (i, p) in row.iter().enumerate() {
-                if !p.weight().is_positive_within(Tolerance::EXACT) {
-                    return Err(Error::Weight {
-                        index: format!("w_{{{i},{j},{}}}", self.n - i - j),
-                        value: format!("{}", p.weight().to_f64()),
-                    });
-                }
-            }
-        }
-        Ok(())
+        check_positive_weights(&self.rows, |j, i| format!("{{{i},{j},{}}}", self.n - i - j))
     }
 }
 
