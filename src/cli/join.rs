@@ -4,7 +4,7 @@
 //! `f64` only.
 
 use super::deriv::curve_of;
-use super::{load, ScalarKind};
+use super::{load_one, ScalarKind};
 use crate::continuity::join;
 use crate::error::Error;
 use crate::io::{JsonScalar, Patch};
@@ -28,14 +28,9 @@ pub struct Args {
 }
 
 fn one_curve(path: &str) -> Result<Patch<BigRational>, Error> {
-    let mut patches = load(path)?;
-    if patches.len() != 1 {
-        return Err(Error::Shape(format!(
-            "{path} holds {} objects; join takes one curve per file",
-            patches.len()
-        )));
-    }
-    Ok(patches.swap_remove(0))
+    load_one(path, |n| {
+        format!("{path} holds {n} objects; join takes one curve per file")
+    })
 }
 
 pub fn run(a: &Args) -> Result<Value, Error> {

@@ -155,6 +155,19 @@ pub(crate) fn load(path: &str) -> Result<Vec<Patch<BigRational>>, Error> {
     read_patches(&read_input(path)?)
 }
 
+/// The single curve or patch of `path`; `count_error(n)` words the error
+/// when it holds `n ≠ 1`.
+pub(crate) fn load_one(
+    path: &str,
+    count_error: impl Fn(usize) -> String,
+) -> Result<Patch<BigRational>, Error> {
+    let mut patches = load(path)?;
+    if patches.len() != 1 {
+        return Err(Error::Shape(count_error(patches.len())));
+    }
+    Ok(patches.swap_remove(0))
+}
+
 /// Parse a comma-separated list of exact numbers (`1/3,0.25`).
 pub(crate) fn parse_list(text: &str) -> Result<Vec<BigRational>, Error> {
     text.split(',').map(crate::io::parse_rational).collect()
