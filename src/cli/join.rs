@@ -4,7 +4,7 @@
 //! `f64` only.
 
 use super::deriv::curve_of;
-use super::{load_one, ScalarKind};
+use super::{check_tol, load_one, ScalarKind};
 use crate::continuity::join;
 use crate::error::Error;
 use crate::io::{JsonScalar, Patch};
@@ -34,12 +34,7 @@ fn one_curve(path: &str) -> Result<Patch<BigRational>, Error> {
 }
 
 pub fn run(a: &Args) -> Result<Value, Error> {
-    if !(a.tol.is_finite() && a.tol >= 0.0) {
-        return Err(Error::NotFinite(format!(
-            "--tol {} must be finite and ≥ 0",
-            a.tol
-        )));
-    }
+    check_tol(a.tol)?;
     let (p, q) = (one_curve(&a.first)?, one_curve(&a.second)?);
     match a.scalar {
         ScalarKind::Exact => join_with(&p, &q, Tolerance::EXACT),

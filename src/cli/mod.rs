@@ -168,6 +168,20 @@ pub(crate) fn load_one(
     Ok(patches.swap_remove(0))
 }
 
+/// Check the `--tol` of an f64 comparison: finite and ≥ 0.
+///
+/// # Errors
+///
+/// [`Error::NotFinite`] naming the value otherwise.
+pub(crate) fn check_tol(tol: f64) -> Result<(), Error> {
+    if !(tol.is_finite() && tol >= 0.0) {
+        return Err(Error::NotFinite(format!(
+            "--tol {tol} must be finite and ≥ 0"
+        )));
+    }
+    Ok(())
+}
+
 /// Parse a comma-separated list of exact numbers (`1/3,0.25`).
 pub(crate) fn parse_list(text: &str) -> Result<Vec<BigRational>, Error> {
     text.split(',').map(crate::io::parse_rational).collect()
