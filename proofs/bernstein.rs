@@ -6,7 +6,7 @@
 //! expanded into powers of `t` by the crate's own code) and each property is
 //! checked against an independently written right-hand side.
 
-use super::calculus::{antiderivative, derivative, integral_0_1};
+use super::calculus::{antiderivative, integral_0_1};
 use super::{Claim, Verdict};
 use crate::bernstein::bernstein;
 use crate::poly::Poly;
@@ -168,7 +168,7 @@ pub fn claims() -> Vec<Claim> {
             |n, i| {
                 let (i, n) = (i as i64, n as i64);
                 let rhs = Poly::from_int(n) * (b(i - 1, n - 1) - b(i, n - 1));
-                equal(&derivative(&b(i, n), "t"), &rhs)
+                equal(&b(i, n).derivative("t"), &rhs)
             },
         ),
         for_all(
@@ -207,7 +207,7 @@ pub fn claims() -> Vec<Claim> {
             "exact antiderivative F (checked F' = B_{i,n}), F(1) − F(0)",
             |n, i| {
                 let p = b(i as i64, n as i64);
-                equal(&derivative(&antiderivative(&p, "t"), "t"), &p)?;
+                equal(&antiderivative(&p, "t").derivative("t"), &p)?;
                 equal(&integral_0_1(&p, "t"), &ratio::<Poly>(1, n as i64 + 1))
             },
         ),
@@ -217,7 +217,7 @@ pub fn claims() -> Vec<Claim> {
             "B'_{i,n} = C(n,i) t^{i−1}(1−t)^{n−i−1}(i − n t) for 0 < i < n: the first factors are > 0 on (0,1), the last changes sign from + to − exactly at t = i/n; B'_{0,n} = −n(1−t)^{n−1} < 0 and B'_{n,n} = n t^{n−1} > 0 on (0,1) put the maxima at t = 0 and t = 1",
             |n, i| {
                 let (ii, nn) = (i as u32, n as u32);
-                let d = derivative(&b(i as i64, n as i64), "t");
+                let d = b(i as i64, n as i64).derivative("t");
                 let rhs = if i == 0 {
                     -Poly::from_int(n as i64) * s.pow(nn - 1)
                 } else if i == n {

@@ -17,10 +17,9 @@ use crate::curve::RationalCurve;
 use crate::hpoint::HPoint;
 use crate::poly::Poly;
 use crate::rect::RectPatch;
-use crate::scalar::binomial;
+use crate::scalar::{binomial, recip_int};
 use crate::tri::Bary;
 use num_bigint::BigInt;
-use num_rational::BigRational;
 use num_traits::{One, Zero};
 
 fn holds(claim: &str, source: &str, ok: bool, how: &str) -> Claim {
@@ -44,10 +43,6 @@ fn coef2(prefix: &str, n: usize) -> Vec<Vec<Poly>> {
                 .collect()
         })
         .collect()
-}
-
-fn recip(k: BigInt) -> Poly {
-    Poly::constant(BigRational::new(BigInt::from(1), k))
 }
 
 /// The power-form coefficients of a polynomial in `x` (and `y`), `c[a][b]`.
@@ -330,7 +325,7 @@ fn product_claims() -> Vec<Claim> {
             let bf = polar_univariate(&f, m, &pick(&args, mask)).expect("m");
             let bg = polar_univariate(&g, n, &pick(&args, !mask)).expect("n");
             acc + bf * bg
-        }) * recip(binomial(m + n, m));
+        }) * recip_int::<Poly>(&binomial(m + n, m));
         out.push(Claim::identity(
             &format!("Lemma 2.1, (m, n) = ({m}, {n}): B_(m+n)[f·g] = Σ_σ1 B_m[f](u_I) B_n[g](u_J) / C(m+n, m)"),
             "003 Lemma 2.1",
@@ -366,7 +361,7 @@ fn product_claims() -> Vec<Claim> {
                             * polar_univariate(&g, s, &pick(&vs, j_mask)).expect("s");
                 }
             }
-            let rhs = rhs * recip(binomial(big, r) * binomial(big - r, s));
+            let rhs = rhs * recip_int::<Poly>(&(binomial(big, r) * binomial(big - r, s)));
             out.push(Claim::identity(
                 &format!("Lemma 2.2 eq. (11), (m, n) = ({m}, {n}), deg f = {r}, deg g = {s}: B_(m+n)[f·g] = Σ_σ2 B_r[f](u_I) B_s[g](v_J) / (C(m+n, r) C(m+n−r, s))"),
                 "003 Lemma 2.2 (eq. 12 is r = m, s = n)",
@@ -422,7 +417,7 @@ fn composition_claims() -> Vec<Claim> {
             rhs = rhs + polar_bivariate(&f, n, &args).expect("n arguments");
             count += 1;
         }
-        let rhs = rhs * recip(BigInt::from(count));
+        let rhs = rhs * recip_int::<Poly>(&BigInt::from(count));
         out.push(Claim::identity(
             &format!("Lemma 3.1, n = {n}: B_(n,n)[f∘g](u; v) = Σ_τ B_n[f](g(u_τ(1), v_1), …, g(u_τ(n), v_n)) / n!"),
             "003 Lemma 3.1",

@@ -1,23 +1,15 @@
 //! Calculus on [`Poly`] in one named variable, for the proof families:
-//! the derivative and the definite integral over `[0, 1]`, computed
-//! coefficient by coefficient (`d/dt tᵏ = k tᵏ⁻¹`, `∫₀¹ tᵏ dt = 1/(k+1)`),
-//! independently of the Bézier code they check.
+//! repeated derivatives (from [`Poly::derivative`], `d/dt tᵏ = k tᵏ⁻¹`) and
+//! the definite integral over `[0, 1]` (`∫₀¹ tᵏ dt = 1/(k+1)`), computed
+//! coefficient by coefficient, independently of the Bézier code they check.
 
 use crate::poly::Poly;
 use crate::scalar::ratio;
 use num_traits::Zero;
 
-/// `d/d var` of `p` (other variables are constants).
-pub fn derivative(p: &Poly, var: &str) -> Poly {
-    let t = Poly::var(var);
-    (1..=p.degree_in(var)).fold(Poly::zero(), |acc, k| {
-        acc + p.coeff_of(var, k) * ratio::<Poly>(k as i64, 1) * t.pow(k - 1)
-    })
-}
-
 /// The `k`-th derivative `dᵏ/d varᵏ` of `p`.
 pub fn nth_derivative(p: &Poly, var: &str, k: usize) -> Poly {
-    (0..k).fold(p.clone(), |acc, _| derivative(&acc, var))
+    (0..k).fold(p.clone(), |acc, _| acc.derivative(var))
 }
 
 /// The antiderivative `F = Σ c_k tᵏ⁺¹/(k+1)` of `p = Σ c_k tᵏ` (`F(0) = 0`).

@@ -169,18 +169,7 @@ fn mobius_after_elevation(m: usize) -> Claim {
 }
 
 fn factor_splitting() -> Claim {
-    let p = |x: i64, y: i64, z: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1), ratio(z, 1)];
-    let base = RectPatch::new(
-        vec![
-            vec![p(0, 0, 0), p(0, 1, 2), p(0, 3, 1)],
-            vec![p(2, 0, 1), p(2, 2, 5), p(1, 3, 0)],
-        ],
-        vec![
-            vec![ratio(1, 1), ratio(2, 1), ratio(1, 2)],
-            vec![ratio(3, 1), ratio(1, 1), ratio(1, 1)],
-        ],
-    )
-    .expect("valid patch");
+    let base = crate::samples::rect_1x2();
     let one = || ratio::<BigRational>(1, 1);
     let big = multiply_components(&base, &[vec![one(), one()], vec![one(), ratio(2, 1)]]);
     let red = minimal_rect(&big).expect("positive corner weights");

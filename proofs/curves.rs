@@ -10,7 +10,7 @@
 //! sub-segments and blossoms n ≤ 4–5; rational derivatives n ≤ 3, k ≤ 3;
 //! curvature n ≤ 6 (polynomial) and n ≤ 4 (rational).
 
-use super::calculus::{derivative, nth_derivative};
+use super::calculus::nth_derivative;
 use super::{Claim, Verdict};
 use crate::bernstein::bernstein;
 use crate::curve::RationalCurve;
@@ -304,7 +304,7 @@ fn derivative_claims() -> Vec<Claim> {
                 let p = coords(n);
                 let x = curve_poly(n);
                 let at = |q: &Poly, val: i64| q.subst("t", &Poly::from_int(val));
-                let (d1, d2) = (derivative(&x, "t"), nth_derivative(&x, "t", 2));
+                let (d1, d2) = (x.derivative("t"), nth_derivative(&x, "t", 2));
                 let nn = Poly::from_int(n as i64);
                 let nn1 = Poly::from_int((n * (n - 1)) as i64);
                 let two = Poly::from_int(2);
@@ -330,13 +330,13 @@ fn derivative_claims() -> Vec<Claim> {
                 let d = c.derivs_hom(&t, 3);
                 let h = c.eval_hom(&t);
                 let w = h.weight().clone();
-                let dw = derivative(&w, "t");
+                let dw = w.derivative("t");
                 if d[0].coords[0] != h.coords[0] {
                     return Err("M_0 ≠ H".into());
                 }
                 (0..3).try_for_each(|k| {
                     let mk = &d[k].coords[0];
-                    let quotient = derivative(mk, "t") * &w - &(Poly::from_int(k as i64 + 1) * &dw * mk);
+                    let quotient = mk.derivative("t") * &w - &(Poly::from_int(k as i64 + 1) * &dw * mk);
                     if d[k + 1].coords[0] != quotient {
                         return Err(format!("k = {k}: quotient rule fails"));
                     }

@@ -20,10 +20,8 @@ use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::rect::RectPatch;
-use crate::scalar::{binomial, Scalar};
+use crate::scalar::{binomial, recip_int, Scalar};
 use crate::tri::{casteljau_level, Bary, TriPatch};
-use num_bigint::BigInt;
-use num_rational::BigRational;
 
 /// # Blossom (polar form) of a triangular patch
 impl<T: Scalar> TriPatch<T> {
@@ -194,11 +192,6 @@ impl<T: Scalar> ShiftOp<T> {
         }
         Ok(acc)
     }
-}
-
-/// `1 / k` as a scalar. **Panics if `k` is zero.**
-fn recip_int<T: Scalar>(k: &BigInt) -> T {
-    T::from_rational(&BigRational::new(BigInt::from(1), k.clone()))
 }
 
 /// Elementary symmetric sums `e_0, …, e_n` of `args` (`e_a = 0` for a > len).

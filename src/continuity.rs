@@ -209,13 +209,10 @@ pub fn g2_leading_points<T: Scalar>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::samples::p2 as p;
     use num_rational::BigRational;
 
     type Q = BigRational;
-
-    fn p(x: i64, y: i64) -> Vec<Q> {
-        vec![ratio(x, 1), ratio(y, 1)]
-    }
 
     #[test]
     fn straight_continuation_is_g2_cusp_is_not_g1() {

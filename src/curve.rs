@@ -14,7 +14,7 @@
 //! source 000 (Yang & Yong) eqs (2)–(5) for the Möbius map and weight scaling.
 
 use crate::error::Error;
-use crate::hpoint::{de_casteljau, de_casteljau_hom, HPoint};
+use crate::hpoint::{check_positive_weights, de_casteljau, de_casteljau_hom, HPoint};
 use crate::scalar::{ratio, Field, Ordered, Scalar, Tolerance};
 
 /// A rational Bézier curve `X(t) = Σ w_i P_i B_{i,n}(t) / Σ w_i B_{i,n}(t)`.
@@ -377,33 +377,17 @@ impl<T: Ordered> RationalCurve<T> {
     ///
     /// [`Error::Weight`] naming the first non-positive weight.
     pub fn check_positive_weights(&self) -> Result<(), Error> {
-        for (i, p) in self.ctrl.iter().enumerate() {
-            if !p.weight().is_positive_within(Tolerance::EXACT) {
-                return Err(Error::Weight {
-                    index: format!("w_{i}"),
-                    value: format!("{}", p.weight().to_f64()),
-                });
-            }
-        }
-        Ok(())
+        check_positive_weights(std::slice::from_ref(&self.ctrl), |_, i| i.to_string())
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::samples::cubic as sample;
     use num_rational::BigRational;
 
     type Q = BigRational;
-
-    fn sample() -> RationalCurve<Q> {
-        let p = |x: i64, y: i64| vec![ratio::<Q>(x, 1), ratio(y, 1)];
-        RationalCurve::new(
-            vec![p(0, 0), p(1, 3), p(4, 3), p(5, -1)],
-            vec![ratio(1, 1), ratio(2, 1), ratio(1, 3), ratio(3, 2)],
-        )
-        .unwrap()
-    }
 
     #[test]
     fn subdivision_keeps_points() {

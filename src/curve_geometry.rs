@@ -381,14 +381,8 @@ impl<T: Ordered> RationalCurve<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::samples::p2 as p;
     use crate::scalar::ratio;
-    use num_rational::BigRational;
-
-    type Q = BigRational;
-
-    fn p(x: i64, y: i64) -> Vec<Q> {
-        vec![ratio(x, 1), ratio(y, 1)]
-    }
 
     #[test]
     fn end_curvature_agrees_with_derivatives() {

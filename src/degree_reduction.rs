@@ -22,8 +22,7 @@
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::scalar::{binomial, ratio, Scalar, Tolerance};
-use num_rational::BigRational;
+use crate::scalar::{binomial, ratio, recip_int, Scalar, Tolerance};
 
 /// A degree-reduction scheme.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -218,7 +217,7 @@ impl<T: Scalar> RationalCurve<T> {
     pub fn lsq_perturbation(&self) -> Result<Vec<HPoint<T>>, Error> {
         let n = self.require_reducible(1)?;
         let d = self.degeneracy();
-        let inv_norm = T::from_rational(&BigRational::new(1.into(), binomial(2 * n, n)));
+        let inv_norm = recip_int::<T>(&binomial(2 * n, n));
         Ok((0..=n)
             .map(|i| d.scale(&(-alternating_binomial::<T>(n, i) * &inv_norm)))
             .collect())
@@ -278,12 +277,10 @@ fn alternating_binomial<T: Scalar>(n: usize, i: usize) -> T {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::samples::p2 as p;
+    use num_rational::BigRational;
 
     type Q = BigRational;
-
-    fn p(x: i64, y: i64) -> Vec<Q> {
-        vec![ratio(x, 1), ratio(y, 1)]
-    }
 
     #[test]
     fn schemes_interpolate_ends_and_differ_inside() {

@@ -6,7 +6,7 @@
 //! Division happens once, in [`HPoint::project`].
 
 use crate::error::Error;
-use crate::scalar::{Field, Ring, Scalar, Tolerance};
+use crate::scalar::{Field, Ordered, Ring, Scalar, Tolerance};
 
 /// A homogeneous point: `coords = [w·x₁, …, w·x_d, w]` (weight last).
 ///
@@ -187,4 +187,98 @@ pub fn de_casteljau_hom<T: Ring>(points: &[HPoint<T>], a: &T, b: &T) -> HPoint<T
         }
     }
     row.swap_remove(0)
+}
+
+/// Rows of homogeneous points `(w_ab·P_ab, w_ab)` from rows of Cartesian
+/// points and of weights of the same shape (a rect grid or the rows of a
+/// triangle). `layout` names the shape in the error ("grid", "rows");
+/// `label(a, b)` names the weight in row `a`, position `b` (`"{0,2}"`).
+///
+/// # Errors
+///
+/// [`Error::Shape`] if the weights do not have the shape of the points;
+/// [`Error::Weight`] for the first zero weight.
+pub(crate) fn hom_rows<T: Scalar>(
+    points: &[Vec<Vec<T>>],
+    weights: &[Vec<T>],
+    layout: &str,
+    label: impl Fn(usize, usize) -> String,
+) -> Result<Vec<Vec<HPoint<T>>>, Error> {
+    if points.len() != weights.len() || points.iter().zip(weights).any(|(p, w)| p.len() != w.len())
+    {
+        return Err(Error::Shape(format!(
+            "the weight {layout} must have the same shape as the point {layout}"
+        )));
+    }
+    for (a, row) in weights.iter().enumerate() {
+        if let Some(b) = row.iter().position(|w| w.is_zero()) {
+            return Err(Error::Weight {
+                index: format!("w_{}", label(a, b)),
+                value: "0".into(),
+            });
+        }
+    }
+    Ok(points
+        .iter()
+        .zip(weights)
+        .map(|(pr, wr)| {
+            pr.iter()
+                .zip(wr)
+                .map(|(p, w)| HPoint::from_point(p, w))
+                .collect()
+        })
+        .collect())
+}
+
+/// Checks that every point of `rows` has the length of `rows[0][0]`, at
+/// least 2 (one coordinate and the weight). `mismatch(a, b, dim, expected)`
+/// words the error for the point in row `a`, position `b`, of dimension
+/// `dim` where `expected` was wanted.
+///
+/// **Panics if `rows` or `rows[0]` is empty.**
+///
+/// # Errors
+///
+/// [`Error::Shape`] for points without coordinates or of mixed dimension.
+pub(crate) fn check_same_dimension<T>(
+    rows: &[Vec<HPoint<T>>],
+    mismatch: impl Fn(usize, usize, usize, usize) -> String,
+) -> Result<(), Error> {
+    let len = rows[0][0].coords.len();
+    if len < 2 {
+        return Err(Error::Shape(
+            "control points need at least one coordinate".into(),
+        ));
+    }
+    for (a, row) in rows.iter().enumerate() {
+        if let Some(b) = row.iter().position(|p| p.coords.len() != len) {
+            let dim = row[b].coords.len() - 1;
+            return Err(Error::Shape(mismatch(a, b, dim, len - 1)));
+        }
+    }
+    Ok(())
+}
+
+/// Checks that every weight in `rows` is positive (exactly for exact `T`).
+/// `label(a, b)` names the weight in row `a`, position `b` (`"{0,2}"`).
+///
+/// # Errors
+///
+/// [`Error::Weight`] naming the first non-positive weight, row by row.
+pub(crate) fn check_positive_weights<T: Ordered>(
+    rows: &[Vec<HPoint<T>>],
+    label: impl Fn(usize, usize) -> String,
+) -> Result<(), Error> {
+    for (a, row) in rows.iter().enumerate() {
+        let bad = row
+            .iter()
+            .position(|p| !p.weight().is_positive_within(Tolerance::EXACT));
+        if let Some(b) = bad {
+            return Err(Error::Weight {
+                index: format!("w_{}", label(a, b)),
+                value: format!("{}", row[b].weight().to_f64()),
+            });
+        }
+    }
+    Ok(())
 }

@@ -131,7 +131,9 @@ fn parse_decimal(t: &str) -> Option<BigRational> {
     Some(if neg { -q } else { q })
 }
 
-fn number(v: &Value, what: &str) -> Result<BigRational, Error> {
+/// `v` (a JSON number or a string) as an exact rational; `what` names it in
+/// the error.
+pub(crate) fn number(v: &Value, what: &str) -> Result<BigRational, Error> {
     match v {
         Value::Number(n) => parse_rational(&n.to_string()),
         Value::String(s) => parse_rational(s),
@@ -141,7 +143,8 @@ fn number(v: &Value, what: &str) -> Result<BigRational, Error> {
     }
 }
 
-fn array<'a>(v: &'a Value, what: &str) -> Result<&'a Vec<Value>, Error> {
+/// `v` as a JSON array; `what` names it in the error.
+pub(crate) fn array<'a>(v: &'a Value, what: &str) -> Result<&'a Vec<Value>, Error> {
     v.as_array()
         .ok_or_else(|| Error::Format(format!("{what} should be an array, found {v}")))
 }
@@ -176,27 +179,44 @@ fn declared_degree(obj: &Map<String, Value>) -> Option<&Value> {
     obj.get("degree")
 }
 
-fn read_curve(obj: &Map<String, Value>) -> Result<RationalCurve<BigRational>, Error> {
-    let pts = array(
-        obj.get("points").ok_or_else(|| missing("points"))?,
-        "points",
-    )?;
+/// The field `name` of `obj`, an array.
+pub(crate) fn field_array<'a>(
+    obj: &'a Map<String, Value>,
+    name: &str,
+) -> Result<&'a Vec<Value>, Error> {
+    array(obj.get(name).ok_or_else(|| missing(name))?, name)
+}
+
+/// The `points` of a curve or tri patch (`what`: "a curve") and its degree
+/// `n = points.len() − 1`, checked against [`MAX_DEGREE`] and against the
+/// declared `degree`; `mismatch(d, len)` words the error for a declared
+/// `d + 1` (`"?"` if `d` is not a count) where `len` entries were given.
+fn points_of_degree<'a>(
+    obj: &'a Map<String, Value>,
+    what: &str,
+    mismatch: impl Fn(&Value, String, usize) -> String,
+) -> Result<(&'a Vec<Value>, usize), Error> {
+    let pts = field_array(obj, "points")?;
     if pts.is_empty() {
-        return Err(Error::Shape(
-            "a curve needs at least one control point".into(),
-        ));
+        return Err(Error::Shape(format!(
+            "{what} needs at least one control point"
+        )));
     }
     let n = pts.len() - 1;
     check_degree(n)?;
     if let Some(d) = declared_degree(obj) {
         if d.as_u64() != Some(n as u64) {
-            return Err(Error::Shape(format!(
-                "a degree {d} curve should have {} control points, not {}",
-                d.as_u64().map_or("?".into(), |d| (d + 1).to_string()),
-                pts.len()
-            )));
+            let want = d.as_u64().map_or("?".into(), |d| (d + 1).to_string());
+            return Err(Error::Shape(mismatch(d, want, pts.len())));
         }
     }
+    Ok((pts, n))
+}
+
+fn read_curve(obj: &Map<String, Value>) -> Result<RationalCurve<BigRational>, Error> {
+    let (pts, n) = points_of_degree(obj, "a curve", |d, want, len| {
+        format!("a degree {d} curve should have {want} control points, not {len}")
+    })?;
     let points = pts
         .iter()
         .enumerate()
@@ -234,10 +254,7 @@ fn read_grid(
     row_len: impl Fn(usize) -> usize,
     label: impl Fn(usize, usize) -> String,
 ) -> Result<(PointGrid, WeightGrid), Error> {
-    let pts = array(
-        obj.get("points").ok_or_else(|| missing("points"))?,
-        "points",
-    )?;
+    let pts = field_array(obj, "points")?;
     if pts.len() != rows {
         return Err(Error::Shape(format!(
             "the control net should have {rows} rows, not {}",
@@ -295,10 +312,7 @@ fn read_grid(
 }
 
 fn read_rect(obj: &Map<String, Value>) -> Result<RectPatch<BigRational>, Error> {
-    let pts = array(
-        obj.get("points").ok_or_else(|| missing("points"))?,
-        "points",
-    )?;
+    let pts = field_array(obj, "points")?;
     let rows = pts.len();
     let cols = pts.first().and_then(Value::as_array).map_or(0, Vec::len);
     if rows == 0 || cols == 0 {
@@ -322,26 +336,9 @@ fn read_rect(obj: &Map<String, Value>) -> Result<RectPatch<BigRational>, Error> 
 }
 
 fn read_tri(obj: &Map<String, Value>) -> Result<TriPatch<BigRational>, Error> {
-    let pts = array(
-        obj.get("points").ok_or_else(|| missing("points"))?,
-        "points",
-    )?;
-    if pts.is_empty() {
-        return Err(Error::Shape(
-            "a tri patch needs at least one control point".into(),
-        ));
-    }
-    let n = pts.len() - 1;
-    check_degree(n)?;
-    if let Some(d) = declared_degree(obj) {
-        if d.as_u64() != Some(n as u64) {
-            return Err(Error::Shape(format!(
-                "a tri patch of degree {d} needs {} rows of points, not {}",
-                d.as_u64().map_or("?".into(), |d| (d + 1).to_string()),
-                pts.len()
-            )));
-        }
-    }
+    let (_, n) = points_of_degree(obj, "a tri patch", |d, want, len| {
+        format!("a tri patch of degree {d} needs {want} rows of points, not {len}")
+    })?;
     let (p, w) = read_grid(
         obj,
         n + 1,
@@ -351,7 +348,8 @@ fn read_tri(obj: &Map<String, Value>) -> Result<TriPatch<BigRational>, Error> {
     TriPatch::new(p, w)
 }
 
-fn missing(field: &str) -> Error {
+/// The error for a missing object field.
+pub(crate) fn missing(field: &str) -> Error {
     Error::Format(format!("missing field \"{field}\""))
 }
 

@@ -61,6 +61,7 @@ mod rect;
 mod rect_join;
 mod rect_ops;
 mod reparam;
+mod samples;
 mod scalar;
 mod standard;
 #[cfg(feature = "proptest")]

@@ -42,22 +42,6 @@ pub(crate) fn curve_net<T: Scalar>(c: &RationalCurve<T>) -> Net<T> {
     c.ctrl().iter().map(|p| vec![p.clone()]).collect()
 }
 
-/// `C(n, k)` as a scalar, from machine integers when it fits in `i64`
-/// (every n ≤ 66), else from a big integer.
-fn binom<T: Scalar>(n: usize, k: usize) -> T {
-    if k > n {
-        return T::zero();
-    }
-    let mut acc: u128 = 1;
-    for i in 0..k.min(n - k) {
-        acc = acc * (n - i) as u128 / (i + 1) as u128;
-        if acc > i64::MAX as u128 {
-            return binomial_scalar(n, k);
-        }
-    }
-    T::from_i64(acc as i64)
-}
-
 /// Power-basis coefficients `a_0 … a_m` of `Σ b_i B_{i,m}(t)`:
 /// `a_k = C(m, k) Σ_{i≤k} C(k, i) (−1)^{k−i} b_i`.
 ///
@@ -74,14 +58,14 @@ pub fn bernstein_to_power<T: Scalar>(b: &[T]) -> Vec<T> {
     (0..b.len())
         .map(|k| {
             let sum = (0..=k).fold(T::zero(), |acc, i| {
-                let term = binom::<T>(k, i) * &b[i];
+                let term = binomial_scalar::<T>(k, i) * &b[i];
                 if (k - i) % 2 == 0 {
                     acc + term
                 } else {
                     acc - term
                 }
             });
-            binom::<T>(m, k) * &sum
+            binomial_scalar::<T>(m, k) * &sum
         })
         .collect()
 }
@@ -102,7 +86,7 @@ pub fn power_to_bernstein<T: Field>(a: &[T], m: usize) -> Vec<T> {
             (0..=i.min(a.len().saturating_sub(1)))
                 .filter(|&k| k < a.len())
                 .fold(T::zero(), |acc, k| {
-                    acc + binom::<T>(i, k) * &a[k] / &binom::<T>(m, k)
+                    acc + binomial_scalar::<T>(i, k) * &a[k] / &binomial_scalar::<T>(m, k)
                 })
         })
         .collect()
@@ -554,23 +538,9 @@ fn check_finite_points(net: &Net<BigRational>) -> Result<(), Error> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::samples::rect_1x2 as sample;
     use crate::scalar::ratio;
     type Q = BigRational;
-
-    fn sample() -> RectPatch<Q> {
-        let p = |x: i64, y: i64, z: i64| vec![ratio::<Q>(x, 1), ratio(y, 1), ratio(z, 1)];
-        RectPatch::new(
-            vec![
-                vec![p(0, 0, 0), p(0, 1, 2), p(0, 3, 1)],
-                vec![p(2, 0, 1), p(2, 2, 5), p(1, 3, 0)],
-            ],
-            vec![
-                vec![ratio(1, 1), ratio(2, 1), ratio(1, 2)],
-                vec![ratio(3, 1), ratio(1, 1), ratio(1, 1)],
-            ],
-        )
-        .unwrap()
-    }
 
     #[test]
     fn round_trip_power_bernstein() {

@@ -13,8 +13,8 @@
 
 use crate::curve::{elevate_once, mobius_factors, RationalCurve};
 use crate::error::Error;
-use crate::hpoint::{de_casteljau, HPoint};
-use crate::scalar::{Field, Ordered, Scalar, Tolerance};
+use crate::hpoint::{check_positive_weights, check_same_dimension, de_casteljau, hom_rows, HPoint};
+use crate::scalar::{Field, Ordered, Scalar};
 
 /// A rational tensor-product Bézier patch of bidegree (m, n).
 ///
@@ -44,32 +44,9 @@ impl<T: Scalar> RectPatch<T> {
     /// [`Error::Shape`] if the grids are empty, ragged or of different sizes,
     /// or the points differ in dimension; [`Error::Weight`] if a weight is 0.
     pub fn new(points: Vec<Vec<Vec<T>>>, weights: Vec<Vec<T>>) -> Result<Self, Error> {
-        if points.len() != weights.len()
-            || points.iter().zip(&weights).any(|(p, w)| p.len() != w.len())
-        {
-            return Err(Error::Shape(
-                "the weight grid must have the same shape as the point grid".into(),
-            ));
-        }
-        for (i, row) in weights.iter().enumerate() {
-            if let Some(j) = row.iter().position(|w| w.is_zero()) {
-                return Err(Error::Weight {
-                    index: format!("w_{{{i},{j}}}"),
-                    value: "0".into(),
-                });
-            }
-        }
-        let ctrl = points
-            .iter()
-            .zip(&weights)
-            .map(|(pr, wr)| {
-                pr.iter()
-                    .zip(wr)
-                    .map(|(p, w)| HPoint::from_point(p, w))
-                    .collect()
-            })
-            .collect();
-        Self::from_hom(ctrl)
+        Self::from_hom(hom_rows(&points, &weights, "grid", |i, j| {
+            format!("{{{i},{j}}}")
+        })?)
     }
 
     /// The polynomial patch (all weights 1) with control points `points[i][j]`.
@@ -102,21 +79,9 @@ impl<T: Scalar> RectPatch<T> {
                 ctrl[i].len()
             )));
         }
-        let len = ctrl[0][0].coords.len();
-        if len < 2 {
-            return Err(Error::Shape(
-                "control points need at least one coordinate".into(),
-            ));
-        }
-        for (i, row) in ctrl.iter().enumerate() {
-            if let Some(j) = row.iter().position(|p| p.coords.len() != len) {
-                return Err(Error::Shape(format!(
-                    "control point P_{{{i},{j}}} has dimension {}, P_{{0,0}} has {}",
-                    row[j].coords.len() - 1,
-                    len - 1
-                )));
-            }
-        }
+        check_same_dimension(&ctrl, |i, j, dim, first| {
+            format!("control point P_{{{i},{j}}} has dimension {dim}, P_{{0,0}} has {first}")
+        })?;
         Ok(RectPatch { ctrl })
     }
 
@@ -434,39 +399,20 @@ impl<T: Ordered> RectPatch<T> {
     ///
     /// [`Error::Weight`] naming the first non-positive weight.
     pub fn check_positive_weights(&self) -> Result<(), Error> {
-        for (i, row) in self.ctrl.iter().enumerate() {
-            for (j, p) in row.iter().enumerate() {
-                if !p.weight().is_positive_within(Tolerance::EXACT) {
-                    return Err(Error::Weight {
-                        index: format!("w_{{{i},{j}}}"),
-                        value: format!("{}", p.weight().to_f64()),
-                    });
-                }
-            }
-        }
-        Ok(())
+        check_positive_weights(&self.ctrl, |i, j| format!("{{{i},{j}}}"))
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::samples::{rect_1x2, rect_1x2_points};
     use crate::scalar::ratio;
     use num_rational::BigRational;
     type Q = BigRational;
 
     #[test]
     fn corners_interpolate_and_mobius_keeps_points() {
-        let p = |x: i64, y: i64, z: i64| vec![ratio::<Q>(x, 1), ratio(y, 1), ratio(z, 1)];
-        let pts = vec![
-            vec![p(0, 0, 0), p(0, 1, 2), p(0, 3, 1)],
-            vec![p(2, 0, 1), p(2, 2, 5), p(1, 3, 0)],
-        ];
-        let w = vec![
-            vec![ratio(1, 1), ratio(2, 1), ratio(1, 2)],
-            vec![ratio(3, 1), ratio(1, 1), ratio(1, 1)],
-        ];
-        let s = RectPatch::new(pts.clone(), w).unwrap();
+        let (pts, s) = (rect_1x2_points(), rect_1x2());
         assert_eq!(s.degree(), (1, 2));
         assert_eq!(s.eval(&ratio(1, 1), &ratio(1, 1)).unwrap(), pts[1][2]);
         let (a, b) = (ratio::<Q>(1, 3), ratio::<Q>(3, 5));

@@ -288,23 +288,10 @@ fn curve_of<T: Scalar>(ctrl: &[HPoint<T>]) -> RationalCurve<T> {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::samples::rect_1x2 as sample;
     use crate::scalar::ratio;
     use num_rational::BigRational;
     type Q = BigRational;
-
-    fn sample() -> RectPatch<Q> {
-        let p = |x: i64, y: i64, z: i64| vec![ratio::<Q>(x, 1), ratio(y, 1), ratio(z, 1)];
-        let pts = vec![
-            vec![p(0, 0, 0), p(0, 1, 2), p(0, 3, 1)],
-            vec![p(2, 0, 1), p(2, 2, 5), p(1, 3, 0)],
-        ];
-        let w = vec![
-            vec![ratio(1, 1), ratio(2, 1), ratio(1, 2)],
-            vec![ratio(3, 1), ratio(1, 1), ratio(1, 1)],
-        ];
-        RectPatch::new(pts, w).unwrap()
-    }
 
     #[test]
     fn derivatives_match_difference_quotients_of_the_exact_function() {

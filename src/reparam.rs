@@ -45,7 +45,7 @@
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::rect::RectPatch;
-use crate::scalar::{binomial_scalar, Field, Scalar};
+use crate::scalar::{binomial, binomial_scalar, recip_int, Field, Scalar};
 
 /// The four coefficients of the quadratic reparameterization, in the paper's
 /// convention: `α(t) = α1·t + α2·(1 − t)`, `β(s) = β1·s + β2·(1 − s)`.
@@ -88,8 +88,7 @@ pub fn bernstein_product<T: Scalar>(a: &[T], b: &[T]) -> Vec<T> {
 
 /// `x / C(n, k)` (exact: Scalar contains Q).
 fn scale_down<T: Scalar>(x: T, n: usize, k: usize) -> T {
-    let c = crate::scalar::binomial(n, k);
-    x * T::from_rational(&num_rational::BigRational::new(1.into(), c))
+    x * recip_int::<T>(&binomial(n, k))
 }
 
 /// The coefficients `c′[i][l]`, `i, l = 0…m`: the Bernstein coefficients in

@@ -259,9 +259,39 @@ pub fn binomial(n: usize, k: usize) -> BigInt {
     acc
 }
 
-/// The binomial coefficient C(n, k) as a scalar.
+/// The binomial coefficient C(n, k) as a scalar (0 when k > n).
+///
+/// Built from machine integers while C(n, k) fits in `i64` (every n ≤ 66),
+/// else from the big integer [`binomial`]; the value is the same either way
+/// (an integer below 2⁶⁴ converts to `f64` with one rounding).
+///
+/// # Examples
+///
+/// ```
+/// use exact_bezier::{binomial_scalar, ratio};
+/// use num_rational::BigRational;
+/// assert_eq!(binomial_scalar::<BigRational>(6, 3), ratio(20, 1));
+/// assert_eq!(binomial_scalar::<f64>(70, 35), 112186277816662845432.0);
+/// ```
 pub fn binomial_scalar<T: Scalar>(n: usize, k: usize) -> T {
-    T::from_bigint(&binomial(n, k))
+    if k > n {
+        return T::from_bigint(&BigInt::zero());
+    }
+    let mut acc: u128 = 1;
+    for i in 0..k.min(n - k) {
+        acc = acc * (n - i) as u128 / (i + 1) as u128;
+        if acc > i64::MAX as u128 {
+            return T::from_bigint(&binomial(n, k));
+        }
+    }
+    T::from_i64(acc as i64)
+}
+
+/// The reciprocal `1/k` of an integer as a scalar (exact for exact `T`).
+///
+/// **Panics if `k` is zero.**
+pub(crate) fn recip_int<T: Scalar>(k: &BigInt) -> T {
+    T::from_rational(&BigRational::new(BigInt::one(), k.clone()))
 }
 
 /// The rational `p/q` (q ≠ 0) as a scalar. **Panics if `q` is zero.**

@@ -16,8 +16,8 @@
 //! Reference: source 001 (lecture), "三角域Bézier曲面".
 
 use crate::error::Error;
-use crate::hpoint::HPoint;
-use crate::scalar::{Field, Ordered, Scalar, Tolerance};
+use crate::hpoint::{check_positive_weights, check_same_dimension, hom_rows, HPoint};
+use crate::scalar::{Field, Ordered, Scalar};
 
 mod ops;
 pub use ops::{affine_combination, tri_bernstein, Bary, SYMMETRIES};
@@ -78,32 +78,9 @@ impl<T: Scalar> TriPatch<T> {
     /// [`Error::Shape`] if row `j` does not hold `n − j + 1` entries, or the
     /// points differ in dimension; [`Error::Weight`] if a weight is zero.
     pub fn new(points: Vec<Vec<Vec<T>>>, weights: Vec<Vec<T>>) -> Result<Self, Error> {
-        if points.len() != weights.len()
-            || points.iter().zip(&weights).any(|(p, w)| p.len() != w.len())
-        {
-            return Err(Error::Shape(
-                "the weight rows must have the same shape as the point rows".into(),
-            ));
-        }
-        for (j, row) in weights.iter().enumerate() {
-            if let Some(i) = row.iter().position(|w| w.is_zero()) {
-                return Err(Error::Weight {
-                    index: format!("w_{{{i},{j}}}"),
-                    value: "0".into(),
-                });
-            }
-        }
-        let rows = points
-            .iter()
-            .zip(&weights)
-            .map(|(pr, wr)| {
-                pr.iter()
-                    .zip(wr)
-                    .map(|(p, w)| HPoint::from_point(p, w))
-                    .collect()
-            })
-            .collect();
-        Self::from_hom(rows)
+        Self::from_hom(hom_rows(&points, &weights, "rows", |j, i| {
+            format!("{{{i},{j}}}")
+        })?)
     }
 
     /// The polynomial patch (all weights 1).
@@ -137,22 +114,12 @@ impl<T: Scalar> TriPatch<T> {
                 )));
             }
         }
-        let len = rows[0][0].coords.len();
-        if len < 2 {
-            return Err(Error::Shape(
-                "control points need at least one coordinate".into(),
-            ));
-        }
-        for (j, row) in rows.iter().enumerate() {
-            if let Some(i) = row.iter().position(|p| p.coords.len() != len) {
-                return Err(Error::Shape(format!(
-                    "control point P_{{{i},{j},{}}} has dimension {}, expected {}",
-                    n - i - j,
-                    row[i].coords.len() - 1,
-                    len - 1
-                )));
-            }
-        }
+        check_same_dimension(&rows, |j, i, dim, first| {
+            format!(
+                "control point P_{{{i},{j},{}}} has dimension {dim}, expected {first}",
+                n - i - j
+            )
+        })?;
         Ok(TriPatch { n, rows })
     }
 
@@ -236,17 +203,7 @@ impl<T: Ordered> TriPatch<T> {
     ///
     /// [`Error::Weight`] naming the first non-positive weight.
     pub fn check_positive_weights(&self) -> Result<(), Error> {
-        for (j, row) in self.rows.iter().enumerate() {
-            for (i, p) in row.iter().enumerate() {
-                if !p.weight().is_positive_within(Tolerance::EXACT) {
-                    return Err(Error::Weight {
-                        index: format!("w_{{{i},{j},{}}}", self.n - i - j),
-                        value: format!("{}", p.weight().to_f64()),
-                    });
-                }
-            }
-        }
-        Ok(())
+        check_positive_weights(&self.rows, |j, i| format!("{{{i},{j},{}}}", self.n - i - j))
     }
 }
 

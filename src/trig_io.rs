@@ -14,7 +14,7 @@
 //! Reference: source 002 Definitions 2–3; DESIGN.md §4.
 
 use crate::error::Error;
-use crate::io::{parse_json, parse_rational, point_to_json, JsonScalar};
+use crate::io::{array, field_array, missing, number, parse_json, point_to_json, JsonScalar};
 use crate::scalar::{Ordered, Scalar};
 use crate::trig::curve::TrigCurve;
 use crate::trig::surface::TrigRect;
@@ -47,31 +47,10 @@ impl TrigPatch<BigRational> {
     }
 }
 
-fn number(v: &Value, what: &str) -> Result<BigRational, Error> {
-    match v {
-        Value::Number(n) => parse_rational(&n.to_string()),
-        Value::String(s) => parse_rational(s),
-        _ => Err(Error::Format(format!(
-            "{what} should be a number, found {v}"
-        ))),
-    }
-}
-
-fn list<'a>(v: Option<&'a Value>, what: &str) -> Result<&'a Vec<Value>, Error> {
-    let v = v.ok_or_else(|| Error::Format(format!("missing field \"{what}\"")))?;
-    v.as_array()
-        .ok_or_else(|| Error::Format(format!("{what} should be an array, found {v}")))
-}
-
 fn points(v: &Value, what: &str) -> Result<Vec<Vec<BigRational>>, Error> {
-    list(Some(v), what)?
+    array(v, what)?
         .iter()
-        .map(|p| {
-            list(Some(p), what)?
-                .iter()
-                .map(|x| number(x, what))
-                .collect()
-        })
+        .map(|p| array(p, what)?.iter().map(|x| number(x, what)).collect())
         .collect()
 }
 
@@ -80,14 +59,12 @@ fn kind(v: &Value) -> Option<&str> {
 }
 
 fn read_one(obj: &Map<String, Value>) -> Result<TrigPatch<BigRational>, Error> {
-    let alpha = obj
-        .get("alpha")
-        .ok_or_else(|| Error::Format("missing field \"alpha\"".into()))?;
+    let alpha = obj.get("alpha").ok_or_else(|| missing("alpha"))?;
     let pts = obj.get("points");
     match obj.get("kind").and_then(Value::as_str) {
         Some("trig-curve") => {
             let a = number(alpha, "alpha")?;
-            let p = pts.ok_or_else(|| Error::Format("missing field \"points\"".into()))?;
+            let p = pts.ok_or_else(|| missing("points"))?;
             return TrigCurve::new(points(p, "points")?, a).map(TrigPatch::Curve);
         }
         Some("trig-rect") => {}
@@ -110,7 +87,7 @@ fn read_one(obj: &Map<String, Value>) -> Result<TrigPatch<BigRational>, Error> {
             [a.clone(), a]
         }
     };
-    let rows = list(pts, "points")?
+    let rows = field_array(obj, "points")?
         .iter()
         .enumerate()
         .map(|(i, row)| points(row, &format!("row {i} of points")))

@@ -3,6 +3,9 @@
 //! s = 2τ/(1+τ²)) and λ with perfect-cube radicands (λ built from a rational
 //! σ: σ³ = N/D by construction), plus the command line.
 
+mod common;
+
+use common::cli;
 use exact_bezier::strategy::point;
 use exact_bezier::{
     check_lambda, circle_of, lambda_change_delta, lambda_change_param, lambda_of_sigma_cubed,
@@ -10,7 +13,6 @@ use exact_bezier::{
 };
 use num_rational::BigRational;
 use proptest::prelude::*;
-use std::process::Command;
 
 type Q = BigRational;
 
@@ -139,20 +141,9 @@ fn bad_arcs_are_rejected() {
     assert!(QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 2), Tolerance::EXACT).is_err());
 }
 
-fn cli(args: &[&str]) -> (i32, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_exact-bezier"))
-        .args(args)
-        .output()
-        .expect("binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-    )
-}
-
 #[test]
 fn cli_arc_and_is_circle() {
-    let (code, text) = cli(&[
+    let (code, text, _) = cli(&[
         "arc",
         "--cos-half",
         "0",
@@ -171,14 +162,14 @@ fn cli_arc_and_is_circle() {
     assert_eq!(v["weights"].to_string(), r#"[1,"1/12","4/3",1]"#);
     let path = std::env::temp_dir().join(format!("arc-cli-{}.json", std::process::id()));
     std::fs::write(&path, &text).unwrap();
-    let (code, text) = cli(&["is-circle", path.to_str().unwrap()]);
+    let (code, text, _) = cli(&["is-circle", path.to_str().unwrap()]);
     std::fs::remove_file(&path).ok();
     assert_eq!(code, 0);
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
     assert_eq!(v["circle"], true);
     assert_eq!(v["center"].to_string(), "[1,0]");
     assert_eq!(v["radius_squared"].to_string(), "1");
-    let (code, _) = cli(&[
+    let (code, _, _) = cli(&[
         "arc",
         "--cos-half",
         "0",

@@ -2,6 +2,9 @@
 //! random exact patches: copies made by the maps (1)–(6) coincide, and the
 //! witness reproduces them; perturbed copies do not.
 
+mod common;
+
+use common::cli_json as cli;
 use exact_bezier::strategy::*;
 use exact_bezier::{
     canonical_key, coincide, coincide_f64, coincide_filtered, dedup, minimal_curve, minimal_rect,
@@ -318,15 +321,6 @@ fn degree_zero_direction_and_curve_patch_mismatch_are_handled() {
             .unwrap()
             .coincident
     );
-}
-
-fn cli(args: &[&str]) -> (i32, serde_json::Value) {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_exact-bezier"))
-        .args(args)
-        .output()
-        .unwrap();
-    let v = serde_json::from_slice(&out.stdout).unwrap_or(serde_json::Value::Null);
-    (out.status.code().unwrap(), v)
 }
 
 #[test]

@@ -1,6 +1,9 @@
 //! Conversions rect ↔ tri on random exact patches (evaluated at the mapped
 //! parameters), the source 003 §4 fixtures, split validation and the CLI.
 
+mod common;
+
+use common::cli;
 use exact_bezier::strategy::{rect, tri, unit_parameter};
 use exact_bezier::{
     bilinear, read_patches, rect_to_tri, rect_to_tris, square_corners, tri_to_degenerate_rect,
@@ -181,19 +184,6 @@ fn fixture_4_2_rectangles_match_the_triangle() {
             assert_eq!(rect.eval(&s, &tt).unwrap(), t.eval(&x[0], &x[1]).unwrap());
         }
     }
-}
-
-fn cli(args: &[&str]) -> (i32, String, String) {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_exact-bezier"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
 }
 
 /// The CLI regenerates the committed fixtures exactly.

@@ -4,13 +4,15 @@
 //! orientation, the OBJ/STL/PLY files read back, and the homogeneous
 //! derivatives proved symbolically per patch.
 
+mod common;
+
+use common::bin;
 use exact_bezier::strategy::{rect, tri};
 use exact_bezier::{
     ratio, read_patches, rect_jet, tri_jet, Mesh, Patch, Poly, RectPatch, TriPatch,
 };
 use num_rational::BigRational;
 use proptest::prelude::*;
-use std::process::Command;
 
 const EXAMPLE1: &str = include_str!("fixtures/yang_yong_example1.json");
 const TRI: &str = include_str!("../docs/figures/inputs/source003_fig5a_tri.json");
@@ -159,12 +161,6 @@ fn curves_and_bad_densities_are_errors() {
     assert!(Mesh::from_patches(&p, 100_000).is_err());
     let four_d = r#"{"kind": "tri", "degree": 1, "points": [[[0,0,0,0],[1,0,0,0]],[[0,1,0,0]]]}"#;
     assert!(Mesh::from_patches(&read_patches(four_d).unwrap(), 2).is_err());
-}
-
-fn bin() -> Command {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_exact-bezier"));
-    c.current_dir(env!("CARGO_MANIFEST_DIR"));
-    c
 }
 
 fn run_mesh(out: &std::path::Path, extra: &[&str]) -> std::process::Output {

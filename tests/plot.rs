@@ -2,12 +2,14 @@
 //! viewBox, the PNG decodes to the asked size with the expected colours,
 //! the CLI writes both and rejects bad requests, and the gallery regenerates.
 
+mod common;
+
+use common::bin;
 use exact_bezier::plot::{plot_png, plot_svg, Plane, PlotOptions, Projection, Split};
 use exact_bezier::{read_patches, Patch};
 use num_rational::BigRational;
 use resvg::tiny_skia::Pixmap;
 use std::path::PathBuf;
-use std::process::Command;
 
 const EXAMPLE1: &str = include_str!("fixtures/yang_yong_example1.json");
 const TRI: &str = include_str!("../docs/figures/inputs/source003_fig5a_tri.json");
@@ -254,12 +256,6 @@ fn bad_options_are_errors() {
     }
     let four_d = r#"{"kind": "curve", "degree": 1, "points": [[0,0,0,0],[1,1,1,1]]}"#;
     assert!(plot_svg(&patches(four_d), &opts(4)).is_err());
-}
-
-fn bin() -> Command {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_exact-bezier"));
-    c.current_dir(env!("CARGO_MANIFEST_DIR"));
-    c
 }
 
 fn temp_dir(name: &str) -> PathBuf {

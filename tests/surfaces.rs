@@ -2,6 +2,9 @@
 //! keep points at the mapped parameters, elevation and subdivision keep
 //! points, standard forms have unit corners, joins are detected.
 
+mod common;
+
+use common::cli_json as cli;
 use exact_bezier::strategy::*;
 use exact_bezier::*;
 use num_rational::BigRational;
@@ -278,16 +281,6 @@ fn theorem1_failure_names_the_condition() {
         standardize_rect(&neg, Tolerance::EXACT),
         Err(Error::Weight { .. })
     ));
-}
-
-/// Run the binary; (exit code, parsed standard output).
-fn cli(args: &[&str]) -> (i32, serde_json::Value) {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_exact-bezier"))
-        .args(args)
-        .output()
-        .expect("the binary runs");
-    let json = serde_json::from_slice(&out.stdout).unwrap_or(serde_json::Value::Null);
-    (out.status.code().unwrap_or(-1), json)
 }
 
 #[test]

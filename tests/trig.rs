@@ -2,6 +2,9 @@
 //! rational τ and α, G¹ of constructed joins, f64/exact agreement, the bowl
 //! fixtures and the `eval` command line.
 
+mod common;
+
+use common::cli;
 use exact_bezier::strategy::{point, positive_weight, rational_in, small_rational, unit_parameter};
 use exact_bezier::{
     ratio, read_trig_patches, trig_basis_values, trig_bowl, trig_g0, trig_g1_factor,
@@ -12,7 +15,6 @@ use num_rational::BigRational;
 use num_traits::{One, Zero};
 use proptest::collection::vec;
 use proptest::prelude::*;
-use std::process::Command;
 
 type Q = BigRational;
 
@@ -258,18 +260,6 @@ fn bowl_fixtures() {
     }
     check_fixture("bowl.json", &g1);
     check_fixture("bowl_g0.json", &g0);
-}
-
-fn cli(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_exact-bezier"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
 }
 
 #[test]

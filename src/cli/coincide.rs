@@ -2,7 +2,7 @@
 //! rect patches the same up to Möbius maps, reversal, swapping, elevation,
 //! common factors and weight scaling? Exit 0 either way.
 
-use super::{load, ScalarKind};
+use super::{load_one, ScalarKind};
 use crate::error::Error;
 use crate::interval::coincide_filtered;
 use crate::io::Patch;
@@ -31,19 +31,14 @@ pub struct Args {
 }
 
 /// Read exactly one curve or patch from `path`.
-pub(crate) fn load_one(path: &str) -> Result<Patch<BigRational>, Error> {
-    let mut patches = load(path)?;
-    if patches.len() != 1 {
-        return Err(Error::Shape(format!(
-            "{path} holds {} patches; coincide compares one with one",
-            patches.len()
-        )));
-    }
-    Ok(patches.remove(0))
+fn one_patch(path: &str) -> Result<Patch<BigRational>, Error> {
+    load_one(path, |n| {
+        format!("{path} holds {n} patches; coincide compares one with one")
+    })
 }
 
 pub fn run(a: &Args) -> Result<Value, Error> {
-    let (pa, pb) = (load_one(&a.a)?, load_one(&a.b)?);
+    let (pa, pb) = (one_patch(&a.a)?, one_patch(&a.b)?);
     match a.scalar {
         ScalarKind::F64 => {
             if a.filtered {

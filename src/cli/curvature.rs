@@ -3,7 +3,7 @@
 //! irrational in general).
 
 use super::deriv::{curve_of, single_parameter};
-use super::{load, one_or_many, ScalarKind};
+use super::{load, run_each, PatchOp, ScalarKind};
 use crate::error::Error;
 use crate::io::{JsonScalar, Patch};
 use crate::scalar::Ordered;
@@ -24,17 +24,15 @@ pub struct Args {
 
 pub fn run(a: &Args) -> Result<Value, Error> {
     let t = single_parameter(&a.at)?;
-    let values = load(&a.file)?
-        .iter()
-        .map(|p| match a.scalar {
-            ScalarKind::Exact => curvature_with(p, &t),
-            ScalarKind::F64 => curvature_with(&p.to_f64(), &t.to_f64()),
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(one_or_many(values))
+    run_each(&load(&a.file)?, &[t], a.scalar, &Curvature)
 }
 
-fn curvature_with<T: JsonScalar + Ordered>(p: &Patch<T>, t: &T) -> Result<Value, Error> {
-    let k2 = curve_of(p, "curvature")?.curvature_sq(t)?;
-    Ok(json!({ "curvature_squared": k2.to_json(), "curvature": k2.to_f64().sqrt() }))
+/// κ² (exact for exact `T`) and κ of a curve at `params[0]`.
+struct Curvature;
+
+impl PatchOp for Curvature {
+    fn apply<T: JsonScalar + Ordered>(&self, p: &Patch<T>, params: &[T]) -> Result<Value, Error> {
+        let k2 = curve_of(p, "curvature")?.curvature_sq(&params[0])?;
+        Ok(json!({ "curvature_squared": k2.to_json(), "curvature": k2.to_f64().sqrt() }))
+    }
 }

@@ -1,7 +1,7 @@
 //! `deriv FILE --at T [--order K] [--scalar f64]`: the K-th derivative of a
 //! curve at T, `{"order": K, "derivative": [...]}` (exact by default).
 
-use super::{load, one_or_many, parse_list, ScalarKind};
+use super::{load, parse_list, run_each, PatchOp, ScalarKind};
 use crate::curve::RationalCurve;
 use crate::error::{Error, MAX_DEGREE};
 use crate::io::{point_to_json, JsonScalar, Patch};
@@ -60,17 +60,15 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         )));
     }
     let t = single_parameter(&a.at)?;
-    let values = load(&a.file)?
-        .iter()
-        .map(|p| match a.scalar {
-            ScalarKind::Exact => deriv_with(p, &t, a.order),
-            ScalarKind::F64 => deriv_with(&p.to_f64(), &t.to_f64(), a.order),
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(one_or_many(values))
+    run_each(&load(&a.file)?, &[t], a.scalar, &Deriv(a.order))
 }
 
-fn deriv_with<T: JsonScalar + Ordered>(p: &Patch<T>, t: &T, order: usize) -> Result<Value, Error> {
-    let d = curve_of(p, "deriv")?.deriv(t, order)?;
-    Ok(json!({ "order": order, "derivative": point_to_json(&d) }))
+/// The derivative of the given order of a curve at `params[0]`.
+struct Deriv(usize);
+
+impl PatchOp for Deriv {
+    fn apply<T: JsonScalar + Ordered>(&self, p: &Patch<T>, params: &[T]) -> Result<Value, Error> {
+        let d = curve_of(p, "deriv")?.deriv(&params[0], self.0)?;
+        Ok(json!({ "order": self.0, "derivative": point_to_json(&d) }))
+    }
 }

@@ -1,6 +1,6 @@
 //! `eval FILE --at U[,V] [--scalar f64]`.
 
-use super::{one_or_many, parse_list, read_input, ScalarKind};
+use super::{parse_list, read_input, run_each, PatchOp, ScalarKind};
 use crate::error::Error;
 use crate::io::{point_to_json, read_patches, JsonScalar, Patch};
 use crate::scalar::Ordered;
@@ -26,18 +26,16 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         return super::eval_trig::run(&trig, &a.at, a.scalar);
     }
     let params = parse_list(&a.at)?;
-    let patches = read_patches(&text)?;
-    let values = patches
-        .iter()
-        .map(|p| match a.scalar {
-            ScalarKind::Exact => eval_with(p, &params),
-            ScalarKind::F64 => eval_with(
-                &p.to_f64(),
-                &params.iter().map(Ordered::to_f64).collect::<Vec<_>>(),
-            ),
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(one_or_many(values))
+    run_each(&read_patches(&text)?, &params, a.scalar, &Eval)
+}
+
+/// The point of a curve at `t` or of a patch at `(u, v)`.
+struct Eval;
+
+impl PatchOp for Eval {
+    fn apply<T: JsonScalar + Ordered>(&self, p: &Patch<T>, params: &[T]) -> Result<Value, Error> {
+        eval_with(p, params)
+    }
 }
 
 fn eval_with<T: JsonScalar + Ordered>(p: &Patch<T>, params: &[T]) -> Result<Value, Error> {

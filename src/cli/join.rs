@@ -4,7 +4,7 @@
 //! `f64` only.
 
 use super::deriv::curve_of;
-use super::{load, ScalarKind};
+use super::{check_tol, load_one, ScalarKind};
 use crate::continuity::join;
 use crate::error::Error;
 use crate::io::{JsonScalar, Patch};
@@ -28,23 +28,13 @@ pub struct Args {
 }
 
 fn one_curve(path: &str) -> Result<Patch<BigRational>, Error> {
-    let mut patches = load(path)?;
-    if patches.len() != 1 {
-        return Err(Error::Shape(format!(
-            "{path} holds {} objects; join takes one curve per file",
-            patches.len()
-        )));
-    }
-    Ok(patches.swap_remove(0))
+    load_one(path, |n| {
+        format!("{path} holds {n} objects; join takes one curve per file")
+    })
 }
 
 pub fn run(a: &Args) -> Result<Value, Error> {
-    if !(a.tol.is_finite() && a.tol >= 0.0) {
-        return Err(Error::NotFinite(format!(
-            "--tol {} must be finite and ≥ 0",
-            a.tol
-        )));
-    }
+    check_tol(a.tol)?;
     let (p, q) = (one_curve(&a.first)?, one_curve(&a.second)?);
     match a.scalar {
         ScalarKind::Exact => join_with(&p, &q, Tolerance::EXACT),

@@ -6,7 +6,8 @@
 //! Exact arithmetic is the default; `--scalar f64` selects floats.
 
 use crate::error::Error;
-use crate::io::{read_patches, Patch};
+use crate::io::{read_patches, JsonScalar, Patch};
+use crate::scalar::Ordered;
 use clap::{Parser, Subcommand, ValueEnum};
 use num_rational::BigRational;
 use serde_json::Value;
@@ -154,9 +155,69 @@ pub(crate) fn load(path: &str) -> Result<Vec<Patch<BigRational>>, Error> {
     read_patches(&read_input(path)?)
 }
 
+/// The single curve or patch of `path`; `count_error(n)` words the error
+/// when it holds `n ≠ 1`.
+pub(crate) fn load_one(
+    path: &str,
+    count_error: impl Fn(usize) -> String,
+) -> Result<Patch<BigRational>, Error> {
+    let mut patches = load(path)?;
+    if patches.len() != 1 {
+        return Err(Error::Shape(count_error(patches.len())));
+    }
+    Ok(patches.swap_remove(0))
+}
+
+/// Check the `--tol` of an f64 comparison: finite and ≥ 0.
+///
+/// # Errors
+///
+/// [`Error::NotFinite`] naming the value otherwise.
+pub(crate) fn check_tol(tol: f64) -> Result<(), Error> {
+    if !(tol.is_finite() && tol >= 0.0) {
+        return Err(Error::NotFinite(format!(
+            "--tol {tol} must be finite and ≥ 0"
+        )));
+    }
+    Ok(())
+}
+
 /// Parse a comma-separated list of exact numbers (`1/3,0.25`).
 pub(crate) fn parse_list(text: &str) -> Result<Vec<BigRational>, Error> {
     text.split(',').map(crate::io::parse_rational).collect()
+}
+
+/// A command's computation on one patch with exact parameters, written once
+/// for every scalar (see [`run_each`]).
+pub(crate) trait PatchOp {
+    /// The JSON result for `p` at `params` (converted to the patch's scalar).
+    fn apply<T: JsonScalar + Ordered>(&self, p: &Patch<T>, params: &[T]) -> Result<Value, Error>;
+}
+
+/// Apply `op` to every patch with the chosen scalar: exactly, or on the
+/// nearest `f64` patch and parameters. One value for a single patch, an
+/// array for several.
+///
+/// # Errors
+///
+/// The first error of `op`.
+pub(crate) fn run_each(
+    patches: &[Patch<BigRational>],
+    params: &[BigRational],
+    scalar: ScalarKind,
+    op: &impl PatchOp,
+) -> Result<Value, Error> {
+    let values = patches
+        .iter()
+        .map(|p| match scalar {
+            ScalarKind::Exact => op.apply(p, params),
+            ScalarKind::F64 => op.apply(
+                &p.to_f64(),
+                &params.iter().map(Ordered::to_f64).collect::<Vec<_>>(),
+            ),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(one_or_many(values))
 }
 
 /// One value for a single patch, an array for several.

@@ -4,7 +4,7 @@
 //! curve is not of lower degree (exit 0 either way).
 
 use super::deriv::curve_of;
-use super::{load, one_or_many, ScalarKind};
+use super::{check_tol, load, one_or_many, ScalarKind};
 use crate::degree_reduction::Reduction;
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
@@ -43,12 +43,7 @@ pub struct Args {
 }
 
 pub fn run(a: &Args) -> Result<Value, Error> {
-    if !(a.tol.is_finite() && a.tol >= 0.0) {
-        return Err(Error::NotFinite(format!(
-            "--tol {} must be finite and ≥ 0",
-            a.tol
-        )));
-    }
+    check_tol(a.tol)?;
     let values = load(&a.file)?
         .iter()
         .map(|p| match a.scalar {

@@ -1,6 +1,6 @@
 //! `reparam` and `elevate`: transformations that return patches.
 
-use super::{load, one_or_many, parse_list, ScalarKind};
+use super::{load, one_or_many, parse_list, run_each, PatchOp, ScalarKind};
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
 use crate::reparam::Quadratic;
@@ -60,18 +60,18 @@ pub fn reparam(a: &ReparamArgs) -> Result<Value, Error> {
             )));
         }
     }
-    let out = load(&a.file)?
-        .iter()
-        .map(|p| match a.scalar {
-            ScalarKind::Exact => reparam_with(p, &params, quadratic),
-            ScalarKind::F64 => reparam_with(
-                &p.to_f64(),
-                &params.iter().map(Ordered::to_f64).collect::<Vec<_>>(),
-                quadratic,
-            ),
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(one_or_many(out))
+    run_each(&load(&a.file)?, &params, a.scalar, &Reparam { quadratic })
+}
+
+/// A Möbius map (or, if `quadratic`, the quadratic map of a rect patch).
+struct Reparam {
+    quadratic: bool,
+}
+
+impl PatchOp for Reparam {
+    fn apply<T: JsonScalar + Ordered>(&self, p: &Patch<T>, params: &[T]) -> Result<Value, Error> {
+        reparam_with(p, params, self.quadratic)
+    }
 }
 
 fn reparam_with<T: JsonScalar + Ordered>(

@@ -576,17 +576,8 @@ pub fn coincide_curves(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::samples::cubic as curve;
     use crate::scalar::ratio;
-    type Q = BigRational;
-
-    fn curve() -> RationalCurve<Q> {
-        let p = |x: i64, y: i64| vec![ratio::<Q>(x, 1), ratio(y, 1)];
-        RationalCurve::new(
-            vec![p(0, 0), p(1, 3), p(4, 3), p(5, -1)],
-            vec![ratio(1, 1), ratio(2, 1), ratio(1, 3), ratio(3, 2)],
-        )
-        .unwrap()
-    }
 
     #[test]
     fn curve_copies_coincide_with_exact_witness() {

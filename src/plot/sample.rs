@@ -220,24 +220,10 @@ fn to3(x: &[f64]) -> Result<[f64; 3], Error> {
 
 fn curve(out: &mut Drawing, p: &Patch<f64>, color: usize, d: Density) -> Result<(), Error> {
     let m = d.samples as f64;
-    let points = (0..=d.samples)
-        .map(|k| point(p, [k as f64 / m, 0.0]))
-        .collect::<Result<_, _>>()?;
-    out.strokes.push(Stroke {
-        role: Role::Surface,
-        color,
-        points,
-    });
+    stroke(out, p, color, (0..=d.samples).map(|k| [k as f64 / m, 0.0]))?;
     if d.speed {
-        for k in 0..=d.iso {
-            let at = point(p, [k as f64 / d.iso as f64, 0.0])?;
-            out.dots.push(Dot {
-                role: Role::Speed,
-                color,
-                at,
-                radius: 2.5,
-            });
-        }
+        let n = d.iso as f64;
+        speed_dots(out, p, color, (0..=d.iso).map(|k| [k as f64 / n, 0.0]))?;
     }
     Ok(())
 }
@@ -250,26 +236,46 @@ fn piece(
     d: Density,
 ) -> Result<(), Error> {
     for line in dom.iso_lines(d) {
-        let points = line
-            .iter()
-            .map(|&(s, t)| point(p, dom.at(s, t)))
-            .collect::<Result<_, _>>()?;
-        out.strokes.push(Stroke {
-            role: Role::Surface,
-            color,
-            points,
-        });
+        stroke(out, p, color, line.iter().map(|&(s, t)| dom.at(s, t)))?;
     }
     if d.speed {
-        for (s, t) in dom.nodes(d.iso) {
-            let at = point(p, dom.at(s, t))?;
-            out.dots.push(Dot {
-                role: Role::Speed,
-                color,
-                at,
-                radius: 2.5,
-            });
-        }
+        let nodes = dom.nodes(d.iso);
+        speed_dots(out, p, color, nodes.iter().map(|&(s, t)| dom.at(s, t)))?;
+    }
+    Ok(())
+}
+
+/// The polyline through `p` at the parameters `uvs`.
+fn stroke(
+    out: &mut Drawing,
+    p: &Patch<f64>,
+    color: usize,
+    uvs: impl Iterator<Item = [f64; 2]>,
+) -> Result<(), Error> {
+    let points = uvs.map(|uv| point(p, uv)).collect::<Result<_, _>>()?;
+    out.strokes.push(Stroke {
+        role: Role::Surface,
+        color,
+        points,
+    });
+    Ok(())
+}
+
+/// A `--speed` dot on `p` at each of the parameters `uvs`.
+fn speed_dots(
+    out: &mut Drawing,
+    p: &Patch<f64>,
+    color: usize,
+    uvs: impl Iterator<Item = [f64; 2]>,
+) -> Result<(), Error> {
+    for uv in uvs {
+        let at = point(p, uv)?;
+        out.dots.push(Dot {
+            role: Role::Speed,
+            color,
+            at,
+            radius: 2.5,
+        });
     }
     Ok(())
 }
