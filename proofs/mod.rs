@@ -3,7 +3,7 @@
 //!
 //! One file per claim family. Each family is a function returning its
 //! [`Claim`]s; every verdict is **computed** — by the symbolic scalar
-//! ([`Poly`](crate::Poly)) for identities that must hold for all symbol
+//! ([`Poly`]) for identities that must hold for all symbol
 //! values, by exact rationals for printed examples. A claim the computation
 //! refutes is kept with its counterexample and the corrected statement: that
 //! is a result, not a failure. Each claim also records the verdict we
