@@ -5,7 +5,8 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use exact_bezier::{
-    ratio, rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Field, RectPatch, Split, TriPatch,
+    ratio, rect_to_tris, tri_to_degenerate_rect, tri_to_rects, FastTri, Field, RectPatch, Split,
+    TriPatch,
 };
 use num_rational::BigRational;
 
@@ -83,9 +84,23 @@ fn run<T: Field>(c: &mut Criterion, label: &str) {
     }
 }
 
+/// Exact triangle evaluation by the fraction-free [`FastTri`].
+fn fast(c: &mut Criterion) {
+    let (u, v) = (ratio::<BigRational>(2, 7), ratio::<BigRational>(3, 11));
+    for n in [3usize, 6] {
+        let t = tri_patch::<BigRational>(n);
+        let fast = FastTri::new(&t);
+        assert_eq!(fast.eval(&u, &v).unwrap(), t.eval(&u, &v).unwrap());
+        c.bench_function(&format!("tri eval n={n} exact FastTri"), |b| {
+            b.iter(|| black_box(&fast).eval(black_box(&u), black_box(&v)))
+        });
+    }
+}
+
 fn benches(c: &mut Criterion) {
     run::<f64>(c, "f64");
     run::<BigRational>(c, "exact");
+    fast(c);
 }
 
 criterion_group!(tri, benches);

@@ -1,10 +1,12 @@
-//! Fraction-free exact evaluation: [`FastCurve`] and [`FastRect`] clear the
+//! Fraction-free exact evaluation: [`FastCurve`], [`FastRect`] and
+//! [`FastTri`] clear the
 //! denominators of an exact curve or patch once, then evaluate at a rational
 //! parameter `t = p/q` by de Casteljau at the homogeneous parameter
 //! `(q − p : p)` on [`Int`] — machine integers while they fit, big integers
 //! after — and divide once at the end. Same values as
-//! [`RationalCurve::eval`] and [`RectPatch::eval`], exactly; the speed-up
-//! is measured in `benches/curve.rs` and `benches/rect.rs`.
+//! [`RationalCurve::eval`], [`RectPatch::eval`] and [`TriPatch::eval`],
+//! exactly; the speed-up is measured in `benches/curve.rs`,
+//! `benches/rect.rs` and `benches/tri.rs`.
 //!
 //! ```text
 //! X(p/q) = H_d / H_w,   H = Σ (L·w_i P_i, L·w_i) C(n,i) (q−p)^{n−i} pⁱ   (L = common denominator)
@@ -15,6 +17,7 @@ use crate::error::Error;
 use crate::hpoint::{de_casteljau_hom, HPoint};
 use crate::int::{common_denominator, Int};
 use crate::rect::RectPatch;
+use crate::tri::{casteljau_level, TriPatch};
 use num_rational::BigRational;
 use num_traits::Zero;
 
@@ -127,5 +130,54 @@ impl FastRect {
             .collect();
         let (ua, ub) = hom_param(u);
         project(&de_casteljau_hom(&col, &ua, &ub))
+    }
+}
+
+/// A rational triangular patch prepared for fast exact evaluation.
+///
+/// ```
+/// use exact_bezier::{FastTri, TriPatch, ratio};
+/// use num_rational::BigRational;
+/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 3), ratio(y, 5)];
+/// let t = TriPatch::new(vec![vec![p(0, 0), p(1, 2), p(3, 0)], vec![p(0, 2), p(2, 3)], vec![p(0, 4)]],
+///                       vec![vec![ratio(1, 1), ratio(2, 3), ratio(1, 1)], vec![ratio(1, 2), ratio(3, 2)], vec![ratio(1, 1)]]).unwrap();
+/// let (u, v) = (ratio(1, 4), ratio(2, 7));
+/// assert_eq!(FastTri::new(&t).eval(&u, &v).unwrap(), t.eval(&u, &v).unwrap());
+/// ```
+#[derive(Clone, Debug)]
+pub struct FastTri {
+    rows: Vec<Vec<HPoint<Int>>>,
+}
+
+impl FastTri {
+    /// Clear the denominators of `t` (one lcm over the whole net).
+    pub fn new(t: &TriPatch<BigRational>) -> FastTri {
+        let flat: Vec<&HPoint<BigRational>> = t.rows().iter().flatten().collect();
+        let mut ints = integral(&flat).into_iter();
+        let rows = t
+            .rows()
+            .iter()
+            .map(|r| ints.by_ref().take(r.len()).collect())
+            .collect();
+        FastTri { rows }
+    }
+
+    /// `X(u, v, 1 − u − v)`, exactly: equal to [`TriPatch::eval`]. With
+    /// `u = a/q`, `v = b/q` over a common denominator `q`, triangular de
+    /// Casteljau runs at the integer barycentric triple `(a, b, q − a − b)`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::PointAtInfinity`] if the weight function vanishes there.
+    pub fn eval(&self, u: &BigRational, v: &BigRational) -> Result<Vec<BigRational>, Error> {
+        let (nums, q) = common_denominator(&[u, v]);
+        let [a, b]: [Int; 2] = nums.try_into().expect("two parameters");
+        let c = Int::from_bigint(q) - &a - &b;
+        let bary = [a, b, c];
+        let mut rows = self.rows.clone();
+        while rows.len() > 1 {
+            rows = casteljau_level(&rows, &bary);
+        }
+        project(&rows[0][0])
     }
 }

@@ -102,7 +102,7 @@ pub use curve_deriv::forward_differences;
 pub use curve_geometry::{cross_norm_sq, ConicType, CurveEnd};
 pub use degree_reduction::Reduction;
 pub use error::{Error, MAX_DEGREE};
-pub use fast_eval::{FastCurve, FastRect};
+pub use fast_eval::{FastCurve, FastRect, FastTri};
 pub use hpoint::{de_casteljau, de_casteljau_hom, HPoint};
 pub use int::Int;
 pub use interval::{coincide_filtered, DecidedBy, Interval};

@@ -17,7 +17,7 @@
 
 use crate::error::Error;
 use crate::hpoint::{check_positive_weights, check_same_dimension, hom_rows, HPoint};
-use crate::scalar::{Field, Ordered, Scalar};
+use crate::scalar::{Field, Ordered, Ring, Scalar};
 
 mod ops;
 pub use ops::{affine_combination, tri_bernstein, Bary, SYMMETRIES};
@@ -26,7 +26,7 @@ pub use ops::{affine_combination, tri_bernstein, Bary, SYMMETRIES};
 /// from the rows of level r (entries `(i, j)`, `i + j ≤ r`) to level r − 1,
 /// `P'_{i,j} = u P_{i+1,j} + v P_{i,j+1} + w P_{i,j}` (k implicit).
 /// **Panics if `rows` has a single row (level 0).**
-pub(crate) fn casteljau_level<T: Scalar>(
+pub(crate) fn casteljau_level<T: Ring>(
     rows: &[Vec<HPoint<T>>],
     b: &Bary<T>,
 ) -> Vec<Vec<HPoint<T>>> {
