@@ -35,6 +35,10 @@ pub enum Error {
     PointAtInfinity,
     /// The request has no exact answer over Q (e.g. an irrational root).
     NotRational(String),
+    /// The input or the work it asks for is over a documented resource
+    /// limit (see [`crate::limits`] and `docs/limits.md`); the message names
+    /// the limit and how to raise it.
+    Limit(String),
 }
 
 /// The largest degree (per parameter) accepted from input: 64.
@@ -57,6 +61,7 @@ impl fmt::Display for Error {
             Error::Domain(m) => write!(f, "parameter out of domain: {m}"),
             Error::PointAtInfinity => write!(f, "point at infinity: the weight is zero"),
             Error::NotRational(m) => write!(f, "no exact rational answer: {m}"),
+            Error::Limit(m) => write!(f, "over a limit: {m}"),
         }
     }
 }

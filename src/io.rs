@@ -78,6 +78,7 @@ impl Patch<BigRational> {
 /// assert!(parse_rational("NaN").is_err());
 /// ```
 pub fn parse_rational(text: &str) -> Result<BigRational, Error> {
+    crate::limits::check_number_text(text)?;
     let t = text.trim();
     let bad = || Error::BadNumber(format!("{text:?}"));
     if let Some((n, d)) = t.split_once('/') {
@@ -154,6 +155,7 @@ fn point(v: &Value, what: &str) -> Result<Vec<BigRational>, Error> {
     if coords.is_empty() {
         return Err(Error::Shape(format!("{what} has no coordinates")));
     }
+    crate::limits::check_dimension(coords.len())?;
     coords.iter().map(|c| number(c, what)).collect()
 }
 

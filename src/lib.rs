@@ -52,6 +52,7 @@ mod hpoint;
 mod int;
 mod interval;
 mod io;
+pub mod limits;
 mod mesh;
 mod minimal_degree;
 mod modp;

@@ -1,16 +1,28 @@
 //! The command line (DESIGN §5): subcommands read the JSON interchange
 //! format (a path, or `-` for standard input) and write JSON to standard
 //! output. Exit codes: 0 success, 1 a `prove` claim off its expected
-//! verdict, 2 bad input (one line on standard error). Never a panic.
+//! verdict, 2 bad input or a limit (one line on standard error, argument
+//! errors included), 3 a result written but outside the valid domain (e.g.
+//! `reduce` giving a non-positive weight; the output says which). Never a
+//! panic, never `inf`/`NaN` in the output.
+//!
+//! Every command runs in-process through [`run_with`] (argument vector and
+//! standard-input bytes in, [`Outcome`] out); the binary's `main` is a thin
+//! wrapper, so the fuzz suite (`tests/fuzz.rs`) drives exactly what users
+//! run. Errors of every subcommand, present and future, pass through
+//! [`one_line`]; resource limits ([`crate::limits`]) are set from the global
+//! flags `--max-digits`, `--max-input-bytes` and `--max-work`.
 //!
 //! Exact arithmetic is the default; `--scalar f64` selects floats.
 
 use crate::error::Error;
+use crate::limits::{self, Limits};
 use crate::io::{read_patches, JsonScalar, Patch};
 use crate::scalar::Ordered;
 use clap::{Parser, Subcommand, ValueEnum};
 use num_rational::BigRational;
 use serde_json::Value;
+use std::cell::RefCell;
 use std::io::Read;
 
 mod arc;
@@ -37,6 +49,31 @@ mod transform;
 pub struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// Most decimal digits per input number, exponent included (docs/limits.md).
+    #[arg(long, global = true, value_name = "N")]
+    max_digits: Option<u64>,
+    /// Most bytes of one input file or of standard input.
+    #[arg(long, global = true, value_name = "BYTES")]
+    max_input_bytes: Option<u64>,
+    /// Most estimated work units of one command (docs/limits.md).
+    #[arg(long, global = true, value_name = "UNITS")]
+    max_work: Option<u64>,
+}
+
+impl Cli {
+    /// The limits asked for by the global flags (defaults otherwise).
+    fn limits(&self) -> Limits {
+        let d = Limits::DEFAULT;
+        Limits {
+            max_digits: self.max_digits.unwrap_or(d.max_digits),
+            max_input_bytes: self.max_input_bytes.unwrap_or(d.max_input_bytes),
+            max_work: self.max_work.unwrap_or(d.max_work),
+        }
+    }
+
+    fn sets_limits(&self) -> bool {
+        self.max_digits.is_some() || self.max_input_bytes.is_some() || self.max_work.is_some()
+    }
 }
 
 /// Which scalar a command computes with.
@@ -87,22 +124,19 @@ enum Command {
     Dedup(dedup::Args),
 }
 
-/// Run the command line; returns the process exit code.
-pub fn main() -> i32 {
-    let cli = match Cli::try_parse() {
-        Ok(cli) => cli,
-        Err(e) => {
-            let _ = e.print();
-            return if e.use_stderr() { 2 } else { 0 };
-        }
-    };
-    let result = match cli.command {
+/// Exit code of a result written but outside the valid domain (module docs).
+pub const EXIT_OUTSIDE_DOMAIN: i32 = 3;
+
+/// Run one command: its JSON result, or its exit code when the command
+/// prints for itself (`prove`).
+fn dispatch(command: Command) -> Result<Result<Value, i32>, Error> {
+    let value = match command {
         Command::Eval(a) => eval::run(&a),
         Command::Reparam(a) => transform::reparam(&a),
         Command::Elevate(a) => transform::elevate(&a),
         Command::Standardize(a) => standardize::run(&a),
         Command::Convert(a) => convert::run(&a),
-        Command::Prove(a) => return prove::run(&a),
+        Command::Prove(a) => return Ok(Err(prove::run(&a))),
         Command::Plot(a) => plot::run(&a),
         Command::Mesh(a) => mesh::run(&a),
         Command::Figures(a) => figures::run(&a),
@@ -114,39 +148,237 @@ pub fn main() -> i32 {
         Command::IsCircle(a) => is_circle::run(&a),
         Command::Coincide(a) => coincide::run(&a),
         Command::Dedup(a) => dedup::run(&a),
-    };
-    match result {
-        Ok(v) => {
-            emit(&serde_json::to_string_pretty(&v).unwrap_or_default());
-            0
-        }
-        Err(e) => {
-            eprintln!("error: {e}");
-            2
-        }
+    }?;
+    Ok(Ok(value))
+}
+
+/// Where a run's standard input comes from.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Stdin {
+    /// The process's standard input (the binary).
+    Process,
+    /// These bytes (in-process runs: tests, nested `figures` inputs).
+    Bytes(Vec<u8>),
+}
+
+/// What one run of the command line did.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Outcome {
+    /// The exit code (module docs).
+    pub code: i32,
+    /// Standard output.
+    pub stdout: String,
+    /// Standard error: empty, or one line.
+    pub stderr: String,
+    /// Work units charged by the cost model ([`crate::limits::charged`]).
+    pub work: u64,
+}
+
+/// The state of the run in progress on this thread.
+struct Session {
+    stdin: Stdin,
+    stdout: String,
+    exit: i32,
+}
+
+thread_local! {
+    static SESSION: RefCell<Vec<Session>> = const { RefCell::new(Vec::new()) };
+}
+
+/// Run the command line `args` (with the program name first) in-process,
+/// with `stdin` as standard input. A run inside a run (a `figures` input)
+/// shares the outer run's limits and work counter.
+pub fn run_with(args: Vec<String>, stdin: Stdin) -> Outcome {
+    let nested = SESSION.with(|s| !s.borrow().is_empty());
+    SESSION.with(|s| {
+        s.borrow_mut().push(Session {
+            stdin,
+            stdout: String::new(),
+            exit: 0,
+        })
+    });
+    let (code, stderr, work) = parse_and_run(args, nested);
+    let session = SESSION.with(|s| s.borrow_mut().pop().expect("the session pushed above"));
+    Outcome {
+        code: if code == 0 { session.exit } else { code },
+        stdout: session.stdout,
+        stderr: stderr.map_or_else(String::new, |e| format!("error: {}\n", one_line(&e))),
+        work,
     }
 }
 
-/// Write `text` and a newline to standard output. A closed pipe (e.g.
-/// `exact-bezier prove | head`) is not an error: the reader has what it
-/// wanted, so write errors are ignored rather than panicking as `println!`
-/// would.
-pub(crate) fn emit(text: &str) {
-    use std::io::Write;
-    let mut out = std::io::stdout().lock();
-    let _ = writeln!(out, "{text}").and_then(|()| out.flush());
+/// Parse and run; the exit code, the error message if any, and the work
+/// charged.
+fn parse_and_run(args: Vec<String>, nested: bool) -> (i32, Option<String>, u64) {
+    let cli = match Cli::try_parse_from(args) {
+        Ok(cli) => cli,
+        Err(e) => {
+            let (code, err) = clap_outcome(&e);
+            return (code, err, 0);
+        }
+    };
+    let run = |command| {
+        let before = limits::charged();
+        let result = dispatch(command).and_then(|r| match r {
+            Ok(v) => check_finite(&v).map(|()| Ok(v)),
+            Err(code) => Ok(Err(code)),
+        });
+        (result, limits::charged() - before)
+    };
+    let (result, work) = if nested {
+        if cli.sets_limits() {
+            let e = "limit flags belong to the outer command line".to_string();
+            return (2, Some(e), 0);
+        }
+        run(cli.command)
+    } else {
+        let limits = cli.limits();
+        limits::with_limits(limits, || run(cli.command))
+    };
+    match result {
+        Ok(Ok(v)) => {
+            emit(&serde_json::to_string_pretty(&v).unwrap_or_default());
+            (0, None, work)
+        }
+        Ok(Err(code)) => (code, None, work),
+        Err(e) => (2, Some(e.to_string()), work),
+    }
 }
 
-/// Read the text of `path` (`-` for standard input).
+/// Help and version go to standard output (exit 0); every other argument
+/// error becomes one line: the message, clap's tip and the usage.
+fn clap_outcome(e: &clap::Error) -> (i32, Option<String>) {
+    use clap::error::ErrorKind;
+    let text = e.render().to_string();
+    match e.kind() {
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
+            emit(text.trim_end());
+            return (0, None);
+        }
+        ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            return (
+                2,
+                Some("a subcommand is required; usage: exact-bezier [OPTIONS] <COMMAND>; try '--help'".into()),
+            );
+        }
+        _ => {}
+    }
+    let mut parts = Vec::new();
+    for line in text.lines().map(str::trim).filter(|l| !l.is_empty()) {
+        let line = line.strip_prefix("error: ").unwrap_or(line);
+        if let Some(u) = line.strip_prefix("Usage: ") {
+            parts.push(format!("usage: {u}"));
+        } else if line.starts_with("For more information") {
+            parts.push("try '--help'".into());
+        } else {
+            parts.push(line.to_string());
+        }
+    }
+    (2, Some(parts.join("; ")))
+}
+
+/// The most characters of an error line.
+pub const MAX_ERROR_CHARS: usize = 300;
+
+/// `message` as one line of at most [`MAX_ERROR_CHARS`] characters:
+/// control characters escaped (`\n`), the middle elided when too long.
+pub fn one_line(message: &str) -> String {
+    let flat: String = message
+        .chars()
+        .flat_map(|c| {
+            let escaped: Vec<char> = if c.is_control() {
+                c.escape_default().collect()
+            } else {
+                vec![c]
+            };
+            escaped
+        })
+        .collect();
+    let n = flat.chars().count();
+    if n <= MAX_ERROR_CHARS {
+        return flat;
+    }
+    let head: String = flat.chars().take(MAX_ERROR_CHARS - 80).collect();
+    let tail: String = flat.chars().skip(n - 50).collect();
+    format!("{head} …[{} characters elided]… {tail}", n - (MAX_ERROR_CHARS - 80) - 50)
+}
+
+/// Refuse output with a non-finite number: an `f64` result that overflowed
+/// is written as the text `inf`, `-inf` or `NaN` by
+/// [`JsonScalar`](crate::io::JsonScalar), and caught here for every command.
+fn check_finite(v: &Value) -> Result<(), Error> {
+    match v {
+        Value::String(s) if matches!(s.as_str(), "inf" | "-inf" | "NaN") => Err(Error::NotFinite(
+            "an f64 result overflowed (inf or NaN); use --scalar exact or smaller numbers".into(),
+        )),
+        Value::Array(items) => items.iter().try_for_each(check_finite),
+        Value::Object(map) => map.values().try_for_each(check_finite),
+        _ => Ok(()),
+    }
+}
+
+/// Mark this run's result as outside the valid domain: the output is still
+/// written, and the exit code is [`EXIT_OUTSIDE_DOMAIN`].
+pub(crate) fn mark_outside_domain() {
+    SESSION.with(|s| {
+        if let Some(top) = s.borrow_mut().last_mut() {
+            top.exit = EXIT_OUTSIDE_DOMAIN;
+        }
+    });
+}
+
+/// Run the command line of this process; returns the exit code.
+pub fn main() -> i32 {
+    let out = run_with(std::env::args().collect(), Stdin::Process);
+    use std::io::Write;
+    let _ = std::io::stderr().write_all(out.stderr.as_bytes());
+    // A closed pipe (e.g. `exact-bezier prove | head`) is not an error: the
+    // reader has what it wanted.
+    let mut stdout = std::io::stdout().lock();
+    let _ = stdout.write_all(out.stdout.as_bytes()).and_then(|()| stdout.flush());
+    out.code
+}
+
+/// Append `text` and a newline to this run's standard output.
+pub(crate) fn emit(text: &str) {
+    SESSION.with(|s| {
+        if let Some(top) = s.borrow_mut().last_mut() {
+            top.stdout.push_str(text);
+            top.stdout.push('\n');
+        }
+    });
+}
+
+/// Read all of `r`, refusing more than the input limit.
+fn read_limited(r: impl Read, what: &str) -> Result<String, Error> {
+    let max = limits::current().max_input_bytes;
+    let mut bytes = Vec::new();
+    r.take(max.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(|e| Error::Format(format!("cannot read {what}: {e}")))?;
+    limits::check_input_bytes(bytes.len() as u64)?;
+    String::from_utf8(bytes).map_err(|_| Error::Format(format!("{what} is not UTF-8 text")))
+}
+
+/// Read the text of `path` (`-` for standard input), within
+/// [`Limits::max_input_bytes`].
 pub(crate) fn read_input(path: &str) -> Result<String, Error> {
     if path == "-" {
-        let mut s = String::new();
-        std::io::stdin()
-            .read_to_string(&mut s)
-            .map_err(|e| Error::Format(format!("cannot read standard input: {e}")))?;
-        Ok(s)
+        let given = SESSION.with(|s| {
+            s.borrow_mut().last_mut().and_then(|top| match &mut top.stdin {
+                Stdin::Bytes(b) => Some(std::mem::take(b)),
+                Stdin::Process => None,
+            })
+        });
+        match given {
+            Some(bytes) => read_limited(&bytes[..], "standard input"),
+            None => read_limited(std::io::stdin().lock(), "standard input"),
+        }
     } else {
-        std::fs::read_to_string(path).map_err(|e| Error::Format(format!("cannot read {path}: {e}")))
+        let what = format!("{path:?}");
+        let file =
+            std::fs::File::open(path).map_err(|e| Error::Format(format!("cannot read {what}: {e}")))?;
+        read_limited(file, &what)
     }
 }
 

@@ -1,0 +1,342 @@
+//! Resource limits: every input's cost is bounded **before** the work starts
+//! (`docs/limits.md`). No watchdog, no timeout: a request whose estimated
+//! cost is over a limit is refused with an [`Error::Limit`] that names the
+//! limit and, where it can be raised, the flag that raises it.
+//!
+//! Three kinds of limit:
+//!
+//! - **Input size**: bytes of one input ([`Limits::max_input_bytes`]),
+//!   decimal digits per number ([`Limits::max_digits`], exponents count as
+//!   digits: `1e400` has 401), dimension ([`MAX_DIMENSION`]), degree
+//!   ([`crate::MAX_DEGREE`], also for every patch a command writes).
+//! - **Exact work**: a cost model, [`exact_work`]: `ops × (2 + S/64)²` word
+//!   operations for `ops` rational operations on numbers of `S` bits (a
+//!   rational `+`/`×` reduces by a gcd, quadratic in the size). Each command
+//!   estimates `ops` and `S` from the degree, the dimension and the bit size
+//!   of its numbers and parameters, and [`charge`]s it against
+//!   [`Limits::max_work`] before computing.
+//! - **f64 work and output size**: sample and vertex counts of `plot` and
+//!   `mesh` ([`MAX_PLOT_POINTS`], [`MAX_PIXELS`], [`MAX_MESH_VERTICES`]),
+//!   charged by the same counter with `S = 0`.
+//!
+//! The limits are per thread ([`with_limits`]): the command line sets them
+//! from `--max-digits`, `--max-input-bytes` and `--max-work`. No limit turns
+//! an exact answer into an approximate one: an exact request over a limit is
+//! refused, never rounded.
+
+use crate::error::Error;
+use crate::io::Patch;
+use num_rational::BigRational;
+use std::cell::Cell;
+
+/// The largest dimension (coordinates per point) accepted from input.
+pub const MAX_DIMENSION: usize = 64;
+
+/// The most sample points one `plot` may draw (all curves and iso-lines).
+pub const MAX_PLOT_POINTS: u64 = 1 << 20;
+
+/// The most pixels of a `plot` picture (4096 × 4096).
+pub const MAX_PIXELS: u64 = 1 << 24;
+
+/// The most vertices one `mesh` may write.
+pub const MAX_MESH_VERTICES: u64 = 1 << 22;
+
+/// The limits in force on this thread.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Limits {
+    /// Decimal digits per input number, counting both sides of `p/q` and the
+    /// magnitude of an exponent (`--max-digits`).
+    pub max_digits: u64,
+    /// Bytes of one input file or of standard input (`--max-input-bytes`).
+    pub max_input_bytes: u64,
+    /// Estimated work units per command, see [`exact_work`] (`--max-work`).
+    pub max_work: u64,
+}
+
+impl Limits {
+    /// The defaults: 1 000 digits, 64 MiB, 4·10¹⁰ work units (a few
+    /// seconds on one core; see `docs/limits.md` for the calibration).
+    pub const DEFAULT: Limits = Limits {
+        max_digits: 1_000,
+        max_input_bytes: 64 << 20,
+        max_work: 40_000_000_000,
+    };
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits::DEFAULT
+    }
+}
+
+thread_local! {
+    static CURRENT: Cell<Limits> = const { Cell::new(Limits::DEFAULT) };
+    static CHARGED: Cell<u64> = const { Cell::new(0) };
+}
+
+/// The limits in force on this thread.
+pub fn current() -> Limits {
+    CURRENT.with(Cell::get)
+}
+
+/// Run `f` under `limits` with a fresh work counter; the previous limits
+/// and counter are restored afterwards.
+pub fn with_limits<R>(limits: Limits, f: impl FnOnce() -> R) -> R {
+    let old = CURRENT.with(|c| c.replace(limits));
+    let old_charged = CHARGED.with(|c| c.replace(0));
+    let r = f();
+    CURRENT.with(|c| c.set(old));
+    CHARGED.with(|c| c.set(old_charged));
+    r
+}
+
+/// The work charged on this thread since [`with_limits`] began.
+pub fn charged() -> u64 {
+    CHARGED.with(Cell::get)
+}
+
+/// Add `units` of estimated work for `what`.
+///
+/// # Errors
+///
+/// [`Error::Limit`] when the total would pass [`Limits::max_work`]; nothing
+/// is charged then.
+pub fn charge(what: &str, units: u64) -> Result<(), Error> {
+    let total = charged().saturating_add(units);
+    let max = current().max_work;
+    if total > max {
+        return Err(Error::Limit(format!(
+            "{what} needs an estimated {} work units, over the budget of {} (raise it with --max-work)",
+            sci(total),
+            sci(max)
+        )));
+    }
+    CHARGED.with(|c| c.set(total));
+    Ok(())
+}
+
+/// `x` as `d.dde±k` text for messages.
+fn sci(x: u64) -> String {
+    format!("{:.2e}", x as f64)
+}
+
+/// Work units of `ops` exact rational operations on numbers of `bits` bits:
+/// `ops × (2 + bits/64)²` (saturating). The square is the cost of the gcd
+/// that normalizes every rational result; the `2` the fixed cost of an
+/// operation on small numbers (allocation, sign, length).
+pub fn exact_work(ops: u64, bits: u64) -> u64 {
+    let words = 2 + bits / 64;
+    ops.saturating_mul(words.saturating_mul(words))
+}
+
+/// Check the text of one number before it is parsed: at most
+/// [`Limits::max_digits`] digits, an exponent's magnitude counted as digits.
+///
+/// # Errors
+///
+/// [`Error::Limit`] naming the count and `--max-digits`.
+pub fn check_number_text(text: &str) -> Result<(), Error> {
+    let max = current().max_digits;
+    let mut digits: u64 = 0;
+    let mut exponent: u64 = 0;
+    for part in text.split('/') {
+        let (mantissa, exp) = match part.find(['e', 'E']) {
+            Some(k) => (&part[..k], Some(&part[k + 1..])),
+            None => (part, None),
+        };
+        digits += mantissa.bytes().filter(u8::is_ascii_digit).count() as u64;
+        if let Some(e) = exp {
+            let e = e.trim().trim_start_matches(['+', '-']).trim_start_matches('0');
+            exponent = exponent.saturating_add(if e.len() > 18 {
+                u64::MAX
+            } else {
+                e.parse::<u64>().unwrap_or(0)
+            });
+        }
+    }
+    let total = digits.saturating_add(exponent);
+    if total > max {
+        return Err(Error::Limit(format!(
+            "a number of {} digits{} is over the limit of {max} digits (raise it with --max-digits)",
+            if total == u64::MAX { "≥ 10¹⁸".to_string() } else { total.to_string() },
+            if exponent > 0 { " (exponent included)" } else { "" }
+        )));
+    }
+    Ok(())
+}
+
+/// Check the size of one input before it is read or parsed.
+///
+/// # Errors
+///
+/// [`Error::Limit`] naming the size and `--max-input-bytes`.
+pub fn check_input_bytes(len: u64) -> Result<(), Error> {
+    let max = current().max_input_bytes;
+    if len > max {
+        return Err(Error::Limit(format!(
+            "an input of {len} bytes is over the limit of {max} bytes (raise it with --max-input-bytes)"
+        )));
+    }
+    Ok(())
+}
+
+/// Check a point's dimension against [`MAX_DIMENSION`].
+///
+/// # Errors
+///
+/// [`Error::Limit`] naming the dimension.
+pub fn check_dimension(dim: usize) -> Result<(), Error> {
+    if dim > MAX_DIMENSION {
+        return Err(Error::Limit(format!(
+            "points of dimension {dim} are over the limit of {MAX_DIMENSION}"
+        )));
+    }
+    Ok(())
+}
+
+/// Check the degree of a patch a command is about to write against
+/// [`crate::MAX_DEGREE`], before computing it (what we write, we read).
+///
+/// # Errors
+///
+/// [`Error::DegreeTooHigh`].
+pub fn check_result_degree(degree: usize) -> Result<(), Error> {
+    if degree > crate::MAX_DEGREE {
+        return Err(Error::DegreeTooHigh { degree });
+    }
+    Ok(())
+}
+
+/// Bits of a rational: numerator plus denominator.
+pub fn bits(x: &BigRational) -> u64 {
+    x.numer().bits() + x.denom().bits()
+}
+
+/// The most bits of any of `xs` (0 for none).
+pub fn max_bits<'a>(xs: impl IntoIterator<Item = &'a BigRational>) -> u64 {
+    xs.into_iter().map(bits).max().unwrap_or(0)
+}
+
+/// What the cost model needs to know of a patch.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Size {
+    /// Degree: `(n, 0)` for a curve or tri patch, `(m, n)` for a rect.
+    pub degree: (usize, usize),
+    /// True for a tri patch.
+    pub tri: bool,
+    /// Coordinates per point (Cartesian).
+    pub dim: usize,
+    /// The most bits of a stored (homogeneous) number.
+    pub bits: u64,
+}
+
+impl Size {
+    /// The size of `p`.
+    pub fn of<T: crate::Scalar>(p: &Patch<T>, bits_of: impl Fn(&T) -> u64) -> Size {
+        let most = Cell::new(0u64);
+        let _ = p.map(|x| {
+            most.set(most.get().max(bits_of(x)));
+            x.clone()
+        });
+        let (degree, tri, dim) = match p {
+            Patch::Curve(c) => ((c.degree(), 0), false, c.dim()),
+            Patch::Rect(r) => (r.degree(), false, r.dim()),
+            Patch::Tri(t) => ((t.degree(), 0), true, t.dim()),
+        };
+        Size {
+            degree,
+            tri,
+            dim,
+            bits: most.get(),
+        }
+    }
+
+    /// The size of an exact patch.
+    pub fn exact(p: &Patch<BigRational>) -> Size {
+        Size::of(p, bits)
+    }
+
+    /// The total degree `m + n` (`n` for a curve or tri patch).
+    pub fn total_degree(&self) -> u64 {
+        (self.degree.0 + self.degree.1) as u64
+    }
+
+    /// Rational operations of one de Casteljau evaluation:
+    /// `(n+1)²(d+1)` for a curve, `(m+1)(n+1)(m+n+2)(d+1)` for a rect,
+    /// `(n+1)³(d+1)` for a tri patch.
+    pub fn eval_ops(&self) -> u64 {
+        let (m, n) = (self.degree.0 as u64, self.degree.1 as u64);
+        let d1 = self.dim as u64 + 1;
+        if self.tri {
+            (m + 1).pow(3) * d1
+        } else if n == 0 {
+            (m + 1).pow(2) * d1
+        } else {
+            (m + 1) * (n + 1) * (m + n + 2) * d1
+        }
+    }
+
+    /// Bits of the numbers of a computation that multiplies the stored
+    /// numbers by `depth` factors of `param_bits` bits each (de Casteljau at
+    /// a parameter of that size: `depth` is the total degree).
+    pub fn grown_bits(&self, depth: u64, param_bits: u64) -> u64 {
+        self.bits
+            .saturating_add(depth.saturating_mul(param_bits.saturating_add(1)))
+    }
+
+    /// Exact work of one evaluation at parameters of `param_bits` bits.
+    pub fn eval_work(&self, param_bits: u64) -> u64 {
+        exact_work(
+            self.eval_ops(),
+            self.grown_bits(self.total_degree(), param_bits),
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn digits_count_exponents_and_both_sides() {
+        with_limits(
+            Limits {
+                max_digits: 10,
+                ..Limits::DEFAULT
+            },
+            || {
+                assert!(check_number_text("12345/12345").is_ok());
+                assert!(check_number_text("123456/12345").is_err());
+                assert!(check_number_text("1e9").is_ok());
+                assert!(check_number_text("1e10").is_err());
+                assert!(check_number_text("1e-10").is_err());
+                assert!(check_number_text("1e000000000000000000000000000009").is_ok());
+                assert!(check_number_text("1e99999999999999999999999").is_err());
+            },
+        );
+    }
+
+    #[test]
+    fn charges_add_up_and_stop_at_the_budget() {
+        with_limits(
+            Limits {
+                max_work: 100,
+                ..Limits::DEFAULT
+            },
+            || {
+                assert!(charge("a", 60).is_ok());
+                assert!(matches!(charge("b", 60), Err(Error::Limit(_))));
+                assert_eq!(charged(), 60);
+                assert!(charge("c", 40).is_ok());
+            },
+        );
+        assert_eq!(charged(), 0);
+    }
+
+    #[test]
+    fn work_grows_with_the_square_of_the_words() {
+        assert_eq!(exact_work(10, 0), 40);
+        assert_eq!(exact_work(10, 128), 160);
+        assert_eq!(exact_work(u64::MAX, 1 << 40), u64::MAX);
+    }
+}
