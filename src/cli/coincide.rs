@@ -2,7 +2,8 @@
 //! rect patches the same up to Möbius maps, reversal, swapping, elevation,
 //! common factors and weight scaling? Exit 0 either way.
 
-use super::{load_one, ScalarKind};
+use super::{charge_each, load_one, patch_f64, ScalarKind};
+use crate::limits::Size;
 use crate::error::Error;
 use crate::interval::coincide_filtered;
 use crate::io::Patch;
@@ -30,6 +31,15 @@ pub struct Args {
     filtered: bool,
 }
 
+/// Estimated `(operations, bits)` of deciding coincidence for a patch of
+/// size `s` (canonical forms: polynomial gcds and Möbius solves over the
+/// whole net, numbers grown by the total degree N):
+/// `(N+1)⁴(d+1)` operations on `(N+1)·bits`-bit numbers.
+pub(super) fn coincide_cost(s: &Size) -> (u64, u64) {
+    let n1 = s.total_degree() + 1;
+    (n1.pow(4) * (s.dim as u64 + 1), s.bits.max(8).saturating_mul(n1))
+}
+
 /// Read exactly one curve or patch from `path`.
 fn one_patch(path: &str) -> Result<Patch<BigRational>, Error> {
     load_one(path, |n| {
@@ -39,6 +49,7 @@ fn one_patch(path: &str) -> Result<Patch<BigRational>, Error> {
 
 pub fn run(a: &Args) -> Result<Value, Error> {
     let (pa, pb) = (one_patch(&a.a)?, one_patch(&a.b)?);
+    charge_each("coincide", &[pa.clone(), pb.clone()], a.scalar, coincide_cost)?;
     match a.scalar {
         ScalarKind::F64 => {
             if a.filtered {
@@ -53,7 +64,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
                     "--tol {tol} must be a finite number ≥ 0"
                 )));
             }
-            let c = crate::coincide::coincide_f64(&pa.to_f64(), &pb.to_f64(), Tolerance(tol))?;
+            let c = crate::coincide::coincide_f64(&patch_f64(&pa)?, &patch_f64(&pb)?, Tolerance(tol))?;
             let mut v = c.to_json();
             v["tolerance"] = tol.into();
             Ok(v)

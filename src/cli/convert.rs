@@ -3,7 +3,8 @@
 //! (source 003; source 001, Hu 2001), and trigonometric patches (source
 //! 002) to their exact rational Bézier form. Output: a JSON array of patches.
 
-use super::{load, parse_list, read_input, ScalarKind};
+use super::{charge_each, load, parse_list, patch_f64, read_input, ScalarKind};
+use crate::limits::{self, check_result_degree, Size};
 use crate::convert::{rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Split};
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
@@ -90,8 +91,17 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         degenerate: a.degenerate,
         normalize: a.normalize,
     };
+    let patches = load(&a.file)?;
+    let split_bits = limits::max_bits(plan.split.params());
+    for p in &patches {
+        if let Patch::Rect(r) = p {
+            let (m, n) = r.degree();
+            check_result_degree(m + n)?;
+        }
+    }
+    charge_each("convert", &patches, a.scalar, |s| convert_cost(s, split_bits))?;
     let mut out = Vec::new();
-    for p in &load(&a.file)? {
+    for p in &patches {
         match a.scalar {
             ScalarKind::Exact => out.extend(convert_with(p, &plan)?),
             ScalarKind::F64 => {
@@ -101,11 +111,27 @@ pub fn run(a: &Args) -> Result<Value, Error> {
                     degenerate: plan.degenerate,
                     normalize: plan.normalize,
                 };
-                out.extend(convert_with(&p.to_f64(), &plan64)?);
+                out.extend(convert_with(&patch_f64(p)?, &plan64)?);
             }
         }
     }
     Ok(Value::Array(out))
+}
+
+/// Estimated `(operations, bits)` of converting a patch of size `s`: a rect
+/// (m, n) gives two tris of degree N = m + n, each coefficient a sum over
+/// the net; a tri of degree n gives three rects (n, n), each coefficient a
+/// sum over the net with split parameters of `split_bits` bits.
+fn convert_cost(s: &Size, split_bits: u64) -> (u64, u64) {
+    let d1 = s.dim as u64 + 1;
+    let (m, n) = (s.degree.0 as u64, s.degree.1 as u64);
+    if s.tri {
+        let net = (m + 1) * (m + 2) / 2;
+        (3 * (m + 1) * (m + 1) * net * d1, s.grown_bits(2 * m, split_bits))
+    } else {
+        let big = m + n + 1;
+        (2 * big * big * (m + 1) * (n + 1) * d1, s.grown_bits(2 * (m + n), 1))
+    }
 }
 
 fn convert_with<T: JsonScalar + Ordered>(

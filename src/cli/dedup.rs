@@ -2,7 +2,7 @@
 //! coincidence classes by exact canonical keys (O(N) expected), with the
 //! witness mapping each class's first member to every other member.
 
-use super::load;
+use super::{charge_each, load, ScalarKind};
 use crate::canonical::dedup;
 use crate::coincide::coincide;
 use crate::error::Error;
@@ -17,6 +17,11 @@ pub struct Args {
 
 pub fn run(a: &Args) -> Result<Value, Error> {
     let patches = load(&a.file)?;
+    // A canonical key per patch, and a witness per class member.
+    charge_each("dedup", &patches, ScalarKind::Exact, |s| {
+        let (ops, bits) = super::coincide::coincide_cost(s);
+        (2 * ops, bits)
+    })?;
     let classes = dedup(&patches)?;
     let out = classes
         .iter()

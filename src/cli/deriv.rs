@@ -6,7 +6,9 @@ use crate::curve::RationalCurve;
 use crate::error::{Error, MAX_DEGREE};
 use crate::io::{point_to_json, JsonScalar, Patch};
 use crate::scalar::Ordered;
+use crate::limits::Size;
 use num_rational::BigRational;
+use num_traits::{One, Zero};
 use serde_json::{json, Value};
 
 /// Arguments of `deriv`.
@@ -23,6 +25,9 @@ pub struct Args {
     /// Scalar to compute with.
     #[arg(long, value_enum, default_value_t)]
     scalar: ScalarKind,
+    /// Allow t outside [0, 1] (the polynomial continued beyond the curve).
+    #[arg(long)]
+    extrapolate: bool,
 }
 
 /// The curve inside `p`, or a typed error naming the command.
@@ -39,8 +44,8 @@ pub(super) fn curve_of<'a, T: crate::scalar::Scalar>(
     }
 }
 
-/// The single parameter of `--at`.
-pub(super) fn single_parameter(text: &str) -> Result<BigRational, Error> {
+/// The single parameter of `--at`, in `[0, 1]` unless `extrapolate`.
+pub(super) fn single_parameter(text: &str, extrapolate: bool) -> Result<BigRational, Error> {
     let mut values = parse_list(text)?;
     if values.len() != 1 {
         return Err(Error::Shape(format!(
@@ -48,7 +53,13 @@ pub(super) fn single_parameter(text: &str) -> Result<BigRational, Error> {
             values.len()
         )));
     }
-    Ok(values.swap_remove(0))
+    let t = values.swap_remove(0);
+    if !extrapolate && (t < BigRational::zero() || t > BigRational::one()) {
+        return Err(Error::Domain(format!(
+            "--at {t} is outside [0, 1] (give --extrapolate to evaluate the polynomial beyond the curve)"
+        )));
+    }
+    Ok(t)
 }
 
 pub fn run(a: &Args) -> Result<Value, Error> {
@@ -59,7 +70,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
             MAX_DEGREE + 1
         )));
     }
-    let t = single_parameter(&a.at)?;
+    let t = single_parameter(&a.at, a.extrapolate)?;
     run_each(&load(&a.file)?, &[t], a.scalar, &Deriv(a.order))
 }
 
@@ -67,6 +78,13 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 struct Deriv(usize);
 
 impl PatchOp for Deriv {
+    const NAME: &'static str = "deriv";
+
+    fn cost(&self, s: &Size, param_bits: u64) -> (u64, u64) {
+        let k = self.0 as u64 + 1;
+        (k * s.eval_ops(), s.grown_bits(s.total_degree() + k, param_bits))
+    }
+
     fn apply<T: JsonScalar + Ordered>(&self, p: &Patch<T>, params: &[T]) -> Result<Value, Error> {
         let d = curve_of(p, "deriv")?.deriv(&params[0], self.0)?;
         Ok(json!({ "order": self.0, "derivative": point_to_json(&d) }))

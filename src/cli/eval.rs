@@ -1,6 +1,6 @@
 //! `eval FILE --at U[,V] [--scalar f64]`.
 
-use super::{parse_list, read_input, run_each, PatchOp, ScalarKind};
+use super::{check_domain, parse_list, read_input, run_each, PatchOp, ScalarKind};
 use crate::error::Error;
 use crate::io::{point_to_json, read_patches, JsonScalar, Patch};
 use crate::scalar::Ordered;
@@ -18,6 +18,10 @@ pub struct Args {
     /// Scalar to compute with.
     #[arg(long, value_enum, default_value_t)]
     scalar: ScalarKind,
+    /// Allow parameters outside the patch's domain ([0,1], [0,1]², or the
+    /// triangle u, v ≥ 0, u + v ≤ 1): the polynomial continued beyond it.
+    #[arg(long)]
+    extrapolate: bool,
 }
 
 pub fn run(a: &Args) -> Result<Value, Error> {
@@ -26,13 +30,21 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         return super::eval_trig::run(&trig, &a.at, a.scalar);
     }
     let params = parse_list(&a.at)?;
-    run_each(&read_patches(&text)?, &params, a.scalar, &Eval)
+    let patches = read_patches(&text)?;
+    if !a.extrapolate {
+        for p in &patches {
+            check_domain(p, &params)?;
+        }
+    }
+    run_each(&patches, &params, a.scalar, &Eval)
 }
 
 /// The point of a curve at `t` or of a patch at `(u, v)`.
 struct Eval;
 
 impl PatchOp for Eval {
+    const NAME: &'static str = "eval";
+
     fn apply<T: JsonScalar + Ordered>(&self, p: &Patch<T>, params: &[T]) -> Result<Value, Error> {
         eval_with(p, params)
     }

@@ -9,8 +9,8 @@
 //! ```
 //!
 //! where an INPUT is a JSON file path (relative to the working directory),
-//! or `{"run": ["SUBCOMMAND", "ARG", …]}`: this binary is run with those
-//! arguments and its standard output (patches in the DESIGN §4 format) is
+//! or `{"run": ["SUBCOMMAND", "ARG", …]}`: that command line is run
+//! in-process (not `figures` or `prove`: no recursion) and its standard output (patches in the DESIGN §4 format) is
 //! saved as `OUT/inputs/stem.json` (`stem-K.json` for the K-th of several)
 //! and used as the input. `args` are `plot` flags. Each entry gives
 //! `OUT/stem.svg` and `OUT/stem.png`; an optional `"mesh": ["--density",
@@ -139,21 +139,24 @@ fn resolve(input: &Value, out: &str, stem: &str) -> Result<(String, String), Err
             .ok_or_else(|| Error::Format("an input must be a path or {\"run\": [...]}".into()))?,
         "\"run\"",
     )?;
-    let exe = std::env::current_exe()
-        .map_err(|e| Error::Format(format!("cannot find this program to run {run:?}: {e}")))?;
-    let res = std::process::Command::new(exe)
-        .args(&run)
-        .output()
-        .map_err(|e| Error::Format(format!("cannot run {run:?}: {e}")))?;
-    if !res.status.success() {
+    if matches!(run.first().map(String::as_str), Some("figures" | "prove")) {
+        return Err(Error::Format(format!(
+            "a gallery input cannot run {:?}: only commands that write patches",
+            run[0]
+        )));
+    }
+    // In-process, under this run's limits and work budget.
+    let argv = std::iter::once("exact-bezier".to_string()).chain(run.iter().cloned());
+    let res = super::run_with(argv.collect(), super::Stdin::Bytes(Vec::new()));
+    if res.code != 0 {
         return Err(Error::Format(format!(
             "exact-bezier {} failed: {}",
             run.join(" "),
-            String::from_utf8_lossy(&res.stderr).trim()
+            res.stderr.trim()
         )));
     }
     let path = format!("{out}/inputs/{stem}.json");
-    write_output(&path, &res.stdout)?;
+    write_output(&path, res.stdout.as_bytes())?;
     Ok((path, format!("exact-bezier {}", run.join(" "))))
 }
 

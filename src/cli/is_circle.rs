@@ -1,6 +1,6 @@
 //! `is-circle FILE`: does a curve lie on a circle? Exact.
 
-use super::{load, one_or_many};
+use super::{charge_each, load, one_or_many, ScalarKind};
 use crate::circle::{circle_of, integer_coords};
 use crate::error::Error;
 use crate::io::{point_to_json, JsonScalar, Patch};
@@ -17,7 +17,15 @@ pub struct Args {
 /// `{"circle": true, "center": [...], "radius_squared": ...}` or
 /// `{"circle": false, "reason": "..."}` per curve.
 pub fn run(a: &Args) -> Result<Value, Error> {
-    let values = load(&a.file)?
+    let patches = load(&a.file)?;
+    charge_each("is-circle", &patches, ScalarKind::Exact, |s| {
+        let n1 = s.total_degree() + 1;
+        let d1 = s.dim as u64 + 1;
+        // Cleared denominators: up to one factor per stored number.
+        let cleared = s.bits.saturating_mul(n1 * d1);
+        (4 * n1 * n1 * d1, cleared.saturating_mul(2))
+    })?;
+    let values = patches
         .iter()
         .map(|p| match p {
             Patch::Curve(c) => Ok(match circle_of(&integer_coords(c), Tolerance::EXACT) {

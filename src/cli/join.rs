@@ -4,7 +4,7 @@
 //! `f64` only.
 
 use super::deriv::curve_of;
-use super::{check_tol, load_one, ScalarKind};
+use super::{charge_each, check_tol, load_one, patch_f64, ScalarKind};
 use crate::continuity::join;
 use crate::error::Error;
 use crate::io::{JsonScalar, Patch};
@@ -36,9 +36,13 @@ fn one_curve(path: &str) -> Result<Patch<BigRational>, Error> {
 pub fn run(a: &Args) -> Result<Value, Error> {
     check_tol(a.tol)?;
     let (p, q) = (one_curve(&a.first)?, one_curve(&a.second)?);
+    // End derivatives up to order 2 and a few products of them.
+    charge_each("join", &[p.clone(), q.clone()], a.scalar, |s| {
+        (3 * s.eval_ops(), s.bits.saturating_mul(8))
+    })?;
     match a.scalar {
         ScalarKind::Exact => join_with(&p, &q, Tolerance::EXACT),
-        ScalarKind::F64 => join_with(&p.to_f64(), &q.to_f64(), Tolerance(a.tol)),
+        ScalarKind::F64 => join_with(&patch_f64(&p)?, &patch_f64(&q)?, Tolerance(a.tol)),
     }
 }
 

@@ -1,6 +1,7 @@
 //! `mesh FILE... -o OUT.obj|OUT.stl|OUT.ply [--density N] [--scalar exact|f64]`.
 
-use super::{load, ScalarKind};
+use super::{charge_each, load, patch_f64, ScalarKind};
+use crate::limits::MAX_MESH_VERTICES;
 use crate::error::Error;
 use crate::mesh::Mesh;
 use serde_json::{json, Value};
@@ -28,10 +29,25 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     for f in &a.files {
         patches.extend(load(f)?);
     }
+    let n1 = a.density as u64 + 1;
+    let vertices = patches.len() as u64 * n1 * n1;
+    if vertices > MAX_MESH_VERTICES {
+        return Err(Error::Limit(format!(
+            "{} patches at --density {} give about {vertices} vertices, over the limit of {MAX_MESH_VERTICES}",
+            patches.len(),
+            a.density
+        )));
+    }
+    // A point and two partial derivatives per vertex, at parameters i/N.
+    let param_bits = 2 * (64 - n1.leading_zeros() as u64);
+    charge_each("mesh", &patches, a.scalar, |s| {
+        let (ops, bits) = (3 * s.eval_ops(), s.grown_bits(s.total_degree(), param_bits));
+        (ops.saturating_mul(n1 * n1), bits)
+    })?;
     let mesh = match a.scalar {
         ScalarKind::Exact => Mesh::from_patches(&patches, a.density)?,
         ScalarKind::F64 => {
-            let pf: Vec<_> = patches.iter().map(|p| p.to_f64()).collect();
+            let pf = patches.iter().map(patch_f64).collect::<Result<Vec<_>, _>>()?;
             Mesh::from_patches(&pf, a.density)?
         }
     };
@@ -42,7 +58,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         Some("ply") => mesh.to_ply(),
         _ => {
             return Err(Error::Format(format!(
-                "the output {} must end in .obj, .stl or .ply",
+                "the output {:?} must end in .obj, .stl or .ply",
                 a.output
             )))
         }

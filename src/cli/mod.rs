@@ -16,11 +16,12 @@
 //! Exact arithmetic is the default; `--scalar f64` selects floats.
 
 use crate::error::Error;
-use crate::limits::{self, Limits};
+use crate::limits::{self, Limits, Size};
 use crate::io::{read_patches, JsonScalar, Patch};
 use crate::scalar::Ordered;
 use clap::{Parser, Subcommand, ValueEnum};
 use num_rational::BigRational;
+use num_traits::{One, Zero};
 use serde_json::Value;
 use std::cell::RefCell;
 use std::io::Read;
@@ -383,8 +384,17 @@ pub(crate) fn read_input(path: &str) -> Result<String, Error> {
 }
 
 /// Read the patches of `path`.
+///
+/// An empty array is refused (docs/limits.md, policies): every command
+/// needs at least one patch.
 pub(crate) fn load(path: &str) -> Result<Vec<Patch<BigRational>>, Error> {
-    read_patches(&read_input(path)?)
+    let patches = read_patches(&read_input(path)?)?;
+    if patches.is_empty() {
+        return Err(Error::Shape(format!(
+            "{path:?} holds an empty array: no curve or patch to work on"
+        )));
+    }
+    Ok(patches)
 }
 
 /// The single curve or patch of `path`; `count_error(n)` words the error
@@ -422,34 +432,116 @@ pub(crate) fn parse_list(text: &str) -> Result<Vec<BigRational>, Error> {
 /// A command's computation on one patch with exact parameters, written once
 /// for every scalar (see [`run_each`]).
 pub(crate) trait PatchOp {
+    /// The command's name, for the limit message.
+    const NAME: &'static str;
+
     /// The JSON result for `p` at `params` (converted to the patch's scalar).
     fn apply<T: JsonScalar + Ordered>(&self, p: &Patch<T>, params: &[T]) -> Result<Value, Error>;
+
+    /// Estimated `(operations, bits)` of [`PatchOp::apply`] on a patch of
+    /// size `s` at parameters of `param_bits` bits (the cost model of
+    /// [`crate::limits`]); by default one evaluation.
+    fn cost(&self, s: &Size, param_bits: u64) -> (u64, u64) {
+        (s.eval_ops(), s.grown_bits(s.total_degree(), param_bits))
+    }
+}
+
+/// Charge `what`'s estimated work on each patch before computing: `cost`
+/// gives `(operations, bits)` ([`limits::exact_work`]); an `f64` run counts
+/// the operations only.
+pub(crate) fn charge_each(
+    what: &str,
+    patches: &[Patch<BigRational>],
+    scalar: ScalarKind,
+    cost: impl Fn(&Size) -> (u64, u64),
+) -> Result<(), Error> {
+    for p in patches {
+        let (ops, bits) = cost(&Size::exact(p));
+        let units = match scalar {
+            ScalarKind::Exact => limits::exact_work(ops, bits),
+            ScalarKind::F64 => ops,
+        };
+        limits::charge(what, units)?;
+    }
+    Ok(())
+}
+
+/// Convert an exact patch to `f64`, refusing numbers that overflow.
+///
+/// # Errors
+///
+/// [`Error::NotFinite`] naming the first such number.
+pub(crate) fn patch_f64(p: &Patch<BigRational>) -> Result<Patch<f64>, Error> {
+    let bad = std::cell::Cell::new(false);
+    let f = p.map(|x| {
+        let y = x.to_f64();
+        if !y.is_finite() {
+            bad.set(true);
+        }
+        y
+    });
+    if bad.get() {
+        return Err(Error::NotFinite(
+            "a coordinate or weight is too large for f64; use --scalar exact".into(),
+        ));
+    }
+    Ok(f)
 }
 
 /// Apply `op` to every patch with the chosen scalar: exactly, or on the
 /// nearest `f64` patch and parameters. One value for a single patch, an
-/// array for several.
+/// array for several. The estimated work is charged first.
 ///
 /// # Errors
 ///
-/// The first error of `op`.
-pub(crate) fn run_each(
+/// [`Error::Limit`] over the work budget; the first error of `op`.
+pub(crate) fn run_each<Op: PatchOp>(
     patches: &[Patch<BigRational>],
     params: &[BigRational],
     scalar: ScalarKind,
-    op: &impl PatchOp,
+    op: &Op,
 ) -> Result<Value, Error> {
+    let param_bits = limits::max_bits(params);
+    charge_each(Op::NAME, patches, scalar, |s| op.cost(s, param_bits))?;
     let values = patches
         .iter()
         .map(|p| match scalar {
             ScalarKind::Exact => op.apply(p, params),
             ScalarKind::F64 => op.apply(
-                &p.to_f64(),
+                &patch_f64(p)?,
                 &params.iter().map(Ordered::to_f64).collect::<Vec<_>>(),
             ),
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(one_or_many(values))
+}
+
+/// Refuse parameters outside the domain of `p` (policy: extrapolation only
+/// with `--extrapolate`): `t ∈ [0, 1]` for a curve, `(u, v) ∈ [0, 1]²` for
+/// a rect, `u, v ≥ 0, u + v ≤ 1` for a tri patch. A parameter count that
+/// does not fit is left to the command's own message.
+///
+/// # Errors
+///
+/// [`Error::Domain`] naming the parameter and the flag.
+pub(crate) fn check_domain(p: &Patch<BigRational>, params: &[BigRational]) -> Result<(), Error> {
+    let (zero, one) = (BigRational::zero(), BigRational::one());
+    let unit = |x: &BigRational| *x >= zero && *x <= one;
+    let inside = match (p, params) {
+        (Patch::Curve(_), [t]) => unit(t),
+        (Patch::Rect(_), [u, v]) => unit(u) && unit(v),
+        (Patch::Tri(_), [u, v]) => u >= &zero && v >= &zero && (u + v) <= one,
+        _ => true,
+    };
+    if inside {
+        return Ok(());
+    }
+    let shown: Vec<String> = params.iter().map(ToString::to_string).collect();
+    Err(Error::Domain(format!(
+        "--at {} is outside the domain of the {} (give --extrapolate to evaluate the polynomial beyond it)",
+        shown.join(","),
+        p.kind()
+    )))
 }
 
 /// One value for a single patch, an array for several.

@@ -2,7 +2,10 @@
 //! [--width W] [--height H] [--iso N] [--samples S] [--speed] [--no-net]
 //! [--split diagonal|a,b,c,d,e,f] [--title T]`.
 
-use super::load;
+use super::{charge_each, load, ScalarKind};
+use crate::io::Patch;
+use crate::limits::{MAX_PIXELS, MAX_PLOT_POINTS};
+use num_rational::BigRational;
 use crate::error::Error;
 use crate::plot::{plot_png, plot_svg, PlotOptions, Projection, Split};
 use serde_json::{json, Value};
@@ -80,6 +83,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     for f in &a.files {
         patches.extend(load(f)?);
     }
+    check_plot_size(&patches, &opts)?;
     let lower = a.output.to_ascii_lowercase();
     let (bytes, format) = if lower.ends_with(".svg") {
         (plot_svg(&patches, &opts)?.into_bytes(), "svg")
@@ -87,7 +91,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         (plot_png(&patches, &opts)?, "png")
     } else {
         return Err(Error::Format(format!(
-            "the output {} must end in .svg or .png",
+            "the output {:?} must end in .svg or .png",
             a.output
         )));
     };
@@ -95,12 +99,45 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     Ok(json!({"output": a.output, "format": format, "patches": patches.len()}))
 }
 
+/// Refuse pictures over [`MAX_PIXELS`] or [`MAX_PLOT_POINTS`] sample
+/// points (curves, iso-lines both ways, speed dots), then charge the `f64`
+/// evaluations of the samples.
+fn check_plot_size(patches: &[Patch<BigRational>], opts: &PlotOptions) -> Result<(), Error> {
+    let pixels = u64::from(opts.width) * u64::from(opts.height);
+    if pixels > MAX_PIXELS {
+        return Err(Error::Limit(format!(
+            "a {}×{} picture has {pixels} pixels, over the limit of {MAX_PIXELS}",
+            opts.width, opts.height
+        )));
+    }
+    let (iso, samples) = (opts.iso as u64 + 1, opts.samples as u64 + 1);
+    let per_surface = 2 * iso * samples + iso * iso;
+    let points: u64 = patches
+        .iter()
+        .map(|p| match p {
+            Patch::Curve(_) => samples + iso,
+            _ => per_surface,
+        })
+        .sum();
+    if points > MAX_PLOT_POINTS {
+        return Err(Error::Limit(format!(
+            "--iso {} and --samples {} on {} patches give {points} sample points, over the limit of {MAX_PLOT_POINTS}",
+            opts.iso,
+            opts.samples,
+            patches.len()
+        )));
+    }
+    charge_each("plot", patches, ScalarKind::F64, |s| {
+        (s.eval_ops().saturating_mul(per_surface), 0)
+    })
+}
+
 /// Write `bytes` to `path`, creating its folder.
 pub(super) fn write_output(path: &str, bytes: &[u8]) -> Result<(), Error> {
     let p = std::path::Path::new(path);
     if let Some(dir) = p.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir)
-            .map_err(|e| Error::Format(format!("cannot create {}: {e}", dir.display())))?;
+            .map_err(|e| Error::Format(format!("cannot create {:?}: {e}", dir.display().to_string())))?;
     }
-    std::fs::write(p, bytes).map_err(|e| Error::Format(format!("cannot write {path}: {e}")))
+    std::fs::write(p, bytes).map_err(|e| Error::Format(format!("cannot write {path:?}: {e}")))
 }

@@ -1,10 +1,12 @@
 //! `reduce FILE [--method forrest|farin|lsq|exact] [--scalar f64 --tol T]`:
 //! lower the degree of a curve by one, `{"method": ..., "curve": {...}}`.
 //! `exact` adds `"reducible": true|false` and gives `"curve": null` when the
-//! curve is not of lower degree (exit 0 either way).
+//! curve is not of lower degree (exit 0 either way). A Forrest or Farin
+//! reduction can leave the domain (a weight ≤ 0): the curve is still
+//! written, with `"valid": false` and `"problem"`, and the exit code is 3.
 
 use super::deriv::curve_of;
-use super::{check_tol, load, one_or_many, ScalarKind};
+use super::{charge_each, check_tol, load, one_or_many, patch_f64, ScalarKind};
 use crate::degree_reduction::Reduction;
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
@@ -44,11 +46,17 @@ pub struct Args {
 
 pub fn run(a: &Args) -> Result<Value, Error> {
     check_tol(a.tol)?;
-    let values = load(&a.file)?
+    let patches = load(&a.file)?;
+    // Recursions over the net (least squares: a dense (n+1)² system).
+    charge_each("reduce", &patches, a.scalar, |s| {
+        let n1 = s.total_degree() + 1;
+        (n1 * n1 * n1 * (s.dim as u64 + 1), s.grown_bits(2 * n1, s.bits))
+    })?;
+    let values = patches
         .iter()
         .map(|p| match a.scalar {
             ScalarKind::Exact => reduce_with(p, a.method, Tolerance::EXACT),
-            ScalarKind::F64 => reduce_with(&p.to_f64(), a.method, Tolerance(a.tol)),
+            ScalarKind::F64 => reduce_with(&patch_f64(p)?, a.method, Tolerance(a.tol)),
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(one_or_many(values))
@@ -77,5 +85,16 @@ fn reduce_with<T: JsonScalar + Ordered>(
         }
     };
     let name = format!("{method:?}").to_lowercase();
-    Ok(json!({ "method": name, "curve": patch_to_json(&Patch::Curve(c.reduce(scheme)?))? }))
+    let reduced = c.reduce(scheme)?;
+    let mut v = json!({ "method": name, "curve": patch_to_json(&Patch::Curve(reduced.clone()))? });
+    if let Some(i) = reduced.weights().iter().position(|w| !w.is_positive_within(tol)) {
+        // Outside the valid domain: written, flagged, exit 3 (module docs).
+        v["valid"] = false.into();
+        v["problem"] = format!(
+            "weight w_{i} of the reduced curve is not positive: the {name} reduction left the domain of rational Bézier curves"
+        )
+        .into();
+        super::mark_outside_domain();
+    }
+    Ok(v)
 }

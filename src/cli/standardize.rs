@@ -2,7 +2,7 @@
 //! rect patch (corner weights 1), source 000. The JSON says whether the
 //! result is exact and names the reparameterization with its parameters.
 
-use super::{load, one_or_many};
+use super::{charge_each, load, one_or_many, ScalarKind};
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
 use crate::scalar::Ordered;
@@ -26,7 +26,17 @@ pub struct Args {
 /// The subcommand: `{"exact": bool, "reparameterization": {...}, "patch": {...}}` per input
 /// (plus `"why_not_exact"` when a root is irrational).
 pub fn run(a: &Args) -> Result<Value, Error> {
-    let out = load(&a.file)?
+    let patches = load(&a.file)?;
+    // A Möbius map with α of about bits/n bits (a root of w₀/wₙ), or for a
+    // rect the quadratic map, bidegree (m+n, m+n), with parameters as large
+    // as the weights.
+    charge_each("standardize", &patches, ScalarKind::Exact, |s| {
+        let (m, n) = (s.degree.0 as u64, s.degree.1 as u64);
+        let big = m + n + 1;
+        let ops = big * big * (m + 1) * (n + 1) * (s.dim as u64 + 1);
+        (ops, s.grown_bits(2 * (m + n), s.bits))
+    })?;
+    let out = patches
         .iter()
         .map(|p| match p {
             Patch::Curve(c) => match standardize_curve_exact_or_f64(c)? {

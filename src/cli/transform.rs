@@ -1,6 +1,7 @@
 //! `reparam` and `elevate`: transformations that return patches.
 
-use super::{load, one_or_many, parse_list, run_each, PatchOp, ScalarKind};
+use super::{charge_each, load, one_or_many, parse_list, run_each, PatchOp, ScalarKind};
+use crate::limits::{check_result_degree, Size};
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
 use crate::reparam::Quadratic;
@@ -60,7 +61,16 @@ pub fn reparam(a: &ReparamArgs) -> Result<Value, Error> {
             )));
         }
     }
-    run_each(&load(&a.file)?, &params, a.scalar, &Reparam { quadratic })
+    let patches = load(&a.file)?;
+    if quadratic {
+        for p in &patches {
+            if let Patch::Rect(r) = p {
+                let (m, n) = r.degree();
+                check_result_degree(m + n)?;
+            }
+        }
+    }
+    run_each(&patches, &params, a.scalar, &Reparam { quadratic })
 }
 
 /// A Möbius map (or, if `quadratic`, the quadratic map of a rect patch).
@@ -69,6 +79,21 @@ struct Reparam {
 }
 
 impl PatchOp for Reparam {
+    const NAME: &'static str = "reparam";
+
+    /// Möbius: one evaluation's work. Quadratic: every coefficient of the
+    /// (N, N) result (N = m + n) sums over the whole net, on numbers grown
+    /// by 2N parameter factors.
+    fn cost(&self, s: &Size, param_bits: u64) -> (u64, u64) {
+        if !self.quadratic {
+            return (s.eval_ops(), s.grown_bits(s.total_degree(), param_bits));
+        }
+        let (m, n) = (s.degree.0 as u64, s.degree.1 as u64);
+        let big = m + n + 1;
+        let ops = big * big * (m + 1) * (n + 1) * (s.dim as u64 + 1);
+        (ops, s.grown_bits(2 * (m + n), param_bits))
+    }
+
     fn apply<T: JsonScalar + Ordered>(&self, p: &Patch<T>, params: &[T]) -> Result<Value, Error> {
         reparam_with(p, params, self.quadratic)
     }
@@ -135,12 +160,27 @@ pub fn elevate(a: &ElevateArgs) -> Result<Value, Error> {
                     })
             })
             .collect::<Result<_, _>>()?;
-    let out = load(&a.file)?
+    let patches = load(&a.file)?;
+    charge_each("elevate", &patches, ScalarKind::Exact, |s| {
+        let (r, t) = (by[0], by.get(1).copied().unwrap_or(0));
+        let (m, n) = (s.degree.0 + r, s.degree.1 + t);
+        let ops = ((m + 1) * (n + 1) * (m + n + 2) * (s.dim + 1)) as u64;
+        (ops, s.bits + 2 * (m + n) as u64)
+    })?;
+    let out = patches
         .iter()
         .map(|p| {
             let raised = match (p, by.as_slice()) {
-                (Patch::Curve(c), [r]) => Patch::Curve(c.elevate(*r)),
-                (Patch::Rect(q), [r, s]) => Patch::Rect(q.elevate(*r, *s)),
+                (Patch::Curve(c), [r]) => {
+                    check_result_degree(c.degree() + r)?;
+                    Patch::Curve(c.elevate(*r))
+                }
+                (Patch::Rect(q), [r, s]) => {
+                    let (m, n) = q.degree();
+                    check_result_degree(m + r)?;
+                    check_result_degree(n + s)?;
+                    Patch::Rect(q.elevate(*r, *s))
+                }
                 _ => {
                     return Err(Error::Shape(format!(
                         "--by {} does not apply to a {}",
