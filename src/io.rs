@@ -22,6 +22,8 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 use serde_json::{Map, Number, Value};
 
+mod duplicate_keys;
+
 /// A curve or patch of any kind read from JSON.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Patch<T> {
@@ -355,6 +357,12 @@ pub(crate) fn missing(field: &str) -> Error {
     Error::Format(format!("missing field \"{field}\""))
 }
 
+/// The fields of a patch object, and the annotations `arc` writes beside
+/// them (read and ignored); any other field is refused (docs/limits.md).
+const PATCH_FIELDS: [&str; 7] = [
+    "kind", "degree", "points", "weights", "exact", "cos_half", "lambda",
+];
+
 /// Read one patch from a JSON object.
 ///
 /// # Errors
@@ -369,6 +377,11 @@ pub fn patch_from_value(v: &Value) -> Result<Patch<BigRational>, Error> {
         .get("kind")
         .and_then(Value::as_str)
         .ok_or_else(|| missing("kind"))?;
+    if let Some(key) = obj.keys().find(|k| !PATCH_FIELDS.contains(&k.as_str())) {
+        return Err(Error::Format(format!(
+            "unknown field {key:?} (a {kind} has only \"kind\", \"degree\", \"points\", \"weights\")"
+        )));
+    }
     match kind {
         "curve" => read_curve(obj).map(Patch::Curve),
         "rect" => read_rect(obj).map(Patch::Rect),
@@ -383,9 +396,12 @@ pub fn patch_from_value(v: &Value) -> Result<Patch<BigRational>, Error> {
 ///
 /// # Errors
 ///
-/// [`Error::Format`] naming the line and column of a syntax error.
+/// [`Error::Format`] naming the line and column of a syntax error, or a
+/// key repeated in one object (policy: refused, docs/limits.md).
 pub fn parse_json(text: &str) -> Result<Value, Error> {
-    serde_json::from_str(text).map_err(|e| Error::Format(e.to_string()))
+    let v = serde_json::from_str(text).map_err(|e| Error::Format(e.to_string()))?;
+    duplicate_keys::check_no_duplicate_keys(text)?;
+    Ok(v)
 }
 
 /// Read a file's content: one patch object or an array of them.
@@ -471,8 +487,18 @@ fn weights_to_json<T: JsonScalar>(g: &[Vec<T>]) -> Value {
 ///
 /// # Errors
 ///
-/// [`Error::PointAtInfinity`] if a weight is zero.
+/// [`Error::PointAtInfinity`] if a weight is zero;
+/// [`Error::DegreeTooHigh`] over [`MAX_DEGREE`].
 pub fn patch_to_json<T: JsonScalar + Field>(p: &Patch<T>) -> Result<Value, Error> {
+    // What we write, we read: never a degree the reader refuses.
+    match p {
+        Patch::Curve(c) => check_degree(c.degree())?,
+        Patch::Rect(r) => {
+            check_degree(r.degree().0)?;
+            check_degree(r.degree().1)?;
+        }
+        Patch::Tri(t) => check_degree(t.degree())?,
+    }
     let mut obj = Map::new();
     obj.insert("kind".into(), p.kind().into());
     match p {

@@ -47,6 +47,7 @@ use crate::rect::RectPatch;
 use crate::reparam::Quadratic;
 use crate::scalar::{ratio, Ordered, Roots, Scalar, Tolerance};
 use num_rational::BigRational;
+use num_traits::One;
 
 /// The reparameterization a standard form applied, with its parameters.
 #[derive(Clone, Debug, PartialEq)]
@@ -89,9 +90,13 @@ pub enum Exactness<E, F> {
     Approximate(F, String),
 }
 
-/// A curve's standard form over Q, or in `f64`.
-pub type CurveOutcome =
-    Exactness<Standard<RationalCurve<BigRational>, BigRational>, Standard<RationalCurve<f64>, f64>>;
+/// A curve's standard form over Q; or, when the root is irrational, the
+/// same curve exactly reparameterized by a rational α̃ near the true α (end
+/// weights 1 and 1 + O(n·2⁻⁵²)), see [`standardize_curve_exact_or_f64`].
+pub type CurveOutcome = Exactness<
+    Standard<RationalCurve<BigRational>, BigRational>,
+    Standard<RationalCurve<BigRational>, BigRational>,
+>;
 
 /// A rect patch's standard form over Q, or in `f64`.
 pub type RectOutcome =
@@ -153,7 +158,9 @@ pub fn standardize_curve<T: Roots>(
     })
 }
 
-/// [`standardize_curve`] exactly, or in `f64` when a root is irrational.
+/// [`standardize_curve`] exactly; when the root is irrational, the nearly
+/// standard form of `near_standard_curve`: exact numbers, so weights far
+/// outside the `f64` range (`1e-400`) neither underflow nor overflow.
 ///
 /// # Errors
 ///
@@ -163,12 +170,54 @@ pub fn standardize_curve_exact_or_f64(
 ) -> Result<CurveOutcome, Error> {
     match standardize_curve(c) {
         Ok(s) => Ok(Exactness::Exact(s)),
-        Err(Error::NotRational(why)) => Ok(Exactness::Approximate(
-            standardize_curve(&c.map(Ordered::to_f64))?,
-            why,
-        )),
+        Err(Error::NotRational(why)) => Ok(Exactness::Approximate(near_standard_curve(c), why)),
         Err(e) => Err(e),
     }
+}
+
+/// The nearly standard form when the root is irrational: α rounded to a
+/// rational α̃ computed in the log domain (no `f64` overflow or underflow
+/// however extreme the weights), then the Möbius map and the scale
+/// `k = 1/w̃₀` applied **exactly**: the same curve, end weights 1 and
+/// `1 + O(n·2⁻⁵²)`.
+fn near_standard_curve(
+    c: &RationalCurve<BigRational>,
+) -> Standard<RationalCurve<BigRational>, BigRational> {
+    let w = c.weights();
+    let n = c.degree();
+    let alpha = alpha_near(&(w[0].clone() / &w[n]), n);
+    let moved = c.mobius(&alpha);
+    let k = moved.weights()[0].recip();
+    let patch = moved.scale_weights(&k);
+    Standard {
+        patch,
+        map: StandardMap::Mobius {
+            alpha,
+            beta: None,
+            k,
+        },
+    }
+}
+
+/// A rational near `1 / (1 + q^{1/n})` for `q > 0`, from `log₂ q` (exact
+/// power-of-two part plus the `f64` logarithm of a mantissa in `[1/2, 2)`).
+fn alpha_near(q: &BigRational, n: usize) -> BigRational {
+    use num_bigint::BigInt;
+    let shift = q.numer().bits() as i64 - q.denom().bits() as i64;
+    let two_pow = |e: i64| -> BigRational {
+        let p = BigInt::from(1) << e.unsigned_abs();
+        if e >= 0 {
+            BigRational::from_integer(p)
+        } else {
+            BigRational::new(BigInt::from(1), p)
+        }
+    };
+    let mantissa = (q / two_pow(shift)).to_f64();
+    let l = (mantissa.log2() + shift as f64) / n.max(1) as f64;
+    let whole = l.floor();
+    let frac = BigRational::from_float(2f64.powf(l - whole)).unwrap_or_else(BigRational::one);
+    let root = frac * two_pow(whole as i64);
+    (BigRational::one() + root).recip()
 }
 
 /// The corner weights `(ω_{0,0}, ω_{m,0}, ω_{0,n}, ω_{m,n})`.

@@ -200,7 +200,7 @@ proptest! {
             prop_assert_eq!(again.patch, st.patch);
         } else {
             let Exactness::Approximate(st, _) = standardize_curve_exact_or_f64(&c).unwrap() else { panic!("inexact") };
-            let w = st.patch.weights();
+            let w: Vec<f64> = st.patch.weights().iter().map(Ordered::to_f64).collect();
             prop_assert!((w[0] - 1.0).abs() < 1e-9 && (w[n] - 1.0).abs() < 1e-9);
         }
     }

@@ -3,10 +3,10 @@
 //! common factors and weight scaling? Exit 0 either way.
 
 use super::{charge_each, load_one, patch_f64, ScalarKind};
-use crate::limits::Size;
 use crate::error::Error;
 use crate::interval::coincide_filtered;
 use crate::io::Patch;
+use crate::limits::Size;
 use crate::scalar::Tolerance;
 use num_rational::BigRational;
 use serde_json::Value;
@@ -37,7 +37,10 @@ pub struct Args {
 /// `(N+1)⁴(d+1)` operations on `(N+1)·bits`-bit numbers.
 pub(super) fn coincide_cost(s: &Size) -> (u64, u64) {
     let n1 = s.total_degree() + 1;
-    (n1.pow(4) * (s.dim as u64 + 1), s.bits.max(8).saturating_mul(n1))
+    (
+        n1.pow(4) * (s.dim as u64 + 1),
+        s.bits.max(8).saturating_mul(n1),
+    )
 }
 
 /// Read exactly one curve or patch from `path`.
@@ -49,7 +52,12 @@ fn one_patch(path: &str) -> Result<Patch<BigRational>, Error> {
 
 pub fn run(a: &Args) -> Result<Value, Error> {
     let (pa, pb) = (one_patch(&a.a)?, one_patch(&a.b)?);
-    charge_each("coincide", &[pa.clone(), pb.clone()], a.scalar, coincide_cost)?;
+    charge_each(
+        "coincide",
+        &[pa.clone(), pb.clone()],
+        a.scalar,
+        coincide_cost,
+    )?;
     match a.scalar {
         ScalarKind::F64 => {
             if a.filtered {
@@ -64,7 +72,8 @@ pub fn run(a: &Args) -> Result<Value, Error> {
                     "--tol {tol} must be a finite number ≥ 0"
                 )));
             }
-            let c = crate::coincide::coincide_f64(&patch_f64(&pa)?, &patch_f64(&pb)?, Tolerance(tol))?;
+            let c =
+                crate::coincide::coincide_f64(&patch_f64(&pa)?, &patch_f64(&pb)?, Tolerance(tol))?;
             let mut v = c.to_json();
             v["tolerance"] = tol.into();
             Ok(v)

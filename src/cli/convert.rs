@@ -4,10 +4,10 @@
 //! 002) to their exact rational Bézier form. Output: a JSON array of patches.
 
 use super::{charge_each, load, parse_list, patch_f64, read_input, ScalarKind};
-use crate::limits::{self, check_result_degree, Size};
 use crate::convert::{rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Split};
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
+use crate::limits::{self, check_result_degree, Size};
 use crate::scalar::{Field, Ordered};
 use crate::trig_io::{read_trig_patches, TrigPatch};
 use num_rational::BigRational;
@@ -99,7 +99,9 @@ pub fn run(a: &Args) -> Result<Value, Error> {
             check_result_degree(m + n)?;
         }
     }
-    charge_each("convert", &patches, a.scalar, |s| convert_cost(s, split_bits))?;
+    charge_each("convert", &patches, a.scalar, |s| {
+        convert_cost(s, split_bits)
+    })?;
     let mut out = Vec::new();
     for p in &patches {
         match a.scalar {
@@ -127,10 +129,16 @@ fn convert_cost(s: &Size, split_bits: u64) -> (u64, u64) {
     let (m, n) = (s.degree.0 as u64, s.degree.1 as u64);
     if s.tri {
         let net = (m + 1) * (m + 2) / 2;
-        (3 * (m + 1) * (m + 1) * net * d1, s.grown_bits(2 * m, split_bits))
+        (
+            12 * (m + 1) * (m + 1) * net * d1,
+            s.grown_bits(2 * m, split_bits),
+        )
     } else {
         let big = m + n + 1;
-        (2 * big * big * (m + 1) * (n + 1) * d1, s.grown_bits(2 * (m + n), 1))
+        (
+            2 * big * big * (m + 1) * (n + 1) * d1,
+            s.grown_bits(2 * (m + n), 1),
+        )
     }
 }
 

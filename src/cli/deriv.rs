@@ -5,8 +5,8 @@ use super::{load, parse_list, run_each, PatchOp, ScalarKind};
 use crate::curve::RationalCurve;
 use crate::error::{Error, MAX_DEGREE};
 use crate::io::{point_to_json, JsonScalar, Patch};
-use crate::scalar::Ordered;
 use crate::limits::Size;
+use crate::scalar::Ordered;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use serde_json::{json, Value};
@@ -82,7 +82,10 @@ impl PatchOp for Deriv {
 
     fn cost(&self, s: &Size, param_bits: u64) -> (u64, u64) {
         let k = self.0 as u64 + 1;
-        (k * s.eval_ops(), s.grown_bits(s.total_degree() + k, param_bits))
+        (
+            k * s.eval_ops(),
+            s.grown_bits(s.total_degree() + k, param_bits),
+        )
     }
 
     fn apply<T: JsonScalar + Ordered>(&self, p: &Patch<T>, params: &[T]) -> Result<Value, Error> {

@@ -31,6 +31,12 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     }
     let params = parse_list(&a.at)?;
     let patches = read_patches(&text)?;
+    if patches.is_empty() {
+        return Err(Error::Shape(format!(
+            "{:?} holds an empty array: no curve or patch to evaluate",
+            a.file
+        )));
+    }
     if !a.extrapolate {
         for p in &patches {
             check_domain(p, &params)?;

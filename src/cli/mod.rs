@@ -16,8 +16,8 @@
 //! Exact arithmetic is the default; `--scalar f64` selects floats.
 
 use crate::error::Error;
-use crate::limits::{self, Limits, Size};
 use crate::io::{read_patches, JsonScalar, Patch};
+use crate::limits::{self, Limits, Size};
 use crate::scalar::Ordered;
 use clap::{Parser, Subcommand, ValueEnum};
 use num_rational::BigRational;
@@ -301,7 +301,10 @@ pub fn one_line(message: &str) -> String {
     }
     let head: String = flat.chars().take(MAX_ERROR_CHARS - 80).collect();
     let tail: String = flat.chars().skip(n - 50).collect();
-    format!("{head} …[{} characters elided]… {tail}", n - (MAX_ERROR_CHARS - 80) - 50)
+    format!(
+        "{head} …[{} characters elided]… {tail}",
+        n - (MAX_ERROR_CHARS - 80) - 50
+    )
 }
 
 /// Refuse output with a non-finite number: an `f64` result that overflowed
@@ -336,7 +339,9 @@ pub fn main() -> i32 {
     // A closed pipe (e.g. `exact-bezier prove | head`) is not an error: the
     // reader has what it wanted.
     let mut stdout = std::io::stdout().lock();
-    let _ = stdout.write_all(out.stdout.as_bytes()).and_then(|()| stdout.flush());
+    let _ = stdout
+        .write_all(out.stdout.as_bytes())
+        .and_then(|()| stdout.flush());
     out.code
 }
 
@@ -366,10 +371,12 @@ fn read_limited(r: impl Read, what: &str) -> Result<String, Error> {
 pub(crate) fn read_input(path: &str) -> Result<String, Error> {
     if path == "-" {
         let given = SESSION.with(|s| {
-            s.borrow_mut().last_mut().and_then(|top| match &mut top.stdin {
-                Stdin::Bytes(b) => Some(std::mem::take(b)),
-                Stdin::Process => None,
-            })
+            s.borrow_mut()
+                .last_mut()
+                .and_then(|top| match &mut top.stdin {
+                    Stdin::Bytes(b) => Some(std::mem::take(b)),
+                    Stdin::Process => None,
+                })
         });
         match given {
             Some(bytes) => read_limited(&bytes[..], "standard input"),
@@ -377,8 +384,8 @@ pub(crate) fn read_input(path: &str) -> Result<String, Error> {
         }
     } else {
         let what = format!("{path:?}");
-        let file =
-            std::fs::File::open(path).map_err(|e| Error::Format(format!("cannot read {what}: {e}")))?;
+        let file = std::fs::File::open(path)
+            .map_err(|e| Error::Format(format!("cannot read {what}: {e}")))?;
         read_limited(file, &what)
     }
 }

@@ -3,11 +3,11 @@
 //! [--split diagonal|a,b,c,d,e,f] [--title T]`.
 
 use super::{charge_each, load, ScalarKind};
+use crate::error::Error;
 use crate::io::Patch;
 use crate::limits::{MAX_PIXELS, MAX_PLOT_POINTS};
-use num_rational::BigRational;
-use crate::error::Error;
 use crate::plot::{plot_png, plot_svg, PlotOptions, Projection, Split};
+use num_rational::BigRational;
 use serde_json::{json, Value};
 
 /// Arguments of `plot`.
@@ -136,8 +136,12 @@ fn check_plot_size(patches: &[Patch<BigRational>], opts: &PlotOptions) -> Result
 pub(super) fn write_output(path: &str, bytes: &[u8]) -> Result<(), Error> {
     let p = std::path::Path::new(path);
     if let Some(dir) = p.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| Error::Format(format!("cannot create {:?}: {e}", dir.display().to_string())))?;
+        std::fs::create_dir_all(dir).map_err(|e| {
+            Error::Format(format!(
+                "cannot create {:?}: {e}",
+                dir.display().to_string()
+            ))
+        })?;
     }
     std::fs::write(p, bytes).map_err(|e| Error::Format(format!("cannot write {path:?}: {e}")))
 }

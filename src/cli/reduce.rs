@@ -50,7 +50,10 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     // Recursions over the net (least squares: a dense (n+1)² system).
     charge_each("reduce", &patches, a.scalar, |s| {
         let n1 = s.total_degree() + 1;
-        (n1 * n1 * n1 * (s.dim as u64 + 1), s.grown_bits(2 * n1, s.bits))
+        (
+            n1 * n1 * n1 * (s.dim as u64 + 1),
+            s.grown_bits(2 * n1, s.bits),
+        )
     })?;
     let values = patches
         .iter()
@@ -87,7 +90,11 @@ fn reduce_with<T: JsonScalar + Ordered>(
     let name = format!("{method:?}").to_lowercase();
     let reduced = c.reduce(scheme)?;
     let mut v = json!({ "method": name, "curve": patch_to_json(&Patch::Curve(reduced.clone()))? });
-    if let Some(i) = reduced.weights().iter().position(|w| !w.is_positive_within(tol)) {
+    if let Some(i) = reduced
+        .weights()
+        .iter()
+        .position(|w| !w.is_positive_within(tol))
+    {
         // Outside the valid domain: written, flagged, exit 3 (module docs).
         v["valid"] = false.into();
         v["problem"] = format!(

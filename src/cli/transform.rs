@@ -1,9 +1,9 @@
 //! `reparam` and `elevate`: transformations that return patches.
 
 use super::{charge_each, load, one_or_many, parse_list, run_each, PatchOp, ScalarKind};
-use crate::limits::{check_result_degree, Size};
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
+use crate::limits::{check_result_degree, Size};
 use crate::reparam::Quadratic;
 use crate::scalar::Ordered;
 use num_rational::BigRational;
@@ -161,6 +161,15 @@ pub fn elevate(a: &ElevateArgs) -> Result<Value, Error> {
             })
             .collect::<Result<_, _>>()?;
     let patches = load(&a.file)?;
+    for p in &patches {
+        let (m, n) = match p {
+            Patch::Curve(c) => (c.degree(), 0),
+            Patch::Rect(q) => q.degree(),
+            Patch::Tri(t) => (t.degree(), 0),
+        };
+        check_result_degree(m + by[0])?;
+        check_result_degree(n + by.get(1).copied().unwrap_or(0))?;
+    }
     charge_each("elevate", &patches, ScalarKind::Exact, |s| {
         let (r, t) = (by[0], by.get(1).copied().unwrap_or(0));
         let (m, n) = (s.degree.0 + r, s.degree.1 + t);
@@ -171,16 +180,8 @@ pub fn elevate(a: &ElevateArgs) -> Result<Value, Error> {
         .iter()
         .map(|p| {
             let raised = match (p, by.as_slice()) {
-                (Patch::Curve(c), [r]) => {
-                    check_result_degree(c.degree() + r)?;
-                    Patch::Curve(c.elevate(*r))
-                }
-                (Patch::Rect(q), [r, s]) => {
-                    let (m, n) = q.degree();
-                    check_result_degree(m + r)?;
-                    check_result_degree(n + s)?;
-                    Patch::Rect(q.elevate(*r, *s))
-                }
+                (Patch::Curve(c), [r]) => Patch::Curve(c.elevate(*r)),
+                (Patch::Rect(q), [r, s]) => Patch::Rect(q.elevate(*r, *s)),
                 _ => {
                     return Err(Error::Shape(format!(
                         "--by {} does not apply to a {}",
