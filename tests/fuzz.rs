@@ -79,8 +79,10 @@ fn run(args: &[String], stdin: &[u8]) -> (Outcome, u64) {
     (out, ALLOCATED.with(Cell::get) - before)
 }
 
-/// Fields whose value may be `null` (documented in the command's help).
-const NULLABLE: [&str; 4] = ["curve", "alpha", "beta", "witness"];
+/// Fields whose value may be `null`: none is a number (`reduce --method
+/// exact`'s absent curve, `join`'s undefined α/β, `coincide`'s absent
+/// witness and the v map of a curve).
+const NULLABLE: [&str; 5] = ["curve", "alpha", "beta", "witness", "v"];
 
 fn no_bad_numbers(v: &Value, key: &str) -> Result<(), String> {
     match v {
@@ -304,10 +306,10 @@ fn corpus_cases_hold() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
-/// The allocation bound is not vacuous: the issue's `is-circle` of a
-/// `1e4000` coordinate, with the digit limit raised and the work budget
-/// lifted, allocates beyond it. (Kept small enough to finish in well under
-/// a second: the real hang used `1e10000`.)
+/// The allocation counter measures work: the issue's `is-circle` of a huge
+/// coordinate (`1e1500` here, kept small so the test is fast; the hang used
+/// `1e10000`), with the limits lifted, allocates over 20 times what a small
+/// curve does; with the default limits it is refused before any work.
 #[test]
 fn the_allocation_counter_sees_unbounded_work() {
     let curve =
@@ -328,7 +330,7 @@ fn the_allocation_counter_sees_unbounded_work() {
         &args[..2],
         b"{\"kind\":\"curve\",\"points\":[[0,0],[1,1],[2,0]]}",
     );
-    assert!(allocated > 100 * small, "{allocated} vs {small}");
+    assert!(allocated > 20 * small, "{allocated} vs {small}");
     // And with the defaults the same input is refused before any work.
     let (out, refused) = run(&args[..2], curve.as_bytes());
     assert_eq!(out.code, 2);
@@ -338,25 +340,20 @@ fn the_allocation_counter_sees_unbounded_work() {
 
 // ------------------------------------------------------------- generators
 
-/// Number texts: ordinary, extreme, malformed.
+/// Number texts: mostly ordinary (so most cases get past the reader and
+/// into the computation), sometimes extreme or malformed.
 fn number() -> impl Strategy<Value = String> {
+    let hostile = prop::sample::select(vec![
+        "\"1e309\"", "1e309", "\"1e10000\"", "\"1e-10000\"", "\"-0\"", "\"+1\"",
+        "\"1e-0\"", "\"1/0\"", "\"NaN\"", "-0.0", "\"\"", "null", "\"1e-300\"",
+        "\"1e300\"", "\".5\"", "\"5.\"", "\"1.7e308\"",
+    ]);
     prop_oneof![
-        (-20i64..20).prop_map(|n| n.to_string()),
-        (1i64..50, 1i64..50).prop_map(|(p, q)| format!("\"{p}/{q}\"")),
-        Just("\"1e309\"".to_string()),
-        Just("1e309".to_string()),
-        Just("\"1e10000\"".to_string()),
-        Just("\"1e-10000\"".to_string()),
-        Just("\"-0\"".to_string()),
-        Just("\"+1\"".to_string()),
-        Just("\"1e-0\"".to_string()),
-        Just("\"1/0\"".to_string()),
-        Just("\"NaN\"".to_string()),
-        Just("-0.0".to_string()),
-        Just("\"\"".to_string()),
-        Just("null".to_string()),
-        (1usize..1500).prop_map(|n| format!("\"{}\"", "9".repeat(n))),
-        (1u32..400).prop_map(|e| format!("\"1e-{e}\"")),
+        30 => (-20i64..20).prop_map(|n| n.to_string()),
+        10 => (1i64..50, 1i64..50).prop_map(|(p, q)| format!("\"{p}/{q}\"")),
+        2 => hostile.prop_map(String::from),
+        1 => (1usize..1500).prop_map(|n| format!("\"{}\"", "9".repeat(n))),
+        1 => (1u32..400).prop_map(|e| format!("\"1e-{e}\"")),
     ]
 }
 
@@ -429,19 +426,15 @@ fn input() -> impl Strategy<Value = String> {
 
 /// A flag value: numbers, lists of numbers, junk.
 fn value() -> impl Strategy<Value = String> {
+    let fixed = prop::sample::select(vec![
+        "1e10000", "1e-10000", "-1", "2", "1e-1000", "64", "64,64", "1/3,1/2", "0,1",
+        "1e-10000,1/2,1/2,1/2", "1/3,1/2,1/5,2/3", "1/3,1/2,1/3,1/2,1/2,1/2", "tau=1/2",
+        "rect", "tri", "rational", "f64", "exact", "forrest", "farin", "lsq", "3", "0",
+    ]);
     prop_oneof![
-        (0u32..10, 1u32..10).prop_map(|(p, q)| format!("{p}/{q}")),
-        Just("1e10000".to_string()),
-        Just("1e-10000".to_string()),
-        Just("-1".to_string()),
-        Just("1e-1000".to_string()),
-        Just("64".to_string()),
-        Just("64,64".to_string()),
-        Just("1/3,1/2".to_string()),
-        Just("1e-10000,1/2,1/2,1/2".to_string()),
-        Just("1/3,1/2,1/3,1/2,1/2,1/2".to_string()),
-        Just("tau=1/2".to_string()),
-        "\\PC{0,12}",
+        3 => (0u32..10, 1u32..10).prop_map(|(p, q)| format!("{p}/{q}")),
+        4 => fixed.prop_map(String::from),
+        1 => "\\PC{0,12}",
     ]
 }
 
@@ -495,15 +488,28 @@ fn command() -> impl Strategy<Value = Vec<String>> {
         "--max-digits",
         "--bogus",
     ]);
+    let required = prop::collection::vec(value(), 3);
     (
         subs,
         prop::collection::vec((flags, value()), 0..4),
         any::<bool>(),
+        required,
     )
-        .prop_map(|(sub, fl, two_files)| {
+        .prop_map(|(sub, fl, two_files, req)| {
             let mut v = vec![sub.to_string(), "-".to_string()];
             if two_files {
                 v.push("-".to_string());
+            }
+            // The flags a subcommand needs, so most cases reach its work.
+            let needs: &[&str] = match sub {
+                "eval" | "deriv" | "curvature" => &["--at"],
+                "reparam" => &["--mobius"],
+                "convert" => &["--to"],
+                "arc" => &["--cos-half", "--lambda", "--points"],
+                _ => &[],
+            };
+            for (flag, x) in needs.iter().zip(&req) {
+                v.extend([flag.to_string(), x.clone()]);
             }
             if sub == "plot" || sub == "mesh" {
                 let ext = if sub == "plot" { "svg" } else { "obj" };

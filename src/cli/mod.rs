@@ -299,11 +299,13 @@ pub fn one_line(message: &str) -> String {
     if n <= MAX_ERROR_CHARS {
         return flat;
     }
-    let head: String = flat.chars().take(MAX_ERROR_CHARS - 80).collect();
-    let tail: String = flat.chars().skip(n - 50).collect();
+    // Head + tail + the marker (at most 36 characters) stay within the limit.
+    let (keep_head, keep_tail) = (MAX_ERROR_CHARS - 100, 60);
+    let head: String = flat.chars().take(keep_head).collect();
+    let tail: String = flat.chars().skip(n - keep_tail).collect();
     format!(
         "{head} …[{} characters elided]… {tail}",
-        n - (MAX_ERROR_CHARS - 80) - 50
+        n - keep_head - keep_tail
     )
 }
 
