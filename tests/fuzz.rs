@@ -363,8 +363,8 @@ fn number() -> impl Strategy<Value = String> {
         "\"1.7e308\"",
     ]);
     prop_oneof![
-        30 => (-20i64..20).prop_map(|n| n.to_string()),
-        10 => (1i64..50, 1i64..50).prop_map(|(p, q)| format!("\"{p}/{q}\"")),
+        60 => (-20i64..20).prop_map(|n| n.to_string()),
+        20 => (1i64..50, 1i64..50).prop_map(|(p, q)| format!("\"{p}/{q}\"")),
         2 => hostile.prop_map(String::from),
         1 => (1usize..1500).prop_map(|n| format!("\"{}\"", "9".repeat(n))),
         1 => (1u32..400).prop_map(|e| format!("\"1e-{e}\"")),
@@ -379,11 +379,11 @@ fn point(dim: usize) -> impl Strategy<Value = String> {
 /// numbers and optional extra or repeated fields.
 fn patch() -> impl Strategy<Value = String> {
     let kinds = prop_oneof![
-        Just("curve"),
-        Just("rect"),
-        Just("tri"),
-        Just("trig-curve"),
-        Just("blob")
+        4 => Just("curve"),
+        4 => Just("rect"),
+        4 => Just("tri"),
+        1 => Just("trig-curve"),
+        1 => Just("blob")
     ];
     (kinds, 0usize..6, 0usize..4, 1usize..4, any::<u8>()).prop_flat_map(
         |(kind, m, n, dim, flags)| {
@@ -393,30 +393,33 @@ fn patch() -> impl Strategy<Value = String> {
                 m + 1
             };
             let cols = if kind == "rect" { n + 1 } else { m + 1 };
+            // A tri's row j holds m − j + 1 points.
+            let len = move |j: usize| if kind == "tri" { m + 1 - j } else { cols };
             (
-                prop::collection::vec(prop::collection::vec(point(dim), cols), rows),
+                (0..rows)
+                    .map(|j| prop::collection::vec(point(dim), len(j)))
+                    .collect::<Vec<_>>(),
                 prop::collection::vec(number(), cols),
             )
                 .prop_map(move |(pts, ws)| {
                     let grid: Vec<String> =
                         pts.iter().map(|r| format!("[{}]", r.join(","))).collect();
-                    let points = if rows == 1 {
+                    let points = if kind == "curve" || kind == "trig-curve" {
                         grid[0].clone()
                     } else {
                         format!("[{}]", grid.join(","))
                     };
                     let mut s = format!(r#"{{"kind":"{kind}","points":{points}"#);
-                    if flags & 1 != 0 && rows == 1 {
+                    if flags & 1 != 0 && kind == "curve" {
                         s.push_str(&format!(r#","weights":[{}]"#, ws.join(",")));
                     }
-                    if flags & 2 != 0 {
-                        s.push_str(r#","colour":"red""#);
-                    }
-                    if flags & 4 != 0 {
-                        s.push_str(r#","kind":"curve""#);
-                    }
-                    if flags & 8 != 0 {
-                        s.push_str(&format!(r#","degree":{}"#, flags >> 4));
+                    // Now and then (1 in 16 each): an unknown field, a
+                    // repeated key, a declared degree that may not fit.
+                    match flags % 16 {
+                        2 => s.push_str(r#","colour":"red""#),
+                        4 => s.push_str(r#","kind":"curve""#),
+                        8 => s.push_str(&format!(r#","degree":{}"#, flags >> 4)),
+                        _ => {}
                     }
                     if kind == "trig-curve" {
                         s.push_str(r#","alpha":"1e300""#);
@@ -431,16 +434,27 @@ fn patch() -> impl Strategy<Value = String> {
 /// A file's text: a patch, an array of them, or a mutation of one.
 fn input() -> impl Strategy<Value = String> {
     prop_oneof![
-        4 => patch(),
+        8 => patch(),
         1 => prop::collection::vec(patch(), 0..3).prop_map(|v| format!("[{}]", v.join(","))),
-        1 => (patch(), any::<prop::sample::Index>()).prop_map(|(p, i)| p[..i.index(p.len() + 1).min(p.len())].to_string()),
+        1 => (patch(), any::<prop::sample::Index>())
+            .prop_map(|(p, i)| p[..i.index(p.len() + 1).min(p.len())].to_string()),
         1 => "\\PC{0,40}",
     ]
 }
 
-/// A flag value: numbers, lists of numbers, junk.
-fn value() -> impl Strategy<Value = String> {
-    let fixed = prop::sample::select(vec![
+/// A number in [0, 1] as exact text.
+fn unit() -> impl Strategy<Value = String> {
+    (0u32..=8, 1u32..=8).prop_map(|(p, q)| format!("{}/{}", p.min(q), q))
+}
+
+/// `k` numbers in (0, 1), comma-separated.
+fn open_units(k: usize) -> impl Strategy<Value = String> {
+    prop::collection::vec((1u32..8).prop_map(|p| format!("{p}/8")), k).prop_map(|v| v.join(","))
+}
+
+/// A plausible value for `flag`, or (1 in 5) a hostile one.
+fn value_for(flag: &'static str) -> BoxedStrategy<String> {
+    let hostile = prop::sample::select(vec![
         "1e10000",
         "1e-10000",
         "-1",
@@ -448,115 +462,171 @@ fn value() -> impl Strategy<Value = String> {
         "1e-1000",
         "64",
         "64,64",
-        "1/3,1/2",
-        "0,1",
-        "1e-10000,1/2,1/2,1/2",
-        "1/3,1/2,1/5,2/3",
-        "1/3,1/2,1/3,1/2,1/2,1/2",
-        "tau=1/2",
-        "rect",
-        "tri",
-        "rational",
-        "f64",
-        "exact",
-        "forrest",
-        "farin",
-        "lsq",
-        "3",
         "0",
-    ]);
-    prop_oneof![
-        3 => (0u32..10, 1u32..10).prop_map(|(p, q)| format!("{p}/{q}")),
-        4 => fixed.prop_map(String::from),
-        1 => "\\PC{0,12}",
-    ]
+        "NaN",
+        "inf",
+        "1e-10000,1/2,1/2,1/2",
+        "tau=1/2",
+        "",
+        "1/0",
+        "999999999999999999999",
+    ])
+    .prop_map(String::from);
+    let plausible: BoxedStrategy<String> = match flag {
+        "--at" => prop_oneof![
+            unit(),
+            (unit(), unit()).prop_map(|(u, v)| format!("{u},{v}"))
+        ]
+        .boxed(),
+        "--mobius" => prop_oneof![open_units(1), open_units(2)].boxed(),
+        "--quadratic" => open_units(4).boxed(),
+        "--split" => Just("1/3,1/2,1/3,1/2,1/2,1/2".to_string()).boxed(),
+        "--scalar" => prop::sample::select(vec!["exact", "f64"])
+            .prop_map(String::from)
+            .boxed(),
+        "--to" => prop::sample::select(vec!["tri", "rect", "rational"])
+            .prop_map(String::from)
+            .boxed(),
+        "--method" => prop::sample::select(vec!["forrest", "farin", "lsq", "exact"])
+            .prop_map(String::from)
+            .boxed(),
+        "--by" => prop_oneof![
+            (0u32..4).prop_map(|r| r.to_string()),
+            (0u32..3, 0u32..3).prop_map(|(r, t)| format!("{r},{t}"))
+        ]
+        .boxed(),
+        "--tol" => Just("1e-9".to_string()).boxed(),
+        "--cos-half" => Just("1/2".to_string()).boxed(),
+        "--lambda" => prop_oneof![Just("1".to_string()), unit()].boxed(),
+        "--points" => Just("0,0;1,1;2,0".to_string()).boxed(),
+        "--direction" => Just("0,1".to_string()).boxed(),
+        _ => (1u32..40).prop_map(|n| n.to_string()).boxed(),
+    };
+    prop_oneof![4 => plausible, 1 => hostile].boxed()
 }
 
-/// An argument vector for any subcommand, with hostile flags.
-fn command() -> impl Strategy<Value = Vec<String>> {
-    let subs = prop::sample::select(vec![
-        "eval",
-        "reparam",
-        "standardize",
-        "elevate",
-        "convert",
-        "plot",
-        "mesh",
-        "deriv",
-        "curvature",
-        "join",
-        "reduce",
-        "arc",
-        "is-circle",
-        "coincide",
-        "dedup",
-        "figures",
-        "nosuch",
-    ]);
-    let flags = prop::sample::select(vec![
-        "--at",
-        "--mobius",
-        "--quadratic",
-        "--by",
-        "--to",
-        "--split",
-        "--method",
-        "--order",
-        "--density",
-        "--iso",
-        "--samples",
-        "--width",
-        "--scalar",
-        "--tol",
-        "--cos-half",
-        "--lambda",
-        "--points",
-        "--direction",
-        "--only",
-        "--manifest",
-        "--extrapolate",
-        "--degenerate",
-        "--normalize",
-        "--filtered",
-        "--compact",
-        "--max-digits",
-        "--bogus",
-    ]);
-    let required = prop::collection::vec(value(), 3);
+/// Each subcommand: its file arguments and the flags it takes (with the
+/// ones it needs first), `true` for a flag without a value.
+const SUBCOMMANDS: &[(&str, usize, &[(&str, bool)])] = &[
     (
-        subs,
-        prop::collection::vec((flags, value()), 0..4),
-        any::<bool>(),
-        required,
-    )
-        .prop_map(|(sub, fl, two_files, req)| {
-            let mut v = vec![sub.to_string(), "-".to_string()];
-            if two_files {
-                v.push("-".to_string());
-            }
-            // The flags a subcommand needs, so most cases reach its work.
-            let needs: &[&str] = match sub {
-                "eval" | "deriv" | "curvature" => &["--at"],
-                "reparam" => &["--mobius"],
-                "convert" => &["--to"],
-                "arc" => &["--cos-half", "--lambda", "--points"],
-                _ => &[],
-            };
-            for (flag, x) in needs.iter().zip(&req) {
-                v.extend([flag.to_string(), x.clone()]);
-            }
+        "eval",
+        1,
+        &[
+            ("--at", false),
+            ("--scalar", false),
+            ("--extrapolate", true),
+        ],
+    ),
+    (
+        "deriv",
+        1,
+        &[
+            ("--at", false),
+            ("--order", false),
+            ("--scalar", false),
+            ("--extrapolate", true),
+        ],
+    ),
+    (
+        "curvature",
+        1,
+        &[
+            ("--at", false),
+            ("--scalar", false),
+            ("--extrapolate", true),
+        ],
+    ),
+    ("reparam", 1, &[("--mobius", false), ("--scalar", false)]),
+    ("reparam", 1, &[("--quadratic", false), ("--scalar", false)]),
+    ("standardize", 1, &[("--compact", true)]),
+    ("elevate", 1, &[("--by", false)]),
+    (
+        "convert",
+        1,
+        &[
+            ("--to", false),
+            ("--split", false),
+            ("--degenerate", true),
+            ("--normalize", true),
+            ("--scalar", false),
+        ],
+    ),
+    (
+        "plot",
+        1,
+        &[
+            ("--iso", false),
+            ("--samples", false),
+            ("--width", false),
+            ("--height", false),
+            ("--speed", true),
+            ("--split", false),
+        ],
+    ),
+    ("mesh", 1, &[("--density", false), ("--scalar", false)]),
+    ("join", 2, &[("--scalar", false), ("--tol", false)]),
+    (
+        "reduce",
+        1,
+        &[("--method", false), ("--scalar", false), ("--tol", false)],
+    ),
+    (
+        "arc",
+        0,
+        &[
+            ("--cos-half", false),
+            ("--lambda", false),
+            ("--points", false),
+            ("--direction", false),
+        ],
+    ),
+    ("is-circle", 1, &[]),
+    (
+        "coincide",
+        2,
+        &[("--scalar", false), ("--tol", false), ("--filtered", true)],
+    ),
+    ("dedup", 1, &[]),
+    ("nosuch", 1, &[("--bogus", false)]),
+];
+
+/// An argument vector for any subcommand: its files (`-`), its needed
+/// flags, some of its other flags (each at most once) with plausible or
+/// hostile values, now and then a flag it does not take; always a small
+/// `--max-work`.
+fn command() -> impl Strategy<Value = Vec<String>> {
+    prop::sample::select(SUBCOMMANDS.to_vec())
+        .prop_flat_map(|(sub, files, flags)| {
+            let needed = if sub == "arc" { 3 } else { 1.min(flags.len()) };
+            let chosen: Vec<BoxedStrategy<Option<(String, bool, String)>>> = flags
+                .iter()
+                .enumerate()
+                .map(|(k, &(flag, bare))| {
+                    let v = value_for(flag).prop_map(move |x| (flag.to_string(), bare, x));
+                    if k < needed {
+                        v.prop_map(Some).boxed()
+                    } else {
+                        prop::option::weighted(0.3, v).boxed()
+                    }
+                })
+                .collect();
+            (Just((sub, files)), chosen, any::<u8>())
+        })
+        .prop_map(|((sub, files), chosen, extra)| {
+            let mut v = vec![sub.to_string()];
+            v.extend(std::iter::repeat_n("-".to_string(), files));
             if sub == "plot" || sub == "mesh" {
                 let ext = if sub == "plot" { "svg" } else { "obj" };
                 v.extend(["-o".to_string(), format!("{}/out.{ext}", scratch())]);
             }
-            for (f, x) in fl {
-                v.push(f.to_string());
-                if !matches!(
-                    f,
-                    "--extrapolate" | "--degenerate" | "--normalize" | "--filtered" | "--compact"
-                ) {
+            for (flag, bare, x) in chosen.into_iter().flatten() {
+                v.push(flag);
+                if !bare {
                     v.push(x);
                 }
+            }
+            if extra % 16 == 0 {
+                v.push("--bogus".to_string());
             }
             v.extend(["--max-work".to_string(), CASE_WORK.to_string()]);
             v
