@@ -505,9 +505,13 @@ fn value_for(flag: &'static str) -> BoxedStrategy<String> {
     prop_oneof![4 => plausible, 1 => hostile].boxed()
 }
 
+/// A subcommand, its number of file arguments, and its flags with whether
+/// each is bare (takes no value).
+type Spec = (&'static str, usize, &'static [(&'static str, bool)]);
+
 /// Each subcommand: its file arguments and the flags it takes (with the
 /// ones it needs first), `true` for a flag without a value.
-const SUBCOMMANDS: &[(&str, usize, &[(&str, bool)])] = &[
+const SUBCOMMANDS: &[Spec] = &[
     (
         "eval",
         1,
