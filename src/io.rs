@@ -378,9 +378,11 @@ pub fn patch_from_value(v: &Value) -> Result<Patch<BigRational>, Error> {
         .and_then(Value::as_str)
         .ok_or_else(|| missing("kind"))?;
     if let Some(key) = obj.keys().find(|k| !PATCH_FIELDS.contains(&k.as_str())) {
-        return Err(Error::Format(format!(
-            "unknown field {key:?} (a {kind} has only \"kind\", \"degree\", \"points\", \"weights\")"
-        )));
+        if matches!(kind, "curve" | "rect" | "tri") {
+            return Err(Error::Format(format!(
+                "unknown field {key:?} (a {kind} has only \"kind\", \"degree\", \"points\", \"weights\")"
+            )));
+        }
     }
     match kind {
         "curve" => read_curve(obj).map(Patch::Curve),

@@ -15,8 +15,10 @@
 //! Two sources of cases: the corpus `tests/fuzz_corpus/*.json` (every case
 //! of the fuzzing run and every one found since, with its expected
 //! exit code and message), and proptest generators of hostile JSON and
-//! argument vectors for every subcommand. CI runs the corpus plus
-//! [`READER_CASES`] + [`COMMAND_CASES`] generated cases (see `docs/limits.md`).
+//! argument vectors for every subcommand; and a property test that every
+//! subcommand writing patches writes what it reads. CI runs the corpus plus
+//! [`READER_CASES`] + [`COMMAND_CASES`] + [`WRITER_CASES`] generated cases
+//! (see `docs/limits.md`).
 
 use exact_bezier::cli::{one_line, run_with, Outcome, Stdin, MAX_ERROR_CHARS};
 use exact_bezier::read_patches;
@@ -67,6 +69,8 @@ const ALLOC_PER_INPUT_BYTE: u64 = 200;
 const READER_CASES: u32 = 400;
 /// Generated command lines.
 const COMMAND_CASES: u32 = 600;
+/// Generated valid patches through the writing subcommands.
+const WRITER_CASES: u32 = 200;
 
 /// Run one command line in-process; returns the outcome and the bytes it
 /// allocated.
@@ -679,5 +683,67 @@ proptest! {
         let (out, allocated) = run(&args, text.as_bytes());
         let r = check(&args, text.len(), &out, allocated, CASE_WORK);
         prop_assert!(r.is_ok(), "{}", r.unwrap_err());
+    }
+}
+
+// ------------------------------------------------- what we write, we read
+
+/// A valid curve, rect or tri patch of low degree, as JSON text.
+fn valid_patch() -> impl Strategy<Value = String> {
+    use exact_bezier::strategy::{curve, rect, tri};
+    use exact_bezier::{patch_to_json, Patch};
+    let p = prop_oneof![
+        (1usize..=4, 1usize..=3)
+            .prop_flat_map(|(n, d)| curve(n, d))
+            .prop_map(Patch::Curve),
+        (1usize..=3, 1usize..=3)
+            .prop_flat_map(|(m, n)| rect(m, n, 3))
+            .prop_map(Patch::Rect),
+        (1usize..=3)
+            .prop_flat_map(|n| tri(n, 3))
+            .prop_map(Patch::Tri),
+    ];
+    p.prop_map(|p| patch_to_json(&p).expect("positive weights").to_string())
+}
+
+/// Every subcommand that writes patches, with arguments that fit most
+/// patches.
+const WRITERS: [&[&str]; 11] = [
+    &["reparam", "-", "--mobius", "1/3"],
+    &["reparam", "-", "--mobius", "2/7,3/5"],
+    &["reparam", "-", "--quadratic", "1/3,1/2,1/5,2/3"],
+    &["elevate", "-", "--by", "2"],
+    &["elevate", "-", "--by", "1,2"],
+    &["convert", "-", "--to", "tri"],
+    &["convert", "-", "--to", "rect", "--normalize"],
+    &["convert", "-", "--to", "rect", "--degenerate"],
+    &["standardize", "-"],
+    &["reduce", "-", "--method", "forrest"],
+    &["reduce", "-", "--method", "lsq"],
+];
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: WRITER_CASES, ..ProptestConfig::default() })]
+
+    /// Every patch a writing subcommand outputs for a valid input is read
+    /// back by the tool's own reader (checked by [`check`]), unless flagged
+    /// `"valid": false` with exit code 3; no writer fails on a patch kind
+    /// it takes.
+    #[test]
+    fn what_we_write_we_read(text in valid_patch(), k in 0..WRITERS.len()) {
+        let args: Vec<String> = WRITERS[k].iter().map(|s| s.to_string()).collect();
+        let (out, allocated) = run(&args, text.as_bytes());
+        let r = check(&args, text.len(), &out, allocated, exact_bezier::limits::Limits::DEFAULT.max_work);
+        prop_assert!(r.is_ok(), "{}", r.unwrap_err());
+        let wrong_kind = [
+            "applies to",
+            "does not apply",
+            "patches, not a",
+            "takes a curve, not a",
+            "value(s) for a",
+        ]
+            .iter()
+            .any(|m| out.stderr.contains(m));
+        prop_assert!(out.code != 2 || wrong_kind, "{args:?} on {text}: {}", out.stderr);
     }
 }
