@@ -54,12 +54,13 @@ pub struct Limits {
 }
 
 impl Limits {
-    /// The defaults: 1 000 digits, 64 MiB, 10⁹ work units (minutes at
-    /// worst on a slow machine; `docs/limits.md` has the calibration).
+    /// The defaults: 1 000 digits, 64 MiB, 2·10⁹ work units (a minute or
+    /// two at worst on a slow machine; `docs/limits.md` has the
+    /// calibration).
     pub const DEFAULT: Limits = Limits {
         max_digits: 1_000,
         max_input_bytes: 64 << 20,
-        max_work: 1_000_000_000,
+        max_work: 2_000_000_000,
     };
 }
 
