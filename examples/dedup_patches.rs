@@ -10,6 +10,7 @@
 //! Run from the crate root: `cargo run --example dedup_patches`
 
 use exact_bezier::{coincide, dedup, ratio, read_patches, Patch};
+use num_rational::BigRational;
 
 fn main() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fixtures/yang_yong_example1.json");
@@ -26,7 +27,7 @@ fn main() {
             .elevate(1, 2),
     );
     let mut weights = rect.weights();
-    weights[1][1] = weights[1][1].clone() * ratio(1_000_001, 1_000_000);
+    weights[1][1] = weights[1][1].clone() * ratio::<BigRational>(1_000_001, 1_000_000);
     let points = rect
         .ctrl()
         .iter()

@@ -34,7 +34,8 @@ fn main() {
     let (u, v) = (ratio::<BigRational>(1, 5), ratio(1, 2));
     let on_rect = rect.eval(&u, &v).expect("no pole");
     let on_tri = t1.eval(&u, &v).expect("no pole");
-    println!("rect(1/5, 1/2) = {on_rect:?}");
+    let shown: Vec<String> = on_rect.iter().map(ToString::to_string).collect();
+    println!("rect(1/5, 1/2) = tri(1/5, 1/2, 3/10) = ({})", shown.join(", "));
     assert_eq!(on_rect, on_tri, "the conversion is exact");
 
     let mesh = Mesh::from_patches(&[Patch::Tri(t1), Patch::Tri(t2)], 16).expect("finite normals");
