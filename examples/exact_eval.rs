@@ -37,7 +37,7 @@ fn main() {
         circle.center[0], circle.center[1], circle.radius_squared
     );
 
-    let arc64 = arc.map(|q| exact_bezier::rational_to_f64(q));
+    let arc64 = arc.map(exact_bezier::rational_to_f64);
     let x = arc64.eval(&(1.0 / 3.0)).expect("no pole");
     println!(
         "f64 at t = 1/3: x² + y² − 1 = {:e} (rounding)",

@@ -67,6 +67,7 @@ mod rect;
 mod rect_join;
 mod rect_ops;
 mod reparam;
+#[cfg(any(test, feature = "cli"))]
 mod samples;
 mod scalar;
 #[cfg(feature = "serde")]
