@@ -38,14 +38,18 @@ mod bernstein;
 mod blossom;
 mod canonical;
 mod circle;
+#[cfg(feature = "cli")]
+#[doc(hidden)]
 pub mod cli;
 mod coincide;
 mod continuity;
+pub mod coords;
 mod convert;
 mod curve;
 mod curve_deriv;
 mod curve_geometry;
 mod degree_reduction;
+mod display;
 mod error;
 mod fast_eval;
 mod hpoint;
@@ -53,17 +57,22 @@ mod int;
 mod interval;
 mod io;
 pub mod limits;
+#[cfg(feature = "render")]
 mod mesh;
 mod minimal_degree;
 mod modp;
+#[cfg(feature = "render")]
 pub mod plot;
 mod poly;
 mod rect;
 mod rect_join;
 mod rect_ops;
 mod reparam;
+#[cfg(any(test, feature = "cli"))]
 mod samples;
 mod scalar;
+#[cfg(feature = "serde")]
+mod serde_support;
 mod standard;
 #[cfg(feature = "proptest")]
 pub mod strategy;
@@ -72,6 +81,10 @@ mod trig;
 mod trig_io;
 mod upoly;
 
+/// The claims of the sources and their proofs, run by `exact-bezier prove`.
+/// Not part of the public API.
+#[cfg(feature = "cli")]
+#[doc(hidden)]
 #[path = "../proofs/mod.rs"]
 pub mod proofs;
 
@@ -111,6 +124,7 @@ pub use io::{
     parse_json, parse_rational, patch_from_value, patch_to_json, point_to_json, read_patches,
     JsonScalar, Patch,
 };
+#[cfg(feature = "render")]
 pub use mesh::{curve_jet, normal_direction, rect_jet, tri_jet, Jet, Mesh, MAX_DENSITY};
 pub use minimal_degree::{
     bernstein_to_power, minimal_curve, minimal_rect, multiply_components, power_to_bernstein,

@@ -31,7 +31,9 @@ mod boundary;
 mod view;
 
 pub use boundary::{boundary_curve, shared_boundaries, Edge};
-pub(crate) use view::{invariant_parts, Prepared, View};
+#[cfg(feature = "cli")]
+pub(crate) use view::invariant_parts;
+pub(crate) use view::{Prepared, View};
 
 use crate::curve::RationalCurve;
 use crate::error::Error;

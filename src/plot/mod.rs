@@ -79,7 +79,10 @@ impl Split {
         if text == "diagonal" {
             return Ok(Split::Diagonal);
         }
-        let q = crate::cli::parse_list(text)?;
+        let q = text
+            .split(',')
+            .map(crate::io::parse_rational)
+            .collect::<Result<Vec<_>, _>>()?;
         let f: Vec<f64> = q.iter().map(Ordered::to_f64).collect();
         let unit = |x: f64| (0.0..=1.0).contains(&x);
         match f[..] {
