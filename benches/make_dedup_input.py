@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
 """Write N random bicubic rect patches plus one transformed copy of each
-(exact Möbius map in u and v, weight scaling, random reversal and u/v swap)
-as one JSON array, for timing `exact-bezier dedup` on 2N patches:
+(exact Möbius map in u and v, weight scaling, random reversal and u/v swap),
+for timing `exact-bezier dedup` and `exact-bezier key` on 2N patches:
 
     python3 benches/make_dedup_input.py 50000 > /tmp/p100k.json
-    time target/release/exact-bezier dedup /tmp/p100k.json > /tmp/classes.json
+    python3 benches/make_dedup_input.py --jsonl 100000 > /tmp/p200k.jsonl
+    time target/release/exact-bezier dedup /tmp/p200k.jsonl > /tmp/classes.jsonl
 
-The answer must be N classes, each {2k, 2k+1}.
+Without --jsonl the output is one JSON array; with it, JSON Lines (one
+patch per line). The answer must be N classes, each {2k, 2k+1}.
 """
 import json
 import random
@@ -38,14 +40,24 @@ def as_json(pts, w):
 
 
 def main():
-    n = int(sys.argv[1]) if len(sys.argv) > 1 else 50000
+    args = sys.argv[1:]
+    jsonl = "--jsonl" in args
+    args = [a for a in args if a != "--jsonl"]
+    n = int(args[0]) if args else 50000
     rng = random.Random(7)
-    out = []
-    for _ in range(n):
+    out = sys.stdout
+    if not jsonl:
+        out.write("[")
+    for k in range(n):
         pts, w = patch(rng)
-        out.append(as_json(pts, w))
-        out.append(as_json(*transformed(rng, pts, w)))
-    json.dump(out, sys.stdout)
+        pair = [as_json(pts, w), as_json(*transformed(rng, pts, w))]
+        for j, p in enumerate(pair):
+            if jsonl:
+                out.write(json.dumps(p) + "\n")
+            else:
+                out.write((", " if k or j else "") + json.dumps(p))
+    if not jsonl:
+        out.write("]\n")
 
 
 if __name__ == "__main__":

@@ -22,6 +22,9 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 use serde_json::{Map, Number, Value};
 
+mod stream;
+pub use stream::{for_each_chunk, Record};
+
 /// A curve or patch of any kind read from JSON.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Patch<T> {

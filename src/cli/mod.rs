@@ -14,6 +14,7 @@ use serde_json::Value;
 use std::io::Read;
 
 mod arc;
+mod bulk;
 mod coincide;
 mod convert;
 mod curvature;
@@ -24,6 +25,7 @@ mod eval_trig;
 mod figures;
 mod is_circle;
 mod join;
+mod key;
 mod mesh;
 mod plot;
 mod prove;
@@ -83,8 +85,10 @@ enum Command {
     IsCircle(is_circle::Args),
     /// Are two curves or rect patches the same up to reparameterization?
     Coincide(coincide::Args),
-    /// Group a JSON array of curves/rect patches into coincidence classes.
+    /// Group curves/rect patches (JSON Lines or array) into coincidence classes, one JSON line each.
     Dedup(dedup::Args),
+    /// One canonical coincidence key per curve/rect patch, one JSON line each.
+    Key(key::Args),
 }
 
 /// Run the command line; returns the process exit code.
@@ -113,7 +117,8 @@ pub fn main() -> i32 {
         Command::Arc(a) => arc::run(&a),
         Command::IsCircle(a) => is_circle::run(&a),
         Command::Coincide(a) => coincide::run(&a),
-        Command::Dedup(a) => dedup::run(&a),
+        Command::Dedup(a) => return dedup::run(&a),
+        Command::Key(a) => return key::run(&a),
     };
     match result {
         Ok(v) => {

@@ -1,0 +1,60 @@
+//! `key FILE`: the canonical key of every curve or rect patch, one JSON
+//! line each — `{"index": K, "key": "eb1:…"}` — computed on all cores and
+//! written in input order. Grouping these lines by `key` (in any engine:
+//! DuckDB, Spark, `sort`) gives the classes of `dedup`; see
+//! `docs/bulk_dedup.md`.
+
+use super::bulk::{exit_code, map_chunk, BulkArgs, Out, Progress, CHUNK};
+use crate::canonical::canonical_key;
+use crate::error::Error;
+use crate::io::for_each_chunk;
+use serde_json::json;
+
+/// Arguments of `key`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    bulk: BulkArgs,
+    /// The index of the first record (for a shard of a larger input).
+    #[arg(long, default_value_t = 0)]
+    first_index: u64,
+    /// Also print the key text the digest is taken of ("text").
+    #[arg(long)]
+    text: bool,
+}
+
+pub fn run(a: &Args) -> i32 {
+    exit_code(keys(a))
+}
+
+fn keys(a: &Args) -> Result<(), Error> {
+    let (reader, input) = a.bulk.open()?;
+    let progress = Progress::new(&a.bulk, &input);
+    let mut out = Out::new();
+    let mut done = 0;
+    let n = for_each_chunk(reader, CHUNK, |first, records| {
+        let lines = map_chunk(&records, |p| {
+            let key = canonical_key(&p)?;
+            let digest = key.digest().to_string();
+            Ok(if a.text {
+                (digest, Some(key.text()))
+            } else {
+                (digest, None)
+            })
+        })?;
+        for (k, (digest, text)) in lines.into_iter().enumerate() {
+            let index = a.first_index + (first + k) as u64;
+            let line = match text {
+                None => format!("{{\"index\":{index},\"key\":\"{digest}\"}}"),
+                Some(t) => json!({"index": index, "key": digest, "text": t}).to_string(),
+            };
+            out.line(&line);
+        }
+        done += records.len();
+        progress.update(&input, done);
+        Ok(())
+    })?;
+    out.flush();
+    progress.finish(&format!("{n} keys"));
+    Ok(())
+}
