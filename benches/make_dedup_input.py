@@ -13,19 +13,32 @@ patch per line). The answer must be N classes, each {2k, 2k+1}.
 import json
 import random
 import sys
-from fractions import Fraction as F
+from math import gcd
+
+
+class Q:
+    """A positive fraction p/q in lowest terms (faster than Fraction here)."""
+
+    def __init__(self, p, q=1):
+        g = gcd(p, q)
+        self.p, self.q = p // g, q // g
+
+    def __str__(self):
+        return str(self.p) if self.q == 1 else f"{self.p}/{self.q}"
 
 
 def patch(rng):
     pts = [[[rng.randint(-50, 50) for _ in range(3)] for _ in range(4)] for _ in range(4)]
-    w = [[F(rng.randint(1, 9)) for _ in range(4)] for _ in range(4)]
+    w = [[Q(rng.randint(1, 9)) for _ in range(4)] for _ in range(4)]
     return pts, w
 
 
 def transformed(rng, pts, w):
-    a, b = F(rng.randint(1, 9), 10), F(rng.randint(1, 9), 10)
-    k = F(rng.randint(1, 5))
-    w = [[w[i][j] * k * (1 - a) ** i * a ** (3 - i) * (1 - b) ** j * b ** (3 - j)
+    # Möbius parameters a = A/10, b = B/10: the weight (i, j) is multiplied
+    # by k (1 − a)^i a^(3−i) (1 − b)^j b^(3−j) = k (10−A)^i A^(3−i) (10−B)^j B^(3−j) / 10^6.
+    a, b = rng.randint(1, 9), rng.randint(1, 9)
+    k = rng.randint(1, 5)
+    w = [[Q(w[i][j].p * k * (10 - a) ** i * a ** (3 - i) * (10 - b) ** j * b ** (3 - j), 10 ** 6)
           for j in range(4)] for i in range(4)]
     if rng.random() < 0.5:
         pts, w = pts[::-1], w[::-1]

@@ -234,7 +234,9 @@ fn witnesses_map_each_representative_to_its_members() {
     assert_eq!(lines[0]["members"], serde_json::json!([0, 2]));
     assert_eq!(lines[0]["witnesses"][0], serde_json::Value::Null);
     assert_eq!(lines[0]["witnesses"][1]["symmetry"], "identity");
-    assert_eq!(lines[0]["witnesses"][1]["k"], 1);
+    // The identity map: α = β = 1/2, corner weights equal.
+    assert_eq!(lines[0]["witnesses"][1]["u"]["alpha"], "1/2");
+    assert_eq!(lines[0]["witnesses"][1]["corner_weight_ratio"], 1);
     assert_eq!(lines[1]["members"], serde_json::json!([1]));
     assert_eq!(lines[1]["witnesses"], serde_json::json!([null]));
 }

@@ -4,7 +4,9 @@
 //!
 //! The format is told by the first non-blank byte: `[` starts an array
 //! (streamed element by element through a serde `SeqAccess` visitor),
-//! anything else is JSON Lines. Records are parsed to patches by the
+//! anything else is JSON Lines — unless the first record line is an
+//! incomplete JSON value, as in a pretty-printed object: then the input is
+//! read as a sequence of JSON values (parsed on one thread). Records are parsed to patches by the
 //! caller, in parallel, with [`patch_from_value`](crate::patch_from_value).
 
 use crate::error::Error;
@@ -14,7 +16,7 @@ use serde::de::{DeserializeSeed, Error as _, SeqAccess, Visitor};
 use serde_json::Value;
 use std::cell::RefCell;
 use std::fmt;
-use std::io::BufRead;
+use std::io::{BufRead, Read};
 
 /// One input record, not yet parsed into a patch.
 #[derive(Clone, Debug)]
@@ -129,7 +131,39 @@ fn read_lines<R: BufRead>(
         if line.trim().is_empty() {
             continue;
         }
+        if count == 0 && is_incomplete(&line) {
+            let rest = std::io::Cursor::new(line).chain(input);
+            return read_values(rest, chunk, f);
+        }
         buf.push(Record::Line(line_no, line));
+        count += 1;
+        if buf.len() == chunk {
+            f(first, std::mem::take(&mut buf))?;
+            first = count;
+        }
+    }
+    if !buf.is_empty() {
+        f(first, buf)?;
+    }
+    Ok(count)
+}
+
+/// Is `line` the start of a longer JSON value (not a syntax error)?
+fn is_incomplete(line: &str) -> bool {
+    serde_json::from_str::<serde::de::IgnoredAny>(line).is_err_and(|e| e.is_eof())
+}
+
+/// A sequence of JSON values (whitespace-separated, any layout).
+fn read_values<R: Read>(
+    input: R,
+    chunk: usize,
+    f: &mut dyn FnMut(usize, Vec<Record>) -> Result<(), Error>,
+) -> Result<usize, Error> {
+    let (mut count, mut first) = (0, 0);
+    let mut buf = Vec::with_capacity(chunk);
+    for v in serde_json::Deserializer::from_reader(input).into_iter::<Value>() {
+        let v = v.map_err(|e| Error::Format(e.to_string()))?;
+        buf.push(Record::Element(count, v));
         count += 1;
         if buf.len() == chunk {
             f(first, std::mem::take(&mut buf))?;
