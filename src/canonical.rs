@@ -25,7 +25,7 @@
 use crate::coincide::{net_of, Prepared, Symmetry, View};
 use crate::error::Error;
 use crate::io::Patch;
-use crate::minimal_degree::minimal_net;
+use crate::minimal_degree::{certified_minimal, minimal_net};
 use num_rational::BigRational;
 use rayon::prelude::*;
 use sha2::{Digest, Sha256};
@@ -33,6 +33,8 @@ use std::cmp::Ordering;
 use std::collections::HashMap;
 use std::fmt::{self, Write as _};
 use std::hash::{BuildHasherDefault, Hasher};
+
+mod small;
 
 /// The canonical key of a curve's or rect patch's coincidence class.
 ///
@@ -156,12 +158,7 @@ impl CanonicalKey {
     /// assert_eq!(canonical_key(&Patch::Curve(c)).unwrap().text(), "eb1;curve;1,0;P=0,1;1,1;I=+:1;+:1");
     /// ```
     pub fn text(&self) -> String {
-        let mut out = format!(
-            "{KEY_VERSION};{};{},{};P=",
-            if self.curve { "curve" } else { "rect" },
-            self.degree.0,
-            self.degree.1
-        );
+        let mut out = text_head(self.curve, self.degree);
         for (k, p) in self.points.iter().enumerate() {
             if k > 0 {
                 out.push(';');
@@ -197,14 +194,56 @@ impl CanonicalKey {
     /// SHA-256 of [`text`](Self::text): a fixed-size key, printed as
     /// `eb1:` and 64 hex digits.
     pub fn digest(&self) -> KeyDigest {
-        KeyDigest(Sha256::digest(self.text().as_bytes()).into())
+        KeyDigest::of_text(&self.text())
     }
+}
+
+/// `eb1;KIND;M,N;P=`: the head of the key text.
+fn text_head(curve: bool, (m, n): (usize, usize)) -> String {
+    let kind = if curve { "curve" } else { "rect" };
+    format!("{KEY_VERSION};{kind};{m},{n};P=")
+}
+
+/// The key text of a patch ([`CanonicalKey::text`]), by a machine-integer
+/// fast path when the net is certified minimal and its numbers are small
+/// (the common case), else through [`canonical_key`]. Same text either way.
+///
+/// ```
+/// use exact_bezier::{canonical_key, canonical_text, Patch, RectPatch, ratio};
+/// use num_rational::BigRational;
+/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+/// let r = RectPatch::new(
+///     vec![vec![p(0, 0), p(0, 1)], vec![p(1, 0), p(2, 3)]],
+///     vec![vec![ratio(1, 1), ratio(2, 1)], vec![ratio(3, 1), ratio(1, 2)]],
+/// ).unwrap();
+/// let patch = Patch::Rect(r);
+/// assert_eq!(canonical_text(&patch).unwrap(), canonical_key(&patch).unwrap().text());
+/// ```
+///
+/// # Errors
+///
+/// As [`canonical_key`].
+pub fn canonical_text(p: &Patch<BigRational>) -> Result<String, Error> {
+    let (net, curve) = net_of(p)?;
+    if certified_minimal(&net) {
+        if let Some(text) = small::key_text(&net, curve) {
+            return Ok(text);
+        }
+    }
+    canonical_key(p).map(|k| k.text())
 }
 
 /// A fixed-size canonical key: SHA-256 of [`CanonicalKey::text`]. Equal for
 /// coincident patches; distinct for others unless SHA-256 collides.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct KeyDigest(pub [u8; 32]);
+
+impl KeyDigest {
+    /// SHA-256 of a key text.
+    pub fn of_text(text: &str) -> KeyDigest {
+        KeyDigest(Sha256::digest(text.as_bytes()).into())
+    }
+}
 
 impl fmt::Display for KeyDigest {
     /// `eb1:` and the digest in lowercase hex.
@@ -231,7 +270,7 @@ impl fmt::Display for KeyDigest {
 ///
 /// As [`canonical_key`].
 pub fn key_digest(p: &Patch<BigRational>) -> Result<KeyDigest, Error> {
-    canonical_key(p).map(|k| k.digest())
+    canonical_text(p).map(|t| KeyDigest::of_text(&t))
 }
 
 /// Hashes a [`KeyDigest`] by its first 8 bytes: they are already uniform,

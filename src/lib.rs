@@ -86,7 +86,7 @@ pub use arc::{
 pub use bernstein::{bernstein, bernstein_all};
 pub use blossom::{polar_bivariate, polar_tensor, polar_univariate, rect_blossom, ShiftOp};
 pub use canonical::{canonical_key, dedup, CanonicalKey, Deduper};
-pub use canonical::{key_digest, Classes, KeyDigest, KEY_VERSION};
+pub use canonical::{canonical_text, key_digest, Classes, KeyDigest, KEY_VERSION};
 pub use circle::{circle_of, integer_coords, Circle, NotCircle};
 pub use coincide::{
     boundary_curve, coincide, coincide_curves, coincide_f64, coincide_rects, shared_boundaries,

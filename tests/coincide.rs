@@ -399,3 +399,33 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// The machine-integer fast path of the key text agrees with the
+    /// general `BigRational` one: on ties between symmetries (mirrored
+    /// points), on copies, and on weights too big for `i128` (fallback).
+    #[test]
+    fn fast_key_text_is_the_general_one(
+        a in bidegree(), t in maps(), mirror in any::<bool>(), big in 0u32..3, c in curve(3, 2)
+    ) {
+        use exact_bezier::canonical_text;
+        let (m, _) = a.degree();
+        let (mut pts, mut ws) = (a.points().unwrap(), a.weights());
+        if mirror {
+            for i in 0..=m / 2 {
+                pts[m - i] = pts[i].clone();
+            }
+        }
+        let scale = Q::new(num_bigint::BigInt::from(10).pow(12 * big), 7.into());
+        ws[0][0] = ws[0][0].clone() * scale;
+        let r = RectPatch::new(pts, ws).unwrap();
+        let moved = apply(&r, &Maps { factor: None, elevate: (0, 0), ..t.clone() });
+        let curves = [c.clone(), c.mobius(&t.alpha).reverse()];
+        let all = [Patch::Rect(r), Patch::Rect(moved)].into_iter().chain(curves.into_iter().map(Patch::Curve));
+        for p in all {
+            prop_assert_eq!(canonical_text(&p).unwrap(), canonical_key(&p).unwrap().text());
+        }
+    }
+}

@@ -5,7 +5,7 @@
 //! `docs/bulk_dedup.md`.
 
 use super::bulk::{exit_code, map_chunk, BulkArgs, Out, Progress, CHUNK};
-use crate::canonical::canonical_key;
+use crate::canonical::{canonical_text, KeyDigest};
 use crate::error::Error;
 use crate::io::for_each_chunk;
 use serde_json::json;
@@ -34,13 +34,9 @@ fn keys(a: &Args) -> Result<(), Error> {
     let mut done = 0;
     let n = for_each_chunk(reader, CHUNK, |first, records| {
         let lines = map_chunk(&records, |p| {
-            let key = canonical_key(&p)?;
-            let digest = key.digest().to_string();
-            Ok(if a.text {
-                (digest, Some(key.text()))
-            } else {
-                (digest, None)
-            })
+            let text = canonical_text(&p)?;
+            let digest = KeyDigest::of_text(&text).to_string();
+            Ok((digest, a.text.then_some(text)))
         })?;
         for (k, (digest, text)) in lines.into_iter().enumerate() {
             let index = a.first_index + (first + k) as u64;
