@@ -115,13 +115,52 @@ fn first_byte<R: BufRead>(input: &mut R) -> Result<Option<u8>, Error> {
     }
 }
 
-fn read_lines<R: BufRead>(
-    mut input: R,
+type Sink<'a> = &'a mut dyn FnMut(usize, Vec<Record>) -> Result<(), Error>;
+
+/// Collects records and hands them on every `chunk`, with the index of
+/// each chunk's first record.
+struct Chunker<'a> {
     chunk: usize,
-    f: &mut dyn FnMut(usize, Vec<Record>) -> Result<(), Error>,
-) -> Result<usize, Error> {
-    let (mut count, mut line_no, mut first) = (0, 0, 0);
-    let mut buf = Vec::with_capacity(chunk);
+    count: usize,
+    first: usize,
+    buf: Vec<Record>,
+    f: Sink<'a>,
+}
+
+impl<'a> Chunker<'a> {
+    fn new(chunk: usize, f: Sink<'a>) -> Self {
+        Chunker {
+            chunk,
+            count: 0,
+            first: 0,
+            buf: Vec::with_capacity(chunk),
+            f,
+        }
+    }
+
+    /// Add the record built from its index.
+    fn push(&mut self, record: impl FnOnce(usize) -> Record) -> Result<(), Error> {
+        self.buf.push(record(self.count));
+        self.count += 1;
+        if self.buf.len() == self.chunk {
+            (self.f)(self.first, std::mem::take(&mut self.buf))?;
+            self.first = self.count;
+        }
+        Ok(())
+    }
+
+    /// Hand on the last records; the record count.
+    fn finish(mut self) -> Result<usize, Error> {
+        if !self.buf.is_empty() {
+            (self.f)(self.first, std::mem::take(&mut self.buf))?;
+        }
+        Ok(self.count)
+    }
+}
+
+fn read_lines<R: BufRead>(mut input: R, chunk: usize, f: Sink<'_>) -> Result<usize, Error> {
+    let mut line_no = 0;
+    let mut out = Chunker::new(chunk, f);
     loop {
         let mut line = String::new();
         if input.read_line(&mut line).map_err(read_error)? == 0 {
@@ -131,21 +170,13 @@ fn read_lines<R: BufRead>(
         if line.trim().is_empty() {
             continue;
         }
-        if count == 0 && is_incomplete(&line) {
+        if out.count == 0 && is_incomplete(&line) {
             let rest = std::io::Cursor::new(line).chain(input);
-            return read_values(rest, chunk, f);
+            return read_values(rest, out);
         }
-        buf.push(Record::Line(line_no, line));
-        count += 1;
-        if buf.len() == chunk {
-            f(first, std::mem::take(&mut buf))?;
-            first = count;
-        }
+        out.push(|_| Record::Line(line_no, line))?;
     }
-    if !buf.is_empty() {
-        f(first, buf)?;
-    }
-    Ok(count)
+    out.finish()
 }
 
 /// Is `line` the start of a longer JSON value (not a syntax error)?
@@ -154,38 +185,19 @@ fn is_incomplete(line: &str) -> bool {
 }
 
 /// A sequence of JSON values (whitespace-separated, any layout).
-fn read_values<R: Read>(
-    input: R,
-    chunk: usize,
-    f: &mut dyn FnMut(usize, Vec<Record>) -> Result<(), Error>,
-) -> Result<usize, Error> {
-    let (mut count, mut first) = (0, 0);
-    let mut buf = Vec::with_capacity(chunk);
+fn read_values<R: Read>(input: R, mut out: Chunker<'_>) -> Result<usize, Error> {
     for v in serde_json::Deserializer::from_reader(input).into_iter::<Value>() {
         let v = v.map_err(|e| Error::Format(e.to_string()))?;
-        buf.push(Record::Element(count, v));
-        count += 1;
-        if buf.len() == chunk {
-            f(first, std::mem::take(&mut buf))?;
-            first = count;
-        }
+        out.push(|k| Record::Element(k, v))?;
     }
-    if !buf.is_empty() {
-        f(first, buf)?;
-    }
-    Ok(count)
+    out.finish()
 }
 
-fn read_array<R: BufRead>(
-    input: R,
-    chunk: usize,
-    f: &mut dyn FnMut(usize, Vec<Record>) -> Result<(), Error>,
-) -> Result<usize, Error> {
+fn read_array<R: BufRead>(input: R, chunk: usize, f: Sink<'_>) -> Result<usize, Error> {
     let failure = RefCell::new(None);
     let mut de = serde_json::Deserializer::from_reader(input);
     let visitor = Chunks {
-        chunk,
-        f,
+        out: Chunker::new(chunk, f),
         failure: &failure,
     };
     let counted = visitor
@@ -201,8 +213,7 @@ fn read_array<R: BufRead>(
 /// A visitor over the array's elements that flushes every `chunk`; an
 /// error of `f` is kept in `failure` (typed) and stops the parse.
 struct Chunks<'a> {
-    chunk: usize,
-    f: &'a mut dyn FnMut(usize, Vec<Record>) -> Result<(), Error>,
+    out: Chunker<'a>,
     failure: &'a RefCell<Option<Error>>,
 }
 
@@ -221,25 +232,64 @@ impl<'de> Visitor<'de> for Chunks<'_> {
     }
 
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<usize, A::Error> {
-        let (mut count, mut first) = (0, 0);
-        let mut buf = Vec::with_capacity(self.chunk);
-        let mut flush = |first: usize, buf: Vec<Record>| {
-            (self.f)(first, buf).map_err(|e| {
-                *self.failure.borrow_mut() = Some(e);
-                A::Error::custom("stopped")
-            })
+        let Chunks { mut out, failure } = self;
+        let stop = |e: Error| {
+            *failure.borrow_mut() = Some(e);
+            A::Error::custom("stopped")
         };
         while let Some(v) = seq.next_element::<Value>()? {
-            buf.push(Record::Element(count, v));
-            count += 1;
-            if buf.len() == self.chunk {
-                flush(first, std::mem::take(&mut buf))?;
-                first = count;
+            out.push(|k| Record::Element(k, v)).map_err(stop)?;
+        }
+        out.finish().map_err(stop)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn chunks(text: &str) -> (usize, Vec<(usize, Vec<String>)>) {
+        let mut seen = Vec::new();
+        let n = for_each_chunk(text.as_bytes(), 2, |first, recs| {
+            let names = recs.iter().map(|r| r.patch().unwrap().kind().to_string());
+            seen.push((first, names.collect()));
+            Ok(())
+        })
+        .unwrap();
+        (n, seen)
+    }
+
+    #[test]
+    fn every_layout_gives_the_same_chunks() {
+        let c = r#"{"kind": "curve", "points": [[0], [1]]}"#;
+        let r = r#"{"kind": "rect", "points": [[[0], [1]]]}"#;
+        let items = [c, r, c, c, r];
+        let want = (
+            5,
+            vec![
+                (0, vec!["curve".to_string(), "rect".into()]),
+                (2, vec!["curve".into(), "curve".into()]),
+                (4, vec!["rect".into()]),
+            ],
+        );
+        assert_eq!(chunks(&items.join("\n")), want);
+        assert_eq!(chunks(&format!(" [{}]", items.join(",\n"))), want);
+        let pretty = items.map(|t| t.replace(", ", ",\n  ")).join("\n");
+        assert_eq!(chunks(&pretty), want);
+        assert_eq!(chunks("  \n"), (0, vec![]));
+    }
+
+    #[test]
+    fn an_error_of_the_consumer_stops_an_array_and_keeps_its_type() {
+        let c = r#"{"kind": "curve", "points": [[0], [1]]}"#;
+        let text = format!("[{c}, {c}, {c}]");
+        let e = for_each_chunk(text.as_bytes(), 1, |first, _| {
+            if first == 1 {
+                Err(Error::Domain("stop here".into()))
+            } else {
+                Ok(())
             }
-        }
-        if !buf.is_empty() {
-            flush(first, buf)?;
-        }
-        Ok(count)
+        });
+        assert!(matches!(e, Err(Error::Domain(m)) if m == "stop here"));
     }
 }
