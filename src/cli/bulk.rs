@@ -122,7 +122,11 @@ impl TermLike for LogLines {
         writeln!(std::io::stderr(), "{s}")
     }
     fn write_str(&self, s: &str) -> std::io::Result<()> {
-        write!(std::io::stderr(), "{s}")
+        // No cursor to return to: every redraw is a line of its own.
+        if s.trim().is_empty() {
+            return Ok(());
+        }
+        writeln!(std::io::stderr(), "{}", s.trim_end())
     }
     fn clear_line(&self) -> std::io::Result<()> {
         Ok(())
@@ -154,6 +158,7 @@ impl Progress {
             if let Ok(style) = ProgressStyle::with_template(template) {
                 bar.set_style(style.progress_chars("=> "));
             }
+            bar.set_message("0 patches");
             bar
         });
         Progress {
@@ -165,9 +170,9 @@ impl Progress {
     /// Report `done` patches and the bytes read so far.
     pub fn update(&self, input: &Input, done: usize) {
         if let Some(bar) = &self.bar {
-            bar.set_position(input.bytes.load(Ordering::Relaxed));
             let secs = self.start.elapsed().as_secs_f64().max(1e-3);
             bar.set_message(format!("{done} patches ({:.0}/s)", done as f64 / secs));
+            bar.set_position(input.bytes.load(Ordering::Relaxed));
         }
     }
 
