@@ -5,11 +5,16 @@
 //! `DEDUP_N` overrides the count — one 100 000 iteration takes minutes, and
 //! criterion needs 10).
 //!
+//! The `bulk key` group prices one bicubic record of `exact-bezier key`:
+//! parsing its JSON line into a patch (the yardstick), its key text by the
+//! machine-integer fast path, and by the general `BigRational` path.
+//!
 //! Run: `cargo bench --bench coincide -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{black_box, criterion_group, criterion_main, BatchSize, Criterion};
 use exact_bezier::{
-    coincide, coincide_f64, coincide_filtered, ratio, Deduper, Patch, RectPatch, Symmetry,
+    canonical_key, canonical_text, coincide, coincide_f64, coincide_filtered, key_digest,
+    parse_json, patch_from_value, patch_to_json, ratio, Deduper, Patch, RectPatch, Symmetry,
     Tolerance,
 };
 use num_rational::BigRational;
@@ -136,5 +141,27 @@ fn dedup_100k(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, pairs, dedup_100k);
+fn bulk_key(c: &mut Criterion) {
+    let mut g = Gen(7);
+    let a = bicubic(&mut g);
+    let copy = Patch::Rect(copy_of(&a, &mut g));
+    let line = patch_to_json(&copy).expect("finite").to_string();
+    let parse = |l: &str| patch_from_value(&parse_json(l).expect("json")).expect("patch");
+    let mut group = c.benchmark_group("bulk key (one bicubic record)");
+    group.bench_function("parse the line (yardstick)", |b| {
+        b.iter(|| parse(black_box(&line)))
+    });
+    group.bench_function("parse + key digest", |b| {
+        b.iter(|| key_digest(&parse(black_box(&line))).expect("valid"))
+    });
+    group.bench_function("key text, fast path", |b| {
+        b.iter(|| canonical_text(black_box(&copy)).expect("valid"))
+    });
+    group.bench_function("key text, general path", |b| {
+        b.iter(|| canonical_key(black_box(&copy)).expect("valid").text())
+    });
+    group.finish();
+}
+
+criterion_group!(benches, pairs, bulk_key, dedup_100k);
 criterion_main!(benches);

@@ -1,29 +1,44 @@
 #!/usr/bin/env python3
 """Write N random bicubic rect patches plus one transformed copy of each
-(exact Möbius map in u and v, weight scaling, random reversal and u/v swap)
-as one JSON array, for timing `exact-bezier dedup` on 2N patches:
+(exact Möbius map in u and v, weight scaling, random reversal and u/v swap),
+for timing `exact-bezier dedup` and `exact-bezier key` on 2N patches:
 
     python3 benches/make_dedup_input.py 50000 > /tmp/p100k.json
-    time target/release/exact-bezier dedup /tmp/p100k.json > /tmp/classes.json
+    python3 benches/make_dedup_input.py --jsonl 100000 > /tmp/p200k.jsonl
+    time target/release/exact-bezier dedup /tmp/p200k.jsonl > /tmp/classes.jsonl
 
-The answer must be N classes, each {2k, 2k+1}.
+Without --jsonl the output is one JSON array; with it, JSON Lines (one
+patch per line). The answer must be N classes, each {2k, 2k+1}.
 """
 import json
 import random
 import sys
-from fractions import Fraction as F
+from math import gcd
+
+
+class Q:
+    """A positive fraction p/q in lowest terms (faster than Fraction here)."""
+
+    def __init__(self, p, q=1):
+        g = gcd(p, q)
+        self.p, self.q = p // g, q // g
+
+    def __str__(self):
+        return str(self.p) if self.q == 1 else f"{self.p}/{self.q}"
 
 
 def patch(rng):
     pts = [[[rng.randint(-50, 50) for _ in range(3)] for _ in range(4)] for _ in range(4)]
-    w = [[F(rng.randint(1, 9)) for _ in range(4)] for _ in range(4)]
+    w = [[Q(rng.randint(1, 9)) for _ in range(4)] for _ in range(4)]
     return pts, w
 
 
 def transformed(rng, pts, w):
-    a, b = F(rng.randint(1, 9), 10), F(rng.randint(1, 9), 10)
-    k = F(rng.randint(1, 5))
-    w = [[w[i][j] * k * (1 - a) ** i * a ** (3 - i) * (1 - b) ** j * b ** (3 - j)
+    # Möbius parameters a = A/10, b = B/10: the weight (i, j) is multiplied
+    # by k (1 − a)^i a^(3−i) (1 − b)^j b^(3−j) = k (10−A)^i A^(3−i) (10−B)^j B^(3−j) / 10^6.
+    a, b = rng.randint(1, 9), rng.randint(1, 9)
+    k = rng.randint(1, 5)
+    w = [[Q(w[i][j].p * k * (10 - a) ** i * a ** (3 - i) * (10 - b) ** j * b ** (3 - j), 10 ** 6)
           for j in range(4)] for i in range(4)]
     if rng.random() < 0.5:
         pts, w = pts[::-1], w[::-1]
@@ -38,14 +53,24 @@ def as_json(pts, w):
 
 
 def main():
-    n = int(sys.argv[1]) if len(sys.argv) > 1 else 50000
+    args = sys.argv[1:]
+    jsonl = "--jsonl" in args
+    args = [a for a in args if a != "--jsonl"]
+    n = int(args[0]) if args else 50000
     rng = random.Random(7)
-    out = []
-    for _ in range(n):
+    out = sys.stdout
+    if not jsonl:
+        out.write("[")
+    for k in range(n):
         pts, w = patch(rng)
-        out.append(as_json(pts, w))
-        out.append(as_json(*transformed(rng, pts, w)))
-    json.dump(out, sys.stdout)
+        pair = [as_json(pts, w), as_json(*transformed(rng, pts, w))]
+        for j, p in enumerate(pair):
+            if jsonl:
+                out.write(json.dumps(p) + "\n")
+            else:
+                out.write((", " if k or j else "") + json.dumps(p))
+    if not jsonl:
+        out.write("]\n")
 
 
 if __name__ == "__main__":

@@ -23,6 +23,8 @@ use num_traits::{One, Signed, Zero};
 use serde_json::{Map, Number, Value};
 
 mod duplicate_keys;
+mod stream;
+pub use stream::{for_each_chunk, Record};
 
 /// A curve or patch of any kind read from JSON.
 #[derive(Clone, Debug, PartialEq)]

@@ -100,6 +100,7 @@ pub use arc::{
 pub use bernstein::{bernstein, bernstein_all};
 pub use blossom::{polar_bivariate, polar_tensor, polar_univariate, rect_blossom, ShiftOp};
 pub use canonical::{canonical_key, dedup, CanonicalKey, Deduper};
+pub use canonical::{canonical_text, key_digest, Classes, KeyDigest, KEY_VERSION};
 pub use circle::{circle_of, integer_coords, Circle, NotCircle};
 pub use coincide::{
     boundary_curve, coincide, coincide_curves, coincide_f64, coincide_rects, shared_boundaries,
@@ -120,6 +121,7 @@ pub use fast_eval::{FastCurve, FastRect, FastTri};
 pub use hpoint::{de_casteljau, de_casteljau_hom, HPoint};
 pub use int::Int;
 pub use interval::{coincide_filtered, DecidedBy, Interval};
+pub use io::{for_each_chunk, Record};
 pub use io::{
     parse_json, parse_rational, patch_from_value, patch_to_json, point_to_json, read_patches,
     JsonScalar, Patch,

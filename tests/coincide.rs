@@ -324,7 +324,7 @@ fn degree_zero_direction_and_curve_patch_mismatch_are_handled() {
 }
 
 #[test]
-fn cli_coincide_and_dedup() {
+fn cli_coincide() {
     let (ex1, ex3) = (
         "tests/fixtures/yang_yong_example1.json",
         "tests/fixtures/yang_yong_example3.json",
@@ -340,22 +340,92 @@ fn cli_coincide_and_dedup() {
     assert_eq!((code, v["coincident"].clone()), (0, true.into()));
     assert_eq!(cli(&["coincide", ex1, "tests/fixtures/README.md"]).0, 2);
     assert_eq!(cli(&["coincide", ex1, ex3, "--tol", "1e-3"]).0, 2);
+}
 
-    let dir = std::env::temp_dir().join(format!("coincide-dedup-{}.json", std::process::id()));
-    let text = format!(
-        "[{}, {}, {}]",
-        std::fs::read_to_string(ex1).unwrap(),
-        std::fs::read_to_string(ex3).unwrap(),
-        std::fs::read_to_string(ex1).unwrap()
-    );
-    std::fs::write(&dir, text).unwrap();
-    let (code, v) = cli(&["dedup", dir.to_str().unwrap()]);
-    std::fs::remove_file(&dir).unwrap();
-    assert_eq!(code, 0);
-    assert_eq!(v["classes"], 2);
-    assert_eq!(v["groups"][0]["members"][1]["index"], 2);
-    assert_eq!(
-        v["groups"][0]["members"][1]["witness"]["symmetry"],
-        "identity"
-    );
+/// `x · (1 + 10⁻¹²)`, or `10⁻¹²` for zero: a perturbation far below f64
+/// tolerances of typical CAD data, which exact keys must still see.
+fn nudge(x: &Q) -> Q {
+    let eps = Q::new(1.into(), num_bigint::BigInt::from(10).pow(12));
+    if *x == ratio(0, 1) {
+        eps
+    } else {
+        x.clone() * (Q::from_integer(1.into()) + eps)
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    #[test]
+    fn key_digests_agree_with_pairwise_coincide(
+        a in bidegree(), t in maps(), at in (0usize..4, 0usize..3), point in any::<bool>(), other in bidegree()
+    ) {
+        use exact_bezier::key_digest;
+        let t = Maps { factor: None, ..t };
+        let (m, n) = a.degree();
+        let (i, j) = (at.0.min(m), at.1.min(n));
+        let (mut pts, mut ws) = (a.points().unwrap(), a.weights());
+        if point {
+            pts[i][j][1] = nudge(&pts[i][j][1]);
+        } else {
+            ws[i][j] = nudge(&ws[i][j]);
+        }
+        let bent = RectPatch::new(pts, ws).unwrap();
+        let pa = Patch::Rect(a.clone());
+        for b in [apply(&a, &t), apply(&bent, &t), other] {
+            let pb = Patch::Rect(b);
+            let same = coincide(&pa, &pb).unwrap().coincident;
+            prop_assert_eq!(key_digest(&pa).unwrap() == key_digest(&pb).unwrap(), same);
+        }
+    }
+
+    #[test]
+    fn curve_key_digests_agree_with_pairwise_coincide(
+        c in curve(3, 2), alpha in open_unit_parameter(), k in positive_weight(), at in 0usize..4, rev in any::<bool>()
+    ) {
+        use exact_bezier::key_digest;
+        let moved = |c: &RationalCurve<Q>| {
+            let b = c.elevate(1).mobius(&alpha).scale_weights(&k);
+            if rev { b.reverse() } else { b }
+        };
+        let mut ws = c.weights();
+        ws[at] = nudge(&ws[at]);
+        let bent = RationalCurve::new(c.points().unwrap(), ws).unwrap();
+        let pa = Patch::Curve(c.clone());
+        for (b, expected) in [(moved(&c), true), (moved(&bent), false)] {
+            let pb = Patch::Curve(b);
+            prop_assert_eq!(coincide(&pa, &pb).unwrap().coincident, expected);
+            prop_assert_eq!(key_digest(&pa).unwrap() == key_digest(&pb).unwrap(), expected);
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// The machine-integer fast path of the key text agrees with the
+    /// general `BigRational` one: on ties between symmetries (mirrored
+    /// points), on copies, and on weights too big for `i128` (fallback).
+    #[test]
+    fn fast_key_text_is_the_general_one(
+        a in bidegree(), t in maps(), mirror in any::<bool>(), big in 0u32..3, c in curve(3, 2)
+    ) {
+        use exact_bezier::canonical_text;
+        let (m, _) = a.degree();
+        let (mut pts, mut ws) = (a.points().unwrap(), a.weights());
+        if mirror {
+            for i in 0..=m / 2 {
+                pts[m - i] = pts[i].clone();
+            }
+        }
+        let scale = Q::new(num_bigint::BigInt::from(10).pow(12 * big), 7.into());
+        ws[0][0] = ws[0][0].clone() * scale;
+        let r = RectPatch::new(pts, ws).unwrap();
+        let moved = apply(&r, &Maps { factor: None, elevate: (0, 0), ..t.clone() });
+        let curves = [c.clone(), c.mobius(&t.alpha).reverse()];
+        let all = [Patch::Rect(r), Patch::Rect(moved)].into_iter().chain(curves.into_iter().map(Patch::Curve));
+        for p in all {
+            prop_assert_eq!(canonical_text(&p).unwrap(), canonical_key(&p).unwrap().text());
+        }
+    }
 }

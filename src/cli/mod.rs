@@ -27,6 +27,7 @@ use std::cell::RefCell;
 use std::io::Read;
 
 mod arc;
+mod bulk;
 mod coincide;
 mod convert;
 mod curvature;
@@ -37,6 +38,7 @@ mod eval_trig;
 mod figures;
 mod is_circle;
 mod join;
+mod key;
 mod mesh;
 mod plot;
 mod prove;
@@ -121,8 +123,10 @@ enum Command {
     IsCircle(is_circle::Args),
     /// Are two curves or rect patches the same up to reparameterization?
     Coincide(coincide::Args),
-    /// Group a JSON array of curves/rect patches into coincidence classes.
+    /// Group curves/rect patches (JSON Lines or array) into coincidence classes, one JSON line each.
     Dedup(dedup::Args),
+    /// One canonical coincidence key per curve/rect patch, one JSON line each.
+    Key(key::Args),
 }
 
 /// Exit code of a result written but outside the valid domain (module docs).
@@ -148,7 +152,8 @@ fn dispatch(command: Command) -> Result<Result<Value, i32>, Error> {
         Command::Arc(a) => arc::run(&a),
         Command::IsCircle(a) => is_circle::run(&a),
         Command::Coincide(a) => coincide::run(&a),
-        Command::Dedup(a) => dedup::run(&a),
+        Command::Dedup(a) => return dedup::run(&a).map(|()| Err(0)),
+        Command::Key(a) => return key::run(&a).map(|()| Err(0)),
     }?;
     Ok(Ok(value))
 }
@@ -180,6 +185,9 @@ struct Session {
     stdin: Stdin,
     stdout: String,
     exit: i32,
+    /// Write standard output straight to the process's (the binary's
+    /// top-level run), so that long outputs stream; otherwise buffer it.
+    direct: bool,
 }
 
 thread_local! {
@@ -190,12 +198,19 @@ thread_local! {
 /// with `stdin` as standard input. A run inside a run (a `figures` input)
 /// shares the outer run's limits and work counter.
 pub fn run_with(args: Vec<String>, stdin: Stdin) -> Outcome {
+    run_session(args, stdin, false)
+}
+
+/// [`run_with`], writing standard output to the process's as it comes when
+/// `direct` (then [`Outcome::stdout`] is empty).
+fn run_session(args: Vec<String>, stdin: Stdin, direct: bool) -> Outcome {
     let nested = SESSION.with(|s| !s.borrow().is_empty());
     SESSION.with(|s| {
         s.borrow_mut().push(Session {
             stdin,
             stdout: String::new(),
             exit: 0,
+            direct,
         })
     });
     let (code, stderr, work) = parse_and_run(args, nested);
@@ -335,7 +350,7 @@ pub(crate) fn mark_outside_domain() {
 
 /// Run the command line of this process; returns the exit code.
 pub fn main() -> i32 {
-    let out = run_with(std::env::args().collect(), Stdin::Process);
+    let out = run_session(std::env::args().collect(), Stdin::Process, true);
     use std::io::Write;
     let _ = std::io::stderr().write_all(out.stderr.as_bytes());
     // A closed pipe (e.g. `exact-bezier prove | head`) is not an error: the
@@ -349,12 +364,42 @@ pub fn main() -> i32 {
 
 /// Append `text` and a newline to this run's standard output.
 pub(crate) fn emit(text: &str) {
+    emit_raw(text);
+    emit_raw("\n");
+}
+
+/// Append `text` to this run's standard output: the buffer of an
+/// in-process run, or the process's standard output for the binary. A
+/// closed pipe (e.g. `exact-bezier prove | head`) is not an error: the
+/// reader has what it wanted, so write errors are ignored.
+pub(crate) fn emit_raw(text: &str) {
+    use std::io::Write;
     SESSION.with(|s| {
         if let Some(top) = s.borrow_mut().last_mut() {
-            top.stdout.push_str(text);
-            top.stdout.push('\n');
+            if top.direct {
+                let _ = std::io::stdout().lock().write_all(text.as_bytes());
+            } else {
+                top.stdout.push_str(text);
+            }
         }
     });
+}
+
+/// This run's standard input as a reader: the given bytes of an in-process
+/// run, or the process's standard input.
+pub(crate) fn stdin_reader() -> Box<dyn Read> {
+    let given = SESSION.with(|s| {
+        s.borrow_mut()
+            .last_mut()
+            .and_then(|top| match &mut top.stdin {
+                Stdin::Bytes(b) => Some(std::mem::take(b)),
+                Stdin::Process => None,
+            })
+    });
+    match given {
+        Some(bytes) => Box::new(std::io::Cursor::new(bytes)),
+        None => Box::new(std::io::stdin()),
+    }
 }
 
 /// Read all of `r`, refusing more than the input limit.
@@ -372,18 +417,7 @@ fn read_limited(r: impl Read, what: &str) -> Result<String, Error> {
 /// [`Limits::max_input_bytes`].
 pub(crate) fn read_input(path: &str) -> Result<String, Error> {
     if path == "-" {
-        let given = SESSION.with(|s| {
-            s.borrow_mut()
-                .last_mut()
-                .and_then(|top| match &mut top.stdin {
-                    Stdin::Bytes(b) => Some(std::mem::take(b)),
-                    Stdin::Process => None,
-                })
-        });
-        match given {
-            Some(bytes) => read_limited(&bytes[..], "standard input"),
-            None => read_limited(std::io::stdin().lock(), "standard input"),
-        }
+        read_limited(stdin_reader(), "standard input")
     } else {
         let what = format!("{path:?}");
         let file = std::fs::File::open(path)

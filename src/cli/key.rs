@@ -1,0 +1,57 @@
+//! `key FILE`: the canonical key of every curve or rect patch, one JSON
+//! line each — `{"index": K, "key": "eb1:…"}` — computed on all cores and
+//! written in input order. Grouping these lines by `key` (in any engine:
+//! DuckDB, Spark, `sort`) gives the classes of `dedup`; see
+//! `docs/bulk_dedup.md`.
+
+use super::bulk::{map_chunk, BulkArgs, Out, Progress, CHUNK};
+use crate::canonical::{canonical_text, KeyDigest};
+use crate::error::Error;
+use crate::io::for_each_chunk;
+use serde_json::json;
+
+/// Arguments of `key`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    bulk: BulkArgs,
+    /// The index of the first record (for a shard of a larger input).
+    #[arg(long, default_value_t = 0)]
+    first_index: u64,
+    /// Also print the key text the digest is taken of ("text").
+    #[arg(long)]
+    text: bool,
+}
+
+/// Run `key`; its lines are written as they are ready.
+pub fn run(a: &Args) -> Result<(), Error> {
+    keys(a)
+}
+
+fn keys(a: &Args) -> Result<(), Error> {
+    let (reader, input) = a.bulk.open()?;
+    let progress = Progress::new(&a.bulk, &input);
+    let mut out = Out::new();
+    let mut done = 0;
+    let n = for_each_chunk(reader, CHUNK, |first, records| {
+        let lines = map_chunk(&records, |p| {
+            let text = canonical_text(&p)?;
+            let digest = KeyDigest::of_text(&text).to_string();
+            Ok((digest, a.text.then_some(text)))
+        })?;
+        for (k, (digest, text)) in lines.into_iter().enumerate() {
+            let index = a.first_index + (first + k) as u64;
+            let line = match text {
+                None => format!("{{\"index\":{index},\"key\":\"{digest}\"}}"),
+                Some(t) => json!({"index": index, "key": digest, "text": t}).to_string(),
+            };
+            out.line(&line);
+        }
+        done += records.len();
+        progress.update(&input, done);
+        Ok(())
+    })?;
+    out.flush();
+    progress.finish(&format!("{n} keys"));
+    Ok(())
+}
