@@ -55,6 +55,7 @@ mod io;
 mod mesh;
 mod minimal_degree;
 mod modp;
+mod nurbs;
 pub mod plot;
 mod poly;
 mod rect;
@@ -64,6 +65,7 @@ mod reparam;
 mod samples;
 mod scalar;
 mod standard;
+mod step;
 #[cfg(feature = "proptest")]
 pub mod strategy;
 mod tri;
@@ -116,6 +118,8 @@ pub use minimal_degree::{
     Minimal,
 };
 pub use modp::Fp;
+pub use nurbs::json::{is_nurbs, read_nurbs, Nurbs, SpannedPatch};
+pub use nurbs::{CurvePiece, Knots, NurbsCurve, NurbsSurface, SurfacePiece};
 pub use poly::Poly;
 pub use rect::{RectPatch, Side};
 pub use rect_join::{g0_join, g1_join};
@@ -125,6 +129,7 @@ pub use scalar::{
     binomial, binomial_scalar, ratio, rational_root, rational_to_f64, Field, Ordered, Ring, Roots,
     Scalar, Tolerance,
 };
+pub use step::{read_step, StepEntity, StepModel};
 pub use standard::{
     corner_weights, standardize_curve, standardize_curve_exact_or_f64, standardize_mobius,
     standardize_quadratic, standardize_quadratic_compact, standardize_rect,
