@@ -34,6 +34,7 @@
 #![warn(missing_docs)]
 
 mod arc;
+mod audit;
 mod bernstein;
 mod blossom;
 mod canonical;
@@ -84,6 +85,10 @@ pub struct ReadmeDoctests;
 pub use arc::{
     check_lambda, lambda_change_delta, lambda_change_param, lambda_interval, lambda_of_sigma_cubed,
     sigma_of_lambda, ArcCubic, Computed, LambdaFactors, QuadArc,
+};
+pub use audit::{
+    audit, piece_to_json, read_model, seam_continuity, Audit, Continuity, Model, Origin, PatchEdge,
+    Piece, Seam, SeamVerdict,
 };
 pub use bernstein::{bernstein, bernstein_all};
 pub use blossom::{polar_bivariate, polar_tensor, polar_univariate, rect_blossom, ShiftOp};

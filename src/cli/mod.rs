@@ -14,6 +14,7 @@ use serde_json::Value;
 use std::io::Read;
 
 mod arc;
+mod audit;
 mod coincide;
 mod convert;
 mod curvature;
@@ -85,6 +86,8 @@ enum Command {
     Coincide(coincide::Args),
     /// Group a JSON array of curves/rect patches into coincidence classes.
     Dedup(dedup::Args),
+    /// Exact audit of a model (JSON, NURBS or STEP): shared edges G0/G1/G2, open/degenerate edges, duplicates.
+    Audit(audit::Args),
 }
 
 /// Run the command line; returns the process exit code.
@@ -114,6 +117,7 @@ pub fn main() -> i32 {
         Command::IsCircle(a) => is_circle::run(&a),
         Command::Coincide(a) => coincide::run(&a),
         Command::Dedup(a) => dedup::run(&a),
+        Command::Audit(a) => audit::run(&a),
     };
     match result {
         Ok(v) => {
@@ -148,6 +152,16 @@ pub(crate) fn read_input(path: &str) -> Result<String, Error> {
     } else {
         std::fs::read_to_string(path).map_err(|e| Error::Format(format!("cannot read {path}: {e}")))
     }
+}
+
+/// A buffered stream over `path` (`-` for standard input), for readers
+/// that stream (STEP).
+pub(crate) fn open_input(path: &str) -> Result<Box<dyn std::io::BufRead>, Error> {
+    if path == "-" {
+        return Ok(Box::new(std::io::BufReader::new(std::io::stdin())));
+    }
+    let f = std::fs::File::open(path).map_err(|e| Error::Format(format!("cannot read {path}: {e}")))?;
+    Ok(Box::new(std::io::BufReader::with_capacity(1 << 16, f)))
 }
 
 /// Read the patches of `path`.
