@@ -37,9 +37,10 @@
 use crate::coincide::{boundary_curve, coincide_curves, Edge, MobiusParam};
 use crate::error::Error;
 use crate::hpoint::HPoint;
+use crate::int::{common_denominator, Int};
 use crate::{RationalCurve, RectPatch};
 use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Zero};
 
 type Q = BigRational;
 
@@ -152,17 +153,59 @@ fn edge_map(ca: &RationalCurve<Q>, cb: &RationalCurve<Q>) -> Result<Result<EdgeM
     Ok(Err("no Möbius map of the witness matches the edges pointwise".into()))
 }
 
-/// Value and first two derivatives of a row of homogeneous points at `t`:
-/// de Casteljau, keeping the levels of 3 and 2 points
-/// (`C' = n Δb^{n−1}_0`, `C'' = n(n−1) Δ²b^{n−2}_0`).
-fn curve_jet(pts: &[HPoint<Q>], t: &Q) -> [Vec<Q>; 3] {
+/// A turned patch's first three columns (`v`-rows `j = 0, 1, 2` of the net,
+/// each a curve in `u`) over one common denominator: integer homogeneous
+/// points. Scaling a whole net by a constant changes no verdict (every
+/// identity below is homogeneous in each patch).
+struct IntNet {
+    cols: Vec<Vec<Vec<Int>>>,
+    n: usize,
+}
+
+impl IntNet {
+    fn new(r: &RectPatch<Q>) -> Self {
+        let n = r.degree().1;
+        let cols: Vec<Vec<HPoint<Q>>> = (0..=n.min(2)).map(|j| r.column(j)).collect();
+        let all: Vec<&Q> = cols.iter().flatten().flat_map(|p| p.coords.iter()).collect();
+        let (nums, _) = common_denominator(&all);
+        let len = cols[0][0].coords.len();
+        let mut it = nums.into_iter();
+        let cols = cols
+            .iter()
+            .map(|c| c.iter().map(|_| it.by_ref().take(len).collect()).collect())
+            .collect();
+        IntNet { cols, n }
+    }
+}
+
+/// `Σ k_i v_i` for small integer `k_i`.
+fn lin(terms: &[(&[Int], i128)]) -> Vec<Int> {
+    let len = terms[0].0.len();
+    (0..len)
+        .map(|c| {
+            terms
+                .iter()
+                .fold(Int::zero(), |acc, (v, k)| acc + &(v[c].clone() * &Int::from(*k)))
+        })
+        .collect()
+}
+
+/// Value and first two derivatives of an integer Bézier row at the
+/// homogeneous parameter `(a : b)` (`t = b/(a + b)`), each scaled by
+/// `(a + b)^{level}`: de Casteljau with the step `a·x + b·y`, keeping the
+/// levels of 3 and 2 points (`C' = n Δb^{n−1}_0`, `C'' = n(n−1) Δ²b^{n−2}_0`).
+fn curve_jet(pts: &[Vec<Int>], a: &Int, b: &Int) -> [Vec<Int>; 3] {
     let n = pts.len() - 1;
-    let mut row: Vec<HPoint<Q>> = pts.to_vec();
+    let mut row: Vec<Vec<Int>> = pts.to_vec();
     let mut three = (n == 2).then(|| row.clone());
     let mut two = (n == 1).then(|| row.clone());
     for k in (1..=n).rev() {
         for i in 0..k {
-            row[i] = row[i].lerp(&row[i + 1], t);
+            row[i] = row[i]
+                .iter()
+                .zip(&row[i + 1])
+                .map(|(x, y)| x.clone() * a + &(y.clone() * b))
+                .collect();
         }
         if k == 3 {
             three = Some(row[..3].to_vec());
@@ -171,37 +214,29 @@ fn curve_jet(pts: &[HPoint<Q>], t: &Q) -> [Vec<Q>; 3] {
             two = Some(row[..2].to_vec());
         }
     }
-    let zero = vec![Q::zero(); pts[0].coords.len()];
-    let scaled = |v: HPoint<Q>, k: usize| -> Vec<Q> {
-        let k = Q::from_integer((k as i64).into());
-        v.coords.into_iter().map(|x| x * &k).collect()
-    };
-    let d1 = two.map_or(zero.clone(), |l| scaled(l[1].sub(&l[0]), n));
-    let d2 = three.map_or(zero, |l| scaled(l[2].sub(&l[1]).sub(&l[1].sub(&l[0])), n * (n - 1)));
-    [row[0].coords.clone(), d1, d2]
+    let zero = vec![Int::zero(); pts[0].len()];
+    let n = n as i128;
+    let d1 = two.map_or(zero.clone(), |l| lin(&[(&l[1], n), (&l[0], -n)]));
+    let d2 = three.map_or(zero, |l| lin(&[(&l[2], n * (n - 1)), (&l[1], -2 * n * (n - 1)), (&l[0], n * (n - 1))]));
+    [row.swap_remove(0), d1, d2]
 }
 
-/// `H, H_u, H_v, H_uu, H_uv, H_vv` of a turned patch at `(t, 0)`, as 4-vectors
-/// (2D points padded with z = 0).
-fn patch_jet(r: &RectPatch<Q>, t: &Q) -> [Vec<Q>; 6] {
-    let (_, n) = r.degree();
-    let rows: Vec<[Vec<Q>; 3]> = (0..=n.min(2)).map(|j| curve_jet(&r.column(j), t)).collect();
-    let zero = vec![Q::zero(); rows[0][0].len()];
-    let lin = |a: &[Q], b: &[Q], ka: i64, kb: i64| -> Vec<Q> {
-        a.iter()
-            .zip(b)
-            .map(|(x, y)| x * Q::from_integer(ka.into()) + y * Q::from_integer(kb.into()))
-            .collect()
-    };
-    let n = n as i64;
+/// `H, H_u, H_v, H_uu, H_uv, H_vv` of a turned patch at `((a : b), 0)`, as
+/// 4-vectors (2D points padded with z = 0), each scaled by a positive power
+/// of `a + b` that depends only on its order of u-differentiation (so every
+/// identity checked is scaled by one positive factor per sample).
+fn patch_jet(net: &IntNet, a: &Int, b: &Int) -> [Vec<Int>; 6] {
+    let rows: Vec<[Vec<Int>; 3]> = net.cols.iter().map(|c| curve_jet(c, a, b)).collect();
+    let zero = vec![Int::zero(); rows[0][0].len()];
+    let n = net.n as i128;
     let (hv, huv) = if n >= 1 {
-        (lin(&rows[1][0], &rows[0][0], n, -n), lin(&rows[1][1], &rows[0][1], n, -n))
+        (lin(&[(&rows[1][0], n), (&rows[0][0], -n)]), lin(&[(&rows[1][1], n), (&rows[0][1], -n)]))
     } else {
         (zero.clone(), zero.clone())
     };
     let hvv = if n >= 2 {
-        let a = lin(&rows[2][0], &rows[1][0], 1, -2);
-        lin(&a, &rows[0][0], n * (n - 1), n * (n - 1))
+        let k = n * (n - 1);
+        lin(&[(&rows[2][0], k), (&rows[1][0], -2 * k), (&rows[0][0], k)])
     } else {
         zero
     };
@@ -210,41 +245,75 @@ fn patch_jet(r: &RectPatch<Q>, t: &Q) -> [Vec<Q>; 6] {
 }
 
 /// `(x, y, w)` → `(x, y, 0, w)`; 3D points unchanged.
-fn pad(mut v: Vec<Q>) -> Vec<Q> {
+fn pad(mut v: Vec<Int>) -> Vec<Int> {
     if v.len() == 3 {
-        v.insert(2, Q::zero());
+        v.insert(2, Int::zero());
     }
     v
 }
 
-fn det3(a: [&Q; 3], b: [&Q; 3], c: [&Q; 3]) -> Q {
-    a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])
+fn det3(a: [&Int; 3], b: [&Int; 3], c: [&Int; 3]) -> Int {
+    let m = |x: &Int, y: &Int| x.clone() * y;
+    m(a[0], &(m(b[1], c[2]) - m(b[2], c[1]))) - m(a[1], &(m(b[0], c[2]) - m(b[2], c[0])))
+        + m(a[2], &(m(b[0], c[1]) - m(b[1], c[0])))
 }
 
-fn pick<'a>(v: &'a [Q], rows: &[usize]) -> [&'a Q; 3] {
+fn pick<'a>(v: &'a [Int], rows: &[usize]) -> [&'a Int; 3] {
     [&v[rows[0]], &v[rows[1]], &v[rows[2]]]
 }
 
-/// `det(a, b, c, d)` of four 4-vectors (columns), by expansion along `d`.
-fn det4(a: &[Q], b: &[Q], c: &[Q], d: &[Q]) -> Q {
-    (0..4).fold(Q::zero(), |acc, k| {
-        let rows: Vec<usize> = (0..4).filter(|&r| r != k).collect();
-        let minor = det3(pick(a, &rows), pick(b, &rows), pick(c, &rows));
-        let term = &d[k] * minor;
-        if (k + 3) % 2 == 0 {
-            acc + term
-        } else {
-            acc - term
-        }
-    })
+/// The covector `y ↦ det(a, b, c, y)` of three 4-vectors (cofactors).
+fn covector(a: &[Int], b: &[Int], c: &[Int]) -> Vec<Int> {
+    (0..4)
+        .map(|k| {
+            let rows: Vec<usize> = (0..4).filter(|&r| r != k).collect();
+            let minor = det3(pick(a, &rows), pick(b, &rows), pick(c, &rows));
+            if k % 2 == 1 {
+                minor
+            } else {
+                -minor
+            }
+        })
+        .collect()
 }
 
-fn unit(k: usize) -> Vec<Q> {
-    (0..4).map(|i| if i == k { Q::one() } else { Q::zero() }).collect()
+/// `det(a, b, c, e_k)`.
+fn det_unit(a: &[Int], b: &[Int], c: &[Int], k: usize) -> Int {
+    covector(a, b, c).swap_remove(k)
 }
 
-fn dot(a: &[Q], b: &[Q]) -> Q {
-    a.iter().zip(b).fold(Q::zero(), |s, (x, y)| s + x * y)
+fn dot(a: &[Int], b: &[Int]) -> Int {
+    a.iter().zip(b).fold(Int::zero(), |s, (x, y)| s + &(x.clone() * y))
+}
+
+fn sign(x: &Int) -> std::cmp::Ordering {
+    x.to_bigint().sign().cmp(&num_bigint::Sign::NoSign)
+}
+
+/// The homogeneous parameter `(1 − t : t)` of a rational `t`, in integers.
+fn hom(t: &Q) -> (Int, Int) {
+    (
+        Int::from_bigint(t.denom() - t.numer()),
+        Int::from_bigint(t.numer().clone()),
+    )
+}
+
+/// One sample: a's and b's jets at `t` and `s = φ(t)`, and a's tangent covector.
+struct Sample {
+    t: Q,
+    s: Q,
+    ja: [Vec<Int>; 6],
+    jb: [Vec<Int>; 6],
+    nu: Vec<Int>,
+}
+
+impl Sample {
+    fn new(a: &IntNet, b: &IntNet, t: Q, s: Q) -> Self {
+        let ((p, q), (r, u)) = (hom(&t), hom(&s));
+        let (ja, jb) = (patch_jet(a, &p, &q), patch_jet(b, &r, &u));
+        let nu = covector(&ja[0], &ja[1], &ja[2]);
+        Sample { t, s, ja, jb, nu }
+    }
 }
 
 /// The exact continuity across the shared edge `ea` of `a` and `eb` of `b`.
@@ -275,6 +344,7 @@ pub fn seam_continuity(a: &RectPatch<Q>, ea: Edge, b: &RectPatch<Q>, eb: Edge) -
     };
     let (ta, tb) = (turn_to_v0(a, ea), turn_to_v0(b, eb));
     let (ma, mb) = (ta.degree().0, tb.degree().0);
+    let (na, nb) = (IntNet::new(&ta), IntNet::new(&tb));
     let verdict = |continuity, reason| SeamVerdict {
         continuity,
         reason,
@@ -283,67 +353,62 @@ pub fn seam_continuity(a: &RectPatch<Q>, ea: Edge, b: &RectPatch<Q>, eb: Edge) -
     };
     let g1_samples = 3 * ma + mb + 1;
     let g2_samples = 9 * ma + 2 * mb + 1;
-    let denom = Q::from_integer(((g2_samples + 1) as i64).into());
-    let mut jets = Vec::with_capacity(g2_samples);
-    let mut probe: Option<usize> = None;
-    let where_ = |t: &Q, s: &Q| {
-        let [u, v] = edge_point(ea, t);
-        let [p, q] = edge_point(eb, s);
+    let sample_at = |k: usize| -> Result<Sample, Error> {
+        let t = Q::new((k as i64).into(), ((g2_samples + 1) as i64).into());
+        let s = map.apply(&t)?;
+        Ok(Sample::new(&na, &nb, t, s))
+    };
+    let where_ = |x: &Sample| {
+        let [u, v] = edge_point(ea, &x.t);
+        let [p, q] = edge_point(eb, &x.s);
         format!("a at (u, v) = ({u}, {v}), b at ({p}, {q})")
     };
+    let mut samples = Vec::with_capacity(g2_samples);
+    let mut probe: Option<usize> = None;
     for k in 1..=g1_samples {
-        let t = Q::from_integer((k as i64).into()) / &denom;
-        let s = map.apply(&t)?;
-        let (ja, jb) = (patch_jet(&ta, &t), patch_jet(&tb, &s));
-        let nu: Vec<Q> = (0..4).map(|i| det4(&ja[0], &ja[1], &ja[2], &unit(i))).collect();
-        let det = dot(&nu, &jb[2]);
-        if !det.is_zero() {
-            return Ok(verdict(
-                Some(Continuity::G0),
-                format!("tangent planes differ at {}", where_(&t, &s)),
-            ));
+        let x = sample_at(k)?;
+        if !dot(&x.nu, &x.jb[2]).is_zero() {
+            return Ok(verdict(Some(Continuity::G0), format!("tangent planes differ at {}", where_(&x))));
         }
-        let nu_b: Vec<Q> = (0..4).map(|i| det4(&jb[0], &jb[1], &jb[2], &unit(i))).collect();
-        if let Some(kk) = nu.iter().position(|x| !x.is_zero()).filter(|_| nu_b.iter().any(|x| !x.is_zero())) {
-            let r = unit(kk);
-            let beta = det4(&ja[0], &ja[1], &jb[2], &r) * &nu[kk];
-            if beta.is_positive() {
+        let regular_b = covector(&x.jb[0], &x.jb[1], &x.jb[2]).iter().any(|c| !c.is_zero());
+        if let Some(kk) = x.nu.iter().position(|c| !c.is_zero()).filter(|_| regular_b) {
+            let beta = det_unit(&x.ja[0], &x.ja[1], &x.jb[2], kk) * &x.nu[kk];
+            if sign(&beta).is_gt() {
                 return Ok(verdict(
                     Some(Continuity::G0),
-                    format!("the patches fold over (same tangent plane, same side) at {}", where_(&t, &s)),
+                    format!("the patches fold over (same tangent plane, same side) at {}", where_(&x)),
                 ));
             }
             probe.get_or_insert(kk);
         }
-        jets.push((t, s, ja, jb, nu));
+        samples.push(x);
     }
     let Some(kk) = probe else {
         return Ok(verdict(None, "the tangent planes are degenerate all along the edge; continuity not decided".into()));
     };
     for k in g1_samples + 1..=g2_samples {
-        let t = Q::from_integer((k as i64).into()) / &denom;
-        let s = map.apply(&t)?;
-        let (ja, jb) = (patch_jet(&ta, &t), patch_jet(&tb, &s));
-        let nu: Vec<Q> = (0..4).map(|i| det4(&ja[0], &ja[1], &ja[2], &unit(i))).collect();
-        jets.push((t, s, ja, jb, nu));
+        samples.push(sample_at(k)?);
     }
-    let r = unit(kk);
-    for (t, s, ja, jb, nu) in &jets {
-        let d = nu[kk].clone();
-        let beta = det4(&ja[0], &ja[1], &jb[2], &r);
-        let gamma = det4(&ja[0], &jb[2], &ja[2], &r);
-        let lhs = jb[0][3].clone() * dot(nu, &jb[5]) * &d * &d;
+    for x in &samples {
+        let (ja, jb, nu) = (&x.ja, &x.jb, &x.nu);
+        let d = &nu[kk];
+        let beta = det_unit(&ja[0], &ja[1], &jb[2], kk);
+        let gamma = det_unit(&ja[0], &jb[2], &ja[2], kk);
+        let lhs = jb[0][3].clone() * &dot(nu, &jb[5]) * d * d;
         let rhs = ja[0][3].clone()
-            * (beta.clone() * &beta * dot(nu, &ja[5])
-                + Q::from_integer(2.into()) * &beta * &gamma * dot(nu, &ja[4])
-                + gamma.clone() * &gamma * dot(nu, &ja[3]));
+            * &(beta.clone() * &beta * &dot(nu, &ja[5])
+                + &(Int::from(2) * &beta * &gamma * &dot(nu, &ja[4]))
+                + &(gamma.clone() * &gamma * &dot(nu, &ja[3])));
         if lhs != rhs {
             let jump = if rhs.is_zero() {
                 "b's normal curvature across the seam is not 0, a's is".to_owned()
             } else {
-                format!("b's normal curvature across the seam is {} times a's", lhs / rhs)
+                format!(
+                    "b's normal curvature across the seam is {} times a's",
+                    Q::new(lhs.to_bigint(), rhs.to_bigint())
+                )
             };
-            return Ok(verdict(Some(Continuity::G1), format!("{jump} at {}", where_(t, s))));
+            return Ok(verdict(Some(Continuity::G1), format!("{jump} at {}", where_(x))));
         }
     }
     Ok(verdict(

@@ -91,9 +91,9 @@ fn parts_of(inst: &Instance) -> Option<(String, BTreeMap<String, Vec<Param>>)> {
         return Some((leaf.to_owned(), parts));
     }
     let Record { name, params } = &inst.records[0];
-    let (base, len) = if name.ends_with("_SURFACE") {
+    let (base, len) = if name.contains("_SURFACE") {
         (SURFACE, 7)
-    } else if name.ends_with("_CURVE") {
+    } else if name.contains("_CURVE") {
         (CURVE, 5)
     } else {
         return None;

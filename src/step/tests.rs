@@ -7,16 +7,17 @@ fn q(n: i64, d: i64) -> Q {
     ratio(n, d)
 }
 
-/// A quarter of the unit cylinder x² + y² = 1, 0 ≤ z ≤ 2, as the rational
+/// An arc of the unit cylinder x² + y² = 1, 0 ≤ z ≤ 2 (half-angle θ with
+/// cos θ = 4/5: middle weight 4/5, middle point (1, 3/4)), as the rational
 /// quadratic × linear complex instance CAD systems write, on a face; a
 /// cubic Bézier curve; a B-spline curve with knots; a plane (skipped).
 const FILE: &str = "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((''),'2;1');\nENDSEC;\nDATA;\n\
 #10=CARTESIAN_POINT('',(1.,0.,0.));\n#11=CARTESIAN_POINT('',(1.,0.,2.));\n\
-#12=CARTESIAN_POINT('',(1.,1.,0.));\n#13=CARTESIAN_POINT('',(1.,1.,2.));\n\
-#14=CARTESIAN_POINT('',(0.,1.,0.));\n#15=CARTESIAN_POINT('',(0.,1.,2.));\n\
+#12=CARTESIAN_POINT('',(1.,0.75,0.));\n#13=CARTESIAN_POINT('',(1.,7.5E-1,2.));\n\
+#14=CARTESIAN_POINT('',(0.28,0.96,0.));\n#15=CARTESIAN_POINT('',(2.8E-1,0.96,2.));\n\
 #20=(BOUNDED_SURFACE() B_SPLINE_SURFACE(2,1,((#10,#11),(#12,#13),(#14,#15)),.UNSPECIFIED.,.F.,.F.,.F.)\n\
  B_SPLINE_SURFACE_WITH_KNOTS((3,3),(2,2),(0.,1.5707963),(0.,2.),.UNSPECIFIED.)\n\
- GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_SURFACE(((1.,1.),(0.5,0.5),(1.,1.)))\n\
+ GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_SURFACE(((1.,1.),(0.8,0.8),(1.,1.)))\n\
  REPRESENTATION_ITEM('') SURFACE());\n\
 #30=ADVANCED_FACE('',(#31),#20,.T.);\n#31=FACE_OUTER_BOUND('',#32,.T.);\n\
 #40=BEZIER_CURVE('',3,(#10,#12,#14,#15),.UNSPECIFIED.,.F.,.F.);\n\
@@ -35,7 +36,7 @@ fn reads_the_rational_complex_surface_with_its_face() {
     let pieces = s.nurbs.pieces();
     assert_eq!(pieces.len(), 1);
     let Patch::Rect(r) = &pieces[0].patch else { panic!("a rect") };
-    // A point of the quarter circle: x² + y² = 1 exactly at u = 1/3.
+    // A point of the arc: x² + y² = 1 exactly at u = 1/3.
     let x = r.eval(&q(1, 3), &q(1, 2)).unwrap();
     assert_eq!(x[0].clone() * &x[0] + x[1].clone() * &x[1], q(1, 1));
     assert_eq!(x[2], q(1, 1));
