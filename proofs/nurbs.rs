@@ -54,10 +54,19 @@ fn knot_vectors(p: usize) -> Vec<(&'static str, Vec<BigRational>)> {
         k
     };
     vec![
-        ("clamped, non-uniform simple knots", clamp(&[q(1, 3), q(2, 1)])),
+        (
+            "clamped, non-uniform simple knots",
+            clamp(&[q(1, 3), q(2, 1)]),
+        ),
         ("clamped, a double inner knot", clamp(&[q(3, 2), q(3, 2)])),
-        ("clamped, a (p+1)-fold inner knot", clamp(&vec![q(2, 1); p + 1])),
-        ("unclamped uniform", ints(&(0..(2 * p as i64 + 4)).collect::<Vec<_>>())),
+        (
+            "clamped, a (p+1)-fold inner knot",
+            clamp(&vec![q(2, 1); p + 1]),
+        ),
+        (
+            "unclamped uniform",
+            ints(&(0..(2 * p as i64 + 4)).collect::<Vec<_>>()),
+        ),
         ("unclamped non-uniform", {
             let mut k: Vec<BigRational> = (0..(2 * p + 3)).map(|i| q((i * i) as i64, 2)).collect();
             k.sort();
@@ -97,7 +106,20 @@ fn curve_claims() -> Vec<Claim> {
 /// A surface: biquadratic × linear with an inner knot in u and in v.
 fn surface_claim() -> Claim {
     let (s, t) = (Poly::var("s"), Poly::var("t"));
-    let ku = Knots::new(2, vec![q(0, 1), q(0, 1), q(0, 1), q(1, 2), q(2, 1), q(2, 1), q(2, 1)], 4).expect("valid");
+    let ku = Knots::new(
+        2,
+        vec![
+            q(0, 1),
+            q(0, 1),
+            q(0, 1),
+            q(1, 2),
+            q(2, 1),
+            q(2, 1),
+            q(2, 1),
+        ],
+        4,
+    )
+    .expect("valid");
     let kv = Knots::new(1, vec![q(0, 1), q(0, 1), q(1, 1), q(3, 1), q(3, 1)], 3).expect("valid");
     let net = (0..4).map(|i| symbolic(&format!("r{i}"), 3)).collect();
     let surf = NurbsSurface::new(ku.clone(), kv.clone(), net).expect("valid");
@@ -109,7 +131,8 @@ fn surface_claim() -> Claim {
     let pieces = surf.bezier_pieces();
     let ok = pieces.len() == 4
         && spans.iter().zip(&pieces).all(|(&kl, piece)| {
-            piece.patch.eval_hom(&s, &t) == surf.eval_hom_in_span(kl, &affine(&piece.u, &s), &affine(&piece.v, &t))
+            piece.patch.eval_hom(&s, &t)
+                == surf.eval_hom_in_span(kl, &affine(&piece.u, &s), &affine(&piece.v, &t))
         });
     Claim::check(
         "bidegree (2, 1) with inner knots 1/2 in u and 1 in v: each of the 4 rational Bézier patches equals the B-spline surface on its spans, for all control points, weights, s and t",

@@ -421,7 +421,11 @@ pub fn read_patches(text: &str) -> Result<Vec<Patch<BigRational>>, Error> {
 fn patches_from_value(v: &Value) -> Result<Vec<Patch<BigRational>>, Error> {
     if crate::nurbs::json::is_nurbs(v) {
         let nurbs = crate::nurbs::json::read_nurbs(v)?;
-        return Ok(nurbs.iter().flat_map(|n| n.pieces()).map(|p| p.patch).collect());
+        return Ok(nurbs
+            .iter()
+            .flat_map(|n| n.pieces())
+            .map(|p| p.patch)
+            .collect());
     }
     Ok(vec![patch_from_value(v)?])
 }

@@ -134,12 +134,12 @@ pub use scalar::{
     binomial, binomial_scalar, ratio, rational_root, rational_to_f64, Field, Ordered, Ring, Roots,
     Scalar, Tolerance,
 };
-pub use step::{read_step, StepEntity, StepModel};
 pub use standard::{
     corner_weights, standardize_curve, standardize_curve_exact_or_f64, standardize_mobius,
     standardize_quadratic, standardize_quadratic_compact, standardize_rect,
     standardize_rect_exact_or_f64, theorem1_holds, Exactness, Standard, StandardMap,
 };
+pub use step::{read_step, StepEntity, StepModel};
 pub use tri::{affine_combination, tri_bernstein, Bary, TriPatch, SYMMETRIES};
 pub use trig::basis::{circle_normal_form, trig_basis_values, TrigFn, TrigParam};
 pub use trig::bowl::trig_bowl;

@@ -8,7 +8,9 @@
 mod common;
 
 use common::{cli, cli_json};
-use exact_bezier::{audit, read_model, read_trig_patches, Continuity, Model, Patch, Piece, RectPatch, TrigPatch};
+use exact_bezier::{
+    audit, read_model, read_trig_patches, Continuity, Model, Patch, Piece, RectPatch, TrigPatch,
+};
 use num_rational::BigRational;
 use serde_json::Value;
 
@@ -19,7 +21,10 @@ fn fixture(name: &str) -> String {
 }
 
 fn model(name: &str) -> Model {
-    read_model(std::io::BufReader::new(std::fs::File::open(fixture(name)).unwrap())).unwrap()
+    read_model(std::io::BufReader::new(
+        std::fs::File::open(fixture(name)).unwrap(),
+    ))
+    .unwrap()
 }
 
 fn rect(m: &Model, k: usize) -> &RectPatch<Q> {
@@ -93,7 +98,10 @@ fn teapot_seams_open_and_degenerate_edges_checked_independently() {
     // column), the join is C¹ after scaling — at least G¹.
     let mut checked = 0;
     for (s, sj) in a.seams.iter().zip(json["seams"].as_array().unwrap()) {
-        let (ea, eb) = (sj["a"]["edge"].as_str().unwrap(), sj["b"]["edge"].as_str().unwrap());
+        let (ea, eb) = (
+            sj["a"]["edge"].as_str().unwrap(),
+            sj["b"]["edge"].as_str().unwrap(),
+        );
         let (a0, a1) = edge_rows(rect(&m, s.a.patch), ea);
         let (mut b0, mut b1) = edge_rows(rect(&m, s.b.patch), eb);
         if b0 != a0 {
@@ -106,15 +114,24 @@ fn teapot_seams_open_and_degenerate_edges_checked_independently() {
         let ratio = |u: &[Q], v: &[Q]| -> Option<Q> {
             let k = u.iter().position(|x| *x != Q::from_integer(0.into()))?;
             let r = -(v[k].clone() / &u[k]);
-            (u.iter().zip(v).all(|(x, y)| *y == -(x * &r)) && r > Q::from_integer(0.into())).then_some(r)
+            (u.iter().zip(v).all(|(x, y)| *y == -(x * &r)) && r > Q::from_integer(0.into()))
+                .then_some(r)
         };
         let ratios: Vec<Option<Q>> = da.iter().zip(&db).map(|(u, v)| ratio(u, v)).collect();
         if ratios.iter().all(|r| r.is_some() && *r == ratios[0]) {
             checked += 1;
-            assert!(s.verdict.continuity >= Some(Continuity::G1), "{:?}: {}", (s.a, s.b), s.verdict.reason);
+            assert!(
+                s.verdict.continuity >= Some(Continuity::G1),
+                "{:?}: {}",
+                (s.a, s.b),
+                s.verdict.reason
+            );
         }
     }
-    assert!(checked >= 30, "only {checked} seams met the control-point condition");
+    assert!(
+        checked >= 30,
+        "only {checked} seams met the control-point condition"
+    );
 }
 
 #[test]
@@ -122,14 +139,34 @@ fn cylinder_from_four_rational_arcs_is_g2_everywhere() {
     let m = model("cylinder.json");
     let a = audit(&m).unwrap();
     // Four arcs: four seams (the last closes the circle), the 8 rims open.
-    assert_eq!((a.patches, a.seams.len(), a.open_edges.len(), a.degenerate_edges.len()), (4, 4, 8, 0), "{}", a.summary());
+    assert_eq!(
+        (
+            a.patches,
+            a.seams.len(),
+            a.open_edges.len(),
+            a.degenerate_edges.len()
+        ),
+        (4, 4, 8, 0),
+        "{}",
+        a.summary()
+    );
     for s in &a.seams {
-        assert_eq!(s.verdict.continuity, Some(Continuity::G2), "{}", s.verdict.reason);
+        assert_eq!(
+            s.verdict.continuity,
+            Some(Continuity::G2),
+            "{}",
+            s.verdict.reason
+        );
     }
     // Every piece lies on x² + y² = 1, exactly.
     for k in 0..4 {
-        let x = rect(&m, k).eval(&Q::new(2.into(), 7.into()), &Q::new(1.into(), 3.into())).unwrap();
-        assert_eq!(x[0].clone() * &x[0] + x[1].clone() * &x[1], Q::from_integer(1.into()));
+        let x = rect(&m, k)
+            .eval(&Q::new(2.into(), 7.into()), &Q::new(1.into(), 3.into()))
+            .unwrap();
+        assert_eq!(
+            x[0].clone() * &x[0] + x[1].clone() * &x[1],
+            Q::from_integer(1.into())
+        );
     }
 }
 
@@ -137,13 +174,20 @@ fn cylinder_from_four_rational_arcs_is_g2_everywhere() {
 fn torus_is_closed_and_g2_everywhere() {
     let m = model("torus.json");
     let a = audit(&m).unwrap();
-    assert_eq!((a.patches, a.seams.len(), a.open_edges.len()), (16, 32, 0), "{}", a.summary());
+    assert_eq!(
+        (a.patches, a.seams.len(), a.open_edges.len()),
+        (16, 32, 0),
+        "{}",
+        a.summary()
+    );
     assert_eq!(a.counts(), [0, 0, 32, 0]);
     // Independently: a point of each piece satisfies the torus equation
     // (x² + y² + z² + R² − r²)² = 4R²(x² + y²), R = 3, r = 1.
     let c = |n: i64| Q::from_integer(n.into());
     for k in 0..16 {
-        let x = rect(&m, k).eval(&Q::new(1.into(), 5.into()), &Q::new(3.into(), 4.into())).unwrap();
+        let x = rect(&m, k)
+            .eval(&Q::new(1.into(), 5.into()), &Q::new(3.into(), 4.into()))
+            .unwrap();
         let rho = x[0].clone() * &x[0] + x[1].clone() * &x[1];
         let lhs = rho.clone() + x[2].clone() * &x[2] + c(8);
         assert_eq!(lhs.clone() * &lhs, c(36) * rho);
@@ -155,7 +199,12 @@ fn split_at_an_inner_knot_the_halves_meet_g2_on_one_surface() {
     let m = model("split_surface.json");
     let a = audit(&m).unwrap();
     assert_eq!((a.patches, a.seams.len(), a.open_edges.len()), (2, 1, 6));
-    assert_eq!(a.seams[0].verdict.continuity, Some(Continuity::G2), "{}", a.seams[0].verdict.reason);
+    assert_eq!(
+        a.seams[0].verdict.continuity,
+        Some(Continuity::G2),
+        "{}",
+        a.seams[0].verdict.reason
+    );
     let same = &a.to_json(&m)["same_surface"];
     assert_eq!(same[0]["patches"], serde_json::json!([0, 1]));
 }
@@ -165,18 +214,29 @@ fn split_at_an_inner_knot_the_halves_meet_g2_on_one_surface() {
 #[test]
 fn bowl_of_source_002_exact_rational_form() {
     let verdicts = |name: &str| {
-        let trig = read_trig_patches(&std::fs::read_to_string(fixture(name)).unwrap()).unwrap().unwrap();
+        let trig = read_trig_patches(&std::fs::read_to_string(fixture(name)).unwrap())
+            .unwrap()
+            .unwrap();
         let pieces = trig
             .iter()
             .map(|p| match p {
-                TrigPatch::Rect(r) => Piece { patch: Patch::Rect(r.to_rational()), origin: Default::default() },
+                TrigPatch::Rect(r) => Piece {
+                    patch: Patch::Rect(r.to_rational()),
+                    origin: Default::default(),
+                },
                 TrigPatch::Curve(_) => panic!("the bowl is made of trig-rects"),
             })
             .collect();
-        let m = Model { pieces, ..Model::default() };
+        let m = Model {
+            pieces,
+            ..Model::default()
+        };
         let a = audit(&m).unwrap();
         assert!(!a.seams.is_empty(), "{}", a.summary());
-        a.seams.iter().map(|s| s.verdict.continuity).collect::<Vec<_>>()
+        a.seams
+            .iter()
+            .map(|s| s.verdict.continuity)
+            .collect::<Vec<_>>()
     };
     let g1 = verdicts("bowl.json");
     assert!(g1.iter().all(|v| *v >= Some(Continuity::G1)), "{g1:?}");
@@ -189,7 +249,12 @@ fn cli_audit_and_convert_to_bezier() {
     let (code, v) = cli_json(&["audit", "tests/fixtures/cylinder.json", "--summary"]);
     assert_eq!(code, 0);
     assert_eq!(v["counts"]["G2"], 4);
-    let (code, v) = cli_json(&["convert", "tests/fixtures/split_surface.json", "--to", "bezier"]);
+    let (code, v) = cli_json(&[
+        "convert",
+        "tests/fixtures/split_surface.json",
+        "--to",
+        "bezier",
+    ]);
     assert_eq!(code, 0);
     let pieces = v.as_array().unwrap();
     assert_eq!(pieces.len(), 2);

@@ -94,11 +94,19 @@ fn collapsed(r: &RectPatch<Q>, e: Edge) -> Option<Vec<Q>> {
 
 /// Run `f` on every item, in parallel on the available cores, keeping order.
 fn par_map<I: Sync, O: Send>(items: &[I], f: impl Fn(&I) -> O + Sync) -> Vec<O> {
-    let threads = std::thread::available_parallelism().map_or(1, usize::from).min(8);
+    let threads = std::thread::available_parallelism()
+        .map_or(1, usize::from)
+        .min(8);
     let chunk = items.len().div_ceil(threads).max(1);
     std::thread::scope(|s| {
-        let handles: Vec<_> = items.chunks(chunk).map(|c| s.spawn(|| c.iter().map(&f).collect::<Vec<O>>())).collect();
-        handles.into_iter().flat_map(|h| h.join().expect("audit worker panicked")).collect()
+        let handles: Vec<_> = items
+            .chunks(chunk)
+            .map(|c| s.spawn(|| c.iter().map(&f).collect::<Vec<O>>()))
+            .collect();
+        handles
+            .into_iter()
+            .flat_map(|h| h.join().expect("audit worker panicked"))
+            .collect()
     })
 }
 
@@ -151,7 +159,9 @@ pub fn audit(model: &Model) -> Result<Audit, Error> {
         Patch::Rect(r) => r,
         _ => unreachable!("only rect edges are grouped"),
     };
-    let verdicts = par_map(&pairs, |(a, b, _)| seam_continuity(rect_of(a.patch), a.edge, rect_of(b.patch), b.edge));
+    let verdicts = par_map(&pairs, |(a, b, _)| {
+        seam_continuity(rect_of(a.patch), a.edge, rect_of(b.patch), b.edge)
+    });
     for ((a, b, non_manifold), v) in pairs.into_iter().zip(verdicts) {
         out.seams.push(Seam {
             a,

@@ -92,7 +92,10 @@ fn json_pieces(v: &Value, element: Option<usize>) -> Result<Vec<Piece>, Error> {
     };
     if is_nurbs(v) {
         let nurbs = read_nurbs(v)?;
-        return Ok(nurbs.iter().flat_map(|n| nurbs_pieces(n, base.clone())).collect());
+        return Ok(nurbs
+            .iter()
+            .flat_map(|n| nurbs_pieces(n, base.clone()))
+            .collect());
     }
     Ok(vec![Piece {
         patch: patch_from_value(v)?,
@@ -149,7 +152,7 @@ pub fn read_model(mut input: impl BufRead) -> Result<Model, Error> {
             }
             out
         }
-        _ => json_pieces(&v, None)?,
+        _ => json_pieces(&v, Some(0))?,
     };
     Ok(Model {
         pieces,
@@ -163,7 +166,10 @@ pub fn read_model(mut input: impl BufRead) -> Result<Model, Error> {
 ///
 /// [`Error::PointAtInfinity`] never for positive weights (as
 /// [`patch_to_json`](crate::patch_to_json)).
-pub fn piece_to_json<T: JsonScalar + crate::Field>(p: &Patch<T>, origin: &Origin) -> Result<Value, Error> {
+pub fn piece_to_json<T: JsonScalar + crate::Field>(
+    p: &Patch<T>,
+    origin: &Origin,
+) -> Result<Value, Error> {
     let mut v = crate::io::patch_to_json(p)?;
     if let Value::Object(o) = &mut v {
         o.insert("origin".into(), origin.to_json());

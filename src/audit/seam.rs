@@ -118,7 +118,10 @@ impl EdgeMap {
 }
 
 /// The candidates the coincidence witness allows, checked on the curves.
-fn edge_map(ca: &RationalCurve<Q>, cb: &RationalCurve<Q>) -> Result<Result<EdgeMap, String>, Error> {
+fn edge_map(
+    ca: &RationalCurve<Q>,
+    cb: &RationalCurve<Q>,
+) -> Result<Result<EdgeMap, String>, Error> {
     let c = coincide_curves(ca, cb)?;
     let Some(w) = c.witness else {
         return Ok(Err(format!("the boundary curves differ: {}", c.reason)));
@@ -150,7 +153,9 @@ fn edge_map(ca: &RationalCurve<Q>, cb: &RationalCurve<Q>) -> Result<Result<EdgeM
             }
         }
     }
-    Ok(Err("no Möbius map of the witness matches the edges pointwise".into()))
+    Ok(Err(
+        "no Möbius map of the witness matches the edges pointwise".into(),
+    ))
 }
 
 /// A turned patch's first three columns (`v`-rows `j = 0, 1, 2` of the net,
@@ -166,7 +171,11 @@ impl IntNet {
     fn new(r: &RectPatch<Q>) -> Self {
         let n = r.degree().1;
         let cols: Vec<Vec<HPoint<Q>>> = (0..=n.min(2)).map(|j| r.column(j)).collect();
-        let all: Vec<&Q> = cols.iter().flatten().flat_map(|p| p.coords.iter()).collect();
+        let all: Vec<&Q> = cols
+            .iter()
+            .flatten()
+            .flat_map(|p| p.coords.iter())
+            .collect();
         let (nums, _) = common_denominator(&all);
         let len = cols[0][0].coords.len();
         let mut it = nums.into_iter();
@@ -183,9 +192,9 @@ fn lin(terms: &[(&[Int], i128)]) -> Vec<Int> {
     let len = terms[0].0.len();
     (0..len)
         .map(|c| {
-            terms
-                .iter()
-                .fold(Int::zero(), |acc, (v, k)| acc + &(v[c].clone() * &Int::from(*k)))
+            terms.iter().fold(Int::zero(), |acc, (v, k)| {
+                acc + &(v[c].clone() * &Int::from(*k))
+            })
         })
         .collect()
 }
@@ -217,7 +226,13 @@ fn curve_jet(pts: &[Vec<Int>], a: &Int, b: &Int) -> [Vec<Int>; 3] {
     let zero = vec![Int::zero(); pts[0].len()];
     let n = n as i128;
     let d1 = two.map_or(zero.clone(), |l| lin(&[(&l[1], n), (&l[0], -n)]));
-    let d2 = three.map_or(zero, |l| lin(&[(&l[2], n * (n - 1)), (&l[1], -2 * n * (n - 1)), (&l[0], n * (n - 1))]));
+    let d2 = three.map_or(zero, |l| {
+        lin(&[
+            (&l[2], n * (n - 1)),
+            (&l[1], -2 * n * (n - 1)),
+            (&l[0], n * (n - 1)),
+        ])
+    });
     [row.swap_remove(0), d1, d2]
 }
 
@@ -230,7 +245,10 @@ fn patch_jet(net: &IntNet, a: &Int, b: &Int) -> [Vec<Int>; 6] {
     let zero = vec![Int::zero(); rows[0][0].len()];
     let n = net.n as i128;
     let (hv, huv) = if n >= 1 {
-        (lin(&[(&rows[1][0], n), (&rows[0][0], -n)]), lin(&[(&rows[1][1], n), (&rows[0][1], -n)]))
+        (
+            lin(&[(&rows[1][0], n), (&rows[0][0], -n)]),
+            lin(&[(&rows[1][1], n), (&rows[0][1], -n)]),
+        )
     } else {
         (zero.clone(), zero.clone())
     };
@@ -283,7 +301,9 @@ fn det_unit(a: &[Int], b: &[Int], c: &[Int], k: usize) -> Int {
 }
 
 fn dot(a: &[Int], b: &[Int]) -> Int {
-    a.iter().zip(b).fold(Int::zero(), |s, (x, y)| s + &(x.clone() * y))
+    a.iter()
+        .zip(b)
+        .fold(Int::zero(), |s, (x, y)| s + &(x.clone() * y))
 }
 
 fn sign(x: &Int) -> std::cmp::Ordering {
@@ -322,7 +342,12 @@ impl Sample {
 ///
 /// [`Error::Weight`] for non-positive weights; [`Error::Shape`] for points
 /// of dimension other than 2 or 3.
-pub fn seam_continuity(a: &RectPatch<Q>, ea: Edge, b: &RectPatch<Q>, eb: Edge) -> Result<SeamVerdict, Error> {
+pub fn seam_continuity(
+    a: &RectPatch<Q>,
+    ea: Edge,
+    b: &RectPatch<Q>,
+    eb: Edge,
+) -> Result<SeamVerdict, Error> {
     if !(2..=3).contains(&a.dim()) || a.dim() != b.dim() {
         return Err(Error::Shape(format!(
             "continuity needs 2D or 3D patches, not dimensions {} and {}",
@@ -368,15 +393,23 @@ pub fn seam_continuity(a: &RectPatch<Q>, ea: Edge, b: &RectPatch<Q>, eb: Edge) -
     for k in 1..=g1_samples {
         let x = sample_at(k)?;
         if !dot(&x.nu, &x.jb[2]).is_zero() {
-            return Ok(verdict(Some(Continuity::G0), format!("tangent planes differ at {}", where_(&x))));
+            return Ok(verdict(
+                Some(Continuity::G0),
+                format!("tangent planes differ at {}", where_(&x)),
+            ));
         }
-        let regular_b = covector(&x.jb[0], &x.jb[1], &x.jb[2]).iter().any(|c| !c.is_zero());
+        let regular_b = covector(&x.jb[0], &x.jb[1], &x.jb[2])
+            .iter()
+            .any(|c| !c.is_zero());
         if let Some(kk) = x.nu.iter().position(|c| !c.is_zero()).filter(|_| regular_b) {
             let beta = det_unit(&x.ja[0], &x.ja[1], &x.jb[2], kk) * &x.nu[kk];
             if sign(&beta).is_gt() {
                 return Ok(verdict(
                     Some(Continuity::G0),
-                    format!("the patches fold over (same tangent plane, same side) at {}", where_(&x)),
+                    format!(
+                        "the patches fold over (same tangent plane, same side) at {}",
+                        where_(&x)
+                    ),
                 ));
             }
             probe.get_or_insert(kk);
@@ -384,7 +417,10 @@ pub fn seam_continuity(a: &RectPatch<Q>, ea: Edge, b: &RectPatch<Q>, eb: Edge) -
         samples.push(x);
     }
     let Some(kk) = probe else {
-        return Ok(verdict(None, "the tangent planes are degenerate all along the edge; continuity not decided".into()));
+        return Ok(verdict(
+            None,
+            "the tangent planes are degenerate all along the edge; continuity not decided".into(),
+        ));
     };
     for k in g1_samples + 1..=g2_samples {
         samples.push(sample_at(k)?);
@@ -408,12 +444,18 @@ pub fn seam_continuity(a: &RectPatch<Q>, ea: Edge, b: &RectPatch<Q>, eb: Edge) -
                     Q::new(lhs.to_bigint(), rhs.to_bigint())
                 )
             };
-            return Ok(verdict(Some(Continuity::G1), format!("{jump} at {}", where_(x))));
+            return Ok(verdict(
+                Some(Continuity::G1),
+                format!("{jump} at {}", where_(x)),
+            ));
         }
     }
     Ok(verdict(
         Some(Continuity::G2),
-        format!("G2 identity holds at {g2_samples} samples, above its degree bound {}", g2_samples - 1),
+        format!(
+            "G2 identity holds at {g2_samples} samples, above its degree bound {}",
+            g2_samples - 1
+        ),
     ))
 }
 

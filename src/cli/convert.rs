@@ -162,7 +162,11 @@ fn nurbs_to_bezier(a: &Args) -> Result<Value, Error> {
         .pieces
         .iter()
         .map(|p| {
-            let patch = if a.normalize { normalized(&p.patch)? } else { p.patch.clone() };
+            let patch = if a.normalize {
+                normalized(&p.patch)?
+            } else {
+                p.patch.clone()
+            };
             match a.scalar {
                 ScalarKind::Exact => piece_to_json(&patch, &p.origin),
                 ScalarKind::F64 => piece_to_json(&patch.to_f64(), &p.origin),

@@ -160,7 +160,8 @@ pub(crate) fn open_input(path: &str) -> Result<Box<dyn std::io::BufRead>, Error>
     if path == "-" {
         return Ok(Box::new(std::io::BufReader::new(std::io::stdin())));
     }
-    let f = std::fs::File::open(path).map_err(|e| Error::Format(format!("cannot read {path}: {e}")))?;
+    let f =
+        std::fs::File::open(path).map_err(|e| Error::Format(format!("cannot read {path}: {e}")))?;
     Ok(Box::new(std::io::BufReader::with_capacity(1 << 16, f)))
 }
 

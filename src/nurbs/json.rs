@@ -109,7 +109,11 @@ fn field<'a>(obj: &'a Map<String, Value>, name: &str) -> Result<&'a Value, Error
 fn count(v: &Value, what: &str) -> Result<usize, Error> {
     v.as_u64()
         .and_then(|d| usize::try_from(d).ok())
-        .ok_or_else(|| Error::Format(format!("{what} should be a non-negative integer, found {v}")))
+        .ok_or_else(|| {
+            Error::Format(format!(
+                "{what} should be a non-negative integer, found {v}"
+            ))
+        })
 }
 
 fn knot_list(v: &Value, what: &str) -> Result<Vec<BigRational>, Error> {
@@ -117,7 +121,11 @@ fn knot_list(v: &Value, what: &str) -> Result<Vec<BigRational>, Error> {
 }
 
 /// Homogeneous points from Cartesian points and optional weights (all 1).
-fn hom_list(pts: &[Value], weights: Option<&Vec<Value>>, label: &str) -> Result<Vec<HPoint<BigRational>>, Error> {
+fn hom_list(
+    pts: &[Value],
+    weights: Option<&Vec<Value>>,
+    label: &str,
+) -> Result<Vec<HPoint<BigRational>>, Error> {
     if let Some(w) = weights {
         if w.len() != pts.len() {
             return Err(Error::Shape(format!(
@@ -142,7 +150,10 @@ fn hom_list(pts: &[Value], weights: Option<&Vec<Value>>, label: &str) -> Result<
 
 fn ours_curve(obj: &Map<String, Value>) -> Result<NurbsCurve<BigRational>, Error> {
     let pts = array(field(obj, "points")?, "points")?;
-    let weights = obj.get("weights").map(|w| array(w, "weights")).transpose()?;
+    let weights = obj
+        .get("weights")
+        .map(|w| array(w, "weights"))
+        .transpose()?;
     let knots = Knots::new(
         count(field(obj, "degree")?, "degree")?,
         knot_list(field(obj, "knots")?, "knots")?,
@@ -165,7 +176,10 @@ fn ours_surface(obj: &Map<String, Value>) -> Result<NurbsSurface<BigRational>, E
     let [du, dv] = pair(field(obj, "degree")?, "degree")?;
     let [ku, kv] = pair(field(obj, "knots")?, "knots")?;
     let rows = array(field(obj, "points")?, "points")?;
-    let wrows = obj.get("weights").map(|w| array(w, "weights")).transpose()?;
+    let wrows = obj
+        .get("weights")
+        .map(|w| array(w, "weights"))
+        .transpose()?;
     if let Some(w) = wrows {
         if w.len() != rows.len() {
             return Err(Error::Shape(format!(
@@ -193,7 +207,10 @@ fn geomdl(obj: &Map<String, Value>) -> Result<Vec<Nurbs>, Error> {
     let shape = field(obj, "shape")?
         .as_object()
         .ok_or_else(|| Error::Format("geomdl \"shape\" should be an object".into()))?;
-    let kind = field(shape, "type")?.as_str().unwrap_or_default().to_owned();
+    let kind = field(shape, "type")?
+        .as_str()
+        .unwrap_or_default()
+        .to_owned();
     array(field(shape, "data")?, "data")?
         .iter()
         .enumerate()
@@ -216,7 +233,11 @@ fn geomdl(obj: &Map<String, Value>) -> Result<Vec<Nurbs>, Error> {
 /// geomdl's `control_points: {points, weights?}`.
 fn geomdl_points(d: &Map<String, Value>) -> Result<Vec<HPoint<BigRational>>, Error> {
     let cp = field(d, "control_points")?;
-    let pts = array(cp.get("points").ok_or_else(|| missing("control_points.points"))?, "points")?;
+    let pts = array(
+        cp.get("points")
+            .ok_or_else(|| missing("control_points.points"))?,
+        "points",
+    )?;
     let w = cp.get("weights").map(|w| array(w, "weights")).transpose()?;
     hom_list(pts, w, "")
 }

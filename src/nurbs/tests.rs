@@ -30,9 +30,14 @@ fn check_curve(c: &NurbsCurve<Q>) {
 
 #[test]
 fn clamped_nonuniform_rational_cubic_with_a_double_knot() {
-    let k: Vec<Q> = [0, 0, 0, 0, 1, 3, 3, 4, 4, 4, 4].iter().map(|&x| q(x, 1)).collect();
+    let k: Vec<Q> = [0, 0, 0, 0, 1, 3, 3, 4, 4, 4, 4]
+        .iter()
+        .map(|&x| q(x, 1))
+        .collect();
     let w = [1, 2, 1, 3, 1, 1, 2];
-    let pts = (0..7).map(|i| hp(i, (i * i) % 5, q(w[i as usize], 1))).collect();
+    let pts = (0..7)
+        .map(|i| hp(i, (i * i) % 5, q(w[i as usize], 1)))
+        .collect();
     let c = NurbsCurve::new(Knots::new(3, k, 7).unwrap(), pts).unwrap();
     assert_eq!(c.knots().spans(), vec![3, 4, 6]);
     check_curve(&c);
@@ -62,7 +67,10 @@ fn a_bezier_curve_is_its_own_single_piece() {
 fn pieces_meet_c2_across_a_simple_knot_of_a_cubic() {
     // Consecutive pieces of a cubic with simple knots are C²: the second
     // differences at the join match (uniform spans of equal length).
-    let k: Vec<Q> = [0, 0, 0, 0, 1, 2, 2, 2, 2].iter().map(|&x| q(x, 1)).collect();
+    let k: Vec<Q> = [0, 0, 0, 0, 1, 2, 2, 2, 2]
+        .iter()
+        .map(|&x| q(x, 1))
+        .collect();
     let pts = (0..5).map(|i| hp(i * 3, (i * 7) % 4, q(1, 1))).collect();
     let c = NurbsCurve::new(Knots::new(3, k, 5).unwrap(), pts).unwrap();
     let p = c.bezier_pieces();
@@ -81,11 +89,18 @@ fn surface_pieces_reproduce_de_boor() {
     let net: Vec<Vec<HPoint<Q>>> = (0..4)
         .map(|i| {
             (0..5)
-                .map(|j| HPoint::from_point(&[q(i, 1), q(j, 1), q(i * j % 3, 1)], &q(1 + (i + j) % 2, 1)))
+                .map(|j| {
+                    HPoint::from_point(&[q(i, 1), q(j, 1), q(i * j % 3, 1)], &q(1 + (i + j) % 2, 1))
+                })
                 .collect()
         })
         .collect();
-    let s = NurbsSurface::new(Knots::new(2, ku, 4).unwrap(), Knots::new(2, kv, 5).unwrap(), net).unwrap();
+    let s = NurbsSurface::new(
+        Knots::new(2, ku, 4).unwrap(),
+        Knots::new(2, kv, 5).unwrap(),
+        net,
+    )
+    .unwrap();
     let pieces = s.bezier_pieces();
     assert_eq!(pieces.len(), 2 * 3);
     let (u, v) = s.knots();
@@ -98,7 +113,10 @@ fn surface_pieces_reproduce_de_boor() {
         for (a, b) in [(q(0, 1), q(1, 1)), (q(1, 3), q(2, 5)), (q(1, 1), q(1, 2))] {
             let uu = &piece.u[0] + (&piece.u[1] - &piece.u[0]) * &a;
             let vv = &piece.v[0] + (&piece.v[1] - &piece.v[0]) * &b;
-            assert_eq!(piece.patch.eval_hom(&a, &b), s.eval_hom_in_span(kl, &uu, &vv));
+            assert_eq!(
+                piece.patch.eval_hom(&a, &b),
+                s.eval_hom_in_span(kl, &uu, &vv)
+            );
         }
     }
 }
@@ -106,11 +124,23 @@ fn surface_pieces_reproduce_de_boor() {
 #[test]
 fn bad_knots_are_typed_errors() {
     let k = |v: &[i64]| v.iter().map(|&x| q(x, 1)).collect::<Vec<Q>>();
-    assert!(matches!(Knots::new(2, k(&[0, 0, 0, 1, 1]), 3), Err(Error::Shape(_))));
-    assert!(matches!(Knots::new(2, k(&[0, 0, 1, 0, 1, 1]), 3), Err(Error::Shape(_))));
-    assert!(matches!(Knots::new(2, k(&[0, 0, 0, 0, 0, 0]), 3), Err(Error::Shape(_))));
+    assert!(matches!(
+        Knots::new(2, k(&[0, 0, 0, 1, 1]), 3),
+        Err(Error::Shape(_))
+    ));
+    assert!(matches!(
+        Knots::new(2, k(&[0, 0, 1, 0, 1, 1]), 3),
+        Err(Error::Shape(_))
+    ));
+    assert!(matches!(
+        Knots::new(2, k(&[0, 0, 0, 0, 0, 0]), 3),
+        Err(Error::Shape(_))
+    ));
     assert!(matches!(Knots::new(0, k(&[0, 1]), 1), Err(Error::Shape(_))));
-    assert!(matches!(Knots::new(99, k(&[0, 1]), 1), Err(Error::DegreeTooHigh { .. })));
+    assert!(matches!(
+        Knots::new(99, k(&[0, 1]), 1),
+        Err(Error::DegreeTooHigh { .. })
+    ));
     assert!(Knots::from_multiplicities(2, &k(&[0, 1]), &[3, 2], 3).is_err());
     assert_eq!(
         Knots::from_multiplicities(2, &k(&[0, 1]), &[3, 3], 3).unwrap(),

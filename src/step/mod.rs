@@ -80,13 +80,20 @@ fn parts_of(inst: &Instance) -> Option<(String, BTreeMap<String, Vec<Param>>)> {
         for r in &inst.records {
             parts.insert(r.name.clone(), r.params.clone());
         }
-        let base = [SURFACE, CURVE].into_iter().find(|b| parts.contains_key(*b))?;
+        let base = [SURFACE, CURVE]
+            .into_iter()
+            .find(|b| parts.contains_key(*b))?;
         let leaf = inst
             .records
             .iter()
             .map(|r| r.name.as_str())
             .find(|n| n.starts_with(base) && *n != base)
-            .or_else(|| inst.records.iter().map(|r| r.name.as_str()).find(|n| n.starts_with("BEZIER")))
+            .or_else(|| {
+                inst.records
+                    .iter()
+                    .map(|r| r.name.as_str())
+                    .find(|n| n.starts_with("BEZIER"))
+            })
             .unwrap_or(base);
         return Some((leaf.to_owned(), parts));
     }
@@ -134,7 +141,9 @@ fn list<'a>(p: &'a Param, what: &str) -> Result<&'a [Param], Error> {
 fn count(p: &Param, what: &str) -> Result<usize, Error> {
     let q = num(p, what)?;
     if !q.is_integer() || q.is_negative() {
-        return Err(Error::Format(format!("{what} should be a non-negative integer, not {q}")));
+        return Err(Error::Format(format!(
+            "{what} should be a non-negative integer, not {q}"
+        )));
     }
     q.to_integer()
         .try_into()
@@ -172,7 +181,9 @@ fn knots(
         }
         (0..n).map(|i| int(i64::from(i > p))).collect()
     } else if leaf.contains("QUASI_UNIFORM") {
-        (0..n).map(|i| int((i - p).clamp(0, count as i64 - p))).collect()
+        (0..n)
+            .map(|i| int((i - p).clamp(0, count as i64 - p)))
+            .collect()
     } else if leaf.contains("UNIFORM") {
         (0..n).map(|i| int(i - p)).collect()
     } else {
@@ -197,7 +208,9 @@ type Points = HashMap<u64, Vec<BigRational>>;
 
 fn hpoint(p: &Param, w: BigRational, points: &Points) -> Result<HPoint<BigRational>, Error> {
     let Param::Ref(id) = p else {
-        return Err(Error::Format("a control point should be a reference #id".into()));
+        return Err(Error::Format(
+            "a control point should be a reference #id".into(),
+        ));
     };
     let x = points
         .get(id)
@@ -206,16 +219,30 @@ fn hpoint(p: &Param, w: BigRational, points: &Points) -> Result<HPoint<BigRation
 }
 
 /// Homogeneous points of one row, with the row of weights if rational.
-fn hrow(refs: &Param, weights: Option<&Param>, points: &Points) -> Result<Vec<HPoint<BigRational>>, Error> {
+fn hrow(
+    refs: &Param,
+    weights: Option<&Param>,
+    points: &Points,
+) -> Result<Vec<HPoint<BigRational>>, Error> {
     let refs = list(refs, "control points")?;
     let ws = match weights {
-        Some(w) => list(w, "weights")?.iter().map(weight).collect::<Result<Vec<_>, _>>()?,
+        Some(w) => list(w, "weights")?
+            .iter()
+            .map(weight)
+            .collect::<Result<Vec<_>, _>>()?,
         None => vec![BigRational::one(); refs.len()],
     };
     if ws.len() != refs.len() {
-        return Err(Error::Shape(format!("{} control points but {} weights", refs.len(), ws.len())));
+        return Err(Error::Shape(format!(
+            "{} control points but {} weights",
+            refs.len(),
+            ws.len()
+        )));
     }
-    refs.iter().zip(ws).map(|(r, w)| hpoint(r, w, points)).collect()
+    refs.iter()
+        .zip(ws)
+        .map(|(r, w)| hpoint(r, w, points))
+        .collect()
 }
 
 fn build(p: &Pending, points: &Points) -> Result<Nurbs, Error> {
@@ -227,9 +254,13 @@ fn build(p: &Pending, points: &Points) -> Result<Nurbs, Error> {
         };
         let (du, dv) = (count(du, "u_degree")?, count(dv, "v_degree")?);
         let rows = list(net, "control_points_list")?;
-        let wrows = rational("RATIONAL_B_SPLINE_SURFACE").map(|w| list(w, "weights_data")).transpose()?;
+        let wrows = rational("RATIONAL_B_SPLINE_SURFACE")
+            .map(|w| list(w, "weights_data"))
+            .transpose()?;
         if wrows.is_some_and(|w| w.len() != rows.len()) {
-            return Err(Error::Shape("the weights grid differs from the control net".into()));
+            return Err(Error::Shape(
+                "the weights grid differs from the control net".into(),
+            ));
         }
         let hom = rows
             .iter()
@@ -238,24 +269,40 @@ fn build(p: &Pending, points: &Points) -> Result<Nurbs, Error> {
             .collect::<Result<Vec<_>, _>>()?;
         let cv = hom.first().map_or(0, Vec::len);
         let k = p.parts.get("B_SPLINE_SURFACE_WITH_KNOTS");
-        let ku = knots(leaf, du, hom.len(), k.and_then(|k| Some((k.first()?, k.get(2)?))))?;
+        let ku = knots(
+            leaf,
+            du,
+            hom.len(),
+            k.and_then(|k| Some((k.first()?, k.get(2)?))),
+        )?;
         let kv = knots(leaf, dv, cv, k.and_then(|k| Some((k.get(1)?, k.get(3)?))))?;
         return NurbsSurface::new(ku, kv, hom).map(Nurbs::Surface);
     }
-    let base = p.parts.get(CURVE).ok_or_else(|| Error::Format("not a B-spline".into()))?;
+    let base = p
+        .parts
+        .get(CURVE)
+        .ok_or_else(|| Error::Format("not a B-spline".into()))?;
     let [d, pts, ..] = base.as_slice() else {
         return Err(Error::Format("B_SPLINE_CURVE needs 5 parameters".into()));
     };
     let d = count(d, "degree")?;
     let hom = hrow(pts, rational("RATIONAL_B_SPLINE_CURVE"), points)?;
     let k = p.parts.get("B_SPLINE_CURVE_WITH_KNOTS");
-    let kn = knots(leaf, d, hom.len(), k.and_then(|k| Some((k.first()?, k.get(1)?))))?;
+    let kn = knots(
+        leaf,
+        d,
+        hom.len(),
+        k.and_then(|k| Some((k.first()?, k.get(1)?))),
+    )?;
     NurbsCurve::new(kn, hom).map(Nurbs::Curve)
 }
 
 /// The coordinates of a `CARTESIAN_POINT('name', (x, y, z))`.
 fn cartesian(r: &Record) -> Result<Vec<BigRational>, Error> {
-    let coords = r.params.get(1).ok_or_else(|| Error::Format("CARTESIAN_POINT needs coordinates".into()))?;
+    let coords = r
+        .params
+        .get(1)
+        .ok_or_else(|| Error::Format("CARTESIAN_POINT needs coordinates".into()))?;
     let x = numbers(coords, "a coordinate")?;
     if x.is_empty() {
         return Err(Error::Shape("a CARTESIAN_POINT with no coordinates".into()));
@@ -287,13 +334,23 @@ pub fn read_step(input: impl BufRead) -> Result<StepModel, Error> {
         } else if !inst.complex && (first.name == "ADVANCED_FACE" || first.name == "FACE_SURFACE") {
             match first.params.get(2) {
                 Some(Param::Ref(s)) => faces.push((inst.id, *s)),
-                _ => model.invalid.push((inst.id, format!("{} without a surface reference", first.name))),
+                _ => model.invalid.push((
+                    inst.id,
+                    format!("{} without a surface reference", first.name),
+                )),
             }
         } else if let Some((name, parts)) = parts_of(&inst) {
             pending.insert(inst.id, Pending { name, parts });
         } else {
             let name = if inst.complex {
-                format!("({})", inst.records.iter().map(|r| r.name.as_str()).collect::<Vec<_>>().join(" "))
+                format!(
+                    "({})",
+                    inst.records
+                        .iter()
+                        .map(|r| r.name.as_str())
+                        .collect::<Vec<_>>()
+                        .join(" ")
+                )
             } else {
                 first.name.clone()
             };

@@ -367,7 +367,8 @@ mod tests {
         Ok(out)
     }
 
-    const FILE: &str = "ISO-10303-21;\nHEADER;\nFILE_NAME('a;b.stp','',(''),(''),'','','');\nENDSEC;\nDATA;\n\
+    const FILE: &str =
+        "ISO-10303-21;\nHEADER;\nFILE_NAME('a;b.stp','',(''),(''),'','','');\nENDSEC;\nDATA;\n\
         #1 = CARTESIAN_POINT('it''s /* not a comment */', (0., -1.5E-1, 2));\n\
         /* a comment; with a semicolon */\n\
         #2=(BOUNDED_SURFACE()B_SPLINE_SURFACE(1,1,((#1,#1),(#1,#1)),.UNSPECIFIED.,.F.,.F.,.F.)\n\
@@ -392,7 +393,10 @@ mod tests {
         );
         assert!(v[1].complex);
         let names: Vec<&str> = v[1].records.iter().map(|r| r.name.as_str()).collect();
-        assert_eq!(names, ["BOUNDED_SURFACE", "B_SPLINE_SURFACE", "REPRESENTATION_ITEM"]);
+        assert_eq!(
+            names,
+            ["BOUNDED_SURFACE", "B_SPLINE_SURFACE", "REPRESENTATION_ITEM"]
+        );
         assert_eq!(v[1].records[1].params[4], Param::Enum("F".into()));
         assert_eq!(
             v[2].records[0].params,

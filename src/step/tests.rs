@@ -29,13 +29,20 @@ const FILE: &str = "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((''),'2;1');\nENDSE
 fn reads_the_rational_complex_surface_with_its_face() {
     let m = read_step(FILE.as_bytes()).unwrap();
     let s = &m.entities[0];
-    assert_eq!((s.id, s.name.as_str(), s.faces.clone()), (20, "B_SPLINE_SURFACE_WITH_KNOTS", vec![30]));
-    let Nurbs::Surface(surf) = &s.nurbs else { panic!("a surface") };
+    assert_eq!(
+        (s.id, s.name.as_str(), s.faces.clone()),
+        (20, "B_SPLINE_SURFACE_WITH_KNOTS", vec![30])
+    );
+    let Nurbs::Surface(surf) = &s.nurbs else {
+        panic!("a surface")
+    };
     // The knot 1.5707963 is read exactly, not as the f64 nearest to it.
     assert_eq!(surf.knots().0.knots()[5], q(15_707_963, 10_000_000));
     let pieces = s.nurbs.pieces();
     assert_eq!(pieces.len(), 1);
-    let Patch::Rect(r) = &pieces[0].patch else { panic!("a rect") };
+    let Patch::Rect(r) = &pieces[0].patch else {
+        panic!("a rect")
+    };
     // A point of the arc: x² + y² = 1 exactly at u = 1/3.
     let x = r.eval(&q(1, 3), &q(1, 2)).unwrap();
     assert_eq!(x[0].clone() * &x[0] + x[1].clone() * &x[1], q(1, 1));
@@ -48,7 +55,12 @@ fn curves_bezier_and_knots_skips_and_invalid_entities() {
     let ids: Vec<u64> = m.entities.iter().map(|e| e.id).collect();
     assert_eq!(ids, [20, 40, 41]);
     assert_eq!(m.entities[1].nurbs.pieces().len(), 1);
-    let spans: Vec<[Q; 2]> = m.entities[2].nurbs.pieces().into_iter().map(|p| p.u).collect();
+    let spans: Vec<[Q; 2]> = m.entities[2]
+        .nurbs
+        .pieces()
+        .into_iter()
+        .map(|p| p.u)
+        .collect();
     assert_eq!(spans, [[q(0, 1), q(1, 4)], [q(1, 4), q(1, 1)]]);
     assert_eq!(m.invalid.len(), 1);
     assert_eq!(m.invalid[0].0, 42);

@@ -18,13 +18,22 @@ fn split(mult: usize, rational: bool) -> (RectPatch<Q>, RectPatch<Q>) {
             (0..4)
                 .map(|j| {
                     let z = q((i * 7 + j * 3) % 5 - 2, 3);
-                    let w = if rational { q(1 + (i + 2 * j) % 3, 2) } else { q(1, 1) };
+                    let w = if rational {
+                        q(1 + (i + 2 * j) % 3, 2)
+                    } else {
+                        q(1, 1)
+                    };
                     HPoint::from_point(&[q(i, 1), q(j, 1), z], &w)
                 })
                 .collect()
         })
         .collect();
-    let s = NurbsSurface::new(Knots::new(3, ku, cu).unwrap(), Knots::bezier(3).unwrap(), net).unwrap();
+    let s = NurbsSurface::new(
+        Knots::new(3, ku, cu).unwrap(),
+        Knots::bezier(3).unwrap(),
+        net,
+    )
+    .unwrap();
     let mut p = s.bezier_pieces().into_iter().map(|p| p.patch);
     (p.next().unwrap(), p.next().unwrap())
 }
@@ -44,11 +53,20 @@ fn a_double_knot_is_g1_and_a_triple_knot_g0_with_exact_witnesses() {
     let (a, b) = split(2, true);
     let v = seam_continuity(&a, Edge::U1, &b, Edge::U0).unwrap();
     assert_eq!(v.continuity, Some(Continuity::G1), "{}", v.reason);
-    assert!(v.reason.contains("normal curvature across the seam"), "{}", v.reason);
+    assert!(
+        v.reason.contains("normal curvature across the seam"),
+        "{}",
+        v.reason
+    );
     let (a, b) = split(3, true);
     let v = seam_continuity(&a, Edge::U1, &b, Edge::U0).unwrap();
     assert_eq!(v.continuity, Some(Continuity::G0), "{}", v.reason);
-    assert!(v.reason.starts_with("tangent planes differ at a at (u, v) = (1, "), "{}", v.reason);
+    assert!(
+        v.reason
+            .starts_with("tangent planes differ at a at (u, v) = (1, "),
+        "{}",
+        v.reason
+    );
 }
 
 #[test]
