@@ -117,11 +117,48 @@ impl EdgeMap {
     }
 }
 
-/// The candidates the coincidence witness allows, checked on the curves.
+/// Do the edges have proportional homogeneous control points, in order or
+/// reversed (the same parameterization up to reversal — the usual case)?
+/// Then `φ` is the identity or `t ↦ 1 − t`, without a coincidence test.
+fn direct_map(ca: &RationalCurve<Q>, cb: &RationalCurve<Q>) -> Option<EdgeMap> {
+    let (a, b) = (ca.ctrl(), cb.ctrl());
+    if a.len() != b.len() {
+        return None;
+    }
+    let proportional = |b: &mut dyn Iterator<Item = &HPoint<Q>>| {
+        let (wa, mut wb) = (a[0].weight(), None);
+        a.iter().zip(b).all(|(p, q)| {
+            let wb0 = wb.get_or_insert_with(|| q.weight().clone());
+            p.coords
+                .iter()
+                .zip(&q.coords)
+                .all(|(x, y)| x * &*wb0 == y * wa)
+        })
+    };
+    if proportional(&mut b.iter()) {
+        Some(EdgeMap {
+            alpha: None,
+            reversed: false,
+        })
+    } else if proportional(&mut b.iter().rev()) {
+        Some(EdgeMap {
+            alpha: None,
+            reversed: true,
+        })
+    } else {
+        None
+    }
+}
+
+/// The edge map: [`direct_map`], else the candidates the coincidence
+/// witness allows, checked on the curves.
 fn edge_map(
     ca: &RationalCurve<Q>,
     cb: &RationalCurve<Q>,
 ) -> Result<Result<EdgeMap, String>, Error> {
+    if let Some(m) = direct_map(ca, cb) {
+        return Ok(Ok(m));
+    }
     let c = coincide_curves(ca, cb)?;
     let Some(w) = c.witness else {
         return Ok(Err(format!("the boundary curves differ: {}", c.reason)));
@@ -282,22 +319,18 @@ fn pick<'a>(v: &'a [Int], rows: &[usize]) -> [&'a Int; 3] {
 
 /// The covector `y ↦ det(a, b, c, y)` of three 4-vectors (cofactors).
 fn covector(a: &[Int], b: &[Int], c: &[Int]) -> Vec<Int> {
-    (0..4)
-        .map(|k| {
-            let rows: Vec<usize> = (0..4).filter(|&r| r != k).collect();
-            let minor = det3(pick(a, &rows), pick(b, &rows), pick(c, &rows));
-            if k % 2 == 1 {
-                minor
-            } else {
-                -minor
-            }
-        })
-        .collect()
+    (0..4).map(|k| det_unit(a, b, c, k)).collect()
 }
 
-/// `det(a, b, c, e_k)`.
+/// `det(a, b, c, e_k)`: the `k`-th cofactor alone.
 fn det_unit(a: &[Int], b: &[Int], c: &[Int], k: usize) -> Int {
-    covector(a, b, c).swap_remove(k)
+    let rows: Vec<usize> = (0..4).filter(|&r| r != k).collect();
+    let minor = det3(pick(a, &rows), pick(b, &rows), pick(c, &rows));
+    if k % 2 == 1 {
+        minor
+    } else {
+        -minor
+    }
 }
 
 fn dot(a: &[Int], b: &[Int]) -> Int {
