@@ -1,7 +1,8 @@
-//! `convert FILE --to tri|rect|rational [--split a,b,c,d,e,f] [--degenerate]
+//! `convert FILE --to tri|rect|rational|bezier [--split a,b,c,d,e,f] [--degenerate]
 //! [--normalize] [--scalar f64]`: rectangle ↔ triangle conversions
 //! (source 003; source 001, Hu 2001), and trigonometric patches (source
-//! 002) to their exact rational Bézier form. Output: a JSON array of patches.
+//! 002) to their exact rational Bézier form, NURBS/STEP to their Bézier
+//! pieces with origins (`docs/nurbs_step.md`). Output: a JSON array of patches.
 
 use super::{load, open_input, parse_list, read_input, ScalarKind};
 use crate::audit::{piece_to_json, read_model};

@@ -33,6 +33,7 @@ use crate::error::{Error, MAX_DEGREE};
 use crate::hpoint::HPoint;
 use crate::{RationalCurve, RectPatch, Scalar};
 use num_rational::BigRational;
+use num_traits::{One, Zero};
 
 pub mod json;
 
@@ -155,17 +156,6 @@ impl Knots {
             .collect()
     }
 
-    /// The span `k` containing `t` (the last one for `t = u_{n+1}`), or
-    /// `None` outside the domain.
-    pub fn span_of(&self, t: &BigRational) -> Option<usize> {
-        let spans = self.spans();
-        let (first, last) = (spans[0], spans[spans.len() - 1]);
-        if *t < self.knots[first] || *t > self.knots[last + 1] {
-            return None;
-        }
-        spans.into_iter().rev().find(|&k| self.knots[k] <= *t)
-    }
-
     /// The blossom of span `k` at `args` (`p` values) from the local
     /// homogeneous points `P_{k−p} … P_k`, by de Boor's recursion with
     /// argument `args[r−1]` at level `r`:
@@ -181,7 +171,7 @@ impl Knots {
         k: usize,
         local: &[HPoint<T>],
         args: &[A],
-        coeff: impl Fn(&A, &BigRational, &BigRational) -> T,
+        coeff: impl Fn(&A, &BigRational, &BigRational) -> Step<T>,
     ) -> HPoint<T> {
         let p = self.degree;
         let mut d: Vec<HPoint<T>> = local.to_vec();
@@ -189,9 +179,14 @@ impl Knots {
             // d[j] holds d_{k−p+j}; update from the top so d[j−1] is still level r−1.
             for j in (r..=p).rev() {
                 let i = k - p + j;
-                let a = coeff(&args[r - 1], &self.knots[i], &self.knots[i + p + 1 - r]);
-                let one_minus = T::one() - &a;
-                d[j] = d[j - 1].combine(&one_minus, &d[j], &a);
+                match coeff(&args[r - 1], &self.knots[i], &self.knots[i + p + 1 - r]) {
+                    Step::Zero => d[j] = d[j - 1].clone(),
+                    Step::One => {}
+                    Step::Mix(a) => {
+                        let one_minus = T::one() - &a;
+                        d[j] = d[j - 1].combine(&one_minus, &d[j], &a);
+                    }
+                }
             }
         }
         d.swap_remove(p)
@@ -203,7 +198,14 @@ impl Knots {
         let p = self.degree;
         let (a, b) = (&self.knots[k], &self.knots[k + 1]);
         let coeff = |t: &BigRational, lo: &BigRational, hi: &BigRational| {
-            T::from_rational(&((t - lo) / (hi - lo)))
+            let a = (t - lo) / (hi - lo);
+            if a.is_zero() {
+                Step::Zero
+            } else if a.is_one() {
+                Step::One
+            } else {
+                Step::Mix(T::from_rational(&a))
+            }
         };
         (0..=p)
             .map(|j| {
@@ -222,7 +224,7 @@ impl Knots {
         let args = vec![t.clone(); self.degree];
         self.blossom_with(k, local, &args, |t: &T, lo, hi| {
             let inv = BigRational::from_integer(1.into()) / (hi - lo);
-            (t.clone() - T::from_rational(lo)) * T::from_rational(&inv)
+            Step::Mix((t.clone() - T::from_rational(lo)) * T::from_rational(&inv))
         })
     }
 
@@ -235,6 +237,15 @@ impl Knots {
     pub fn interval(&self, k: usize) -> [BigRational; 2] {
         [self.knots[k].clone(), self.knots[k + 1].clone()]
     }
+}
+
+/// One weight `a` of the blossom recursion `(1 − a) d_{i−1} + a d_i`; the
+/// exact values 0 and 1 (knots of full multiplicity, e.g. a Bézier entity)
+/// copy a point instead of computing with it.
+enum Step<T> {
+    Zero,
+    One,
+    Mix(T),
 }
 
 /// A (rational) B-spline curve in homogeneous form.
