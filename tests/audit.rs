@@ -294,3 +294,28 @@ fn step_file_convert_and_audit() {
     std::fs::remove_file(&path).unwrap();
     let _: Value = v;
 }
+
+#[test]
+fn audit_plot_writes_a_png_and_refuses_other_names() {
+    let out = std::env::temp_dir().join(format!("exact_bezier_audit_{}.png", std::process::id()));
+    let o = out.to_str().unwrap();
+    let (code, _) = cli_json(&[
+        "audit",
+        "tests/fixtures/split_surface.json",
+        "--summary",
+        "--plot",
+        o,
+    ]);
+    assert_eq!(code, 0);
+    let png = std::fs::read(&out).unwrap();
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    std::fs::remove_file(&out).unwrap();
+    let (code, _, err) = cli(&[
+        "audit",
+        "tests/fixtures/split_surface.json",
+        "--plot",
+        "x.svg",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains(".png"), "{err}");
+}
