@@ -319,3 +319,41 @@ fn audit_plot_writes_a_png_and_refuses_other_names() {
     assert_eq!(code, 2);
     assert!(err.contains(".png"), "{err}");
 }
+
+/// geomdl's `exchange.export_json` layout (geomdl 5 field names and the
+/// newer `degree`/`knotvector`/`size` lists) gives the same pieces as our
+/// `nurbs-surface` object; a geomdl curve too.
+#[test]
+fn geomdl_json_layouts_read_as_our_nurbs() {
+    use exact_bezier::{read_nurbs, read_patches};
+    let ours = r#"{"kind": "nurbs-surface", "degree": [2, 1], "knots": [[0,0,0,"1/2",1,1,1],[0,0,1,1]],
+        "points": [[[0,0,0],[0,1,0]],[[1,0,1],[1,1,1]],[[2,0,0],[2,1,"0.5"]],[[3,0,1],[3,1,0]]],
+        "weights": [[1,2],[1,1],[3,1],[1,1]]}"#;
+    let flat = r#"[[0,0,0],[0,1,0],[1,0,1],[1,1,1],[2,0,0],[2,1,0.5],[3,0,1],[3,1,0]]"#;
+    let v5 = format!(
+        r#"{{"shape": {{"type": "surface", "count": 1, "data": [{{"type": "spline", "rational": true,
+        "degree_u": 2, "degree_v": 1, "knotvector_u": [0,0,0,0.5,1,1,1], "knotvector_v": [0,0,1,1],
+        "size_u": 4, "size_v": 2, "control_points": {{"points": {flat}, "weights": [1,2,1,1,3,1,1,1]}}}}]}}}}"#
+    );
+    let v6 = format!(
+        r#"{{"shape": {{"type": "surface", "count": 1, "data": [{{"type": "spline", "rational": true,
+        "degree": [2, 1], "knotvector": [[0,0,0,0.5,1,1,1],[0,0,1,1]], "size": [4, 2],
+        "control_points": {{"points": {flat}, "weights": [1,2,1,1,3,1,1,1]}}}}]}}}}"#
+    );
+    let want = read_patches(ours).unwrap();
+    assert_eq!(want.len(), 2);
+    assert_eq!(read_patches(&v5).unwrap(), want);
+    assert_eq!(read_patches(&v6).unwrap(), want);
+    let curve = r#"{"shape": {"type": "curve", "data": [{"degree": 1, "knotvector": [0,0,0.25,1,1],
+        "control_points": {"points": [[0,0],[1,0],[1,1]]}}]}}"#;
+    let n = read_nurbs(&serde_json::from_str(curve).unwrap()).unwrap();
+    let spans: Vec<[Q; 2]> = n[0].pieces().into_iter().map(|p| p.u).collect();
+    assert_eq!(spans.len(), 2);
+    assert_eq!(spans[0][1], Q::new(1.into(), 4.into()));
+    // A wrong size is a typed error, not a panic.
+    let bad = v6.replace("[4, 2]", "[3, 2]");
+    assert!(read_patches(&bad)
+        .unwrap_err()
+        .to_string()
+        .contains("size 3×2"));
+}
