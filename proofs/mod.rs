@@ -28,6 +28,7 @@ pub mod curves;
 pub mod hang_li;
 pub mod hang_li_tables;
 pub mod lecture_joins;
+pub mod nurbs;
 pub mod quiz;
 pub mod reduction;
 pub mod surfaces;
@@ -205,6 +206,7 @@ pub const FAMILIES: &[Family] = &[
     Family { name: "blossoms", run: blossoms::claims },
     Family { name: "conversions", run: conversions::claims },
     Family { name: "coincide", run: coincide::claims },
+    Family { name: "nurbs", run: nurbs::claims },
 ];
 
 /// Run every family (in parallel threads) and return the claims in order.

@@ -154,7 +154,7 @@ pub(crate) fn array<'a>(v: &'a Value, what: &str) -> Result<&'a Vec<Value>, Erro
         .ok_or_else(|| Error::Format(format!("{what} should be an array, found {v}")))
 }
 
-fn point(v: &Value, what: &str) -> Result<Vec<BigRational>, Error> {
+pub(crate) fn point(v: &Value, what: &str) -> Result<Vec<BigRational>, Error> {
     let coords = array(v, what)?;
     if coords.is_empty() {
         return Err(Error::Shape(format!("{what} has no coordinates")));
@@ -163,7 +163,7 @@ fn point(v: &Value, what: &str) -> Result<Vec<BigRational>, Error> {
     coords.iter().map(|c| number(c, what)).collect()
 }
 
-fn positive_weight(v: &Value, index: String) -> Result<BigRational, Error> {
+pub(crate) fn positive_weight(v: &Value, index: String) -> Result<BigRational, Error> {
     let w = number(v, &format!("weight {index}"))?;
     if !w.is_positive() {
         return Err(Error::Weight {
@@ -425,15 +425,31 @@ pub fn parse_json(text: &str) -> Result<Value, Error> {
 pub fn read_patches(text: &str) -> Result<Vec<Patch<BigRational>>, Error> {
     let v = parse_json(text)?;
     match &v {
-        Value::Array(items) => items
-            .iter()
-            .enumerate()
-            .map(|(k, item)| {
-                patch_from_value(item).map_err(|e| Error::Format(format!("element {k}: {e}")))
-            })
-            .collect(),
-        _ => Ok(vec![patch_from_value(&v)?]),
+        Value::Array(items) => {
+            let mut out = Vec::new();
+            for (k, item) in items.iter().enumerate() {
+                out.extend(
+                    patches_from_value(item)
+                        .map_err(|e| Error::Format(format!("element {k}: {e}")))?,
+                );
+            }
+            Ok(out)
+        }
+        _ => patches_from_value(&v),
     }
+}
+
+/// One patch, or the Bézier pieces of a NURBS object (`crate::nurbs::json`).
+fn patches_from_value(v: &Value) -> Result<Vec<Patch<BigRational>>, Error> {
+    if crate::nurbs::json::is_nurbs(v) {
+        let nurbs = crate::nurbs::json::read_nurbs(v)?;
+        return Ok(nurbs
+            .iter()
+            .flat_map(|n| n.pieces())
+            .map(|p| p.patch)
+            .collect());
+    }
+    Ok(vec![patch_from_value(v)?])
 }
 
 /// Scalars that can be written to JSON: exact numbers as integers or

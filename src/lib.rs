@@ -34,6 +34,7 @@
 #![warn(missing_docs)]
 
 mod arc;
+mod audit;
 mod bernstein;
 mod blossom;
 mod canonical;
@@ -61,6 +62,7 @@ pub mod limits;
 mod mesh;
 mod minimal_degree;
 mod modp;
+mod nurbs;
 #[cfg(feature = "render")]
 pub mod plot;
 mod poly;
@@ -74,6 +76,7 @@ mod scalar;
 #[cfg(feature = "serde")]
 mod serde_support;
 mod standard;
+mod step;
 #[cfg(feature = "proptest")]
 pub mod strategy;
 mod tri;
@@ -96,6 +99,10 @@ pub struct ReadmeDoctests;
 pub use arc::{
     check_lambda, lambda_change_delta, lambda_change_param, lambda_interval, lambda_of_sigma_cubed,
     sigma_of_lambda, ArcCubic, Computed, LambdaFactors, QuadArc,
+};
+pub use audit::{
+    audit, piece_to_json, read_model, seam_continuity, Audit, Continuity, Model, Origin, PatchEdge,
+    Piece, Seam, SeamVerdict,
 };
 pub use bernstein::{bernstein, bernstein_all};
 pub use blossom::{polar_bivariate, polar_tensor, polar_univariate, rect_blossom, ShiftOp};
@@ -133,6 +140,8 @@ pub use minimal_degree::{
     Minimal,
 };
 pub use modp::Fp;
+pub use nurbs::json::{is_nurbs, read_nurbs, Nurbs, SpannedPatch};
+pub use nurbs::{CurvePiece, Knots, NurbsCurve, NurbsSurface, SurfacePiece};
 pub use poly::Poly;
 pub use rect::{RectPatch, Side};
 pub use rect_join::{g0_join, g1_join};
@@ -147,6 +156,7 @@ pub use standard::{
     standardize_quadratic, standardize_quadratic_compact, standardize_rect,
     standardize_rect_exact_or_f64, theorem1_holds, Exactness, Standard, StandardMap,
 };
+pub use step::{read_step, StepEntity, StepModel};
 pub use tri::{affine_combination, tri_bernstein, Bary, TriPatch, SYMMETRIES};
 pub use trig::basis::{circle_normal_form, trig_basis_values, TrigFn, TrigParam};
 pub use trig::bowl::trig_bowl;

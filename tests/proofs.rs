@@ -58,6 +58,7 @@ families!(
     zhang_chen_feng,
     triangles,
     blossoms,
+    nurbs,
     conversions,
     coincide,
 );

@@ -1,9 +1,11 @@
-//! `convert FILE --to tri|rect|rational [--split a,b,c,d,e,f] [--degenerate]
+//! `convert FILE --to tri|rect|rational|bezier [--split a,b,c,d,e,f] [--degenerate]
 //! [--normalize] [--scalar f64]`: rectangle ↔ triangle conversions
 //! (source 003; source 001, Hu 2001), and trigonometric patches (source
-//! 002) to their exact rational Bézier form. Output: a JSON array of patches.
+//! 002) to their exact rational Bézier form, NURBS/STEP to their Bézier
+//! pieces with origins (`docs/nurbs_step.md`). Output: a JSON array of patches.
 
-use super::{charge_each, load, parse_list, patch_f64, read_input, ScalarKind};
+use super::{charge_each, load, open_input, parse_list, patch_f64, read_input, ScalarKind};
+use crate::audit::{piece_to_json, read_model};
 use crate::convert::{rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Split};
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
@@ -23,6 +25,9 @@ pub enum Target {
     /// trig-curve → rational quartic, trig-rect → rational (4, 4) rect, exactly,
     /// in τ = tan(t/2) (source 002 patches for every rational-Bézier command).
     Rational,
+    /// NURBS (JSON, geomdl or STEP) → its rational Bézier pieces, each with
+    /// `"origin"`: entity id, faces, knot spans (see docs/nurbs_step.md).
+    Bezier,
 }
 
 /// Arguments of `convert`.
@@ -61,6 +66,9 @@ struct Plan<T> {
 pub fn run(a: &Args) -> Result<Value, Error> {
     if a.to == Target::Rational {
         return trig_to_rational(a);
+    }
+    if a.to == Target::Bezier {
+        return nurbs_to_bezier(a);
     }
     if a.to == Target::Tri && (a.split.is_some() || a.degenerate) {
         return Err(Error::Format(
@@ -175,6 +183,32 @@ fn convert_with<T: JsonScalar + Ordered>(
             patch_to_json(&q)
         })
         .collect()
+}
+
+/// `--to bezier`: every piece of the model with its origin.
+fn nurbs_to_bezier(a: &Args) -> Result<Value, Error> {
+    if a.split.is_some() || a.degenerate {
+        return Err(Error::Format(
+            "--split and --degenerate apply to --to rect only".into(),
+        ));
+    }
+    let model = read_model(open_input(&a.file)?)?;
+    let out = model
+        .pieces
+        .iter()
+        .map(|p| {
+            let patch = if a.normalize {
+                normalized(&p.patch)?
+            } else {
+                p.patch.clone()
+            };
+            match a.scalar {
+                ScalarKind::Exact => piece_to_json(&patch, &p.origin),
+                ScalarKind::F64 => piece_to_json(&patch.to_f64(), &p.origin),
+            }
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Value::Array(out))
 }
 
 /// The patch with weights scaled to sum 1.

@@ -27,6 +27,7 @@ use std::cell::RefCell;
 use std::io::Read;
 
 mod arc;
+mod audit;
 mod bulk;
 mod coincide;
 mod convert;
@@ -127,6 +128,8 @@ enum Command {
     Dedup(dedup::Args),
     /// One canonical coincidence key per curve/rect patch, one JSON line each.
     Key(key::Args),
+    /// Exact audit of a model (JSON, NURBS or STEP): shared edges G0/G1/G2, open/degenerate edges, duplicates.
+    Audit(audit::Args),
 }
 
 /// Exit code of a result written but outside the valid domain (module docs).
@@ -154,6 +157,7 @@ fn dispatch(command: Command) -> Result<Result<Value, i32>, Error> {
         Command::Coincide(a) => coincide::run(&a),
         Command::Dedup(a) => return dedup::run(&a).map(|()| Err(0)),
         Command::Key(a) => return key::run(&a).map(|()| Err(0)),
+        Command::Audit(a) => audit::run(&a),
     }?;
     Ok(Ok(value))
 }
@@ -424,6 +428,17 @@ pub(crate) fn read_input(path: &str) -> Result<String, Error> {
             .map_err(|e| Error::Format(format!("cannot read {what}: {e}")))?;
         read_limited(file, &what)
     }
+}
+
+/// A buffered reader of `path` (`-` for this run's standard input), for
+/// inputs read as a stream (STEP files).
+pub(crate) fn open_input(path: &str) -> Result<Box<dyn std::io::BufRead>, Error> {
+    if path == "-" {
+        return Ok(Box::new(std::io::BufReader::new(stdin_reader())));
+    }
+    let f = std::fs::File::open(path)
+        .map_err(|e| Error::Format(format!("cannot read {path:?}: {e}")))?;
+    Ok(Box::new(std::io::BufReader::with_capacity(1 << 16, f)))
 }
 
 /// Read the patches of `path`.

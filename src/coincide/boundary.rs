@@ -12,7 +12,7 @@ use num_rational::BigRational;
 use std::fmt;
 
 /// One of the four boundary curves of a rect patch.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Edge {
     /// `X(0, v)`: the control points `P_{0,j}`.
     U0,

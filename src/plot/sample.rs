@@ -197,6 +197,25 @@ pub(crate) fn draw<T: Ordered + Display>(
     Ok(out)
 }
 
+/// Sample `items` into a drawing, each in its given colour, without nets
+/// (the audit's seam picture).
+pub(crate) fn draw_colored<T: Ordered + Display>(
+    items: &[(Patch<T>, usize)],
+    d: Density,
+) -> Result<Drawing, Error> {
+    let mut out = Drawing::default();
+    for (p, color) in items {
+        let pf = p.map(Ordered::to_f64);
+        if let Patch::Curve(_) = &pf {
+            curve(&mut out, &pf, *color, d)?;
+        }
+        for dom in pieces(&pf, &Split::None)? {
+            piece(&mut out, &pf, &dom, *color, d)?;
+        }
+    }
+    Ok(out)
+}
+
 /// A point of a patch as 3D `f64`.
 fn point(p: &Patch<f64>, uv: [f64; 2]) -> Result<[f64; 3], Error> {
     let h = match p {

@@ -1,0 +1,273 @@
+//! The exact audit of a patch model: which patches share a boundary curve
+//! (any orientation, Möbius reparameterization or degree elevation), with
+//! what continuity; duplicates; pieces of one surface; degenerate and open
+//! edges. See `docs/audit.md` for what each verdict means.
+//!
+//! **Finding shared edges.** Every boundary curve gets its canonical key
+//! ([`canonical_key`]: an exact normal form of its class under reversal,
+//! Möbius maps, elevation and weight scaling); two edges are the same
+//! curve iff their keys are equal, so all shared edges are found by one
+//! hash pass — O(edges), not O(patches²). A boundary whose control points
+//! are all one point is *degenerate* (collapsed) and is not matched.
+//!
+//! **Continuity** of each shared edge: [`seam_continuity`].
+
+use crate::canonical::{canonical_key, CanonicalKey};
+use crate::coincide::{boundary_curve, Edge};
+use crate::error::Error;
+use crate::io::{point_to_json, Patch};
+use crate::{RectPatch, Tolerance};
+use num_rational::BigRational;
+use serde_json::{json, Value};
+use std::collections::{BTreeMap, HashMap};
+
+pub mod model;
+pub mod seam;
+
+pub use model::{piece_to_json, read_model, Model, Origin, Piece};
+pub use seam::{seam_continuity, Continuity, SeamVerdict};
+
+type Q = BigRational;
+
+/// One edge of one patch of the model.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct PatchEdge {
+    /// Index of the patch in the model's pieces.
+    pub patch: usize,
+    /// Which edge.
+    pub edge: Edge,
+}
+
+/// Two patch edges on the same curve, with their continuity.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Seam {
+    /// The first patch's edge.
+    pub a: PatchEdge,
+    /// The second patch's edge.
+    pub b: PatchEdge,
+    /// The verdict.
+    pub verdict: SeamVerdict,
+    /// More than two patch edges lie on this curve.
+    pub non_manifold: bool,
+}
+
+/// The audit's findings.
+#[derive(Clone, Debug, Default)]
+pub struct Audit {
+    /// Pieces audited (rect patches).
+    pub patches: usize,
+    /// Pieces not audited (curves, tri patches), with their indices.
+    pub not_rect: Vec<usize>,
+    /// Shared boundaries.
+    pub seams: Vec<Seam>,
+    /// Edges no other patch shares.
+    pub open_edges: Vec<PatchEdge>,
+    /// Collapsed edges and the point they collapse to.
+    pub degenerate_edges: Vec<(PatchEdge, Vec<Q>)>,
+    /// Classes of coincident patches (same surface piece up to
+    /// reparameterization), two or more each.
+    pub duplicates: Vec<Vec<usize>>,
+}
+
+fn rects(model: &Model) -> (Vec<(usize, &RectPatch<Q>)>, Vec<usize>) {
+    let mut out = Vec::new();
+    let mut other = Vec::new();
+    for (k, p) in model.pieces.iter().enumerate() {
+        match &p.patch {
+            Patch::Rect(r) => out.push((k, r)),
+            _ => other.push(k),
+        }
+    }
+    (out, other)
+}
+
+/// The collapse point of a boundary curve whose control points all project
+/// to one point, if it is one.
+fn collapsed(r: &RectPatch<Q>, e: Edge) -> Option<Vec<Q>> {
+    let c = boundary_curve(r, e);
+    let first = &c.ctrl()[0];
+    c.ctrl()
+        .iter()
+        .all(|p| p.same_projective_point(first, Tolerance::EXACT))
+        .then(|| first.project().unwrap_or_default())
+}
+
+/// Run `f` on every item, in parallel on the available cores, keeping order.
+fn par_map<I: Sync, O: Send>(items: &[I], f: impl Fn(&I) -> O + Sync) -> Vec<O> {
+    let threads = std::thread::available_parallelism()
+        .map_or(1, usize::from)
+        .min(8);
+    let chunk = items.len().div_ceil(threads).max(1);
+    std::thread::scope(|s| {
+        let handles: Vec<_> = items
+            .chunks(chunk)
+            .map(|c| s.spawn(|| c.iter().map(&f).collect::<Vec<O>>()))
+            .collect();
+        handles
+            .into_iter()
+            .flat_map(|h| h.join().expect("audit worker panicked"))
+            .collect()
+    })
+}
+
+/// The edges' canonical keys (or collapse points).
+type EdgeKey = Result<Result<CanonicalKey, Vec<Q>>, Error>;
+
+/// Audit the rect patches of `model`.
+///
+/// # Errors
+///
+/// [`Error::Weight`] for a non-positive weight; [`Error::Shape`] for
+/// patches of dimension other than 2 or 3 that share an edge.
+pub fn audit(model: &Model) -> Result<Audit, Error> {
+    let (rects, not_rect) = rects(model);
+    let edges: Vec<(PatchEdge, &RectPatch<Q>)> = rects
+        .iter()
+        .flat_map(|&(k, r)| Edge::ALL.map(|edge| (PatchEdge { patch: k, edge }, r)))
+        .collect();
+    let keys: Vec<EdgeKey> = par_map(&edges, |(pe, r)| match collapsed(r, pe.edge) {
+        Some(point) => Ok(Err(point)),
+        None => canonical_key(&Patch::Curve(boundary_curve(r, pe.edge))).map(Ok),
+    });
+    let mut out = Audit {
+        patches: rects.len(),
+        not_rect,
+        ..Audit::default()
+    };
+    let mut groups: HashMap<CanonicalKey, Vec<PatchEdge>> = HashMap::new();
+    for ((pe, _), key) in edges.iter().zip(keys) {
+        match key? {
+            Err(point) => out.degenerate_edges.push((*pe, point)),
+            Ok(k) => groups.entry(k).or_default().push(*pe),
+        }
+    }
+    let mut groups: Vec<Vec<PatchEdge>> = groups.into_values().collect();
+    groups.sort();
+    let mut pairs = Vec::new();
+    for g in &groups {
+        if g.len() == 1 {
+            out.open_edges.push(g[0]);
+        }
+        for (i, a) in g.iter().enumerate() {
+            for b in &g[i + 1..] {
+                pairs.push((*a, *b, g.len() > 2));
+            }
+        }
+    }
+    out.open_edges.sort();
+    let rect_of = |k: usize| match &model.pieces[k].patch {
+        Patch::Rect(r) => r,
+        _ => unreachable!("only rect edges are grouped"),
+    };
+    let verdicts = par_map(&pairs, |(a, b, _)| {
+        seam_continuity(rect_of(a.patch), a.edge, rect_of(b.patch), b.edge)
+    });
+    for ((a, b, non_manifold), v) in pairs.into_iter().zip(verdicts) {
+        out.seams.push(Seam {
+            a,
+            b,
+            verdict: v?,
+            non_manifold,
+        });
+    }
+    let patch_keys = par_map(&rects, |(_, r)| canonical_key(&Patch::Rect((*r).clone())));
+    let mut classes: HashMap<CanonicalKey, Vec<usize>> = HashMap::new();
+    for ((k, _), key) in rects.iter().zip(patch_keys) {
+        classes.entry(key?).or_default().push(*k);
+    }
+    out.duplicates = classes.into_values().filter(|c| c.len() > 1).collect();
+    out.duplicates.sort();
+    Ok(out)
+}
+
+impl Audit {
+    /// Seams by verdict: `(G0, G1, G2, undecided)`.
+    pub fn counts(&self) -> [usize; 4] {
+        let mut c = [0; 4];
+        for s in &self.seams {
+            c[s.verdict.continuity.map_or(3, |v| v as usize)] += 1;
+        }
+        c
+    }
+
+    /// The one-line summary.
+    pub fn summary(&self) -> String {
+        let [g0, g1, g2, u] = self.counts();
+        format!(
+            "{} patches: {} shared edges (G2 {g2}, G1 {g1}, G0 {g0}, undecided {u}), {} open edges, {} degenerate edges, {} duplicate classes",
+            self.patches,
+            self.seams.len(),
+            self.open_edges.len(),
+            self.degenerate_edges.len(),
+            self.duplicates.len()
+        )
+    }
+
+    /// The audit as JSON, with each patch's origin from `model`.
+    pub fn to_json(&self, model: &Model) -> Value {
+        let pe = |e: &PatchEdge| json!({"patch": e.patch, "edge": e.edge.to_string(), "origin": model.pieces[e.patch].origin.to_json()});
+        let seams: Vec<Value> = self
+            .seams
+            .iter()
+            .map(|s| {
+                json!({
+                    "a": pe(&s.a),
+                    "b": pe(&s.b),
+                    "continuity": s.verdict.continuity.map_or(Value::Null, |c| json!(c.to_string())),
+                    "reason": s.verdict.reason,
+                    "reversed": s.verdict.reversed,
+                    "reparameterized": s.verdict.reparameterized,
+                    "non_manifold": s.non_manifold,
+                })
+            })
+            .collect();
+        let [g0, g1, g2, u] = self.counts();
+        json!({
+            "summary": self.summary(),
+            "patches": self.patches,
+            "counts": {"G0": g0, "G1": g1, "G2": g2, "undecided": u},
+            "seams": seams,
+            "open_edges": self.open_edges.iter().map(pe).collect::<Vec<_>>(),
+            "degenerate_edges": self.degenerate_edges.iter().map(|(e, p)| {
+                let mut v = pe(e);
+                v["point"] = point_to_json(p);
+                v
+            }).collect::<Vec<_>>(),
+            "duplicates": self.duplicates,
+            "same_surface": same_surface(model),
+            "not_audited": self.not_rect,
+            "skipped_entities": model.skipped,
+            "invalid_entities": model.invalid.iter().map(|(id, r)| json!({"entity": format!("#{id}"), "reason": r})).collect::<Vec<_>>(),
+            "faces_on_other_surfaces": model.other_faces.len(),
+        })
+    }
+}
+
+/// Pieces that come from one source surface (one STEP entity or one NURBS
+/// object), and STEP faces that share one surface entity.
+fn same_surface(model: &Model) -> Vec<Value> {
+    let mut by_source: BTreeMap<(Option<u64>, Option<usize>), Vec<usize>> = BTreeMap::new();
+    for (k, p) in model.pieces.iter().enumerate() {
+        let src = p.origin.source();
+        if src != (None, None) {
+            by_source.entry(src).or_default().push(k);
+        }
+    }
+    by_source
+        .into_iter()
+        .filter_map(|((entity, element), pieces)| {
+            let faces = &model.pieces[pieces[0]].origin.faces;
+            (pieces.len() > 1 || faces.len() > 1).then(|| {
+                json!({
+                    "entity": entity.map(|e| format!("#{e}")),
+                    "element": element,
+                    "faces": faces.iter().map(|f| format!("#{f}")).collect::<Vec<_>>(),
+                    "patches": pieces,
+                })
+            })
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests;
