@@ -132,6 +132,20 @@ fn mobius_keeps_points(in_u: bool) -> Claim {
     )
 }
 
+/// Both sides of the Möbius maps (2)(3) applied together, on the fully
+/// symbolic (m, n) net: the new patch at (s, t), `H̃(s, t)`, and the old one
+/// at the mapped homogeneous parameters, `H(α(1−s), (1−α)s; β(1−t), (1−β)t)`.
+/// They are equal as polynomials; this is also the identity of the SymPy
+/// peer benchmark (`benches/poly.rs`, `benches/peers/`).
+pub fn mobius_uv_sides(m: usize, n: usize) -> (HPoint<Poly>, HPoint<Poly>) {
+    let p = sym_net(m, n);
+    let (a, b, s, t) = (v("α"), v("β"), v("s"), v("t"));
+    let hom = |x: &Poly, y: &Poly| [x.clone() * &(one() - y), (one() - x) * y];
+    let new = p.mobius_u(&a).mobius_v(&b).eval_hom(&s, &t);
+    let old = p.eval_hom_projective(&hom(&a, &s), &hom(&b, &t));
+    (new, old)
+}
+
 /// (4): ω̃_{i,j} = ω_{i,j}(1 − α)^i α^{m−i}(1 − β)^j β^{n−j}.
 fn weight_rule() -> Claim {
     for_all_bidegrees(
