@@ -8,7 +8,7 @@
 //! `w_{ij}` = ω_{ij}) is a symbol. Every algorithm involved acts on the
 //! homogeneous coordinates linearly and coordinate by coordinate, so an
 //! identity for this net holds for nets of any dimension. Bidegrees: every
-//! (m, n) with 1 ≤ m, n ≤ 4.
+//! (m, n) with 1 ≤ m, n ≤ `MAX` (8).
 
 use super::{Claim, Verdict};
 use crate::bernstein::{bernstein, bernstein_all};
@@ -23,7 +23,7 @@ use num_traits::Zero;
 
 const SRC: &str = "000 Yang & Yong";
 /// The largest m and n checked.
-const MAX: usize = 4;
+const MAX: usize = 8;
 
 /// The fully symbolic 1D net of bidegree (m, n): `ctrl[i][j] = (p_ij, w_ij)`.
 pub(crate) fn sym_net(m: usize, n: usize) -> RectPatch<Poly> {
@@ -70,7 +70,7 @@ fn for_all_bidegrees(
         .find_map(|(m, n)| check(m, n).map(|why| format!("(m, n) = ({m}, {n}): {why}")));
     let holds = failure.is_none();
     Claim::check(
-        claim,
+        &format!("{claim} — checked for every 1 ≤ m, n ≤ {MAX}"),
         source,
         expected,
         holds,
@@ -78,6 +78,7 @@ fn for_all_bidegrees(
             format!("identity in Q[symbols] for every (m, n) ≤ ({MAX}, {MAX}), fully symbolic net")
         }),
     )
+    .with_bound(format!("1 ≤ m, n ≤ {MAX}"))
 }
 
 fn differ(a: &HPoint<Poly>, b: &HPoint<Poly>) -> Option<String> {
@@ -146,23 +147,33 @@ pub fn mobius_uv_sides(m: usize, n: usize) -> (HPoint<Poly>, HPoint<Poly>) {
     (new, old)
 }
 
+/// (4)'s factor `(1 − α)^i α^{m−i}(1 − β)^j β^{n−j}` for entry (i, j).
+fn weight_factor(i: usize, j: usize, m: usize, n: usize) -> Poly {
+    let (a, b) = (v("α"), v("β"));
+    (one() - &a).pow(i as u32)
+        * a.pow((m - i) as u32)
+        * (one() - &b).pow(j as u32)
+        * b.pow((n - j) as u32)
+}
+
 /// (4): ω̃_{i,j} = ω_{i,j}(1 − α)^i α^{m−i}(1 − β)^j β^{n−j}.
 fn weight_rule() -> Claim {
+    weight_rule_with(weight_factor)
+}
+
+/// (4) with the factor of entry (i, j) given by `factor(i, j, m, n)` (the
+/// tests feed wrong ones through the same code).
+fn weight_rule_with(factor: impl Fn(usize, usize, usize, usize) -> Poly) -> Claim {
     for_all_bidegrees(
         "weight rule (4): after (2)(3) ω̃_{i,j} = ω_{i,j}(1−α)^i α^{m−i}(1−β)^j β^{n−j}, points P_{i,j} unchanged",
         &format!("{SRC} eq. (4)"),
         Verdict::Proved,
         |m, n| {
             let p = sym_net(m, n);
-            let (a, b) = (v("α"), v("β"));
-            let q = p.mobius_u(&a).mobius_v(&b);
+            let q = p.mobius_u(&v("α")).mobius_v(&v("β"));
             for i in 0..=m {
                 for j in 0..=n {
-                    let f = (one() - &a).pow(i as u32)
-                        * a.pow((m - i) as u32)
-                        * (one() - &b).pow(j as u32)
-                        * b.pow((n - j) as u32);
-                    let want = p.ctrl()[i][j].scale(&f);
+                    let want = p.ctrl()[i][j].scale(&factor(i, j, m, n));
                     if let Some(d) = differ(&q.ctrl()[i][j], &want) {
                         return Some(format!("entry ({i},{j}): {d}"));
                     }
@@ -268,13 +279,14 @@ fn sym_quadratic() -> Quadratic<Poly> {
 /// (9)–(17): the new patch at (s, t) is the old one at (u(s,t), v(s,t)):
 /// `H̃(s, t) = H(α(1−s), (1−α)s; β(1−t), (1−β)t)`, a homogeneous identity.
 ///
-/// How it is established (stated bound: every (m, n) ≤ (4, 4)): α1, α2, β1,
+/// How it is established (every (m, n) ≤ (MAX, MAX)): α1, α2, β1,
 /// β2 are symbols. The map from the net to either side is linear and acts on
 /// each homogeneous coordinate alike, so it suffices to check each basis net
 /// (one weight 1 at (i, j), everything else 0); the old side is definition
 /// (1) at the homogeneous parameters of the map. Both sides are polynomials of
 /// degree ≤ m + n in s and in t, so agreement on the (m+n+1)² grid of
-/// rational (s, t) = (k/(m+n), l/(m+n)) proves them equal for all s, t.
+/// rational (s, t) = (k/(m+n), l/(m+n)) proves them equal for all s, t (the
+/// degree bound is computed by [`grid_suffices`]).
 fn quadratic_keeps_points() -> Claim {
     for_all_bidegrees(
         "quadratic reparameterization (9)-(17) keeps every point: new(s, t) = old(u(s,t), v(s,t)) (homogeneous identity, common factor E^m F^n), for all α1, α2, β1, β2, s, t",
@@ -283,6 +295,9 @@ fn quadratic_keeps_points() -> Claim {
         |m, n| {
             let q = sym_quadratic();
             let d = m + n;
+            if let Some(why) = grid_suffices(&q, m, n) {
+                return Some(why);
+            }
             let grid: Vec<BigRational> = (0..=d).map(|k| ratio(k as i64, d as i64)).collect();
             let basis: Vec<Vec<BigRational>> = grid.iter().map(|x| bernstein_all(d, x)).collect();
             // Definition (1) at homogeneous parameters, per grid point:
@@ -325,6 +340,19 @@ fn quadratic_keeps_points() -> Claim {
             None
         },
     )
+}
+
+/// Why the (m+n+1)² grid of [`quadratic_keeps_points`] decides the
+/// identity, computed: the new side is a (d, d) patch (d = m + n, checked
+/// there), the old side `U_i(hu)·V_j(hv)` has degree at most
+/// `m·deg(hu) + n·deg(hv)` in s and in t; `None` when both are ≤ d.
+fn grid_suffices(q: &Quadratic<Poly>, m: usize, n: usize) -> Option<String> {
+    let (hu, hv) = q.param_hom(&v("s"), &v("t"));
+    let deg = |h: &[Poly; 2], x: &str| h.iter().map(|p| p.degree_in(x)).max().unwrap_or(0) as usize;
+    ["s", "t"].into_iter().find_map(|x| {
+        let bound = m * deg(&hu, x) + n * deg(&hv, x);
+        (bound > m + n).then(|| format!("the old side may have degree {bound} > {} in {x}: the grid would not suffice", m + n))
+    })
 }
 
 /// `C(m,i) x1^i x0^(m−i)`, `i = 0…m`: the Bernstein basis at the homogeneous
@@ -508,12 +536,13 @@ fn bernstein_product_eq15() -> Claim {
         }
     }
     Claim::check(
-        "eq. (15)'s product rule B_{i,m}(s)B_{l,n}(s) = C(m,i)C(n,l)/C(m+n,i+l)·B_{i+l,m+n}(s), hence bidegree (m+n, m+n)",
+        &format!("eq. (15)'s product rule B_{{i,m}}(s)B_{{l,n}}(s) = C(m,i)C(n,l)/C(m+n,i+l)·B_{{i+l,m+n}}(s), hence bidegree (m+n, m+n) — checked for every m, n ≤ {MAX}"),
         &format!("{SRC} eq. (15)"),
         Verdict::Proved,
         bad.is_none(),
         bad.unwrap_or_else(|| format!("identity in s for all degrees ≤ {MAX}")),
     )
+    .with_bound(format!("m, n ≤ {MAX}"))
 }
 
 /// Appendix 1: each printed c_{l,i} (bicubic) against ours (Display of Poly).
@@ -704,4 +733,24 @@ fn denominators() -> Vec<Claim> {
             "cross-multiplied identity in Q[s, t, β1, β2]".into(),
         ),
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    //! The verdicts discriminate: a wrong formula fed through the same
+    //! claim code is refuted.
+    use super::*;
+
+    #[test]
+    fn wrong_weight_rules_are_refuted() {
+        assert_eq!(weight_rule().verdict, Verdict::Proved);
+        // Index shifted: (1 − α)^{m−i} α^i, the exponents of the other end.
+        let swapped = |i: usize, j: usize, m: usize, n: usize| weight_factor(m - i, j, m, n);
+        assert_eq!(weight_rule_with(swapped).verdict, Verdict::Refuted);
+        // Sign flipped in one factor: (α − 1)^i.
+        let flipped = |i: usize, j: usize, m: usize, n: usize| {
+            weight_factor(i, j, m, n) * (-one()).pow(i as u32)
+        };
+        assert_eq!(weight_rule_with(flipped).verdict, Verdict::Refuted);
+    }
 }

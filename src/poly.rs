@@ -604,4 +604,78 @@ mod tests {
         assert_eq!(p.to_string(), "-α1*α2^3 + 1/3*α2 - 1");
         assert_eq!(Poly::zero().to_string(), "0");
     }
+
+    mod laws {
+        //! Ring laws, substitution, reduction and derivative on random
+        //! polynomials, cross-checked against evaluation in `BigRational`
+        //! (an independent path: no merge, no heap).
+        use super::*;
+        use proptest::prelude::*;
+
+        const VARS: [&str; 3] = ["x", "y", "z"];
+
+        /// A polynomial with up to 6 terms, exponents ≤ 3, coefficients
+        /// n/d with |n| ≤ 40 (sometimes far beyond i128 after products).
+        fn poly() -> impl Strategy<Value = Poly> {
+            let term = (-40i64..=40, 1i64..=6, [0u32..=3, 0u32..=3, 0u32..=3]);
+            proptest::collection::vec(term, 0..6).prop_map(|terms| {
+                terms.into_iter().fold(Poly::zero(), |acc, (n, d, e)| {
+                    let m = VARS
+                        .iter()
+                        .zip(e)
+                        .fold(ratio::<Poly>(n, d), |m, (v, k)| m * Poly::var(v).pow(k));
+                    acc + m
+                })
+            })
+        }
+
+        fn point() -> impl Strategy<Value = Vec<(&'static str, BigRational)>> {
+            [(-9i64..=9, 1i64..=5), (-9i64..=9, 1i64..=5), (-9i64..=9, 1i64..=5)].prop_map(|v| {
+                VARS.iter().zip(v).map(|(n, (a, b))| (*n, ratio(a, b))).collect()
+            })
+        }
+
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(64))]
+
+            #[test]
+            fn ring_laws(a in poly(), b in poly(), c in poly()) {
+                prop_assert_eq!(a.clone() * &b, b.clone() * &a);
+                prop_assert_eq!((a.clone() * &b) * &c, a.clone() * (b.clone() * &c));
+                prop_assert_eq!((a.clone() + &b) * &c, a.clone() * &c + b.clone() * &c);
+                prop_assert_eq!((a.clone() + &b) - &b, a.clone());
+                prop_assert_eq!(a.clone() + (-a.clone()), Poly::zero());
+            }
+
+            #[test]
+            fn evaluation_is_a_homomorphism(a in poly(), b in poly(), at in point()) {
+                let ev = |p: &Poly| p.eval(&at).expect("every variable has a value");
+                prop_assert_eq!(ev(&(a.clone() * &b)), ev(&a) * ev(&b));
+                prop_assert_eq!(ev(&(a.clone() - &b)), ev(&a) - ev(&b));
+                prop_assert_eq!(ev(&a.pow(3)), num_traits::pow(ev(&a), 3));
+            }
+
+            #[test]
+            fn substitution_and_derivative(a in poly(), b in poly(), at in point()) {
+                let ev = |p: &Poly| p.eval(&at).expect("every variable has a value");
+                // a(x := b) at the point is a at (b(point), y, z).
+                let mut moved = at.clone();
+                moved[0].1 = ev(&b);
+                prop_assert_eq!(ev(&a.subst("x", &b)), a.eval(&moved).expect("values"));
+                // Leibniz rule.
+                let d = |p: &Poly| p.derivative("y");
+                prop_assert_eq!(d(&(a.clone() * &b)), d(&a) * &b + a.clone() * &d(&b));
+            }
+
+            #[test]
+            fn reduce_power_is_a_normal_form(a in poly(), q in poly(), r in poly()) {
+                // Relation x² = r with r of degree < 2 in x.
+                let r = r.coeff_of("x", 0) + r.coeff_of("x", 1) * Poly::var("x");
+                let rel = Poly::var("x").pow(2) - &r;
+                let red = a.reduce_power("x", 2, &r);
+                prop_assert!(red.degree_in("x") < 2);
+                prop_assert_eq!((a.clone() + q * &rel).reduce_power("x", 2, &r), red);
+            }
+        }
+    }
 }
