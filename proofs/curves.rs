@@ -62,7 +62,9 @@ fn over_degrees(
         degrees.first().unwrap_or(&0),
         degrees.last().unwrap_or(&0)
     );
-    let detail = failure.clone().unwrap_or_else(|| format!("{how}; each n an identity"));
+    let detail = failure
+        .clone()
+        .unwrap_or_else(|| format!("{how}; each n an identity"));
     let claim = format!("{claim} — checked for every {range}");
     Claim::check(&claim, source, Verdict::Proved, failure.is_none(), detail).with_bound(range)
 }
@@ -161,7 +163,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "subdivision at τ keeps every point: left(s) = H(τs), right(s) = H(τ + s(1−τ))",
             "001 lecture, de Casteljau算法 (ours: subdivision)",
-            1..=10,
+            1..=8,
             "symbolic τ, s and c_i",
             |n| {
                 let (tau, s) = (v("tau"), v("s"));
@@ -175,7 +177,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "sub-segment [a, b] keeps every point: seg(s) = H(a + s(b − a))",
             "ours",
-            1..=8,
+            1..=6,
             "symbolic a, b, s and c_i",
             |n| {
                 let (a, b, s) = (v("a"), v("b"), v("s"));
@@ -216,7 +218,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "blossom: symmetric, affine in each argument, diagonal b[t,…,t] = H(t), dual functional b[0^{n−i}, 1^i] = c_i",
             "001 lecture (de Casteljau's multilinear form); ours",
-            1..=10,
+            1..=7,
             "symbolic arguments u_1…u_n, t and c_i; symmetry by swapping adjacent arguments; affinity as degree ≤ 1 in each u_j",
             |n| {
                 let c = sym_rational(n, 1);
@@ -322,7 +324,7 @@ fn derivative_claims() -> Vec<Claim> {
         over_degrees(
             "derivs_hom (Leibniz rule, fraction-free) gives the derivatives of X = H/w: X⁽ᵏ⁾ = M_k/w^{k+1}",
             "ours",
-            1..=6,
+            1..=4,
             "symbolic t, q_i, w_i; M_0 = H and the quotient rule M_{k+1} = M_k' w − (k+1) w' M_k checked for k = 0…2, weight entries w^{k+1}",
             |n| {
                 let c = sym_rational(n, 1);
@@ -369,7 +371,7 @@ fn curvature_claims() -> Vec<Claim> {
         over_degrees(
             "end curvature: k(0) = (n−1)/n · |(P1−P0) × (P2−P1)| / |P1−P0|³ and k(1) = (n−1)/n · |(Pn−1−Pn−2) × (Pn−Pn−1)| / |Pn−Pn−1|³",
             "001 lecture, 二阶导数 (曲率公式)",
-            2..=10,
+            2..=8,
             "symbolic 3D P_i: the squared printed formula (explicit cross product) cross-multiplied with κ² = |X'×X''|²/|X'|⁶ from the exact derivatives at t = 0 and t = 1",
             |n| {
                 let c = sym_polynomial(n, 3);
@@ -391,7 +393,7 @@ fn curvature_claims() -> Vec<Claim> {
         over_degrees(
             "rational end curvature: κ(0) = (n−1)/n · (w0 w2/w1²) · |(P1−P0) × (P2−P1)| / |P1−P0|³ (and at t = 1 with the indices mirrored)",
             "ours (extends 001 lecture's k(0), k(1))",
-            2..=8,
+            2..=6,
             "symbolic 2D q_i and w_i: end_curvature_sq_frac cross-multiplied with κ² from the exact rational derivatives at t = 0 and t = 1",
             |n| {
                 let c = sym_rational(n, 2);

@@ -375,9 +375,9 @@ fn eq2_semicircle() -> Vec<Claim> {
         polys.push(red(h2.coords[i].clone() * &one_l - &b2));
     }
     let ours_w2 = red(h2.weight().clone() * int(3) - &(r.pow(4))); // ω₂ = r²/3 ⇔ 3·w₂ = r²·r²
-    // Cubes, free of the radical: ω₂ = w₂/r², so ω₂³·(1 − λ)² = w₂³ mod
-    // r³ = 1 − λ (ours, from the construction) against the printed
-    // ω₂³ = (1/27)(−λ)², both times (1 − λ)², compared at λ = 0.
+                                                                   // Cubes, free of the radical: ω₂ = w₂/r², so ω₂³·(1 − λ)² = w₂³ mod
+                                                                   // r³ = 1 − λ (ours, from the construction) against the printed
+                                                                   // ω₂³ = (1/27)(−λ)², both times (1 − λ)², compared at λ = 0.
     let ours_cube = red(h2.weight().pow(3));
     let printed_cube = l.pow(2) * &one_l.pow(2) * ratio::<Poly>(1, 27);
     let at_zero = |p: &Poly| p.eval(&[("lambda", BigRational::from_i64(0))]);

@@ -135,7 +135,13 @@ pub struct Claim {
 
 impl Claim {
     /// The one constructor: stamps the elapsed time.
-    fn new(claim: &str, source: &str, verdict: Verdict, expected: Verdict, detail: String) -> Claim {
+    fn new(
+        claim: &str,
+        source: &str,
+        verdict: Verdict,
+        expected: Verdict,
+        detail: String,
+    ) -> Claim {
         Claim {
             claim: claim.into(),
             source: source.into(),
@@ -239,7 +245,13 @@ impl Claim {
         } else {
             Verdict::Mismatch
         };
-        Claim::new(claim, source, verdict, expected, format!("printed {printed}; ours {ours}"))
+        Claim::new(
+            claim,
+            source,
+            verdict,
+            expected,
+            format!("printed {printed}; ours {ours}"),
+        )
     }
 
     /// Does the computed verdict match the expected one?

@@ -122,7 +122,11 @@ impl Poly {
 
     /// The variable named `name`.
     pub fn var(name: &str) -> Poly {
-        Poly::term(Monomial::power(intern(name), 1), Int::Small(1), Int::Small(1))
+        Poly::term(
+            Monomial::power(intern(name), 1),
+            Int::Small(1),
+            Int::Small(1),
+        )
     }
 
     /// `n` variables `prefix0, prefix1, …`.
@@ -190,12 +194,21 @@ impl Poly {
     }
 
     fn degree_in_id(&self, id: u32) -> u32 {
-        self.terms.iter().map(|(m, _)| m.exponent(id)).max().unwrap_or(0)
+        self.terms
+            .iter()
+            .map(|(m, _)| m.exponent(id))
+            .max()
+            .unwrap_or(0)
     }
 
     /// Total degree (0 for constants and for the zero polynomial).
     pub fn total_degree(&self) -> u32 {
-        let d = self.terms.iter().map(|(m, _)| m.total_degree()).max().unwrap_or(0);
+        let d = self
+            .terms
+            .iter()
+            .map(|(m, _)| m.total_degree())
+            .max()
+            .unwrap_or(0);
         u32::try_from(d).unwrap_or(u32::MAX)
     }
 
@@ -360,7 +373,12 @@ impl Poly {
     fn add_signed(&self, other: &Poly, negate: bool) -> Poly {
         let sign = |f: Int| if negate { -f } else { f };
         if self.den == other.den {
-            let t = terms::add(&self.terms, &Int::Small(1), &other.terms, &sign(Int::Small(1)));
+            let t = terms::add(
+                &self.terms,
+                &Int::Small(1),
+                &other.terms,
+                &sign(Int::Small(1)),
+            );
             return Poly::normalized(t, self.den.clone());
         }
         let g = gcd(&self.den, &other.den);
@@ -468,6 +486,33 @@ impl Neg for Poly {
     }
 }
 
+/// Balanced pairwise summation: adding k polynomials of N terms in all
+/// costs O(N log k) term moves, where a left fold `acc + p` costs O(N k)
+/// (every addition merges the whole accumulator).
+///
+/// ```
+/// use exact_bezier::Poly;
+/// let x = Poly::var("x");
+/// let s: Poly = (0..4).map(|k| x.pow(k)).sum();
+/// assert_eq!(s, Poly::from_int(1) + x.clone() + x.pow(2) + x.pow(3));
+/// ```
+impl std::iter::Sum for Poly {
+    fn sum<I: Iterator<Item = Poly>>(iter: I) -> Poly {
+        let mut level: Vec<Poly> = iter.collect();
+        while level.len() > 1 {
+            let mut pairs = level.into_iter();
+            level = Vec::new();
+            while let Some(a) = pairs.next() {
+                level.push(match pairs.next() {
+                    Some(b) => a + b,
+                    None => a,
+                });
+            }
+        }
+        level.pop().unwrap_or_else(Poly::zero)
+    }
+}
+
 impl Scalar for Poly {
     fn from_i64(n: i64) -> Self {
         Poly::from_int(n)
@@ -486,7 +531,10 @@ impl fmt::Debug for Poly {
 /// Deterministic display order of a monomial: by variable name, then by
 /// descending exponent (independent of interning order).
 fn sort_key(m: &Monomial) -> Vec<(String, i64)> {
-    let mut key: Vec<(String, i64)> = m.factors().map(|(v, e)| (name_of(v), -i64::from(e))).collect();
+    let mut key: Vec<(String, i64)> = m
+        .factors()
+        .map(|(v, e)| (name_of(v), -i64::from(e)))
+        .collect();
     key.sort();
     key
 }
@@ -498,8 +546,11 @@ impl fmt::Display for Poly {
         if self.terms.is_empty() {
             return write!(f, "0");
         }
-        let mut terms: Vec<(&Monomial, BigRational)> =
-            self.terms.iter().map(|(m, c)| (m, self.rational(c))).collect();
+        let mut terms: Vec<(&Monomial, BigRational)> = self
+            .terms
+            .iter()
+            .map(|(m, c)| (m, self.rational(c)))
+            .collect();
         terms.sort_by(|a, b| {
             b.0.total_degree().cmp(&a.0.total_degree()).then_with(|| {
                 // Higher powers of alphabetically earlier variables first.
@@ -630,8 +681,16 @@ mod tests {
         }
 
         fn point() -> impl Strategy<Value = Vec<(&'static str, BigRational)>> {
-            [(-9i64..=9, 1i64..=5), (-9i64..=9, 1i64..=5), (-9i64..=9, 1i64..=5)].prop_map(|v| {
-                VARS.iter().zip(v).map(|(n, (a, b))| (*n, ratio(a, b))).collect()
+            [
+                (-9i64..=9, 1i64..=5),
+                (-9i64..=9, 1i64..=5),
+                (-9i64..=9, 1i64..=5),
+            ]
+            .prop_map(|v| {
+                VARS.iter()
+                    .zip(v)
+                    .map(|(n, (a, b))| (*n, ratio(a, b)))
+                    .collect()
             })
         }
 

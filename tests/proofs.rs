@@ -23,10 +23,19 @@ fn check(name: &str) {
         off.join("\n")
     );
     for c in &claims {
-        assert_ne!(c.expected, Verdict::Broken, "{}: broken is never expected", c.claim);
+        assert_ne!(
+            c.expected,
+            Verdict::Broken,
+            "{}: broken is never expected",
+            c.claim
+        );
         // A claim with a degree bound states it in its text.
         if let Some(bound) = &c.bound {
-            assert!(c.claim.contains(bound.as_str()), "{}: text lacks its bound {bound}", c.claim);
+            assert!(
+                c.claim.contains(bound.as_str()),
+                "{}: text lacks its bound {bound}",
+                c.claim
+            );
         }
     }
 }
@@ -38,7 +47,9 @@ fn json_has_bound_and_time() {
     let json = claims[0].to_json("reduction");
     assert_eq!(json["family"], "reduction");
     assert!(json["elapsed_ms"].as_f64().is_some_and(|t| t >= 0.0));
-    assert!(json["degree_bound"].as_str().is_some_and(|b| b.contains('n')));
+    assert!(json["degree_bound"]
+        .as_str()
+        .is_some_and(|b| b.contains('n')));
 }
 
 macro_rules! families {

@@ -26,7 +26,10 @@ pub fn run(a: &Args) -> i32 {
             Some(f) => run_families(&[f]),
             None => {
                 let names: Vec<&str> = FAMILIES.iter().map(|f| f.name).collect();
-                eprintln!("error: no proof family {name:?}; families: {}", names.join(", "));
+                eprintln!(
+                    "error: no proof family {name:?}; families: {}",
+                    names.join(", ")
+                );
                 return 2;
             }
         },

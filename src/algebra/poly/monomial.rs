@@ -57,6 +57,13 @@ impl Monomial {
     /// The product: a merge of the two factor lists, adding exponents of a
     /// common variable. **Panics** if an exponent exceeds `u32::MAX`.
     pub(crate) fn mul(&self, other: &Monomial) -> Monomial {
+        match (self.0.len(), other.0.len()) {
+            (_, 0) => return self.clone(),
+            (0, _) => return other.clone(),
+            (_, 1) => return self.times_factor(other.0[0]),
+            (1, _) => return other.times_factor(self.0[0]),
+            _ => {}
+        }
         let (a, b) = (&self.0, &other.0);
         let mut out = SmallVec::with_capacity(a.len() + b.len());
         let (mut i, mut j) = (0, 0);
@@ -82,17 +89,45 @@ impl Monomial {
         Monomial(out)
     }
 
+    /// The product with the single factor `w` (the common case of
+    /// multiplying by `s`, `α`, …): one insertion or exponent bump.
+    fn times_factor(&self, w: u64) -> Monomial {
+        let v = var_of(w);
+        let mut out = self.0.clone();
+        match out.iter().position(|&x| var_of(x) >= v) {
+            Some(k) if var_of(out[k]) == v => {
+                let e = exp_of(out[k])
+                    .checked_add(exp_of(w))
+                    .expect("monomial exponent overflows u32");
+                out[k] = word(v, e);
+            }
+            Some(k) => out.insert(k, w),
+            None => out.push(w),
+        }
+        Monomial(out)
+    }
+
     /// Exponent of variable `var` (0 if absent).
     pub(crate) fn exponent(&self, var: u32) -> u32 {
-        self.factors().find(|(v, _)| *v == var).map_or(0, |(_, e)| e)
+        self.factors()
+            .find(|(v, _)| *v == var)
+            .map_or(0, |(_, e)| e)
     }
 
     /// The monomial with the exponent of `var` replaced by `exp`. Among
     /// monomials with equal exponents of `var`, this keeps their order.
     pub(crate) fn with_exponent(&self, var: u32, exp: u32) -> Monomial {
-        let mut out: SmallVec<[u64; 6]> = self.0.iter().copied().filter(|&w| var_of(w) != var).collect();
+        let mut out: SmallVec<[u64; 6]> = self
+            .0
+            .iter()
+            .copied()
+            .filter(|&w| var_of(w) != var)
+            .collect();
         if exp > 0 {
-            let at = out.iter().position(|&w| var_of(w) > var).unwrap_or(out.len());
+            let at = out
+                .iter()
+                .position(|&w| var_of(w) > var)
+                .unwrap_or(out.len());
             out.insert(at, word(var, exp));
         }
         Monomial(out)
@@ -109,14 +144,18 @@ mod tests {
     use super::*;
 
     fn m(f: &[(u32, u32)]) -> Monomial {
-        f.iter()
-            .fold(Monomial::default(), |acc, &(v, e)| acc.mul(&Monomial::power(v, e)))
+        f.iter().fold(Monomial::default(), |acc, &(v, e)| {
+            acc.mul(&Monomial::power(v, e))
+        })
     }
 
     #[test]
     fn product_adds_exponents() {
         let p = m(&[(0, 1), (3, 2)]).mul(&m(&[(1, 4), (3, 1)]));
-        assert_eq!(p.factors().collect::<Vec<_>>(), vec![(0, 1), (1, 4), (3, 3)]);
+        assert_eq!(
+            p.factors().collect::<Vec<_>>(),
+            vec![(0, 1), (1, 4), (3, 3)]
+        );
         assert_eq!(p.total_degree(), 8);
         assert_eq!(p.exponent(3), 3);
         assert_eq!(p.with_exponent(3, 0), m(&[(0, 1), (1, 4)]));
@@ -131,7 +170,14 @@ mod tests {
         assert!(one < y && y < x && x < m(&[(0, 2)]));
         assert!(m(&[(0, 1), (1, 1)]) > x && m(&[(0, 1), (1, 1)]) < m(&[(0, 2)]));
         // a < b ⇒ a·c < b·c on a few samples.
-        let all = [one.clone(), x.clone(), y.clone(), x.mul(&y), y.mul(&y), x.mul(&x)];
+        let all = [
+            one.clone(),
+            x.clone(),
+            y.clone(),
+            x.mul(&y),
+            y.mul(&y),
+            x.mul(&x),
+        ];
         for a in &all {
             for b in &all {
                 for c in &all {

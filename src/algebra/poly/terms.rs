@@ -137,9 +137,10 @@ pub(crate) fn mul_terms(a: &Terms, b: &Terms) -> Terms {
     if b.is_empty() {
         return Vec::new();
     }
-    if b.len() == 1 {
-        let (mb, cb) = &b[0];
-        return a.iter().map(|(m, c)| (m.mul(mb), mul(c, cb))).collect();
+    match b.as_slice() {
+        [t] => return stream(a, t).collect(),
+        [t, u] => return merge(stream(a, t), stream(a, u), a.len() * 2),
+        _ => {}
     }
     // Heap of (next monomial of stream j, j, index i into a), min first.
     let mut heap: BinaryHeap<Reverse<(Monomial, usize, usize)>> = b
@@ -163,6 +164,34 @@ pub(crate) fn mul_terms(a: &Terms, b: &Terms) -> Terms {
             let Reverse((m, _, _)) = std::collections::binary_heap::PeekMut::pop(top);
             accumulate(&mut out, m, c);
         }
+    }
+    drop_zero_last(&mut out);
+    out
+}
+
+/// The sorted stream `a·t` of a term list times one term.
+fn stream<'a>(a: &'a Terms, t: &'a (Monomial, Int)) -> impl Iterator<Item = (Monomial, Int)> + 'a {
+    a.iter().map(move |(m, c)| (m.mul(&t.0), mul(c, &t.1)))
+}
+
+/// The sum of two sorted term streams (a two-way merge: multiplying by a
+/// binomial such as `1 − s`, the commonest product in de Casteljau).
+fn merge(
+    x: impl Iterator<Item = (Monomial, Int)>,
+    y: impl Iterator<Item = (Monomial, Int)>,
+    capacity: usize,
+) -> Terms {
+    let mut out = Vec::with_capacity(capacity);
+    let (mut x, mut y) = (x.peekable(), y.peekable());
+    loop {
+        let next = match (x.peek(), y.peek()) {
+            (Some(p), Some(q)) if p.0 <= q.0 => x.next(),
+            (Some(_), Some(_)) => y.next(),
+            (Some(_), None) => x.next(),
+            (None, _) => y.next(),
+        };
+        let Some((m, c)) = next else { break };
+        accumulate(&mut out, m, c);
     }
     drop_zero_last(&mut out);
     out
