@@ -331,14 +331,14 @@ impl Poly {
         let mut c = self.coefficients_in(id);
         let d = d as usize;
         for e in (d..c.len()).rev() {
-            let top = std::mem::replace(&mut c[e], Poly::zero());
+            let top = std::mem::take(&mut c[e]);
             if top.is_zero() {
                 continue;
             }
             for (k, rk) in r.iter().enumerate() {
                 if !rk.is_zero() {
                     let slot = &mut c[e - d + k];
-                    *slot = std::mem::replace(slot, Poly::zero()) + &(top.clone() * rk);
+                    *slot = std::mem::take(slot) + &(top.clone() * rk);
                 }
             }
         }
