@@ -72,17 +72,27 @@ fn recursion_rhs(n: i64, i: i64) -> Poly {
     (Poly::one() - t()) * b(i, n - 1) + t() * b(i - 1, n - 1)
 }
 
-/// The recursion `B_{i,n} = rhs(n, i)`, checked with the given right side
-/// (the tests feed wrong ones through the same code).
+/// `lhs(n, i) = rhs(n, i)` for `1 ≤ n ≤ MAX_N`, `0 ≤ i ≤ n` (the tests feed
+/// wrong right sides through the same code).
+fn formula_claim(
+    claim: &str,
+    how: &str,
+    lhs: impl Fn(i64, i64) -> Poly,
+    rhs: impl Fn(i64, i64) -> Poly,
+) -> Claim {
+    for_all(claim, 1..=MAX_N, how, |n, i| {
+        let (i, n) = (i as i64, n as i64);
+        equal(&lhs(n, i), &rhs(n, i))
+    })
+}
+
+/// The recursion `B_{i,n} = rhs(n, i)`.
 fn recursion_claim(rhs: impl Fn(i64, i64) -> Poly) -> Claim {
-    for_all(
+    formula_claim(
         "recursion: B_{i,n} = (1 − t) B_{i,n−1} + t B_{i−1,n−1}, i = 0…n",
-        1..=MAX_N,
         "expansion (B_{−1,n−1} = B_{n,n−1} = 0)",
-        |n, i| {
-            let (i, n) = (i as i64, n as i64);
-            equal(&b(i, n), &rhs(n, i))
-        },
+        |n, i| b(i, n),
+        rhs,
     )
 }
 
@@ -93,14 +103,11 @@ fn derivative_rhs(n: i64, i: i64) -> Poly {
 
 /// The derivative formula `B'_{i,n} = rhs(n, i)`.
 fn derivative_claim(rhs: impl Fn(i64, i64) -> Poly) -> Claim {
-    for_all(
+    formula_claim(
         "derivative: B'_{i,n}(t) = n [B_{i−1,n−1}(t) − B_{i,n−1}(t)], i = 0…n",
-        1..=MAX_N,
         "term-by-term derivative of the expanded polynomial",
-        |n, i| {
-            let (i, n) = (i as i64, n as i64);
-            equal(&b(i, n).derivative("t"), &rhs(n, i))
-        },
+        |n, i| b(i, n).derivative("t"),
+        rhs,
     )
 }
 

@@ -86,6 +86,15 @@ impl fmt::Display for Verdict {
 }
 
 impl Verdict {
+    /// `pass` if the claim holds, else `Refuted`.
+    fn decided(holds: bool, pass: Verdict) -> Verdict {
+        if holds {
+            pass
+        } else {
+            Verdict::Refuted
+        }
+    }
+
     /// Every verdict, in report order.
     pub const ALL: [Verdict; 6] = [
         Verdict::Proved,
@@ -163,11 +172,7 @@ impl Claim {
         holds: bool,
         detail: String,
     ) -> Claim {
-        let verdict = if holds {
-            Verdict::Proved
-        } else {
-            Verdict::Refuted
-        };
+        let verdict = Verdict::decided(holds, Verdict::Proved);
         Claim::new(claim, source, verdict, expected, detail)
     }
 
@@ -181,12 +186,13 @@ impl Claim {
         holds: bool,
         detail: String,
     ) -> Claim {
-        let verdict = if holds {
-            Verdict::Checked
-        } else {
-            Verdict::Refuted
-        };
-        Claim::new(claim, source, verdict, expected, detail)
+        Claim::new(
+            claim,
+            source,
+            Verdict::decided(holds, Verdict::Checked),
+            expected,
+            detail,
+        )
     }
 
     /// The claim, unless the check's own precondition `ok` fails: then the
