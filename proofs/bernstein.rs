@@ -41,10 +41,12 @@ fn for_all(
         .flat_map(|n| (0..=n).map(move |i| (n, i)))
         .find_map(|(n, i)| check(n, i).err().map(|e| format!("n = {n}, i = {i}: {e}")));
     let detail = match &failure {
-        None => format!("{how}; all n = {lo}…{hi}, i = 0…n"),
+        None => format!("{how}; each n, i an identity"),
         Some(f) => f.clone(),
     };
-    Claim::check(claim, SOURCE, Verdict::Proved, failure.is_none(), detail)
+    let range = format!("{lo} ≤ n ≤ {hi}, 0 ≤ i ≤ n");
+    let claim = format!("{claim} — checked for every {range}");
+    Claim::check(&claim, SOURCE, Verdict::Proved, failure.is_none(), detail).with_bound(range)
 }
 
 fn equal(lhs: &Poly, rhs: &Poly) -> Result<(), String> {
@@ -63,6 +65,50 @@ fn homogenized(i: usize, n: usize) -> Poly {
     (0..=n as u32).fold(Poly::zero(), |acc, k| {
         acc + p.coeff_of("t", k) * a.pow(k) * s.pow(n as u32 - k)
     })
+}
+
+/// The recursion's right side `(1 − t) B_{i,n−1} + t B_{i−1,n−1}`.
+fn recursion_rhs(n: i64, i: i64) -> Poly {
+    (Poly::one() - t()) * b(i, n - 1) + t() * b(i - 1, n - 1)
+}
+
+/// `lhs(n, i) = rhs(n, i)` for `1 ≤ n ≤ MAX_N`, `0 ≤ i ≤ n` (the tests feed
+/// wrong right sides through the same code).
+fn formula_claim(
+    claim: &str,
+    how: &str,
+    lhs: impl Fn(i64, i64) -> Poly,
+    rhs: impl Fn(i64, i64) -> Poly,
+) -> Claim {
+    for_all(claim, 1..=MAX_N, how, |n, i| {
+        let (i, n) = (i as i64, n as i64);
+        equal(&lhs(n, i), &rhs(n, i))
+    })
+}
+
+/// The recursion `B_{i,n} = rhs(n, i)`.
+fn recursion_claim(rhs: impl Fn(i64, i64) -> Poly) -> Claim {
+    formula_claim(
+        "recursion: B_{i,n} = (1 − t) B_{i,n−1} + t B_{i−1,n−1}, i = 0…n",
+        "expansion (B_{−1,n−1} = B_{n,n−1} = 0)",
+        |n, i| b(i, n),
+        rhs,
+    )
+}
+
+/// The derivative's right side `n [B_{i−1,n−1} − B_{i,n−1}]`.
+fn derivative_rhs(n: i64, i: i64) -> Poly {
+    Poly::from_int(n) * (b(i - 1, n - 1) - b(i, n - 1))
+}
+
+/// The derivative formula `B'_{i,n} = rhs(n, i)`.
+fn derivative_claim(rhs: impl Fn(i64, i64) -> Poly) -> Claim {
+    formula_claim(
+        "derivative: B'_{i,n}(t) = n [B_{i−1,n−1}(t) − B_{i,n−1}(t)], i = 0…n",
+        "term-by-term derivative of the expanded polynomial",
+        |n, i| b(i, n).derivative("t"),
+        rhs,
+    )
 }
 
 /// The middle step of the lecture's symmetry proof,
@@ -152,25 +198,8 @@ pub fn claims() -> Vec<Claim> {
             },
         ),
         printed_symmetry_step(),
-        for_all(
-            "recursion: B_{i,n} = (1 − t) B_{i,n−1} + t B_{i−1,n−1}, i = 0…n",
-            1..=MAX_N,
-            "expansion (B_{−1,n−1} = B_{n,n−1} = 0)",
-            |n, i| {
-                let (i, n) = (i as i64, n as i64);
-                equal(&b(i, n), &(s.clone() * b(i, n - 1) + t() * b(i - 1, n - 1)))
-            },
-        ),
-        for_all(
-            "derivative: B'_{i,n}(t) = n [B_{i−1,n−1}(t) − B_{i,n−1}(t)], i = 0…n",
-            1..=MAX_N,
-            "term-by-term derivative of the expanded polynomial",
-            |n, i| {
-                let (i, n) = (i as i64, n as i64);
-                let rhs = Poly::from_int(n) * (b(i - 1, n - 1) - b(i, n - 1));
-                equal(&b(i, n).derivative("t"), &rhs)
-            },
-        ),
+        recursion_claim(recursion_rhs),
+        derivative_claim(derivative_rhs),
         for_all(
             "degree raising: (1 − t) B_{i,n} = (1 − i/(n+1)) B_{i,n+1}",
             0..=MAX_N,
@@ -232,4 +261,23 @@ pub fn claims() -> Vec<Claim> {
             },
         ),
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    //! The verdicts discriminate: a wrong formula fed through the same
+    //! claim code is refuted.
+    use super::*;
+
+    #[test]
+    fn wrong_formulas_are_refuted() {
+        assert_eq!(recursion_claim(recursion_rhs).verdict, Verdict::Proved);
+        // Index shifted: t·B_{i,n−1} instead of t·B_{i−1,n−1}.
+        let shifted = |n: i64, i: i64| (Poly::one() - t()) * b(i, n - 1) + t() * b(i, n - 1);
+        assert_eq!(recursion_claim(shifted).verdict, Verdict::Refuted);
+        assert_eq!(derivative_claim(derivative_rhs).verdict, Verdict::Proved);
+        // Sign flipped.
+        let flipped = |n: i64, i: i64| -derivative_rhs(n, i);
+        assert_eq!(derivative_claim(flipped).verdict, Verdict::Refuted);
+    }
 }

@@ -5,10 +5,8 @@
 //! one spatial coordinate suffices where coordinates do not interact, since
 //! every algorithm treats them alike.
 //!
-//! Degree bounds: de Casteljau, Möbius, reversal, invariants and the
-//! derivative formula n ≤ 8; elevation n ≤ 6 (by r ≤ 3); subdivision n ≤ 5;
-//! sub-segments and blossoms n ≤ 4–5; rational derivatives n ≤ 3, k ≤ 3;
-//! curvature n ≤ 6 (polynomial) and n ≤ 4 (rational).
+//! Degree bounds: each claim's text states the degrees it was checked for
+//! (`prove --json` reports them as `degree_bound`).
 
 use super::calculus::nth_derivative;
 use super::{Claim, Verdict};
@@ -45,8 +43,9 @@ fn sym_polynomial(n: usize, dim: usize) -> RationalCurve<Poly> {
     RationalCurve::polynomial(pts).expect("well-formed symbols")
 }
 
-/// Run `check(n)` for each degree; `Proved` iff all hold, else the first
-/// failure is the detail.
+/// Run `check(n)` for each degree; `Proved` (for those degrees, which the
+/// claim's text and bound state) iff all hold, else the first failure is
+/// the detail.
 fn over_degrees(
     claim: &str,
     source: &str,
@@ -58,14 +57,16 @@ fn over_degrees(
     let failure = degrees
         .iter()
         .find_map(|&n| check(n).err().map(|e| format!("n = {n}: {e}")));
-    let detail = failure.clone().unwrap_or_else(|| {
-        format!(
-            "{how}; n = {}…{}",
-            degrees.first().unwrap_or(&0),
-            degrees.last().unwrap_or(&0)
-        )
-    });
-    Claim::check(claim, source, Verdict::Proved, failure.is_none(), detail)
+    let range = format!(
+        "{} ≤ n ≤ {}",
+        degrees.first().unwrap_or(&0),
+        degrees.last().unwrap_or(&0)
+    );
+    let detail = failure
+        .clone()
+        .unwrap_or_else(|| format!("{how}; each n an identity"));
+    let claim = format!("{claim} — checked for every {range}");
+    Claim::check(&claim, source, Verdict::Proved, failure.is_none(), detail).with_bound(range)
 }
 
 fn same(a: &HPoint<Poly>, b: &HPoint<Poly>) -> Result<(), String> {
@@ -112,7 +113,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "de Casteljau's algorithm equals the Bernstein sum Σ c_i B_{i,n}(t)",
             "001 lecture, de Casteljau算法",
-            1..=8,
+            1..=10,
             "symbolic t and homogeneous control points (q_i, w_i)",
             |n| {
                 let c = sym_rational(n, 1);
@@ -122,7 +123,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "de Casteljau step: P(t) = Σ_{i=0}^{n−1} [(1−t)P_i + tP_{i+1}] B_{i,n−1}(t) (printed with upper limit n; the extra term is 0·P_{n+1} since B_{n,n−1} = 0)",
             "001 lecture, de Casteljau算法",
-            1..=8,
+            1..=10,
             "symbolic t and P_i; the printed upper limit n names a non-existent P_{n+1} with the zero coefficient B_{n,n−1}",
             |n| {
                 let c = sym_rational(n, 1);
@@ -136,7 +137,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "linear Möbius reparameterization keeps every point: X̃(s) = X(u(s)), u = (α−1)s/(2αs−s−α), w̃_i = w_i(1−α)ⁱα^{n−i}",
             "000 Yang & Yong eqs (2), (4), curve case",
-            1..=8,
+            1..=10,
             "symbolic α, s, c_i: with N = (α−1)s, D = 2αs−s−α, the old curve at the homogeneous parameter (D−N : N) (= Dⁿ·H(N/D)) equals (−1)ⁿ H̃(s) identically, so the projected points agree wherever D ≠ 0",
             |n| {
                 let (alpha, s) = (v("alpha"), v("s"));
@@ -151,7 +152,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "degree elevation P*_i = (i/(n+1))P_{i−1} + (1 − i/(n+1))P_i, applied r = 1, 2, 3 times, keeps every point (homogeneous curve unchanged)",
             "001 lecture, 升阶",
-            1..=6,
+            1..=10,
             "symbolic t and c_i",
             |n| {
                 let c = sym_rational(n, 1);
@@ -162,7 +163,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "subdivision at τ keeps every point: left(s) = H(τs), right(s) = H(τ + s(1−τ))",
             "001 lecture, de Casteljau算法 (ours: subdivision)",
-            1..=5,
+            1..=8,
             "symbolic τ, s and c_i",
             |n| {
                 let (tau, s) = (v("tau"), v("s"));
@@ -176,7 +177,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "sub-segment [a, b] keeps every point: seg(s) = H(a + s(b − a))",
             "ours",
-            1..=4,
+            1..=6,
             "symbolic a, b, s and c_i",
             |n| {
                 let (a, b, s) = (v("a"), v("b"), v("s"));
@@ -188,7 +189,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "symmetry: the reversed control polygon P*_i = P_{n−i} traces C*(t) = C(1 − t)",
             "001 lecture, 对称",
-            1..=8,
+            1..=10,
             "symbolic t and c_i",
             |n| {
                 let c = sym_rational(n, 1);
@@ -198,7 +199,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "affine invariance: the curve of the mapped control points is the mapped curve, A X(t) + b",
             "001 lecture, 几何不变性",
-            1..=4,
+            1..=8,
             "symbolic 2×2 matrix A, translation b, t and homogeneous c_i (map applied as (A q + w b, w))",
             |n| {
                 let c = sym_rational(n, 2);
@@ -217,7 +218,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "blossom: symmetric, affine in each argument, diagonal b[t,…,t] = H(t), dual functional b[0^{n−i}, 1^i] = c_i",
             "001 lecture (de Casteljau's multilinear form); ours",
-            1..=5,
+            1..=7,
             "symbolic arguments u_1…u_n, t and c_i; symmetry by swapping adjacent arguments; affinity as degree ≤ 1 in each u_j",
             |n| {
                 let c = sym_rational(n, 1);
@@ -264,7 +265,7 @@ fn derivative_claims() -> Vec<Claim> {
         over_degrees(
             "k-th derivative: P⁽ᵏ⁾(t) = n!/(n−k)! Σ_{i=0}^{n−k} Δᵏ P_i B_{i,n−k}(t), Δᵏ P_i = Δᵏ⁻¹ P_{i+1} − Δᵏ⁻¹ P_i",
             "001 lecture, k 阶导数的差分形式",
-            1..=8,
+            1..=10,
             "symbolic t and P_i, every k = 0…n: the printed formula (Δᵏ written out with binomials) equals the k-th t-derivative of Σ P_i B_{i,n}(t)",
             |n| {
                 let p = coords(n);
@@ -282,7 +283,7 @@ fn derivative_claims() -> Vec<Claim> {
         over_degrees(
             "hodograph(k) computes the k-th derivative of the homogeneous curve (and 0 for k > n)",
             "ours",
-            1..=8,
+            1..=10,
             "symbolic t and rational c_i, k = 0…n+1: de Casteljau on hodograph(k) equals the k-th t-derivative of H(t)",
             |n| {
                 let c = sym_rational(n, 1);
@@ -298,7 +299,7 @@ fn derivative_claims() -> Vec<Claim> {
         over_degrees(
             "end derivatives: P'(0) = n(P1 − P0), P'(1) = n(Pn − Pn−1), P''(0) = n(n−1)(P2 − 2P1 + P0), P''(1) = n(n−1)(Pn − 2Pn−1 + Pn−2)",
             "001 lecture, 切向量 and 二阶导数",
-            2..=8,
+            2..=10,
             "symbolic P_i: derivatives of Σ P_i B_{i,n}(t) at t = 0 and t = 1",
             |n| {
                 let p = coords(n);
@@ -323,7 +324,7 @@ fn derivative_claims() -> Vec<Claim> {
         over_degrees(
             "derivs_hom (Leibniz rule, fraction-free) gives the derivatives of X = H/w: X⁽ᵏ⁾ = M_k/w^{k+1}",
             "ours",
-            1..=3,
+            1..=4,
             "symbolic t, q_i, w_i; M_0 = H and the quotient rule M_{k+1} = M_k' w − (k+1) w' M_k checked for k = 0…2, weight entries w^{k+1}",
             |n| {
                 let c = sym_rational(n, 1);
@@ -370,7 +371,7 @@ fn curvature_claims() -> Vec<Claim> {
         over_degrees(
             "end curvature: k(0) = (n−1)/n · |(P1−P0) × (P2−P1)| / |P1−P0|³ and k(1) = (n−1)/n · |(Pn−1−Pn−2) × (Pn−Pn−1)| / |Pn−Pn−1|³",
             "001 lecture, 二阶导数 (曲率公式)",
-            2..=6,
+            2..=8,
             "symbolic 3D P_i: the squared printed formula (explicit cross product) cross-multiplied with κ² = |X'×X''|²/|X'|⁶ from the exact derivatives at t = 0 and t = 1",
             |n| {
                 let c = sym_polynomial(n, 3);
@@ -392,7 +393,7 @@ fn curvature_claims() -> Vec<Claim> {
         over_degrees(
             "rational end curvature: κ(0) = (n−1)/n · (w0 w2/w1²) · |(P1−P0) × (P2−P1)| / |P1−P0|³ (and at t = 1 with the indices mirrored)",
             "ours (extends 001 lecture's k(0), k(1))",
-            2..=4,
+            2..=6,
             "symbolic 2D q_i and w_i: end_curvature_sq_frac cross-multiplied with κ² from the exact rational derivatives at t = 0 and t = 1",
             |n| {
                 let c = sym_rational(n, 2);
@@ -431,7 +432,7 @@ fn invariant_claims() -> Vec<Claim> {
     vec![over_degrees(
         "the weight invariants w_iⁿ/(w_0^{n−i} w_nⁱ) and w_{i−1}w_{i+1}/w_i² are unchanged by Möbius reparameterization and by uniform weight scaling (so is the conic type of a quadratic, decided by w0w2/w1²)",
         "ours (from 000 eqs (4), (5))",
-        2..=8,
+        2..=10,
         "symbolic weights w_i, α and scale k; each invariant cross-multiplied",
         |n| {
             let c = sym_rational(n, 1);
@@ -479,7 +480,7 @@ fn bezier_original_claims() -> Vec<Claim> {
     let corrected = over_degrees(
         "Bézier's original form V(t) = Σ f_{i,n}(t) A_i (A_0 = P_0, A_i = P_i − P_{i−1}) with f_{i,n} = (−t)ⁱ/(i−1)! · d^{i−1}/dt^{i−1}[((1−t)ⁿ − 1)/t] is the Bernstein–Bézier curve",
         "ours (corrects 001 lecture, Bézier曲线: 概念及性质)",
-        1..=8,
+        1..=10,
         "symbolic t and P_i: f_{i,n} = Σ_{j≥i} B_{j,n} for i ≥ 1, hence Σ f_{i,n}A_i = Σ P_i B_{i,n}",
         |n| {
             let p: Vec<Poly> = (0..=n).map(|i| v(&format!("p{i}_0"))).collect();

@@ -25,6 +25,8 @@ use num_rational::BigRational;
 use num_traits::{One, Zero};
 
 const SOURCE: &str = "001 lecture, Gⁿ 几何连续性";
+/// The largest degrees n, m of the "every degree" claims.
+const MAX_DEGREE: usize = 10;
 
 fn v(name: &str) -> Poly {
     Poly::var(name)
@@ -123,12 +125,23 @@ fn g1_sign_claim() -> Claim {
     )
 }
 
+/// The corrected G¹ coefficient `nα/m` of `Q1 = Pn + (nα/m)(Pn − Pn−1)`.
+fn g1_coefficient(n: usize, m: usize) -> Poly {
+    ratio::<Poly>(n as i64, m as i64) * v("alpha")
+}
+
 fn corrected_g1_claim() -> Claim {
-    let failure = (1..=6)
-        .flat_map(|n| (1..=6).map(move |m| (n, m)))
+    corrected_g1_with(g1_coefficient)
+}
+
+/// The corrected G¹ claim with the coefficient `r(n, m)` of
+/// `Q1 = Pn + r(Pn − Pn−1)` (the tests feed wrong ones through it).
+fn corrected_g1_with(coefficient: impl Fn(usize, usize) -> Poly) -> Claim {
+    let failure = (1..=MAX_DEGREE)
+        .flat_map(|n| (1..=MAX_DEGREE).map(move |m| (n, m)))
         .find(|&(n, m)| {
             let p = points("p", n);
-            let r = ratio::<Poly>(n as i64, m as i64) * v("alpha");
+            let r = coefficient(n, m);
             let q1 = combo(&[Poly::one() + &r, -r], &[&p[n], &p[n - 1]]);
             let mut q = vec![p[n].clone(), q1];
             q.extend(points("r", m).into_iter().skip(2));
@@ -137,16 +150,17 @@ fn corrected_g1_claim() -> Claim {
             !all_zero(&combo(&[Poly::one(), -v("alpha")], &[&qd, &p1]))
         });
     Claim::check(
-        "corrected G¹: Q0 = Pn, Q1 = Pn + (nα/m)(Pn − Pn−1) gives Q'(0) = α P'(1) (same direction for α > 0)",
+        &format!("corrected G¹ for every 1 ≤ n, m ≤ {MAX_DEGREE}: Q0 = Pn, Q1 = Pn + (nα/m)(Pn − Pn−1) gives Q'(0) = α P'(1) (same direction for α > 0)"),
         "ours (corrects 001 lecture, Gⁿ 几何连续性)",
         Verdict::Proved,
         failure.is_none(),
-        failure.map_or("symbolic α, 2D P_i and free Q_2…Q_m; all 1 ≤ n, m ≤ 6".into(), |f| format!("fails at (n, m) = {f:?}")),
+        failure.map_or("symbolic α, 2D P_i and free Q_2…Q_m, each (n, m) an identity".into(), |f| format!("fails at (n, m) = {f:?}")),
     )
+    .with_bound(format!("1 ≤ n, m ≤ {MAX_DEGREE}"))
 }
 
 fn printed_g2_claims() -> Vec<Claim> {
-    let equal_degrees = (2..=8).find(|&n| {
+    let equal_degrees = (2..=MAX_DEGREE).find(|&n| {
         let p = points("p", n);
         let (r1, r2) = residuals(&p, printed_q(&p, false), n);
         !(all_zero(&r1) && all_zero(&r2))
@@ -156,15 +170,16 @@ fn printed_g2_claims() -> Vec<Claim> {
     let (_, other_degree) = residuals(&p, printed_q(&p, false), 2);
     vec![
         Claim::check(
-            "G²: Q2 = (α²+2α+β/(n−1)+1)Pn − (2α²+2α+β/(n−1))Pn−1 + α²Pn−2 gives Q''(0) = α²P''(1) + βP'(1) (equal degrees m = n, Q1 = Pn + α(Pn − Pn−1))",
+            &format!("G² for every 2 ≤ n ≤ {MAX_DEGREE}: Q2 = (α²+2α+β/(n−1)+1)Pn − (2α²+2α+β/(n−1))Pn−1 + α²Pn−2 gives Q''(0) = α²P''(1) + βP'(1) (equal degrees m = n, Q1 = Pn + α(Pn − Pn−1))"),
             SOURCE,
             Verdict::Proved,
             equal_degrees.is_none(),
             equal_degrees.map_or(
-                "symbolic α, β, 2D P_i and free Q_3…Q_n: Q'(0) − αP'(1) and Q''(0) − α²P''(1) − βP'(1) vanish identically; n = 2…8".into(),
+                "symbolic α, β, 2D P_i and free Q_3…Q_n: Q'(0) − αP'(1) and Q''(0) − α²P''(1) − βP'(1) vanish identically for each n".into(),
                 |n| format!("fails at n = {n}"),
             ),
-        ),
+        )
+        .with_bound(format!("2 ≤ n ≤ {MAX_DEGREE}")),
         Claim::identity(
             "G² formula together with the printed G¹ statement (Q1 = Pn − α(Pn − Pn−1)) gives Q''(0) = α²P''(1) + βP'(1)",
             SOURCE,
@@ -185,8 +200,8 @@ fn printed_g2_claims() -> Vec<Claim> {
 }
 
 fn corrected_g2_claim() -> Claim {
-    let failure = (2..=6)
-        .flat_map(|n| (2..=6).map(move |m| (n, m)))
+    let failure = (2..=MAX_DEGREE)
+        .flat_map(|n| (2..=MAX_DEGREE).map(move |m| (n, m)))
         .find(|&(n, m)| {
             let p = points("p", n);
             let Ok(q) = g2_leading_points(&p, m, &v("alpha"), &v("beta")) else {
@@ -196,12 +211,13 @@ fn corrected_g2_claim() -> Claim {
             !(all_zero(&r1) && all_zero(&r2))
         });
     Claim::check(
-        "corrected G² for any degrees n, m ≥ 2 (g2_leading_points) gives Q'(0) = αP'(1) and Q''(0) = α²P''(1) + βP'(1)",
+        &format!("corrected G² for every 2 ≤ n, m ≤ {MAX_DEGREE} (g2_leading_points) gives Q'(0) = αP'(1) and Q''(0) = α²P''(1) + βP'(1)"),
         "ours (generalizes 001 lecture, Gⁿ 几何连续性)",
         Verdict::Proved,
         failure.is_none(),
-        failure.map_or("symbolic α, β, 2D P_i and free Q_3…Q_m; all 2 ≤ n, m ≤ 6".into(), |f| format!("fails at (n, m) = {f:?}")),
+        failure.map_or("symbolic α, β, 2D P_i and free Q_3…Q_m, each (n, m) an identity".into(), |f| format!("fails at (n, m) = {f:?}")),
     )
+    .with_bound(format!("2 ≤ n, m ≤ {MAX_DEGREE}"))
 }
 
 fn curvature_continuity_claim() -> Claim {
@@ -268,4 +284,20 @@ pub fn claims() -> Vec<Claim> {
     all.push(corrected_g2_claim());
     all.push(curvature_continuity_claim());
     all
+}
+
+#[cfg(test)]
+mod tests {
+    //! The verdicts discriminate: a wrong formula fed through the same
+    //! claim code is refuted.
+    use super::*;
+
+    #[test]
+    fn wrong_g1_coefficients_are_refuted() {
+        assert_eq!(corrected_g1_claim().verdict, Verdict::Proved);
+        let flipped = |n: usize, m: usize| -g1_coefficient(n, m);
+        assert_eq!(corrected_g1_with(flipped).verdict, Verdict::Refuted);
+        let shifted = |n: usize, m: usize| g1_coefficient(n + 1, m);
+        assert_eq!(corrected_g1_with(shifted).verdict, Verdict::Refuted);
+    }
 }

@@ -12,7 +12,7 @@ use crate::scalar::{binomial, ratio, Tolerance};
 use num_traits::Zero;
 
 const SOURCE: &str = "001 lecture, 降阶";
-const MAX_N: usize = 8;
+const MAX_N: usize = 10;
 
 /// A degree-`n` curve with symbolic homogeneous points `(q{i}, w{i})`.
 fn sym(n: usize, prefix: &str) -> RationalCurve<Poly> {
@@ -35,15 +35,17 @@ fn over(
 ) -> Claim {
     let (lo, hi) = (*degrees.start(), *degrees.end());
     let failure = degrees.into_iter().find(|&n| !check(n));
+    let range = format!("{lo} ≤ n ≤ {hi}");
     Claim::check(
-        claim,
+        &format!("{claim} — checked for every {range}"),
         SOURCE,
         Verdict::Proved,
         failure.is_none(),
-        failure.map_or(format!("{how}; n = {lo}…{hi}"), |n| {
+        failure.map_or(format!("{how}; each n an identity"), |n| {
             format!("fails at n = {n}")
         }),
     )
+    .with_bound(range)
 }
 
 /// Σ over coordinates and points of `a_i · b_i`.

@@ -8,7 +8,7 @@
 //! `w_{ij}` = ω_{ij}) is a symbol. Every algorithm involved acts on the
 //! homogeneous coordinates linearly and coordinate by coordinate, so an
 //! identity for this net holds for nets of any dimension. Bidegrees: every
-//! (m, n) with 1 ≤ m, n ≤ 4.
+//! (m, n) up to a per-claim bound (8, 5 or 4) that each claim's text states.
 
 use super::{Claim, Verdict};
 use crate::bernstein::{bernstein, bernstein_all};
@@ -22,8 +22,14 @@ use num_rational::BigRational;
 use num_traits::Zero;
 
 const SRC: &str = "000 Yang & Yong";
-/// The largest m and n checked.
-const MAX: usize = 4;
+/// The largest m and n checked by the cheap claims (weights, corners).
+const MAX: usize = 8;
+/// The largest m and n of the claims that evaluate the patch symbolically
+/// at (s, t) (was 4; the time grows like m^7).
+const MAX_EVAL: usize = 5;
+/// The largest m and n of the quadratic-reparameterization claims (the
+/// (m+n, m+n) result; 4 as before: 8 takes minutes).
+const MAX_QUADRATIC: usize = 4;
 
 /// The fully symbolic 1D net of bidegree (m, n): `ctrl[i][j] = (p_ij, w_ij)`.
 pub(crate) fn sym_net(m: usize, n: usize) -> RectPatch<Poly> {
@@ -50,34 +56,36 @@ fn one() -> Poly {
     Poly::from_int(1)
 }
 
-/// All bidegrees (m, n), 1 ≤ m, n ≤ MAX.
-fn bidegrees() -> Vec<(usize, usize)> {
-    (1..=MAX)
-        .flat_map(|m| (1..=MAX).map(move |n| (m, n)))
+/// All bidegrees (m, n), 1 ≤ m, n ≤ max.
+fn bidegrees(max: usize) -> Vec<(usize, usize)> {
+    (1..=max)
+        .flat_map(|m| (1..=max).map(move |n| (m, n)))
         .collect()
 }
 
 /// One claim from a per-bidegree check: proved iff it holds for all; the
 /// detail names the first failure.
 fn for_all_bidegrees(
+    max: usize,
     claim: &str,
     source: &str,
     expected: Verdict,
     check: impl Fn(usize, usize) -> Option<String>,
 ) -> Claim {
-    let failure = bidegrees()
+    let failure = bidegrees(max)
         .into_iter()
         .find_map(|(m, n)| check(m, n).map(|why| format!("(m, n) = ({m}, {n}): {why}")));
     let holds = failure.is_none();
     Claim::check(
-        claim,
+        &format!("{claim} — checked for every 1 ≤ m, n ≤ {max}"),
         source,
         expected,
         holds,
         failure.unwrap_or_else(|| {
-            format!("identity in Q[symbols] for every (m, n) ≤ ({MAX}, {MAX}), fully symbolic net")
+            format!("identity in Q[symbols] for every (m, n) ≤ ({max}, {max}), fully symbolic net")
         }),
     )
+    .with_bound(format!("1 ≤ m, n ≤ {max}"))
 }
 
 fn differ(a: &HPoint<Poly>, b: &HPoint<Poly>) -> Option<String> {
@@ -112,6 +120,7 @@ pub fn claims() -> Vec<Claim> {
 fn mobius_keeps_points(in_u: bool) -> Claim {
     let (dir, eq) = if in_u { ("u", "(2)") } else { ("v", "(3)") };
     for_all_bidegrees(
+        MAX_EVAL,
         &format!("Möbius map {eq} in {dir} keeps every point: new(s, t) = old at u(s) (resp. v(t)), for all α, s, t"),
         &format!("{SRC} eq. {eq}, (4)"),
         Verdict::Proved,
@@ -132,23 +141,48 @@ fn mobius_keeps_points(in_u: bool) -> Claim {
     )
 }
 
+/// Both sides of the Möbius maps (2)(3) applied together, on the fully
+/// symbolic (m, n) net: the new patch at (s, t), `H̃(s, t)`, and the old one
+/// at the mapped homogeneous parameters, `H(α(1−s), (1−α)s; β(1−t), (1−β)t)`.
+/// They are equal as polynomials; this is also the identity of the SymPy
+/// peer benchmark (`benches/poly.rs`, `benches/peers/`).
+pub fn mobius_uv_sides(m: usize, n: usize) -> (HPoint<Poly>, HPoint<Poly>) {
+    let p = sym_net(m, n);
+    let (a, b, s, t) = (v("α"), v("β"), v("s"), v("t"));
+    let hom = |x: &Poly, y: &Poly| [x.clone() * &(one() - y), (one() - x) * y];
+    let new = p.mobius_u(&a).mobius_v(&b).eval_hom(&s, &t);
+    let old = p.eval_hom_projective(&hom(&a, &s), &hom(&b, &t));
+    (new, old)
+}
+
+/// (4)'s factor `(1 − α)^i α^{m−i}(1 − β)^j β^{n−j}` for entry (i, j).
+fn weight_factor(i: usize, j: usize, m: usize, n: usize) -> Poly {
+    let (a, b) = (v("α"), v("β"));
+    (one() - &a).pow(i as u32)
+        * a.pow((m - i) as u32)
+        * (one() - &b).pow(j as u32)
+        * b.pow((n - j) as u32)
+}
+
 /// (4): ω̃_{i,j} = ω_{i,j}(1 − α)^i α^{m−i}(1 − β)^j β^{n−j}.
 fn weight_rule() -> Claim {
+    weight_rule_with(weight_factor)
+}
+
+/// (4) with the factor of entry (i, j) given by `factor(i, j, m, n)` (the
+/// tests feed wrong ones through the same code).
+fn weight_rule_with(factor: impl Fn(usize, usize, usize, usize) -> Poly) -> Claim {
     for_all_bidegrees(
+        MAX,
         "weight rule (4): after (2)(3) ω̃_{i,j} = ω_{i,j}(1−α)^i α^{m−i}(1−β)^j β^{n−j}, points P_{i,j} unchanged",
         &format!("{SRC} eq. (4)"),
         Verdict::Proved,
         |m, n| {
             let p = sym_net(m, n);
-            let (a, b) = (v("α"), v("β"));
-            let q = p.mobius_u(&a).mobius_v(&b);
+            let q = p.mobius_u(&v("α")).mobius_v(&v("β"));
             for i in 0..=m {
                 for j in 0..=n {
-                    let f = (one() - &a).pow(i as u32)
-                        * a.pow((m - i) as u32)
-                        * (one() - &b).pow(j as u32)
-                        * b.pow((n - j) as u32);
-                    let want = p.ctrl()[i][j].scale(&f);
+                    let want = p.ctrl()[i][j].scale(&factor(i, j, m, n));
                     if let Some(d) = differ(&q.ctrl()[i][j], &want) {
                         return Some(format!("entry ({i},{j}): {d}"));
                     }
@@ -162,6 +196,7 @@ fn weight_rule() -> Claim {
 /// (5): scaling every weight by k multiplies H by k (same point).
 fn scaling_keeps_points() -> Claim {
     for_all_bidegrees(
+        MAX_EVAL,
         "uniform weight scaling (5) keeps every point: H̃(u, v) = k·H(u, v)",
         &format!("{SRC} eq. (5)"),
         Verdict::Proved,
@@ -180,6 +215,7 @@ fn scaling_keeps_points() -> Claim {
 /// is invariant under (2)(3)(5); a standard form has ratio 1.
 fn theorem1_only_if() -> Claim {
     for_all_bidegrees(
+        MAX,
         "Theorem 1 (only if): ω̃_{m,0}ω̃_{0,n}·ω_{0,0}ω_{m,n} = ω̃_{0,0}ω̃_{m,n}·ω_{m,0}ω_{0,n} after (2)(3)(5), for all α, β, k; the standard form has cross ratio 1, so ω_{m,0}ω_{0,n} = ω_{0,0}ω_{m,n} is necessary",
         &format!("{SRC} Theorem 1"),
         Verdict::Proved,
@@ -201,6 +237,7 @@ fn theorem1_only_if() -> Claim {
 /// map makes the four corners equal (then k of (8) makes them 1).
 fn theorem1_if() -> Claim {
     for_all_bidegrees(
+        MAX,
         "Theorem 1 (if), by exhibiting the map: for corner weights with ω_{m,0}ω_{0,n} = ω_{0,0}ω_{m,n}, eq. (8)'s α, β make the four corner weights equal",
         &format!("{SRC} Theorem 1, eq. (8)"),
         Verdict::Proved,
@@ -254,21 +291,26 @@ fn sym_quadratic() -> Quadratic<Poly> {
 /// (9)–(17): the new patch at (s, t) is the old one at (u(s,t), v(s,t)):
 /// `H̃(s, t) = H(α(1−s), (1−α)s; β(1−t), (1−β)t)`, a homogeneous identity.
 ///
-/// How it is established (stated bound: every (m, n) ≤ (4, 4)): α1, α2, β1,
+/// How it is established (every (m, n) ≤ (MAX_QUADRATIC, MAX_QUADRATIC)): α1, α2, β1,
 /// β2 are symbols. The map from the net to either side is linear and acts on
 /// each homogeneous coordinate alike, so it suffices to check each basis net
 /// (one weight 1 at (i, j), everything else 0); the old side is definition
 /// (1) at the homogeneous parameters of the map. Both sides are polynomials of
 /// degree ≤ m + n in s and in t, so agreement on the (m+n+1)² grid of
-/// rational (s, t) = (k/(m+n), l/(m+n)) proves them equal for all s, t.
+/// rational (s, t) = (k/(m+n), l/(m+n)) proves them equal for all s, t (the
+/// degree bound is computed by [`grid_suffices`]).
 fn quadratic_keeps_points() -> Claim {
     for_all_bidegrees(
+        MAX_QUADRATIC,
         "quadratic reparameterization (9)-(17) keeps every point: new(s, t) = old(u(s,t), v(s,t)) (homogeneous identity, common factor E^m F^n), for all α1, α2, β1, β2, s, t",
         &format!("{SRC} eqs. (9)-(17)"),
         Verdict::Proved,
         |m, n| {
             let q = sym_quadratic();
             let d = m + n;
+            if let Some(why) = grid_suffices(&q, m, n) {
+                return Some(why);
+            }
             let grid: Vec<BigRational> = (0..=d).map(|k| ratio(k as i64, d as i64)).collect();
             let basis: Vec<Vec<BigRational>> = grid.iter().map(|x| bernstein_all(d, x)).collect();
             // Definition (1) at homogeneous parameters, per grid point:
@@ -313,6 +355,24 @@ fn quadratic_keeps_points() -> Claim {
     )
 }
 
+/// Why the (m+n+1)² grid of [`quadratic_keeps_points`] decides the
+/// identity, computed: the new side is a (d, d) patch (d = m + n, checked
+/// there), the old side `U_i(hu)·V_j(hv)` has degree at most
+/// `m·deg(hu) + n·deg(hv)` in s and in t; `None` when both are ≤ d.
+fn grid_suffices(q: &Quadratic<Poly>, m: usize, n: usize) -> Option<String> {
+    let (hu, hv) = q.param_hom(&v("s"), &v("t"));
+    let deg = |h: &[Poly; 2], x: &str| h.iter().map(|p| p.degree_in(x)).max().unwrap_or(0) as usize;
+    ["s", "t"].into_iter().find_map(|x| {
+        let bound = m * deg(&hu, x) + n * deg(&hv, x);
+        (bound > m + n).then(|| {
+            format!(
+                "the old side may have degree {bound} > {} in {x}: the grid would not suffice",
+                m + n
+            )
+        })
+    })
+}
+
 /// `C(m,i) x1^i x0^(m−i)`, `i = 0…m`: the Bernstein basis at the homogeneous
 /// parameter `(x0, x1)`.
 fn homogeneous_bernstein(m: usize, x: &[Poly; 2]) -> Vec<Poly> {
@@ -348,6 +408,7 @@ fn combination(x: &[Poly], c: &[BigRational]) -> Poly {
 /// ω̃_{0,m+n} = α1^m (1−β2)^n ω_{0,n}, ω̃_{m+n,m+n} = (1−α1)^m(1−β1)^n ω_{m,n}.
 fn quadratic_corner_weights() -> Claim {
     for_all_bidegrees(
+        MAX_QUADRATIC,
         "corner weights before (18): ω̃_{0,0} = α2^m β2^n ω00, ω̃_{m+n,0} = (1−α2)^m β1^n ω_{m0}, ω̃_{0,m+n} = α1^m(1−β2)^n ω_{0n}, ω̃_{m+n,m+n} = (1−α1)^m(1−β1)^n ω_{mn} (printed for m = n = 3, e.g. ω̃_{6,0} = (1−α2)³β1³ω30, ω̃_{0,6} = (1−β2)³α1³ω03)",
         &format!("{SRC} §2, before eq. (18)"),
         Verdict::Proved,
@@ -376,6 +437,7 @@ fn quadratic_corner_weights() -> Claim {
 /// α2 = a2, α1 = a1, β = b (checked), and the corners come out equal.
 fn eq19_equal_corners() -> Claim {
     for_all_bidegrees(
+        MAX_QUADRATIC,
         "(19), generalized to (m, n) with β1 = β2: the quadratic map makes the four corner weights equal (to α2^m β^n ω00)",
         &format!("{SRC} eqs. (18), (19)"),
         Verdict::Proved,
@@ -410,6 +472,7 @@ fn eq19_equal_corners() -> Claim {
 /// of the (m, m+n) patch `mobius_v(β)` then `quadratic_reparam_u(α1, α2)`.
 fn compact_form() -> Claim {
     for_all_bidegrees(
+        MAX_QUADRATIC,
         "ours: with β1 = β2 = β (as in (19)) the (m+n, m+n) result is the n-fold degree elevation in s of an exact (m, m+n) patch (Möbius in v, then the quadratic map in u only), so the standard form exists in bidegree (m, m+n)",
         &format!("{SRC} eqs. (16), (19)"),
         Verdict::Proved,
@@ -438,6 +501,7 @@ fn paper_c(m: usize, at0: &Poly, at1: &Poly) -> Vec<Vec<Poly>> {
 /// with ours: equal up to the common sign (−1)^{m+n}.
 fn eq17_matches() -> Claim {
     for_all_bidegrees(
+        MAX_QUADRATIC,
         "eq. (17) (with Appendix-1 c_{l,i} and the analogous e_{l,j}) gives our weights times (−1)^{m+n} (equal for m + n even, e.g. bicubic; all negative for m + n odd)",
         &format!("{SRC} eqs. (15)-(17)"),
         Verdict::Proved,
@@ -494,12 +558,13 @@ fn bernstein_product_eq15() -> Claim {
         }
     }
     Claim::check(
-        "eq. (15)'s product rule B_{i,m}(s)B_{l,n}(s) = C(m,i)C(n,l)/C(m+n,i+l)·B_{i+l,m+n}(s), hence bidegree (m+n, m+n)",
+        &format!("eq. (15)'s product rule B_{{i,m}}(s)B_{{l,n}}(s) = C(m,i)C(n,l)/C(m+n,i+l)·B_{{i+l,m+n}}(s), hence bidegree (m+n, m+n) — checked for every m, n ≤ {MAX}"),
         &format!("{SRC} eq. (15)"),
         Verdict::Proved,
         bad.is_none(),
         bad.unwrap_or_else(|| format!("identity in s for all degrees ≤ {MAX}")),
     )
+    .with_bound(format!("m, n ≤ {MAX}"))
 }
 
 /// Appendix 1: each printed c_{l,i} (bicubic) against ours (Display of Poly).
@@ -690,4 +755,24 @@ fn denominators() -> Vec<Claim> {
             "cross-multiplied identity in Q[s, t, β1, β2]".into(),
         ),
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    //! The verdicts discriminate: a wrong formula fed through the same
+    //! claim code is refuted.
+    use super::*;
+
+    #[test]
+    fn wrong_weight_rules_are_refuted() {
+        assert_eq!(weight_rule().verdict, Verdict::Proved);
+        // Index shifted: (1 − α)^{m−i} α^i, the exponents of the other end.
+        let swapped = |i: usize, j: usize, m: usize, n: usize| weight_factor(m - i, j, m, n);
+        assert_eq!(weight_rule_with(swapped).verdict, Verdict::Refuted);
+        // Sign flipped in one factor: (α − 1)^i.
+        let flipped = |i: usize, j: usize, m: usize, n: usize| {
+            weight_factor(i, j, m, n) * (-one()).pow(i as u32)
+        };
+        assert_eq!(weight_rule_with(flipped).verdict, Verdict::Refuted);
+    }
 }

@@ -171,25 +171,28 @@ fn label_indices(label: &str) -> [usize; 3] {
 
 fn claims_41() -> Vec<Claim> {
     let tri = rect_to_tri(&rect_41(), Half::Lower);
+    let n = tri.degree();
     let total = tri.weight_sum();
     let entry = |r: usize, s: usize| normalized(tri.get(r, s), &total);
     let mut out = Vec::new();
     for (label, printed) in TRI_41 {
         let [r, s, t] = label_indices(label);
-        if r + s + t != 4 {
-            // The misprinted label: which degree-4 entries match the printed values?
-            let matches: Vec<String> = (0..=4)
-                .flat_map(|s| (0..=4 - s).map(move |r| (r, s)))
+        let is_index = r + s + t == n;
+        if !is_index {
+            // The misprinted label: which degree-n entries match the printed values?
+            let matches: Vec<String> = (0..=n)
+                .flat_map(|s| (0..=n - s).map(move |r| (r, s)))
                 .filter(|&(r, s)| agrees(&printed, &entry(r, s)))
-                .map(|(r, s)| format!("Q_{r}{s}{}", 4 - r - s))
+                .map(|(r, s)| format!("Q_{r}{s}{}", n - r - s))
                 .collect();
             out.push(Claim::check(
-                "4.1 table: the 6th label Q_222 is a degree-4 index (r + s + t = 4)",
+                &format!("4.1 table: the 6th label Q_{label} is a degree-{n} index (r + s + t = {n})"),
                 "003 §4.1, table of Q̄_rst",
                 Verdict::Refuted,
-                false,
+                is_index,
                 format!(
-                    "2 + 2 + 2 = 6 ≠ 4; the row sits between Q_112 and Q_301 (t = 2: Q_202, Q_112, Q_022) and its values match only {matches:?}: read Q_022"
+                    "{r} + {s} + {t} = {} ≠ {n} (the degree of our converted patch); the row sits between Q_112 and Q_301 (t = 2: Q_202, Q_112, Q_022) and its values match only {matches:?}: read Q_022",
+                    r + s + t
                 ),
             ));
             out.push(compare_row(

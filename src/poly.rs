@@ -6,9 +6,20 @@
 //! identity that comes out `== 0` holds for **all** values of the symbols.
 //!
 //! Variables are interned by name in a process-wide table, so `Poly::var("a")`
-//! always denotes the same variable. A polynomial is a map from monomials
-//! (sorted lists of `(variable, exponent)`) to non-zero rational coefficients;
-//! the representation is canonical, so `==` is exact equality of polynomials.
+//! always denotes the same variable.
+//!
+//! # Representation (built for speed on proofs)
+//!
+//! A polynomial is `(1/d)·Σ c_m·m`: integer coefficients `c_m` ([`Int`]:
+//! `i128` until it overflows) over one positive common denominator `d`, with
+//! `gcd(d, c_m…) = 1`. Terms are kept in a vector sorted by a monomial order,
+//! and each monomial packs its `(variable, exponent)` factors into machine
+//! words (up to six inline). So a sum is one merge, a product is a heap
+//! merge of sorted streams (no map, no sort), and the integer arithmetic of a
+//! typical identity never allocates and never runs a gcd per term (the
+//! denominator is reduced once per operation, and only when it is not 1).
+//! The representation is canonical, so `==` is exact equality of
+//! polynomials.
 //!
 //! # Examples
 //!
@@ -21,95 +32,101 @@
 //! assert_eq!(lhs.to_string(), "a^2 + 2*a*b + b^2");
 //! ```
 
+use crate::int::Int;
 use crate::scalar::Scalar;
-use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
-use std::collections::{BTreeMap, HashMap};
+use std::collections::HashMap;
 use std::fmt;
+use std::hash::{Hash, Hasher};
 use std::ops::{Add, Mul, Neg, Sub};
 use std::sync::{Mutex, OnceLock};
 
+#[path = "algebra/poly/monomial.rs"]
+mod monomial;
+#[path = "algebra/poly/terms.rs"]
+mod terms;
+
+use monomial::Monomial;
+use terms::{content_with, div_exact, divide, gcd, int, is_negative, is_one, mul, Terms};
+
 /// The process-wide table of variable names; a variable's id is its index.
-fn registry() -> &'static Mutex<Vec<String>> {
-    static REGISTRY: OnceLock<Mutex<Vec<String>>> = OnceLock::new();
-    REGISTRY.get_or_init(|| Mutex::new(Vec::new()))
+#[derive(Default)]
+struct Registry {
+    names: Vec<String>,
+    ids: HashMap<String, u32>,
+}
+
+fn registry() -> &'static Mutex<Registry> {
+    static REGISTRY: OnceLock<Mutex<Registry>> = OnceLock::new();
+    REGISTRY.get_or_init(|| Mutex::new(Registry::default()))
 }
 
 fn intern(name: &str) -> u32 {
     let mut table = registry().lock().unwrap_or_else(|e| e.into_inner());
-    if let Some(i) = table.iter().position(|n| n == name) {
-        return i as u32;
+    if let Some(&i) = table.ids.get(name) {
+        return i;
     }
-    table.push(name.to_string());
-    (table.len() - 1) as u32
+    let id = u32::try_from(table.names.len()).expect("fewer than 2^32 variables");
+    table.names.push(name.to_string());
+    table.ids.insert(name.to_string(), id);
+    id
 }
 
 fn name_of(id: u32) -> String {
     let table = registry().lock().unwrap_or_else(|e| e.into_inner());
-    table[id as usize].clone()
-}
-
-/// A monomial: `(variable id, exponent)` pairs sorted by id, exponents > 0.
-#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
-pub struct Monomial(Vec<(u32, u32)>);
-
-impl Monomial {
-    fn mul(&self, other: &Monomial) -> Monomial {
-        let (a, b) = (&self.0, &other.0);
-        let mut out = Vec::with_capacity(a.len() + b.len());
-        let (mut i, mut j) = (0, 0);
-        while i < a.len() && j < b.len() {
-            match a[i].0.cmp(&b[j].0) {
-                std::cmp::Ordering::Less => {
-                    out.push(a[i]);
-                    i += 1;
-                }
-                std::cmp::Ordering::Greater => {
-                    out.push(b[j]);
-                    j += 1;
-                }
-                std::cmp::Ordering::Equal => {
-                    out.push((a[i].0, a[i].1 + b[j].1));
-                    i += 1;
-                    j += 1;
-                }
-            }
-        }
-        out.extend_from_slice(&a[i..]);
-        out.extend_from_slice(&b[j..]);
-        Monomial(out)
-    }
-
-    /// Exponent of variable `id` (0 if absent).
-    fn exponent(&self, id: u32) -> u32 {
-        self.0.iter().find(|(v, _)| *v == id).map_or(0, |(_, e)| *e)
-    }
-
-    /// The monomial with variable `id` removed.
-    fn without(&self, id: u32) -> Monomial {
-        Monomial(self.0.iter().copied().filter(|(v, _)| *v != id).collect())
-    }
-
-    fn total_degree(&self) -> u32 {
-        self.0.iter().map(|(_, e)| e).sum()
-    }
+    table.names[id as usize].clone()
 }
 
 /// A polynomial in named variables with rational coefficients.
 ///
 /// Implements [`Scalar`] (not `Field`: it has no division and no sign).
-#[derive(Clone, PartialEq, Eq, Hash, Default)]
+#[derive(Clone, PartialEq)]
 pub struct Poly {
-    terms: BTreeMap<Monomial, BigRational>,
+    /// Integer coefficients, sorted by monomial, non-zero.
+    terms: Terms,
+    /// The positive common denominator, coprime to the coefficients (1 for 0).
+    den: Int,
 }
 
 impl Poly {
+    /// `terms / den` brought to canonical form (`den > 0`).
+    fn normalized(mut terms: Terms, den: Int) -> Poly {
+        if terms.is_empty() {
+            return Poly::zero();
+        }
+        let den = if is_negative(&den) {
+            terms::scale(&mut terms, &Int::Small(-1));
+            -den
+        } else {
+            den
+        };
+        if is_one(&den) {
+            return Poly { terms, den };
+        }
+        let g = content_with(&terms, &den);
+        divide(&mut terms, &g);
+        Poly {
+            terms,
+            den: div_exact(&den, &g),
+        }
+    }
+
+    /// The constant term `c` times `m`, over `den`.
+    fn term(m: Monomial, c: Int, den: Int) -> Poly {
+        if c.is_zero() {
+            return Poly::zero();
+        }
+        Poly::normalized(vec![(m, c)], den)
+    }
+
     /// The variable named `name`.
     pub fn var(name: &str) -> Poly {
-        let mut terms = BTreeMap::new();
-        terms.insert(Monomial(vec![(intern(name), 1)]), BigRational::one());
-        Poly { terms }
+        Poly::term(
+            Monomial::power(intern(name), 1),
+            Int::Small(1),
+            Int::Small(1),
+        )
     }
 
     /// `n` variables `prefix0, prefix1, …`.
@@ -125,16 +142,12 @@ impl Poly {
 
     /// The constant `q`.
     pub fn constant(q: BigRational) -> Poly {
-        let mut terms = BTreeMap::new();
-        if !q.is_zero() {
-            terms.insert(Monomial::default(), q);
-        }
-        Poly { terms }
+        Poly::term(Monomial::default(), int(q.numer()), int(q.denom()))
     }
 
     /// The integer constant `n`.
     pub fn from_int(n: i64) -> Poly {
-        Poly::constant(BigRational::from_integer(BigInt::from(n)))
+        Poly::term(Monomial::default(), Int::Small(n.into()), Int::Small(1))
     }
 
     /// `self^e`.
@@ -147,11 +160,16 @@ impl Poly {
         self.terms.len()
     }
 
+    /// The coefficient `c/den` as a rational.
+    fn rational(&self, c: &Int) -> BigRational {
+        BigRational::new(c.to_bigint(), self.den.to_bigint())
+    }
+
     /// The constant value if the polynomial has no variables.
     pub fn as_constant(&self) -> Option<BigRational> {
-        match self.terms.len() {
-            0 => Some(BigRational::zero()),
-            1 => self.terms.get(&Monomial::default()).cloned(),
+        match self.terms.as_slice() {
+            [] => Some(BigRational::zero()),
+            [(m, c)] if m.is_one() => Some(self.rational(c)),
             _ => None,
         }
     }
@@ -160,8 +178,8 @@ impl Poly {
     pub fn variables(&self) -> Vec<String> {
         let mut ids: Vec<u32> = self
             .terms
-            .keys()
-            .flat_map(|m| m.0.iter().map(|(v, _)| *v))
+            .iter()
+            .flat_map(|(m, _)| m.factors().map(|(v, _)| v))
             .collect();
         ids.sort_unstable();
         ids.dedup();
@@ -172,17 +190,39 @@ impl Poly {
 
     /// Degree in the variable `name` (0 for the zero polynomial).
     pub fn degree_in(&self, name: &str) -> u32 {
-        let id = intern(name);
-        self.terms.keys().map(|m| m.exponent(id)).max().unwrap_or(0)
+        self.degree_in_id(intern(name))
+    }
+
+    fn degree_in_id(&self, id: u32) -> u32 {
+        self.terms
+            .iter()
+            .map(|(m, _)| m.exponent(id))
+            .max()
+            .unwrap_or(0)
     }
 
     /// Total degree (0 for constants and for the zero polynomial).
     pub fn total_degree(&self) -> u32 {
-        self.terms
-            .keys()
-            .map(Monomial::total_degree)
+        let d = self
+            .terms
+            .iter()
+            .map(|(m, _)| m.total_degree())
             .max()
-            .unwrap_or(0)
+            .unwrap_or(0);
+        u32::try_from(d).unwrap_or(u32::MAX)
+    }
+
+    /// The coefficient polynomials in variable `id`: `self = Σ_k out[k]·x^k`.
+    /// Each stays sorted: dropping `x` from monomials with the same
+    /// exponent of `x` keeps their order.
+    fn coefficients_in(&self, id: u32) -> Vec<Poly> {
+        let mut out: Vec<Terms> = vec![Vec::new(); self.degree_in_id(id) as usize + 1];
+        for (m, c) in &self.terms {
+            out[m.exponent(id) as usize].push((m.with_exponent(id, 0), c.clone()));
+        }
+        out.into_iter()
+            .map(|t| Poly::normalized(t, self.den.clone()))
+            .collect()
     }
 
     /// The coefficient of `name^k`, a polynomial in the other variables:
@@ -197,16 +237,28 @@ impl Poly {
     /// ```
     pub fn coeff_of(&self, name: &str, k: u32) -> Poly {
         let id = intern(name);
-        let mut terms = BTreeMap::new();
-        for (m, c) in &self.terms {
-            if m.exponent(id) == k {
-                terms.insert(m.without(id), c.clone());
-            }
-        }
-        Poly { terms }
+        let terms = self
+            .terms
+            .iter()
+            .filter(|(m, _)| m.exponent(id) == k)
+            .map(|(m, c)| (m.with_exponent(id, 0), c.clone()))
+            .collect();
+        Poly::normalized(terms, self.den.clone())
     }
 
-    /// Substitute the polynomial `value` for the variable `name`.
+    /// Multiply by the monomial `x_id^e` (keeps the order).
+    fn shift(mut self, id: u32, e: u32) -> Poly {
+        if e > 0 {
+            let x = Monomial::power(id, e);
+            for (m, _) in &mut self.terms {
+                *m = m.mul(&x);
+            }
+        }
+        self
+    }
+
+    /// Substitute the polynomial `value` for the variable `name` (Horner's
+    /// rule on the coefficients in `name`).
     ///
     /// ```
     /// use exact_bezier::Poly;
@@ -215,22 +267,12 @@ impl Poly {
     /// assert_eq!(p.subst("x", &(y.clone() + Poly::from_int(1))), y.pow(2) + Poly::from_int(2) * &y + Poly::from_int(2));
     /// ```
     pub fn subst(&self, name: &str, value: &Poly) -> Poly {
-        let id = intern(name);
-        let mut powers: HashMap<u32, Poly> = HashMap::new();
-        let mut out = Poly::zero();
-        for (m, c) in &self.terms {
-            let e = m.exponent(id);
-            let rest = Poly {
-                terms: BTreeMap::from([(m.without(id), c.clone())]),
-            };
-            if e == 0 {
-                out = out + rest;
-                continue;
-            }
-            let pw = powers.entry(e).or_insert_with(|| value.pow(e)).clone();
-            out = out + rest * pw;
-        }
-        out
+        let mut coeffs = self.coefficients_in(intern(name));
+        let top = coeffs.pop().unwrap_or_else(Poly::zero);
+        coeffs
+            .into_iter()
+            .rev()
+            .fold(top, |acc, c| acc * value + &c)
     }
 
     /// Substitute the rational `value` for the variable `name`.
@@ -251,14 +293,14 @@ impl Poly {
         let ids: Vec<(u32, &BigRational)> = values.iter().map(|(n, v)| (intern(n), v)).collect();
         let mut acc = BigRational::zero();
         for (m, c) in &self.terms {
-            let mut t = c.clone();
-            for (v, e) in &m.0 {
-                let val = ids.iter().find(|(id, _)| id == v)?.1;
-                t *= num_traits::pow(val.clone(), *e as usize);
+            let mut t = BigRational::from_integer(c.to_bigint());
+            for (v, e) in m.factors() {
+                let val = ids.iter().find(|(id, _)| *id == v)?.1;
+                t *= num_traits::pow(val.clone(), e as usize);
             }
             acc += t;
         }
-        Some(acc)
+        Some(acc / BigRational::from_integer(self.den.to_bigint()))
     }
 
     /// Reduce modulo the relation `name^d = replacement`: every power
@@ -267,6 +309,10 @@ impl Poly {
     /// must have degree < d in `name`). This is the normal form in
     /// `Q[…, name]/(name^d − replacement)`, e.g. `s² = 1 − c²` for
     /// trigonometric identities or `r³ = radicand` for cube roots.
+    ///
+    /// Works on the coefficients in `name`, from the top down: `c_e·name^e`
+    /// adds `c_e·r_k` to the coefficient of `name^{e−d+k}` for each term
+    /// `r_k·name^k` of the replacement.
     ///
     /// **Panics if `d` is 0 or `replacement` has degree ≥ `d` in `name`.**
     ///
@@ -281,27 +327,26 @@ impl Poly {
     pub fn reduce_power(&self, name: &str, d: u32, replacement: &Poly) -> Poly {
         assert!(d > 0 && replacement.degree_in(name) < d, "invalid relation");
         let id = intern(name);
-        let mut cur = self.clone();
-        while cur.degree_in(name) >= d {
-            let mut out = Poly::zero();
-            for (m, c) in &cur.terms {
-                let e = m.exponent(id);
-                let mut rest = m.without(id);
-                if e >= d {
-                    if e > d {
-                        rest = rest.mul(&Monomial(vec![(id, e - d)]));
-                    }
-                    let term = Poly {
-                        terms: BTreeMap::from([(rest, c.clone())]),
-                    };
-                    out = out + term * replacement;
-                } else {
-                    out.add_term(m.clone(), c.clone());
+        let r = replacement.coefficients_in(id);
+        let mut c = self.coefficients_in(id);
+        let d = d as usize;
+        for e in (d..c.len()).rev() {
+            let top = std::mem::take(&mut c[e]);
+            if top.is_zero() {
+                continue;
+            }
+            for (k, rk) in r.iter().enumerate() {
+                if !rk.is_zero() {
+                    let slot = &mut c[e - d + k];
+                    *slot = std::mem::take(slot) + &(top.clone() * rk);
                 }
             }
-            cur = out;
         }
-        cur
+        c.truncate(d);
+        // Distinct powers of `name` have disjoint monomials: a merge each.
+        c.into_iter()
+            .enumerate()
+            .fold(Poly::zero(), |acc, (e, ce)| acc + ce.shift(id, e as u32))
     }
 
     /// Multiply by a rational constant.
@@ -309,51 +354,73 @@ impl Poly {
         if q.is_zero() {
             return Poly::zero();
         }
-        Poly {
-            terms: self.terms.iter().map(|(m, c)| (m.clone(), c * q)).collect(),
-        }
+        let mut terms = self.terms.clone();
+        terms::scale(&mut terms, &int(q.numer()));
+        Poly::normalized(terms, mul(&self.den, &int(q.denom())))
     }
 
     /// The terms as `(variables with exponents, coefficient)`, in the
-    /// canonical order.
-    pub fn terms(&self) -> impl Iterator<Item = (Vec<(String, u32)>, &BigRational)> {
-        self.terms
-            .iter()
-            .map(|(m, c)| (m.0.iter().map(|(v, e)| (name_of(*v), *e)).collect(), c))
+    /// canonical (monomial) order.
+    pub fn terms(&self) -> impl Iterator<Item = (Vec<(String, u32)>, BigRational)> + '_ {
+        self.terms.iter().map(|(m, c)| {
+            let vars = m.factors().map(|(v, e)| (name_of(v), e)).collect();
+            (vars, self.rational(c))
+        })
     }
 
-    fn add_term(&mut self, m: Monomial, c: BigRational) {
-        use std::collections::btree_map::Entry;
-        match self.terms.entry(m) {
-            Entry::Vacant(e) => {
-                if !c.is_zero() {
-                    e.insert(c);
-                }
-            }
-            Entry::Occupied(mut e) => {
-                *e.get_mut() += c;
-                if e.get().is_zero() {
-                    e.remove();
-                }
-            }
+    /// The sum `a·self + b·other` of the integer parts, over the common
+    /// denominator: `fa = L/d_self`, `fb = ±L/d_other`, `L = lcm`.
+    fn add_signed(&self, other: &Poly, negate: bool) -> Poly {
+        let sign = |f: Int| if negate { -f } else { f };
+        if self.den == other.den {
+            let t = terms::add(
+                &self.terms,
+                &Int::Small(1),
+                &other.terms,
+                &sign(Int::Small(1)),
+            );
+            return Poly::normalized(t, self.den.clone());
         }
+        let g = gcd(&self.den, &other.den);
+        let fa = div_exact(&other.den, &g);
+        let fb = div_exact(&self.den, &g);
+        let t = terms::add(&self.terms, &fa, &other.terms, &sign(fb));
+        Poly::normalized(t, mul(&self.den, &fa))
     }
 
     fn mul_ref(&self, other: &Poly) -> Poly {
-        let mut out = Poly::zero();
-        for (ma, ca) in &self.terms {
-            for (mb, cb) in &other.terms {
-                out.add_term(ma.mul(mb), ca * cb);
-            }
+        let t = terms::mul_terms(&self.terms, &other.terms);
+        Poly::normalized(t, mul(&self.den, &other.den))
+    }
+}
+
+impl Eq for Poly {}
+
+impl Hash for Poly {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        let int = |c: &Int, state: &mut H| match c {
+            Int::Small(x) => x.hash(state),
+            Int::Big(x) => x.hash(state),
+        };
+        for (m, c) in &self.terms {
+            m.hash(state);
+            int(c, state);
         }
-        out
+        int(&self.den, state);
+    }
+}
+
+impl Default for Poly {
+    fn default() -> Poly {
+        Poly::zero()
     }
 }
 
 impl Zero for Poly {
     fn zero() -> Self {
         Poly {
-            terms: BTreeMap::new(),
+            terms: Vec::new(),
+            den: Int::Small(1),
         }
     }
     fn is_zero(&self) -> bool {
@@ -369,26 +436,26 @@ impl One for Poly {
 
 impl Add<&Poly> for Poly {
     type Output = Poly;
-    fn add(mut self, rhs: &Poly) -> Poly {
-        for (m, c) in &rhs.terms {
-            self.add_term(m.clone(), c.clone());
+    fn add(self, rhs: &Poly) -> Poly {
+        if self.is_zero() {
+            return rhs.clone();
         }
-        self
+        self.add_signed(rhs, false)
     }
 }
 impl Add for Poly {
     type Output = Poly;
     fn add(self, rhs: Poly) -> Poly {
+        if self.is_zero() {
+            return rhs;
+        }
         self + &rhs
     }
 }
 impl Sub<&Poly> for Poly {
     type Output = Poly;
-    fn sub(mut self, rhs: &Poly) -> Poly {
-        for (m, c) in &rhs.terms {
-            self.add_term(m.clone(), -c.clone());
-        }
-        self
+    fn sub(self, rhs: &Poly) -> Poly {
+        self.add_signed(rhs, true)
     }
 }
 impl Sub for Poly {
@@ -412,10 +479,37 @@ impl Mul for Poly {
 impl Neg for Poly {
     type Output = Poly;
     fn neg(mut self) -> Poly {
-        for c in self.terms.values_mut() {
-            *c = -c.clone();
+        for (_, c) in &mut self.terms {
+            *c = -std::mem::replace(c, Int::Small(0));
         }
         self
+    }
+}
+
+/// Balanced pairwise summation: adding k polynomials of N terms in all
+/// costs O(N log k) term moves, where a left fold `acc + p` costs O(N k)
+/// (every addition merges the whole accumulator).
+///
+/// ```
+/// use exact_bezier::Poly;
+/// let x = Poly::var("x");
+/// let s: Poly = (0..4).map(|k| x.pow(k)).sum();
+/// assert_eq!(s, Poly::from_int(1) + x.clone() + x.pow(2) + x.pow(3));
+/// ```
+impl std::iter::Sum for Poly {
+    fn sum<I: Iterator<Item = Poly>>(iter: I) -> Poly {
+        let mut level: Vec<Poly> = iter.collect();
+        while level.len() > 1 {
+            let mut pairs = level.into_iter();
+            level = Vec::new();
+            while let Some(a) = pairs.next() {
+                level.push(match pairs.next() {
+                    Some(b) => a + b,
+                    None => a,
+                });
+            }
+        }
+        level.pop().unwrap_or_else(Poly::zero)
     }
 }
 
@@ -437,10 +531,10 @@ impl fmt::Debug for Poly {
 /// Deterministic display order of a monomial: by variable name, then by
 /// descending exponent (independent of interning order).
 fn sort_key(m: &Monomial) -> Vec<(String, i64)> {
-    let mut key: Vec<(String, i64)> =
-        m.0.iter()
-            .map(|(v, e)| (name_of(*v), -(*e as i64)))
-            .collect();
+    let mut key: Vec<(String, i64)> = m
+        .factors()
+        .map(|(v, e)| (name_of(v), -i64::from(e)))
+        .collect();
     key.sort();
     key
 }
@@ -452,7 +546,11 @@ impl fmt::Display for Poly {
         if self.terms.is_empty() {
             return write!(f, "0");
         }
-        let mut terms: Vec<(&Monomial, &BigRational)> = self.terms.iter().collect();
+        let mut terms: Vec<(&Monomial, BigRational)> = self
+            .terms
+            .iter()
+            .map(|(m, c)| (m, self.rational(c)))
+            .collect();
         terms.sort_by(|a, b| {
             b.0.total_degree().cmp(&a.0.total_degree()).then_with(|| {
                 // Higher powers of alphabetically earlier variables first.
@@ -495,18 +593,17 @@ impl Poly {
     /// ```
     pub fn derivative(&self, name: &str) -> Poly {
         let id = intern(name);
-        let mut out = Poly::zero();
-        for (m, c) in &self.terms {
-            let e = m.exponent(id);
-            if e > 0 {
-                let mut rest = m.without(id);
-                if e > 1 {
-                    rest = rest.mul(&Monomial(vec![(id, e - 1)]));
-                }
-                out.add_term(rest, c.clone() * BigRational::from_integer(e.into()));
-            }
-        }
-        out
+        // Lowering the exponent of one variable in every monomial that has
+        // it keeps their order.
+        let terms = self
+            .terms
+            .iter()
+            .filter_map(|(m, c)| {
+                let e = m.exponent(id);
+                (e > 0).then(|| (m.with_exponent(id, e - 1), mul(c, &Int::Small(e.into()))))
+            })
+            .collect();
+        Poly::normalized(terms, self.den.clone())
     }
 }
 
@@ -557,5 +654,87 @@ mod tests {
         let p = -(a.pow(3)) * &b + a.clone() * ratio::<Poly>(1, 3) - Poly::from_int(1);
         assert_eq!(p.to_string(), "-α1*α2^3 + 1/3*α2 - 1");
         assert_eq!(Poly::zero().to_string(), "0");
+    }
+
+    mod laws {
+        //! Ring laws, substitution, reduction and derivative on random
+        //! polynomials, cross-checked against evaluation in `BigRational`
+        //! (an independent path: no merge, no heap).
+        use super::*;
+        use proptest::prelude::*;
+
+        const VARS: [&str; 3] = ["x", "y", "z"];
+
+        /// A polynomial with up to 6 terms, exponents ≤ 3, coefficients
+        /// n/d with |n| ≤ 40 (sometimes far beyond i128 after products).
+        fn poly() -> impl Strategy<Value = Poly> {
+            let term = (-40i64..=40, 1i64..=6, [0u32..=3, 0u32..=3, 0u32..=3]);
+            proptest::collection::vec(term, 0..6).prop_map(|terms| {
+                terms.into_iter().fold(Poly::zero(), |acc, (n, d, e)| {
+                    let m = VARS
+                        .iter()
+                        .zip(e)
+                        .fold(ratio::<Poly>(n, d), |m, (v, k)| m * Poly::var(v).pow(k));
+                    acc + m
+                })
+            })
+        }
+
+        fn point() -> impl Strategy<Value = Vec<(&'static str, BigRational)>> {
+            [
+                (-9i64..=9, 1i64..=5),
+                (-9i64..=9, 1i64..=5),
+                (-9i64..=9, 1i64..=5),
+            ]
+            .prop_map(|v| {
+                VARS.iter()
+                    .zip(v)
+                    .map(|(n, (a, b))| (*n, ratio(a, b)))
+                    .collect()
+            })
+        }
+
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(64))]
+
+            #[test]
+            fn ring_laws(a in poly(), b in poly(), c in poly()) {
+                prop_assert_eq!(a.clone() * &b, b.clone() * &a);
+                prop_assert_eq!((a.clone() * &b) * &c, a.clone() * (b.clone() * &c));
+                prop_assert_eq!((a.clone() + &b) * &c, a.clone() * &c + b.clone() * &c);
+                prop_assert_eq!((a.clone() + &b) - &b, a.clone());
+                prop_assert_eq!(a.clone() + (-a.clone()), Poly::zero());
+            }
+
+            #[test]
+            fn evaluation_is_a_homomorphism(a in poly(), b in poly(), at in point()) {
+                let ev = |p: &Poly| p.eval(&at).expect("every variable has a value");
+                prop_assert_eq!(ev(&(a.clone() * &b)), ev(&a) * ev(&b));
+                prop_assert_eq!(ev(&(a.clone() - &b)), ev(&a) - ev(&b));
+                prop_assert_eq!(ev(&a.pow(3)), num_traits::pow(ev(&a), 3));
+            }
+
+            #[test]
+            fn substitution_and_derivative(a in poly(), b in poly(), at in point()) {
+                let ev = |p: &Poly| p.eval(&at).expect("every variable has a value");
+                // a(x := b) at the point is a at (b(point), y, z).
+                let mut moved = at.clone();
+                moved[0].1 = ev(&b);
+                prop_assert_eq!(ev(&a.subst("x", &b)), a.eval(&moved).expect("values"));
+                // Leibniz rule.
+                let d = |p: &Poly| p.derivative("y");
+                prop_assert_eq!(d(&(a.clone() * &b)), d(&a) * &b + a.clone() * &d(&b));
+            }
+
+            #[test]
+            fn reduce_power_is_a_normal_form(a in poly(), q in poly(), r in poly()) {
+                // Relation x² = r with r of degree < 2 in x.
+                let r = r.coeff_of("x", 0) + r.coeff_of("x", 1) * Poly::var("x");
+                let rel = Poly::var("x").pow(2) - &r;
+                let red = a.reduce_power("x", 2, &r);
+                prop_assert!(red.degree_in("x") < 2);
+                prop_assert_eq!((a.clone() + q * &rel).reduce_power("x", 2, &r), red);
+            }
+        }
     }
 }

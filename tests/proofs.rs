@@ -1,14 +1,11 @@
 //! Every family in `proofs/` has the verdicts it is expected to have.
 //! One test per family, so they run in parallel and fail by name.
 
-use exact_bezier::proofs::FAMILIES;
+use exact_bezier::proofs::{family, run_family, Verdict, FAMILIES};
 
 fn check(name: &str) {
-    let family = FAMILIES
-        .iter()
-        .find(|f| f.name == name)
-        .unwrap_or_else(|| panic!("no proof family {name}"));
-    let claims = (family.run)();
+    let family = family(name).unwrap_or_else(|| panic!("no proof family {name}"));
+    let claims = run_family(family);
     assert!(!claims.is_empty(), "family {name} has no claims");
     let off: Vec<String> = claims
         .iter()
@@ -25,6 +22,34 @@ fn check(name: &str) {
         "claims off their expected verdict:\n{}",
         off.join("\n")
     );
+    for c in &claims {
+        assert_ne!(
+            c.expected,
+            Verdict::Broken,
+            "{}: broken is never expected",
+            c.claim
+        );
+        // A claim with a degree bound states it in its text.
+        if let Some(bound) = &c.bound {
+            assert!(
+                c.claim.contains(bound.as_str()),
+                "{}: text lacks its bound {bound}",
+                c.claim
+            );
+        }
+    }
+}
+
+/// `prove --json` objects carry the family, the degree bound and the time.
+#[test]
+fn json_has_bound_and_time() {
+    let claims = run_family(family("reduction").expect("family"));
+    let json = claims[0].to_json("reduction");
+    assert_eq!(json["family"], "reduction");
+    assert!(json["elapsed_ms"].as_f64().is_some_and(|t| t >= 0.0));
+    assert!(json["degree_bound"]
+        .as_str()
+        .is_some_and(|b| b.contains('n')));
 }
 
 macro_rules! families {
