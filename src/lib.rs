@@ -33,6 +33,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+mod algebra;
 mod arc;
 mod bernstein;
 mod blossom;
@@ -79,6 +80,7 @@ pub mod proofs;
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
+pub use algebra::real_algebraic::{text::parse_algebraic, RealAlgebraic};
 pub use arc::{
     check_lambda, lambda_change_delta, lambda_change_param, lambda_interval, lambda_of_sigma_cubed,
     sigma_of_lambda, ArcCubic, Computed, LambdaFactors, QuadArc,
