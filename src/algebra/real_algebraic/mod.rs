@@ -376,13 +376,57 @@ impl RealAlgebraic {
         decimal_text(&rounded, digits)
     }
 
-    /// Exact comparison: enclosures first, the sign of the difference when
-    /// they overlap.
-    fn compare(&self, other: &Self) -> Ordering {
-        if let (Repr::Radical(a), Repr::Radical(b)) = (&self.0, &other.0) {
-            return a.add(&b.neg()).signum().cmp(&0);
+    /// Exact equality without subtraction: radical sums compare
+    /// structurally; an isolated root `r` equals `x` iff `x` is a root of
+    /// `r`'s polynomial inside `r`'s isolating interval (exact evaluation in
+    /// the radical field, or a common root of the gcd of both polynomials in
+    /// the intersection of both intervals).
+    fn same_value(&self, other: &Self) -> bool {
+        match (&self.0, &other.0) {
+            (Repr::Radical(a), Repr::Radical(b)) => a.add(&b.neg()).is_zero(),
+            (Repr::Root(r), _) => other.is_isolated_root_of(r),
+            (_, Repr::Root(r)) => self.is_isolated_root_of(r),
         }
-        for prec in [32, 128] {
+    }
+
+    fn is_isolated_root_of(&self, r: &RootNum) -> bool {
+        let (lo, hi) = r.interval();
+        match &self.0 {
+            Repr::Radical(s) => {
+                if s.as_rational().is_some() {
+                    return false; // r is irrational
+                }
+                let value = r
+                    .poly()
+                    .coeffs()
+                    .iter()
+                    .rev()
+                    .fold(RadicalSum::default(), |acc, c| {
+                        acc.mul(s).add(&RadicalSum::rational(c.clone()))
+                    });
+                value.is_zero()
+                    && s.add(&RadicalSum::rational(-lo)).signum() > 0
+                    && s.add(&RadicalSum::rational(-hi)).signum() < 0
+            }
+            Repr::Root(t) => {
+                let g = r.poly().gcd(t.poly());
+                let (a, b) = t.interval();
+                let (lo, hi) = (lo.max(a), hi.min(b));
+                g.degree().unwrap_or(0) > 0
+                    && lo < hi
+                    && polys::count_roots(&polys::sturm_sequence(&g), &lo, &hi) == 1
+            }
+        }
+    }
+
+    /// Exact comparison: equality decided exactly ([`Self::same_value`]),
+    /// then enclosures refined until they separate (they must).
+    fn compare(&self, other: &Self) -> Ordering {
+        if self.same_value(other) {
+            return Ordering::Equal;
+        }
+        let mut prec = 32;
+        loop {
             let (a, b) = self.enclosure(prec);
             let (c, d) = other.enclosure(prec);
             if b < c {
@@ -391,8 +435,8 @@ impl RealAlgebraic {
             if d < a {
                 return Ordering::Greater;
             }
+            prec *= 2;
         }
-        (self.clone() - other).signum().cmp(&0)
     }
 }
 
@@ -460,10 +504,7 @@ impl std::fmt::Debug for RealAlgebraic {
 
 impl PartialEq for RealAlgebraic {
     fn eq(&self, other: &Self) -> bool {
-        match (&self.0, &other.0) {
-            (Repr::Radical(a), Repr::Radical(b)) => a.add(&b.neg()).is_zero(),
-            _ => self.compare(other) == Ordering::Equal,
-        }
+        self.same_value(other)
     }
 }
 

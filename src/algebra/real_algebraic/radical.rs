@@ -131,6 +131,23 @@ fn push_power(out: &mut Vec<(BigInt, Exp)>, carry: &mut BigInt, b: BigInt, e: Ex
     }
 }
 
+/// The primes below 2¹² (sieve of Eratosthenes, computed once).
+fn small_primes() -> &'static [u32] {
+    static PRIMES: std::sync::OnceLock<Vec<u32>> = std::sync::OnceLock::new();
+    PRIMES.get_or_init(|| {
+        let mut composite = vec![false; 4096];
+        (2..4096u32)
+            .filter(|&p| {
+                if composite[p as usize] {
+                    return false;
+                }
+                (p * p..4096).step_by(p as usize).for_each(|k| composite[k as usize] = true);
+                true
+            })
+            .collect()
+    })
+}
+
 /// `k = d^j` with `d` not a perfect power: returns `(d, j)` (`k > 1`).
 fn perfect_power_root(k: &BigInt) -> (BigInt, u32) {
     let mut d = k.clone();
@@ -195,12 +212,30 @@ impl RadicalSum {
                 BigInt::one()
             }));
         }
-        // Factor k over a gcd-free basis of itself (this splits e.g. 12 into
-        // nothing smaller, but reduces 8 to 2³).
-        let (d, j) = perfect_power_root(k);
+        // Small prime factors (trial division below 2¹²) become their own
+        // bases, so that √24 prints as 2·√6; the cofactor, free of them,
+        // is reduced to a non-power d with k' = d^j.
+        let mut rest = k.clone();
         let mut carry = BigInt::one();
         let mut out = Vec::new();
-        push_power(&mut out, &mut carry, d, e * i64::from(j));
+        for &p in small_primes() {
+            if rest.is_one() {
+                break;
+            }
+            let p = BigInt::from(p);
+            let mut v = 0i64;
+            while rest.is_multiple_of(&p) {
+                rest /= &p;
+                v += 1;
+            }
+            if v > 0 {
+                push_power(&mut out, &mut carry, p, e * v);
+            }
+        }
+        if rest > BigInt::one() {
+            let (d, j) = perfect_power_root(&rest);
+            push_power(&mut out, &mut carry, d, e * i64::from(j));
+        }
         let mut terms = BTreeMap::new();
         terms.insert(Monomial(out), BigRational::from_integer(carry));
         RadicalSum { terms }
