@@ -153,10 +153,20 @@ impl RealAlgebraic {
     /// radical sums.
     fn isolated(p: QPoly, lo: BigRational, hi: BigRational) -> Self {
         let node = RootNum::new(p, lo, hi);
-        if let Some(s) = rational_root_in(&node).or_else(|| binomial_root(&node)) {
-            return Self::radical(s);
+        match rational_root_in(&node) {
+            Some(s) => Self::radical(s),
+            None => Self::irrational(node),
         }
-        RealAlgebraic(Repr::Root(Arc::new(node)))
+    }
+
+    /// An isolated root known to be irrational (an irrational shifted,
+    /// scaled, negated or inverted by rationals); `x^n − c` still becomes a
+    /// radical.
+    fn irrational(node: RootNum) -> Self {
+        match binomial_root(&node) {
+            Some(s) => Self::radical(s),
+            None => RealAlgebraic(Repr::Root(Arc::new(node))),
+        }
     }
 
     /// The number defined by polynomial `p` (any non-zero multiple of its
@@ -238,7 +248,7 @@ impl RealAlgebraic {
             Repr::Radical(s) => Self::radical(s.add(&RadicalSum::rational(q.clone()))),
             Repr::Root(r) => {
                 let (lo, hi) = r.interval();
-                Self::isolated(polys::shift(r.poly(), q).monic(), lo + q, hi + q)
+                Self::irrational(RootNum::new(polys::shift(r.poly(), q).monic(), lo + q, hi + q))
             }
         }
     }
@@ -253,7 +263,7 @@ impl RealAlgebraic {
                 let (lo, hi) = r.interval();
                 let (a, b) = (lo * q, hi * q);
                 let (lo, hi) = if q.is_positive() { (a, b) } else { (b, a) };
-                Self::isolated(polys::scale_roots(r.poly(), q).monic(), lo, hi)
+                Self::irrational(RootNum::new(polys::scale_roots(r.poly(), q).monic(), lo, hi))
             }
         }
     }
@@ -300,7 +310,7 @@ impl RealAlgebraic {
                 } else {
                     (lo, hi)
                 };
-                Self::isolated(polys::reverse(r.poly()).monic(), hi.recip(), lo.recip())
+                Self::irrational(RootNum::new(polys::reverse(r.poly()).monic(), hi.recip(), lo.recip()))
             }
         }
     }
@@ -536,7 +546,7 @@ impl std::ops::Neg for RealAlgebraic {
             Repr::Radical(s) => Self::radical(s.neg()),
             Repr::Root(r) => {
                 let (lo, hi) = r.interval();
-                Self::isolated(polys::reflect(r.poly()).monic(), -hi, -lo)
+                Self::irrational(RootNum::new(polys::reflect(r.poly()).monic(), -hi, -lo))
             }
         }
     }
@@ -615,10 +625,11 @@ impl Roots for RealAlgebraic {
     /// The real n-th root: always `Some` for `x ≥ 0` (`n ≥ 1`) and for odd
     /// `n`; `None` for even roots of negatives and `n = 0`.
     fn nth_root(&self, n: u32) -> Option<Self> {
-        if n == 0 {
-            return None;
+        match n {
+            0 => None,
+            1 => Some(self.clone()),
+            _ => self.root_exact(n),
         }
-        self.root_exact(n)
     }
 }
 

@@ -495,6 +495,9 @@ impl RadicalSum {
             terms.insert(Monomial(inv), coef);
             return RadicalSum { terms };
         }
+        if let Some(inv) = self.recip_tower() {
+            return inv;
+        }
         let (p, powers) = self.krylov();
         let a = p.coeffs();
         let mut acc = RadicalSum::default();
@@ -502,6 +505,72 @@ impl RadicalSum {
             acc = acc.add(&xi.scale(&a[i + 1]));
         }
         acc.scale(&-a[0].recip())
+    }
+}
+
+impl RadicalSum {
+    /// `1/self` one radical at a time, when some base `b` occurs only with
+    /// exponents in `(1/N)Z`, `N ∈ {2, 3}`: write `x = Σ x_k c^k` with
+    /// `c = b^{1/N}` and `x_k` free of `b`, multiply by the adjugate, and
+    /// invert the norm (free of `b`) recursively:
+    ///
+    /// ```text
+    /// N = 2:  1/x = (x0 − x1 c) / (x0² − b x1²)
+    /// N = 3:  1/x = ((x0² − b x1x2) + (b x2² − x0x1) c + (x1² − x0x2) c²)
+    ///               / (x0³ + b x1³ + b² x2³ − 3b x0x1x2)
+    /// ```
+    ///
+    /// Cost: a few products in the subfield per level, instead of a Krylov
+    /// elimination of dimension `[Q(x) : Q]`.
+    fn recip_tower(&self) -> Option<Self> {
+        let b = self.bases().into_iter().find(|b| {
+            let n = self.exponent_lcm(b);
+            n == 2 || n == 3
+        })?;
+        let n = self.exponent_lcm(&b);
+        let mut parts = vec![RadicalSum::default(); n as usize];
+        for (m, c) in &self.terms {
+            let k = m
+                .0
+                .iter()
+                .find(|(x, _)| *x == b)
+                .map_or(0, |(_, e)| (e * n).to_integer() as usize);
+            let rest = Monomial(m.0.iter().filter(|(x, _)| *x != b).cloned().collect());
+            parts[k].terms.insert(rest, c.clone());
+        }
+        let mut cm = BTreeMap::new();
+        cm.insert(Monomial(vec![(b.clone(), Exp::new(1, n))]), BigRational::one());
+        let c = RadicalSum { terms: cm };
+        let bq = BigRational::from_integer(b);
+        let (adj, norm) = if n == 2 {
+            let (x0, x1) = (&parts[0], &parts[1]);
+            let adj = x0.add(&x1.mul(&c).neg());
+            let norm = x0.mul(x0).add(&x1.mul(x1).scale(&-bq));
+            (adj, norm)
+        } else {
+            let (x0, x1, x2) = (&parts[0], &parts[1], &parts[2]);
+            let c2 = c.mul(&c);
+            let a0 = x0.mul(x0).add(&x1.mul(x2).scale(&-bq.clone()));
+            let a1 = x2.mul(x2).scale(&bq).add(&x0.mul(x1).neg());
+            let a2 = x1.mul(x1).add(&x0.mul(x2).neg());
+            let adj = a0.add(&a1.mul(&c)).add(&a2.mul(&c2));
+            let norm = x0
+                .mul(x0)
+                .mul(x0)
+                .add(&x1.mul(x1).mul(x1).scale(&bq))
+                .add(&x2.mul(x2).mul(x2).scale(&(&bq * &bq)))
+                .add(&x0.mul(x1).mul(x2).scale(&(&bq * BigRational::from_integer((-3).into()))));
+            (adj, norm)
+        };
+        Some(adj.mul(&norm.recip()))
+    }
+
+    /// The least common denominator of the exponents of base `b`.
+    fn exponent_lcm(&self, b: &BigInt) -> i64 {
+        self.terms
+            .keys()
+            .flat_map(|m| m.0.iter().filter(|(x, _)| x == b).map(|(_, e)| *e.denom()))
+            .fold(1, |acc, d| acc.lcm(&d))
     }
 }
 

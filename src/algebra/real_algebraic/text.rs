@@ -444,3 +444,14 @@ pub(crate) fn root_text(p: &QPoly, k: usize) -> String {
     }
     format!("CRootOf({out}, {k})")
 }
+
+impl crate::io::JsonScalar for RealAlgebraic {
+    /// Rationals as [`BigRational`] writes them (integers as JSON numbers,
+    /// else `"p/q"`); irrational numbers as strings in the text grammar.
+    fn to_json(&self) -> serde_json::Value {
+        match self.as_rational() {
+            Some(q) => q.to_json(),
+            None => serde_json::Value::String(self.to_string()),
+        }
+    }
+}
