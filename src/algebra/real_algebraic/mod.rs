@@ -84,8 +84,8 @@ impl RealAlgebraic {
         RealAlgebraic(Repr::Radical(s))
     }
 
-    /// The rational `q`.
-    pub fn from_rational(q: BigRational) -> Self {
+    /// The rational `q` (by value; [`Scalar::from_rational`] takes a reference).
+    pub(crate) fn rat(q: BigRational) -> Self {
         Self::radical(RadicalSum::rational(q))
     }
 
@@ -139,8 +139,8 @@ impl RealAlgebraic {
         let mut roots = Vec::new();
         for (lo, hi) in polys::isolate(&sf, &-bound.clone(), &bound) {
             let x = Self::isolated(sf.clone(), lo, hi);
-            let above = Self::from_rational(a.clone());
-            let below = Self::from_rational(b.clone());
+            let above = Self::rat(a.clone());
+            let below = Self::rat(b.clone());
             if x > above && x < below {
                 roots.push(x);
             }
@@ -186,7 +186,7 @@ impl RealAlgebraic {
                 return Self::isolated(sf, lo, hi);
             }
             if lo == hi {
-                return Self::from_rational(lo);
+                return Self::rat(lo);
             }
             prec *= 2;
         }
@@ -526,7 +526,7 @@ impl PartialOrd for RealAlgebraic {
 
 impl Zero for RealAlgebraic {
     fn zero() -> Self {
-        Self::from_rational(BigRational::zero())
+        Self::rat(BigRational::zero())
     }
     fn is_zero(&self) -> bool {
         matches!(&self.0, Repr::Radical(s) if s.is_zero())
@@ -535,7 +535,7 @@ impl Zero for RealAlgebraic {
 
 impl One for RealAlgebraic {
     fn one() -> Self {
-        Self::from_rational(BigRational::one())
+        Self::rat(BigRational::one())
     }
 }
 
@@ -602,10 +602,10 @@ by_value!(Add add, Sub sub, Mul mul, Div div);
 
 impl Scalar for RealAlgebraic {
     fn from_i64(n: i64) -> Self {
-        Self::from_rational(BigRational::from_integer(n.into()))
+        Self::rat(BigRational::from_integer(n.into()))
     }
     fn from_rational(q: &BigRational) -> Self {
-        RealAlgebraic::from_rational(q.clone())
+        RealAlgebraic::rat(q.clone())
     }
 }
 

@@ -42,15 +42,15 @@ fn rational_results_come_back_rational() {
 fn tiny_differences_have_the_right_sign() {
     // √(10⁸⁰ + 1) − 10⁴⁰ ≈ 5·10⁻⁴¹ > 0; 10⁴⁰ − √(10⁸⁰ − 1) > 0.
     let big = BigRational::from_integer(num_traits::pow(BigInt::from(10), 80));
-    let ten40 = RealAlgebraic::from_rational(BigRational::from_integer(num_traits::pow(BigInt::from(10), 40)));
-    let up = sqrt(&RealAlgebraic::from_rational(big.clone() + BigRational::one()));
-    let down = sqrt(&RealAlgebraic::from_rational(big - BigRational::one()));
+    let ten40 = RealAlgebraic::rat(BigRational::from_integer(num_traits::pow(BigInt::from(10), 40)));
+    let up = sqrt(&RealAlgebraic::rat(big.clone() + BigRational::one()));
+    let down = sqrt(&RealAlgebraic::rat(big - BigRational::one()));
     assert_eq!((up.clone() - &ten40).signum(), 1);
     assert_eq!((ten40.clone() - &down).signum(), 1);
     assert!(down < ten40 && ten40 < up);
     // The same through the general representation: ∛(1 + √2) perturbed by 10⁻⁴⁰.
     let c = (r(1) + sqrt(&r(2))).nth_root(3).unwrap();
-    let eps = RealAlgebraic::from_rational(BigRational::new(1.into(), num_traits::pow(BigInt::from(10), 40)));
+    let eps = RealAlgebraic::rat(BigRational::new(1.into(), num_traits::pow(BigInt::from(10), 40)));
     assert!(c.clone() + &eps > c);
     assert!(c.clone() - &eps < c);
 }

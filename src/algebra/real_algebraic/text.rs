@@ -259,7 +259,7 @@ fn eval(ast: &Ast, text: &str) -> Result<RealAlgebraic, Error> {
             .ok_or_else(|| bad(text, "this argument must be rational"))
     };
     Ok(match ast {
-        Ast::Num(q) => RealAlgebraic::from_rational(q.clone()),
+        Ast::Num(q) => RealAlgebraic::rat(q.clone()),
         Ast::X => return Err(bad(text, "x may appear only inside CRootOf")),
         Ast::Neg(a) => -eval(a, text)?,
         Ast::Bin(op, a, b) => {
@@ -295,7 +295,7 @@ fn eval(ast: &Ast, text: &str) -> Result<RealAlgebraic, Error> {
                 if b.is_zero() {
                     return Err(bad(text, "division by zero"));
                 }
-                RealAlgebraic::from_rational(a / b)
+                RealAlgebraic::rat(a / b)
             }
             ("CRootOf", [p, k]) => {
                 let p = eval_poly(p, text)?;
