@@ -128,9 +128,10 @@ pub use scalar::{
     Scalar, Tolerance,
 };
 pub use standard::{
-    corner_weights, standardize_curve, standardize_curve_exact_or_f64, standardize_mobius,
-    standardize_quadratic, standardize_quadratic_compact, standardize_rect,
-    standardize_rect_exact_or_f64, theorem1_holds, standardize_curve_algebraic, standardize_rect_algebraic, Exactness, Standard, StandardMap,
+    corner_weights, standardize_curve, standardize_curve_algebraic, standardize_curve_exact_or_f64,
+    standardize_mobius, standardize_quadratic, standardize_quadratic_compact, standardize_rect,
+    standardize_rect_algebraic, standardize_rect_exact_or_f64, theorem1_holds, Exactness, Standard,
+    StandardMap,
 };
 pub use tri::{affine_combination, tri_bernstein, Bary, TriPatch, SYMMETRIES};
 pub use trig::basis::{circle_normal_form, trig_basis_values, TrigFn, TrigParam};

@@ -108,7 +108,9 @@ fn alpha_for<T: Roots>(num: &T, den: &T, n: usize, what: &str) -> Result<T, Erro
         return Ok(ratio(1, 2));
     }
     let q = num.clone() / den;
-    let r = q.nth_root(n as u32).ok_or_else(|| irrational(what, n, &q))?;
+    let r = q
+        .nth_root(n as u32)
+        .ok_or_else(|| irrational(what, n, &q))?;
     Ok((T::one() + &r).recip())
 }
 

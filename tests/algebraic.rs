@@ -29,15 +29,21 @@ fn example1_standard_weights_are_radicals() {
     let w = p.weights();
     for (i, row) in s.patch.weights().iter().enumerate() {
         for (j, got) in row.iter().enumerate() {
-            let want = lambda.pow_u32(i as u32) * &mu.pow_u32(j as u32)
+            let want = lambda.pow_u32(i as u32)
+                * &mu.pow_u32(j as u32)
                 * &A::from_rational(&(w[i][j].clone() / &w[0][0]));
             assert_eq!(*got, want, "ω{i}{j}");
         }
     }
     assert_eq!(s.patch.weights()[1][0].to_string(), "sqrt(6)/6");
     // A Möbius map never moves control points.
-    assert_eq!(s.patch.points().unwrap(), p.map(A::from_rational).points().unwrap());
-    let StandardMap::Mobius { alpha, beta, .. } = &s.map else { panic!("linear") };
+    assert_eq!(
+        s.patch.points().unwrap(),
+        p.map(A::from_rational).points().unwrap()
+    );
+    let StandardMap::Mobius { alpha, beta, .. } = &s.map else {
+        panic!("linear")
+    };
     assert_eq!(*alpha, a("1/(1 + sqrt(8/3))"));
     assert_eq!(beta.clone(), Some(a("1/3")));
 }
@@ -47,8 +53,13 @@ fn example2_compact_standard_form_is_exact() {
     let p = fixture("yang_yong_example2.json");
     let s = standardize_rect_algebraic(&p, true).unwrap();
     let one = A::from_i64(1);
-    assert_eq!(corner_weights(&s.patch), [one.clone(), one.clone(), one.clone(), one]);
-    let StandardMap::Quadratic { map, .. } = &s.map else { panic!("quadratic") };
+    assert_eq!(
+        corner_weights(&s.patch),
+        [one.clone(), one.clone(), one.clone(), one]
+    );
+    let StandardMap::Quadratic { map, .. } = &s.map else {
+        panic!("quadratic")
+    };
     // The roots the source's (19) needs: α2 = 1/(1 + ∛(3/2)), α1 = 1/(1 + ∛(5/8)).
     assert_eq!(map.alpha2, a("1/(1 + cbrt(3/2))"));
     assert_eq!(map.alpha1, a("1/(1 + cbrt(5/8))"));

@@ -45,7 +45,10 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     Ok(one_or_many(out))
 }
 
-fn describe<T: JsonScalar + Ordered>(patch: &Patch<T>, map: &StandardMap<T>) -> Result<Value, Error> {
+fn describe<T: JsonScalar + Ordered>(
+    patch: &Patch<T>,
+    map: &StandardMap<T>,
+) -> Result<Value, Error> {
     let j = |x: &T| x.to_json();
     let reparam = match map {
         StandardMap::Mobius { alpha, beta, k } => match beta {

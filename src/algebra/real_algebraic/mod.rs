@@ -248,7 +248,11 @@ impl RealAlgebraic {
             Repr::Radical(s) => Self::radical(s.add(&RadicalSum::rational(q.clone()))),
             Repr::Root(r) => {
                 let (lo, hi) = r.interval();
-                Self::irrational(RootNum::new(polys::shift(r.poly(), q).monic(), lo + q, hi + q))
+                Self::irrational(RootNum::new(
+                    polys::shift(r.poly(), q).monic(),
+                    lo + q,
+                    hi + q,
+                ))
             }
         }
     }
@@ -263,7 +267,11 @@ impl RealAlgebraic {
                 let (lo, hi) = r.interval();
                 let (a, b) = (lo * q, hi * q);
                 let (lo, hi) = if q.is_positive() { (a, b) } else { (b, a) };
-                Self::irrational(RootNum::new(polys::scale_roots(r.poly(), q).monic(), lo, hi))
+                Self::irrational(RootNum::new(
+                    polys::scale_roots(r.poly(), q).monic(),
+                    lo,
+                    hi,
+                ))
             }
         }
     }
@@ -310,7 +318,11 @@ impl RealAlgebraic {
                 } else {
                     (lo, hi)
                 };
-                Self::irrational(RootNum::new(polys::reverse(r.poly()).monic(), hi.recip(), lo.recip()))
+                Self::irrational(RootNum::new(
+                    polys::reverse(r.poly()).monic(),
+                    hi.recip(),
+                    lo.recip(),
+                ))
             }
         }
     }
@@ -331,7 +343,11 @@ impl RealAlgebraic {
         let p = polys::compose_power(&self.defining_polynomial(), n);
         Some(Self::from_enclosures(&p, |prec| {
             let (lo, hi) = self.enclosure(prec * n);
-            (root_floor(&lo, n, prec), root_floor(&hi, n, prec) + BigRational::new(1.into(), BigInt::one() << prec as usize))
+            (
+                root_floor(&lo, n, prec),
+                root_floor(&hi, n, prec)
+                    + BigRational::new(1.into(), BigInt::one() << prec as usize),
+            )
         }))
     }
 
@@ -552,7 +568,7 @@ impl std::ops::Neg for RealAlgebraic {
     }
 }
 
-impl<'a> std::ops::Add<&'a RealAlgebraic> for RealAlgebraic {
+impl std::ops::Add<&RealAlgebraic> for RealAlgebraic {
     type Output = Self;
     fn add(self, other: &Self) -> Self {
         match (&self.0, &other.0) {
@@ -562,14 +578,14 @@ impl<'a> std::ops::Add<&'a RealAlgebraic> for RealAlgebraic {
     }
 }
 
-impl<'a> std::ops::Sub<&'a RealAlgebraic> for RealAlgebraic {
+impl std::ops::Sub<&RealAlgebraic> for RealAlgebraic {
     type Output = Self;
     fn sub(self, other: &Self) -> Self {
         self + &(-other.clone())
     }
 }
 
-impl<'a> std::ops::Mul<&'a RealAlgebraic> for RealAlgebraic {
+impl std::ops::Mul<&RealAlgebraic> for RealAlgebraic {
     type Output = Self;
     fn mul(self, other: &Self) -> Self {
         match (&self.0, &other.0) {
@@ -580,9 +596,10 @@ impl<'a> std::ops::Mul<&'a RealAlgebraic> for RealAlgebraic {
     }
 }
 
-impl<'a> std::ops::Div<&'a RealAlgebraic> for RealAlgebraic {
+impl std::ops::Div<&RealAlgebraic> for RealAlgebraic {
     type Output = Self;
     /// **Panics if `other` is zero.**
+    #[allow(clippy::suspicious_arithmetic_impl)] // x / y = x · (1/y)
     fn div(self, other: &Self) -> Self {
         self * &other.recip_exact()
     }

@@ -118,7 +118,11 @@ pub(crate) fn cauchy_bound(p: &QPoly) -> BigRational {
 /// Isolating intervals `(lo, hi)` (open, endpoints not roots, one root
 /// each, increasing) of the real roots of a square-free `p` in `(a, b)`,
 /// where `a < b` are not roots; by bisection with Sturm counts.
-pub(crate) fn isolate(p: &QPoly, a: &BigRational, b: &BigRational) -> Vec<(BigRational, BigRational)> {
+pub(crate) fn isolate(
+    p: &QPoly,
+    a: &BigRational,
+    b: &BigRational,
+) -> Vec<(BigRational, BigRational)> {
     let seq = sturm_sequence(p);
     let mut out = Vec::new();
     let mut stack = vec![(a.clone(), b.clone())];
@@ -186,9 +190,7 @@ fn interpolate(values: &[BigRational]) -> QPoly {
 /// `g(t)` builds `g_t` for each integer `t` (its degree in `z` must not
 /// depend on `t`).
 fn resultant_in_t(p: &QPoly, g: impl Fn(&BigRational) -> QPoly, deg: usize) -> QPoly {
-    let values: Vec<BigRational> = (0..=deg as i64)
-        .map(|t| resultant(p, &g(&q(t))))
-        .collect();
+    let values: Vec<BigRational> = (0..=deg as i64).map(|t| resultant(p, &g(&q(t)))).collect();
     interpolate(&values)
 }
 
@@ -196,10 +198,9 @@ fn resultant_in_t(p: &QPoly, g: impl Fn(&BigRational) -> QPoly, deg: usize) -> Q
 fn shifted_reflection(qp: &QPoly, t: &BigRational) -> QPoly {
     // Horner: q(t − z) = (…(q_d (t − z) + q_{d−1})(t − z) + …).
     let lin = UPoly::new(vec![t.clone(), q(-1)]);
-    qp.coeffs()
-        .iter()
-        .rev()
-        .fold(UPoly::zero(), |acc, c| acc.mul(&lin).add(&UPoly::constant(c.clone())))
+    qp.coeffs().iter().rev().fold(UPoly::zero(), |acc, c| {
+        acc.mul(&lin).add(&UPoly::constant(c.clone()))
+    })
 }
 
 /// A polynomial whose roots include every `α + β` (`p(α) = 0`, `q(β) = 0`).
@@ -248,10 +249,9 @@ pub(crate) fn reverse(p: &QPoly) -> QPoly {
 /// `p(x − c)` (roots shifted by `+c`).
 pub(crate) fn shift(p: &QPoly, c: &BigRational) -> QPoly {
     let lin = UPoly::new(vec![-c.clone(), q(1)]);
-    p.coeffs()
-        .iter()
-        .rev()
-        .fold(UPoly::zero(), |acc, k| acc.mul(&lin).add(&UPoly::constant(k.clone())))
+    p.coeffs().iter().rev().fold(UPoly::zero(), |acc, k| {
+        acc.mul(&lin).add(&UPoly::constant(k.clone()))
+    })
 }
 
 /// `p(x / c)` up to a constant factor (roots scaled by `c ≠ 0`):

@@ -141,7 +141,9 @@ fn small_primes() -> &'static [u32] {
                 if composite[p as usize] {
                     return false;
                 }
-                (p * p..4096).step_by(p as usize).for_each(|k| composite[k as usize] = true);
+                (p * p..4096)
+                    .step_by(p as usize)
+                    .for_each(|k| composite[k as usize] = true);
                 true
             })
             .collect()
@@ -364,11 +366,7 @@ impl RadicalSum {
             return Self::default();
         }
         RadicalSum {
-            terms: self
-                .terms
-                .iter()
-                .map(|(m, x)| (m.clone(), x * c))
-                .collect(),
+            terms: self.terms.iter().map(|(m, x)| (m.clone(), x * c)).collect(),
         }
     }
 
@@ -482,14 +480,13 @@ impl RadicalSum {
         if let Some((m, c)) = self.single_term() {
             // (c·∏b^e)^{-1} = c^{-1} ∏ b^{-e} = (c ∏ b)^{-1} ∏ b^{1−e}.
             let mut carry = BigInt::one();
-            let inv: Vec<(BigInt, Exp)> = m
-                .0
-                .iter()
-                .map(|(b, e)| {
-                    carry *= b;
-                    (b.clone(), Exp::one() - e)
-                })
-                .collect();
+            let inv: Vec<(BigInt, Exp)> =
+                m.0.iter()
+                    .map(|(b, e)| {
+                        carry *= b;
+                        (b.clone(), Exp::one() - e)
+                    })
+                    .collect();
             let coef = (c * BigRational::from_integer(carry)).recip();
             let mut terms = BTreeMap::new();
             terms.insert(Monomial(inv), coef);
@@ -530,16 +527,18 @@ impl RadicalSum {
         let n = self.exponent_lcm(&b);
         let mut parts = vec![RadicalSum::default(); n as usize];
         for (m, c) in &self.terms {
-            let k = m
-                .0
-                .iter()
-                .find(|(x, _)| *x == b)
-                .map_or(0, |(_, e)| (e * n).to_integer() as usize);
+            let k =
+                m.0.iter()
+                    .find(|(x, _)| *x == b)
+                    .map_or(0, |(_, e)| (e * n).to_integer() as usize);
             let rest = Monomial(m.0.iter().filter(|(x, _)| *x != b).cloned().collect());
             parts[k].terms.insert(rest, c.clone());
         }
         let mut cm = BTreeMap::new();
-        cm.insert(Monomial(vec![(b.clone(), Exp::new(1, n))]), BigRational::one());
+        cm.insert(
+            Monomial(vec![(b.clone(), Exp::new(1, n))]),
+            BigRational::one(),
+        );
         let c = RadicalSum { terms: cm };
         let bq = BigRational::from_integer(b);
         let (adj, norm) = if n == 2 {
@@ -559,7 +558,11 @@ impl RadicalSum {
                 .mul(x0)
                 .add(&x1.mul(x1).mul(x1).scale(&bq))
                 .add(&x2.mul(x2).mul(x2).scale(&(&bq * &bq)))
-                .add(&x0.mul(x1).mul(x2).scale(&(&bq * BigRational::from_integer((-3).into()))));
+                .add(
+                    &x0.mul(x1)
+                        .mul(x2)
+                        .scale(&(&bq * BigRational::from_integer((-3).into()))),
+                );
             (adj, norm)
         };
         Some(adj.mul(&norm.recip()))

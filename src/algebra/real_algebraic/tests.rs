@@ -34,7 +34,10 @@ fn rational_results_come_back_rational() {
     let c = r(2).nth_root(3).unwrap();
     assert_eq!((c.clone() * &c * &c).as_rational(), Some(ratio(2, 1)));
     let x = sqrt(&(r(3) + sqrt(&r(2))));
-    assert_eq!((x.clone() * &x - &sqrt(&r(2))).as_rational(), Some(ratio(3, 1)));
+    assert_eq!(
+        (x.clone() * &x - &sqrt(&r(2))).as_rational(),
+        Some(ratio(3, 1))
+    );
     assert_eq!((x.clone() / &x).as_rational(), Some(ratio(1, 1)));
 }
 
@@ -42,7 +45,10 @@ fn rational_results_come_back_rational() {
 fn tiny_differences_have_the_right_sign() {
     // √(10⁸⁰ + 1) − 10⁴⁰ ≈ 5·10⁻⁴¹ > 0; 10⁴⁰ − √(10⁸⁰ − 1) > 0.
     let big = BigRational::from_integer(num_traits::pow(BigInt::from(10), 80));
-    let ten40 = RealAlgebraic::rat(BigRational::from_integer(num_traits::pow(BigInt::from(10), 40)));
+    let ten40 = RealAlgebraic::rat(BigRational::from_integer(num_traits::pow(
+        BigInt::from(10),
+        40,
+    )));
     let up = sqrt(&RealAlgebraic::rat(big.clone() + BigRational::one()));
     let down = sqrt(&RealAlgebraic::rat(big - BigRational::one()));
     assert_eq!((up.clone() - &ten40).signum(), 1);
@@ -50,7 +56,10 @@ fn tiny_differences_have_the_right_sign() {
     assert!(down < ten40 && ten40 < up);
     // The same through the general representation: ∛(1 + √2) perturbed by 10⁻⁴⁰.
     let c = (r(1) + sqrt(&r(2))).nth_root(3).unwrap();
-    let eps = RealAlgebraic::rat(BigRational::new(1.into(), num_traits::pow(BigInt::from(10), 40)));
+    let eps = RealAlgebraic::rat(BigRational::new(
+        1.into(),
+        num_traits::pow(BigInt::from(10), 40),
+    ));
     assert!(c.clone() + &eps > c);
     assert!(c.clone() - &eps < c);
 }
@@ -74,7 +83,16 @@ fn text_round_trips() {
     assert_eq!(parse("2**(-1/2)*2").to_string(), "sqrt(2)");
     assert_eq!(parse("CRootOf(x**2 - 2, 0)"), -sqrt(&r(2)));
     assert_eq!(parse("Rational(3, 4)"), q(3, 4));
-    for bad in ["cbrt(-2)", "sqrt(", "x + 1", "1/0", "root(2, 0)", "2**100", "foo(1)", "CRootOf(x**2 + 1, 0)"] {
+    for bad in [
+        "cbrt(-2)",
+        "sqrt(",
+        "x + 1",
+        "1/0",
+        "root(2, 0)",
+        "2**100",
+        "foo(1)",
+        "CRootOf(x**2 + 1, 0)",
+    ] {
         assert!(bad.parse::<RealAlgebraic>().is_err(), "{bad}");
     }
 }
@@ -118,9 +136,8 @@ fn reference(x: &RealAlgebraic) -> BigRational {
 }
 
 fn small_radical() -> impl Strategy<Value = RealAlgebraic> {
-    (-5i64..6, 1i64..4, 1i64..12, 2u32..4).prop_map(|(a, b, c, n)| {
-        q(a, b) * &r(c).nth_root(n).unwrap()
-    })
+    (-5i64..6, 1i64..4, 1i64..12, 2u32..4)
+        .prop_map(|(a, b, c, n)| q(a, b) * &r(c).nth_root(n).unwrap())
 }
 
 proptest! {

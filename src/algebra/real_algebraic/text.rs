@@ -249,7 +249,12 @@ fn small_int(q: &BigRational, text: &str, what: &str) -> Result<i64, Error> {
         .then(|| q.to_integer().to_i64())
         .flatten()
         .filter(|n| n.abs() <= MAX_EXPONENT)
-        .ok_or_else(|| bad(text, &format!("{what} must be an integer of size at most 64")))
+        .ok_or_else(|| {
+            bad(
+                text,
+                &format!("{what} must be an integer of size at most 64"),
+            )
+        })
 }
 
 fn eval(ast: &Ast, text: &str) -> Result<RealAlgebraic, Error> {
@@ -274,8 +279,16 @@ fn eval(ast: &Ast, text: &str) -> Result<RealAlgebraic, Error> {
         }
         Ast::Pow(base, e) => {
             let e = rat(e)?;
-            let p = small_int(&BigRational::from_integer(e.numer().clone()), text, "an exponent")?;
-            let q = small_int(&BigRational::from_integer(e.denom().clone()), text, "a root index")?;
+            let p = small_int(
+                &BigRational::from_integer(e.numer().clone()),
+                text,
+                "an exponent",
+            )?;
+            let q = small_int(
+                &BigRational::from_integer(e.denom().clone()),
+                text,
+                "a root index",
+            )?;
             let b = eval(base, text)?;
             let r = real_root(&b, q as u32, text)?;
             integer_power(&r, p, text)?
@@ -306,7 +319,12 @@ fn eval(ast: &Ast, text: &str) -> Result<RealAlgebraic, Error> {
                 let k = usize::try_from(k).map_err(|_| bad(text, "negative root index"))?;
                 RealAlgebraic::root_of(&p, k).map_err(|e| bad(text, &e.to_string()))?
             }
-            _ => return Err(bad(text, &format!("unknown function {name} or wrong arguments"))),
+            _ => {
+                return Err(bad(
+                    text,
+                    &format!("unknown function {name} or wrong arguments"),
+                ))
+            }
         },
     })
 }
@@ -346,7 +364,12 @@ fn eval_poly(ast: &Ast, text: &str) -> Result<QPoly, Error> {
                 '*' => a.mul(&b),
                 _ => match b.degree() {
                     Some(0) => a.scale(&b.coeffs()[0].recip()),
-                    _ => return Err(bad(text, "a polynomial may be divided only by a non-zero number")),
+                    _ => {
+                        return Err(bad(
+                            text,
+                            "a polynomial may be divided only by a non-zero number",
+                        ))
+                    }
                 },
             }
         }
