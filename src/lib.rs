@@ -33,6 +33,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+mod algebra;
 mod arc;
 mod audit;
 mod bernstein;
@@ -96,6 +97,7 @@ pub mod proofs;
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
+pub use algebra::real_algebraic::{text::parse_algebraic, RealAlgebraic};
 pub use arc::{
     check_lambda, lambda_change_delta, lambda_change_param, lambda_interval, lambda_of_sigma_cubed,
     sigma_of_lambda, ArcCubic, Computed, LambdaFactors, QuadArc,
@@ -152,9 +154,10 @@ pub use scalar::{
     Scalar, Tolerance,
 };
 pub use standard::{
-    corner_weights, standardize_curve, standardize_curve_exact_or_f64, standardize_mobius,
-    standardize_quadratic, standardize_quadratic_compact, standardize_rect,
-    standardize_rect_exact_or_f64, theorem1_holds, Exactness, Standard, StandardMap,
+    corner_weights, standardize_curve, standardize_curve_algebraic, standardize_curve_exact_or_f64,
+    standardize_mobius, standardize_quadratic, standardize_quadratic_compact, standardize_rect,
+    standardize_rect_algebraic, standardize_rect_exact_or_f64, theorem1_holds, Exactness, Standard,
+    StandardMap,
 };
 pub use step::{read_step, StepEntity, StepModel};
 pub use tri::{affine_combination, tri_bernstein, Bary, TriPatch, SYMMETRIES};

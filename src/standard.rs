@@ -7,9 +7,12 @@
 //! uniform weight scaling (eq. 5), both proved to keep every point in the
 //! proofs family `yang_yong`.
 //!
-//! The formulas need m-th and n-th roots. They are exact when the roots are
-//! rational ([`rational_root`]); otherwise the caller falls back to `f64` and
-//! says so ([`standardize_rect_exact_or_f64`], [`standardize_curve_exact_or_f64`]).
+//! The formulas need m-th and n-th roots. Over Q they are exact when the
+//! roots are rational ([`rational_root`]); [`standardize_curve_algebraic`]
+//! and [`standardize_rect_algebraic`] run the same code on
+//! [`RealAlgebraic`] and are exact for every input. The older
+//! [`standardize_rect_exact_or_f64`] and [`standardize_curve_exact_or_f64`]
+//! fall back to `f64` instead.
 //!
 //! ## Generalizing (18)(19) to bidegree (m, n)
 //!
@@ -41,6 +44,7 @@
 //! bidegree (m, m + n) (ours, proved in `yang_yong`):
 //! [`standardize_quadratic_compact`] returns that smaller form.
 
+use crate::algebra::real_algebraic::RealAlgebraic;
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::rect::RectPatch;
@@ -109,13 +113,17 @@ fn alpha_for<T: Roots>(num: &T, den: &T, n: usize, what: &str) -> Result<T, Erro
         return Ok(ratio(1, 2));
     }
     let q = num.clone() / den;
-    let r = q.nth_root(n as u32).ok_or_else(|| {
-        Error::NotRational(format!(
-            "{what}: the {n}-th root of {} is irrational",
-            q.to_f64()
-        ))
-    })?;
+    let r = q
+        .nth_root(n as u32)
+        .ok_or_else(|| irrational(what, n, &q))?;
     Ok((T::one() + &r).recip())
+}
+
+fn irrational<T: Ordered>(what: &str, n: usize, q: &T) -> Error {
+    Error::NotRational(format!(
+        "{what}: the {n}-th root of {} is irrational",
+        q.to_f64()
+    ))
 }
 
 /// The standard form of a curve (end weights 1): Möbius `α = 1/(1 + (w₀/w_n)^{1/n})`
@@ -365,15 +373,52 @@ fn quadratic_params<T: Roots>(p: &RectPatch<T>) -> Result<Quadratic<T>, Error> {
     let [w00, wm0, w0n, wmn] = corner_weights(p);
     let alpha2 = alpha_for(&w00, &wm0, m, "eq. (19) α2")?;
     let alpha1 = alpha_for(&w0n, &wmn, m, "eq. (19) α1")?;
-    let a2m = alpha2.pow_u32(m as u32) * &w00;
-    let a1m = alpha1.pow_u32(m as u32) * &w0n;
-    let beta = alpha_for(&a2m, &a1m, n, "eq. (19) β1 = β2")?;
+    let beta = match beta_root(&alpha1, &alpha2, &w00, &w0n, m, n)? {
+        Some(r) => (T::one() + &r).recip(),
+        None => ratio(1, 2),
+    };
     Ok(Quadratic {
         alpha1,
         alpha2,
         beta1: beta.clone(),
         beta2: beta,
     })
+}
+
+/// The root `ρ = (α2^m ω_{0,0} / (α1^m ω_{0,n}))^{1/n}` of eq. (19)'s β
+/// (`None` when `n = 0`).
+///
+/// Computed first as `((α2/α1)^{m/g})^{g/n} · (ω_{0,0}/ω_{0,n})^{1/n}` with
+/// `g = gcd(m, n)` — the same positive number — because each factor is a
+/// root of something simpler: for `n | m` the first factor is a power of
+/// `α2/α1`, so an algebraic `ρ` stays in the field of the α's and one new
+/// radical of the corner weights (Example 2: no resultants). Falls back to
+/// the direct root when a factor has no exact root (a rational `ρ` may have
+/// irrational factors).
+fn beta_root<T: Roots>(
+    alpha1: &T,
+    alpha2: &T,
+    w00: &T,
+    w0n: &T,
+    m: usize,
+    n: usize,
+) -> Result<Option<T>, Error> {
+    if n == 0 {
+        return Ok(None);
+    }
+    let g = num_integer::gcd(m, n);
+    let ratio_power = (alpha2.clone() / alpha1).pow_u32((m / g) as u32);
+    let split = ratio_power
+        .nth_root((n / g) as u32)
+        .zip((w00.clone() / w0n).nth_root(n as u32))
+        .map(|(a, b)| a * &b);
+    if let Some(r) = split {
+        return Ok(Some(r));
+    }
+    let q = alpha2.pow_u32(m as u32) * w00 / &(alpha1.pow_u32(m as u32) * w0n);
+    q.nth_root(n as u32)
+        .map(Some)
+        .ok_or_else(|| irrational("eq. (19) β1 = β2", n, &q))
 }
 
 /// Scale the weights so that `ω_{0,0}` becomes 1.
@@ -399,6 +444,51 @@ pub fn standardize_rect<T: Roots>(
         standardize_mobius(p, tol)
     } else {
         standardize_quadratic(p)
+    }
+}
+
+/// The standard form of a curve over the real algebraic numbers: exact for
+/// every curve with positive weights ([`standardize_curve`] run on
+/// [`RealAlgebraic`]; the roots are radicals of the end weights).
+///
+/// # Errors
+///
+/// [`Error::Weight`] for a non-positive weight.
+///
+/// ```
+/// use exact_bezier::{RationalCurve, standardize_curve_algebraic, ratio};
+/// use num_rational::BigRational;
+/// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+/// let c = RationalCurve::new(vec![p(0), p(1), p(3)], vec![ratio(2, 1), ratio(1, 1), ratio(1, 1)]).unwrap();
+/// let s = standardize_curve_algebraic(&c).unwrap();
+/// // The standard middle weight is w₁/√(w₀w₂) = 1/√2.
+/// assert_eq!(s.patch.weights()[1].to_string(), "sqrt(2)/2");
+/// ```
+pub fn standardize_curve_algebraic(
+    c: &RationalCurve<BigRational>,
+) -> Result<Standard<RationalCurve<RealAlgebraic>, RealAlgebraic>, Error> {
+    standardize_curve(&c.map(Scalar::from_rational))
+}
+
+/// [`standardize_rect`] over the real algebraic numbers: exact for every
+/// patch with positive weights. The linear (8) or quadratic method is chosen
+/// exactly (Theorem 1 on the exact input); `compact` selects
+/// [`standardize_quadratic_compact`].
+///
+/// # Errors
+///
+/// [`Error::Weight`] for a non-positive weight.
+pub fn standardize_rect_algebraic(
+    p: &RectPatch<BigRational>,
+    compact: bool,
+) -> Result<Standard<RectPatch<RealAlgebraic>, RealAlgebraic>, Error> {
+    let a = p.map(Scalar::from_rational);
+    if theorem1_holds(p, Tolerance::EXACT) {
+        mobius_unchecked(&a)
+    } else if compact {
+        standardize_quadratic_compact(&a)
+    } else {
+        standardize_quadratic(&a)
     }
 }
 

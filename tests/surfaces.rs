@@ -300,13 +300,13 @@ fn cli_standardize_example3_is_exact() {
 }
 
 #[test]
-fn cli_standardize_example2_is_quadratic_and_approximate() {
+fn cli_standardize_example2_is_quadratic_and_exact() {
     let (code, v) = cli(&["standardize", "tests/fixtures/yang_yong_example2.json"]);
     assert_eq!(code, 0);
-    assert_eq!(v["exact"], false);
+    assert_eq!(v["exact"], true);
     assert_eq!(v["reparameterization"]["kind"], "quadratic");
     assert_eq!(v["patch"]["degree"], serde_json::json!([6, 6]));
-    assert!(v["why_not_exact"].as_str().unwrap().contains("irrational"));
+    assert_eq!(v["patch"]["weights"][6][6], 1);
     let (code, v) = cli(&[
         "standardize",
         "--compact",

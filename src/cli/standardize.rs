@@ -1,14 +1,13 @@
 //! `standardize FILE`: the standard form of a curve (end weights 1) or a
 //! rect patch (corner weights 1), source 000. The JSON says whether the
-//! result is exact and names the reparameterization with its parameters.
+//! result is exact (always, over the real algebraic numbers) and names the
+//! reparameterization with its parameters.
 
 use super::{charge_each, load, one_or_many, ScalarKind};
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
 use crate::scalar::Ordered;
-use crate::standard::{
-    standardize_curve_exact_or_f64, standardize_rect_exact_or_f64, Exactness, StandardMap,
-};
+use crate::standard::{standardize_curve_algebraic, standardize_rect_algebraic, StandardMap};
 use serde_json::{json, Value};
 
 /// Arguments of `standardize`.
@@ -23,8 +22,9 @@ pub struct Args {
     compact: bool,
 }
 
-/// The subcommand: `{"exact": bool, "reparameterization": {...}, "patch": {...}}` per input
-/// (plus `"why_not_exact"` when a root is irrational).
+/// The subcommand: `{"exact": true, "reparameterization": {...}, "patch": {...}}` per input;
+/// every number is exact, irrational ones in the text grammar of
+/// `docs/algebraic_numbers.md` (`"sqrt(6)/6"`).
 pub fn run(a: &Args) -> Result<Value, Error> {
     let patches = load(&a.file)?;
     // A Möbius map with α of about bits/n bits (a root of w₀/wₙ), or for a
@@ -39,18 +39,14 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     let out = patches
         .iter()
         .map(|p| match p {
-            Patch::Curve(c) => match standardize_curve_exact_or_f64(c)? {
-                Exactness::Exact(s) => describe(&Patch::Curve(s.patch), &s.map, None),
-                Exactness::Approximate(s, why) => {
-                    describe(&Patch::Curve(s.patch), &s.map, Some(why))
-                }
-            },
-            Patch::Rect(r) => match standardize_rect_exact_or_f64(r, a.compact)? {
-                Exactness::Exact(s) => describe(&Patch::Rect(s.patch), &s.map, None),
-                Exactness::Approximate(s, why) => {
-                    describe(&Patch::Rect(s.patch), &s.map, Some(why))
-                }
-            },
+            Patch::Curve(c) => {
+                let s = standardize_curve_algebraic(c)?;
+                describe(&Patch::Curve(s.patch), &s.map)
+            }
+            Patch::Rect(r) => {
+                let s = standardize_rect_algebraic(r, a.compact)?;
+                describe(&Patch::Rect(s.patch), &s.map)
+            }
             Patch::Tri(_) => Err(Error::Shape(
                 "standardize applies to a curve or a rect patch, not a tri patch".into(),
             )),
@@ -62,7 +58,6 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 fn describe<T: JsonScalar + Ordered>(
     patch: &Patch<T>,
     map: &StandardMap<T>,
-    why: Option<String>,
 ) -> Result<Value, Error> {
     let j = |x: &T| x.to_json();
     let reparam = match map {
@@ -76,9 +71,5 @@ fn describe<T: JsonScalar + Ordered>(
             "beta1": j(&map.beta1), "beta2": j(&map.beta2), "k": j(k)
         }),
     };
-    let mut v = json!({"exact": why.is_none(), "reparameterization": reparam, "patch": patch_to_json(patch)?});
-    if let Some(why) = why {
-        v["why_not_exact"] = Value::String(why);
-    }
-    Ok(v)
+    Ok(json!({"exact": true, "reparameterization": reparam, "patch": patch_to_json(patch)?}))
 }

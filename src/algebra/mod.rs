@@ -1,0 +1,3 @@
+//! Number types beyond the rationals: exact real algebraic numbers.
+
+pub mod real_algebraic;

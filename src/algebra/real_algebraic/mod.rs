@@ -1,0 +1,671 @@
+//! [`RealAlgebraic`]: exact real algebraic numbers, a [`Field`] +
+//! [`Ordered`] scalar with exact n-th roots ([`Roots`]), so that every
+//! generic algorithm of the crate (standard forms, curvature, arcs, …) runs
+//! on numbers such as `√6/6` or `∛(3/2)` without rounding.
+//!
+//! ## Two representations, one type
+//!
+//! - **Radical sums** ([`radical`]): `Σ c_k ∏ b_j^{e_{k,j}}`, rationals `c_k`
+//!   times products of real radicals of pairwise coprime integers. Ring
+//!   operations are sparse polynomial arithmetic, `==` is structural (the
+//!   monomials are linearly independent over Q, Mordell 1953), division goes
+//!   through the minimal polynomial. Rationals, `√q`, `∛q`, and everything
+//!   the sources' standard forms, arcs and trigonometric angles produce stay
+//!   here: this is the number-field fast path.
+//! - **Isolated roots** ([`root`]): a monic square-free polynomial over Q and
+//!   an isolating interval with rational endpoints. Needed for roots of sums
+//!   (`∛(1 + √2)`), `CRootOf(x⁵ − x − 1, 0)`, and anything combined with
+//!   them. Sums and products use resultants (`Res_z(p(z), q(t − z))`,
+//!   `Res_z(p(z), z^{deg q} q(t/z))`), made square-free; the result's root is
+//!   isolated by refining the operands until the Sturm count of the new
+//!   polynomial on the combined enclosure is 1. Degrees multiply, so long
+//!   chains in this representation are expensive (`deg(α+β) ≤ deg α·deg β`).
+//!
+//! ## Exactness contract
+//!
+//! Zero is decided exactly (structurally for radical sums; for isolated
+//! roots the value is irrational by invariant and a resultant result whose
+//! root is rational is recognised: a rational root `k/L` of an integer
+//! polynomial with leading coefficient `L` is found by refining to width
+//! `< 1/L`). Signs and comparisons refine enclosures until they exclude 0;
+//! they terminate because the value is non-zero. No tolerance anywhere.
+//!
+//! Reference: Cohen, *A Course in Computational Algebraic Number Theory*
+//! (1993), §3.3, §4.1; Yap, *Fundamental Problems of Algorithmic Algebra*
+//! (2000), ch. 7; Mordell, *On the linear independence of algebraic
+//! numbers*, Pacific J. Math. 3 (1953) 625–630.
+
+pub(crate) mod polys;
+pub(crate) mod radical;
+pub(crate) mod root;
+pub mod text;
+
+use crate::error::Error;
+use crate::scalar::{Field, Ordered, Roots, Scalar};
+use crate::upoly::UPoly;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
+use polys::QPoly;
+use radical::RadicalSum;
+use root::RootNum;
+use std::cmp::Ordering;
+use std::sync::Arc;
+
+/// An exact real algebraic number.
+///
+/// ```text
+/// value = Σ c_k ∏ b_j^{e_kj}   (radical sum)     or   the root of p in (lo, hi)
+/// ```
+///
+/// # Examples
+///
+/// ```
+/// use exact_bezier::{RealAlgebraic, Roots, Scalar};
+/// let r = |n: i64| RealAlgebraic::from_i64(n);
+/// let (s2, s3) = (r(2).nth_root(2).unwrap(), r(3).nth_root(2).unwrap());
+/// let sum = s2.clone() + &s3;
+/// // (√2 + √3)² = 5 + 2√6, exactly.
+/// assert_eq!(sum.clone() * &sum, r(5) + r(2) * r(6).nth_root(2).unwrap());
+/// assert_eq!(sum.to_string(), "sqrt(2) + sqrt(3)");
+/// assert!(s2 < s3);
+/// ```
+#[derive(Clone)]
+pub struct RealAlgebraic(Repr);
+
+#[derive(Clone)]
+enum Repr {
+    Radical(RadicalSum),
+    Root(Arc<RootNum>),
+}
+
+impl RealAlgebraic {
+    fn radical(s: RadicalSum) -> Self {
+        RealAlgebraic(Repr::Radical(s))
+    }
+
+    /// The rational `q` (by value; [`Scalar::from_rational`] takes a reference).
+    pub(crate) fn rat(q: BigRational) -> Self {
+        Self::radical(RadicalSum::rational(q))
+    }
+
+    /// `Some(q)` when the number is rational.
+    pub fn as_rational(&self) -> Option<BigRational> {
+        match &self.0 {
+            Repr::Radical(s) => s.as_rational(),
+            Repr::Root(_) => None,
+        }
+    }
+
+    /// The `k`-th real root (0-based, increasing) of a non-zero polynomial
+    /// over Q, like SymPy's `CRootOf(p, k)` for real roots.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Domain`] when `p` is zero or has at most `k` real roots.
+    ///
+    /// ```
+    /// use exact_bezier::{RealAlgebraic, UPoly, ratio};
+    /// let p = UPoly::new(vec![ratio(-2, 1), ratio(0, 1), ratio(1, 1)]); // x² − 2
+    /// let r = RealAlgebraic::root_of(&p, 1).unwrap();
+    /// assert_eq!(r.to_string(), "sqrt(2)");
+    /// ```
+    pub fn root_of(p: &UPoly<BigRational>, k: usize) -> Result<Self, Error> {
+        if p.is_zero() {
+            return Err(Error::Domain("the zero polynomial has no roots".into()));
+        }
+        let b = polys::cauchy_bound(p);
+        let found = Self::real_roots_in(p, &-b.clone(), &b);
+        let n = found.len();
+        found.into_iter().nth(k).ok_or_else(|| {
+            Error::Domain(format!(
+                "root index {k} is out of range: the polynomial has {n} real roots"
+            ))
+        })
+    }
+
+    /// Every distinct real root of a non-zero polynomial `p` in the open
+    /// interval `(a, b)`, increasing.
+    ///
+    /// Cost: Sturm sequence `O(d²)` rational operations, then one Sturm
+    /// count per bisection step (the number of steps grows with
+    /// `log(1/root separation)`).
+    pub fn real_roots_in(p: &UPoly<BigRational>, a: &BigRational, b: &BigRational) -> Vec<Self> {
+        if p.degree().unwrap_or(0) == 0 || a >= b {
+            return Vec::new();
+        }
+        let sf = polys::square_free(p);
+        let bound = polys::cauchy_bound(&sf);
+        let mut roots = Vec::new();
+        for (lo, hi) in polys::isolate(&sf, &-bound.clone(), &bound) {
+            let x = Self::isolated(sf.clone(), lo, hi);
+            let above = Self::rat(a.clone());
+            let below = Self::rat(b.clone());
+            if x > above && x < below {
+                roots.push(x);
+            }
+        }
+        roots
+    }
+
+    /// The root of the square-free `p` isolated in `(lo, hi)` (endpoints not
+    /// roots), simplified: rational roots and roots of `x^n − c` come back as
+    /// radical sums.
+    fn isolated(p: QPoly, lo: BigRational, hi: BigRational) -> Self {
+        let node = RootNum::new(p, lo, hi);
+        match rational_root_in(&node) {
+            Some(s) => Self::radical(s),
+            None => Self::irrational(node),
+        }
+    }
+
+    /// An isolated root known to be irrational (an irrational shifted,
+    /// scaled, negated or inverted by rationals); `x^n − c` still becomes a
+    /// radical.
+    fn irrational(node: RootNum) -> Self {
+        match binomial_root(&node) {
+            Some(s) => Self::radical(s),
+            None => RealAlgebraic(Repr::Root(Arc::new(node))),
+        }
+    }
+
+    /// The number defined by polynomial `p` (any non-zero multiple of its
+    /// minimal polynomial) and enclosures `enclose(prec)` that shrink to it
+    /// as `prec` grows.
+    fn from_enclosures(p: &QPoly, enclose: impl Fn(u32) -> (BigRational, BigRational)) -> Self {
+        let sf = polys::square_free(p);
+        let seq = polys::sturm_sequence(&sf);
+        let mut prec = 16;
+        loop {
+            let (lo, hi) = enclose(prec);
+            if lo < hi
+                && !sf.eval(&lo).is_zero()
+                && !sf.eval(&hi).is_zero()
+                && polys::count_roots(&seq, &lo, &hi) == 1
+            {
+                return Self::isolated(sf, lo, hi);
+            }
+            if lo == hi {
+                return Self::rat(lo);
+            }
+            prec *= 2;
+        }
+    }
+
+    /// A polynomial over Q with this number as a root: the minimal
+    /// polynomial for radical sums, the square-free defining polynomial
+    /// otherwise.
+    pub fn defining_polynomial(&self) -> UPoly<BigRational> {
+        match &self.0 {
+            Repr::Radical(s) => s.minimal_polynomial(),
+            Repr::Root(r) => r.poly().clone(),
+        }
+    }
+
+    /// Rational bounds `lo ≤ self ≤ hi` that shrink to the value as `prec`
+    /// grows (width `O(2^{−prec})`); `lo = hi` for rationals.
+    ///
+    /// ```
+    /// use exact_bezier::{RealAlgebraic, Roots, Scalar, ratio};
+    /// let s2 = RealAlgebraic::from_i64(2).nth_root(2).unwrap();
+    /// let (lo, hi) = s2.enclosure(20);
+    /// assert!(lo < ratio(14143, 10000) && hi > ratio(14142, 10000));
+    /// ```
+    pub fn enclosure(&self, prec: u32) -> (BigRational, BigRational) {
+        match &self.0 {
+            Repr::Radical(s) => s.enclosure(prec),
+            Repr::Root(r) => r.enclosure(prec),
+        }
+    }
+
+    /// The exact sign: `−1`, `0` or `1`.
+    pub fn signum(&self) -> i32 {
+        match &self.0 {
+            Repr::Radical(s) => s.signum(),
+            Repr::Root(r) => r.signum(),
+        }
+    }
+
+    /// `self + other` through resultants (at least one operand an isolated
+    /// root): a rational operand shifts the polynomial instead.
+    fn add_general(&self, other: &Self) -> Self {
+        if let Some(q) = other.as_rational() {
+            return self.shifted(&q);
+        }
+        if let Some(q) = self.as_rational() {
+            return other.shifted(&q);
+        }
+        let p = polys::sum_poly(&self.defining_polynomial(), &other.defining_polynomial());
+        Self::from_enclosures(&p, |prec| {
+            let (a, b) = self.enclosure(prec);
+            let (c, d) = other.enclosure(prec);
+            (a + c, b + d)
+        })
+    }
+
+    fn shifted(&self, q: &BigRational) -> Self {
+        match &self.0 {
+            Repr::Radical(s) => Self::radical(s.add(&RadicalSum::rational(q.clone()))),
+            Repr::Root(r) => {
+                let (lo, hi) = r.interval();
+                Self::irrational(RootNum::new(
+                    polys::shift(r.poly(), q).monic(),
+                    lo + q,
+                    hi + q,
+                ))
+            }
+        }
+    }
+
+    fn scaled(&self, q: &BigRational) -> Self {
+        if q.is_zero() {
+            return Self::zero();
+        }
+        match &self.0 {
+            Repr::Radical(s) => Self::radical(s.scale(q)),
+            Repr::Root(r) => {
+                let (lo, hi) = r.interval();
+                let (a, b) = (lo * q, hi * q);
+                let (lo, hi) = if q.is_positive() { (a, b) } else { (b, a) };
+                Self::irrational(RootNum::new(
+                    polys::scale_roots(r.poly(), q).monic(),
+                    lo,
+                    hi,
+                ))
+            }
+        }
+    }
+
+    fn mul_general(&self, other: &Self) -> Self {
+        if let Some(q) = other.as_rational() {
+            return self.scaled(&q);
+        }
+        if let Some(q) = self.as_rational() {
+            return other.scaled(&q);
+        }
+        // Neither is zero, so a factor x may be divided out of each
+        // defining polynomial (q(0) ≠ 0 for the product resultant).
+        let strip = |p: QPoly| {
+            let mut c = p.coeffs().to_vec();
+            while c.first().is_some_and(Zero::is_zero) {
+                c.remove(0);
+            }
+            UPoly::new(c)
+        };
+        let p = polys::product_poly(
+            &strip(self.defining_polynomial()),
+            &strip(other.defining_polynomial()),
+        );
+        Self::from_enclosures(&p, |prec| {
+            let (a, b) = self.enclosure(prec);
+            let (c, d) = other.enclosure(prec);
+            let products = [&a * &c, &a * &d, &b * &c, &b * &d];
+            let lo = products.iter().min().expect("four").clone();
+            let hi = products.iter().max().expect("four").clone();
+            (lo, hi)
+        })
+    }
+
+    /// `1/self`. **Panics if `self` is zero.**
+    fn recip_exact(&self) -> Self {
+        match &self.0 {
+            Repr::Radical(s) => Self::radical(s.recip()),
+            Repr::Root(r) => {
+                r.signum(); // refines until 0 ∉ [lo, hi]
+                let (lo, hi) = r.interval();
+                let (lo, hi) = if lo.is_zero() || hi.is_zero() {
+                    r.enclosure(64 + r.interval().0.denom().bits() as u32)
+                } else {
+                    (lo, hi)
+                };
+                Self::irrational(RootNum::new(
+                    polys::reverse(r.poly()).monic(),
+                    hi.recip(),
+                    lo.recip(),
+                ))
+            }
+        }
+    }
+
+    /// The real `n`-th root of `x ≥ 0` (any sign for odd `n`).
+    fn root_exact(&self, n: u32) -> Option<Self> {
+        match self.signum() {
+            0 => return Some(Self::zero()),
+            -1 if n % 2 == 0 => return None,
+            -1 => return (-self.clone()).root_exact(n).map(|r| -r),
+            _ => {}
+        }
+        if let Repr::Radical(s) = &self.0 {
+            if let Some(r) = s.monomial_root(n) {
+                return Some(Self::radical(r));
+            }
+        }
+        let p = polys::compose_power(&self.defining_polynomial(), n);
+        Some(Self::from_enclosures(&p, |prec| {
+            let (lo, hi) = self.enclosure(prec * n);
+            (
+                root_floor(&lo, n, prec),
+                root_floor(&hi, n, prec)
+                    + BigRational::new(1.into(), BigInt::one() << prec as usize),
+            )
+        }))
+    }
+
+    /// The nearest-or-adjacent `f64`: refined until both ends of the
+    /// enclosure convert to the same `f64`.
+    fn to_f64_exact(&self) -> f64 {
+        let mut prec = 64;
+        loop {
+            let (lo, hi) = self.enclosure(prec);
+            let (a, b) = (lo.to_f64(), hi.to_f64());
+            if a == b || prec > 4096 {
+                return a;
+            }
+            prec *= 2;
+        }
+    }
+
+    /// The value rounded to `digits` decimal places (half away from zero
+    /// for rationals; irrational values are never halfway), as text.
+    ///
+    /// ```
+    /// use exact_bezier::{RealAlgebraic, Roots, Scalar};
+    /// let s2 = RealAlgebraic::from_i64(2).nth_root(2).unwrap();
+    /// assert_eq!(s2.to_decimal(30), "1.414213562373095048801688724210");
+    /// ```
+    pub fn to_decimal(&self, digits: usize) -> String {
+        let scale = BigRational::from_integer(num_traits::pow(BigInt::from(10), digits));
+        let half = BigRational::new(1.into(), 2.into());
+        let rounded = match self.as_rational() {
+            Some(q) => {
+                let x = q.abs() * &scale + &half;
+                let r = x.floor().to_integer();
+                if q.is_negative() {
+                    -r
+                } else {
+                    r
+                }
+            }
+            None => {
+                let mut prec = 16 + 4 * digits as u32;
+                loop {
+                    let (lo, hi) = self.enclosure(prec);
+                    let a = (lo * &scale + &half).floor().to_integer();
+                    let b = (hi * &scale + &half).floor().to_integer();
+                    if a == b {
+                        break a;
+                    }
+                    prec *= 2;
+                }
+            }
+        };
+        decimal_text(&rounded, digits)
+    }
+
+    /// Exact equality without subtraction: radical sums compare
+    /// structurally; an isolated root `r` equals `x` iff `x` is a root of
+    /// `r`'s polynomial inside `r`'s isolating interval (exact evaluation in
+    /// the radical field, or a common root of the gcd of both polynomials in
+    /// the intersection of both intervals).
+    fn same_value(&self, other: &Self) -> bool {
+        match (&self.0, &other.0) {
+            (Repr::Radical(a), Repr::Radical(b)) => a.add(&b.neg()).is_zero(),
+            (Repr::Root(r), _) => other.is_isolated_root_of(r),
+            (_, Repr::Root(r)) => self.is_isolated_root_of(r),
+        }
+    }
+
+    fn is_isolated_root_of(&self, r: &RootNum) -> bool {
+        let (lo, hi) = r.interval();
+        match &self.0 {
+            Repr::Radical(s) => {
+                if s.as_rational().is_some() {
+                    return false; // r is irrational
+                }
+                let value = r
+                    .poly()
+                    .coeffs()
+                    .iter()
+                    .rev()
+                    .fold(RadicalSum::default(), |acc, c| {
+                        acc.mul(s).add(&RadicalSum::rational(c.clone()))
+                    });
+                value.is_zero()
+                    && s.add(&RadicalSum::rational(-lo)).signum() > 0
+                    && s.add(&RadicalSum::rational(-hi)).signum() < 0
+            }
+            Repr::Root(t) => {
+                let g = r.poly().gcd(t.poly());
+                let (a, b) = t.interval();
+                let (lo, hi) = (lo.max(a), hi.min(b));
+                g.degree().unwrap_or(0) > 0
+                    && lo < hi
+                    && polys::count_roots(&polys::sturm_sequence(&g), &lo, &hi) == 1
+            }
+        }
+    }
+
+    /// Exact comparison: equality decided exactly ([`Self::same_value`]),
+    /// then enclosures refined until they separate (they must).
+    fn compare(&self, other: &Self) -> Ordering {
+        if self.same_value(other) {
+            return Ordering::Equal;
+        }
+        let mut prec = 32;
+        loop {
+            let (a, b) = self.enclosure(prec);
+            let (c, d) = other.enclosure(prec);
+            if b < c {
+                return Ordering::Less;
+            }
+            if d < a {
+                return Ordering::Greater;
+            }
+            prec *= 2;
+        }
+    }
+}
+
+/// `floor(x^{1/n} · 2^prec) / 2^prec` for `x ≥ 0` (0 for `x < 0`).
+fn root_floor(x: &BigRational, n: u32, prec: u32) -> BigRational {
+    if !x.is_positive() {
+        return BigRational::zero();
+    }
+    let scaled = (x * BigRational::from_integer(BigInt::one() << (prec as usize * n as usize)))
+        .floor()
+        .to_integer();
+    BigRational::new(scaled.nth_root(n), BigInt::one() << prec as usize)
+}
+
+/// `n / 10^digits` as a decimal string.
+fn decimal_text(n: &BigInt, digits: usize) -> String {
+    let neg = n.is_negative();
+    let mut s = n.abs().to_string();
+    if digits > 0 {
+        if s.len() <= digits {
+            s = format!("{}{s}", "0".repeat(digits + 1 - s.len()));
+        }
+        s.insert(s.len() - digits, '.');
+    }
+    if neg {
+        format!("-{s}")
+    } else {
+        s
+    }
+}
+
+/// The isolated root as a rational, if it is one: a rational root of an
+/// integer polynomial with leading coefficient `L` is `k/L` for an integer
+/// `k`, and an interval narrower than `1/L` holds at most one such point.
+fn rational_root_in(node: &RootNum) -> Option<RadicalSum> {
+    let ints = polys::primitive_integer(node.poly());
+    let lead = ints.last().expect("non-zero").clone();
+    let prec = lead.bits() as u32 + 1;
+    let (lo, hi) = node.enclosure(prec);
+    let l = BigRational::from_integer(lead.clone());
+    let k = (&lo * &l).ceil().to_integer();
+    let candidate = BigRational::new(k, lead);
+    (candidate < hi && node.poly().eval(&candidate).is_zero())
+        .then(|| RadicalSum::rational(candidate))
+}
+
+/// The isolated root of `x^n − c` as `±|c|^{1/n}` (the radical form).
+fn binomial_root(node: &RootNum) -> Option<RadicalSum> {
+    let c = node.poly().coeffs();
+    let n = c.len() - 1;
+    if n < 2 || c[1..n].iter().any(|x| !x.is_zero()) {
+        return None;
+    }
+    let r = -c[0].clone();
+    let sign = node.signum();
+    let abs_root = RadicalSum::rational(r.abs()).monomial_root(n as u32)?;
+    Some(if sign < 0 { abs_root.neg() } else { abs_root })
+}
+
+impl std::fmt::Debug for RealAlgebraic {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{self}")
+    }
+}
+
+impl PartialEq for RealAlgebraic {
+    fn eq(&self, other: &Self) -> bool {
+        self.same_value(other)
+    }
+}
+
+impl PartialOrd for RealAlgebraic {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.compare(other))
+    }
+}
+
+impl Zero for RealAlgebraic {
+    fn zero() -> Self {
+        Self::rat(BigRational::zero())
+    }
+    fn is_zero(&self) -> bool {
+        matches!(&self.0, Repr::Radical(s) if s.is_zero())
+    }
+}
+
+impl One for RealAlgebraic {
+    fn one() -> Self {
+        Self::rat(BigRational::one())
+    }
+}
+
+impl std::ops::Neg for RealAlgebraic {
+    type Output = Self;
+    fn neg(self) -> Self {
+        match &self.0 {
+            Repr::Radical(s) => Self::radical(s.neg()),
+            Repr::Root(r) => {
+                let (lo, hi) = r.interval();
+                Self::irrational(RootNum::new(polys::reflect(r.poly()).monic(), -hi, -lo))
+            }
+        }
+    }
+}
+
+impl std::ops::Add<&RealAlgebraic> for RealAlgebraic {
+    type Output = Self;
+    fn add(self, other: &Self) -> Self {
+        match (&self.0, &other.0) {
+            (Repr::Radical(a), Repr::Radical(b)) => Self::radical(a.add(b)),
+            _ => self.add_general(other),
+        }
+    }
+}
+
+impl std::ops::Sub<&RealAlgebraic> for RealAlgebraic {
+    type Output = Self;
+    fn sub(self, other: &Self) -> Self {
+        self + &(-other.clone())
+    }
+}
+
+impl std::ops::Mul<&RealAlgebraic> for RealAlgebraic {
+    type Output = Self;
+    fn mul(self, other: &Self) -> Self {
+        match (&self.0, &other.0) {
+            (Repr::Radical(a), Repr::Radical(b)) => Self::radical(a.mul(b)),
+            _ if self.is_zero() || other.is_zero() => Self::zero(),
+            _ => self.mul_general(other),
+        }
+    }
+}
+
+impl std::ops::Div<&RealAlgebraic> for RealAlgebraic {
+    type Output = Self;
+    /// **Panics if `other` is zero.**
+    #[allow(clippy::suspicious_arithmetic_impl)] // x / y = x · (1/y)
+    fn div(self, other: &Self) -> Self {
+        self * &other.recip_exact()
+    }
+}
+
+macro_rules! by_value {
+    ($($tr:ident $f:ident),*) => {$(
+        impl std::ops::$tr for RealAlgebraic {
+            type Output = Self;
+            fn $f(self, other: Self) -> Self {
+                std::ops::$tr::$f(self, &other)
+            }
+        }
+    )*};
+}
+by_value!(Add add, Sub sub, Mul mul, Div div);
+
+impl Scalar for RealAlgebraic {
+    fn from_i64(n: i64) -> Self {
+        Self::rat(BigRational::from_integer(n.into()))
+    }
+    fn from_rational(q: &BigRational) -> Self {
+        RealAlgebraic::rat(q.clone())
+    }
+}
+
+impl Field for RealAlgebraic {
+    fn recip(&self) -> Self {
+        self.recip_exact()
+    }
+}
+
+impl Ordered for RealAlgebraic {
+    fn to_f64(&self) -> f64 {
+        self.to_f64_exact()
+    }
+}
+
+impl Roots for RealAlgebraic {
+    /// The real n-th root: always `Some` for `x ≥ 0` (`n ≥ 1`) and for odd
+    /// `n`; `None` for even roots of negatives and `n = 0`.
+    fn nth_root(&self, n: u32) -> Option<Self> {
+        match n {
+            0 => None,
+            1 => Some(self.clone()),
+            _ => self.root_exact(n),
+        }
+    }
+}
+
+impl std::fmt::Display for RealAlgebraic {
+    /// The SymPy-compatible text form ([`text`]).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match &self.0 {
+            Repr::Radical(s) => write!(f, "{}", text::radical_text(s)),
+            Repr::Root(r) => write!(f, "{}", text::root_text(r.poly(), r.index())),
+        }
+    }
+}
+
+impl std::str::FromStr for RealAlgebraic {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self, Error> {
+        text::parse(s)
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,177 @@
+use super::*;
+use crate::scalar::ratio;
+use proptest::prelude::*;
+
+fn r(n: i64) -> RealAlgebraic {
+    RealAlgebraic::from_i64(n)
+}
+
+fn q(p: i64, d: i64) -> RealAlgebraic {
+    Scalar::from_rational(&ratio::<BigRational>(p, d))
+}
+
+fn sqrt(x: &RealAlgebraic) -> RealAlgebraic {
+    x.nth_root(2).unwrap()
+}
+
+fn parse(s: &str) -> RealAlgebraic {
+    s.parse().unwrap()
+}
+
+#[test]
+fn sqrt2_plus_sqrt3_identities() {
+    let s = sqrt(&r(2)) + &sqrt(&r(3));
+    assert_eq!(s.clone() * &s, r(5) + r(2) * sqrt(&r(6)));
+    // √(5 + 2√6) is a root of a sum: the general representation.
+    let t = sqrt(&(r(5) + r(2) * sqrt(&r(6))));
+    assert!((s.clone() - &t).is_zero() || (s.clone() - &t).signum() == 0);
+    assert_eq!(s, t);
+    assert_eq!((s - &t).as_rational(), Some(BigRational::zero()));
+}
+
+#[test]
+fn rational_results_come_back_rational() {
+    let c = r(2).nth_root(3).unwrap();
+    assert_eq!((c.clone() * &c * &c).as_rational(), Some(ratio(2, 1)));
+    let x = sqrt(&(r(3) + sqrt(&r(2))));
+    assert_eq!(
+        (x.clone() * &x - &sqrt(&r(2))).as_rational(),
+        Some(ratio(3, 1))
+    );
+    assert_eq!((x.clone() / &x).as_rational(), Some(ratio(1, 1)));
+}
+
+#[test]
+fn tiny_differences_have_the_right_sign() {
+    // √(10⁸⁰ + 1) − 10⁴⁰ ≈ 5·10⁻⁴¹ > 0; 10⁴⁰ − √(10⁸⁰ − 1) > 0.
+    let big = BigRational::from_integer(num_traits::pow(BigInt::from(10), 80));
+    let ten40 = RealAlgebraic::rat(BigRational::from_integer(num_traits::pow(
+        BigInt::from(10),
+        40,
+    )));
+    let up = sqrt(&RealAlgebraic::rat(big.clone() + BigRational::one()));
+    let down = sqrt(&RealAlgebraic::rat(big - BigRational::one()));
+    assert_eq!((up.clone() - &ten40).signum(), 1);
+    assert_eq!((ten40.clone() - &down).signum(), 1);
+    assert!(down < ten40 && ten40 < up);
+    // The same through the general representation: ∛(1 + √2) perturbed by 10⁻⁴⁰.
+    let c = (r(1) + sqrt(&r(2))).nth_root(3).unwrap();
+    let eps = RealAlgebraic::rat(BigRational::new(
+        1.into(),
+        num_traits::pow(BigInt::from(10), 40),
+    ));
+    assert!(c.clone() + &eps > c);
+    assert!(c.clone() - &eps < c);
+}
+
+#[test]
+fn text_round_trips() {
+    for s in [
+        "sqrt(6)/6",
+        "1 - 2*cbrt(12)/3",
+        "-sqrt(2)",
+        "3/7",
+        "-5",
+        "root(72, 4)",
+        "sqrt(2) + sqrt(3)",
+        "CRootOf(x**5 - x - 1, 0)",
+    ] {
+        assert_eq!(parse(s).to_string(), s, "{s}");
+    }
+    assert_eq!(parse("1/sqrt(6)").to_string(), "sqrt(6)/6");
+    assert_eq!(parse("(8/3)**(1/2)").to_string(), "2*sqrt(6)/3");
+    assert_eq!(parse("2**(-1/2)*2").to_string(), "sqrt(2)");
+    assert_eq!(parse("CRootOf(x**2 - 2, 0)"), -sqrt(&r(2)));
+    assert_eq!(parse("Rational(3, 4)"), q(3, 4));
+    for bad in [
+        "cbrt(-2)",
+        "sqrt(",
+        "x + 1",
+        "1/0",
+        "root(2, 0)",
+        "2**100",
+        "foo(1)",
+        "CRootOf(x**2 + 1, 0)",
+    ] {
+        assert!(bad.parse::<RealAlgebraic>().is_err(), "{bad}");
+    }
+}
+
+#[test]
+fn general_roots_print_as_crootof() {
+    let c = (r(1) + sqrt(&r(2))).nth_root(3).unwrap();
+    let text = c.to_string();
+    assert!(text.starts_with("CRootOf("), "{text}");
+    assert_eq!(parse(&text), c);
+    assert_eq!(c.to_decimal(20), "1.34150376263057771968");
+}
+
+#[test]
+fn to_f64_and_decimals() {
+    assert_eq!(sqrt(&r(2)).to_f64(), std::f64::consts::SQRT_2);
+    assert_eq!(q(-1, 3).to_decimal(3), "-0.333");
+    assert_eq!(q(1, 8).to_decimal(2), "0.13");
+    assert_eq!((-sqrt(&r(2))).to_decimal(5), "-1.41421");
+}
+
+#[test]
+fn real_roots_in_an_interval() {
+    let p = UPoly::new(vec![
+        ratio::<BigRational>(2, 1),
+        ratio(0, 1),
+        ratio(-3, 1),
+        ratio(0, 1),
+        ratio(1, 1),
+    ]); // (x² − 1)(x² − 2)
+    let all = RealAlgebraic::real_roots_in(&p, &ratio(-10, 1), &ratio(10, 1));
+    assert_eq!(all, vec![-sqrt(&r(2)), r(-1), r(1), sqrt(&r(2))]);
+    let some = RealAlgebraic::real_roots_in(&p, &ratio(-1, 1), &ratio(2, 1));
+    assert_eq!(some, vec![r(1), sqrt(&r(2))]);
+}
+
+/// A high-precision reference: the value from its enclosure at 2⁻³⁰⁰.
+fn reference(x: &RealAlgebraic) -> BigRational {
+    let (lo, hi) = x.enclosure(300);
+    (lo + hi) / BigRational::from_integer(2.into())
+}
+
+fn small_radical() -> impl Strategy<Value = RealAlgebraic> {
+    (-5i64..6, 1i64..4, 1i64..12, 2u32..4)
+        .prop_map(|(a, b, c, n)| q(a, b) * &r(c).nth_root(n).unwrap())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(40))]
+
+    #[test]
+    fn field_laws(a in small_radical(), b in small_radical(), c in small_radical()) {
+        prop_assert_eq!((a.clone() + &b) * &c, a.clone() * &c + &(b.clone() * &c));
+        prop_assert_eq!(a.clone() * &b, b.clone() * &a);
+        prop_assert_eq!(a.clone() - &a, r(0));
+        if !b.is_zero() {
+            prop_assert_eq!((a.clone() / &b) * &b, a.clone());
+        }
+    }
+
+    #[test]
+    fn sums_and_products_match_high_precision(a in small_radical(), b in small_radical(), c in small_radical()) {
+        let x = (a.clone() + &b) * &c + &a;
+        let approx = (reference(&a) + reference(&b)) * reference(&c) + reference(&a);
+        let (lo, hi) = x.enclosure(200);
+        let slack = BigRational::new(1.into(), BigInt::one() << 150usize);
+        prop_assert!(lo - &slack <= approx && approx <= hi + &slack);
+        // Order agrees with the reference wherever the references are apart.
+        let (ra, rb) = (reference(&a), reference(&b));
+        if (ra.clone() - &rb).abs() > slack {
+            prop_assert_eq!(a < b, ra < rb);
+        }
+    }
+
+    #[test]
+    fn roots_of_sums_are_exact(a in 1i64..20, b in 2i64..7, n in 2u32..4) {
+        // y = (a + √b)^{1/n}: yⁿ = a + √b exactly (general representation).
+        let x = r(a) + &sqrt(&r(b));
+        let y = x.nth_root(n).unwrap();
+        prop_assert_eq!(y.pow_u32(n), x);
+    }
+}

@@ -1,0 +1,480 @@
+//! The text form of [`RealAlgebraic`]: a small expression grammar that
+//! SymPy's `sympify` reads as the same number (documented in
+//! `docs/algebraic_numbers.md`).
+//!
+//! ```text
+//! expr    := term (("+" | "-") term)*
+//! term    := unary (("*" | "/") unary)*
+//! unary   := ("-" | "+") unary | power
+//! power   := atom ("**" unary)?                 right-associative, exponent rational
+//! atom    := integer | decimal | "(" expr ")" | call
+//! call    := "sqrt(" expr ")" | "cbrt(" expr ")" | "root(" expr "," integer ")"
+//!          | "Rational(" expr "," expr ")" | "CRootOf(" poly "," integer ")"
+//! poly    := the same grammar in the one variable x, integer powers ≥ 0 only
+//! ```
+//!
+//! SymPy takes `x**(1/n)`, `sqrt`, `cbrt` and `root` of a negative number to
+//! be the principal *complex* root, so they are rejected here for negative
+//! arguments (write `-cbrt(2)`, not `cbrt(-2)`). Decimals (`0.5`) are read
+//! exactly here but as floats by SymPy; the writer never emits them.
+//!
+//! Output: rationals as `p/q` or integers; radical sums as `c*root` terms
+//! (`sqrt(6)/6`, `1 - 2*cbrt(12)/3`, `root(72, 4)`); other numbers as
+//! `CRootOf(<primitive integer polynomial in x>, k)` with `k` the index of
+//! the real root in increasing order.
+//!
+//! Bounds on hostile input: at most 10 000 characters, nesting depth 64,
+//! root indices and exponents at most 64 in absolute value, `CRootOf`
+//! degree at most [`MAX_DEGREE`](crate::MAX_DEGREE).
+
+use super::polys::{primitive_integer, QPoly};
+use super::radical::RadicalSum;
+use super::RealAlgebraic;
+use crate::error::{Error, MAX_DEGREE};
+use crate::scalar::{Field, Roots};
+use crate::upoly::UPoly;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+
+const MAX_LEN: usize = 10_000;
+const MAX_DEPTH: usize = 64;
+const MAX_EXPONENT: i64 = 64;
+
+/// A parsed expression.
+#[derive(Clone, Debug)]
+enum Ast {
+    Num(BigRational),
+    X,
+    Neg(Box<Ast>),
+    Bin(char, Box<Ast>, Box<Ast>),
+    Pow(Box<Ast>, Box<Ast>),
+    Call(String, Vec<Ast>),
+}
+
+/// Read a number in the text grammar (module docs).
+///
+/// # Errors
+///
+/// [`Error::BadNumber`] for text outside the grammar, a negative radicand, a
+/// division by zero, a root index out of range, or input over the bounds.
+///
+/// ```
+/// use exact_bezier::{parse_algebraic, RealAlgebraic, Scalar};
+/// let x = parse_algebraic("sqrt(2) + sqrt(3) - sqrt(5 + 2*sqrt(6))").unwrap();
+/// assert_eq!(x, RealAlgebraic::from_i64(0));
+/// assert_eq!(parse_algebraic("(3/2)**(1/3)").unwrap().to_string(), "cbrt(12)/2");
+/// ```
+pub fn parse_algebraic(text: &str) -> Result<RealAlgebraic, Error> {
+    parse(text)
+}
+
+pub(crate) fn parse(text: &str) -> Result<RealAlgebraic, Error> {
+    if text.len() > MAX_LEN {
+        return Err(bad(text, "longer than 10000 characters"));
+    }
+    let tokens = tokenize(text)?;
+    let mut p = Parser {
+        tokens: &tokens,
+        pos: 0,
+        depth: 0,
+        text,
+    };
+    let ast = p.expr()?;
+    if p.pos != tokens.len() {
+        return Err(bad(text, "unexpected text after the expression"));
+    }
+    eval(&ast, text)
+}
+
+fn bad(text: &str, why: &str) -> Error {
+    Error::BadNumber(format!("{text:?}: {why}"))
+}
+
+#[derive(Clone, Debug, PartialEq)]
+enum Tok {
+    Num(BigRational),
+    Ident(String),
+    Op(&'static str),
+}
+
+fn tokenize(text: &str) -> Result<Vec<Tok>, Error> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        if c.is_whitespace() {
+            i += 1;
+        } else if c.is_ascii_digit() || c == '.' {
+            let start = i;
+            while i < chars.len() && (chars[i].is_ascii_digit() || chars[i] == '.') {
+                i += 1;
+            }
+            let s: String = chars[start..i].iter().collect();
+            let q = crate::io::parse_rational(&s).map_err(|_| bad(text, "bad number"))?;
+            out.push(Tok::Num(q));
+        } else if c.is_ascii_alphabetic() {
+            let start = i;
+            while i < chars.len() && chars[i].is_ascii_alphanumeric() {
+                i += 1;
+            }
+            out.push(Tok::Ident(chars[start..i].iter().collect()));
+        } else {
+            let two: String = chars[i..(i + 2).min(chars.len())].iter().collect();
+            let op = if two == "**" {
+                "**"
+            } else {
+                match c {
+                    '+' => "+",
+                    '-' => "-",
+                    '*' => "*",
+                    '/' => "/",
+                    '(' => "(",
+                    ')' => ")",
+                    ',' => ",",
+                    _ => return Err(bad(text, &format!("unexpected character {c:?}"))),
+                }
+            };
+            i += op.len();
+            out.push(Tok::Op(op));
+        }
+    }
+    Ok(out)
+}
+
+struct Parser<'a> {
+    tokens: &'a [Tok],
+    pos: usize,
+    depth: usize,
+    text: &'a str,
+}
+
+impl Parser<'_> {
+    fn peek_op(&self, op: &str) -> bool {
+        matches!(self.tokens.get(self.pos), Some(Tok::Op(o)) if *o == op)
+    }
+
+    fn expect(&mut self, op: &str) -> Result<(), Error> {
+        if self.peek_op(op) {
+            self.pos += 1;
+            Ok(())
+        } else {
+            Err(bad(self.text, &format!("expected {op:?}")))
+        }
+    }
+
+    fn expr(&mut self) -> Result<Ast, Error> {
+        self.depth += 1;
+        if self.depth > MAX_DEPTH {
+            return Err(bad(self.text, "nested more than 64 deep"));
+        }
+        let mut acc = self.term()?;
+        while let Some(op) = ["+", "-"].into_iter().find(|o| self.peek_op(o)) {
+            self.pos += 1;
+            let rhs = self.term()?;
+            acc = Ast::Bin(op.chars().next().expect("op"), Box::new(acc), Box::new(rhs));
+        }
+        self.depth -= 1;
+        Ok(acc)
+    }
+
+    fn term(&mut self) -> Result<Ast, Error> {
+        let mut acc = self.unary()?;
+        while let Some(op) = ["*", "/"].into_iter().find(|o| self.peek_op(o)) {
+            self.pos += 1;
+            let rhs = self.unary()?;
+            acc = Ast::Bin(op.chars().next().expect("op"), Box::new(acc), Box::new(rhs));
+        }
+        Ok(acc)
+    }
+
+    fn unary(&mut self) -> Result<Ast, Error> {
+        self.depth += 1;
+        if self.depth > MAX_DEPTH {
+            return Err(bad(self.text, "nested more than 64 deep"));
+        }
+        let out = if self.peek_op("-") {
+            self.pos += 1;
+            Ast::Neg(Box::new(self.unary()?))
+        } else if self.peek_op("+") {
+            self.pos += 1;
+            self.unary()?
+        } else {
+            let base = self.atom()?;
+            if self.peek_op("**") {
+                self.pos += 1;
+                Ast::Pow(Box::new(base), Box::new(self.unary()?))
+            } else {
+                base
+            }
+        };
+        self.depth -= 1;
+        Ok(out)
+    }
+
+    fn atom(&mut self) -> Result<Ast, Error> {
+        match self.tokens.get(self.pos).cloned() {
+            Some(Tok::Num(q)) => {
+                self.pos += 1;
+                Ok(Ast::Num(q))
+            }
+            Some(Tok::Op("(")) => {
+                self.pos += 1;
+                let e = self.expr()?;
+                self.expect(")")?;
+                Ok(e)
+            }
+            Some(Tok::Ident(name)) => {
+                self.pos += 1;
+                if name == "x" {
+                    return Ok(Ast::X);
+                }
+                self.expect("(")?;
+                let mut args = vec![self.expr()?];
+                while self.peek_op(",") {
+                    self.pos += 1;
+                    args.push(self.expr()?);
+                }
+                self.expect(")")?;
+                Ok(Ast::Call(name, args))
+            }
+            _ => Err(bad(self.text, "expected a number, a bracket or a function")),
+        }
+    }
+}
+
+fn small_int(q: &BigRational, text: &str, what: &str) -> Result<i64, Error> {
+    q.is_integer()
+        .then(|| q.to_integer().to_i64())
+        .flatten()
+        .filter(|n| n.abs() <= MAX_EXPONENT)
+        .ok_or_else(|| {
+            bad(
+                text,
+                &format!("{what} must be an integer of size at most 64"),
+            )
+        })
+}
+
+fn eval(ast: &Ast, text: &str) -> Result<RealAlgebraic, Error> {
+    let rat = |a: &Ast| -> Result<BigRational, Error> {
+        eval(a, text)?
+            .as_rational()
+            .ok_or_else(|| bad(text, "this argument must be rational"))
+    };
+    Ok(match ast {
+        Ast::Num(q) => RealAlgebraic::rat(q.clone()),
+        Ast::X => return Err(bad(text, "x may appear only inside CRootOf")),
+        Ast::Neg(a) => -eval(a, text)?,
+        Ast::Bin(op, a, b) => {
+            let (a, b) = (eval(a, text)?, eval(b, text)?);
+            match op {
+                '+' => a + b,
+                '-' => a - b,
+                '*' => a * b,
+                _ if b.is_zero() => return Err(bad(text, "division by zero")),
+                _ => a / b,
+            }
+        }
+        Ast::Pow(base, e) => {
+            let e = rat(e)?;
+            let p = small_int(
+                &BigRational::from_integer(e.numer().clone()),
+                text,
+                "an exponent",
+            )?;
+            let q = small_int(
+                &BigRational::from_integer(e.denom().clone()),
+                text,
+                "a root index",
+            )?;
+            let b = eval(base, text)?;
+            let r = real_root(&b, q as u32, text)?;
+            integer_power(&r, p, text)?
+        }
+        Ast::Call(name, args) => match (name.as_str(), args.as_slice()) {
+            ("sqrt", [a]) => real_root(&eval(a, text)?, 2, text)?,
+            ("cbrt", [a]) => real_root(&eval(a, text)?, 3, text)?,
+            ("root", [a, n]) => {
+                let n = small_int(&rat(n)?, text, "a root index")?;
+                if n < 1 {
+                    return Err(bad(text, "a root index must be positive"));
+                }
+                real_root(&eval(a, text)?, n as u32, text)?
+            }
+            ("Rational", [a, b]) => {
+                let (a, b) = (rat(a)?, rat(b)?);
+                if b.is_zero() {
+                    return Err(bad(text, "division by zero"));
+                }
+                RealAlgebraic::rat(a / b)
+            }
+            ("CRootOf", [p, k]) => {
+                let p = eval_poly(p, text)?;
+                let k = small_int(&rat(k)?, text, "a root index")?;
+                if p.degree().unwrap_or(0) > MAX_DEGREE {
+                    return Err(bad(text, "CRootOf degree over 64"));
+                }
+                let k = usize::try_from(k).map_err(|_| bad(text, "negative root index"))?;
+                RealAlgebraic::root_of(&p, k).map_err(|e| bad(text, &e.to_string()))?
+            }
+            _ => {
+                return Err(bad(
+                    text,
+                    &format!("unknown function {name} or wrong arguments"),
+                ))
+            }
+        },
+    })
+}
+
+/// The principal real root (SymPy's for non-negative radicands).
+fn real_root(x: &RealAlgebraic, n: u32, text: &str) -> Result<RealAlgebraic, Error> {
+    if n == 1 {
+        return Ok(x.clone());
+    }
+    if x.signum() < 0 {
+        return Err(bad(
+            text,
+            "SymPy reads roots of negative numbers as complex; write -cbrt(2) for the real cube root of -2",
+        ));
+    }
+    x.nth_root(n).ok_or_else(|| bad(text, "no real root"))
+}
+
+fn integer_power(x: &RealAlgebraic, p: i64, text: &str) -> Result<RealAlgebraic, Error> {
+    use crate::scalar::Scalar;
+    if p < 0 && x.is_zero() {
+        return Err(bad(text, "division by zero"));
+    }
+    let r = x.pow_u32(p.unsigned_abs() as u32);
+    Ok(if p < 0 { r.recip() } else { r })
+}
+
+fn eval_poly(ast: &Ast, text: &str) -> Result<QPoly, Error> {
+    Ok(match ast {
+        Ast::X => UPoly::new(vec![BigRational::zero(), BigRational::one()]),
+        Ast::Neg(a) => eval_poly(a, text)?.scale(&-BigRational::one()),
+        Ast::Bin(op, a, b) => {
+            let (a, b) = (eval_poly(a, text)?, eval_poly(b, text)?);
+            match op {
+                '+' => a.add(&b),
+                '-' => a.sub(&b),
+                '*' => a.mul(&b),
+                _ => match b.degree() {
+                    Some(0) => a.scale(&b.coeffs()[0].recip()),
+                    _ => {
+                        return Err(bad(
+                            text,
+                            "a polynomial may be divided only by a non-zero number",
+                        ))
+                    }
+                },
+            }
+        }
+        Ast::Pow(base, e) => {
+            let base = eval_poly(base, text)?;
+            let e = eval(e, text)?
+                .as_rational()
+                .ok_or_else(|| bad(text, "exponent must be rational"))?;
+            let k = small_int(&e, text, "a polynomial exponent")?;
+            if k < 0 {
+                return Err(bad(text, "negative power in a polynomial"));
+            }
+            (0..k).fold(UPoly::constant(BigRational::one()), |acc, _| acc.mul(&base))
+        }
+        _ => {
+            let v = eval(ast, text)?
+                .as_rational()
+                .ok_or_else(|| bad(text, "polynomial coefficients must be rational"))?;
+            UPoly::new(vec![v])
+        }
+    })
+}
+
+/// `sqrt(R)`, `cbrt(R)` or `root(R, n)`.
+fn root_word(n: u32, r: &BigInt) -> String {
+    match n {
+        2 => format!("sqrt({r})"),
+        3 => format!("cbrt({r})"),
+        _ => format!("root({r}, {n})"),
+    }
+}
+
+/// The text of a radical sum: rational term first, then `±[p*]root[/q]`.
+pub(crate) fn radical_text(s: &RadicalSum) -> String {
+    if s.is_zero() {
+        return "0".into();
+    }
+    let mut out = String::new();
+    for (m, c) in s.terms() {
+        let neg = c.is_negative();
+        let a = c.abs();
+        let body = if m.0.is_empty() {
+            a.to_string()
+        } else {
+            let (n, r) = m.as_single_root();
+            let root = root_word(n, &r);
+            let num = if a.numer().is_one() {
+                root
+            } else {
+                format!("{}*{root}", a.numer())
+            };
+            if a.denom().is_one() {
+                num
+            } else {
+                format!("{num}/{}", a.denom())
+            }
+        };
+        match (out.is_empty(), neg) {
+            (true, true) => out.push('-'),
+            (true, false) => {}
+            (false, true) => out.push_str(" - "),
+            (false, false) => out.push_str(" + "),
+        }
+        out.push_str(&body);
+    }
+    out
+}
+
+/// `CRootOf(<poly in x>, k)` with the primitive integer form of `p`.
+pub(crate) fn root_text(p: &QPoly, k: usize) -> String {
+    let ints = primitive_integer(p);
+    let mut out = String::new();
+    for (d, c) in ints.iter().enumerate().rev() {
+        if c.is_zero() {
+            continue;
+        }
+        let a = c.abs();
+        let power = match d {
+            0 => String::new(),
+            1 => "x".into(),
+            _ => format!("x**{d}"),
+        };
+        let body = match (d, a.is_one()) {
+            (0, _) => a.to_string(),
+            (_, true) => power,
+            _ => format!("{a}*{power}"),
+        };
+        match (out.is_empty(), c.is_negative()) {
+            (true, true) => out.push('-'),
+            (true, false) => {}
+            (false, true) => out.push_str(" - "),
+            (false, false) => out.push_str(" + "),
+        }
+        out.push_str(&body);
+    }
+    format!("CRootOf({out}, {k})")
+}
+
+impl crate::io::JsonScalar for RealAlgebraic {
+    /// Rationals as [`BigRational`] writes them (integers as JSON numbers,
+    /// else `"p/q"`); irrational numbers as strings in the text grammar.
+    fn to_json(&self) -> serde_json::Value {
+        match self.as_rational() {
+            Some(q) => q.to_json(),
+            None => serde_json::Value::String(self.to_string()),
+        }
+    }
+}
