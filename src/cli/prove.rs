@@ -1,6 +1,7 @@
 //! `prove [--json] [--family NAME]`: run the families in `proofs/`.
 
 use super::emit;
+use crate::error::Error;
 use crate::proofs::{family, run_all, run_families, Claim, Verdict, FAMILIES};
 use serde_json::Value;
 use std::fmt::Write;
@@ -17,20 +18,22 @@ pub struct Args {
     family: Option<String>,
 }
 
-/// Print the report; exit 0 iff every claim has its expected verdict, 2 for
-/// an unknown family.
-pub fn run(a: &Args) -> i32 {
+/// Print the report; exit 0 iff every claim has its expected verdict.
+///
+/// # Errors
+///
+/// [`Error::Domain`] for an unknown family, naming the families.
+pub fn run(a: &Args) -> Result<i32, Error> {
     let families = match &a.family {
         None => run_all(),
         Some(name) => match family(name) {
             Some(f) => run_families(&[f]),
             None => {
                 let names: Vec<&str> = FAMILIES.iter().map(|f| f.name).collect();
-                eprintln!(
-                    "error: no proof family {name:?}; families: {}",
+                return Err(Error::Domain(format!(
+                    "no proof family {name:?}; families: {}",
                     names.join(", ")
-                );
-                return 2;
+                )));
             }
         },
     };
@@ -48,11 +51,7 @@ pub fn run(a: &Args) -> i32 {
     } else {
         emit(&table(&families, off));
     }
-    if off == 0 {
-        0
-    } else {
-        1
-    }
+    Ok(if off == 0 { 0 } else { 1 })
 }
 
 /// The human-readable report: one line per claim (with its detail below),
