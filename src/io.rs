@@ -19,7 +19,7 @@ use crate::scalar::{Field, Ordered, Scalar};
 use crate::tri::TriPatch;
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
+use num_traits::Zero;
 use serde_json::{Map, Number, Value};
 
 mod duplicate_keys;
@@ -136,12 +136,39 @@ fn parse_decimal(t: &str) -> Option<BigRational> {
     Some(if neg { -q } else { q })
 }
 
-/// `v` (a JSON number or a string) as an exact rational; `what` names it in
+/// Exact number types the reader produces: `BigRational` from decimal and
+/// `p/q` text, and `RealAlgebraic`, which also reads the algebraic grammar
+/// of docs/algebraic_numbers.md (`"sqrt(6)/6"`).
+pub trait ExactNumber: Ordered + std::fmt::Display {
+    /// The number written as `text`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::BadNumber`] for text that is not a number of this type.
+    fn from_text(text: &str) -> Result<Self, Error>;
+}
+
+impl ExactNumber for BigRational {
+    fn from_text(text: &str) -> Result<Self, Error> {
+        parse_rational(text)
+    }
+}
+
+impl ExactNumber for crate::RealAlgebraic {
+    fn from_text(text: &str) -> Result<Self, Error> {
+        match parse_rational(text) {
+            Ok(q) => Ok(crate::RealAlgebraic::from_rational(&q)),
+            Err(_) => crate::parse_algebraic(text),
+        }
+    }
+}
+
+/// `v` (a JSON number or a string) as an exact number; `what` names it in
 /// the error.
-pub(crate) fn number(v: &Value, what: &str) -> Result<BigRational, Error> {
+pub(crate) fn number<T: ExactNumber>(v: &Value, what: &str) -> Result<T, Error> {
     match v {
-        Value::Number(n) => parse_rational(&n.to_string()),
-        Value::String(s) => parse_rational(s),
+        Value::Number(n) => T::from_text(&n.to_string()),
+        Value::String(s) => T::from_text(s),
         _ => Err(Error::Format(format!(
             "{what} should be a number, found {v}"
         ))),
@@ -154,7 +181,7 @@ pub(crate) fn array<'a>(v: &'a Value, what: &str) -> Result<&'a Vec<Value>, Erro
         .ok_or_else(|| Error::Format(format!("{what} should be an array, found {v}")))
 }
 
-pub(crate) fn point(v: &Value, what: &str) -> Result<Vec<BigRational>, Error> {
+pub(crate) fn point<T: ExactNumber>(v: &Value, what: &str) -> Result<Vec<T>, Error> {
     let coords = array(v, what)?;
     if coords.is_empty() {
         return Err(Error::Shape(format!("{what} has no coordinates")));
@@ -163,9 +190,9 @@ pub(crate) fn point(v: &Value, what: &str) -> Result<Vec<BigRational>, Error> {
     coords.iter().map(|c| number(c, what)).collect()
 }
 
-pub(crate) fn positive_weight(v: &Value, index: String) -> Result<BigRational, Error> {
-    let w = number(v, &format!("weight {index}"))?;
-    if !w.is_positive() {
+pub(crate) fn positive_weight<T: ExactNumber>(v: &Value, index: String) -> Result<T, Error> {
+    let w: T = number(v, &format!("weight {index}"))?;
+    if w <= T::zero() {
         return Err(Error::Weight {
             index,
             value: w.to_string(),
@@ -219,7 +246,7 @@ fn points_of_degree<'a>(
     Ok((pts, n))
 }
 
-fn read_curve(obj: &Map<String, Value>) -> Result<RationalCurve<BigRational>, Error> {
+fn read_curve<T: ExactNumber>(obj: &Map<String, Value>) -> Result<RationalCurve<T>, Error> {
     let (pts, n) = points_of_degree(obj, "a curve", |d, want, len| {
         format!("a degree {d} curve should have {want} control points, not {len}")
     })?;
@@ -229,7 +256,7 @@ fn read_curve(obj: &Map<String, Value>) -> Result<RationalCurve<BigRational>, Er
         .map(|(i, p)| point(p, &format!("P_{i}")))
         .collect::<Result<Vec<_>, _>>()?;
     let weights = match obj.get("weights") {
-        None => vec![BigRational::one(); pts.len()],
+        None => vec![T::one(); pts.len()],
         Some(w) => {
             let w = array(w, "weights")?;
             if w.len() != pts.len() {
@@ -249,17 +276,17 @@ fn read_curve(obj: &Map<String, Value>) -> Result<RationalCurve<BigRational>, Er
 }
 
 /// Rows of exact Cartesian points.
-type PointGrid = Vec<Vec<Vec<BigRational>>>;
+type PointGrid<T> = Vec<Vec<Vec<T>>>;
 /// Rows of exact weights.
-type WeightGrid = Vec<Vec<BigRational>>;
+type WeightGrid<T> = Vec<Vec<T>>;
 
 /// Read a grid of rows whose lengths are given by `row_len(j)`.
-fn read_grid(
+fn read_grid<T: ExactNumber>(
     obj: &Map<String, Value>,
     rows: usize,
     row_len: impl Fn(usize) -> usize,
     label: impl Fn(usize, usize) -> String,
-) -> Result<(PointGrid, WeightGrid), Error> {
+) -> Result<(PointGrid<T>, WeightGrid<T>), Error> {
     let pts = field_array(obj, "points")?;
     if pts.len() != rows {
         return Err(Error::Shape(format!(
@@ -297,7 +324,7 @@ fn read_grid(
                 .collect::<Result<Vec<_>, _>>()?,
         );
         weights.push(match weights_json {
-            None => vec![BigRational::one(); row.len()],
+            None => vec![T::one(); row.len()],
             Some(w) => {
                 let wr = array(&w[a], &format!("row {a} of weights"))?;
                 if wr.len() != row.len() {
@@ -317,7 +344,7 @@ fn read_grid(
     Ok((points, weights))
 }
 
-fn read_rect(obj: &Map<String, Value>) -> Result<RectPatch<BigRational>, Error> {
+fn read_rect<T: ExactNumber>(obj: &Map<String, Value>) -> Result<RectPatch<T>, Error> {
     let pts = field_array(obj, "points")?;
     let rows = pts.len();
     let cols = pts.first().and_then(Value::as_array).map_or(0, Vec::len);
@@ -341,7 +368,7 @@ fn read_rect(obj: &Map<String, Value>) -> Result<RectPatch<BigRational>, Error> 
     RectPatch::new(p, w)
 }
 
-fn read_tri(obj: &Map<String, Value>) -> Result<TriPatch<BigRational>, Error> {
+fn read_tri<T: ExactNumber>(obj: &Map<String, Value>) -> Result<TriPatch<T>, Error> {
     let (_, n) = points_of_degree(obj, "a tri patch", |d, want, len| {
         format!("a tri patch of degree {d} needs {want} rows of points, not {len}")
     })?;
@@ -372,6 +399,17 @@ const PATCH_FIELDS: [&str; 7] = [
 /// [`Error::Format`] for an unknown `kind` or missing fields, and the shape,
 /// weight, degree and number errors of the format.
 pub fn patch_from_value(v: &Value) -> Result<Patch<BigRational>, Error> {
+    patch_from_value_as(v)
+}
+
+/// [`patch_from_value`] for any exact number type, e.g.
+/// `patch_from_value_as::<RealAlgebraic>` for patches with algebraic
+/// weights (as `standardize` writes them).
+///
+/// # Errors
+///
+/// As [`patch_from_value`].
+pub fn patch_from_value_as<T: ExactNumber>(v: &Value) -> Result<Patch<T>, Error> {
     let obj = v
         .as_object()
         .ok_or_else(|| Error::Format(format!("expected a JSON object, found {v}")))?;
@@ -436,6 +474,26 @@ pub fn read_patches(text: &str) -> Result<Vec<Patch<BigRational>>, Error> {
             Ok(out)
         }
         _ => patches_from_value(&v),
+    }
+}
+
+/// Read patches whose numbers are of type `T` (one object or an array of
+/// curve, rect and tri objects), e.g. `read_patches_as::<RealAlgebraic>`
+/// for the output of `standardize`.
+///
+/// # Errors
+///
+/// As [`read_patches`].
+pub fn read_patches_as<T: ExactNumber>(text: &str) -> Result<Vec<Patch<T>>, Error> {
+    match parse_json(text)? {
+        Value::Array(items) => items
+            .iter()
+            .enumerate()
+            .map(|(k, item)| {
+                patch_from_value_as(item).map_err(|e| Error::Format(format!("element {k}: {e}")))
+            })
+            .collect(),
+        v => Ok(vec![patch_from_value_as(&v)?]),
     }
 }
 

@@ -130,7 +130,7 @@ pub use fast_eval::{FastCurve, FastRect, FastTri};
 pub use hpoint::{de_casteljau, de_casteljau_hom, HPoint};
 pub use int::Int;
 pub use interval::{coincide_filtered, DecidedBy, Interval};
-pub use io::{for_each_chunk, Record};
+pub use io::{for_each_chunk, patch_from_value_as, read_patches_as, ExactNumber, Record};
 pub use io::{
     parse_json, parse_rational, patch_from_value, patch_to_json, point_to_json, read_patches,
     JsonScalar, Patch,

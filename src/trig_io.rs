@@ -83,7 +83,7 @@ fn read_one(obj: &Map<String, Value>) -> Result<TrigPatch<BigRational>, Error> {
             )))
         }
         single => {
-            let a = number(single, "alpha")?;
+            let a: BigRational = number(single, "alpha")?;
             [a.clone(), a]
         }
     };

@@ -3,11 +3,16 @@
 //! result is exact (always, over the real algebraic numbers) and names the
 //! reparameterization with its parameters.
 
-use super::{charge_each, load, one_or_many, ScalarKind};
+use super::{load, one_or_many};
+use crate::limits::{self, Size};
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
 use crate::scalar::Ordered;
-use crate::standard::{standardize_curve_algebraic, standardize_rect_algebraic, StandardMap};
+use crate::standard::{
+    standardize_curve_algebraic, standardize_rect_algebraic, theorem1_holds, StandardMap,
+};
+use crate::Tolerance;
+use num_rational::BigRational;
 use serde_json::{json, Value};
 
 /// Arguments of `standardize`.
@@ -27,15 +32,9 @@ pub struct Args {
 /// `docs/algebraic_numbers.md` (`"sqrt(6)/6"`).
 pub fn run(a: &Args) -> Result<Value, Error> {
     let patches = load(&a.file)?;
-    // A Möbius map with α of about bits/n bits (a root of w₀/wₙ), or for a
-    // rect the quadratic map, bidegree (m+n, m+n), with parameters as large
-    // as the weights.
-    charge_each("standardize", &patches, ScalarKind::Exact, |s| {
-        let (m, n) = (s.degree.0 as u64, s.degree.1 as u64);
-        let big = m + n + 1;
-        let ops = big * big * (m + 1) * (n + 1) * (s.dim as u64 + 1);
-        (ops, s.grown_bits(2 * (m + n), s.bits))
-    })?;
+    for p in &patches {
+        limits::charge("standardize", standardize_cost(p))?;
+    }
     let out = patches
         .iter()
         .map(|p| match p {
@@ -53,6 +52,36 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(one_or_many(out))
+}
+
+/// The estimated work of standardizing `p` exactly (docs/limits.md).
+///
+/// A curve, or a rect that satisfies Theorem 1, takes a Möbius map: the
+/// weights times powers of one root per parameter, in a field of degree
+/// `D = m·n` (`n` for a curve). Any other rect takes the quadratic map:
+/// the (m+n, m+n) patch is evaluated at parameters in a field of degree up
+/// to `D = m²·n` (two m-th roots and an n-th root). An element of such a
+/// field has up to `D` terms, a product costs up to `D²` term products, and
+/// the coefficients grow with every level of the map, so the work is taken
+/// as `ops · D⁴` on numbers of the input's size (`D⁸` when β needs the
+/// general root isolation, below). Measured: Example 2 of
+/// source 000, bicubic with radicals in one cubic field, passes the
+/// default budget only when raised (about 8 s in a release build), and a
+/// bicubic with unrelated cube roots is refused before it runs for minutes.
+fn standardize_cost(p: &Patch<BigRational>) -> u64 {
+    let s = Size::exact(p);
+    let (m, n) = (s.degree.0.max(1) as u64, s.degree.1.max(1) as u64);
+    let quadratic = matches!(p, Patch::Rect(r) if !theorem1_holds(r, Tolerance::EXACT));
+    let big = if quadratic { m + n + 1 } else { m.max(n) + 1 };
+    let ops = big * big * (m + 1) * (n + 1) * (s.dim as u64 + 1);
+    let field = if quadratic { m * m * n } else { m * n };
+    // β = ((α₂/α₁)^{m/g})^{g/n}·(ω₀₀/ω₀ₙ)^{1/n}, g = gcd(m, n), stays a sum
+    // of radicals when n divides m (or the α are rational, m = 1); otherwise
+    // it is a root of an element of the α's field, isolated by resultants,
+    // whose degrees multiply: charged as D⁸.
+    let general = quadratic && m >= 2 && m % n != 0;
+    let ops = ops.saturating_mul(field.saturating_pow(if general { 8 } else { 4 }));
+    limits::exact_work(ops, s.grown_bits(2 * (m + n), s.bits))
 }
 
 fn describe<T: JsonScalar + Ordered>(
