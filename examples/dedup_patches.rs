@@ -13,7 +13,10 @@ use exact_bezier::{coincide, dedup, ratio, read_patches, Patch};
 use num_rational::BigRational;
 
 fn main() {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fixtures/yang_yong_example1.json");
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/fixtures/yang_yong_example1.json"
+    );
     let text = std::fs::read_to_string(path).expect("the fixture exists");
     let original = read_patches(&text).expect("valid JSON").remove(0);
     let Patch::Rect(rect) = &original else {
@@ -33,12 +36,14 @@ fn main() {
         .iter()
         .map(|row| row.iter().map(|h| h.project().expect("w > 0")).collect())
         .collect();
-    let perturbed = Patch::Rect(
-        exact_bezier::RectPatch::new(points, weights).expect("positive weights"),
-    );
+    let perturbed =
+        Patch::Rect(exact_bezier::RectPatch::new(points, weights).expect("positive weights"));
 
     let same = coincide(&original, &copy).expect("two rect patches");
-    println!("Möbius + reversed + elevated copy: coincident = {}", same.coincident);
+    println!(
+        "Möbius + reversed + elevated copy: coincident = {}",
+        same.coincident
+    );
     if let Some(w) = &same.witness {
         println!("  witness symmetry: {}", w.symmetry);
     }

@@ -15,11 +15,8 @@ use exact_bezier::{ratio, Poly, RationalCurve};
 fn main() {
     let points = Poly::vars("p", 4);
     let weights = Poly::vars("w", 4);
-    let curve = RationalCurve::new(
-        points.iter().map(|p| vec![p.clone()]).collect(),
-        weights,
-    )
-    .expect("four symbolic control points");
+    let curve = RationalCurve::new(points.iter().map(|p| vec![p.clone()]).collect(), weights)
+        .expect("four symbolic control points");
     let s = Poly::var("s");
     let third = Poly::constant(ratio(1, 3));
 

@@ -29,13 +29,20 @@ fn main() {
     .expect("a (2, 1) patch with positive weights");
 
     let [t1, t2] = rect_to_tris(&rect);
-    println!("rect degree {:?} → two tris of degree {}", rect.degree(), t1.degree());
+    println!(
+        "rect degree {:?} → two tris of degree {}",
+        rect.degree(),
+        t1.degree()
+    );
 
     let (u, v) = (ratio::<BigRational>(1, 5), ratio(1, 2));
     let on_rect = rect.eval(&u, &v).expect("no pole");
     let on_tri = t1.eval(&u, &v).expect("no pole");
     let shown: Vec<String> = on_rect.iter().map(ToString::to_string).collect();
-    println!("rect(1/5, 1/2) = tri(1/5, 1/2, 3/10) = ({})", shown.join(", "));
+    println!(
+        "rect(1/5, 1/2) = tri(1/5, 1/2, 3/10) = ({})",
+        shown.join(", ")
+    );
     assert_eq!(on_rect, on_tri, "the conversion is exact");
 
     let mesh = Mesh::from_patches(&[Patch::Tri(t1), Patch::Tri(t2)], 16).expect("finite normals");

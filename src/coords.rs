@@ -48,7 +48,12 @@ macro_rules! mint_coords {
 }
 
 #[cfg(feature = "mint")]
-mint_coords!(Point2 { x, y }, Point3 { x, y, z }, Vector2 { x, y }, Vector3 { x, y, z });
+mint_coords!(
+    Point2 { x, y },
+    Point3 { x, y, z },
+    Vector2 { x, y },
+    Vector3 { x, y, z }
+);
 
 /// The point `p` as a fixed-size array, or `None` if it has another
 /// dimension.
@@ -72,13 +77,32 @@ mod tests {
     fn mint_points_build_an_exact_curve_and_come_back() {
         let q = |n: i64| ratio::<BigRational>(n, 1);
         let pts = [
-            mint::Point3 { x: q(0), y: q(0), z: q(0) },
-            mint::Point3 { x: q(2), y: q(4), z: q(2) },
-            mint::Point3 { x: q(4), y: q(0), z: q(0) },
+            mint::Point3 {
+                x: q(0),
+                y: q(0),
+                z: q(0),
+            },
+            mint::Point3 {
+                x: q(2),
+                y: q(4),
+                z: q(2),
+            },
+            mint::Point3 {
+                x: q(4),
+                y: q(0),
+                z: q(0),
+            },
         ];
         let c = RationalCurve::polynomial(pts.map(Coords::into_coords).to_vec()).unwrap();
         let mid = to_mint3(&c.eval(&ratio(1, 2)).unwrap()).unwrap();
-        assert_eq!(mid, mint::Point3 { x: q(2), y: q(2), z: q(1) });
+        assert_eq!(
+            mid,
+            mint::Point3 {
+                x: q(2),
+                y: q(2),
+                z: q(1)
+            }
+        );
         assert!(to_mint3(&[q(1), q(2)]).is_none());
     }
 }

@@ -59,7 +59,12 @@ fn write_net<'a, T: Field + fmt::Display + 'a>(
 /// ```
 impl<T: Field + fmt::Display> fmt::Display for RationalCurve<T> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "rational curve of degree {} in {}D: ", self.degree(), self.dim())?;
+        write!(
+            f,
+            "rational curve of degree {} in {}D: ",
+            self.degree(),
+            self.dim()
+        )?;
         write_net(f, self.ctrl().iter())
     }
 }
@@ -73,7 +78,10 @@ impl<T: Field + fmt::Display> fmt::Display for RectPatch<T> {
             self.dim(),
             (m + 1) * (n + 1)
         )?;
-        write_net(f, self.ctrl().iter().flatten().collect::<Vec<_>>().into_iter())
+        write_net(
+            f,
+            self.ctrl().iter().flatten().collect::<Vec<_>>().into_iter(),
+        )
     }
 }
 
@@ -86,6 +94,9 @@ impl<T: Field + fmt::Display> fmt::Display for TriPatch<T> {
             self.dim(),
             (n + 1) * (n + 2) / 2
         )?;
-        write_net(f, self.rows().iter().flatten().collect::<Vec<_>>().into_iter())
+        write_net(
+            f,
+            self.rows().iter().flatten().collect::<Vec<_>>().into_iter(),
+        )
     }
 }

@@ -6,7 +6,10 @@
 #[test]
 fn readme_and_docs_examples() {
     trycmd::TestCases::new()
-        .register_bin("exact-bezier", std::path::Path::new(env!("CARGO_BIN_EXE_exact-bezier")))
+        .register_bin(
+            "exact-bezier",
+            std::path::Path::new(env!("CARGO_BIN_EXE_exact-bezier")),
+        )
         .case("README.md")
         .case("docs/*.md");
 }

@@ -93,18 +93,91 @@ fn command_outputs_match_the_schema() {
     let ex1 = "tests/fixtures/yang_yong_example1.json";
     let ex3 = "tests/fixtures/yang_yong_example3.json";
     let tri = "tests/fixtures/zcf_4_2_tri.json";
-    assert_valid("evalOutput", "eval rect", &output(&["eval", ex1, "--at", "1/3,1/2"]));
+    assert_valid(
+        "evalOutput",
+        "eval rect",
+        &output(&["eval", ex1, "--at", "1/3,1/2"]),
+    );
     assert_valid(
         "evalOutput",
         "eval rect f64",
         &output(&["eval", ex1, "--at", "0.25,0.5", "--scalar", "f64"]),
     );
-    assert_valid("evalOutput", "eval tri", &output(&["eval", tri, "--at", "1/4,1/4"]));
-    assert_valid("patch", "reparam", &output(&["reparam", ex1, "--mobius", "3/5,7/10"]));
-    assert_valid("patch", "elevate", &output(&["elevate", ex1, "--by", "1,2"]));
-    assert_valid("patches", "convert", &output(&["convert", ex1, "--to", "tri"]));
-    assert_valid("patches", "convert back", &output(&["convert", tri, "--to", "rect"]));
-    assert_valid("standardizeOutput", "standardize", &output(&["standardize", ex3]));
-    assert_valid("standardizeOutput", "standardize f64", &output(&["standardize", ex1]));
-    assert_valid("coincideOutput", "coincide", &output(&["coincide", ex1, ex3]));
+    assert_valid(
+        "evalOutput",
+        "eval tri",
+        &output(&["eval", tri, "--at", "1/4,1/4"]),
+    );
+    assert_valid(
+        "patch",
+        "reparam",
+        &output(&["reparam", ex1, "--mobius", "3/5,7/10"]),
+    );
+    assert_valid(
+        "patch",
+        "elevate",
+        &output(&["elevate", ex1, "--by", "1,2"]),
+    );
+    assert_valid(
+        "patches",
+        "convert",
+        &output(&["convert", ex1, "--to", "tri"]),
+    );
+    assert_valid(
+        "patches",
+        "convert back",
+        &output(&["convert", tri, "--to", "rect"]),
+    );
+    assert_valid(
+        "standardizeOutput",
+        "standardize",
+        &output(&["standardize", ex3]),
+    );
+    assert_valid(
+        "standardizeOutput",
+        "standardize f64",
+        &output(&["standardize", ex1]),
+    );
+    assert_valid(
+        "coincideOutput",
+        "coincide",
+        &output(&["coincide", ex1, ex3]),
+    );
+    let teapot = "tests/fixtures/teapot.json";
+    assert_valid(
+        "auditSummary",
+        "audit",
+        &output(&["audit", teapot, "--summary"]),
+    );
+    assert_valid(
+        "patches",
+        "convert --to bezier",
+        &strip_origins(output(&[
+            "convert",
+            "tests/fixtures/cylinder.json",
+            "--to",
+            "bezier",
+        ])),
+    );
+    let curves = "docs/examples/three_curves.jsonl";
+    for (cmd, def) in [("dedup", "dedupLine"), ("key", "keyLine")] {
+        let (code, out, err) = cli(&[cmd, curves]);
+        assert_eq!(code, 0, "{cmd}: {err}");
+        for line in out.lines() {
+            let v: Value = serde_json::from_str(line).expect("a JSON line");
+            assert_valid(def, cmd, &v);
+        }
+    }
+}
+
+/// The pieces of `convert --to bezier` without their `origin` field (the
+/// one field beyond the patch format).
+fn strip_origins(mut v: Value) -> Value {
+    for piece in v.as_array_mut().expect("an array of pieces") {
+        piece
+            .as_object_mut()
+            .expect("a piece object")
+            .remove("origin");
+    }
+    v
 }

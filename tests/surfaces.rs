@@ -306,7 +306,12 @@ fn cli_standardize_example2_is_quadratic_and_exact() {
     let (code, _) = cli(&["standardize", "tests/fixtures/yang_yong_example2.json"]);
     assert_eq!(code, 2);
     let budget = ["--max-work", "1000000000000"];
-    let (code, v) = cli(&["standardize", "tests/fixtures/yang_yong_example2.json", budget[0], budget[1]]);
+    let (code, v) = cli(&[
+        "standardize",
+        "tests/fixtures/yang_yong_example2.json",
+        budget[0],
+        budget[1],
+    ]);
     assert_eq!(code, 0);
     assert_eq!(v["exact"], true);
     assert_eq!(v["reparameterization"]["kind"], "quadratic");

@@ -96,52 +96,78 @@ pub enum ScalarKind {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Evaluate a curve or patch: {"point": [...]}.
-    #[command(after_help = "Parameters are exact text (1/3, 0.25). A curve takes t in [0, 1]; a rect takes u,v in [0, 1]²; a tri takes barycentric u,v with u, v ≥ 0 and u + v ≤ 1 (w = 1 − u − v; u = 1 is the vertex points[0][n], v = 1 is points[n][0], w = 1 is points[0][0]). A trig patch takes tau=T (τ = tan(t/2)). Outside the domain needs --extrapolate.\n\nExample: exact-bezier eval tests/fixtures/yang_yong_example1.json --at 1/3,1/2")]
+    #[command(
+        after_help = "Parameters are exact text (1/3, 0.25). A curve takes t in [0, 1]; a rect takes u,v in [0, 1]²; a tri takes barycentric u,v with u, v ≥ 0 and u + v ≤ 1 (w = 1 − u − v; u = 1 is the vertex points[0][n], v = 1 is points[n][0], w = 1 is points[0][0]). A trig patch takes tau=T (τ = tan(t/2)). Outside the domain needs --extrapolate.\n\nExample: exact-bezier eval tests/fixtures/yang_yong_example1.json --at 1/3,1/2"
+    )]
     Eval(eval::Args),
     /// Reparameterize: linear Möbius map (--mobius ALPHA[,BETA]) or quadratic map of a rect (--quadratic A1,A2,B1,B2).
-    #[command(after_help = "The linear Möbius map u = (α − 1)s / (2αs − s − α) with 0 < α < 1 (α = 1/2 is the identity) keeps every point of the patch and changes only its weights (source 000, eqs. 2–4). The quadratic map of source 000, eqs. 9–10, raises a rect (m, n) to (m + n, m + n).\n\nExample: exact-bezier reparam tests/fixtures/yang_yong_example1.json --mobius 3/5,7/10")]
+    #[command(
+        after_help = "The linear Möbius map u = (α − 1)s / (2αs − s − α) with 0 < α < 1 (α = 1/2 is the identity) keeps every point of the patch and changes only its weights (source 000, eqs. 2–4). The quadratic map of source 000, eqs. 9–10, raises a rect (m, n) to (m + n, m + n).\n\nExample: exact-bezier reparam tests/fixtures/yang_yong_example1.json --mobius 3/5,7/10"
+    )]
     Reparam(transform::ReparamArgs),
     /// Standard form: end weights 1 (curve) or corner weights 1 (rect).
-    #[command(after_help = "Finds the reparameterization that makes the end weights (curve) or the corner weights (rect) equal to 1, exactly, with real algebraic numbers where roots are needed (sqrt, cbrt: docs/algebraic_numbers.md). A rect whose corner weights satisfy ω_m0·ω_0n = ω_00·ω_mn takes a linear Möbius map (source 000, Theorem 1); any other takes the quadratic map of eqs. 9–19.\n\nExample: exact-bezier standardize tests/fixtures/yang_yong_example3.json")]
+    #[command(
+        after_help = "Finds the reparameterization that makes the end weights (curve) or the corner weights (rect) equal to 1, exactly, with real algebraic numbers where roots are needed (sqrt, cbrt: docs/algebraic_numbers.md). A rect whose corner weights satisfy ω_m0·ω_0n = ω_00·ω_mn takes a linear Möbius map (source 000, Theorem 1); any other takes the quadratic map of eqs. 9–19.\n\nExample: exact-bezier standardize tests/fixtures/yang_yong_example3.json"
+    )]
     Standardize(standardize::Args),
     /// Raise the degree (--by R[,S]).
-    #[command(after_help = "The same curve or patch with its degree raised by R (and by S in v for a rect); the points do not change.\n\nExample: exact-bezier elevate tests/fixtures/yang_yong_example1.json --by 1,2")]
+    #[command(
+        after_help = "The same curve or patch with its degree raised by R (and by S in v for a rect); the points do not change.\n\nExample: exact-bezier elevate tests/fixtures/yang_yong_example1.json --by 1,2"
+    )]
     Elevate(transform::ElevateArgs),
     /// Convert rect ↔ tri (--to tri | --to rect [--split a,b,c,d,e,f] [--degenerate]).
-    #[command(after_help = "--to tri: a rect (m, n) becomes two tris of degree m + n, on u + v ≤ 1 and on its complement. --to rect: a tri of degree n becomes three rects (n, n) over a split of the triangle (see --split), or one degenerate rect. --to rational: a trig patch becomes its exact rational Bézier form. --to bezier: NURBS or STEP input becomes its rational Bézier pieces.\n\nExample: exact-bezier convert tests/fixtures/zcf_4_2_tri.json --to rect --split 1/3,1/2,1/3,1/2,1/2,1/2")]
+    #[command(
+        after_help = "--to tri: a rect (m, n) becomes two tris of degree m + n, on u + v ≤ 1 and on its complement. --to rect: a tri of degree n becomes three rects (n, n) over a split of the triangle (see --split), or one degenerate rect. --to rational: a trig patch becomes its exact rational Bézier form. --to bezier: NURBS or STEP input becomes its rational Bézier pieces.\n\nExample: exact-bezier convert tests/fixtures/zcf_4_2_tri.json --to rect --split 1/3,1/2,1/3,1/2,1/2,1/2"
+    )]
     Convert(convert::Args),
     /// Run every proof in proofs/ and print one line per claim.
-    #[command(after_help = "Each claim gets a verdict: proved, checked, refuted, reproduced, mismatch or broken (see the README). Exit 0 iff every claim has its expected verdict.\n\nExample: exact-bezier prove --family bernstein")]
+    #[command(
+        after_help = "Each claim gets a verdict: proved, checked, refuted, reproduced, mismatch or broken (see the README). Exit 0 iff every claim has its expected verdict.\n\nExample: exact-bezier prove --family bernstein"
+    )]
     Prove(prove::Args),
     /// Draw curves and patches as SVG or PNG (-o OUT.svg|OUT.png).
-    #[command(after_help = "Example: exact-bezier plot tests/fixtures/yang_yong_example1.json -o example1.png")]
+    #[command(
+        after_help = "Example: exact-bezier plot tests/fixtures/yang_yong_example1.json -o example1.png"
+    )]
     Plot(plot::Args),
     /// Triangulate patches with normals as OBJ, STL or PLY (-o OUT.obj).
-    #[command(after_help = "Example: exact-bezier mesh tests/fixtures/yang_yong_example1.json -o example1.obj --density 16")]
+    #[command(
+        after_help = "Example: exact-bezier mesh tests/fixtures/yang_yong_example1.json -o example1.obj --density 16"
+    )]
     Mesh(mesh::Args),
     /// Regenerate the figure gallery (docs/figures/gallery.json).
     #[command(after_help = "Example: exact-bezier figures --only 000-fig3a-example1")]
     Figures(figures::Args),
     /// Derivative of a curve: {"order": K, "derivative": [...]}.
-    #[command(after_help = "Example: exact-bezier deriv docs/examples/curve.json --at 1/2 --order 2")]
+    #[command(
+        after_help = "Example: exact-bezier deriv docs/examples/curve.json --at 1/2 --order 2"
+    )]
     Deriv(deriv::Args),
     /// Curvature of a curve: {"curvature_squared": κ² (exact), "curvature": κ (f64)}.
     #[command(after_help = "Example: exact-bezier curvature docs/examples/curve.json --at 1/2")]
     Curvature(curvature::Args),
     /// G0/G1/G2 verdicts for the join of curve A's end to curve B's start.
-    #[command(after_help = "G0: B starts where A ends. G1: also the same tangent direction, Q1 − Q0 = (nα/m)(Pn − Pn−1) with α > 0 (the corrected form of source 001). G2: also the same curvature vector.\n\nExample: exact-bezier join docs/examples/curve.json docs/examples/curve.json")]
+    #[command(
+        after_help = "G0: B starts where A ends. G1: also the same tangent direction, Q1 − Q0 = (nα/m)(Pn − Pn−1) with α > 0 (the corrected form of source 001). G2: also the same curvature vector.\n\nExample: exact-bezier join docs/examples/curve.json docs/examples/curve.json"
+    )]
     Join(join::Args),
     /// Lower the degree of a curve by one (--method forrest|farin|lsq|exact).
-    #[command(after_help = "forrest and farin may give non-positive weights: the result is then written with valid: false, and the exit code is 3. exact succeeds only when the curve truly has a lower degree.\n\nExample: exact-bezier reduce docs/examples/curve.json --method lsq")]
+    #[command(
+        after_help = "forrest and farin may give non-positive weights: the result is then written with valid: false, and the exit code is 3. exact succeeds only when the curve truly has a lower degree.\n\nExample: exact-bezier reduce docs/examples/curve.json --method lsq"
+    )]
     Reduce(reduce::Args),
     /// A circular arc as a standard-form rational cubic (source 004 eq. 1).
-    #[command(after_help = "λ picks one member of the family of standard-form cubics of the same arc. It is admissible (all weights positive) iff 1 − λk > 0, 1 + 2λck > 0 and 1 − λ(1 − 4c²) > 0, with c = cos(θ/2) and k = 1 + 2c: λ in (−1/(2ck), 1/k) for 0 < θ < π, and λ < 1/(1 − 4c²) for π ≤ θ < 4π/3.\n\nExample: exact-bezier arc --cos-half 1/2 --lambda 0 --points '1,0;1,1;0,1'")]
+    #[command(
+        after_help = "λ picks one member of the family of standard-form cubics of the same arc. It is admissible (all weights positive) iff 1 − λk > 0, 1 + 2λck > 0 and 1 − λ(1 − 4c²) > 0, with c = cos(θ/2) and k = 1 + 2c: λ in (−1/(2ck), 1/k) for 0 < θ < π, and λ < 1/(1 − 4c²) for π ≤ θ < 4π/3.\n\nExample: exact-bezier arc --cos-half 1/2 --lambda 0 --points '1,0;1,1;0,1'"
+    )]
     Arc(arc::Args),
     /// Does a curve lie on a circle? Exact centre and radius², or the reason.
     #[command(after_help = "Example: exact-bezier is-circle docs/examples/arc.json")]
     IsCircle(is_circle::Args),
     /// Are two curves or rect patches the same up to reparameterization?
-    #[command(after_help = "Same up to Möbius maps of each parameter, reversal, swapping u and v, degree elevation, common factors and weight scaling, decided exactly (no roots, no tolerance). The witness gives the map. Exit 0 either way.\n\nExample: exact-bezier coincide tests/fixtures/yang_yong_example1.json tests/fixtures/yang_yong_example3.json")]
+    #[command(
+        after_help = "Same up to Möbius maps of each parameter, reversal, swapping u and v, degree elevation, common factors and weight scaling, decided exactly (no roots, no tolerance). The witness gives the map. Exit 0 either way.\n\nExample: exact-bezier coincide tests/fixtures/yang_yong_example1.json tests/fixtures/yang_yong_example3.json"
+    )]
     Coincide(coincide::Args),
     /// Group curves/rect patches (JSON Lines or array) into coincidence classes, one JSON line each.
     #[command(after_help = "Example: exact-bezier dedup patches.jsonl --witness")]

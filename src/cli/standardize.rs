@@ -4,9 +4,9 @@
 //! reparameterization with its parameters.
 
 use super::{load, one_or_many};
-use crate::limits::{self, Size};
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
+use crate::limits::{self, Size};
 use crate::scalar::Ordered;
 use crate::standard::{
     standardize_curve_algebraic, standardize_rect_algebraic, theorem1_holds, StandardMap,
