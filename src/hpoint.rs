@@ -26,16 +26,11 @@ pub struct HPoint<T> {
 }
 
 impl<T: Ring> HPoint<T> {
-    /// `(w·P, w)` from a Cartesian point `P` and weight `w`.
-    pub fn from_point(point: &[T], weight: &T) -> Self {
-        let mut coords: Vec<T> = point.iter().map(|x| x.clone() * weight).collect();
-        coords.push(weight.clone());
-        HPoint { coords }
-    }
-
-    /// The point `P` with weight 1.
+    /// The point `P` with weight 1: `(P, 1)`.
     pub fn from_cartesian(point: &[T]) -> Self {
-        Self::from_point(point, &T::one())
+        let mut coords = point.to_vec();
+        coords.push(T::one());
+        HPoint { coords }
     }
 
     /// Spatial dimension `d` (the number of coordinates less the weight).
@@ -112,6 +107,13 @@ impl<T: Ring> HPoint<T> {
 
 /// # Comparisons
 impl<T: Scalar> HPoint<T> {
+    /// `(w·P, w)` from a Cartesian point `P` and weight `w`.
+    pub fn from_point(point: &[T], weight: &T) -> Self {
+        let mut coords: Vec<T> = point.iter().map(|x| x.mul_scalar(weight)).collect();
+        coords.push(weight.clone());
+        HPoint { coords }
+    }
+
     /// Are all coordinates zero (within `tol` for `f64`)?
     pub fn is_zero_within(&self, tol: Tolerance) -> bool {
         self.coords.iter().all(|x| x.is_zero_within(tol))

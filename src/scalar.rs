@@ -124,6 +124,12 @@ pub trait Scalar: Ring {
         self.is_zero()
     }
 
+    /// `self · other`. The same as `*`; an exact type may take a shortcut
+    /// (`BigRational`: two integers multiply without the gcds of its `*`).
+    fn mul_scalar(&self, other: &Self) -> Self {
+        self.clone() * other
+    }
+
     /// `self^e` by repeated squaring (`x^0 = 1`).
     fn pow_u32(&self, e: u32) -> Self {
         let mut result = Self::one();
@@ -206,6 +212,15 @@ impl Scalar for BigRational {
     }
     fn from_bigint(n: &BigInt) -> Self {
         BigRational::from_integer(n.clone())
+    }
+    fn mul_scalar(&self, other: &Self) -> Self {
+        // `Ratio`'s `*` reduces by gcd(numer, other denom) and the converse,
+        // which is work even when both denominators are 1.
+        if self.is_integer() && other.is_integer() {
+            BigRational::from_integer(self.numer() * other.numer())
+        } else {
+            self * other
+        }
     }
 }
 impl Field for BigRational {}
