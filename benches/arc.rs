@@ -1,6 +1,6 @@
 //! Arc construction (source 004 eq. 1) and the exact circle test, exact vs f64.
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use exact_bezier::{circle_of, ratio, QuadArc, Tolerance};
+use exact_bezier::{arc::QuadArc, curve::circle_of, ratio, Tolerance};
 use num_rational::BigRational;
 
 fn arcs(c: &mut Criterion) {
@@ -15,7 +15,7 @@ fn arcs(c: &mut Criterion) {
     )
     .unwrap();
     let sigma = ratio::<BigRational>(2, 3);
-    let lambda = exact_bezier::lambda_of_sigma_cubed(arc.cos_half(), &ratio(8, 27)).unwrap();
+    let lambda = exact_bezier::arc::lambda_of_sigma_cubed(arc.cos_half(), &ratio(8, 27)).unwrap();
     let arc_f = arc.map(exact_bezier::Ordered::to_f64);
     let lambda_f = exact_bezier::Ordered::to_f64(&lambda);
     c.bench_function("arc cubic from lambda, exact (cube root decided)", |b| {
@@ -27,7 +27,8 @@ fn arcs(c: &mut Criterion) {
     });
     c.bench_function("arc cubic from lambda, f64", |b| {
         b.iter(|| {
-            let s = exact_bezier::sigma_of_lambda(arc_f.cos_half(), black_box(&lambda_f)).unwrap();
+            let s =
+                exact_bezier::arc::sigma_of_lambda(arc_f.cos_half(), black_box(&lambda_f)).unwrap();
             black_box(&arc_f).standard_cubic(&s).unwrap()
         })
     });
@@ -36,13 +37,13 @@ fn arcs(c: &mut Criterion) {
     c.bench_function("circle test, exact cubic", |b| {
         b.iter(|| circle_of(black_box(&cubic), Tolerance::EXACT).unwrap())
     });
-    let scaled = exact_bezier::integer_coords(&cubic);
+    let scaled = exact_bezier::curve::integer_coords(&cubic);
     c.bench_function(
         "circle test, exact cubic, integer homogeneous coords",
         |b| {
             b.iter(|| {
                 circle_of(
-                    &exact_bezier::integer_coords(black_box(&cubic)),
+                    &exact_bezier::curve::integer_coords(black_box(&cubic)),
                     Tolerance::EXACT,
                 )
                 .unwrap()

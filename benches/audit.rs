@@ -6,7 +6,10 @@
 //! Run: `cargo bench --bench audit -- --warm-up-time 1 --measurement-time 2`
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use exact_bezier::{audit, read_model, HPoint, Knots, Model, NurbsSurface, Patch, Piece};
+use exact_bezier::{
+    audit::audit, audit::read_model, audit::Model, audit::Piece, hpoint::HPoint, nurbs::Knots,
+    nurbs::NurbsSurface, Patch,
+};
 use num_rational::BigRational;
 
 type Q = BigRational;

@@ -13,9 +13,9 @@
 
 use criterion::{black_box, criterion_group, criterion_main, BatchSize, Criterion};
 use exact_bezier::{
-    canonical_key, canonical_text, coincide, coincide_f64, coincide_filtered, key_digest,
-    parse_json, patch_from_value, patch_to_json, ratio, Deduper, Patch, RectPatch, Symmetry,
-    Tolerance,
+    coincide::canonical_key, coincide::canonical_text, coincide::coincide, coincide::coincide_f64,
+    coincide::coincide_filtered, coincide::key_digest, coincide::Deduper, coincide::Symmetry,
+    io::parse_json, io::patch_from_value, io::patch_to_json, ratio, Patch, RectPatch, Tolerance,
 };
 use num_rational::BigRational;
 

@@ -14,7 +14,7 @@
 //! on overflow).
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use exact_bezier::{ratio, rational_to_f64, FastCurve, RationalCurve};
+use exact_bezier::{algebra::rational_to_f64, fast_eval::FastCurve, ratio, RationalCurve};
 use num_integer::Integer;
 use num_rational::BigRational;
 

@@ -15,7 +15,7 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use exact_bezier::proofs::yang_yong::mobius_uv_sides;
-use exact_bezier::{bernstein, binomial_scalar, Poly};
+use exact_bezier::{algebra::binomial_scalar, bernstein::bernstein, Poly};
 use num_traits::One;
 
 /// The bidegrees of the peer table.

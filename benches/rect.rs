@@ -3,7 +3,9 @@
 //! source 000 (read exactly from its fixture); exact evaluation also by the
 //! fraction-free [`FastRect`].
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use exact_bezier::{ratio, read_patches, FastRect, Ordered, Patch, Quadratic, RectPatch};
+use exact_bezier::{
+    fast_eval::FastRect, io::read_patches, ratio, reparam::Quadratic, Ordered, Patch, RectPatch,
+};
 use num_rational::BigRational;
 
 fn example2() -> RectPatch<BigRational> {

@@ -5,8 +5,8 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use exact_bezier::{
-    ratio, rect_to_tris, tri_to_degenerate_rect, tri_to_rects, FastTri, Field, RectPatch, Split,
-    TriPatch,
+    convert::rect_to_tris, convert::tri_to_degenerate_rect, convert::tri_to_rects, convert::Split,
+    fast_eval::FastTri, ratio, Field, RectPatch, TriPatch,
 };
 use num_rational::BigRational;
 

@@ -1,7 +1,7 @@
 //! Trigonometric surface evaluation (source 002): the bowl's S₁ at one point
 //! and on an 8 × 8 grid, f64 (angles) against exact (rational τ).
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use exact_bezier::{ratio, trig_bowl, Ordered, TrigParam, TrigRect};
+use exact_bezier::{ratio, trig::trig_bowl, trig::TrigParam, trig::TrigRect, Ordered};
 use num_rational::BigRational;
 
 fn surface() -> TrigRect<BigRational> {

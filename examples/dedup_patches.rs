@@ -9,7 +9,7 @@
 //!
 //! Run from the crate root: `cargo run --example dedup_patches`
 
-use exact_bezier::{coincide, dedup, ratio, read_patches, Patch};
+use exact_bezier::{coincide::coincide, coincide::dedup, io::read_patches, ratio, Patch};
 use num_rational::BigRational;
 
 fn main() {

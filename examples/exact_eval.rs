@@ -8,7 +8,7 @@
 //!
 //! Run: `cargo run --example exact_eval`
 
-use exact_bezier::{circle_of, ratio, RationalCurve, Tolerance};
+use exact_bezier::{curve::circle_of, ratio, RationalCurve, Tolerance};
 use num_rational::BigRational;
 
 fn main() {
@@ -37,7 +37,7 @@ fn main() {
         circle.center[0], circle.center[1], circle.radius_squared
     );
 
-    let arc64 = arc.map(exact_bezier::rational_to_f64);
+    let arc64 = arc.map(exact_bezier::algebra::rational_to_f64);
     let x = arc64.eval(&(1.0 / 3.0)).expect("no pole");
     println!(
         "f64 at t = 1/3: x² + y² − 1 = {:e} (rounding)",

@@ -7,7 +7,7 @@
 //! /usr/bin/time -v target/release/examples/parse_only /tmp/p200k.jsonl
 //! ```
 
-use exact_bezier::{for_each_chunk, Error};
+use exact_bezier::{io::for_each_chunk, Error};
 use rayon::prelude::*;
 use std::io::BufReader;
 

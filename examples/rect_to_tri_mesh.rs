@@ -9,7 +9,7 @@
 //!
 //! Run: `cargo run --example rect_to_tri_mesh`
 
-use exact_bezier::{ratio, rect_to_tris, Mesh, Patch, RectPatch};
+use exact_bezier::{convert::rect_to_tris, ratio, render::Mesh, Patch, RectPatch};
 use num_rational::BigRational;
 
 fn main() {

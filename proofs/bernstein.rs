@@ -8,9 +8,9 @@
 
 use super::calculus::{antiderivative, integral_0_1};
 use super::{Claim, Verdict};
+use crate::algebra::poly::Poly;
+use crate::algebra::scalar::{binomial, binomial_scalar, ratio};
 use crate::bernstein::bernstein;
-use crate::poly::Poly;
-use crate::scalar::{binomial, binomial_scalar, ratio};
 use num_traits::{One, Zero};
 
 /// Degree bound of the family.

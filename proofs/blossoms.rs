@@ -11,13 +11,13 @@
 
 use super::triangles::symbolic_tri;
 use super::{Claim, Verdict};
+use crate::algebra::poly::Poly;
+use crate::algebra::scalar::{binomial, recip_int};
 use crate::bernstein::bernstein;
 use crate::blossom::{polar_bivariate, polar_tensor, polar_univariate, rect_blossom, ShiftOp};
 use crate::curve::RationalCurve;
 use crate::hpoint::HPoint;
-use crate::poly::Poly;
 use crate::rect::RectPatch;
-use crate::scalar::{binomial, recip_int};
 use crate::tri::Bary;
 use num_bigint::BigInt;
 use num_traits::{One, Zero};

@@ -23,15 +23,15 @@
 //! * source 000 Example 3 vs Example 1, decided exactly.
 
 use super::{Claim, Verdict};
+use crate::algebra::poly::Poly;
+use crate::algebra::scalar::{binomial_scalar, ratio};
+use crate::coincide::filter::coincide_filtered;
+use crate::coincide::minimal::{minimal_rect, multiply_components};
 use crate::coincide::{coincide, invariant_parts};
 use crate::curve::RationalCurve;
 use crate::hpoint::HPoint;
-use crate::interval::coincide_filtered;
 use crate::io::{read_patches, Patch};
-use crate::minimal_degree::{minimal_rect, multiply_components};
-use crate::poly::Poly;
 use crate::rect::RectPatch;
-use crate::scalar::{binomial_scalar, ratio};
 use num_rational::BigRational;
 
 const SOURCE: &str = "ours (issue 4)";

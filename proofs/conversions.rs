@@ -12,14 +12,14 @@
 use super::blossoms::symbolic_rect;
 use super::triangles::symbolic_tri;
 use super::{Claim, Verdict};
+use crate::algebra::poly::Poly;
+use crate::algebra::scalar::ratio;
 use crate::convert::{
     bilinear, degree_raising_matrix, rect_to_tri, square_corners, tri_to_degenerate_rect,
     tri_to_rect_hu, tri_to_rect_on_quad, tri_to_rects, tri_to_rects_operators, Half, Split,
 };
 use crate::hpoint::HPoint;
-use crate::poly::Poly;
 use crate::rect::RectPatch;
-use crate::scalar::ratio;
 use crate::tri::TriPatch;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
@@ -153,8 +153,9 @@ fn tri_to_rect_claims() -> Vec<Claim> {
                     .filter(|(k, l)| k + l == j)
                     .map(|(k, l)| {
                         BigRational::new(
-                            crate::scalar::binomial(i, k) * crate::scalar::binomial(n - i, l),
-                            crate::scalar::binomial(n, j),
+                            crate::algebra::scalar::binomial(i, k)
+                                * crate::algebra::scalar::binomial(n - i, l),
+                            crate::algebra::scalar::binomial(n, j),
                         )
                     })
                     .sum();
@@ -316,8 +317,8 @@ fn algorithm_ii_claims() -> Vec<Claim> {
                         return acc;
                     }
                     let w = BigRational::new(
-                        crate::scalar::binomial(i, k) * crate::scalar::binomial(n - i, j - k),
-                        crate::scalar::binomial(n, j),
+                        crate::algebra::scalar::binomial(i, k) * crate::algebra::scalar::binomial(n - i, j - k),
+                        crate::algebra::scalar::binomial(n, j),
                     );
                     acc + q[k].clone() * Poly::constant(w)
                 });

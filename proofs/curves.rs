@@ -10,12 +10,12 @@
 
 use super::calculus::nth_derivative;
 use super::{Claim, Verdict};
+use crate::algebra::poly::Poly;
+use crate::algebra::scalar::{binomial_scalar, Scalar};
 use crate::bernstein::bernstein;
+use crate::curve::geometry::{cross_norm_sq, CurveEnd};
 use crate::curve::RationalCurve;
-use crate::curve_geometry::{cross_norm_sq, CurveEnd};
 use crate::hpoint::{de_casteljau, HPoint};
-use crate::poly::Poly;
-use crate::scalar::{binomial_scalar, Scalar};
 use num_traits::{One, Zero};
 
 fn v(name: &str) -> Poly {
@@ -466,7 +466,7 @@ fn bezier_f(i: usize, e: usize) -> Poly {
     };
     sign * t.pow(i as u32)
         * nth_derivative(&inner, "t", i - 1)
-        * crate::scalar::ratio::<Poly>(1, fact)
+        * crate::algebra::scalar::ratio::<Poly>(1, fact)
 }
 
 fn bezier_original_claims() -> Vec<Claim> {

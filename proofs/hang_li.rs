@@ -11,11 +11,11 @@
 //! in t).
 
 use super::{Claim, Verdict};
+use crate::algebra::poly::Poly;
+use crate::algebra::scalar::{ratio, Scalar};
 use crate::arc::{check_lambda, LambdaFactors, QuadArc};
 use crate::curve::RationalCurve;
 use crate::hpoint::HPoint;
-use crate::poly::Poly;
-use crate::scalar::{ratio, Scalar};
 use num_rational::BigRational;
 use num_traits::Zero;
 
@@ -603,7 +603,7 @@ mod monotonicity {
     //! `ω₁³ = k³/(27N²D)`, `ω₂³ = k³E³/(27ND²)` (rational in λ) and sign
     //! analysis, plus a dense exact sample.
     use super::*;
-    use crate::scalar::Ordered;
+    use crate::algebra::scalar::Ordered;
 
     pub fn claims() -> Vec<Claim> {
         vec![

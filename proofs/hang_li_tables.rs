@@ -12,13 +12,13 @@
 
 use super::hang_li::omega_cubes;
 use super::{Claim, Verdict};
+use crate::algebra::poly::Poly;
+use crate::algebra::scalar::{ratio, Ordered, Scalar, Tolerance};
 use crate::arc::{sigma_of_lambda, QuadArc};
-use crate::circle::circle_of;
+use crate::curve::circle::circle_of;
 use crate::curve::RationalCurve;
 use crate::hpoint::HPoint;
 use crate::io::parse_rational;
-use crate::poly::Poly;
-use crate::scalar::{ratio, Ordered, Scalar, Tolerance};
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 

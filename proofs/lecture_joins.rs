@@ -16,11 +16,11 @@
 //! wrong for `m ≠ n` (corrected: [`g2_leading_points`]).
 
 use super::{Claim, Verdict};
-use crate::continuity::{g2_leading_points, join};
+use crate::algebra::poly::Poly;
+use crate::algebra::scalar::{ratio, Scalar, Tolerance};
+use crate::curve::geometry::cross_norm_sq;
+use crate::curve::join::{g2_leading_points, join};
 use crate::curve::RationalCurve;
-use crate::curve_geometry::cross_norm_sq;
-use crate::poly::Poly;
-use crate::scalar::{ratio, Scalar, Tolerance};
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 

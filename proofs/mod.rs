@@ -22,7 +22,7 @@
 //! Claims checked for every degree up to a bound say so in their text and
 //! carry the bound ([`Claim::bound`], `degree_bound` in `prove --json`).
 
-use crate::poly::Poly;
+use crate::algebra::poly::Poly;
 use serde_json::{json, Value};
 use std::cell::Cell;
 use std::fmt;

@@ -17,9 +17,9 @@
 //! then rational constants and no division of polynomials is needed.
 
 use super::{Claim, Verdict};
+use crate::algebra::poly::Poly;
 use crate::hpoint::HPoint;
 use crate::nurbs::{Knots, NurbsCurve, NurbsSurface};
-use crate::poly::Poly;
 use num_rational::BigRational;
 
 fn q(n: i64, d: i64) -> BigRational {

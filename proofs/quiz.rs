@@ -3,8 +3,8 @@
 //! t = 1/2; the lecture marks answer C, (85, 45).
 
 use super::{Claim, Verdict};
+use crate::algebra::scalar::ratio;
 use crate::curve::RationalCurve;
-use crate::scalar::ratio;
 use num_rational::BigRational;
 
 /// The quiz, checked by de Casteljau and by the hand-expanded Bernstein sum

@@ -4,11 +4,11 @@
 //! symbolic homogeneous control points for every degree `n ≤ 8`.
 
 use super::{Claim, Verdict};
+use crate::algebra::poly::Poly;
+use crate::algebra::scalar::{binomial, ratio, Tolerance};
+use crate::curve::reduction::Reduction;
 use crate::curve::RationalCurve;
-use crate::degree_reduction::Reduction;
 use crate::hpoint::HPoint;
-use crate::poly::Poly;
-use crate::scalar::{binomial, ratio, Tolerance};
 use num_traits::Zero;
 
 const SOURCE: &str = "001 lecture, 降阶";

@@ -8,13 +8,13 @@
 
 use super::yang_yong::sym_net;
 use super::{Claim, Verdict};
+use crate::algebra::poly::Poly;
+use crate::algebra::scalar::{ratio, Tolerance};
 use crate::bernstein::bernstein;
 use crate::hpoint::{de_casteljau, HPoint};
-use crate::poly::Poly;
+use crate::rect::join::g0_join;
+use crate::rect::ops::{cross, Corner};
 use crate::rect::RectPatch;
-use crate::rect_join::g0_join;
-use crate::rect_ops::{cross, Corner};
-use crate::scalar::{ratio, Tolerance};
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
@@ -143,8 +143,8 @@ fn projective_evaluation() -> Claim {
         let mut want = HPoint::zero(1);
         for (i, row) in p.ctrl().iter().enumerate() {
             for (j, h) in row.iter().enumerate() {
-                let f = crate::scalar::binomial_scalar::<Poly>(m, i)
-                    * &crate::scalar::binomial_scalar::<Poly>(n, j)
+                let f = crate::algebra::scalar::binomial_scalar::<Poly>(m, i)
+                    * &crate::algebra::scalar::binomial_scalar::<Poly>(n, j)
                     * &u1.pow(i as u32)
                     * &u0.pow((m - i) as u32)
                     * &v1.pow(j as u32)

@@ -10,8 +10,8 @@
 //! patches and all parameters.
 
 use super::{Claim, Verdict};
+use crate::algebra::poly::Poly;
 use crate::hpoint::HPoint;
-use crate::poly::Poly;
 use crate::tri::{affine_combination, tri_bernstein, Bary, TriPatch, SYMMETRIES};
 use num_traits::{One, Signed, Zero};
 

@@ -9,8 +9,8 @@
 //! independent, so that is general).
 
 use super::{Claim, Verdict};
-use crate::poly::Poly;
-use crate::scalar::ratio;
+use crate::algebra::poly::Poly;
+use crate::algebra::scalar::ratio;
 use crate::trig::basis::{circle_normal_form, TrigFn, TrigParam};
 use crate::trig::curve::TrigCurve;
 use crate::trig::surface::TrigRect;

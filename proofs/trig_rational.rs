@@ -9,7 +9,7 @@
 //! table the code uses).
 
 use super::{Claim, Verdict};
-use crate::poly::Poly;
+use crate::algebra::poly::Poly;
 use crate::trig::basis::TrigFn;
 use crate::trig::curve::TrigCurve;
 use crate::trig::surface::TrigRect;

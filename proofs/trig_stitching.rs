@@ -9,8 +9,8 @@
 
 use super::trig_basis::{det4, int, nf, same, sym_param};
 use super::{Claim, Verdict};
-use crate::poly::Poly;
-use crate::scalar::ratio;
+use crate::algebra::poly::Poly;
+use crate::algebra::scalar::ratio;
 use crate::trig::basis::TrigParam;
 use crate::trig::bowl::trig_bowl;
 use crate::trig::curve::TrigCurve;

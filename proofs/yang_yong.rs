@@ -11,13 +11,13 @@
 //! (m, n) up to a per-claim bound (8, 5 or 4) that each claim's text states.
 
 use super::{Claim, Verdict};
+use crate::algebra::poly::Poly;
+use crate::algebra::scalar::{binomial_scalar, ratio};
 use crate::bernstein::{bernstein, bernstein_all};
 use crate::hpoint::HPoint;
-use crate::poly::Poly;
 use crate::rect::RectPatch;
+use crate::reparam::standard::corner_weights;
 use crate::reparam::{quadratic_coefficients, Quadratic};
-use crate::scalar::{binomial_scalar, ratio};
-use crate::standard::corner_weights;
 use num_rational::BigRational;
 use num_traits::Zero;
 
@@ -522,7 +522,7 @@ fn eq17_matches() -> Claim {
                                 * binomial_scalar::<Poly>(n, j)
                                 * binomial_scalar::<Poly>(n, k1 - i)
                                 * binomial_scalar::<Poly>(m, i);
-                            let den = crate::scalar::binomial(d, k2) * crate::scalar::binomial(d, k1);
+                            let den = crate::algebra::scalar::binomial(d, k2) * crate::algebra::scalar::binomial(d, k1);
                             let f = num * Poly::constant(BigRational::new(1.into(), den));
                             acc = acc + c[k2 - j][i].clone() * &e[k1 - i][j] * &f * p.ctrl()[i][j].weight();
                         }
@@ -547,8 +547,9 @@ fn bernstein_product_eq15() -> Claim {
                 for b in 0..=q {
                     let lhs = bernstein::<Poly>(a, p, &s) * &bernstein::<Poly>(b, q, &s);
                     let f = BigRational::new(
-                        crate::scalar::binomial(p, a) * crate::scalar::binomial(q, b),
-                        crate::scalar::binomial(p + q, a + b),
+                        crate::algebra::scalar::binomial(p, a)
+                            * crate::algebra::scalar::binomial(q, b),
+                        crate::algebra::scalar::binomial(p + q, a + b),
                     );
                     if lhs != bernstein::<Poly>(a + b, p + q, &s).scale(&f) && bad.is_none() {
                         bad = Some(format!("p={p}, q={q}, a={a}, b={b}"));

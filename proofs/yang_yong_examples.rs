@@ -5,11 +5,11 @@
 //! `reproduced` if equal, else `mismatch` with both values.
 
 use super::{Claim, Verdict};
-use crate::curve_geometry::ConicType;
+use crate::algebra::scalar::{ratio, Ordered, Tolerance};
+use crate::curve::geometry::ConicType;
 use crate::io::{read_patches, Patch};
 use crate::rect::{RectPatch, Side};
-use crate::scalar::{ratio, Ordered, Tolerance};
-use crate::standard::{
+use crate::reparam::standard::{
     corner_weights, standardize_rect_exact_or_f64, theorem1_holds, Exactness, Standard, StandardMap,
 };
 use num_rational::BigRational;

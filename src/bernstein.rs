@@ -3,14 +3,14 @@
 //!
 //! Reference: source 001 (lecture), "定义" and "伯恩斯坦多项式的性质".
 
-use crate::scalar::{binomial_scalar, Scalar};
+use crate::algebra::scalar::{binomial_scalar, Scalar};
 
 /// `B_{i,n}(t) = C(n, i) tⁱ (1 − t)^{n−i}` (0 when `i > n`).
 ///
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{bernstein, ratio};
+/// use exact_bezier::{bernstein::bernstein, ratio};
 /// use num_rational::BigRational;
 /// let b: BigRational = bernstein(1, 3, &ratio(1, 2));
 /// assert_eq!(b, ratio(3, 8));
@@ -27,7 +27,7 @@ pub fn bernstein<T: Scalar>(i: usize, n: usize, t: &T) -> T {
 /// `B_{i,n} = (1 − t) B_{i,n−1} + t B_{i−1,n−1}` (no binomials, no powers).
 ///
 /// ```
-/// use exact_bezier::{bernstein_all, ratio};
+/// use exact_bezier::{bernstein::bernstein_all, ratio};
 /// use num_rational::BigRational;
 /// let b: Vec<BigRational> = bernstein_all(2, &ratio(1, 3));
 /// assert_eq!(b, vec![ratio(4, 9), ratio(4, 9), ratio(1, 9)]);
@@ -49,7 +49,7 @@ pub fn bernstein_all<T: Scalar>(n: usize, t: &T) -> Vec<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scalar::ratio;
+    use crate::algebra::scalar::ratio;
     use num_rational::BigRational;
 
     #[test]

@@ -16,11 +16,11 @@
 //! Everything is a ring computation: exact for exact scalars, and an
 //! identity for all symbol values with [`Poly`](crate::Poly).
 
+use crate::algebra::scalar::{binomial, recip_int, Scalar};
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::rect::RectPatch;
-use crate::scalar::{binomial, recip_int, Scalar};
 use crate::tri::{casteljau_level, Bary, TriPatch};
 
 /// # Blossom (polar form) of a triangular patch
@@ -87,7 +87,7 @@ impl<T: Scalar> TriPatch<T> {
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{rect_blossom, RectPatch, ratio};
+/// use exact_bezier::{blossom::rect_blossom, RectPatch, ratio};
 /// use num_rational::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let r = RectPatch::polynomial(vec![vec![p(0), p(1)], vec![p(2), p(7)]]).unwrap();
@@ -218,7 +218,7 @@ fn elementary<T: Scalar>(args: &[T], n: usize) -> Vec<T> {
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{polar_univariate, ratio};
+/// use exact_bezier::{blossom::polar_univariate, ratio};
 /// use num_rational::BigRational;
 /// // p(t) = t² as degree 2: B[u₁, u₂] = u₁ u₂
 /// let c = [ratio::<BigRational>(0, 1), ratio(0, 1), ratio(1, 1)];
@@ -256,7 +256,7 @@ pub fn polar_univariate<T: Scalar>(coef: &[T], n: usize, args: &[T]) -> Result<T
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{polar_bivariate, ratio};
+/// use exact_bezier::{blossom::polar_bivariate, ratio};
 /// use num_rational::BigRational;
 /// // p = x·y as degree 2: B[(x1,y1),(x2,y2)] = (x1 y2 + x2 y1)/2
 /// let z = ratio::<BigRational>(0, 1);
@@ -318,7 +318,7 @@ pub fn polar_bivariate<T: Scalar>(coef: &[Vec<T>], n: usize, args: &[[T; 2]]) ->
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{polar_tensor, ratio};
+/// use exact_bezier::{blossom::polar_tensor, ratio};
 /// use num_rational::BigRational;
 /// // p = x·y, bidegree (1, 1): B[u₁; v₁] = u₁ v₁
 /// let z = ratio::<BigRational>(0, 1);

@@ -10,8 +10,8 @@
 //! The exact interchange form is the JSON of docs/FORMAT.md (`FromStr` and,
 //! with the `serde` feature, `serde`); `Display` is for people.
 
+use crate::algebra::scalar::Field;
 use crate::hpoint::HPoint;
-use crate::scalar::Field;
 use crate::{RationalCurve, RectPatch, TriPatch};
 use std::fmt;
 

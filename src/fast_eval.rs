@@ -12,10 +12,10 @@
 //! X(p/q) = H_d / H_w,   H = Σ (L·w_i P_i, L·w_i) C(n,i) (q−p)^{n−i} pⁱ   (L = common denominator)
 //! ```
 
+use crate::algebra::int::{common_denominator, Int};
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::{de_casteljau_hom, HPoint};
-use crate::int::{common_denominator, Int};
 use crate::rect::RectPatch;
 use crate::tri::{casteljau_level, TriPatch};
 use num_rational::BigRational;
@@ -55,7 +55,7 @@ fn project(h: &HPoint<Int>) -> Result<Vec<BigRational>, Error> {
 /// A rational curve prepared for fast exact evaluation.
 ///
 /// ```
-/// use exact_bezier::{FastCurve, RationalCurve, ratio};
+/// use exact_bezier::{fast_eval::FastCurve, RationalCurve, ratio};
 /// use num_rational::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 3), ratio(y, 7)];
 /// let c = RationalCurve::new(vec![p(0, 0), p(1, 3), p(4, 3), p(5, -1)],
@@ -91,7 +91,7 @@ impl FastCurve {
 /// A rational tensor-product patch prepared for fast exact evaluation.
 ///
 /// ```
-/// use exact_bezier::{FastRect, RectPatch, ratio};
+/// use exact_bezier::{fast_eval::FastRect, RectPatch, ratio};
 /// use num_rational::BigRational;
 /// let p = |x: i64, y: i64, z: i64| vec![ratio::<BigRational>(x, 2), ratio(y, 3), ratio(z, 5)];
 /// let s = RectPatch::new(vec![vec![p(0, 0, 1), p(0, 3, 2)], vec![p(4, 1, 0), p(5, 5, 5)]],
@@ -136,7 +136,7 @@ impl FastRect {
 /// A rational triangular patch prepared for fast exact evaluation.
 ///
 /// ```
-/// use exact_bezier::{FastTri, TriPatch, ratio};
+/// use exact_bezier::{fast_eval::FastTri, TriPatch, ratio};
 /// use num_rational::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 3), ratio(y, 5)];
 /// let t = TriPatch::new(vec![vec![p(0, 0), p(1, 2), p(3, 0)], vec![p(0, 2), p(2, 3)], vec![p(0, 4)]],

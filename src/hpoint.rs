@@ -5,15 +5,15 @@
 //! act on the `dim + 1` coordinates alike and need only ring operations.
 //! Division happens once, in [`HPoint::project`].
 
+use crate::algebra::scalar::{Field, Ordered, Ring, Scalar, Tolerance};
 use crate::error::Error;
-use crate::scalar::{Field, Ordered, Ring, Scalar, Tolerance};
 
 /// A homogeneous point: `coords = [w·x₁, …, w·x_d, w]` (weight last).
 ///
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{HPoint, ratio};
+/// use exact_bezier::{hpoint::HPoint, ratio};
 /// use num_rational::BigRational;
 /// let p: HPoint<BigRational> = HPoint::from_point(&[ratio(1, 2), ratio(3, 1)], &ratio(2, 1));
 /// assert_eq!(p.coords, vec![ratio(1, 1), ratio(6, 1), ratio(2, 1)]);
@@ -174,7 +174,7 @@ pub fn de_casteljau<T: Scalar>(points: &[HPoint<T>], t: &T) -> HPoint<T> {
 /// **Panics if `points` is empty.**
 ///
 /// ```
-/// use exact_bezier::{de_casteljau, de_casteljau_hom, HPoint, ratio};
+/// use exact_bezier::{hpoint::de_casteljau, hpoint::de_casteljau_hom, hpoint::HPoint, ratio};
 /// use num_rational::BigRational;
 /// let pts: Vec<HPoint<BigRational>> = (0..4).map(|i| HPoint::from_cartesian(&[ratio(i * i, 1)])).collect();
 /// let t = ratio(1, 3);

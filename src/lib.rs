@@ -1,14 +1,40 @@
 //! # exact-bezier
 //!
 //! Rational Bézier curves, rectangular (tensor-product) patches and
-//! triangular patches, with every algorithm written once, generically over a
-//! [`Scalar`], and run over three instantiations: `f64` for speed,
-//! [`BigRational`](num_rational::BigRational) for exact answers, and the
-//! symbolic [`Poly`] for proofs of identities for all parameter values.
+//! triangular patches. Every algorithm is written once, generically over a
+//! scalar type, and runs with several scalars:
+//!
+//! | scalar | for |
+//! | --- | --- |
+//! | `f64` | speed; comparisons take an explicit [`Tolerance`] |
+//! | [`BigRational`](num_rational::BigRational) | exact answers, where equality is equality |
+//! | [`Poly`] | proofs: an identity that comes out `== 0` on symbols holds for all their values |
+//!
+//! ## Start here
+//!
+//! - **Curves and patches**: [`RationalCurve`], [`RectPatch`] and
+//!   [`TriPatch`] are stored homogeneously as `(w·P, w)`. They offer
+//!   evaluation, derivatives, subdivision, elevation and Möbius maps. Their
+//!   facets are in the modules [`curve`] (curvature, joins, degree
+//!   reduction, circles), [`rect`] and [`tri`].
+//! - **Exact numbers**: [`ratio`] builds a rational. [`io`] reads the JSON
+//!   format of `docs/FORMAT.md` (numbers are read exactly from their text)
+//!   and writes it back.
+//! - **Is this the same surface?** [`coincide::coincide`] decides it exactly,
+//!   up to Möbius maps, reversal, swap, elevation, common factors and weight
+//!   scaling. [`coincide::canonical_key`] and [`coincide::dedup`] do the
+//!   same in bulk.
+//! - **Reparameterization and standard form** (source 000): [`reparam`].
+//! - **Rectangle ↔ triangle conversions and blossoms** (source 003):
+//!   [`convert`] and [`blossom`].
+//! - **Trigonometric patches** (source 002): [`trig`]. **Circular arcs**
+//!   (source 004): [`arc`].
+//! - **The number types** behind the generic code, namely the traits
+//!   [`Ring`], [`Scalar`], [`Field`] and [`Ordered`], are in [`algebra`].
+//! - `use exact_bezier::prelude::*;` imports the common types.
 //!
 //! ```
-//! use exact_bezier::{RationalCurve, Poly, ratio};
-//! use num_rational::BigRational;
+//! use exact_bezier::prelude::*;
 //!
 //! // An arc of the unit circle as an exact rational quadratic: half-angle
 //! // with cos = 3/5, so the middle weight is 3/5 and the middle point (1, 4/3).
@@ -27,144 +53,78 @@
 //! assert_eq!(moved.dim(), 2);
 //! ```
 //!
-//! Conventions and sources are stated in each module; the claims of the
-//! sources are checked in `proofs/` (`exact-bezier prove`).
+//! ## Features
+//!
+//! | feature | default | what it adds |
+//! | --- | --- | --- |
+//! | `cli` | yes | the `exact-bezier` binary (turns on `render`) |
+//! | `serde` | yes | `serde` for curves, patches and results, in the JSON format of [`io`] |
+//! | `render` | with `cli` | `render`: SVG/PNG plots and OBJ/STL/PLY meshes |
+//! | `proptest` | no | `strategy`: proptest strategies for curves and patches |
+//! | `mint` | no | [`coords`]: control points from `mint` points |
+//!
+//! With `default-features = false` the crate is the mathematics and the
+//! JSON format ([`io`]) alone: it depends on the `num-*` crates and
+//! `serde_json`, and not on `clap` or `resvg`.
+//!
+//! ## Sources
+//!
+//! The algorithms come from five documents, which the docs cite as
+//! "source 000" to "source 004". The README's bibliography lists them in
+//! full. Every claim the sources make is checked in `proofs/`
+//! (`exact-bezier prove`).
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-mod algebra;
-mod arc;
-mod audit;
-mod bernstein;
-mod blossom;
-mod canonical;
-mod circle;
+pub mod algebra;
+pub mod arc;
+pub mod audit;
+pub mod bernstein;
+pub mod blossom;
 #[cfg(feature = "cli")]
 #[doc(hidden)]
 pub mod cli;
-mod coincide;
-mod continuity;
-mod convert;
+pub mod coincide;
+pub mod convert;
 pub mod coords;
-mod curve;
-mod curve_deriv;
-mod curve_geometry;
-mod degree_reduction;
+pub mod curve;
 mod display;
 mod error;
-mod fast_eval;
-mod hpoint;
-mod int;
-mod interval;
-mod io;
+pub mod fast_eval;
+pub mod hpoint;
+pub mod io;
 pub mod limits;
-#[cfg(feature = "render")]
-mod mesh;
-mod minimal_degree;
-mod modp;
-mod nurbs;
-#[cfg(feature = "render")]
-pub mod plot;
-mod poly;
-mod rect;
-mod rect_join;
-mod rect_ops;
-mod reparam;
-#[cfg(any(test, feature = "cli"))]
-mod samples;
-mod scalar;
-#[cfg(feature = "serde")]
-mod serde_support;
-mod standard;
-mod step;
-#[cfg(feature = "proptest")]
-pub mod strategy;
-mod tri;
-mod trig;
-mod trig_io;
-mod upoly;
-
+pub mod nurbs;
+pub mod prelude;
 /// The claims of the sources and their proofs, run by `exact-bezier prove`.
 /// Not part of the public API.
 #[cfg(feature = "cli")]
 #[doc(hidden)]
 #[path = "../proofs/mod.rs"]
 pub mod proofs;
+pub mod rect;
+#[cfg(feature = "render")]
+pub mod render;
+pub mod reparam;
+#[cfg(any(test, feature = "cli"))]
+mod samples;
+#[cfg(feature = "serde")]
+mod serde_support;
+pub mod step;
+#[cfg(feature = "proptest")]
+pub mod strategy;
+pub mod tri;
+pub mod trig;
+
+pub use algebra::{ratio, Field, Ordered, Poly, Ring, Roots, Scalar, Tolerance};
+pub use curve::RationalCurve;
+pub use error::{Error, MAX_DEGREE};
+pub use io::Patch;
+pub use rect::RectPatch;
+pub use tri::TriPatch;
 
 /// The README's Rust examples, run as doctests.
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
-
-pub use algebra::real_algebraic::{text::parse_algebraic, RealAlgebraic};
-pub use arc::{
-    check_lambda, lambda_change_delta, lambda_change_param, lambda_interval, lambda_of_sigma_cubed,
-    sigma_of_lambda, ArcCubic, Computed, LambdaFactors, QuadArc,
-};
-pub use audit::{
-    audit, piece_to_json, read_model, seam_continuity, Audit, Continuity, Model, Origin, PatchEdge,
-    Piece, Seam, SeamVerdict,
-};
-pub use bernstein::{bernstein, bernstein_all};
-pub use blossom::{polar_bivariate, polar_tensor, polar_univariate, rect_blossom, ShiftOp};
-pub use canonical::{canonical_key, dedup, CanonicalKey, Deduper};
-pub use canonical::{canonical_text, key_digest, Classes, KeyDigest, KEY_VERSION};
-pub use circle::{circle_of, integer_coords, Circle, NotCircle};
-pub use coincide::{
-    boundary_curve, coincide, coincide_curves, coincide_f64, coincide_rects, shared_boundaries,
-    Coincidence, Edge, MobiusParam, ReductionInfo, Symmetry, Witness,
-};
-pub use continuity::{g2_leading_points, join, Join};
-pub use convert::{
-    bilinear, degree_raising_matrix, rect_to_tri, rect_to_tris, square_corners,
-    tri_to_degenerate_rect, tri_to_rect_hu, tri_to_rect_on_quad, tri_to_rects,
-    tri_to_rects_operators, Half, Split,
-};
-pub use curve::{mobius_factors, RationalCurve};
-pub use curve_deriv::forward_differences;
-pub use curve_geometry::{cross_norm_sq, ConicType, CurveEnd};
-pub use degree_reduction::Reduction;
-pub use error::{Error, MAX_DEGREE};
-pub use fast_eval::{FastCurve, FastRect, FastTri};
-pub use hpoint::{de_casteljau, de_casteljau_hom, HPoint};
-pub use int::Int;
-pub use interval::{coincide_filtered, DecidedBy, Interval};
-pub use io::{for_each_chunk, patch_from_value_as, read_patches_as, ExactNumber, Record};
-pub use io::{
-    parse_json, parse_rational, patch_from_value, patch_to_json, point_to_json, read_patches,
-    JsonScalar, Patch,
-};
-#[cfg(feature = "render")]
-pub use mesh::{curve_jet, normal_direction, rect_jet, tri_jet, Jet, Mesh, MAX_DENSITY};
-pub use minimal_degree::{
-    bernstein_to_power, minimal_curve, minimal_rect, multiply_components, power_to_bernstein,
-    Minimal,
-};
-pub use modp::Fp;
-pub use nurbs::json::{is_nurbs, read_nurbs, Nurbs, SpannedPatch};
-pub use nurbs::{CurvePiece, Knots, NurbsCurve, NurbsSurface, SurfacePiece};
-pub use poly::Poly;
-pub use rect::{RectPatch, Side};
-pub use rect_join::{g0_join, g1_join};
-pub use rect_ops::Corner;
-pub use reparam::{bernstein_product, quadratic_coefficients, Quadratic};
-pub use scalar::{
-    binomial, binomial_scalar, ratio, rational_root, rational_to_f64, Field, Ordered, Ring, Roots,
-    Scalar, Tolerance,
-};
-pub use standard::{
-    corner_weights, standardize_curve, standardize_curve_algebraic, standardize_curve_exact_or_f64,
-    standardize_mobius, standardize_quadratic, standardize_quadratic_compact, standardize_rect,
-    standardize_rect_algebraic, standardize_rect_exact_or_f64, theorem1_holds, Exactness, Standard,
-    StandardMap,
-};
-pub use step::{read_step, StepEntity, StepModel};
-pub use tri::{affine_combination, tri_bernstein, Bary, TriPatch, SYMMETRIES};
-pub use trig::basis::{circle_normal_form, trig_basis_values, TrigFn, TrigParam};
-pub use trig::bowl::trig_bowl;
-pub use trig::curve::TrigCurve;
-pub use trig::stitch::{trig_g0, trig_g1_factor, trig_stitch, trig_tangent_continuous, TrigJoin};
-pub use trig::surface::TrigRect;
-pub use trig_io::{read_trig_patches, trig_patch_to_json, TrigPatch};
-pub use upoly::{BPoly, UPoly};

@@ -1,8 +1,8 @@
 //! Small exact curves and patches shared by unit tests and proof claims, so
 //! that one fixture is written in one place.
 
+use crate::algebra::scalar::ratio;
 use crate::rect::RectPatch;
-use crate::scalar::ratio;
 use num_rational::BigRational;
 
 type Q = BigRational;

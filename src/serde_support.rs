@@ -18,10 +18,10 @@
 //! assert_eq!(text.parse::<RationalCurve<BigRational>>().unwrap(), c);
 //! ```
 
+use crate::algebra::scalar::Field;
 use crate::coincide::Coincidence;
 use crate::error::Error;
 use crate::io::{patch_from_value, patch_to_json, read_patches, JsonScalar, Patch};
-use crate::scalar::Field;
 use crate::{RationalCurve, RectPatch, TriPatch};
 use num_rational::BigRational;
 use serde::de::Error as _;

@@ -1,7 +1,7 @@
 //! Exact standard forms over the real algebraic numbers (source 000,
 //! Examples 1 and 2), checked against values derived by hand.
 
-use exact_bezier::*;
+use exact_bezier::{algebra::*, io::*, prelude::*, reparam::*};
 use num_rational::BigRational;
 
 type A = RealAlgebraic;

@@ -8,8 +8,9 @@ mod common;
 use common::cli;
 use exact_bezier::strategy::point;
 use exact_bezier::{
-    check_lambda, circle_of, lambda_change_delta, lambda_change_param, lambda_of_sigma_cubed,
-    ratio, ArcCubic, QuadArc, RationalCurve, Scalar, Tolerance,
+    arc::check_lambda, arc::lambda_change_delta, arc::lambda_change_param,
+    arc::lambda_of_sigma_cubed, arc::ArcCubic, arc::QuadArc, curve::circle_of, ratio,
+    RationalCurve, Scalar, Tolerance,
 };
 use num_rational::BigRational;
 use proptest::prelude::*;

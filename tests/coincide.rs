@@ -7,9 +7,11 @@ mod common;
 use common::cli_json as cli;
 use exact_bezier::strategy::*;
 use exact_bezier::{
-    canonical_key, coincide, coincide_f64, coincide_filtered, dedup, minimal_curve, minimal_rect,
-    multiply_components, ratio, read_patches, shared_boundaries, Edge, MobiusParam, Patch,
-    RationalCurve, RectPatch, Symmetry, Tolerance,
+    coincide::canonical_key, coincide::coincide, coincide::coincide_f64,
+    coincide::coincide_filtered, coincide::dedup, coincide::minimal_curve, coincide::minimal_rect,
+    coincide::multiply_components, coincide::shared_boundaries, coincide::Edge,
+    coincide::MobiusParam, coincide::Symmetry, io::read_patches, ratio, Patch, RationalCurve,
+    RectPatch, Tolerance,
 };
 use num_rational::BigRational;
 use proptest::prelude::*;
@@ -172,7 +174,7 @@ proptest! {
         prop_assert_eq!(red.degree_after, (3, 0));
         // α = 1/2 is the identity map up to scaling: then there is no factor.
         prop_assert_eq!(red.common_factor == "1", alpha == ratio(1, 2));
-        let res = exact_bezier::coincide_curves(&c, &b).unwrap();
+        let res = exact_bezier::coincide::coincide_curves(&c, &b).unwrap();
         prop_assert!(res.coincident, "{}", res.reason);
         prop_assert_eq!(res.witness.unwrap().symmetry.reverse_u, rev);
     }
@@ -230,7 +232,7 @@ fn shared_boundary_between_two_patches() {
     )
     .unwrap();
     // b's v = 0 column is a's u = 1 row reversed, Möbius-moved and elevated.
-    let edge = exact_bezier::boundary_curve(&a, Edge::U1)
+    let edge = exact_bezier::coincide::boundary_curve(&a, Edge::U1)
         .reverse()
         .mobius(&ratio(1, 3))
         .elevate(1);
@@ -239,7 +241,7 @@ fn shared_boundary_between_two_patches() {
         .iter()
         .enumerate()
         .map(|(i, h)| {
-            let other = exact_bezier::HPoint::from_point(&p(5, i as i64, 7), &w(1));
+            let other = exact_bezier::hpoint::HPoint::from_point(&p(5, i as i64, 7), &w(1));
             vec![h.clone(), other]
         })
         .collect();
@@ -360,7 +362,7 @@ proptest! {
     fn key_digests_agree_with_pairwise_coincide(
         a in bidegree(), t in maps(), at in (0usize..4, 0usize..3), point in any::<bool>(), other in bidegree()
     ) {
-        use exact_bezier::key_digest;
+        use exact_bezier::coincide::key_digest;
         let t = Maps { factor: None, ..t };
         let (m, n) = a.degree();
         let (i, j) = (at.0.min(m), at.1.min(n));
@@ -383,7 +385,7 @@ proptest! {
     fn curve_key_digests_agree_with_pairwise_coincide(
         c in curve(3, 2), alpha in open_unit_parameter(), k in positive_weight(), at in 0usize..4, rev in any::<bool>()
     ) {
-        use exact_bezier::key_digest;
+        use exact_bezier::coincide::key_digest;
         let moved = |c: &RationalCurve<Q>| {
             let b = c.elevate(1).mobius(&alpha).scale_weights(&k);
             if rev { b.reverse() } else { b }
@@ -410,7 +412,7 @@ proptest! {
     fn fast_key_text_is_the_general_one(
         a in bidegree(), t in maps(), mirror in any::<bool>(), big in 0u32..3, c in curve(3, 2)
     ) {
-        use exact_bezier::canonical_text;
+        use exact_bezier::coincide::canonical_text;
         let (m, _) = a.degree();
         let (mut pts, mut ws) = (a.points().unwrap(), a.weights());
         if mirror {

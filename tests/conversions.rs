@@ -6,9 +6,10 @@ mod common;
 use common::cli;
 use exact_bezier::strategy::{rect, tri, unit_parameter};
 use exact_bezier::{
-    bilinear, read_patches, rect_to_tri, rect_to_tris, square_corners, tri_to_degenerate_rect,
-    tri_to_rect_hu, tri_to_rect_on_quad, tri_to_rects, tri_to_rects_operators, Error, Half, Patch,
-    RectPatch, Split, TriPatch,
+    convert::bilinear, convert::rect_to_tri, convert::rect_to_tris, convert::square_corners,
+    convert::tri_to_degenerate_rect, convert::tri_to_rect_hu, convert::tri_to_rect_on_quad,
+    convert::tri_to_rects, convert::tri_to_rects_operators, convert::Half, convert::Split,
+    io::read_patches, Error, Patch, RectPatch, TriPatch,
 };
 use num_rational::BigRational;
 use num_traits::One;

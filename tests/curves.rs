@@ -5,7 +5,8 @@ use exact_bezier::strategy::{
     curve, open_unit_parameter, positive_weight, small_rational, unit_parameter,
 };
 use exact_bezier::{
-    g2_leading_points, join, ConicType, CurveEnd, RationalCurve, Reduction, Tolerance,
+    curve::g2_leading_points, curve::join, curve::ConicType, curve::CurveEnd, curve::Reduction,
+    RationalCurve, Tolerance,
 };
 use num_rational::BigRational;
 use num_traits::{One, Zero};
@@ -20,7 +21,7 @@ fn any_curve() -> impl Strategy<Value = RationalCurve<Q>> {
 
 fn close(a: &[f64], b: &[Q], tol: f64) -> bool {
     a.iter().zip(b).all(|(x, y)| {
-        let y = exact_bezier::rational_to_f64(y);
+        let y = exact_bezier::algebra::rational_to_f64(y);
         (x - y).abs() <= tol * (1.0 + y.abs())
     })
 }
@@ -86,8 +87,8 @@ proptest! {
 
     #[test]
     fn f64_agrees_with_exact(c in any_curve(), t in unit_parameter()) {
-        let f = c.map(exact_bezier::rational_to_f64);
-        let tf = exact_bezier::rational_to_f64(&t);
+        let f = c.map(exact_bezier::algebra::rational_to_f64);
+        let tf = exact_bezier::algebra::rational_to_f64(&t);
         let (de, df) = (c.derivs(&t, 2).unwrap(), f.derivs(&tf, 2).unwrap());
         for (a, b) in df.iter().zip(&de) {
             prop_assert!(close(a, b, 1e-6), "{:?} vs {:?}", a, b);
@@ -118,15 +119,15 @@ proptest! {
         let eps = c.lsq_perturbation().unwrap();
         let d = c.degeneracy();
         let a = |i: usize| {
-            let b = Q::from_integer(exact_bezier::binomial(n, i));
+            let b = Q::from_integer(exact_bezier::algebra::binomial(n, i));
             if i % 2 == 1 { -b } else { b }
         };
-        let mut other: Vec<_> = (0..=n).map(|_| exact_bezier::HPoint::<Q>::zero(2)).collect();
+        let mut other: Vec<_> = (0..=n).map(|_| exact_bezier::hpoint::HPoint::<Q>::zero(2)).collect();
         other[j] = d.scale(&(-a(j).recip()));
-        let tweak = exact_bezier::HPoint { coords: vec![k.clone(), Q::zero(), Q::zero()] };
+        let tweak = exact_bezier::hpoint::HPoint { coords: vec![k.clone(), Q::zero(), Q::zero()] };
         other[0] = other[0].add(&tweak.scale(&a(1)));
         other[1] = other[1].sub(&tweak.scale(&a(0)));
-        let cost = |e: &[exact_bezier::HPoint<Q>]| e.iter().flat_map(|h| h.coords.iter().map(|x| x.clone() * x)).fold(Q::zero(), |s, x| s + x);
+        let cost = |e: &[exact_bezier::hpoint::HPoint<Q>]| e.iter().flat_map(|h| h.coords.iter().map(|x| x.clone() * x)).fold(Q::zero(), |s, x| s + x);
         let moved: Vec<_> = c.ctrl().iter().zip(&other).map(|(p, e)| p.add(e)).collect();
         prop_assert!(RationalCurve::from_hom(moved).unwrap().degeneracy().is_zero_within(Tolerance::EXACT));
         prop_assert!(cost(&eps) <= cost(&other));

@@ -6,7 +6,7 @@ mod common;
 
 use common::{bin, cli};
 use exact_bezier::strategy::{curve, rect};
-use exact_bezier::{patch_to_json, ratio, Patch, Symmetry};
+use exact_bezier::{coincide::Symmetry, io::patch_to_json, ratio, Patch};
 use num_rational::BigRational;
 use proptest::strategy::{Strategy, ValueTree};
 
@@ -260,7 +260,7 @@ fn witnesses_of_moved_copies_are_those_of_coincide() {
         {
             let m = m.as_u64().unwrap() as usize;
             assert_eq!(class[m], class[rep]);
-            let c = exact_bezier::coincide(&patches[rep], &patches[m]).unwrap();
+            let c = exact_bezier::coincide::coincide(&patches[rep], &patches[m]).unwrap();
             assert_eq!(*w, c.to_json()["witness"]);
         }
     }

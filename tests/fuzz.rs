@@ -21,7 +21,7 @@
 //! (see `docs/limits.md`).
 
 use exact_bezier::cli::{one_line, run_with, Outcome, Stdin, MAX_ERROR_CHARS};
-use exact_bezier::{read_patches, read_patches_as, RealAlgebraic};
+use exact_bezier::{algebra::RealAlgebraic, io::read_patches, io::read_patches_as};
 use proptest::prelude::*;
 use serde_json::Value;
 use std::alloc::{GlobalAlloc, Layout, System};
@@ -707,7 +707,7 @@ proptest! {
 /// A valid curve, rect or tri patch of low degree, as JSON text.
 fn valid_patch() -> impl Strategy<Value = String> {
     use exact_bezier::strategy::{curve, rect, tri};
-    use exact_bezier::{patch_to_json, Patch};
+    use exact_bezier::{io::patch_to_json, Patch};
     let p = prop_oneof![
         (1usize..=4, 1usize..=3)
             .prop_flat_map(|(n, d)| curve(n, d))

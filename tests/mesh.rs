@@ -9,7 +9,8 @@ mod common;
 use common::bin;
 use exact_bezier::strategy::{rect, tri};
 use exact_bezier::{
-    ratio, read_patches, rect_jet, tri_jet, Mesh, Patch, Poly, RectPatch, TriPatch,
+    io::read_patches, ratio, render::rect_jet, render::tri_jet, render::Mesh, Patch, Poly,
+    RectPatch, TriPatch,
 };
 use num_rational::BigRational;
 use proptest::prelude::*;
@@ -39,7 +40,10 @@ fn point(p: &Patch<BigRational>, u: &BigRational, v: &BigRational) -> [f64; 3] {
         Patch::Tri(t) => t.eval(u, v).unwrap(),
         Patch::Curve(_) => unreachable!(),
     };
-    let f: Vec<f64> = x.iter().map(exact_bezier::rational_to_f64).collect();
+    let f: Vec<f64> = x
+        .iter()
+        .map(exact_bezier::algebra::rational_to_f64)
+        .collect();
     [f[0], f[1], *f.get(2).unwrap_or(&0.0)]
 }
 
@@ -265,8 +269,8 @@ fn obj_file_reads_back_onto_the_surface() {
 /// `H(u + h, v)` and `H(u, v + h)` as polynomials in h: the h¹ coefficients
 /// are `H_u` and `H_v` (Taylor), checked for all (u, v) with symbols.
 fn linear_in_h(
-    shifted: &exact_bezier::HPoint<Poly>,
-    expected: &exact_bezier::HPoint<Poly>,
+    shifted: &exact_bezier::hpoint::HPoint<Poly>,
+    expected: &exact_bezier::hpoint::HPoint<Poly>,
 ) -> bool {
     shifted
         .coords

@@ -5,8 +5,8 @@
 mod common;
 
 use common::bin;
-use exact_bezier::plot::{plot_png, plot_svg, Plane, PlotOptions, Projection, Split};
-use exact_bezier::{read_patches, Patch};
+use exact_bezier::render::plot::{plot_png, plot_svg, Plane, PlotOptions, Projection, Split};
+use exact_bezier::{io::read_patches, Patch};
 use num_rational::BigRational;
 use resvg::tiny_skia::Pixmap;
 use std::path::PathBuf;

@@ -82,7 +82,7 @@ fn the_schema_rejects_what_the_reader_rejects() {
         let v: Value = serde_json::from_str(text).expect("JSON");
         assert_invalid("input", text, &v);
         assert!(
-            exact_bezier::read_patches(text).is_err(),
+            exact_bezier::io::read_patches(text).is_err(),
             "the reader accepts {text}"
         );
     }

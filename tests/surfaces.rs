@@ -6,7 +6,7 @@ mod common;
 
 use common::cli_json as cli;
 use exact_bezier::strategy::*;
-use exact_bezier::*;
+use exact_bezier::{algebra::*, curve::*, hpoint::*, prelude::*, rect::*, reparam::*};
 use num_rational::BigRational;
 use proptest::prelude::*;
 

@@ -1,7 +1,7 @@
 //! Triangular patch operations on random exact patches.
 
 use exact_bezier::strategy::{positive_weight, tri, unit_parameter};
-use exact_bezier::{affine_combination, Bary, TriPatch, SYMMETRIES};
+use exact_bezier::{tri::affine_combination, tri::Bary, tri::SYMMETRIES, TriPatch};
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use proptest::prelude::*;

@@ -7,9 +7,10 @@ mod common;
 use common::cli;
 use exact_bezier::strategy::{point, positive_weight, rational_in, small_rational, unit_parameter};
 use exact_bezier::{
-    ratio, read_trig_patches, trig_basis_values, trig_bowl, trig_g0, trig_g1_factor,
-    trig_patch_to_json, trig_stitch, trig_tangent_continuous, Error, Ordered, Tolerance, TrigCurve,
-    TrigJoin, TrigParam, TrigPatch, TrigRect,
+    io::read_trig_patches, io::trig_patch_to_json, io::TrigPatch, ratio, trig::trig_basis_values,
+    trig::trig_bowl, trig::trig_g0, trig::trig_g1_factor, trig::trig_stitch,
+    trig::trig_tangent_continuous, trig::TrigCurve, trig::TrigJoin, trig::TrigParam,
+    trig::TrigRect, Error, Ordered, Tolerance,
 };
 use num_rational::BigRational;
 use num_traits::{One, Zero};
@@ -334,7 +335,7 @@ proptest! {
 fn cli_converts_the_bowl_to_rational_patches() {
     let (code, out, _) = cli(&["convert", &fixture("bowl.json"), "--to", "rational"]);
     assert_eq!(code, 0);
-    let rational = exact_bezier::read_patches(&out).unwrap();
+    let rational = exact_bezier::io::read_patches(&out).unwrap();
     let trig = read_trig_patches(&std::fs::read_to_string(fixture("bowl.json")).unwrap())
         .unwrap()
         .unwrap();

@@ -1,3 +1,26 @@
-//! Number types beyond the rationals: exact real algebraic numbers.
+//! The scalar tower and the number types the algorithms run on: the
+//! [`Ring`] / [`Scalar`] / [`Field`] / [`Ordered`] traits, exact integers
+//! with a machine-word fast path ([`Int`]), multivariate polynomials over Q
+//! ([`Poly`], the symbolic scalar of the proofs), univariate and bivariate
+//! polynomials ([`UPoly`], [`BPoly`]), the prime field [`Fp`], `f64`
+//! intervals with outward rounding ([`Interval`]) and exact real algebraic
+//! numbers ([`RealAlgebraic`]).
 
+pub(crate) mod int;
+pub(crate) mod interval;
+pub(crate) mod modp;
+pub(crate) mod poly;
 pub mod real_algebraic;
+pub(crate) mod scalar;
+pub(crate) mod upoly;
+
+pub use int::Int;
+pub use interval::Interval;
+pub use modp::Fp;
+pub use poly::Poly;
+pub use real_algebraic::{text::parse_algebraic, RealAlgebraic};
+pub use scalar::{
+    binomial, binomial_scalar, ratio, rational_root, rational_to_f64, Field, Ordered, Ring, Roots,
+    Scalar, Tolerance,
+};
+pub use upoly::{BPoly, UPoly};

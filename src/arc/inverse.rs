@@ -7,9 +7,9 @@
 //! `σ·ū/(1 − ū) = √μ`. Everything below follows from that.
 
 use super::{lambda_of_sigma_cubed, LambdaFactors, QuadArc};
+use crate::algebra::scalar::Roots;
+use crate::algebra::scalar::{Field, Ordered};
 use crate::error::Error;
-use crate::scalar::Roots;
-use crate::scalar::{Field, Ordered};
 
 /// # Inverse problems (source 004 §3)
 impl<T: Roots> QuadArc<T> {
@@ -25,7 +25,7 @@ impl<T: Roots> QuadArc<T> {
     /// `b̄₀` and `b̄₂` (then `p` is not an inner point of the arc).
     ///
     /// ```
-    /// use exact_bezier::{QuadArc, ratio, Tolerance};
+    /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
     /// use num_rational::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// // Source 004 §4: the semicircle on (0,0), (2,0) and its top point (1, 1).
@@ -97,7 +97,7 @@ impl<T: Roots> QuadArc<T> {
     /// As [`QuadArc::sigma_for_point`]; [`Error::Domain`] if λ* is infinite.
     ///
     /// ```
-    /// use exact_bezier::{QuadArc, ratio, Tolerance};
+    /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
     /// use num_rational::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
@@ -124,7 +124,7 @@ impl<T: Roots> QuadArc<T> {
     /// [`Error::NotRational`] if `ρ` is irrational (exact scalars).
     ///
     /// ```
-    /// use exact_bezier::{QuadArc, ratio, Tolerance};
+    /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
     /// use num_rational::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
@@ -163,7 +163,7 @@ fn check_open_unit<T: Ordered>(u: &T) -> Result<(), Error> {
 /// irrational (exact scalars; decided from `Δ³`).
 ///
 /// ```
-/// use exact_bezier::{lambda_change_delta, ratio};
+/// use exact_bezier::{arc::lambda_change_delta, ratio};
 /// use num_rational::BigRational;
 /// let c = ratio::<BigRational>(0, 1);
 /// assert_eq!(lambda_change_delta(&c, &ratio(-7, 1), &ratio(0, 1)).unwrap(), ratio(2, 1));
@@ -193,7 +193,7 @@ pub fn lambda_change_delta<T: Roots>(c: &T, lambda1: &T, lambda2: &T) -> Result<
 /// `0 ≤ ū ≤ 1`).
 ///
 /// ```
-/// use exact_bezier::{lambda_change_param, ratio};
+/// use exact_bezier::{arc::lambda_change_param, ratio};
 /// use num_rational::BigRational;
 /// assert_eq!(lambda_change_param(&ratio::<BigRational>(2, 1), &ratio(1, 3)).unwrap(), ratio(1, 5));
 /// ```

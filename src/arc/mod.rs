@@ -39,10 +39,10 @@ mod inverse;
 
 pub use inverse::{lambda_change_delta, lambda_change_param};
 
+use crate::algebra::scalar::{ratio, Field, Ordered, Roots, Scalar, Tolerance};
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::scalar::{ratio, Field, Ordered, Roots, Scalar, Tolerance};
 use num_rational::BigRational;
 
 /// A circular arc as a rational quadratic Bézier curve with weights
@@ -55,7 +55,7 @@ use num_rational::BigRational;
 /// `cos = 4/5`, `sin = 3/5`.
 ///
 /// ```
-/// use exact_bezier::{QuadArc, ratio, Tolerance};
+/// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
 /// use num_rational::BigRational;
 /// let b0 = vec![ratio::<BigRational>(1, 1), ratio(0, 1)];
 /// let b2 = vec![ratio(7, 25), ratio(24, 25)];
@@ -275,7 +275,7 @@ impl<T: Scalar> QuadArc<T> {
     /// parameterization as [`QuadArc::cubic_hom`]`(p, q)`.
     ///
     /// ```
-    /// use exact_bezier::{QuadArc, ratio, Tolerance};
+    /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
     /// use num_rational::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let arc = QuadArc::from_ends(&p(0, 0), &p(2, 0), &ratio(3, 5), &ratio(4, 5), Tolerance::EXACT).unwrap();
@@ -298,7 +298,7 @@ impl<T: Scalar> QuadArc<T> {
     /// `L(u) = p²(1 − u) + q²u`. Ring operations only, so it runs on symbols.
     ///
     /// ```
-    /// use exact_bezier::{QuadArc, ratio, Tolerance};
+    /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
     /// use num_rational::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
@@ -350,7 +350,7 @@ impl<T: Field> QuadArc<T> {
     /// (λ = 1 − σ³ = −7): `ω₁ = σ⁻²/3 = 1/12`, `ω₂ = σ²/3 = 4/3`.
     ///
     /// ```
-    /// use exact_bezier::{QuadArc, ratio, Tolerance};
+    /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
     /// use num_rational::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
@@ -382,7 +382,7 @@ impl<T: Scalar> LambdaFactors<T> {
     /// The factors for `c = cos(θ/2)` and `λ`.
     ///
     /// ```
-    /// use exact_bezier::{LambdaFactors, ratio};
+    /// use exact_bezier::{arc::LambdaFactors, ratio};
     /// use num_rational::BigRational;
     /// let f = LambdaFactors::new(&ratio::<BigRational>(1, 2), &ratio(1, 5));
     /// assert_eq!((f.n, f.d, f.e), (ratio(3, 5), ratio(7, 5), ratio(1, 1)));
@@ -409,7 +409,7 @@ impl<T: Scalar> LambdaFactors<T> {
 /// [`Error::Domain`] if `c ∉ (−1/2, 1)`, i.e. `θ ∉ (0, 4π/3)`.
 ///
 /// ```
-/// use exact_bezier::{lambda_interval, ratio};
+/// use exact_bezier::{arc::lambda_interval, ratio};
 /// use num_rational::BigRational;
 /// assert_eq!(lambda_interval(&ratio::<BigRational>(1, 2)).unwrap(), (Some(ratio(-1, 2)), ratio(1, 2)));
 /// assert_eq!(lambda_interval(&ratio::<BigRational>(0, 1)).unwrap(), (None, ratio(1, 1)));
@@ -437,7 +437,7 @@ pub fn lambda_interval<T: Ordered>(c: &T) -> Result<(Option<T>, T), Error> {
 /// [`Error::Domain`] naming the interval of [`lambda_interval`].
 ///
 /// ```
-/// use exact_bezier::{check_lambda, ratio};
+/// use exact_bezier::{arc::check_lambda, ratio};
 /// use num_rational::BigRational;
 /// let c = ratio::<BigRational>(1, 2); // θ = 2π/3: λ ∈ (−1/2, 1/2)
 /// assert!(check_lambda(&c, &ratio(2, 5)).is_ok());
@@ -467,7 +467,7 @@ pub fn check_lambda<T: Ordered>(c: &T, lambda: &T) -> Result<(), Error> {
 /// root in `T` (exact scalars).
 ///
 /// ```
-/// use exact_bezier::{sigma_of_lambda, ratio};
+/// use exact_bezier::{arc::sigma_of_lambda, ratio};
 /// use num_rational::BigRational;
 /// // θ = π: σ³ = 1 − λ.
 /// assert_eq!(sigma_of_lambda(&ratio::<BigRational>(0, 1), &ratio(-7, 1)).unwrap(), ratio(2, 1));
@@ -490,7 +490,7 @@ pub fn sigma_of_lambda<T: Roots>(c: &T, lambda: &T) -> Result<T, Error> {
 /// [`Error::Domain`] when `k(1 + 2cm) = 0`.
 ///
 /// ```
-/// use exact_bezier::{lambda_of_sigma_cubed, ratio};
+/// use exact_bezier::{arc::lambda_of_sigma_cubed, ratio};
 /// use num_rational::BigRational;
 /// assert_eq!(lambda_of_sigma_cubed(&ratio::<BigRational>(1, 2), &ratio(3, 7)).unwrap(), ratio(1, 5));
 /// ```
@@ -572,7 +572,7 @@ impl QuadArc<BigRational> {
     /// [`Error::Domain`] if θ ∉ (0, 4π/3) or λ is not admissible.
     ///
     /// ```
-    /// use exact_bezier::{ArcCubic, QuadArc, ratio, Tolerance};
+    /// use exact_bezier::{arc::ArcCubic, arc::QuadArc, ratio, Tolerance};
     /// use num_rational::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
@@ -597,7 +597,7 @@ impl QuadArc<BigRational> {
     /// As [`QuadArc::lambda_for_point`], except [`Error::NotRational`].
     ///
     /// ```
-    /// use exact_bezier::{QuadArc, ratio, Tolerance};
+    /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
     /// use num_rational::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
@@ -626,7 +626,7 @@ impl QuadArc<BigRational> {
     /// As [`QuadArc::param_of_point`], except [`Error::NotRational`].
     ///
     /// ```
-    /// use exact_bezier::{QuadArc, ratio, Tolerance};
+    /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
     /// use num_rational::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();

@@ -12,7 +12,7 @@
 //!
 //! **Continuity** of each shared edge: [`seam_continuity`].
 
-use crate::canonical::{canonical_key, CanonicalKey};
+use crate::coincide::canonical::{canonical_key, CanonicalKey};
 use crate::coincide::{boundary_curve, Edge};
 use crate::error::Error;
 use crate::io::{point_to_json, Patch};

@@ -165,7 +165,7 @@ pub fn read_model(mut input: impl BufRead) -> Result<Model, Error> {
 /// # Errors
 ///
 /// [`Error::PointAtInfinity`] never for positive weights (as
-/// [`patch_to_json`](crate::patch_to_json)).
+/// [`patch_to_json`](crate::io::patch_to_json)).
 pub fn piece_to_json<T: JsonScalar + crate::Field>(
     p: &Patch<T>,
     origin: &Origin,

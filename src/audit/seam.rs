@@ -34,10 +34,10 @@
 //! `P ≡ 0` iff it vanishes at that many plus one distinct rational `t`:
 //! the test is exact, and a failing sample is an exact witness.
 
+use crate::algebra::int::{common_denominator, Int};
 use crate::coincide::{boundary_curve, coincide_curves, Edge, MobiusParam};
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::int::{common_denominator, Int};
 use crate::{RationalCurve, RectPatch};
 use num_rational::BigRational;
 use num_traits::{One, Zero};

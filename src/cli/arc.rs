@@ -2,10 +2,10 @@
 //! standard-form rational cubic of source 004 eq. (1) (eq. (2) for θ = π).
 
 use super::parse_list;
+use crate::algebra::scalar::{Field, Tolerance};
 use crate::arc::{ArcCubic, QuadArc};
 use crate::error::Error;
 use crate::io::{parse_rational, patch_to_json, JsonScalar, Patch};
-use crate::scalar::{Field, Tolerance};
 use num_rational::BigRational;
 use serde_json::Value;
 

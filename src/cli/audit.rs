@@ -8,7 +8,7 @@ use crate::audit::{audit, read_model, Audit, Continuity, Model, PatchEdge};
 use crate::coincide::boundary_curve;
 use crate::error::Error;
 use crate::io::Patch;
-use crate::plot::{plot_colored_png, PlotOptions};
+use crate::render::plot::{plot_colored_png, PlotOptions};
 use num_rational::BigRational;
 use serde_json::{json, Value};
 

@@ -3,11 +3,11 @@
 //! common factors and weight scaling? Exit 0 either way.
 
 use super::{charge_each, load_one, patch_f64, ScalarKind};
+use crate::algebra::scalar::Tolerance;
+use crate::coincide::filter::coincide_filtered;
 use crate::error::Error;
-use crate::interval::coincide_filtered;
 use crate::io::Patch;
 use crate::limits::Size;
-use crate::scalar::Tolerance;
 use num_rational::BigRational;
 use serde_json::Value;
 

@@ -5,13 +5,13 @@
 //! pieces with origins (`docs/nurbs_step.md`). Output: a JSON array of patches.
 
 use super::{charge_each, load, open_input, parse_list, patch_f64, read_input, ScalarKind};
+use crate::algebra::scalar::{Field, Ordered};
 use crate::audit::{piece_to_json, read_model};
 use crate::convert::{rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Split};
 use crate::error::Error;
+use crate::io::trig::{read_trig_patches, TrigPatch};
 use crate::io::{patch_to_json, JsonScalar, Patch};
 use crate::limits::{self, check_result_degree, Size};
-use crate::scalar::{Field, Ordered};
-use crate::trig_io::{read_trig_patches, TrigPatch};
 use num_rational::BigRational;
 use serde_json::Value;
 

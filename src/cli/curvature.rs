@@ -4,10 +4,10 @@
 
 use super::deriv::{curve_of, single_parameter};
 use super::{load, run_each, PatchOp, ScalarKind};
+use crate::algebra::scalar::Ordered;
 use crate::error::Error;
 use crate::io::{JsonScalar, Patch};
 use crate::limits::Size;
-use crate::scalar::Ordered;
 use serde_json::{json, Value};
 
 /// Arguments of `curvature`.

@@ -13,7 +13,7 @@
 //! text and each witness until the end.
 
 use super::bulk::{map_chunk, BulkArgs, Out, Progress, CHUNK};
-use crate::canonical::{key_digest, Deduper};
+use crate::coincide::canonical::{key_digest, Deduper};
 use crate::coincide::coincide;
 use crate::error::Error;
 use crate::io::{for_each_chunk, parse_json, patch_from_value, Patch, Record};

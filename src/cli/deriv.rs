@@ -2,11 +2,11 @@
 //! curve at T, `{"order": K, "derivative": [...]}` (exact by default).
 
 use super::{load, parse_list, run_each, PatchOp, ScalarKind};
+use crate::algebra::scalar::Ordered;
 use crate::curve::RationalCurve;
 use crate::error::{Error, MAX_DEGREE};
 use crate::io::{point_to_json, JsonScalar, Patch};
 use crate::limits::Size;
-use crate::scalar::Ordered;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use serde_json::{json, Value};
@@ -31,7 +31,7 @@ pub struct Args {
 }
 
 /// The curve inside `p`, or a typed error naming the command.
-pub(super) fn curve_of<'a, T: crate::scalar::Scalar>(
+pub(super) fn curve_of<'a, T: crate::algebra::scalar::Scalar>(
     p: &'a Patch<T>,
     command: &str,
 ) -> Result<&'a RationalCurve<T>, Error> {

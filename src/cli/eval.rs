@@ -1,9 +1,9 @@
 //! `eval FILE --at U[,V] [--scalar f64]`.
 
 use super::{check_domain, parse_list, read_input, run_each, PatchOp, ScalarKind};
+use crate::algebra::scalar::Ordered;
 use crate::error::Error;
 use crate::io::{point_to_json, read_patches, JsonScalar, Patch};
-use crate::scalar::Ordered;
 use serde_json::{json, Value};
 
 /// Arguments of `eval`.
@@ -26,7 +26,7 @@ pub struct Args {
 
 pub fn run(a: &Args) -> Result<Value, Error> {
     let text = read_input(&a.file)?;
-    if let Some(trig) = crate::trig_io::read_trig_patches(&text)? {
+    if let Some(trig) = crate::io::trig::read_trig_patches(&text)? {
         return super::eval_trig::run(&trig, &a.at, a.scalar);
     }
     let params = parse_list(&a.at)?;

@@ -3,11 +3,11 @@
 //! radians and evaluates in `f64`.
 
 use super::{one_or_many, ScalarKind};
+use crate::algebra::scalar::{Ordered, Scalar};
 use crate::error::Error;
+use crate::io::trig::TrigPatch;
 use crate::io::{parse_rational, point_to_json, JsonScalar};
-use crate::scalar::{Ordered, Scalar};
 use crate::trig::basis::TrigParam;
-use crate::trig_io::TrigPatch;
 use num_rational::BigRational;
 use serde_json::{json, Value};
 

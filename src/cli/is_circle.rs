@@ -1,10 +1,10 @@
 //! `is-circle FILE`: does a curve lie on a circle? Exact.
 
 use super::{charge_each, load, one_or_many, ScalarKind};
-use crate::circle::{circle_of, integer_coords};
+use crate::algebra::scalar::Tolerance;
+use crate::curve::circle::{circle_of, integer_coords};
 use crate::error::Error;
 use crate::io::{point_to_json, JsonScalar, Patch};
-use crate::scalar::Tolerance;
 use serde_json::{json, Value};
 
 /// Arguments of `is-circle`.

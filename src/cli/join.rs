@@ -5,10 +5,10 @@
 
 use super::deriv::curve_of;
 use super::{charge_each, check_tol, load_one, patch_f64, ScalarKind};
-use crate::continuity::join;
+use crate::algebra::scalar::{Ordered, Tolerance};
+use crate::curve::join::join;
 use crate::error::Error;
 use crate::io::{JsonScalar, Patch};
-use crate::scalar::{Ordered, Tolerance};
 use num_rational::BigRational;
 use serde_json::{json, Value};
 

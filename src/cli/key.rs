@@ -5,7 +5,7 @@
 //! `docs/bulk_dedup.md`.
 
 use super::bulk::{map_chunk, BulkArgs, Out, Progress, CHUNK};
-use crate::canonical::{canonical_text, KeyDigest};
+use crate::coincide::canonical::{canonical_text, KeyDigest};
 use crate::error::Error;
 use crate::io::for_each_chunk;
 use serde_json::json;

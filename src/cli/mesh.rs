@@ -3,7 +3,7 @@
 use super::{charge_each, load, patch_f64, ScalarKind};
 use crate::error::Error;
 use crate::limits::MAX_MESH_VERTICES;
-use crate::mesh::Mesh;
+use crate::render::mesh::Mesh;
 use serde_json::{json, Value};
 
 /// Arguments of `mesh`.

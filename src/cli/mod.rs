@@ -15,10 +15,10 @@
 //!
 //! Exact arithmetic is the default; `--scalar f64` selects floats.
 
+use crate::algebra::scalar::Ordered;
 use crate::error::Error;
 use crate::io::{read_patches, JsonScalar, Patch};
 use crate::limits::{self, Limits, Size};
-use crate::scalar::Ordered;
 use clap::{Parser, Subcommand, ValueEnum};
 use num_rational::BigRational;
 use num_traits::{One, Zero};

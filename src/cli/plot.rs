@@ -6,7 +6,7 @@ use super::{charge_each, load, ScalarKind};
 use crate::error::Error;
 use crate::io::Patch;
 use crate::limits::{MAX_PIXELS, MAX_PLOT_POINTS};
-use crate::plot::{plot_png, plot_svg, PlotOptions, Projection, Split};
+use crate::render::plot::{plot_png, plot_svg, PlotOptions, Projection, Split};
 use num_rational::BigRational;
 use serde_json::{json, Value};
 

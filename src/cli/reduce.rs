@@ -7,10 +7,10 @@
 
 use super::deriv::curve_of;
 use super::{charge_each, check_tol, load, one_or_many, patch_f64, ScalarKind};
-use crate::degree_reduction::Reduction;
+use crate::algebra::scalar::{Ordered, Tolerance};
+use crate::curve::reduction::Reduction;
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
-use crate::scalar::{Ordered, Tolerance};
 use clap::ValueEnum;
 use serde_json::{json, Value};
 

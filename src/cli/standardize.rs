@@ -4,11 +4,11 @@
 //! reparameterization with its parameters.
 
 use super::{load, one_or_many};
+use crate::algebra::scalar::Ordered;
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
 use crate::limits::{self, Size};
-use crate::scalar::Ordered;
-use crate::standard::{
+use crate::reparam::standard::{
     standardize_curve_algebraic, standardize_rect_algebraic, theorem1_holds, StandardMap,
 };
 use crate::Tolerance;

@@ -1,11 +1,11 @@
 //! `reparam` and `elevate`: transformations that return patches.
 
 use super::{charge_each, load, one_or_many, parse_list, run_each, PatchOp, ScalarKind};
+use crate::algebra::scalar::Ordered;
 use crate::error::Error;
 use crate::io::{patch_to_json, JsonScalar, Patch};
 use crate::limits::{check_result_degree, Size};
 use crate::reparam::Quadratic;
-use crate::scalar::Ordered;
 use num_rational::BigRational;
 use serde_json::Value;
 

@@ -4,10 +4,10 @@
 //! weight scaling?
 
 use super::{coincide_curves, Coincidence};
+use crate::algebra::scalar::Scalar;
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::rect::RectPatch;
-use crate::scalar::Scalar;
 use num_rational::BigRational;
 use std::fmt;
 
@@ -45,7 +45,7 @@ impl fmt::Display for Edge {
 /// column of the net, weights included).
 ///
 /// ```
-/// use exact_bezier::{boundary_curve, Edge, RectPatch, ratio};
+/// use exact_bezier::{coincide::boundary_curve, coincide::Edge, RectPatch, ratio};
 /// use num_rational::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let r = RectPatch::polynomial(vec![vec![p(0), p(1), p(2)], vec![p(3), p(4), p(5)]]).unwrap();
@@ -67,7 +67,7 @@ pub fn boundary_curve<T: Scalar>(r: &RectPatch<T>, edge: Edge) -> RationalCurve<
 /// share the same boundary curve exactly, with its coincidence witness.
 ///
 /// ```
-/// use exact_bezier::{shared_boundaries, Edge, RectPatch, ratio};
+/// use exact_bezier::{coincide::shared_boundaries, coincide::Edge, RectPatch, ratio};
 /// use num_rational::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let a = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 1)], vec![p(1, 0), p(1, 1)]]).unwrap();

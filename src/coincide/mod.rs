@@ -8,7 +8,7 @@
 //! 6. uniform scaling of the weights (source 000 eq. 5)?
 //!
 //! The decision: reduce both inputs to minimal bidegree
-//! ([`minimal_rect`](crate::minimal_rect)); then for each admissible symmetry
+//! ([`minimal_rect`](crate::coincide::minimal_rect)); then for each admissible symmetry
 //! compare the normalized control points exactly and the weight invariants
 //! `I_{i,j}` (module `view`). After reduction, Möbius maps and
 //! scaling act on the homogeneous control points by `H_{i,j} ↦ k ρ^i σ^j H_{i,j}`
@@ -27,6 +27,18 @@
 //! Module layout: `view` (normalized nets under symmetries), this file (the
 //! decision and its witness), `boundary` (shared boundary curves).
 
+pub(crate) mod canonical;
+pub(crate) mod filter;
+pub(crate) mod minimal;
+
+pub use canonical::{canonical_key, dedup, CanonicalKey, Deduper};
+pub use canonical::{canonical_text, key_digest, Classes, KeyDigest, KEY_VERSION};
+pub use filter::{coincide_filtered, DecidedBy};
+pub use minimal::{
+    bernstein_to_power, minimal_curve, minimal_rect, multiply_components, power_to_bernstein,
+    Minimal,
+};
+
 mod boundary;
 mod view;
 
@@ -35,12 +47,12 @@ pub use boundary::{boundary_curve, shared_boundaries, Edge};
 pub(crate) use view::invariant_parts;
 pub(crate) use view::{Prepared, View};
 
+use crate::algebra::scalar::{Ordered, Roots, Scalar, Tolerance};
+use crate::coincide::minimal::{curve_net, drop_elevation, minimal_net, Net};
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::io::{JsonScalar, Patch};
-use crate::minimal_degree::{curve_net, drop_elevation, minimal_net, Net};
 use crate::rect::RectPatch;
-use crate::scalar::{Ordered, Roots, Scalar, Tolerance};
 use num_rational::BigRational;
 use serde_json::{json, Value};
 use std::fmt;
@@ -95,7 +107,7 @@ impl Symmetry {
     /// Apply to a patch: swap, then reverse u, then reverse v.
     ///
     /// ```
-    /// use exact_bezier::{RectPatch, Symmetry, ratio};
+    /// use exact_bezier::{RectPatch, coincide::Symmetry, ratio};
     /// use num_rational::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// let r = RectPatch::polynomial(vec![vec![p(0), p(1)], vec![p(2), p(3)]]).unwrap();
@@ -421,7 +433,7 @@ fn decide<T: Roots + fmt::Display>(
     }
 }
 
-fn info<T>(red: &crate::minimal_degree::Minimal<Net<T>>) -> ReductionInfo {
+fn info<T>(red: &crate::coincide::minimal::Minimal<Net<T>>) -> ReductionInfo {
     ReductionInfo {
         from: red.degree_before,
         to: red.degree_after,
@@ -472,7 +484,7 @@ fn kinds_differ<T: Scalar>(a: &Patch<T>, b: &Patch<T>) -> Option<Coincidence<T>>
 /// elevated copy of itself:
 ///
 /// ```
-/// use exact_bezier::{coincide, read_patches, Patch, ratio};
+/// use exact_bezier::{coincide::coincide, io::read_patches, Patch, ratio};
 /// let text = std::fs::read_to_string("tests/fixtures/yang_yong_example1.json").unwrap();
 /// let a = read_patches(&text).unwrap().remove(0);
 /// let Patch::Rect(r) = &a else { unreachable!() };
@@ -517,10 +529,10 @@ pub(crate) fn coincide_nets(
 /// `tol` (absolute), invariants within `tol` (relative to their size). Degree elevation
 /// is undone with power coefficients within `tol` treated as zero; common
 /// factors of degree ≥ 1 are **not** removed (a floating-point gcd is not a
-/// decision: use [`coincide`] or [`coincide_filtered`](crate::coincide_filtered)).
+/// decision: use [`coincide`] or [`coincide_filtered`](crate::coincide::coincide_filtered)).
 ///
 /// ```
-/// use exact_bezier::{coincide_f64, read_patches, Tolerance};
+/// use exact_bezier::{coincide::coincide_f64, io::read_patches, Tolerance};
 /// let text = std::fs::read_to_string("tests/fixtures/yang_yong_example1.json").unwrap();
 /// let ex1 = read_patches(&text).unwrap().remove(0).to_f64();
 /// let text = std::fs::read_to_string("tests/fixtures/yang_yong_example3.json").unwrap();
@@ -578,8 +590,8 @@ pub fn coincide_curves(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::algebra::scalar::ratio;
     use crate::samples::cubic as curve;
-    use crate::scalar::ratio;
 
     #[test]
     fn curve_copies_coincide_with_exact_witness() {

@@ -21,9 +21,9 @@
 //! the signs `sgn(s_{i,j} s_{0,0})` they are complete: see `proofs/coincide.rs`.
 
 use super::Symmetry;
+use crate::algebra::scalar::{Field, Ordered, Scalar};
+use crate::coincide::minimal::Net;
 use crate::hpoint::HPoint;
-use crate::minimal_degree::Net;
-use crate::scalar::{Field, Ordered, Scalar};
 
 /// A net split into normalized points and scales, in its own orientation.
 #[derive(Clone, Debug)]

@@ -6,10 +6,10 @@
 //! (`T_{ij} = Q_{i,j,n−i−j}`) raised to degree n:
 //! `(P_{i0}, …, P_{in})ᵀ = A₁ A₂ ⋯ A_i (T_{i0}, …, T_{i,n−i})ᵀ`.
 
+use crate::algebra::scalar::{ratio, Scalar};
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::rect::RectPatch;
-use crate::scalar::{ratio, Scalar};
 use crate::tri::TriPatch;
 
 /// The degree-raising operator `A_k` (1 ≤ k ≤ n) of source 001 (Hu 2001),
@@ -36,7 +36,7 @@ use crate::tri::TriPatch;
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{degree_raising_matrix, ratio};
+/// use exact_bezier::{convert::degree_raising_matrix, ratio};
 /// use num_rational::BigRational;
 /// let a = degree_raising_matrix::<BigRational>(2, 1).unwrap();
 /// let z: BigRational = ratio(0, 1);
@@ -81,7 +81,7 @@ fn apply<T: Scalar>(a: &[Vec<T>], x: &[HPoint<T>]) -> Vec<HPoint<T>> {
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{tri_to_degenerate_rect, TriPatch, ratio};
+/// use exact_bezier::{convert::tri_to_degenerate_rect, TriPatch, ratio};
 /// use num_rational::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let t = TriPatch::polynomial(vec![vec![p(0, 0), p(1, 0)], vec![p(0, 1)]]).unwrap();

@@ -1,9 +1,9 @@
 //! Rectangle (m, n) → two triangles of degree m + n (source 003 §2).
 
 use super::{pascal, recip_binomial};
+use crate::algebra::scalar::Scalar;
 use crate::hpoint::HPoint;
 use crate::rect::RectPatch;
-use crate::scalar::Scalar;
 use crate::tri::{Bary, TriPatch};
 
 /// Which half of the unit square a triangle covers.
@@ -41,7 +41,7 @@ impl Half {
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{rect_to_tri, Half, RectPatch, ratio};
+/// use exact_bezier::{convert::rect_to_tri, convert::Half, RectPatch, ratio};
 /// use num_rational::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let r = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 1)], vec![p(1, 0), p(1, 1)]]).unwrap();
@@ -85,7 +85,7 @@ pub fn rect_to_tris<T: Scalar>(r: &RectPatch<T>) -> [TriPatch<T>; 2] {
 }
 
 /// The corners `[c₀₀, c₁₀, c₁₁, c₀₁]` of the unit square in the barycentric
-/// coordinates of the triangle on `half`, for [`tri_to_rect_on_quad`](crate::tri_to_rect_on_quad):
+/// coordinates of the triangle on `half`, for [`tri_to_rect_on_quad`](crate::convert::tri_to_rect_on_quad):
 /// converting that triangle back over the whole square gives the original
 /// rectangle degree-elevated to (m + n, m + n), exactly.
 pub fn square_corners<T: Scalar>(half: Half) -> [Bary<T>; 4] {

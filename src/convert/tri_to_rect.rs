@@ -15,11 +15,11 @@
 //! `a = c = 1/3`, `b = d = e = f = 1/2`.
 
 use super::{pascal, recip_binomial};
+use crate::algebra::scalar::{binomial, ratio, Ordered, Scalar};
 use crate::blossom::ShiftOp;
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::rect::RectPatch;
-use crate::scalar::{binomial, ratio, Ordered, Scalar};
 use crate::tri::{casteljau_level, Bary, TriPatch};
 use num_rational::BigRational;
 
@@ -102,7 +102,7 @@ impl<T: Ordered> Split<T> {
     /// # Examples
     ///
     /// ```
-    /// use exact_bezier::{Split, ratio};
+    /// use exact_bezier::{convert::Split, ratio};
     /// use num_rational::BigRational;
     /// let ok = Split::<BigRational>::new([ratio(3, 10), ratio(1, 2), ratio(3, 10), ratio(1, 2), ratio(1, 2), ratio(1, 2)]);
     /// assert!(ok.is_ok());
@@ -197,7 +197,7 @@ fn k_range(n: usize, i: usize, j: usize) -> std::ops::RangeInclusive<usize> {
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{bilinear, tri_to_rect_on_quad, Split, TriPatch, ratio};
+/// use exact_bezier::{convert::bilinear, convert::tri_to_rect_on_quad, convert::Split, TriPatch, ratio};
 /// use num_rational::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let t = TriPatch::polynomial(vec![vec![p(0, 0), p(1, 0)], vec![p(0, 1)]]).unwrap();
@@ -269,7 +269,7 @@ fn quad_blossoms<T: Scalar>(tri: &TriPatch<T>, corners: &[Bary<T>; 4]) -> Vec<Ve
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{tri_to_rects, Split, TriPatch, ratio};
+/// use exact_bezier::{convert::tri_to_rects, convert::Split, TriPatch, ratio};
 /// use num_rational::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let t = TriPatch::polynomial(vec![vec![p(0, 0), p(1, 0)], vec![p(0, 1)]]).unwrap();

@@ -7,7 +7,7 @@
 //! anything else is JSON Lines — unless the first record line is an
 //! incomplete JSON value, as in a pretty-printed object: then the input is
 //! read as a sequence of JSON values (parsed on one thread). Records are parsed to patches by the
-//! caller, in parallel, with [`patch_from_value`](crate::patch_from_value).
+//! caller, in parallel, with [`patch_from_value`](crate::io::patch_from_value).
 
 use crate::error::Error;
 use crate::io::{parse_json, patch_from_value, Patch};
@@ -67,7 +67,7 @@ impl Record {
 /// A read or JSON syntax error (with its line), or the first error of `f`.
 ///
 /// ```
-/// use exact_bezier::for_each_chunk;
+/// use exact_bezier::io::for_each_chunk;
 /// let text = "{\"kind\": \"curve\", \"points\": [[0], [1]]}\n\n{\"kind\": \"curve\", \"points\": [[2], [3]]}\n";
 /// let mut seen = Vec::new();
 /// let n = for_each_chunk(text.as_bytes(), 1, |first, recs| {

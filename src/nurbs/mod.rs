@@ -29,6 +29,8 @@
 //! [`Scalar::from_rational`], so no division in the scalar is needed; see
 //! `proofs/nurbs.rs`). Everything is homogeneous: `(w_i P_i, w_i)`.
 
+pub use json::{is_nurbs, read_nurbs, Nurbs, SpannedPatch};
+
 use crate::error::{Error, MAX_DEGREE};
 use crate::hpoint::HPoint;
 use crate::{RationalCurve, RectPatch, Scalar};
@@ -256,7 +258,7 @@ enum Step<T> {
 /// Bézier curve with the midpoints of the legs as its ends.
 ///
 /// ```
-/// use exact_bezier::{NurbsCurve, Knots, HPoint, ratio};
+/// use exact_bezier::{nurbs::NurbsCurve, nurbs::Knots, hpoint::HPoint, ratio};
 /// use num_rational::BigRational;
 /// let k = |x: i64| ratio::<BigRational>(x, 1);
 /// let pts: Vec<HPoint<BigRational>> = [0, 2, 4, 8, 16].iter().map(|&x| HPoint::from_cartesian(&[k(x)])).collect();

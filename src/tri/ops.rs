@@ -11,10 +11,10 @@
 //! Reference: source 001 (lecture), "三角域Bézier曲面"; source 003 §1 (eq. 2–4).
 
 use super::TriPatch;
+use crate::algebra::scalar::{binomial_scalar, ratio, Field, Scalar};
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::scalar::{binomial_scalar, ratio, Field, Scalar};
 
 /// A barycentric point `[u, v, w]` (a triangle point when `u + v + w = 1`).
 pub type Bary<T> = [T; 3];
@@ -46,7 +46,7 @@ pub const SYMMETRIES: [[usize; 3]; 6] = [
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{tri_bernstein, ratio};
+/// use exact_bezier::{tri::tri_bernstein, ratio};
 /// use num_rational::BigRational;
 /// let b = [ratio::<BigRational>(1, 2), ratio(1, 4), ratio(1, 4)];
 /// // 2!/(1! 1! 0!) · (1/2)(1/4) = 1/4
@@ -76,7 +76,7 @@ pub(crate) fn vertex<T: Scalar>(index: usize) -> Bary<T> {
 /// to the triangle `verts` (the parameter map of [`TriPatch::subpatch`]).
 ///
 /// ```
-/// use exact_bezier::{affine_combination, ratio};
+/// use exact_bezier::{tri::affine_combination, ratio};
 /// use num_rational::BigRational;
 /// let v = |a: i64, b: i64, c: i64| [ratio::<BigRational>(a, 1), ratio(b, 1), ratio(c, 1)];
 /// let x = [ratio(1, 2), ratio(1, 2), ratio(0, 1)];

@@ -20,15 +20,15 @@
 //!
 //! Reference: source 002 eq. (1).
 
-use crate::poly::Poly;
-use crate::scalar::{Field, Scalar};
+use crate::algebra::poly::Poly;
+use crate::algebra::scalar::{Field, Scalar};
 
 /// A parameter `t ∈ [0, π/2]` as the pair `(sin t, cos t)`.
 ///
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{ratio, TrigParam};
+/// use exact_bezier::{ratio, trig::TrigParam};
 /// use num_rational::BigRational;
 /// // τ = tan(t/2) = 1/2: sin t = 4/5, cos t = 3/5, exactly.
 /// let p = TrigParam::from_tau(&ratio::<BigRational>(1, 2));
@@ -81,7 +81,7 @@ impl TrigParam<f64> {
     /// `(sin t, cos t)` of an angle `t` in radians.
     ///
     /// ```
-    /// use exact_bezier::TrigParam;
+    /// use exact_bezier::trig::TrigParam;
     /// let p = TrigParam::from_angle(std::f64::consts::FRAC_PI_2);
     /// assert!((p.sin - 1.0).abs() < 1e-15 && p.cos.abs() < 1e-15);
     /// ```
@@ -96,7 +96,7 @@ impl TrigParam<f64> {
 /// are equal.
 ///
 /// ```
-/// use exact_bezier::{circle_normal_form, Poly};
+/// use exact_bezier::{trig::circle_normal_form, Poly};
 /// let (s, c) = (Poly::var("s"), Poly::var("c"));
 /// assert_eq!(circle_normal_form(&(s.pow(2) + c.pow(2)), "s", "c"), Poly::from_int(1));
 /// ```
@@ -110,7 +110,7 @@ pub fn circle_normal_form(p: &Poly, s: &str, c: &str) -> Poly {
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{ratio, TrigFn, TrigParam};
+/// use exact_bezier::{ratio, trig::TrigFn, trig::TrigParam};
 /// use num_rational::BigRational;
 /// let sin = TrigFn::<BigRational>::new([0, 1, 0, 0, 0].map(|k| ratio(k, 1)));
 /// // d/dt sin = cos, d²/dt² sin = −sin.
@@ -139,7 +139,7 @@ impl<T: Scalar> TrigFn<T> {
     /// Reference: source 002 eq. (1).
     ///
     /// ```
-    /// use exact_bezier::{ratio, TrigFn, TrigParam};
+    /// use exact_bezier::{ratio, trig::TrigFn, trig::TrigParam};
     /// use num_rational::BigRational;
     /// let x = TrigFn::basis(&ratio::<BigRational>(1, 1));
     /// let at = TrigParam::from_tau(&ratio(1, 2)); // s = 4/5, c = 3/5
@@ -201,7 +201,7 @@ impl<T: Scalar> TrigFn<T> {
 /// basis (1) at `at`.
 ///
 /// ```
-/// use exact_bezier::{ratio, trig_basis_values, TrigParam};
+/// use exact_bezier::{ratio, trig::trig_basis_values, trig::TrigParam};
 /// use num_rational::BigRational;
 /// let a = ratio::<BigRational>(3, 2);
 /// // End derivatives: X'(0) = (−α, α, 0, 0).
@@ -228,7 +228,7 @@ pub(crate) fn combine<T: Scalar>(weights: &[T], points: &[Vec<T>]) -> Vec<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scalar::ratio;
+    use crate::algebra::scalar::ratio;
     use num_rational::BigRational;
 
     #[test]

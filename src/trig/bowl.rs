@@ -18,8 +18,8 @@
 
 use super::stitch::trig_stitch;
 use super::surface::TrigRect;
+use crate::algebra::scalar::{ratio, Ordered};
 use crate::error::Error;
-use crate::scalar::{ratio, Ordered};
 
 /// Printed coordinates in hundredths.
 type Printed = [[[i64; 3]; 4]; 4];
@@ -94,7 +94,7 @@ fn column_of<T: Ordered>(s: &TrigRect<T>, j: usize) -> Vec<Vec<T>> {
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{ratio, trig_bowl, trig_g0, Tolerance, TrigJoin};
+/// use exact_bezier::{ratio, trig::trig_bowl, trig::trig_g0, Tolerance, trig::TrigJoin};
 /// use num_rational::BigRational;
 /// let a2: [BigRational; 4] = [13, 11, 11, 13].map(|k| ratio(k, 10));
 /// let bowl = trig_bowl(&ratio(6, 5), &a2, None).unwrap();

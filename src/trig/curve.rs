@@ -4,15 +4,15 @@
 //! Reference: source 002 Definition 2 and its properties 1)–6).
 
 use super::basis::{combine, trig_basis_values, TrigFn, TrigParam};
+use crate::algebra::scalar::Scalar;
 use crate::error::Error;
-use crate::scalar::Scalar;
 
 /// A cubic trigonometric curve: four control points and a shape parameter α.
 ///
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{ratio, TrigCurve, TrigParam};
+/// use exact_bezier::{ratio, trig::TrigCurve, trig::TrigParam};
 /// use num_rational::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let c = TrigCurve::new(vec![p(0, 0), p(1, 2), p(3, 2), p(4, 0)], ratio(1, 1)).unwrap();

@@ -25,11 +25,11 @@
 //!
 //! Reference: source 002 eq. (1); the half-angle substitution is ours.
 
+use crate::algebra::scalar::{ratio, Scalar};
+use crate::coincide::minimal::power_to_bernstein;
 use crate::curve::RationalCurve;
 use crate::hpoint::HPoint;
-use crate::minimal_degree::power_to_bernstein;
 use crate::rect::RectPatch;
-use crate::scalar::{ratio, Scalar};
 use crate::trig::basis::TrigFn;
 use crate::trig::curve::TrigCurve;
 use crate::trig::surface::TrigRect;
@@ -78,7 +78,7 @@ impl<T: Scalar> TrigCurve<T> {
     /// (see the module docs for the construction).
     ///
     /// ```
-    /// use exact_bezier::{ratio, TrigCurve, TrigParam};
+    /// use exact_bezier::{ratio, trig::TrigCurve, trig::TrigParam};
     /// use num_rational::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let c = TrigCurve::new(vec![p(0, 0), p(1, 2), p(3, 2), p(4, 0)], ratio(1, 1)).unwrap();
@@ -109,7 +109,7 @@ impl<T: Scalar> TrigRect<T> {
     /// construction.
     ///
     /// ```
-    /// use exact_bezier::{ratio, TrigParam, TrigRect};
+    /// use exact_bezier::{ratio, trig::TrigParam, trig::TrigRect};
     /// use num_rational::BigRational;
     /// let net = (0..4).map(|i| (0..4).map(|j| vec![ratio::<BigRational>(i, 1), ratio(j, 1), ratio(i * j, 1)]).collect()).collect();
     /// let s = TrigRect::new(net, [ratio(1, 2), ratio(3, 2)]).unwrap();

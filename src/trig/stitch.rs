@@ -19,8 +19,8 @@
 
 use super::basis::TrigParam;
 use super::surface::TrigRect;
+use crate::algebra::scalar::{ratio, Ordered, Scalar, Tolerance};
 use crate::error::Error;
-use crate::scalar::{ratio, Ordered, Scalar, Tolerance};
 
 /// Which edges of two surfaces meet.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -55,7 +55,7 @@ impl TrigJoin {
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{ratio, trig_g0, Tolerance, TrigJoin, TrigRect};
+/// use exact_bezier::{ratio, trig::trig_g0, Tolerance, trig::TrigJoin, trig::TrigRect};
 /// use num_rational::BigRational;
 /// let net = |dx: i64| -> Vec<Vec<Vec<BigRational>>> {
 ///     (0..4).map(|i| (0..4).map(|j| vec![ratio(i, 1), ratio(j + dx, 1), ratio(i * j, 1)]).collect()).collect()
@@ -161,7 +161,7 @@ pub(crate) fn cross<T: Scalar>(a: &[T], b: &[T]) -> [T; 3] {
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{ratio, trig_g1_factor, trig_tangent_continuous, Tolerance, TrigJoin, TrigRect};
+/// use exact_bezier::{ratio, trig::trig_g1_factor, trig::trig_tangent_continuous, Tolerance, trig::TrigJoin, trig::TrigRect};
 /// use num_rational::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1), ratio(0, 1)];
 /// let one = || [ratio(1, 1), ratio(1, 1)];
@@ -225,7 +225,7 @@ pub fn trig_tangent_continuous<T: Ordered>(
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{ratio, trig_g1_factor, trig_stitch, Tolerance, TrigJoin, TrigRect};
+/// use exact_bezier::{ratio, trig::trig_g1_factor, trig::trig_stitch, Tolerance, trig::TrigJoin, trig::TrigRect};
 /// use num_rational::BigRational;
 /// let net: Vec<Vec<Vec<BigRational>>> = (0..4)
 ///     .map(|i| (0..4).map(|j| vec![ratio(i, 1), ratio(j, 1), ratio(i * j % 3, 1)]).collect())

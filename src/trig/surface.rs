@@ -12,15 +12,15 @@
 
 use super::basis::{combine, trig_basis_values, TrigParam};
 use super::curve::{check_points, TrigCurve};
+use crate::algebra::scalar::Scalar;
 use crate::error::Error;
-use crate::scalar::Scalar;
 
 /// A bicubic trigonometric surface with shape parameters (α₁, α₂).
 ///
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{ratio, TrigParam, TrigRect};
+/// use exact_bezier::{ratio, trig::TrigParam, trig::TrigRect};
 /// use num_rational::BigRational;
 /// let net: Vec<Vec<Vec<BigRational>>> = (0..4)
 ///     .map(|i| (0..4).map(|j| vec![ratio(i, 1), ratio(j, 1), ratio(i * j, 1)]).collect())

@@ -13,7 +13,7 @@
 //!   monomials meet in the heap and are summed at once — no map, no sort.
 
 use super::monomial::Monomial;
-use crate::int::Int;
+use crate::algebra::int::Int;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{Signed, Zero};

@@ -40,9 +40,9 @@ pub(crate) mod radical;
 pub(crate) mod root;
 pub mod text;
 
+use crate::algebra::scalar::{Field, Ordered, Roots, Scalar};
+use crate::algebra::upoly::UPoly;
 use crate::error::Error;
-use crate::scalar::{Field, Ordered, Roots, Scalar};
-use crate::upoly::UPoly;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
@@ -61,7 +61,7 @@ use std::sync::Arc;
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{RealAlgebraic, Roots, Scalar};
+/// use exact_bezier::{algebra::RealAlgebraic, Roots, Scalar};
 /// let r = |n: i64| RealAlgebraic::from_i64(n);
 /// let (s2, s3) = (r(2).nth_root(2).unwrap(), r(3).nth_root(2).unwrap());
 /// let sum = s2.clone() + &s3;
@@ -105,7 +105,7 @@ impl RealAlgebraic {
     /// [`Error::Domain`] when `p` is zero or has at most `k` real roots.
     ///
     /// ```
-    /// use exact_bezier::{RealAlgebraic, UPoly, ratio};
+    /// use exact_bezier::{algebra::RealAlgebraic, algebra::UPoly, ratio};
     /// let p = UPoly::new(vec![ratio(-2, 1), ratio(0, 1), ratio(1, 1)]); // x² − 2
     /// let r = RealAlgebraic::root_of(&p, 1).unwrap();
     /// assert_eq!(r.to_string(), "sqrt(2)");
@@ -206,7 +206,7 @@ impl RealAlgebraic {
     /// grows (width `O(2^{−prec})`); `lo = hi` for rationals.
     ///
     /// ```
-    /// use exact_bezier::{RealAlgebraic, Roots, Scalar, ratio};
+    /// use exact_bezier::{algebra::RealAlgebraic, Roots, Scalar, ratio};
     /// let s2 = RealAlgebraic::from_i64(2).nth_root(2).unwrap();
     /// let (lo, hi) = s2.enclosure(20);
     /// assert!(lo < ratio(14143, 10000) && hi > ratio(14142, 10000));
@@ -369,7 +369,7 @@ impl RealAlgebraic {
     /// for rationals; irrational values are never halfway), as text.
     ///
     /// ```
-    /// use exact_bezier::{RealAlgebraic, Roots, Scalar};
+    /// use exact_bezier::{algebra::RealAlgebraic, Roots, Scalar};
     /// let s2 = RealAlgebraic::from_i64(2).nth_root(2).unwrap();
     /// assert_eq!(s2.to_decimal(30), "1.414213562373095048801688724210");
     /// ```

@@ -20,7 +20,7 @@
 //! §3.3 (resultants), §4.1–4.2 (Sturm, Cauchy bound); Yap, *Fundamental
 //! Problems of Algorithmic Algebra*, ch. 7.
 
-use crate::upoly::UPoly;
+use crate::algebra::upoly::UPoly;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;

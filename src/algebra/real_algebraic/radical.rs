@@ -25,7 +25,7 @@
 //! doubled in precision until they exclude 0, which always happens because a
 //! non-empty sum is non-zero.
 
-use crate::upoly::UPoly;
+use crate::algebra::upoly::UPoly;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::{BigRational, Ratio};

@@ -1,5 +1,5 @@
 use super::*;
-use crate::scalar::ratio;
+use crate::algebra::scalar::ratio;
 use proptest::prelude::*;
 
 fn r(n: i64) -> RealAlgebraic {

@@ -30,9 +30,9 @@
 use super::polys::{primitive_integer, QPoly};
 use super::radical::RadicalSum;
 use super::RealAlgebraic;
+use crate::algebra::scalar::{Field, Roots};
+use crate::algebra::upoly::UPoly;
 use crate::error::{Error, MAX_DEGREE};
-use crate::scalar::{Field, Roots};
-use crate::upoly::UPoly;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -60,7 +60,7 @@ enum Ast {
 /// division by zero, a root index out of range, or input over the bounds.
 ///
 /// ```
-/// use exact_bezier::{parse_algebraic, RealAlgebraic, Scalar};
+/// use exact_bezier::{algebra::parse_algebraic, algebra::RealAlgebraic, Scalar};
 /// let x = parse_algebraic("sqrt(2) + sqrt(3) - sqrt(5 + 2*sqrt(6))").unwrap();
 /// assert_eq!(x, RealAlgebraic::from_i64(0));
 /// assert_eq!(parse_algebraic("(3/2)**(1/3)").unwrap().to_string(), "cbrt(12)/2");
@@ -344,7 +344,7 @@ fn real_root(x: &RealAlgebraic, n: u32, text: &str) -> Result<RealAlgebraic, Err
 }
 
 fn integer_power(x: &RealAlgebraic, p: i64, text: &str) -> Result<RealAlgebraic, Error> {
-    use crate::scalar::Scalar;
+    use crate::algebra::scalar::Scalar;
     if p < 0 && x.is_zero() {
         return Err(bad(text, "division by zero"));
     }

@@ -1,0 +1,143 @@
+//! [`Int`]: an exact integer that computes in `i128` while it fits and
+//! moves to a big integer on overflow (checked arithmetic, never wrapping).
+//!
+//! It is a [`Ring`](crate::Ring) but not a [`Scalar`](crate::Scalar) (it has
+//! no 1/2): the fraction-free fast paths ([`FastCurve`](crate::fast_eval::FastCurve),
+//! [`FastRect`](crate::fast_eval::FastRect)) clear denominators once and then run de
+//! Casteljau at a homogeneous parameter on `Int`, so that typical inputs
+//! never allocate and never take a gcd until the final division.
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, ToPrimitive, Zero};
+use std::ops::{Add, Mul, Neg, Sub};
+
+/// An exact integer: `Small` while it fits `i128`, `Big` otherwise.
+///
+/// ```
+/// use exact_bezier::algebra::Int;
+/// let big = Int::from(i128::MAX) + &Int::from(1);
+/// assert_eq!(big.to_bigint(), num_bigint::BigInt::from(i128::MAX) + 1);
+/// assert_eq!(big - &Int::from(1), Int::from(i128::MAX)); // back to i128
+/// ```
+#[derive(Clone, Debug)]
+pub enum Int {
+    /// A machine integer.
+    Small(i128),
+    /// A big integer outside the `i128` range.
+    Big(BigInt),
+}
+
+impl Int {
+    /// The value as a big integer.
+    pub fn to_bigint(&self) -> BigInt {
+        match self {
+            Int::Small(a) => BigInt::from(*a),
+            Int::Big(a) => a.clone(),
+        }
+    }
+
+    /// `Small` when `n` fits `i128`, else `Big`.
+    pub fn from_bigint(n: BigInt) -> Int {
+        n.to_i128().map_or(Int::Big(n), Int::Small)
+    }
+}
+
+impl From<i128> for Int {
+    fn from(n: i128) -> Int {
+        Int::Small(n)
+    }
+}
+
+impl PartialEq for Int {
+    fn eq(&self, other: &Int) -> bool {
+        match (self, other) {
+            (Int::Small(a), Int::Small(b)) => a == b,
+            _ => self.to_bigint() == other.to_bigint(),
+        }
+    }
+}
+
+/// `+`, `−`, `×` with an `i128` fast path and a big-integer fallback.
+macro_rules! int_binary_op {
+    ($Trait:ident, $method:ident, $checked:ident) => {
+        impl<'a> $Trait<&'a Int> for Int {
+            type Output = Int;
+            fn $method(self, rhs: &'a Int) -> Int {
+                if let (Int::Small(a), Int::Small(b)) = (&self, rhs) {
+                    if let Some(r) = a.$checked(*b) {
+                        return Int::Small(r);
+                    }
+                }
+                Int::from_bigint(self.to_bigint().$method(rhs.to_bigint()))
+            }
+        }
+        impl $Trait for Int {
+            type Output = Int;
+            fn $method(self, rhs: Int) -> Int {
+                self.$method(&rhs)
+            }
+        }
+    };
+}
+
+int_binary_op!(Add, add, checked_add);
+int_binary_op!(Sub, sub, checked_sub);
+int_binary_op!(Mul, mul, checked_mul);
+
+impl Neg for Int {
+    type Output = Int;
+    fn neg(self) -> Int {
+        match self {
+            Int::Small(a) => a
+                .checked_neg()
+                .map_or_else(|| Int::Big(-BigInt::from(a)), Int::Small),
+            Int::Big(a) => Int::from_bigint(-a),
+        }
+    }
+}
+
+impl Zero for Int {
+    fn zero() -> Int {
+        Int::Small(0)
+    }
+    fn is_zero(&self) -> bool {
+        matches!(self, Int::Small(0))
+    }
+}
+
+impl One for Int {
+    fn one() -> Int {
+        Int::Small(1)
+    }
+}
+
+/// Integer numerators over one common denominator: `values[i] = nums[i]/den`
+/// with `den` the lcm of the denominators (`den > 0`).
+pub(crate) fn common_denominator(values: &[&BigRational]) -> (Vec<Int>, BigInt) {
+    use num_integer::Integer;
+    let den = values.iter().fold(BigInt::one(), |l, q| l.lcm(q.denom()));
+    let nums = values
+        .iter()
+        .map(|q| Int::from_bigint(q.numer() * (&den / q.denom())))
+        .collect();
+    (nums, den)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn overflow_moves_to_big_and_back() {
+        let m = Int::from(i128::MAX);
+        let sq = m.clone() * &m;
+        assert!(matches!(sq, Int::Big(_)));
+        assert_eq!(
+            sq.to_bigint(),
+            BigInt::from(i128::MAX) * BigInt::from(i128::MAX)
+        );
+        assert_eq!(-Int::from(i128::MIN) - &Int::from(1), Int::from(i128::MAX));
+        assert!((Int::from(3) - &Int::from(3)).is_zero());
+    }
+}

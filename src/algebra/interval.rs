@@ -1,0 +1,110 @@
+//! [`Interval`]: closed interval arithmetic on `f64` with outward rounding
+//! (each result widened by one ulp on each side), so an interval always
+//! encloses the exact value of the rational expression it stands for.
+//! Used by the filtered predicates ([`coincide_filtered`](crate::coincide::coincide_filtered)).
+
+use crate::algebra::scalar::rational_to_f64;
+use num_rational::BigRational;
+
+/// A closed interval `[lo, hi]` of reals with `f64` end points.
+///
+/// # Examples
+///
+/// ```
+/// use exact_bezier::{algebra::Interval, ratio};
+/// let third = Interval::enclose(&ratio(1, 3));
+/// assert!(third.lo < 1.0 / 3.0 + 1e-15 && third.hi > 1.0 / 3.0 - 1e-15);
+/// let sum = third.add(&third).add(&third);
+/// assert!(sum.lo <= 1.0 && 1.0 <= sum.hi);
+/// assert!(sum.disjoint(&Interval::enclose(&ratio(11, 10))));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Interval {
+    /// Lower end.
+    pub lo: f64,
+    /// Upper end.
+    pub hi: f64,
+}
+
+fn next_up(x: f64) -> f64 {
+    if x.is_nan() || x == f64::INFINITY {
+        return x;
+    }
+    if x == 0.0 {
+        return f64::from_bits(1);
+    }
+    let b = x.to_bits();
+    f64::from_bits(if x > 0.0 { b + 1 } else { b - 1 })
+}
+
+fn next_down(x: f64) -> f64 {
+    -next_up(-x)
+}
+
+impl Interval {
+    /// `[lo, hi]` widened outward by one ulp (the rounding of one operation).
+    fn rounded(lo: f64, hi: f64) -> Interval {
+        Interval {
+            lo: next_down(lo),
+            hi: next_up(hi),
+        }
+    }
+
+    /// An interval certainly containing the rational `q`: its nearest `f64`
+    /// widened by a relative `2⁻⁵⁰` (the conversion is accurate to a few
+    /// ulps) and one ulp.
+    pub fn enclose(q: &BigRational) -> Interval {
+        let f = rational_to_f64(q);
+        let slack = f.abs() * f64::EPSILON * 4.0 + f64::MIN_POSITIVE;
+        Interval::rounded(f - slack, f + slack)
+    }
+
+    /// `self + o`.
+    pub fn add(&self, o: &Interval) -> Interval {
+        Interval::rounded(self.lo + o.lo, self.hi + o.hi)
+    }
+
+    /// `self − o`.
+    pub fn sub(&self, o: &Interval) -> Interval {
+        Interval::rounded(self.lo - o.hi, self.hi - o.lo)
+    }
+
+    /// `self · o`.
+    pub fn mul(&self, o: &Interval) -> Interval {
+        let p = [
+            self.lo * o.lo,
+            self.lo * o.hi,
+            self.hi * o.lo,
+            self.hi * o.hi,
+        ];
+        let lo = p.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = p.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        Interval::rounded(lo, hi)
+    }
+
+    /// `self / o`, or `None` when `o` contains 0.
+    pub fn div(&self, o: &Interval) -> Option<Interval> {
+        if o.lo <= 0.0 && o.hi >= 0.0 {
+            return None;
+        }
+        let p = [
+            self.lo / o.lo,
+            self.lo / o.hi,
+            self.hi / o.lo,
+            self.hi / o.hi,
+        ];
+        let lo = p.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = p.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        Some(Interval::rounded(lo, hi))
+    }
+
+    /// `self^e` by repeated multiplication (`[1, 1]` for e = 0).
+    pub fn pow(&self, e: u32) -> Interval {
+        (0..e).fold(Interval { lo: 1.0, hi: 1.0 }, |acc, _| acc.mul(self))
+    }
+
+    /// Do the intervals have no point in common (so the exact values differ)?
+    pub fn disjoint(&self, o: &Interval) -> bool {
+        self.hi < o.lo || o.hi < self.lo
+    }
+}

@@ -1,0 +1,190 @@
+//! [`Fp`]: the prime field `Z/pZ`, `p = 2⁶¹ − 1`, as an exact [`Field`].
+//!
+//! Used as a cheap exact filter: a property proved for the image of a
+//! rational patch modulo `p` (e.g. "the homogeneous components are coprime")
+//! transfers to the rationals under conditions stated where it is used.
+//! Every operation is exact (no rounding): this is not a floating-point path.
+//!
+//! Reference: Mersenne prime reduction, Knuth, TAOCP vol. 2, §4.3.2.
+
+use crate::algebra::scalar::{Field, Scalar};
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, ToPrimitive, Zero};
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// The modulus `p = 2⁶¹ − 1` (a Mersenne prime).
+pub const MODULUS: u64 = (1 << 61) - 1;
+
+/// An element of `Z/pZ`, `p = 2⁶¹ − 1`, stored as its representative in `[0, p)`.
+///
+/// # Examples
+///
+/// ```
+/// use exact_bezier::{algebra::Fp, ratio};
+/// let third = Fp::from_rational_checked(&ratio(1, 3)).unwrap();
+/// assert_eq!(third * Fp::new(3), Fp::new(1));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Fp(u64);
+
+impl Fp {
+    /// `x mod p`.
+    pub fn new(x: u64) -> Fp {
+        Fp(x % MODULUS)
+    }
+
+    /// The representative in `[0, p)`.
+    pub fn value(self) -> u64 {
+        self.0
+    }
+
+    /// The image of a rational `a/b` (`a·b⁻¹ mod p`), or `None` when `p`
+    /// divides the denominator.
+    pub fn from_rational_checked(q: &BigRational) -> Option<Fp> {
+        let num = reduce(q.numer());
+        if q.denom().is_one() {
+            return Some(num);
+        }
+        let den = reduce(q.denom());
+        if den.is_zero() {
+            return None;
+        }
+        Some(num / den)
+    }
+
+    /// `self⁻¹` by the extended Euclidean algorithm (`None` for 0).
+    fn inverse(self) -> Option<Fp> {
+        let (mut r0, mut r1) = (MODULUS as i128, self.0 as i128);
+        let (mut t0, mut t1) = (0i128, 1i128);
+        while r1 != 0 {
+            let q = r0 / r1;
+            (r0, r1) = (r1, r0 - q * r1);
+            (t0, t1) = (t1, t0 - q * t1);
+        }
+        (r0 == 1).then(|| Fp(t0.rem_euclid(MODULUS as i128) as u64))
+    }
+}
+
+fn reduce(n: &BigInt) -> Fp {
+    if let Some(small) = n.to_i128() {
+        return Fp(small.rem_euclid(MODULUS as i128) as u64);
+    }
+    let r = n.mod_floor(&BigInt::from(MODULUS));
+    Fp(r.to_u64().expect("a residue below p fits in u64"))
+}
+
+impl Add for Fp {
+    type Output = Fp;
+    fn add(self, o: Fp) -> Fp {
+        let s = self.0 + o.0;
+        Fp(if s >= MODULUS { s - MODULUS } else { s })
+    }
+}
+impl Sub for Fp {
+    type Output = Fp;
+    fn sub(self, o: Fp) -> Fp {
+        Fp(if self.0 >= o.0 {
+            self.0 - o.0
+        } else {
+            self.0 + MODULUS - o.0
+        })
+    }
+}
+impl Mul for Fp {
+    type Output = Fp;
+    fn mul(self, o: Fp) -> Fp {
+        let x = self.0 as u128 * o.0 as u128;
+        // 2⁶¹ ≡ 1 (mod p): fold the high bits onto the low ones.
+        let mut s = (x & MODULUS as u128) as u64 + (x >> 61) as u64;
+        while s >= MODULUS {
+            s -= MODULUS;
+        }
+        Fp(s)
+    }
+}
+impl Neg for Fp {
+    type Output = Fp;
+    fn neg(self) -> Fp {
+        Fp::zero() - self
+    }
+}
+impl Div for Fp {
+    type Output = Fp;
+    /// **Panics if `o` is zero.**
+    fn div(self, o: Fp) -> Fp {
+        let inv = o.inverse().expect("division by zero in Z/pZ");
+        Fp::mul(self, inv)
+    }
+}
+impl Add<&Fp> for Fp {
+    type Output = Fp;
+    fn add(self, o: &Fp) -> Fp {
+        self + *o
+    }
+}
+impl Sub<&Fp> for Fp {
+    type Output = Fp;
+    fn sub(self, o: &Fp) -> Fp {
+        self - *o
+    }
+}
+impl Mul<&Fp> for Fp {
+    type Output = Fp;
+    fn mul(self, o: &Fp) -> Fp {
+        self * *o
+    }
+}
+impl Div<&Fp> for Fp {
+    type Output = Fp;
+    fn div(self, o: &Fp) -> Fp {
+        self / *o
+    }
+}
+impl Zero for Fp {
+    fn zero() -> Fp {
+        Fp(0)
+    }
+    fn is_zero(&self) -> bool {
+        self.0 == 0
+    }
+}
+impl One for Fp {
+    fn one() -> Fp {
+        Fp(1)
+    }
+}
+
+impl Scalar for Fp {
+    fn from_i64(n: i64) -> Self {
+        Fp(n.rem_euclid(MODULUS as i64) as u64)
+    }
+    fn from_bigint(n: &BigInt) -> Self {
+        reduce(n)
+    }
+    /// **Panics if `p` divides the denominator** (use
+    /// [`Fp::from_rational_checked`] on data).
+    fn from_rational(q: &BigRational) -> Self {
+        Fp::from_rational_checked(q).expect("denominator invertible modulo p")
+    }
+}
+impl Field for Fp {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::scalar::ratio;
+
+    #[test]
+    fn field_laws_on_samples() {
+        let a = Fp::from_rational(&ratio(-7, 5));
+        let b = Fp::new(MODULUS - 3);
+        assert_eq!((a + b) - b, a);
+        assert_eq!((a / b) * b, a);
+        assert_eq!(a * Fp::from_i64(5), Fp::from_i64(-7));
+        assert_eq!(-Fp::new(0), Fp::new(0));
+        let big = BigRational::from_integer(BigInt::from(MODULUS) * 4);
+        assert_eq!(Fp::from_rational_checked(&big.recip()), None);
+    }
+}

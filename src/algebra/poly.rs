@@ -1,0 +1,738 @@
+//! [`Poly`]: sparse multivariate polynomials over Q with named variables — the
+//! symbolic instantiation of [`Scalar`].
+//!
+//! Running a generic algorithm on `Poly` values (symbols for parameters,
+//! control points and weights) turns it into a computation on formulas: an
+//! identity that comes out `== 0` holds for **all** values of the symbols.
+//!
+//! Variables are interned by name in a process-wide table, so `Poly::var("a")`
+//! always denotes the same variable.
+//!
+//! # Representation (built for speed on proofs)
+//!
+//! A polynomial is `(1/d)·Σ c_m·m`: integer coefficients `c_m` ([`Int`]:
+//! `i128` until it overflows) over one positive common denominator `d`, with
+//! `gcd(d, c_m…) = 1`. Terms are kept in a vector sorted by a monomial order,
+//! and each monomial packs its `(variable, exponent)` factors into machine
+//! words (up to six inline). So a sum is one merge, a product is a heap
+//! merge of sorted streams (no map, no sort), and the integer arithmetic of a
+//! typical identity never allocates and never runs a gcd per term (the
+//! denominator is reduced once per operation, and only when it is not 1).
+//! The representation is canonical, so `==` is exact equality of
+//! polynomials.
+//!
+//! # Examples
+//!
+//! ```
+//! use exact_bezier::Poly;
+//! let (a, b) = (Poly::var("a"), Poly::var("b"));
+//! let lhs = (a.clone() + &b).pow(2);
+//! let rhs = a.pow(2) + Poly::from_int(2) * &a * &b + b.pow(2);
+//! assert_eq!(lhs, rhs);
+//! assert_eq!(lhs.to_string(), "a^2 + 2*a*b + b^2");
+//! ```
+
+use crate::algebra::int::Int;
+use crate::algebra::scalar::Scalar;
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
+use std::collections::HashMap;
+use std::fmt;
+use std::hash::{Hash, Hasher};
+use std::ops::{Add, Mul, Neg, Sub};
+use std::sync::{Mutex, OnceLock};
+
+mod monomial;
+mod terms;
+
+use monomial::Monomial;
+use terms::{content_with, div_exact, divide, gcd, int, is_negative, is_one, mul, Terms};
+
+/// The process-wide table of variable names; a variable's id is its index.
+#[derive(Default)]
+struct Registry {
+    names: Vec<String>,
+    ids: HashMap<String, u32>,
+}
+
+fn registry() -> &'static Mutex<Registry> {
+    static REGISTRY: OnceLock<Mutex<Registry>> = OnceLock::new();
+    REGISTRY.get_or_init(|| Mutex::new(Registry::default()))
+}
+
+fn intern(name: &str) -> u32 {
+    let mut table = registry().lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(&i) = table.ids.get(name) {
+        return i;
+    }
+    let id = u32::try_from(table.names.len()).expect("fewer than 2^32 variables");
+    table.names.push(name.to_string());
+    table.ids.insert(name.to_string(), id);
+    id
+}
+
+fn name_of(id: u32) -> String {
+    let table = registry().lock().unwrap_or_else(|e| e.into_inner());
+    table.names[id as usize].clone()
+}
+
+/// A polynomial in named variables with rational coefficients.
+///
+/// Implements [`Scalar`] (not `Field`: it has no division and no sign).
+#[derive(Clone, PartialEq)]
+pub struct Poly {
+    /// Integer coefficients, sorted by monomial, non-zero.
+    terms: Terms,
+    /// The positive common denominator, coprime to the coefficients (1 for 0).
+    den: Int,
+}
+
+impl Poly {
+    /// `terms / den` brought to canonical form (`den > 0`).
+    fn normalized(mut terms: Terms, den: Int) -> Poly {
+        if terms.is_empty() {
+            return Poly::zero();
+        }
+        let den = if is_negative(&den) {
+            terms::scale(&mut terms, &Int::Small(-1));
+            -den
+        } else {
+            den
+        };
+        if is_one(&den) {
+            return Poly { terms, den };
+        }
+        let g = content_with(&terms, &den);
+        divide(&mut terms, &g);
+        Poly {
+            terms,
+            den: div_exact(&den, &g),
+        }
+    }
+
+    /// The constant term `c` times `m`, over `den`.
+    fn term(m: Monomial, c: Int, den: Int) -> Poly {
+        if c.is_zero() {
+            return Poly::zero();
+        }
+        Poly::normalized(vec![(m, c)], den)
+    }
+
+    /// The variable named `name`.
+    pub fn var(name: &str) -> Poly {
+        Poly::term(
+            Monomial::power(intern(name), 1),
+            Int::Small(1),
+            Int::Small(1),
+        )
+    }
+
+    /// `n` variables `prefix0, prefix1, …`.
+    ///
+    /// ```
+    /// use exact_bezier::Poly;
+    /// let p = Poly::vars("p", 3);
+    /// assert_eq!(p[2].to_string(), "p2");
+    /// ```
+    pub fn vars(prefix: &str, n: usize) -> Vec<Poly> {
+        (0..n).map(|i| Poly::var(&format!("{prefix}{i}"))).collect()
+    }
+
+    /// The constant `q`.
+    pub fn constant(q: BigRational) -> Poly {
+        Poly::term(Monomial::default(), int(q.numer()), int(q.denom()))
+    }
+
+    /// The integer constant `n`.
+    pub fn from_int(n: i64) -> Poly {
+        Poly::term(Monomial::default(), Int::Small(n.into()), Int::Small(1))
+    }
+
+    /// `self^e`.
+    pub fn pow(&self, e: u32) -> Poly {
+        self.pow_u32(e)
+    }
+
+    /// Number of non-zero terms.
+    pub fn num_terms(&self) -> usize {
+        self.terms.len()
+    }
+
+    /// The coefficient `c/den` as a rational.
+    fn rational(&self, c: &Int) -> BigRational {
+        BigRational::new(c.to_bigint(), self.den.to_bigint())
+    }
+
+    /// The constant value if the polynomial has no variables.
+    pub fn as_constant(&self) -> Option<BigRational> {
+        match self.terms.as_slice() {
+            [] => Some(BigRational::zero()),
+            [(m, c)] if m.is_one() => Some(self.rational(c)),
+            _ => None,
+        }
+    }
+
+    /// The names of the variables that occur, sorted by name.
+    pub fn variables(&self) -> Vec<String> {
+        let mut ids: Vec<u32> = self
+            .terms
+            .iter()
+            .flat_map(|(m, _)| m.factors().map(|(v, _)| v))
+            .collect();
+        ids.sort_unstable();
+        ids.dedup();
+        let mut names: Vec<String> = ids.into_iter().map(name_of).collect();
+        names.sort();
+        names
+    }
+
+    /// Degree in the variable `name` (0 for the zero polynomial).
+    pub fn degree_in(&self, name: &str) -> u32 {
+        self.degree_in_id(intern(name))
+    }
+
+    fn degree_in_id(&self, id: u32) -> u32 {
+        self.terms
+            .iter()
+            .map(|(m, _)| m.exponent(id))
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// Total degree (0 for constants and for the zero polynomial).
+    pub fn total_degree(&self) -> u32 {
+        let d = self
+            .terms
+            .iter()
+            .map(|(m, _)| m.total_degree())
+            .max()
+            .unwrap_or(0);
+        u32::try_from(d).unwrap_or(u32::MAX)
+    }
+
+    /// The coefficient polynomials in variable `id`: `self = Σ_k out[k]·x^k`.
+    /// Each stays sorted: dropping `x` from monomials with the same
+    /// exponent of `x` keeps their order.
+    fn coefficients_in(&self, id: u32) -> Vec<Poly> {
+        let mut out: Vec<Terms> = vec![Vec::new(); self.degree_in_id(id) as usize + 1];
+        for (m, c) in &self.terms {
+            out[m.exponent(id) as usize].push((m.with_exponent(id, 0), c.clone()));
+        }
+        out.into_iter()
+            .map(|t| Poly::normalized(t, self.den.clone()))
+            .collect()
+    }
+
+    /// The coefficient of `name^k`, a polynomial in the other variables:
+    /// `self = Σ_k coeff_of(name, k) · name^k`.
+    ///
+    /// ```
+    /// use exact_bezier::Poly;
+    /// let (x, y) = (Poly::var("x"), Poly::var("y"));
+    /// let p = x.pow(2) * &y + x.clone() * Poly::from_int(3) + Poly::from_int(1);
+    /// assert_eq!(p.coeff_of("x", 2), y);
+    /// assert_eq!(p.coeff_of("x", 0), Poly::from_int(1));
+    /// ```
+    pub fn coeff_of(&self, name: &str, k: u32) -> Poly {
+        let id = intern(name);
+        let terms = self
+            .terms
+            .iter()
+            .filter(|(m, _)| m.exponent(id) == k)
+            .map(|(m, c)| (m.with_exponent(id, 0), c.clone()))
+            .collect();
+        Poly::normalized(terms, self.den.clone())
+    }
+
+    /// Multiply by the monomial `x_id^e` (keeps the order).
+    fn shift(mut self, id: u32, e: u32) -> Poly {
+        if e > 0 {
+            let x = Monomial::power(id, e);
+            for (m, _) in &mut self.terms {
+                *m = m.mul(&x);
+            }
+        }
+        self
+    }
+
+    /// Substitute the polynomial `value` for the variable `name` (Horner's
+    /// rule on the coefficients in `name`).
+    ///
+    /// ```
+    /// use exact_bezier::Poly;
+    /// let (x, y) = (Poly::var("x"), Poly::var("y"));
+    /// let p = x.pow(2) + Poly::from_int(1);
+    /// assert_eq!(p.subst("x", &(y.clone() + Poly::from_int(1))), y.pow(2) + Poly::from_int(2) * &y + Poly::from_int(2));
+    /// ```
+    pub fn subst(&self, name: &str, value: &Poly) -> Poly {
+        let mut coeffs = self.coefficients_in(intern(name));
+        let top = coeffs.pop().unwrap_or_else(Poly::zero);
+        coeffs
+            .into_iter()
+            .rev()
+            .fold(top, |acc, c| acc * value + &c)
+    }
+
+    /// Substitute the rational `value` for the variable `name`.
+    pub fn subst_rational(&self, name: &str, value: &BigRational) -> Poly {
+        self.subst(name, &Poly::constant(value.clone()))
+    }
+
+    /// Evaluate with every variable given a rational value; `None` if a
+    /// variable that occurs is missing from `values`.
+    ///
+    /// ```
+    /// use exact_bezier::{Poly, ratio};
+    /// let p = Poly::var("x") * Poly::var("y");
+    /// assert_eq!(p.eval(&[("x", ratio(1, 2)), ("y", ratio(4, 1))]), Some(ratio(2, 1)));
+    /// assert_eq!(p.eval(&[("x", ratio(1, 2))]), None);
+    /// ```
+    pub fn eval(&self, values: &[(&str, BigRational)]) -> Option<BigRational> {
+        let ids: Vec<(u32, &BigRational)> = values.iter().map(|(n, v)| (intern(n), v)).collect();
+        let mut acc = BigRational::zero();
+        for (m, c) in &self.terms {
+            let mut t = BigRational::from_integer(c.to_bigint());
+            for (v, e) in m.factors() {
+                let val = ids.iter().find(|(id, _)| *id == v)?.1;
+                t *= num_traits::pow(val.clone(), e as usize);
+            }
+            acc += t;
+        }
+        Some(acc / BigRational::from_integer(self.den.to_bigint()))
+    }
+
+    /// Reduce modulo the relation `name^d = replacement`: every power
+    /// `name^e` with `e ≥ d` is rewritten as `name^{e−d} · replacement`,
+    /// repeatedly, until the degree in `name` is below `d` (`replacement`
+    /// must have degree < d in `name`). This is the normal form in
+    /// `Q[…, name]/(name^d − replacement)`, e.g. `s² = 1 − c²` for
+    /// trigonometric identities or `r³ = radicand` for cube roots.
+    ///
+    /// Works on the coefficients in `name`, from the top down: `c_e·name^e`
+    /// adds `c_e·r_k` to the coefficient of `name^{e−d+k}` for each term
+    /// `r_k·name^k` of the replacement.
+    ///
+    /// **Panics if `d` is 0 or `replacement` has degree ≥ `d` in `name`.**
+    ///
+    /// ```
+    /// use exact_bezier::Poly;
+    /// let (s, c) = (Poly::var("s"), Poly::var("c"));
+    /// let one = Poly::from_int(1);
+    /// let rel = one.clone() - c.pow(2);
+    /// assert_eq!((s.pow(2) + c.pow(2)).reduce_power("s", 2, &rel), one);
+    /// assert_eq!(s.pow(3).reduce_power("s", 2, &rel), s.clone() - s * c.pow(2));
+    /// ```
+    pub fn reduce_power(&self, name: &str, d: u32, replacement: &Poly) -> Poly {
+        assert!(d > 0 && replacement.degree_in(name) < d, "invalid relation");
+        let id = intern(name);
+        let r = replacement.coefficients_in(id);
+        let mut c = self.coefficients_in(id);
+        let d = d as usize;
+        for e in (d..c.len()).rev() {
+            let top = std::mem::take(&mut c[e]);
+            if top.is_zero() {
+                continue;
+            }
+            for (k, rk) in r.iter().enumerate() {
+                if !rk.is_zero() {
+                    let slot = &mut c[e - d + k];
+                    *slot = std::mem::take(slot) + &(top.clone() * rk);
+                }
+            }
+        }
+        c.truncate(d);
+        // Distinct powers of `name` have disjoint monomials: a merge each.
+        c.into_iter()
+            .enumerate()
+            .fold(Poly::zero(), |acc, (e, ce)| acc + ce.shift(id, e as u32))
+    }
+
+    /// Multiply by a rational constant.
+    pub fn scale(&self, q: &BigRational) -> Poly {
+        if q.is_zero() {
+            return Poly::zero();
+        }
+        let mut terms = self.terms.clone();
+        terms::scale(&mut terms, &int(q.numer()));
+        Poly::normalized(terms, mul(&self.den, &int(q.denom())))
+    }
+
+    /// The terms as `(variables with exponents, coefficient)`, in the
+    /// canonical (monomial) order.
+    pub fn terms(&self) -> impl Iterator<Item = (Vec<(String, u32)>, BigRational)> + '_ {
+        self.terms.iter().map(|(m, c)| {
+            let vars = m.factors().map(|(v, e)| (name_of(v), e)).collect();
+            (vars, self.rational(c))
+        })
+    }
+
+    /// The sum `a·self + b·other` of the integer parts, over the common
+    /// denominator: `fa = L/d_self`, `fb = ±L/d_other`, `L = lcm`.
+    fn add_signed(&self, other: &Poly, negate: bool) -> Poly {
+        let sign = |f: Int| if negate { -f } else { f };
+        if self.den == other.den {
+            let t = terms::add(
+                &self.terms,
+                &Int::Small(1),
+                &other.terms,
+                &sign(Int::Small(1)),
+            );
+            return Poly::normalized(t, self.den.clone());
+        }
+        let g = gcd(&self.den, &other.den);
+        let fa = div_exact(&other.den, &g);
+        let fb = div_exact(&self.den, &g);
+        let t = terms::add(&self.terms, &fa, &other.terms, &sign(fb));
+        Poly::normalized(t, mul(&self.den, &fa))
+    }
+
+    fn mul_ref(&self, other: &Poly) -> Poly {
+        let t = terms::mul_terms(&self.terms, &other.terms);
+        Poly::normalized(t, mul(&self.den, &other.den))
+    }
+}
+
+impl Eq for Poly {}
+
+impl Hash for Poly {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        let int = |c: &Int, state: &mut H| match c {
+            Int::Small(x) => x.hash(state),
+            Int::Big(x) => x.hash(state),
+        };
+        for (m, c) in &self.terms {
+            m.hash(state);
+            int(c, state);
+        }
+        int(&self.den, state);
+    }
+}
+
+impl Default for Poly {
+    fn default() -> Poly {
+        Poly::zero()
+    }
+}
+
+impl Zero for Poly {
+    fn zero() -> Self {
+        Poly {
+            terms: Vec::new(),
+            den: Int::Small(1),
+        }
+    }
+    fn is_zero(&self) -> bool {
+        self.terms.is_empty()
+    }
+}
+
+impl One for Poly {
+    fn one() -> Self {
+        Poly::from_int(1)
+    }
+}
+
+impl Add<&Poly> for Poly {
+    type Output = Poly;
+    fn add(self, rhs: &Poly) -> Poly {
+        if self.is_zero() {
+            return rhs.clone();
+        }
+        self.add_signed(rhs, false)
+    }
+}
+impl Add for Poly {
+    type Output = Poly;
+    fn add(self, rhs: Poly) -> Poly {
+        if self.is_zero() {
+            return rhs;
+        }
+        self + &rhs
+    }
+}
+impl Sub<&Poly> for Poly {
+    type Output = Poly;
+    fn sub(self, rhs: &Poly) -> Poly {
+        self.add_signed(rhs, true)
+    }
+}
+impl Sub for Poly {
+    type Output = Poly;
+    fn sub(self, rhs: Poly) -> Poly {
+        self - &rhs
+    }
+}
+impl Mul<&Poly> for Poly {
+    type Output = Poly;
+    fn mul(self, rhs: &Poly) -> Poly {
+        self.mul_ref(rhs)
+    }
+}
+impl Mul for Poly {
+    type Output = Poly;
+    fn mul(self, rhs: Poly) -> Poly {
+        self.mul_ref(&rhs)
+    }
+}
+impl Neg for Poly {
+    type Output = Poly;
+    fn neg(mut self) -> Poly {
+        for (_, c) in &mut self.terms {
+            *c = -std::mem::replace(c, Int::Small(0));
+        }
+        self
+    }
+}
+
+/// Balanced pairwise summation: adding k polynomials of N terms in all
+/// costs O(N log k) term moves, where a left fold `acc + p` costs O(N k)
+/// (every addition merges the whole accumulator).
+///
+/// ```
+/// use exact_bezier::Poly;
+/// let x = Poly::var("x");
+/// let s: Poly = (0..4).map(|k| x.pow(k)).sum();
+/// assert_eq!(s, Poly::from_int(1) + x.clone() + x.pow(2) + x.pow(3));
+/// ```
+impl std::iter::Sum for Poly {
+    fn sum<I: Iterator<Item = Poly>>(iter: I) -> Poly {
+        let mut level: Vec<Poly> = iter.collect();
+        while level.len() > 1 {
+            let mut pairs = level.into_iter();
+            level = Vec::new();
+            while let Some(a) = pairs.next() {
+                level.push(match pairs.next() {
+                    Some(b) => a + b,
+                    None => a,
+                });
+            }
+        }
+        level.pop().unwrap_or_else(Poly::zero)
+    }
+}
+
+impl Scalar for Poly {
+    fn from_i64(n: i64) -> Self {
+        Poly::from_int(n)
+    }
+    fn from_rational(q: &BigRational) -> Self {
+        Poly::constant(q.clone())
+    }
+}
+
+impl fmt::Debug for Poly {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Poly({self})")
+    }
+}
+
+/// Deterministic display order of a monomial: by variable name, then by
+/// descending exponent (independent of interning order).
+fn sort_key(m: &Monomial) -> Vec<(String, i64)> {
+    let mut key: Vec<(String, i64)> = m
+        .factors()
+        .map(|(v, e)| (name_of(v), -i64::from(e)))
+        .collect();
+    key.sort();
+    key
+}
+
+/// Readable form: terms by descending total degree, then by variable order;
+/// `3/2*a^2*b - a + 1`.
+impl fmt::Display for Poly {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.terms.is_empty() {
+            return write!(f, "0");
+        }
+        let mut terms: Vec<(&Monomial, BigRational)> = self
+            .terms
+            .iter()
+            .map(|(m, c)| (m, self.rational(c)))
+            .collect();
+        terms.sort_by(|a, b| {
+            b.0.total_degree().cmp(&a.0.total_degree()).then_with(|| {
+                // Higher powers of alphabetically earlier variables first.
+                sort_key(a.0).cmp(&sort_key(b.0))
+            })
+        });
+        for (k, (m, c)) in terms.into_iter().enumerate() {
+            let negative = c.is_negative();
+            let mag = c.abs();
+            match (k, negative) {
+                (0, true) => write!(f, "-")?,
+                (0, false) => {}
+                (_, true) => write!(f, " - ")?,
+                (_, false) => write!(f, " + ")?,
+            }
+            let vars: Vec<String> = sort_key(m)
+                .into_iter()
+                .map(|(v, e)| if e == -1 { v } else { format!("{v}^{}", -e) })
+                .collect();
+            if vars.is_empty() {
+                write!(f, "{mag}")?;
+            } else if mag.is_one() {
+                write!(f, "{}", vars.join("*"))?;
+            } else {
+                write!(f, "{}*{}", mag, vars.join("*"))?;
+            }
+        }
+        Ok(())
+    }
+}
+
+impl Poly {
+    /// The partial derivative `∂/∂name` (0 if `name` does not occur).
+    ///
+    /// ```
+    /// use exact_bezier::Poly;
+    /// let (x, y) = (Poly::var("x"), Poly::var("y"));
+    /// let p = x.pow(3) * &y + y.clone();
+    /// assert_eq!(p.derivative("x"), Poly::from_int(3) * x.pow(2) * &y);
+    /// ```
+    pub fn derivative(&self, name: &str) -> Poly {
+        let id = intern(name);
+        // Lowering the exponent of one variable in every monomial that has
+        // it keeps their order.
+        let terms = self
+            .terms
+            .iter()
+            .filter_map(|(m, c)| {
+                let e = m.exponent(id);
+                (e > 0).then(|| (m.with_exponent(id, e - 1), mul(c, &Int::Small(e.into()))))
+            })
+            .collect();
+        Poly::normalized(terms, self.den.clone())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::scalar::ratio;
+
+    #[test]
+    fn ring_laws_on_samples() {
+        let (x, y, z) = (Poly::var("x"), Poly::var("y"), Poly::var("z"));
+        let a = x.clone() * &y - Poly::from_int(3);
+        let b = y.pow(3) + x.clone();
+        let c = z.clone() - x.clone() * ratio::<Poly>(1, 2);
+        assert_eq!(a.clone() * &b, b.clone() * &a);
+        assert_eq!((a.clone() + &b) * &c, a.clone() * &c + b.clone() * &c);
+        assert_eq!(a.clone() - &a, Poly::zero());
+        assert_eq!((a.clone() * &b) * &c, a * (b * c));
+    }
+
+    #[test]
+    fn degree_and_coefficients() {
+        let (x, y) = (Poly::var("x"), Poly::var("y"));
+        let p = x.pow(3) * &y + x.clone() * y.pow(2);
+        assert_eq!(p.degree_in("x"), 3);
+        assert_eq!(p.degree_in("y"), 2);
+        assert_eq!(p.total_degree(), 4);
+        assert_eq!(p.coeff_of("y", 2), x);
+        assert!(p.as_constant().is_none());
+        assert_eq!(Poly::zero().as_constant(), Some(BigRational::zero()));
+    }
+
+    #[test]
+    fn substitution_composes() {
+        let (x, t) = (Poly::var("x"), Poly::var("t"));
+        let p = x.pow(2) - x.clone();
+        let q = p.subst("x", &(t.clone() * ratio::<Poly>(2, 1)));
+        assert_eq!(
+            q,
+            t.pow(2) * Poly::from_int(4) - t.clone() * Poly::from_int(2)
+        );
+        assert_eq!(q.subst_rational("t", &ratio(1, 2)), Poly::zero());
+    }
+
+    #[test]
+    fn display_is_readable() {
+        let (a, b) = (Poly::var("α2"), Poly::var("α1"));
+        let p = -(a.pow(3)) * &b + a.clone() * ratio::<Poly>(1, 3) - Poly::from_int(1);
+        assert_eq!(p.to_string(), "-α1*α2^3 + 1/3*α2 - 1");
+        assert_eq!(Poly::zero().to_string(), "0");
+    }
+
+    mod laws {
+        //! Ring laws, substitution, reduction and derivative on random
+        //! polynomials, cross-checked against evaluation in `BigRational`
+        //! (an independent path: no merge, no heap).
+        use super::*;
+        use proptest::prelude::*;
+
+        const VARS: [&str; 3] = ["x", "y", "z"];
+
+        /// A polynomial with up to 6 terms, exponents ≤ 3, coefficients
+        /// n/d with |n| ≤ 40 (sometimes far beyond i128 after products).
+        fn poly() -> impl Strategy<Value = Poly> {
+            let term = (-40i64..=40, 1i64..=6, [0u32..=3, 0u32..=3, 0u32..=3]);
+            proptest::collection::vec(term, 0..6).prop_map(|terms| {
+                terms.into_iter().fold(Poly::zero(), |acc, (n, d, e)| {
+                    let m = VARS
+                        .iter()
+                        .zip(e)
+                        .fold(ratio::<Poly>(n, d), |m, (v, k)| m * Poly::var(v).pow(k));
+                    acc + m
+                })
+            })
+        }
+
+        fn point() -> impl Strategy<Value = Vec<(&'static str, BigRational)>> {
+            [
+                (-9i64..=9, 1i64..=5),
+                (-9i64..=9, 1i64..=5),
+                (-9i64..=9, 1i64..=5),
+            ]
+            .prop_map(|v| {
+                VARS.iter()
+                    .zip(v)
+                    .map(|(n, (a, b))| (*n, ratio(a, b)))
+                    .collect()
+            })
+        }
+
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(64))]
+
+            #[test]
+            fn ring_laws(a in poly(), b in poly(), c in poly()) {
+                prop_assert_eq!(a.clone() * &b, b.clone() * &a);
+                prop_assert_eq!((a.clone() * &b) * &c, a.clone() * (b.clone() * &c));
+                prop_assert_eq!((a.clone() + &b) * &c, a.clone() * &c + b.clone() * &c);
+                prop_assert_eq!((a.clone() + &b) - &b, a.clone());
+                prop_assert_eq!(a.clone() + (-a.clone()), Poly::zero());
+            }
+
+            #[test]
+            fn evaluation_is_a_homomorphism(a in poly(), b in poly(), at in point()) {
+                let ev = |p: &Poly| p.eval(&at).expect("every variable has a value");
+                prop_assert_eq!(ev(&(a.clone() * &b)), ev(&a) * ev(&b));
+                prop_assert_eq!(ev(&(a.clone() - &b)), ev(&a) - ev(&b));
+                prop_assert_eq!(ev(&a.pow(3)), num_traits::pow(ev(&a), 3));
+            }
+
+            #[test]
+            fn substitution_and_derivative(a in poly(), b in poly(), at in point()) {
+                let ev = |p: &Poly| p.eval(&at).expect("every variable has a value");
+                // a(x := b) at the point is a at (b(point), y, z).
+                let mut moved = at.clone();
+                moved[0].1 = ev(&b);
+                prop_assert_eq!(ev(&a.subst("x", &b)), a.eval(&moved).expect("values"));
+                // Leibniz rule.
+                let d = |p: &Poly| p.derivative("y");
+                prop_assert_eq!(d(&(a.clone() * &b)), d(&a) * &b + a.clone() * &d(&b));
+            }
+
+            #[test]
+            fn reduce_power_is_a_normal_form(a in poly(), q in poly(), r in poly()) {
+                // Relation x² = r with r of degree < 2 in x.
+                let r = r.coeff_of("x", 0) + r.coeff_of("x", 1) * Poly::var("x");
+                let rel = Poly::var("x").pow(2) - &r;
+                let red = a.reduce_power("x", 2, &r);
+                prop_assert!(red.degree_in("x") < 2);
+                prop_assert_eq!((a.clone() + q * &rel).reduce_power("x", 2, &r), red);
+            }
+        }
+    }
+}

@@ -1,0 +1,456 @@
+//! [`RationalCurve`]: rational Bézier curves of any degree and dimension, in
+//! homogeneous form, generic over the scalar.
+//!
+//! Conventions: parameter `t ∈ [0, 1]`; control points `P_0 … P_n` with
+//! weights `w_0 … w_n`, stored as homogeneous points `(w_i·P_i, w_i)`;
+//!
+//! ```text
+//! X(t) = Σ w_i P_i B_{i,n}(t) / Σ w_i B_{i,n}(t)
+//! ```
+//!
+//! A polynomial curve is the case of all weights 1.
+//!
+//! Reference: source 001 (lecture) for the Bézier curve and its algorithms;
+//! source 000 (Yang & Yong) eqs (2)–(5) for the Möbius map and weight scaling.
+
+pub(crate) mod circle;
+pub(crate) mod deriv;
+pub(crate) mod geometry;
+pub(crate) mod join;
+pub(crate) mod reduction;
+
+pub use circle::{circle_of, integer_coords, Circle, NotCircle};
+pub use deriv::forward_differences;
+pub use geometry::{cross_norm_sq, ConicType, CurveEnd};
+pub use join::{g2_leading_points, join, Join};
+pub use reduction::Reduction;
+
+use crate::algebra::scalar::{ratio, Field, Ordered, Scalar, Tolerance};
+use crate::error::Error;
+use crate::hpoint::{check_positive_weights, de_casteljau, de_casteljau_hom, HPoint};
+
+/// A rational Bézier curve `X(t) = Σ w_i P_i B_{i,n}(t) / Σ w_i B_{i,n}(t)`.
+///
+/// # Examples
+///
+/// The lecture's quiz (source 001): the cubic with control points (10,0),
+/// (30,60), (130,60), (190,0) at t = 1/2 is (85, 45).
+///
+/// ```
+/// use exact_bezier::{RationalCurve, ratio};
+/// use num_rational::BigRational;
+/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+/// let c = RationalCurve::polynomial(vec![p(10, 0), p(30, 60), p(130, 60), p(190, 0)]).unwrap();
+/// assert_eq!(c.eval(&ratio(1, 2)).unwrap(), p(85, 45));
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct RationalCurve<T> {
+    ctrl: Vec<HPoint<T>>,
+}
+
+/// # Construction and access
+impl<T: Scalar> RationalCurve<T> {
+    /// The curve with control points `points` and weights `weights`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Shape`] if there are no points, the counts differ, or the
+    /// points differ in dimension; [`Error::Weight`] if a weight is zero.
+    pub fn new(points: Vec<Vec<T>>, weights: Vec<T>) -> Result<Self, Error> {
+        if points.len() != weights.len() {
+            return Err(Error::Shape(format!(
+                "a degree {} curve needs {} weights, not {}",
+                points.len().saturating_sub(1),
+                points.len(),
+                weights.len()
+            )));
+        }
+        if let Some(i) = weights.iter().position(|w| w.is_zero()) {
+            return Err(Error::Weight {
+                index: format!("w_{i}"),
+                value: "0".into(),
+            });
+        }
+        let ctrl = points
+            .iter()
+            .zip(&weights)
+            .map(|(p, w)| HPoint::from_point(p, w))
+            .collect();
+        Self::from_hom(ctrl)
+    }
+
+    /// The polynomial curve (all weights 1) with control points `points`.
+    ///
+    /// # Errors
+    ///
+    /// As [`RationalCurve::new`].
+    pub fn polynomial(points: Vec<Vec<T>>) -> Result<Self, Error> {
+        let weights = vec![T::one(); points.len()];
+        Self::new(points, weights)
+    }
+
+    /// The curve with homogeneous control points `(w_i·P_i, w_i)`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Shape`] if there are no points or they differ in length.
+    pub fn from_hom(ctrl: Vec<HPoint<T>>) -> Result<Self, Error> {
+        let Some(first) = ctrl.first() else {
+            return Err(Error::Shape(
+                "a curve needs at least one control point".into(),
+            ));
+        };
+        let len = first.coords.len();
+        if len < 2 {
+            return Err(Error::Shape(
+                "control points need at least one coordinate".into(),
+            ));
+        }
+        if let Some(i) = ctrl.iter().position(|p| p.coords.len() != len) {
+            return Err(Error::Shape(format!(
+                "control point P_{i} has dimension {}, P_0 has {}",
+                ctrl[i].coords.len() - 1,
+                len - 1
+            )));
+        }
+        Ok(RationalCurve { ctrl })
+    }
+
+    /// The curve with homogeneous control points known to be well formed
+    /// (non-empty, equal lengths ≥ 2): the crate's algorithms build these.
+    pub(crate) fn from_ctrl(ctrl: Vec<HPoint<T>>) -> Self {
+        debug_assert!(
+            !ctrl.is_empty() && ctrl.iter().all(|p| p.coords.len() == ctrl[0].coords.len())
+        );
+        RationalCurve { ctrl }
+    }
+
+    /// The same curve over another scalar type, coordinate by coordinate
+    /// (e.g. `BigRational` → `f64` with [`Ordered::to_f64`], or → `Poly`).
+    pub fn map<U: Scalar>(&self, f: impl Fn(&T) -> U) -> RationalCurve<U> {
+        RationalCurve {
+            ctrl: self.ctrl.iter().map(|p| p.map(&f)).collect(),
+        }
+    }
+
+    /// The degree `n` (number of control points less one).
+    pub fn degree(&self) -> usize {
+        self.ctrl.len() - 1
+    }
+
+    /// The spatial dimension of the control points.
+    pub fn dim(&self) -> usize {
+        self.ctrl[0].dim()
+    }
+
+    /// The homogeneous control points `(w_i·P_i, w_i)`.
+    pub fn ctrl(&self) -> &[HPoint<T>] {
+        &self.ctrl
+    }
+
+    /// The weights `w_0 … w_n`.
+    pub fn weights(&self) -> Vec<T> {
+        self.ctrl.iter().map(|p| p.weight().clone()).collect()
+    }
+
+    /// Are all weights equal (a polynomial curve up to uniform scaling)?
+    pub fn is_polynomial(&self, tol: Tolerance) -> bool {
+        let w0 = self.ctrl[0].weight();
+        self.ctrl
+            .iter()
+            .all(|p| (p.weight().clone() - w0).is_zero_within(tol))
+    }
+}
+
+/// # Evaluation, blossom, subdivision, elevation
+impl<T: Scalar> RationalCurve<T> {
+    /// The homogeneous point `(Σ w_i P_i B_{i,n}(t), Σ w_i B_{i,n}(t))` by de
+    /// Casteljau's algorithm. Exact for exact `T`; ring operations only.
+    pub fn eval_hom(&self, t: &T) -> HPoint<T> {
+        de_casteljau(&self.ctrl, t)
+    }
+
+    /// The homogeneous point at the homogeneous parameter `(a : b)`:
+    ///
+    /// ```text
+    /// Σ_i c_i C(n, i) a^{n−i} bⁱ = (a + b)ⁿ · H(b / (a + b))
+    /// ```
+    ///
+    /// where `c_i = (w_i P_i, w_i)` and `H` is [`RationalCurve::eval_hom`]
+    /// (`a = 1 − t, b = t` gives `H(t)`). de Casteljau with the step
+    /// `a·c_i + b·c_{i+1}`: ring operations only, no division, so a
+    /// parameter `u = N/D` is evaluated as `(D − N : N)` without fractions.
+    ///
+    /// ```
+    /// use exact_bezier::{RationalCurve, ratio};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+    /// let c = RationalCurve::polynomial(vec![p(0), p(3), p(9)]).unwrap();
+    /// // (2 : 1) is t = 1/3, scaled by (2 + 1)² = 9.
+    /// let h = c.eval_hom_param(&ratio(2, 1), &ratio(1, 1));
+    /// assert_eq!(h, c.eval_hom(&ratio(1, 3)).scale(&ratio(9, 1)));
+    /// ```
+    pub fn eval_hom_param(&self, a: &T, b: &T) -> HPoint<T> {
+        de_casteljau_hom(&self.ctrl, a, b)
+    }
+
+    /// The blossom (polar form) `b[t_1, …, t_n]`: symmetric, affine in each
+    /// argument, and `b[t, …, t] = X(t)` (homogeneously); the control points
+    /// are `b[0^{n−i}, 1^i]` (dual functional property).
+    ///
+    /// Computed by de Casteljau with a different parameter at each level.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Shape`] unless exactly `n` arguments are given.
+    ///
+    /// ```
+    /// use exact_bezier::{RationalCurve, ratio};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+    /// let c = RationalCurve::polynomial(vec![p(0), p(3), p(9)]).unwrap();
+    /// // b[0, 1] is the middle control point.
+    /// assert_eq!(c.blossom(&[ratio(0, 1), ratio(1, 1)]).unwrap(), c.ctrl()[1]);
+    /// ```
+    pub fn blossom(&self, args: &[T]) -> Result<HPoint<T>, Error> {
+        if args.len() != self.degree() {
+            return Err(Error::Shape(format!(
+                "the blossom of a degree {} curve takes {} arguments, not {}",
+                self.degree(),
+                self.degree(),
+                args.len()
+            )));
+        }
+        let mut row = self.ctrl.clone();
+        for (level, t) in args.iter().enumerate() {
+            for i in 0..self.degree() - level {
+                row[i] = row[i].lerp(&row[i + 1], t);
+            }
+        }
+        Ok(row.swap_remove(0))
+    }
+
+    /// Split at `t` into the pieces over `[0, t]` and `[t, 1]`, each
+    /// reparameterized to `[0, 1]`, from the two edges of de Casteljau's
+    /// triangle. Exact for exact `T`.
+    pub fn subdivide(&self, t: &T) -> (Self, Self) {
+        let n = self.degree();
+        let mut row = self.ctrl.clone();
+        let mut left = Vec::with_capacity(n + 1);
+        let mut right = Vec::with_capacity(n + 1);
+        left.push(row[0].clone());
+        right.push(row[n].clone());
+        for k in (1..=n).rev() {
+            for i in 0..k {
+                row[i] = row[i].lerp(&row[i + 1], t);
+            }
+            left.push(row[0].clone());
+            right.push(row[k - 1].clone());
+        }
+        right.reverse();
+        (RationalCurve { ctrl: left }, RationalCurve { ctrl: right })
+    }
+
+    /// The piece over `[a, b]` reparameterized to `[0, 1]` (`a > b` gives the
+    /// reversed piece): control points `b[a^{n−i}, b^i]` from the blossom.
+    pub fn subsegment(&self, a: &T, b: &T) -> Self {
+        let n = self.degree();
+        let ctrl = (0..=n)
+            .map(|i| {
+                let mut args = vec![a.clone(); n - i];
+                args.extend(std::iter::repeat_n(b.clone(), i));
+                self.blossom(&args).expect("n arguments")
+            })
+            .collect();
+        RationalCurve { ctrl }
+    }
+
+    /// Raise the degree by `r`, keeping every point:
+    /// `P*_i = (i/(n+1)) P_{i−1} + (1 − i/(n+1)) P_i`, applied `r` times to
+    /// the homogeneous points (source 001, "升阶").
+    pub fn elevate(&self, r: usize) -> Self {
+        let mut ctrl = self.ctrl.clone();
+        for _ in 0..r {
+            ctrl = elevate_once(&ctrl);
+        }
+        RationalCurve { ctrl }
+    }
+
+    /// The same curve traversed backwards: `P*_i = P_{n−i}`, `X*(t) = X(1 − t)`.
+    pub fn reverse(&self) -> Self {
+        let mut ctrl = self.ctrl.clone();
+        ctrl.reverse();
+        RationalCurve { ctrl }
+    }
+
+    /// Linear Möbius reparameterization `u = (α − 1)s / (2αs − s − α)`
+    /// (source 000, eq. 2): control points unchanged, weights
+    /// `w̃_i = w_i (1 − α)^i α^{n−i}` (eq. 4, curve case). The new curve at
+    /// `s` is the old one at `u(s)` (see [`RationalCurve::mobius_param`]).
+    /// For a symbolic `α` the result is exact for all α.
+    ///
+    /// ```
+    /// use exact_bezier::{RationalCurve, ratio};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+    /// let c = RationalCurve::new(vec![p(0, 0), p(1, 2), p(3, 0)], vec![ratio(1, 1), ratio(2, 1), ratio(1, 1)]).unwrap();
+    /// let alpha = ratio(1, 3);
+    /// let m = c.mobius(&alpha);
+    /// let s = ratio(1, 4);
+    /// let u = RationalCurve::mobius_param(&alpha, &s).unwrap();
+    /// assert_eq!(m.eval(&s).unwrap(), c.eval(&u).unwrap());
+    /// ```
+    pub fn mobius(&self, alpha: &T) -> Self {
+        let beta = T::one() - alpha;
+        let ctrl = mobius_factors(alpha, &beta, self.degree())
+            .iter()
+            .zip(&self.ctrl)
+            .map(|(f, p)| p.scale(f))
+            .collect();
+        RationalCurve { ctrl }
+    }
+
+    /// Multiply every weight by `k` (source 000, eq. 5): the curve is unchanged.
+    pub fn scale_weights(&self, k: &T) -> Self {
+        RationalCurve {
+            ctrl: self.ctrl.iter().map(|p| p.scale(k)).collect(),
+        }
+    }
+}
+
+/// The Möbius weight factors `(1 − α)^i α^{n−i}`, `i = 0…n` (source 000, eq. 4),
+/// given `alpha` and `one_minus_alpha`.
+pub fn mobius_factors<T: Scalar>(alpha: &T, one_minus_alpha: &T, n: usize) -> Vec<T> {
+    (0..=n)
+        .map(|i| one_minus_alpha.pow_u32(i as u32) * alpha.pow_u32((n - i) as u32))
+        .collect()
+}
+
+/// One degree elevation of a row of homogeneous points:
+/// `P*_i = (i/(n+1)) P_{i−1} + (1 − i/(n+1)) P_i`, `i = 0…n+1`.
+pub(crate) fn elevate_once<T: Scalar>(ctrl: &[HPoint<T>]) -> Vec<HPoint<T>> {
+    let n = ctrl.len() - 1;
+    let mut out = Vec::with_capacity(n + 2);
+    out.push(ctrl[0].clone());
+    for i in 1..=n {
+        let a = ratio::<T>(i as i64, n as i64 + 1);
+        let b = T::one() - &a;
+        out.push(ctrl[i - 1].combine(&a, &ctrl[i], &b));
+    }
+    out.push(ctrl[n].clone());
+    out
+}
+
+/// # Cartesian results (division at the end)
+impl<T: Field> RationalCurve<T> {
+    /// The Cartesian point `X(t)`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::PointAtInfinity`] if the weight function vanishes at `t`.
+    pub fn eval(&self, t: &T) -> Result<Vec<T>, Error> {
+        self.eval_hom(t).project()
+    }
+
+    /// The Cartesian control points `P_i`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::PointAtInfinity`] if a weight is zero.
+    pub fn points(&self) -> Result<Vec<Vec<T>>, Error> {
+        self.ctrl.iter().map(HPoint::project).collect()
+    }
+
+    /// The Möbius parameter map `u(s) = (α − 1)s / (2αs − s − α)` of
+    /// source 000 eq. (2).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Domain`] when the denominator `2αs − s − α` is zero.
+    pub fn mobius_param(alpha: &T, s: &T) -> Result<T, Error> {
+        let one = T::one();
+        let two = T::from_i64(2);
+        let den = two * alpha * s - s - alpha;
+        if den.is_zero() {
+            return Err(Error::Domain(format!(
+                "Möbius map with α = {alpha:?} has a pole at s = {s:?}"
+            )));
+        }
+        Ok((alpha.clone() - &one) * s / &den)
+    }
+}
+
+/// # Validation of weights
+impl<T: Ordered> RationalCurve<T> {
+    /// Check that every weight is positive (the CAD convention; negative
+    /// weights put poles inside the parameter interval).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Weight`] naming the first non-positive weight.
+    pub fn check_positive_weights(&self) -> Result<(), Error> {
+        check_positive_weights(std::slice::from_ref(&self.ctrl), |_, i| i.to_string())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::samples::cubic as sample;
+    use num_rational::BigRational;
+
+    type Q = BigRational;
+
+    #[test]
+    fn subdivision_keeps_points() {
+        let c = sample();
+        let t = ratio::<Q>(2, 5);
+        let (l, r) = c.subdivide(&t);
+        for k in 0..=6 {
+            let s = ratio::<Q>(k, 6);
+            assert_eq!(l.eval(&s).unwrap(), c.eval(&(s.clone() * &t)).unwrap());
+            let u = t.clone() + s.clone() * (ratio::<Q>(1, 1) - &t);
+            assert_eq!(r.eval(&s).unwrap(), c.eval(&u).unwrap());
+        }
+    }
+
+    #[test]
+    fn elevation_and_reversal_keep_points() {
+        let c = sample();
+        let e = c.elevate(3);
+        assert_eq!(e.degree(), 6);
+        let rv = c.reverse();
+        for k in 0..=5 {
+            let s = ratio::<Q>(k, 5);
+            assert_eq!(e.eval(&s).unwrap(), c.eval(&s).unwrap());
+            assert_eq!(
+                rv.eval(&s).unwrap(),
+                c.eval(&(ratio::<Q>(1, 1) - &s)).unwrap()
+            );
+        }
+    }
+
+    #[test]
+    fn subsegment_matches_blossom_ends() {
+        let c = sample();
+        let (a, b) = (ratio::<Q>(1, 4), ratio::<Q>(3, 4));
+        let seg = c.subsegment(&a, &b);
+        assert_eq!(seg.eval(&ratio(0, 1)).unwrap(), c.eval(&a).unwrap());
+        assert_eq!(
+            seg.eval(&ratio(1, 2)).unwrap(),
+            c.eval(&ratio(1, 2)).unwrap()
+        );
+        assert_eq!(seg.eval(&ratio(1, 1)).unwrap(), c.eval(&b).unwrap());
+    }
+
+    #[test]
+    fn shape_errors_are_typed() {
+        let p = vec![vec![ratio::<Q>(0, 1)], vec![ratio(1, 1), ratio(2, 1)]];
+        assert!(matches!(RationalCurve::polynomial(p), Err(Error::Shape(_))));
+        assert!(matches!(
+            RationalCurve::<Q>::new(vec![vec![ratio(0, 1)]], vec![ratio(0, 1)]),
+            Err(Error::Weight { .. })
+        ));
+        assert!(RationalCurve::<Q>::polynomial(vec![]).is_err());
+    }
+}
