@@ -39,6 +39,9 @@ pub enum Error {
     /// limit (see [`crate::limits`] and `docs/limits.md`); the message names
     /// the limit and how to raise it.
     Limit(String),
+    /// A file or stream could not be read (a missing file, no permission,
+    /// an I/O failure); the message names the file and the reason.
+    Io(String),
 }
 
 /// The largest degree (per parameter) accepted from input: 64.
@@ -62,6 +65,7 @@ impl fmt::Display for Error {
             Error::PointAtInfinity => write!(f, "point at infinity: the weight is zero"),
             Error::NotRational(m) => write!(f, "no exact rational answer: {m}"),
             Error::Limit(m) => write!(f, "over a limit: {m}"),
+            Error::Io(m) => write!(f, "{m}"),
         }
     }
 }

@@ -113,7 +113,7 @@ fn json_pieces(v: &Value, element: Option<usize>) -> Result<Vec<Piece>, Error> {
 pub fn read_model(mut input: impl BufRead) -> Result<Model, Error> {
     let head = input
         .fill_buf()
-        .map_err(|e| Error::Format(format!("cannot read the input: {e}")))?;
+        .map_err(|e| Error::Io(format!("cannot read the input: {e}")))?;
     let text_start = String::from_utf8_lossy(&head[..head.len().min(64)]).into_owned();
     if text_start.trim_start().starts_with("ISO-10303-21") {
         let step = read_step(input)?;
@@ -139,7 +139,7 @@ pub fn read_model(mut input: impl BufRead) -> Result<Model, Error> {
     let mut text = String::new();
     input
         .read_to_string(&mut text)
-        .map_err(|e| Error::Format(format!("cannot read the input: {e}")))?;
+        .map_err(|e| Error::Io(format!("cannot read the input: {e}")))?;
     let v = parse_json(&text)?;
     let pieces = match &v {
         Value::Array(items) => {

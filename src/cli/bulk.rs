@@ -63,7 +63,7 @@ impl BulkArgs {
             (super::stdin_reader(), None)
         } else {
             let f = std::fs::File::open(&self.file)
-                .map_err(|e| Error::Format(format!("cannot read {}: {e}", self.file)))?;
+                .map_err(|e| Error::Io(format!("cannot read {}: {e}", self.file)))?;
             let size = f.metadata().ok().map(|m| m.len());
             (Box::new(f), size)
         };

@@ -86,7 +86,7 @@ impl Cli {
 /// Which scalar a command computes with.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum, Default)]
 pub enum ScalarKind {
-    /// Exact rationals (default).
+    /// Exact rationals.
     #[default]
     Exact,
     /// IEEE double precision.
@@ -471,7 +471,7 @@ fn read_limited(r: impl Read, what: &str) -> Result<String, Error> {
     let mut bytes = Vec::new();
     r.take(max.saturating_add(1))
         .read_to_end(&mut bytes)
-        .map_err(|e| Error::Format(format!("cannot read {what}: {e}")))?;
+        .map_err(|e| Error::Io(format!("cannot read {what}: {e}")))?;
     limits::check_input_bytes(bytes.len() as u64)?;
     String::from_utf8(bytes).map_err(|_| Error::Format(format!("{what} is not UTF-8 text")))
 }
@@ -483,8 +483,8 @@ pub(crate) fn read_input(path: &str) -> Result<String, Error> {
         read_limited(stdin_reader(), "standard input")
     } else {
         let what = format!("{path:?}");
-        let file = std::fs::File::open(path)
-            .map_err(|e| Error::Format(format!("cannot read {what}: {e}")))?;
+        let file =
+            std::fs::File::open(path).map_err(|e| Error::Io(format!("cannot read {what}: {e}")))?;
         read_limited(file, &what)
     }
 }
@@ -495,8 +495,8 @@ pub(crate) fn open_input(path: &str) -> Result<Box<dyn std::io::BufRead>, Error>
     if path == "-" {
         return Ok(Box::new(std::io::BufReader::new(stdin_reader())));
     }
-    let f = std::fs::File::open(path)
-        .map_err(|e| Error::Format(format!("cannot read {path:?}: {e}")))?;
+    let f =
+        std::fs::File::open(path).map_err(|e| Error::Io(format!("cannot read {path:?}: {e}")))?;
     Ok(Box::new(std::io::BufReader::with_capacity(1 << 16, f)))
 }
 

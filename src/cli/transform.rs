@@ -11,22 +11,19 @@ use serde_json::Value;
 
 /// Arguments of `reparam`.
 #[derive(clap::Args, Debug)]
+#[command(group(clap::ArgGroup::new("map").required(true).args(["mobius", "quadratic"])))]
 pub struct ReparamArgs {
     /// Input file (JSON), or - for standard input.
     file: String,
     /// Linear Möbius map u = (α−1)s/(2αs−s−α): ALPHA for a curve, ALPHA,BETA
     /// for a rect patch; each strictly between 0 and 1.
-    #[arg(
-        long,
-        conflicts_with = "quadratic",
-        required_unless_present = "quadratic"
-    )]
+    #[arg(long, group = "map")]
     mobius: Option<String>,
     /// Quadratic map of a rect patch (source 000, eqs 9-17), the paper's
     /// convention: α(t) = α1·t + α2·(1−t) in u(s,t), β(s) = β1·s + β2·(1−s)
     /// in v(s,t); A1,A2,B1,B2 each strictly between 0 and 1. The result has
     /// bidegree (m+n, m+n).
-    #[arg(long)]
+    #[arg(long, group = "map")]
     quadratic: Option<String>,
     /// Scalar to compute with.
     #[arg(long, value_enum, default_value_t)]

@@ -432,10 +432,21 @@ pub fn patch_from_value_as<T: ExactNumber>(v: &Value) -> Result<Patch<T>, Error>
         "curve" => read_curve(obj).map(Patch::Curve),
         "rect" => read_rect(obj).map(Patch::Rect),
         "tri" => read_tri(obj).map(Patch::Tri),
-        other => Err(Error::Format(format!(
-            "unknown kind {other:?} (expected \"curve\", \"rect\" or \"tri\")"
-        ))),
+        other => Err(Error::Format(unknown_kind(other))),
     }
+}
+
+/// The message for a `"kind"` this reader does not take: every kind of the
+/// format (docs/FORMAT.md), and where the other readers are.
+fn unknown_kind(kind: &str) -> String {
+    let elsewhere = match kind {
+        "trig-curve" | "trig-rect" => " (a trigonometric patch: read it with `io::read_trig_patches`; CLI `eval`, `convert --to rational`)",
+        "nurbs-curve" | "nurbs-surface" => " (a NURBS: read it with `nurbs::read_nurbs`; CLI `convert --to bezier`)",
+        _ => "",
+    };
+    format!(
+        "kind {kind:?} is not a Bézier patch kind{elsewhere}; the kinds are \"curve\", \"rect\", \"tri\", \"trig-curve\", \"trig-rect\", \"nurbs-curve\" and \"nurbs-surface\", in lower case"
+    )
 }
 
 /// Parse JSON text exactly (numbers keep their full text).
@@ -662,7 +673,10 @@ mod tests {
                 r#"{"kind":"tri","points":[[[0],[1]],[[2]],[[3]]]}"#,
                 "row 0",
             ),
-            (r#"{"kind":"blob","points":[]}"#, "unknown kind"),
+            (
+                r#"{"kind":"blob","points":[]}"#,
+                "is not a Bézier patch kind",
+            ),
             (
                 r#"{"kind":"curve","points":[["NaN"]]}"#,
                 "not an exact number",

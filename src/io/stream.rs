@@ -91,7 +91,7 @@ pub fn for_each_chunk<R: BufRead>(
 }
 
 fn read_error(e: std::io::Error) -> Error {
-    Error::Format(format!("cannot read the input: {e}"))
+    Error::Io(format!("cannot read the input: {e}"))
 }
 
 /// Skip leading whitespace; the first other byte, left unread.

@@ -93,7 +93,7 @@ impl<R: BufRead> Reader<R> {
             let buf = self
                 .input
                 .fill_buf()
-                .map_err(|e| Error::Format(format!("cannot read the STEP file: {e}")))?;
+                .map_err(|e| Error::Io(format!("cannot read the STEP file: {e}")))?;
             if buf.is_empty() {
                 let rest = String::from_utf8_lossy(&out).trim().to_owned();
                 return if rest.is_empty() {
