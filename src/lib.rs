@@ -58,7 +58,7 @@
 //! | feature | default | what it adds |
 //! | --- | --- | --- |
 //! | `cli` | yes | the `exact-bezier` binary (turns on `render`) |
-//! | `serde` | yes | `serde` for curves, patches and results, in the JSON format of [`io`] |
+//! | `serde` | yes | `serde` for curves and patches (Bézier, trigonometric, NURBS) and results (coincidence, standard forms), in the JSON format of [`io`]; `FromStr` from that text |
 //! | `render` | with `cli` | `render`: SVG/PNG plots and OBJ/STL/PLY meshes |
 //! | `proptest` | no | `strategy`: proptest strategies for curves and patches |
 //! | `mint` | no | [`coords`]: control points from `mint` points |

@@ -1,5 +1,6 @@
-//! `serde` for curves, patches and coincidence results (feature `serde`),
-//! and `FromStr` from the JSON text.
+//! `serde` for curves, patches (Bézier, trigonometric, NURBS) and results
+//! (coincidence with its witness, standard forms) (feature `serde`), and
+//! `FromStr` from the JSON text.
 //!
 //! Serialization goes through the interchange code of the command line
 //! (`patch_to_json` and `patch_from_value`). So the serde form is, by
@@ -21,7 +22,12 @@
 use crate::algebra::scalar::Field;
 use crate::coincide::Coincidence;
 use crate::error::Error;
-use crate::io::{patch_from_value, patch_to_json, read_patches, JsonScalar, Patch};
+use crate::io::{
+    patch_from_value_as, patch_to_json, read_patches_as, trig_patch_from_value, trig_patch_to_json,
+    ExactNumber, JsonScalar, Patch, TrigPatch,
+};
+use crate::nurbs::{nurbs_to_json, read_nurbs, Nurbs};
+use crate::reparam::standard::Standard;
 use crate::{RationalCurve, RectPatch, TriPatch};
 use num_rational::BigRational;
 use serde::de::Error as _;
@@ -36,18 +42,20 @@ impl<T: JsonScalar + Field> Serialize for Patch<T> {
     }
 }
 
-impl<'de> Deserialize<'de> for Patch<BigRational> {
+/// Exact numbers: rationals (`BigRational`) or real algebraic numbers
+/// (`RealAlgebraic`, text grammar of docs/algebraic_numbers.md).
+impl<'de, T: ExactNumber> Deserialize<'de> for Patch<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        patch_from_value(&Value::deserialize(d)?).map_err(D::Error::custom)
+        patch_from_value_as(&Value::deserialize(d)?).map_err(D::Error::custom)
     }
 }
 
 /// The one patch of a JSON text: an object, or an array of exactly one.
-impl FromStr for Patch<BigRational> {
+impl<T: ExactNumber> FromStr for Patch<T> {
     type Err = Error;
 
     fn from_str(text: &str) -> Result<Self, Error> {
-        let mut patches = read_patches(text)?;
+        let mut patches = read_patches_as(text)?;
         if patches.len() != 1 {
             return Err(Error::Shape(format!(
                 "expected one curve or patch, found {}",
@@ -68,7 +76,7 @@ macro_rules! patch_kind_serde {
             }
         }
 
-        impl<'de> Deserialize<'de> for $ty<BigRational> {
+        impl<'de, T: ExactNumber> Deserialize<'de> for $ty<T> {
             fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
                 match Patch::deserialize(d)? {
                     Patch::$variant(p) => Ok(p),
@@ -81,11 +89,11 @@ macro_rules! patch_kind_serde {
             }
         }
 
-        impl FromStr for $ty<BigRational> {
+        impl<T: ExactNumber> FromStr for $ty<T> {
             type Err = Error;
 
             fn from_str(text: &str) -> Result<Self, Error> {
-                match text.parse::<Patch<BigRational>>()? {
+                match text.parse::<Patch<T>>()? {
                     Patch::$variant(p) => Ok(p),
                     other => Err(Error::Format(format!(
                         "expected kind \"{}\", found \"{}\"",
@@ -106,5 +114,108 @@ patch_kind_serde!(TriPatch, Tri, "tri");
 impl<T: JsonScalar> Serialize for Coincidence<T> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         self.to_json().serialize(s)
+    }
+}
+
+/// `{"kind": "trig-curve" | "trig-rect", "alpha", "points"}` (source 002).
+impl<T: JsonScalar> Serialize for TrigPatch<T> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        trig_patch_to_json(self).serialize(s)
+    }
+}
+
+impl<'de> Deserialize<'de> for TrigPatch<BigRational> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        trig_patch_from_value(&Value::deserialize(d)?).map_err(D::Error::custom)
+    }
+}
+
+/// `{"kind": "nurbs-curve" | "nurbs-surface", "degree", "knots", "points",
+/// "weights"}` ([`nurbs_to_json`]).
+impl Serialize for Nurbs {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        nurbs_to_json(self).serialize(s)
+    }
+}
+
+/// One NURBS object of our layout (a geomdl file may hold several: read it
+/// with [`read_nurbs`]).
+impl<'de> Deserialize<'de> for Nurbs {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let mut all = read_nurbs(&Value::deserialize(d)?).map_err(D::Error::custom)?;
+        match all.len() {
+            1 => Ok(all.swap_remove(0)),
+            n => Err(D::Error::custom(format!(
+                "expected one NURBS object, found {n}"
+            ))),
+        }
+    }
+}
+
+/// The `standardize` command's object ([`Standard::to_json`]).
+impl<P: Clone + Into<Patch<T>>, T: JsonScalar + Field> Serialize for Standard<P, T> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        self.to_json().map_err(S::Error::custom)?.serialize(s)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::RealAlgebraic;
+    use crate::reparam::standard::standardize_curve_algebraic;
+
+    fn round_trip<X: Serialize + for<'de> Deserialize<'de> + PartialEq + std::fmt::Debug>(x: &X) {
+        let text = serde_json::to_string(x).unwrap();
+        assert_eq!(&serde_json::from_str::<X>(&text).unwrap(), x, "{text}");
+    }
+
+    #[test]
+    fn trig_and_nurbs_round_trip() {
+        let trig = r#"{"kind": "trig-rect", "alpha": ["1/2", 2],
+            "points": [[[0,0,0],[1,0,0],[2,0,0],[3,0,1]], [[0,1,0],[1,1,1],[2,1,0],[3,1,0]],
+                       [[0,2,0],[1,2,0],[2,2,"1/3"],[3,2,0]], [[0,3,0],[1,3,0],[2,3,0],[3,3,0]]]}"#;
+        round_trip(&serde_json::from_str::<TrigPatch<BigRational>>(trig).unwrap());
+        let nurbs = r#"{"kind": "nurbs-surface", "degree": [1, 2], "knots": [[0, 0, 1, 1], [0, 0, 0, "1/3", 1, 1, 1]],
+            "points": [[[0,0],[0,1],[0,2],[0,3]], [[1,0],[1,1],[1,2],[1,"7/2"]]],
+            "weights": [[1,2,1,1], [1,1,"1/2",1]]}"#;
+        round_trip(&serde_json::from_str::<Nurbs>(nurbs).unwrap());
+        let err = serde_json::from_str::<Nurbs>(
+            r#"{"kind": "nurbs-curve", "degree": 1, "knots": [0, 0, 1, 1],
+            "points": [[0], [1]], "weights": [1, 0]}"#,
+        )
+        .unwrap_err();
+        assert!(err.to_string().contains("weight"), "{err}");
+    }
+
+    #[test]
+    fn algebraic_patches_and_standard_forms_serialize() {
+        let c: RationalCurve<RealAlgebraic> =
+            r#"{"kind": "curve", "points": [[0, 0], ["sqrt(2)", 1], [2, 0]], "weights": [1, "1/2", 2]}"#
+                .parse()
+                .unwrap();
+        round_trip(&c);
+        // End weights 1 and 2 of a quadratic: α = 1/(1 + √2), an irrational map.
+        let rational: RationalCurve<BigRational> =
+            r#"{"kind": "curve", "points": [[0, 0], [1, 1], [2, 0]], "weights": [1, "1/2", 2]}"#
+                .parse()
+                .unwrap();
+        let s = standardize_curve_algebraic(&rational).unwrap();
+        let v = serde_json::to_value(&s).unwrap();
+        assert_eq!(v, s.to_json().unwrap());
+        assert_eq!(v["exact"], true);
+        let w = &v["patch"]["weights"];
+        assert_eq!(
+            (&w[0], &w[2]),
+            (&serde_json::json!(1), &serde_json::json!(1)),
+            "{v}"
+        );
+        assert!(
+            v["reparameterization"]["alpha"]
+                .as_str()
+                .unwrap()
+                .contains("sqrt(2)"),
+            "{v}"
+        );
     }
 }

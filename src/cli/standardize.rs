@@ -4,16 +4,15 @@
 //! reparameterization with its parameters.
 
 use super::{load, one_or_many};
-use crate::algebra::scalar::Ordered;
 use crate::error::Error;
-use crate::io::{patch_to_json, JsonScalar, Patch};
+use crate::io::Patch;
 use crate::limits::{self, Size};
 use crate::reparam::standard::{
-    standardize_curve_algebraic, standardize_rect_algebraic, theorem1_holds, StandardMap,
+    standardize_curve_algebraic, standardize_rect_algebraic, theorem1_holds,
 };
 use crate::Tolerance;
 use num_rational::BigRational;
-use serde_json::{json, Value};
+use serde_json::Value;
 
 /// Arguments of `standardize`.
 #[derive(clap::Args, Debug)]
@@ -38,14 +37,8 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     let out = patches
         .iter()
         .map(|p| match p {
-            Patch::Curve(c) => {
-                let s = standardize_curve_algebraic(c)?;
-                describe(&Patch::Curve(s.patch), &s.map)
-            }
-            Patch::Rect(r) => {
-                let s = standardize_rect_algebraic(r, a.compact)?;
-                describe(&Patch::Rect(s.patch), &s.map)
-            }
+            Patch::Curve(c) => standardize_curve_algebraic(c)?.to_json(),
+            Patch::Rect(r) => standardize_rect_algebraic(r, a.compact)?.to_json(),
             Patch::Tri(_) => Err(Error::Shape(
                 "standardize applies to a curve or a rect patch, not a tri patch".into(),
             )),
@@ -82,23 +75,4 @@ fn standardize_cost(p: &Patch<BigRational>) -> u64 {
     let general = quadratic && m >= 2 && m % n != 0;
     let ops = ops.saturating_mul(field.saturating_pow(if general { 8 } else { 4 }));
     limits::exact_work(ops, s.grown_bits(2 * (m + n), s.bits))
-}
-
-fn describe<T: JsonScalar + Ordered>(
-    patch: &Patch<T>,
-    map: &StandardMap<T>,
-) -> Result<Value, Error> {
-    let j = |x: &T| x.to_json();
-    let reparam = match map {
-        StandardMap::Mobius { alpha, beta, k } => match beta {
-            Some(b) => json!({"kind": "mobius", "alpha": j(alpha), "beta": j(b), "k": j(k)}),
-            None => json!({"kind": "mobius", "alpha": j(alpha), "k": j(k)}),
-        },
-        StandardMap::Quadratic { map, k } => json!({
-            "kind": "quadratic",
-            "alpha1": j(&map.alpha1), "alpha2": j(&map.alpha2),
-            "beta1": j(&map.beta1), "beta2": j(&map.beta2), "k": j(k)
-        }),
-    };
-    Ok(json!({"exact": true, "reparameterization": reparam, "patch": patch_to_json(patch)?}))
 }

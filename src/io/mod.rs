@@ -13,7 +13,7 @@
 
 pub(crate) mod trig;
 
-pub use trig::{read_trig_patches, trig_patch_to_json, TrigPatch};
+pub use trig::{read_trig_patches, trig_patch_from_value, trig_patch_to_json, TrigPatch};
 
 use crate::algebra::poly::Poly;
 use crate::algebra::scalar::{Field, Ordered, Scalar};
@@ -39,6 +39,24 @@ pub enum Patch<T> {
     Rect(RectPatch<T>),
     /// `"kind": "tri"`.
     Tri(TriPatch<T>),
+}
+
+impl<T> From<RationalCurve<T>> for Patch<T> {
+    fn from(c: RationalCurve<T>) -> Self {
+        Patch::Curve(c)
+    }
+}
+
+impl<T> From<RectPatch<T>> for Patch<T> {
+    fn from(r: RectPatch<T>) -> Self {
+        Patch::Rect(r)
+    }
+}
+
+impl<T> From<TriPatch<T>> for Patch<T> {
+    fn from(t: TriPatch<T>) -> Self {
+        Patch::Tri(t)
+    }
 }
 
 impl<T: Scalar> Patch<T> {

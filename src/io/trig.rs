@@ -58,6 +58,19 @@ fn kind(v: &Value) -> Option<&str> {
     v.get("kind").and_then(Value::as_str)
 }
 
+/// Read one trigonometric patch from its JSON object (`"kind"`
+/// `"trig-curve"` or `"trig-rect"`, `alpha`, `points`).
+///
+/// # Errors
+///
+/// As [`read_trig_patches`], for one object.
+pub fn trig_patch_from_value(v: &Value) -> Result<TrigPatch<BigRational>, Error> {
+    let obj = v
+        .as_object()
+        .ok_or_else(|| Error::Format(format!("expected a JSON object, found {v}")))?;
+    read_one(obj)
+}
+
 fn read_one(obj: &Map<String, Value>) -> Result<TrigPatch<BigRational>, Error> {
     let alpha = obj.get("alpha").ok_or_else(|| missing("alpha"))?;
     let pts = obj.get("points");
@@ -135,10 +148,7 @@ pub fn read_trig_patches(text: &str) -> Result<Option<Vec<TrigPatch<BigRational>
         .iter()
         .enumerate()
         .map(|(k, item)| {
-            let obj = item
-                .as_object()
-                .ok_or_else(|| Error::Format(format!("expected a JSON object, found {item}")))?;
-            read_one(obj).map_err(|e| Error::Format(format!("element {k}: {e}")))
+            trig_patch_from_value(item).map_err(|e| Error::Format(format!("element {k}: {e}")))
         })
         .collect::<Result<Vec<_>, _>>()
         .map(Some)

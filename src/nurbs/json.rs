@@ -22,11 +22,11 @@
 use super::{Knots, NurbsCurve, NurbsSurface};
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::io::{array, missing, number, point, positive_weight};
+use crate::io::{array, missing, number, point, positive_weight, JsonScalar};
 use crate::Patch;
 use num_rational::BigRational;
 use num_traits::One;
-use serde_json::{Map, Value};
+use serde_json::{json, Map, Value};
 
 /// A B-spline curve or surface read from JSON.
 #[derive(Clone, Debug, PartialEq)]
@@ -70,6 +70,50 @@ impl Nurbs {
                     v: Some(p.v),
                 })
                 .collect(),
+        }
+    }
+}
+
+/// Write `n` in our JSON layout (`"kind": "nurbs-curve"` or
+/// `"nurbs-surface"`, Cartesian points, weights), which [`read_nurbs`] reads
+/// back to an equal value.
+///
+/// ```
+/// use exact_bezier::nurbs::{nurbs_to_json, read_nurbs};
+/// let v = serde_json::json!({"kind": "nurbs-curve", "degree": 1, "knots": [0, 0, "1/2", 1, 1],
+///                            "points": [[0, 0], [1, 2], [3, 0]], "weights": [1, "1/3", 1]});
+/// let n = read_nurbs(&v).unwrap().remove(0);
+/// assert_eq!(read_nurbs(&nurbs_to_json(&n)).unwrap(), vec![n]);
+/// ```
+pub fn nurbs_to_json(n: &Nurbs) -> Value {
+    let knots = |k: &Knots| Value::Array(k.knots().iter().map(JsonScalar::to_json).collect());
+    // Weights are positive (checked by every constructor from input), so
+    // each point projects.
+    let cart = |h: &HPoint<BigRational>| {
+        let w = h.weight();
+        Value::Array(h.weighted().iter().map(|x| (x / w).to_json()).collect())
+    };
+    let weights = |row: &[HPoint<BigRational>]| {
+        Value::Array(row.iter().map(|h| h.weight().to_json()).collect())
+    };
+    let points = |row: &[HPoint<BigRational>]| Value::Array(row.iter().map(cart).collect());
+    match n {
+        Nurbs::Curve(c) => json!({
+            "kind": "nurbs-curve",
+            "degree": c.knots().degree(),
+            "knots": knots(c.knots()),
+            "points": points(c.control_points()),
+            "weights": weights(c.control_points()),
+        }),
+        Nurbs::Surface(s) => {
+            let (u, v) = s.knots();
+            json!({
+                "kind": "nurbs-surface",
+                "degree": [u.degree(), v.degree()],
+                "knots": [knots(u), knots(v)],
+                "points": s.control_points().iter().map(|r| points(r)).collect::<Vec<_>>(),
+                "weights": s.control_points().iter().map(|r| weights(r)).collect::<Vec<_>>(),
+            })
         }
     }
 }

@@ -29,7 +29,7 @@
 //! [`Scalar::from_rational`], so no division in the scalar is needed; see
 //! `proofs/nurbs.rs`). Everything is homogeneous: `(w_i P_i, w_i)`.
 
-pub use json::{is_nurbs, read_nurbs, Nurbs, SpannedPatch};
+pub use json::{is_nurbs, nurbs_to_json, read_nurbs, Nurbs, SpannedPatch};
 
 use crate::error::{Error, MAX_DEGREE};
 use crate::hpoint::HPoint;
@@ -297,6 +297,11 @@ pub struct SurfacePiece<T> {
 }
 
 impl<T: Scalar> NurbsCurve<T> {
+    /// The homogeneous control points `(w·P, w)`.
+    pub fn control_points(&self) -> &[HPoint<T>] {
+        &self.ctrl
+    }
+
     /// The curve with knots `knots` and homogeneous control points.
     ///
     /// # Errors
@@ -353,6 +358,11 @@ pub struct NurbsSurface<T> {
 }
 
 impl<T: Scalar> NurbsSurface<T> {
+    /// The homogeneous control net `ctrl[i][j]` (`i` along u).
+    pub fn control_points(&self) -> &[Vec<HPoint<T>>] {
+        &self.ctrl
+    }
+
     /// The surface with knots `u`, `v` and the homogeneous net `ctrl[i][j]`.
     ///
     /// # Errors

@@ -45,13 +45,15 @@
 //! [`standardize_quadratic_compact`] returns that smaller form.
 
 use crate::algebra::real_algebraic::RealAlgebraic;
-use crate::algebra::scalar::{ratio, Ordered, Roots, Scalar, Tolerance};
+use crate::algebra::scalar::{ratio, Field, Ordered, Roots, Scalar, Tolerance};
 use crate::curve::RationalCurve;
 use crate::error::Error;
+use crate::io::{patch_to_json, JsonScalar, Patch};
 use crate::rect::RectPatch;
 use crate::reparam::Quadratic;
 use num_rational::BigRational;
 use num_traits::One;
+use serde_json::{json, Value};
 
 /// The reparameterization a standard form applied, with its parameters.
 #[derive(Clone, Debug, PartialEq)]
@@ -82,6 +84,42 @@ pub struct Standard<P, T> {
     pub patch: P,
     /// How it was obtained.
     pub map: StandardMap<T>,
+}
+
+impl<T: JsonScalar> StandardMap<T> {
+    /// The `reparameterization` object of `standardize`'s output:
+    /// `{"kind": "mobius", "alpha", "beta"?, "k"}` or `{"kind": "quadratic",
+    /// "alpha1", "alpha2", "beta1", "beta2", "k"}` (docs/FORMAT.md).
+    pub fn to_json(&self) -> Value {
+        let j = |x: &T| x.to_json();
+        match self {
+            StandardMap::Mobius { alpha, beta, k } => match beta {
+                Some(b) => json!({"kind": "mobius", "alpha": j(alpha), "beta": j(b), "k": j(k)}),
+                None => json!({"kind": "mobius", "alpha": j(alpha), "k": j(k)}),
+            },
+            StandardMap::Quadratic { map, k } => json!({
+                "kind": "quadratic",
+                "alpha1": j(&map.alpha1), "alpha2": j(&map.alpha2),
+                "beta1": j(&map.beta1), "beta2": j(&map.beta2), "k": j(k)
+            }),
+        }
+    }
+}
+
+impl<P: Clone + Into<Patch<T>>, T: JsonScalar + Field> Standard<P, T> {
+    /// The `standardize` command's object: `{"exact": true,
+    /// "reparameterization": {...}, "patch": {...}}` (docs/FORMAT.md).
+    ///
+    /// # Errors
+    ///
+    /// As [`patch_to_json`] (a weight that is not positive).
+    pub fn to_json(&self) -> Result<Value, Error> {
+        Ok(json!({
+            "exact": true,
+            "reparameterization": self.map.to_json(),
+            "patch": patch_to_json(&self.patch.clone().into())?,
+        }))
+    }
 }
 
 /// An exact result, or an `f64` one when an exact answer would need an
