@@ -1,9 +1,7 @@
 //! Conversions rect ↔ tri on random exact patches (evaluated at the mapped
 //! parameters), the source 003 §4 fixtures, split validation and the CLI.
 
-mod common;
-
-use common::cli;
+use crate::common::cli;
 use exact_bezier::strategy::{rect, tri, unit_parameter};
 use exact_bezier::{
     convert::bilinear, convert::rect_to_tri, convert::rect_to_tris, convert::square_corners,

@@ -2,10 +2,8 @@
 //! Schema of the format (docs/exact-bezier.schema.json, described in
 //! docs/FORMAT.md), and the schema rejects what the reader rejects.
 
-mod common;
-
+use crate::common::cli;
 use boon::{Compiler, SchemaIndex, Schemas};
-use common::cli;
 use serde_json::Value;
 
 const SCHEMA: &str = "file:///exact-bezier.schema.json";

@@ -2,9 +2,7 @@
 //! random exact patches: copies made by the maps (1)–(6) coincide, and the
 //! witness reproduces them; perturbed copies do not.
 
-mod common;
-
-use common::cli_json as cli;
+use crate::common::cli_json as cli;
 use exact_bezier::strategy::*;
 use exact_bezier::{
     coincide::canonical_key, coincide::coincide, coincide::coincide_f64,

@@ -4,9 +4,7 @@
 //! orientation, the OBJ/STL/PLY files read back, and the homogeneous
 //! derivatives proved symbolically per patch.
 
-mod common;
-
-use common::bin;
+use crate::common::bin;
 use exact_bezier::strategy::{rect, tri};
 use exact_bezier::{
     io::read_patches, ratio, render::rect_jet, render::tri_jet, render::Mesh, Patch, Poly,
@@ -15,8 +13,8 @@ use exact_bezier::{
 use num_rational::BigRational;
 use proptest::prelude::*;
 
-const EXAMPLE1: &str = include_str!("fixtures/yang_yong_example1.json");
-const TRI: &str = include_str!("../docs/figures/inputs/source003_fig5a_tri.json");
+const EXAMPLE1: &str = include_str!("../fixtures/yang_yong_example1.json");
+const TRI: &str = include_str!("../../docs/figures/inputs/source003_fig5a_tri.json");
 
 /// Position tolerance: relative to the model size (Example 1 spans ~70).
 const POS_TOL: f64 = 1e-9;

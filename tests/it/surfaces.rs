@@ -2,9 +2,7 @@
 //! keep points at the mapped parameters, elevation and subdivision keep
 //! points, standard forms have unit corners, joins are detected.
 
-mod common;
-
-use common::cli_json as cli;
+use crate::common::cli_json as cli;
 use exact_bezier::strategy::*;
 use exact_bezier::{algebra::*, curve::*, hpoint::*, prelude::*, rect::*, reparam::*};
 use num_rational::BigRational;

@@ -3,9 +3,7 @@
 //! s = 2τ/(1+τ²)) and λ with perfect-cube radicands (λ built from a rational
 //! σ: σ³ = N/D by construction), plus the command line.
 
-mod common;
-
-use common::cli;
+use crate::common::cli;
 use exact_bezier::strategy::point;
 use exact_bezier::{
     arc::check_lambda, arc::lambda_change_delta, arc::lambda_change_param,

@@ -2,17 +2,15 @@
 //! viewBox, the PNG decodes to the asked size with the expected colours,
 //! the CLI writes both and rejects bad requests, and the gallery regenerates.
 
-mod common;
-
-use common::bin;
+use crate::common::bin;
 use exact_bezier::render::plot::{plot_png, plot_svg, Plane, PlotOptions, Projection, Split};
 use exact_bezier::{io::read_patches, Patch};
 use num_rational::BigRational;
 use resvg::tiny_skia::Pixmap;
 use std::path::PathBuf;
 
-const EXAMPLE1: &str = include_str!("fixtures/yang_yong_example1.json");
-const TRI: &str = include_str!("../docs/figures/inputs/source003_fig5a_tri.json");
+const EXAMPLE1: &str = include_str!("../fixtures/yang_yong_example1.json");
+const TRI: &str = include_str!("../../docs/figures/inputs/source003_fig5a_tri.json");
 const CUBIC: &str = r#"{"kind": "curve", "degree": 3,
  "points": [[0,0],[1,2],[3,2],[4,0]], "weights": [1, "1/3", "1/3", 1]}"#;
 
@@ -332,7 +330,7 @@ fn gallery_regenerates_every_entry() {
         String::from_utf8_lossy(&out.stderr)
     );
     let manifest: serde_json::Value =
-        serde_json::from_str(include_str!("../docs/figures/gallery.json")).unwrap();
+        serde_json::from_str(include_str!("../../docs/figures/gallery.json")).unwrap();
     let entries = manifest.as_array().unwrap();
     assert!(entries.len() >= 9);
     for e in entries {

@@ -5,9 +5,7 @@
 //! conditions, brute-force edge matching, f64 normals), never against the
 //! audit's own output.
 
-mod common;
-
-use common::{cli, cli_json};
+use crate::common::{cli, cli_json};
 use exact_bezier::{
     audit::audit, audit::read_model, audit::Continuity, audit::Model, audit::Piece,
     io::read_trig_patches, io::TrigPatch, Patch, RectPatch,

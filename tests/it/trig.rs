@@ -2,9 +2,7 @@
 //! rational τ and α, G¹ of constructed joins, f64/exact agreement, the bowl
 //! fixtures and the `eval` command line.
 
-mod common;
-
-use common::cli;
+use crate::common::cli;
 use exact_bezier::strategy::{point, positive_weight, rational_in, small_rational, unit_parameter};
 use exact_bezier::{
     io::read_trig_patches, io::trig_patch_to_json, io::TrigPatch, ratio, trig::trig_basis_values,

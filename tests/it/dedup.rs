@@ -2,9 +2,7 @@
 //! copies: the classes are exactly the planted ones, whatever the input
 //! format, the thread count or the sharding of `key`.
 
-mod common;
-
-use common::{bin, cli};
+use crate::common::{bin, cli};
 use exact_bezier::strategy::{curve, rect};
 use exact_bezier::{coincide::Symmetry, io::patch_to_json, ratio, Patch};
 use num_rational::BigRational;
