@@ -9,12 +9,13 @@
 //! ([`RationalCurve::scale_weights`] by the lcm of the denominators, which
 //! keeps every point), `t = p/q` becomes the homogeneous parameter
 //! `(q − p : p)` ([`RationalCurve::eval_hom_param`]), and the one division
-//! happens in `project`. A fourth runs [`FastCurve`], the same
-//! fraction-free evaluation on machine integers (`i128`, big integers only
-//! on overflow).
+//! happens in `project`. A fourth runs a batch of 100 parameters through
+//! [`Evaluator`] (`f64` and exact): since issue 12 `eval` itself is the
+//! Horner–Bernstein kernel, fraction-free on machine integers for
+//! `BigRational`; the per-point time is the batch time / 100.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use exact_bezier::{algebra::rational_to_f64, fast_eval::FastCurve, ratio, RationalCurve};
+use exact_bezier::{algebra::rational_to_f64, eval::Evaluator, ratio, RationalCurve};
 use num_integer::Integer;
 use num_rational::BigRational;
 
@@ -67,10 +68,17 @@ fn eval(c: &mut Criterion) {
                     .project()
             })
         });
-        let fast = FastCurve::new(&exact);
-        assert_eq!(fast.eval(&t).unwrap(), exact.eval(&t).unwrap());
-        c.bench_function(&format!("eval degree {n} exact FastCurve"), |b| {
-            b.iter(|| black_box(&fast).eval(black_box(&t)))
+        let ts: Vec<BigRational> = (0..100).map(|k| ratio(k, 100)).collect();
+        let mut ev = Evaluator::curve(&exact);
+        let mut out = vec![ratio(0, 1); 2 * ts.len()];
+        c.bench_function(&format!("eval degree {n} exact batch of 100"), |b| {
+            b.iter(|| ev.eval_batch(black_box(&ts), &mut out))
+        });
+        let tfs: Vec<f64> = ts.iter().map(rational_to_f64).collect();
+        let mut evf = Evaluator::curve(&float);
+        let mut outf = vec![0.0; 2 * ts.len()];
+        c.bench_function(&format!("eval degree {n} f64 batch of 100"), |b| {
+            b.iter(|| evf.eval_batch(black_box(&tfs), &mut outf))
         });
     }
 }

@@ -1,10 +1,10 @@
 //! Rect patches: bicubic evaluation (f64 vs exact) and the exact quadratic
 //! reparameterization of a bicubic (source 000, eqs 9-17), on Example 2 of
 //! source 000 (read exactly from its fixture); exact evaluation also by the
-//! fraction-free [`FastRect`].
+//! batch [`Evaluator`] (fraction-free for exact input).
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use exact_bezier::{
-    fast_eval::FastRect, io::read_patches, ratio, reparam::Quadratic, Ordered, Patch, RectPatch,
+    eval::Evaluator, io::read_patches, ratio, reparam::Quadratic, Ordered, Patch, RectPatch,
 };
 use num_rational::BigRational;
 
@@ -27,10 +27,19 @@ fn eval(c: &mut Criterion) {
     c.bench_function("bicubic eval exact", |b| {
         b.iter(|| black_box(&exact).eval(black_box(&u), black_box(&v)))
     });
-    let fast = FastRect::new(&exact);
-    assert_eq!(fast.eval(&u, &v).unwrap(), exact.eval(&u, &v).unwrap());
-    c.bench_function("bicubic eval exact FastRect", |b| {
-        b.iter(|| black_box(&fast).eval(black_box(&u), black_box(&v)))
+    let uv: Vec<BigRational> = (0..100)
+        .flat_map(|k| [ratio(k, 100), ratio(99 - k, 100)])
+        .collect();
+    let mut ev = Evaluator::rect(&exact);
+    let mut out = vec![ratio(0, 1); 3 * 100];
+    c.bench_function("bicubic eval exact batch of 100", |b| {
+        b.iter(|| ev.eval_batch(black_box(&uv), &mut out))
+    });
+    let uvf: Vec<f64> = uv.iter().map(Ordered::to_f64).collect();
+    let mut evf = Evaluator::rect(&float);
+    let mut outf = vec![0.0; 3 * 100];
+    c.bench_function("bicubic eval f64 batch of 100", |b| {
+        b.iter(|| evf.eval_batch(black_box(&uvf), &mut outf))
     });
 }
 

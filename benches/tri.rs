@@ -6,7 +6,7 @@
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use exact_bezier::{
     convert::rect_to_tris, convert::tri_to_degenerate_rect, convert::tri_to_rects, convert::Split,
-    fast_eval::FastTri, ratio, Field, RectPatch, TriPatch,
+    eval::Evaluator, ratio, Field, Ordered, RectPatch, TriPatch,
 };
 use num_rational::BigRational;
 
@@ -84,15 +84,29 @@ fn run<T: Field>(c: &mut Criterion, label: &str) {
     }
 }
 
-/// Exact triangle evaluation by the fraction-free [`FastTri`].
-fn fast(c: &mut Criterion) {
-    let (u, v) = (ratio::<BigRational>(2, 7), ratio::<BigRational>(3, 11));
+/// Batches of 100 points through [`Evaluator`], exact (fraction-free) and
+/// f64; the per-point time is the batch time / 100.
+fn batch(c: &mut Criterion) {
+    let uv: Vec<BigRational> = (0..100)
+        .flat_map(|k| {
+            [
+                ratio(k % 10, 10),
+                ratio(k / 10, 10) * ratio(10 - k % 10, 10),
+            ]
+        })
+        .collect();
+    let uvf: Vec<f64> = uv.iter().map(Ordered::to_f64).collect();
     for n in [3usize, 6] {
         let t = tri_patch::<BigRational>(n);
-        let fast = FastTri::new(&t);
-        assert_eq!(fast.eval(&u, &v).unwrap(), t.eval(&u, &v).unwrap());
-        c.bench_function(&format!("tri eval n={n} exact FastTri"), |b| {
-            b.iter(|| black_box(&fast).eval(black_box(&u), black_box(&v)))
+        let mut ev = Evaluator::tri(&t);
+        let mut out = vec![ratio(0, 1); 3 * 100];
+        c.bench_function(&format!("tri eval n={n} exact batch of 100"), |b| {
+            b.iter(|| ev.eval_batch(black_box(&uv), &mut out))
+        });
+        let mut evf = Evaluator::tri(&tri_patch::<f64>(n));
+        let mut outf = vec![0.0; 3 * 100];
+        c.bench_function(&format!("tri eval n={n} f64 batch of 100"), |b| {
+            b.iter(|| evf.eval_batch(black_box(&uvf), &mut outf))
         });
     }
 }
@@ -100,7 +114,7 @@ fn fast(c: &mut Criterion) {
 fn benches(c: &mut Criterion) {
     run::<f64>(c, "f64");
     run::<BigRational>(c, "exact");
-    fast(c);
+    batch(c);
 }
 
 criterion_group!(tri, benches);

@@ -91,7 +91,7 @@ pub mod coords;
 pub mod curve;
 mod display;
 mod error;
-pub mod fast_eval;
+pub mod eval;
 pub mod hpoint;
 pub mod io;
 pub mod limits;

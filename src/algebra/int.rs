@@ -2,10 +2,10 @@
 //! moves to a big integer on overflow (checked arithmetic, never wrapping).
 //!
 //! It is a [`Ring`](crate::Ring) but not a [`Scalar`](crate::Scalar) (it has
-//! no 1/2): the fraction-free fast paths ([`FastCurve`](crate::fast_eval::FastCurve),
-//! [`FastRect`](crate::fast_eval::FastRect)) clear denominators once and then run de
-//! Casteljau at a homogeneous parameter on `Int`, so that typical inputs
-//! never allocate and never take a gcd until the final division.
+//! no 1/2): exact evaluation ([`crate::eval`]) clears denominators once and
+//! then runs the Horner–Bernstein kernel at a homogeneous parameter on
+//! `Int`, so that typical inputs never allocate and never take a gcd until
+//! the final division.
 
 use num_bigint::BigInt;
 use num_rational::BigRational;

@@ -159,6 +159,22 @@ pub trait Field: Scalar + Div<Output = Self> + for<'a> Div<&'a Self, Output = Se
     fn recip(&self) -> Self {
         Self::one() / self
     }
+
+    /// The batch evaluation of [`Evaluator::eval_batch`](crate::eval::Evaluator::eval_batch):
+    /// the generic kernel point after point by default; an exact type may
+    /// take a faster route to the same values (`BigRational`: fraction-free
+    /// on machine integers, see [`crate::eval`]).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::PointAtInfinity`](crate::Error::PointAtInfinity) where the weight vanishes.
+    fn eval_net(
+        ev: &mut crate::eval::Evaluator<Self>,
+        params: &[Self],
+        out: &mut [Self],
+    ) -> Result<(), crate::Error> {
+        ev.eval_batch_generic(params, out)
+    }
 }
 
 /// A [`Field`] with a sign and an `f64` approximation: exact rationals and
@@ -223,7 +239,15 @@ impl Scalar for BigRational {
         }
     }
 }
-impl Field for BigRational {}
+impl Field for BigRational {
+    fn eval_net(
+        ev: &mut crate::eval::Evaluator<Self>,
+        params: &[Self],
+        out: &mut [Self],
+    ) -> Result<(), crate::Error> {
+        crate::eval::fraction_free::eval_batch(ev, params, out)
+    }
+}
 impl Ordered for BigRational {
     fn to_f64(&self) -> f64 {
         rational_to_f64(self)

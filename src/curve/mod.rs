@@ -348,8 +348,31 @@ impl<T: Field> RationalCurve<T> {
     /// # Errors
     ///
     /// [`Error::PointAtInfinity`] if the weight function vanishes at `t`.
+    ///
+    /// Computed by the Horner–Bernstein kernel of [`crate::eval`]; exact
+    /// types take their fast path (fraction-free for `BigRational`).
     pub fn eval(&self, t: &T) -> Result<Vec<T>, Error> {
-        self.eval_hom(t).project()
+        self.eval_many(std::slice::from_ref(t))
+    }
+
+    /// The points `X(t)` at every `t` of `ts`, `dim` coordinates each, back
+    /// to back (the batch form of [`RationalCurve::eval`]; for repeated
+    /// batches without allocation use [`crate::eval::Evaluator`]).
+    ///
+    /// ```
+    /// use exact_bezier::{RationalCurve, ratio};
+    /// use num_rational::BigRational;
+    /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+    /// let c = RationalCurve::polynomial(vec![p(10, 0), p(30, 60), p(130, 60), p(190, 0)]).unwrap();
+    /// let xs = c.eval_many(&[ratio(0, 1), ratio(1, 2)]).unwrap();
+    /// assert_eq!(xs, vec![ratio(10, 1), ratio(0, 1), ratio(85, 1), ratio(45, 1)]);
+    /// ```
+    ///
+    /// # Errors
+    ///
+    /// [`Error::PointAtInfinity`] if the weight function vanishes at some `t`.
+    pub fn eval_many(&self, ts: &[T]) -> Result<Vec<T>, Error> {
+        crate::eval::eval_points(crate::eval::Net::from_curve(self), ts)
     }
 
     /// The Cartesian control points `P_i`.

@@ -190,8 +190,23 @@ impl<T: Field> TriPatch<T> {
     /// # Errors
     ///
     /// [`Error::PointAtInfinity`] if the weight function vanishes there.
+    ///
+    /// Computed by the Horner–Bernstein kernel of [`crate::eval`]; exact
+    /// types take their fast path (fraction-free for `BigRational`).
     pub fn eval(&self, u: &T, v: &T) -> Result<Vec<T>, Error> {
-        self.eval_hom(u, v).project()
+        self.eval_many(&[u.clone(), v.clone()])
+    }
+
+    /// The points at the parameter pairs `uv = [u₀, v₀, u₁, v₁, …]`
+    /// (`w = 1 − u − v`), `dim` coordinates each, back to back (the batch
+    /// form of [`TriPatch::eval`]).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::PointAtInfinity`] if the weight function vanishes at a pair;
+    /// [`Error::Shape`] if `uv` has odd length.
+    pub fn eval_many(&self, uv: &[T]) -> Result<Vec<T>, Error> {
+        crate::eval::eval_points(crate::eval::Net::from_tri(self), uv)
     }
 }
 

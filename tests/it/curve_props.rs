@@ -22,13 +22,14 @@ proptest! {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
-    /// The fraction-free evaluators agree exactly with de Casteljau on
-    /// rationals (a second method), for curves and patches.
+    /// `eval` (Horner–Bernstein, fraction-free on integers for
+    /// `BigRational`) agrees exactly with de Casteljau on rationals (a
+    /// second method), for curves and patches.
     #[test]
     fn fast_evaluation_is_exact(c in curve(5, 3), r in rect(3, 2, 3), s in tri(4, 3), t in unit_parameter(), u in unit_parameter()) {
-        prop_assert_eq!(exact_bezier::fast_eval::FastCurve::new(&c).eval(&t).unwrap(), c.eval(&t).unwrap());
-        prop_assert_eq!(exact_bezier::fast_eval::FastRect::new(&r).eval(&t, &u).unwrap(), r.eval(&t, &u).unwrap());
+        prop_assert_eq!(c.eval(&t).unwrap(), c.eval_hom(&t).project().unwrap());
+        prop_assert_eq!(r.eval(&t, &u).unwrap(), r.eval_hom(&t, &u).project().unwrap());
         // Any (u, v), inside the triangle or not: both sides are the same polynomial map.
-        prop_assert_eq!(exact_bezier::fast_eval::FastTri::new(&s).eval(&t, &u), s.eval(&t, &u));
+        prop_assert_eq!(s.eval(&t, &u), s.eval_hom(&t, &u).project());
     }
 }
