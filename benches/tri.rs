@@ -91,7 +91,7 @@ fn batch(c: &mut Criterion) {
         .flat_map(|k| {
             [
                 ratio(k % 10, 10),
-                ratio::<BigRational>(k / 10, 10) * ratio(10 - k % 10, 10),
+                ratio::<BigRational>(k / 10, 10) * ratio::<BigRational>(10 - k % 10, 10),
             ]
         })
         .collect();

@@ -120,7 +120,7 @@ fn fraction_free_equals_generic_exact() {
 #[test]
 fn f64_kernel_agrees_with_de_casteljau() {
     for n in [3, 10, 40] {
-        let c = wavy_curve(n).map(|x| crate::Ordered::to_f64(x));
+        let c = wavy_curve(n).map(crate::Ordered::to_f64);
         let mut ev = Evaluator::curve(&c);
         let mut x = [0.0; 2];
         for k in 0..=50 {
