@@ -187,7 +187,7 @@ pub const EXIT_OUTSIDE_DOMAIN: i32 = 3;
 /// prints for itself (`prove`).
 fn dispatch(command: Command) -> Result<Result<Value, i32>, Error> {
     let value = match command {
-        Command::Eval(a) => eval::run(&a),
+        Command::Eval(a) => return eval::run(&a),
         Command::Reparam(a) => transform::reparam(&a),
         Command::Elevate(a) => transform::elevate(&a),
         Command::Standardize(a) => standardize::run(&a),
@@ -390,7 +390,7 @@ pub fn one_line(message: &str) -> String {
 /// Refuse output with a non-finite number: an `f64` result that overflowed
 /// is written as the text `inf`, `-inf` or `NaN` by
 /// [`JsonScalar`](crate::io::JsonScalar), and caught here for every command.
-fn check_finite(v: &Value) -> Result<(), Error> {
+pub(crate) fn check_finite(v: &Value) -> Result<(), Error> {
     match v {
         Value::String(s) if matches!(s.as_str(), "inf" | "-inf" | "NaN") => Err(Error::NotFinite(
             "an f64 result overflowed (inf or NaN); use --scalar exact or smaller numbers".into(),

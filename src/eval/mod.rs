@@ -311,14 +311,37 @@ impl<T: Ring> Net<T> {
 /// `Σ_i C(n,i) a^{n−i} bⁱ H_i` by Horner in `a`, into `out`: the points
 /// `H_i` are the `stride`-long chunks of `points`, `binom` is row `n` of
 /// Pascal's triangle.
+///
+/// The body is [`horner_width`], instantiated for the common strides 3
+/// (planar) and 4 (spatial) so that the coordinate loop has a length known
+/// at compile time (unrolled, no bounds checks), and for any other stride.
 fn horner<T: Ring>(points: &[T], stride: usize, binom: &[T], a: &T, b: &T, out: &mut [T]) {
-    out.clone_from_slice(&points[..stride]);
+    match stride {
+        3 => horner_width::<T, 3>(points, stride, binom, a, b, out),
+        4 => horner_width::<T, 4>(points, stride, binom, a, b, out),
+        _ => horner_width::<T, 0>(points, stride, binom, a, b, out),
+    }
+}
+
+/// [`horner`] with the stride `W` fixed at compile time (`W = 0`: the
+/// run-time `stride`).
+#[inline(always)]
+fn horner_width<T: Ring, const W: usize>(
+    points: &[T],
+    stride: usize,
+    binom: &[T],
+    a: &T,
+    b: &T,
+    out: &mut [T],
+) {
+    let s = if W == 0 { stride } else { W };
+    let out = &mut out[..s];
+    out.clone_from_slice(&points[..s]);
     let mut bpow = T::one();
-    for (i, c) in binom.iter().enumerate().skip(1) {
+    for (c, point) in binom.iter().zip(points.chunks_exact(s)).skip(1) {
         bpow = bpow * b;
         let coef = c.clone() * &bpow;
-        let point = &points[i * stride..(i + 1) * stride];
-        for (o, x) in out.iter_mut().zip(point) {
+        for (o, x) in out.iter_mut().zip(&point[..s]) {
             let prev = std::mem::replace(o, T::zero());
             *o = prev * a + &(coef.clone() * x);
         }

@@ -12,6 +12,7 @@ mod conversions;
 mod curve_props;
 mod curves;
 mod dedup;
+mod eval_batch;
 mod mesh;
 mod plot;
 mod proofs;

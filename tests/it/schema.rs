@@ -107,6 +107,32 @@ fn command_outputs_match_the_schema() {
         &output(&["eval", tri, "--at", "1/4,1/4"]),
     );
     assert_valid(
+        "evalPointsOutput",
+        "eval --grid",
+        &output(&["eval", tri, "--grid", "2"]),
+    );
+    assert_valid(
+        "evalPointsOutput",
+        "eval repeated --at f64",
+        &output(&[
+            "eval", ex1, "--at", "0,0", "--at", "1/3,1/2", "--scalar", "f64",
+        ]),
+    );
+    let (_, lines, _) = cli(&[
+        "eval",
+        "tests/fixtures/zcf_4_2_rects.json",
+        "--grid",
+        "1",
+        "--jsonl",
+    ]);
+    for line in lines.lines() {
+        assert_valid(
+            "evalPoint",
+            "eval --jsonl line",
+            &serde_json::from_str(line).unwrap(),
+        );
+    }
+    assert_valid(
         "patch",
         "reparam",
         &output(&["reparam", ex1, "--mobius", "3/5,7/10"]),

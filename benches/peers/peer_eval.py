@@ -1,0 +1,208 @@
+"""Peer benchmark of evaluation (issue 12): exact-bezier against
+dhermes/bezier (Fortran speedups), geomdl and Python's `fractions`, on the
+same random inputs, interleaved over several rounds.
+
+Run through `benches/peers/run` (it makes the virtual environment and
+builds our side). Alone:
+
+    python peer_eval.py --ours target/release/examples/peer_eval [--rounds 3]
+
+Cases (per point, so batch sizes differ between cases):
+
+- f64_curve3 / f64_curve10 / f64_curve40: planar polynomial curves,
+  bezier `Curve.evaluate_multi` (200 000 parameters);
+- f64_tri3: cubic triangle in space, bezier
+  `Triangle.evaluate_cartesian_multi(verify=False)` (200 000 points);
+- f64_bicubic: rational bicubic in space, geomdl `NURBS.Surface`
+  (clamped knots, so the one Bézier patch) `evaluate_list` (2 000 points);
+- exact_bicubic, exact_curve40: the same homogeneous Horner–Bernstein sum
+  as ours in Python with `Fraction` (200 points; parameters k/100 and
+  123/457-like, weights like 12345/678).
+
+The last line printed is the JSON object of ratios ours/peer.
+"""
+
+import argparse
+import json
+import random
+import statistics
+import subprocess
+import tempfile
+import time
+from fractions import Fraction
+from math import comb
+
+import bezier
+import numpy as np
+from geomdl import NURBS
+
+F64_POINTS = 200_000
+GEOMDL_POINTS = 2_000
+EXACT_POINTS = 200
+
+
+def rnd_coord(rng):
+    return rng.randint(-1000, 1000) / 100
+
+
+def frac_text(q):
+    return f"{q.numerator}/{q.denominator}"
+
+
+def make_cases(seed):
+    rng = random.Random(seed)
+    cases = []
+    for n in (3, 10, 40):
+        pts = [[rnd_coord(rng), rnd_coord(rng)] for _ in range(n + 1)]
+        ts = [rng.random() for _ in range(F64_POINTS)]
+        cases.append({"name": f"f64_curve{n}", "patch": {"kind": "curve", "degree": n, "points": pts},
+                      "params": ts, "exact": False})
+    tri = [[[rnd_coord(rng) for _ in range(3)] for _ in range(4 - j)] for j in range(4)]
+    uv = []
+    for _ in range(F64_POINTS):
+        u, v = rng.random(), rng.random()
+        if u + v > 1:
+            u, v = 1 - u, 1 - v
+        uv += [u, v]
+    cases.append({"name": "f64_tri3", "patch": {"kind": "tri", "degree": 3, "points": tri},
+                  "params": uv, "exact": False})
+    rect = [[[rnd_coord(rng) for _ in range(3)] for _ in range(4)] for _ in range(4)]
+    weights = [[rng.randint(50, 200) / 100 for _ in range(4)] for _ in range(4)]
+    cases.append({"name": "f64_bicubic", "patch": {"kind": "rect", "degree": [3, 3], "points": rect,
+                                                    "weights": weights},
+                  "params": [rng.random() for _ in range(2 * GEOMDL_POINTS)], "exact": False})
+    # Exact: rational coordinates and weights, parameters k/100 and p/457.
+    def exact_param():
+        return Fraction(rng.randint(0, 100), 100) if rng.random() < 0.5 else Fraction(rng.randint(0, 457), 457)
+    rect_q = [[[Fraction(rng.randint(-1000, 1000), rng.randint(1, 100)) for _ in range(3)] for _ in range(4)]
+              for _ in range(4)]
+    w_q = [[Fraction(rng.randint(10000, 20000), rng.randint(600, 700)) for _ in range(4)] for _ in range(4)]
+    cases.append({"name": "exact_bicubic",
+                  "patch": {"kind": "rect", "degree": [3, 3],
+                            "points": [[[frac_text(x) for x in p] for p in row] for row in rect_q],
+                            "weights": [[frac_text(w) for w in row] for row in w_q]},
+                  "params": [frac_text(exact_param()) for _ in range(2 * EXACT_POINTS)], "exact": True})
+    curve_q = [[Fraction(rng.randint(-1000, 1000), rng.randint(1, 100)) for _ in range(2)] for _ in range(41)]
+    cw_q = [Fraction(rng.randint(10000, 20000), rng.randint(600, 700)) for _ in range(41)]
+    cases.append({"name": "exact_curve40",
+                  "patch": {"kind": "curve", "degree": 40,
+                            "points": [[frac_text(x) for x in p] for p in curve_q],
+                            "weights": [frac_text(w) for w in cw_q]},
+                  "params": [frac_text(exact_param()) for _ in range(EXACT_POINTS)], "exact": True})
+    return cases
+
+
+def best(repeat, points, f):
+    times = []
+    for _ in range(repeat):
+        start = time.perf_counter()
+        f()
+        times.append((time.perf_counter() - start) * 1e9 / points)
+    return min(times)
+
+
+def horner_fraction(hs, a, b):
+    """Σ C(n,i) a^{n−i} bⁱ H_i in Fractions (the scheme of our kernel)."""
+    n = len(hs) - 1
+    out = list(hs[0])
+    bpow = Fraction(1)
+    for i in range(1, n + 1):
+        bpow *= b
+        c = comb(n, i) * bpow
+        out = [o * a + c * x for o, x in zip(out, hs[i])]
+    return out
+
+
+def exact_hom(points, weights):
+    return [[Fraction(x) * Fraction(w) for x in p] + [Fraction(w)] for p, w in zip(points, weights)]
+
+
+def theirs(cases, repeat):
+    result = {}
+    for case in cases:
+        name, patch, params = case["name"], case["patch"], case["params"]
+        if name.startswith("f64_curve"):
+            nodes = np.asfortranarray(np.array(patch["points"], dtype=float).T)
+            curve = bezier.Curve(nodes, degree=patch["degree"], copy=False, verify=False)
+            s = np.array(params)
+            result[name] = best(repeat, len(params), lambda: curve.evaluate_multi(s))
+        elif name == "f64_tri3":
+            nodes = np.asfortranarray(np.array([p for row in patch["points"] for p in row], dtype=float).T)
+            tri = bezier.Triangle(nodes, degree=3, copy=False, verify=False)
+            uv = np.asfortranarray(np.array(params).reshape(-1, 2))
+            result[name] = best(repeat, len(uv), lambda: tri.evaluate_cartesian_multi(uv, verify=False))
+        elif name == "f64_bicubic":
+            surf = NURBS.Surface()
+            surf.degree_u, surf.degree_v = 3, 3
+            surf.set_ctrlpts([p for row in patch["points"] for p in row], 4, 4)
+            surf.weights = [w for row in patch["weights"] for w in row]
+            surf.knotvector_u = [0, 0, 0, 0, 1, 1, 1, 1]
+            surf.knotvector_v = [0, 0, 0, 0, 1, 1, 1, 1]
+            uv = [tuple(params[i:i + 2]) for i in range(0, len(params), 2)]
+            result[name] = best(repeat, len(uv), lambda: surf.evaluate_list(uv))
+        elif name == "exact_curve40":
+            hs = exact_hom(patch["points"], patch["weights"])
+            ts = [Fraction(t) for t in params]
+
+            def run():
+                for t in ts:
+                    h = horner_fraction(hs, 1 - t, t)
+                    [x / h[-1] for x in h[:-1]]
+            result[name] = best(repeat, len(ts), run)
+        elif name == "exact_bicubic":
+            rows = [exact_hom(p, w) for p, w in zip(patch["points"], patch["weights"])]
+            uv = [(Fraction(params[i]), Fraction(params[i + 1])) for i in range(0, len(params), 2)]
+
+            def run():
+                for u, v in uv:
+                    col = [horner_fraction(r, 1 - v, v) for r in rows]
+                    h = horner_fraction(col, 1 - u, u)
+                    [x / h[-1] for x in h[:-1]]
+            result[name] = best(repeat, len(uv), run)
+    return result
+
+
+PEERS = {
+    "f64_curve3": ("f64_curve3_vs_bezier", "bezier Curve.evaluate_multi"),
+    "f64_curve10": ("f64_curve10_vs_bezier", "bezier Curve.evaluate_multi"),
+    "f64_curve40": ("f64_curve40_vs_bezier", "bezier Curve.evaluate_multi"),
+    "f64_tri3": ("f64_tri3_vs_bezier", "bezier Triangle.evaluate_cartesian_multi"),
+    "f64_bicubic": ("f64_bicubic_vs_geomdl", "geomdl NURBS.Surface.evaluate_list"),
+    "exact_bicubic": ("exact_bicubic_vs_fractions", "Python fractions, same Horner scheme"),
+    "exact_curve40": ("exact_curve40_vs_fractions", "Python fractions, same Horner scheme"),
+}
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--ours", required=True, help="path of the peer_eval example binary")
+    ap.add_argument("--rounds", type=int, default=3)
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--seed", type=int, default=12)
+    args = ap.parse_args()
+    cases = make_cases(args.seed)
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        json.dump(cases, f)
+        path = f.name
+    ours_runs, theirs_runs = [], []
+    for r in range(args.rounds):
+        out = subprocess.run([args.ours, path, "--repeat", str(args.repeat)], check=True,
+                             capture_output=True, text=True).stdout
+        ours_runs.append(json.loads(out))
+        theirs_runs.append(theirs(cases, args.repeat))
+        print(f"round {r + 1}/{args.rounds} done", flush=True)
+    med = lambda runs, k: statistics.median(run[k] for run in runs)
+    print(f"\n| case | ours (ns/point) | fixed-size kernel | peer | peer (ns/point) | ours / peer |")
+    print("| --- | --- | --- | --- | --- | --- |")
+    ratios = {}
+    for name, (key, peer) in PEERS.items():
+        o, t = med(ours_runs, name), med(theirs_runs, name)
+        ref = f"{med(ours_runs, name + '_reference'):.1f}" if name + "_reference" in ours_runs[0] else ""
+        ratios[key] = round(o / t, 4)
+        print(f"| {name} | {o:.1f} | {ref} | {peer} | {t:.1f} | {o / t:.3g} |")
+    print()
+    print(json.dumps(ratios))
+
+
+if __name__ == "__main__":
+    main()
