@@ -38,6 +38,9 @@
 //! homogeneous form avoids its division by `1 − t`.
 
 pub(crate) mod fraction_free;
+mod jet;
+
+pub use jet::Jets;
 
 use crate::algebra::scalar::{Field, Ring};
 use crate::curve::RationalCurve;

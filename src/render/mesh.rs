@@ -15,10 +15,11 @@
 //! N ∥ (w·P_u − w_u·P) × (w·P_v − w_v·P)      (w² > 0 drops out)
 //! ```
 //!
-//! and the homogeneous partials come from the last de Casteljau level:
-//! for a degree-n curve, `H'(t) = n·(b₁ⁿ⁻¹ − b₀ⁿ⁻¹)`; for a tri patch with
-//! level-1 points `b_{100}, b_{010}, b_{001}`, `H_u = n·(b_{100} − b_{001})`
-//! and `H_v = n·(b_{010} − b_{001})`. Only ring operations are used, so
+//! and the homogeneous partials come from the difference nets of
+//! [`Jets`] (`H_u = m Σ (H_{i+1,j} − H_{i,j}) B_{i,m−1} B_{j,n}`, and the
+//! tri analogue), evaluated by the batch kernel of [`crate::eval`] with one
+//! set of nets per patch; a curve's `H'(t) = n·(b₁ⁿ⁻¹ − b₀ⁿ⁻¹)` comes from
+//! the last de Casteljau level ([`curve_jet`]). Only ring operations are used, so
 //! [`rect_jet`], [`tri_jet`] and [`normal_direction`] are exact for exact
 //! scalars (and symbolic for `Poly`).
 //!
@@ -33,7 +34,8 @@
 
 use crate::algebra::scalar::{ratio, Ordered, Scalar};
 use crate::error::Error;
-use crate::hpoint::{de_casteljau, HPoint};
+use crate::eval::Jets;
+use crate::hpoint::HPoint;
 use crate::io::Patch;
 use crate::rect::RectPatch;
 use crate::tri::TriPatch;
@@ -90,9 +92,9 @@ pub fn curve_jet<T: Scalar>(points: &[HPoint<T>], t: &T) -> (HPoint<T>, HPoint<T
     (value, deriv)
 }
 
-/// `H`, `H_u`, `H_v` of a rect patch at `(u, v)`: [`curve_jet`] in v along
-/// each row `i`, then in u on the row values; `H_v` is the u-de Casteljau of
-/// the row derivatives. Exact for exact `T`.
+/// `H`, `H_u`, `H_v` of a rect patch at `(u, v)`, by [`Jets`] (the
+/// Horner–Bernstein kernel on the patch's net and its two difference
+/// nets). Exact for exact `T`. For many points build one [`Jets`].
 ///
 /// # Examples
 ///
@@ -107,17 +109,12 @@ pub fn curve_jet<T: Scalar>(points: &[HPoint<T>], t: &T) -> (HPoint<T>, HPoint<T
 /// assert_eq!(j.dv.coords, vec![ratio(0, 1), ratio(1, 1), ratio(1, 2), ratio(0, 1)]);
 /// ```
 pub fn rect_jet<T: Scalar>(patch: &RectPatch<T>, u: &T, v: &T) -> Jet<T> {
-    let (rows, drows): (Vec<_>, Vec<_>) = patch.ctrl().iter().map(|r| curve_jet(r, v)).unzip();
-    let (value, du) = curve_jet(&rows, u);
-    let dv = de_casteljau(&drows, u);
-    Jet { value, du, dv }
+    Jets::rect(patch).jet(u, v)
 }
 
-/// `H`, `H_u`, `H_v` of a tri patch at `(u, v)` (`w = 1 − u − v`):
-/// triangular de Casteljau down to the level-1 points `b_{100}, b_{010},
-/// b_{001}`, then `H = u·b_{100} + v·b_{010} + w·b_{001}`,
-/// `H_u = n·(b_{100} − b_{001})`, `H_v = n·(b_{010} − b_{001})`.
-/// Exact for exact `T`.
+/// `H`, `H_u`, `H_v` of a tri patch at `(u, v)` (`w = 1 − u − v`), by
+/// [`Jets`]: `H_u = n Σ (H_{i+1,j,k} − H_{i,j,k+1}) B^{n−1}_{ijk}` and
+/// likewise `H_v`. Exact for exact `T`.
 ///
 /// # Examples
 ///
@@ -133,41 +130,7 @@ pub fn rect_jet<T: Scalar>(patch: &RectPatch<T>, u: &T, v: &T) -> Jet<T> {
 /// assert_eq!(j.dv.coords[0], ratio(0, 1));
 /// ```
 pub fn tri_jet<T: Scalar>(patch: &TriPatch<T>, u: &T, v: &T) -> Jet<T> {
-    let w = T::one() - u - v;
-    let n = patch.degree();
-    let mut rows: Vec<Vec<HPoint<T>>> = patch.rows().to_vec();
-    if n == 0 {
-        let value = rows[0][0].clone();
-        let zero = HPoint::zero(value.dim());
-        return Jet {
-            value,
-            du: zero.clone(),
-            dv: zero,
-        };
-    }
-    for r in (2..=n).rev() {
-        rows = (0..r)
-            .map(|j| {
-                (0..r - j)
-                    .map(|i| {
-                        rows[j][i + 1]
-                            .scale(u)
-                            .add(&rows[j + 1][i].scale(v))
-                            .add(&rows[j][i].scale(&w))
-                    })
-                    .collect()
-            })
-            .collect();
-    }
-    // Level 1: rows[0] = [b_{001}, b_{100}], rows[1] = [b_{010}].
-    let (b001, b100, b010) = (&rows[0][0], &rows[0][1], &rows[1][0]);
-    let value = b100.scale(u).add(&b010.scale(v)).add(&b001.scale(&w));
-    let k: T = ratio(n as i64, 1);
-    Jet {
-        du: b100.sub(b001).scale(&k),
-        dv: b010.sub(b001).scale(&k),
-        value,
-    }
+    Jets::tri(patch).jet(u, v)
 }
 
 /// A vector along the surface normal at a jet, in 3D (2D patches get
@@ -277,11 +240,12 @@ impl Mesh {
     pub fn from_rect<T: Ordered>(patch: &RectPatch<T>, density: usize) -> Result<Mesh, Error> {
         let n = check_density(density)?;
         let mut mesh = Mesh::default();
-        let jet = |u: &T, v: &T| rect_jet(patch, u, v);
+        let mut jets = Jets::rect(patch);
+        let mut jet = |u: &T, v: &T| jets.jet(u, v);
         let centre = (ratio(1, 2), ratio(1, 2));
         for i in 0..=n {
             for j in 0..=n {
-                mesh.push_vertex(&jet, grid_point(i, j, n), &centre)?;
+                mesh.push_vertex(&mut jet, grid_point(i, j, n), &centre)?;
             }
         }
         let id = |i: usize, j: usize| i * (n + 1) + j;
@@ -303,13 +267,14 @@ impl Mesh {
     pub fn from_tri<T: Ordered>(patch: &TriPatch<T>, density: usize) -> Result<Mesh, Error> {
         let n = check_density(density)?;
         let mut mesh = Mesh::default();
-        let jet = |u: &T, v: &T| tri_jet(patch, u, v);
+        let mut jets = Jets::tri(patch);
+        let mut jet = |u: &T, v: &T| jets.jet(u, v);
         let centre = (ratio(1, 3), ratio(1, 3));
         let mut start = Vec::with_capacity(n + 1);
         for j in 0..=n {
             start.push(mesh.positions.len());
             for i in 0..=n - j {
-                mesh.push_vertex(&jet, grid_point(i, j, n), &centre)?;
+                mesh.push_vertex(&mut jet, grid_point(i, j, n), &centre)?;
             }
         }
         let id = |i: usize, j: usize| start[j] + i;
@@ -338,7 +303,7 @@ impl Mesh {
     /// docs for collapsed points).
     fn push_vertex<T: Ordered>(
         &mut self,
-        jet: &impl Fn(&T, &T) -> Jet<T>,
+        jet: &mut impl FnMut(&T, &T) -> Jet<T>,
         (u, v): (T, T),
         centre: &(T, T),
     ) -> Result<(), Error> {

@@ -15,6 +15,7 @@
 use super::Split;
 use crate::algebra::scalar::Ordered;
 use crate::error::Error;
+use crate::eval::Evaluator;
 use crate::io::Patch;
 use std::fmt::Display;
 
@@ -216,14 +217,19 @@ pub(crate) fn draw_colored<T: Ordered + Display>(
     Ok(out)
 }
 
-/// A point of a patch as 3D `f64`.
-fn point(p: &Patch<f64>, uv: [f64; 2]) -> Result<[f64; 3], Error> {
-    let h = match p {
-        Patch::Curve(c) => c.eval_hom(&uv[0]),
-        Patch::Rect(r) => r.eval_hom(&uv[0], &uv[1]),
-        Patch::Tri(t) => t.eval_hom(&uv[0], &uv[1]),
+/// The points of a patch at the parameters `uvs` (`[t, _]` for a curve),
+/// as 3D `f64`, by one batch evaluation.
+fn points(p: &Patch<f64>, uvs: impl Iterator<Item = [f64; 2]>) -> Result<Vec<[f64; 3]>, Error> {
+    let (mut ev, per_point) = match p {
+        Patch::Curve(c) => (Evaluator::curve(c), 1),
+        Patch::Rect(r) => (Evaluator::rect(r), 2),
+        Patch::Tri(t) => (Evaluator::tri(t), 2),
     };
-    to3(&h.project()?)
+    let params: Vec<f64> = uvs.flat_map(|uv| uv.into_iter().take(per_point)).collect();
+    let d = ev.net().dim();
+    let mut out = vec![0.0; params.len() / per_point * d];
+    ev.eval_batch(&params, &mut out)?;
+    out.chunks(d).map(to3).collect()
 }
 
 fn to3(x: &[f64]) -> Result<[f64; 3], Error> {
@@ -271,7 +277,7 @@ fn stroke(
     color: usize,
     uvs: impl Iterator<Item = [f64; 2]>,
 ) -> Result<(), Error> {
-    let points = uvs.map(|uv| point(p, uv)).collect::<Result<_, _>>()?;
+    let points = points(p, uvs)?;
     out.strokes.push(Stroke {
         role: Role::Surface,
         color,
@@ -287,8 +293,7 @@ fn speed_dots(
     color: usize,
     uvs: impl Iterator<Item = [f64; 2]>,
 ) -> Result<(), Error> {
-    for uv in uvs {
-        let at = point(p, uv)?;
+    for at in points(p, uvs)? {
         out.dots.push(Dot {
             role: Role::Speed,
             color,
