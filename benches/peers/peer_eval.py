@@ -16,8 +16,10 @@ Cases (per point, so batch sizes differ between cases):
 - f64_bicubic: rational bicubic in space, geomdl `NURBS.Surface`
   (clamped knots, so the one Bézier patch) `evaluate_list` (2 000 points);
 - exact_bicubic, exact_curve40: the same homogeneous Horner–Bernstein sum
-  as ours in Python with `Fraction` (200 points; parameters k/100 and
-  123/457-like, weights like 12345/678).
+  as ours in Python with `Fraction` (200 points; coordinates decimals with
+  two places (k/100, as CAD data in decimal text reads exactly), weights
+  random p/q with p in 10000..20000 and q in 600..700 (like 12345/678),
+  parameters k/100 or k/457).
 
 The last line printed is the JSON object of ratios ours/peer.
 """
@@ -74,7 +76,7 @@ def make_cases(seed):
     # Exact: rational coordinates and weights, parameters k/100 and p/457.
     def exact_param():
         return Fraction(rng.randint(0, 100), 100) if rng.random() < 0.5 else Fraction(rng.randint(0, 457), 457)
-    rect_q = [[[Fraction(rng.randint(-1000, 1000), rng.randint(1, 100)) for _ in range(3)] for _ in range(4)]
+    rect_q = [[[Fraction(rng.randint(-10000, 10000), 100) for _ in range(3)] for _ in range(4)]
               for _ in range(4)]
     w_q = [[Fraction(rng.randint(10000, 20000), rng.randint(600, 700)) for _ in range(4)] for _ in range(4)]
     cases.append({"name": "exact_bicubic",
@@ -82,7 +84,7 @@ def make_cases(seed):
                             "points": [[[frac_text(x) for x in p] for p in row] for row in rect_q],
                             "weights": [[frac_text(w) for w in row] for row in w_q]},
                   "params": [frac_text(exact_param()) for _ in range(2 * EXACT_POINTS)], "exact": True})
-    curve_q = [[Fraction(rng.randint(-1000, 1000), rng.randint(1, 100)) for _ in range(2)] for _ in range(41)]
+    curve_q = [[Fraction(rng.randint(-10000, 10000), 100) for _ in range(2)] for _ in range(41)]
     cw_q = [Fraction(rng.randint(10000, 20000), rng.randint(600, 700)) for _ in range(41)]
     cases.append({"name": "exact_curve40",
                   "patch": {"kind": "curve", "degree": 40,

@@ -3,9 +3,10 @@
 //! with a machine-word fast path ([`Int`]), multivariate polynomials over Q
 //! ([`Poly`], the symbolic scalar of the proofs), univariate and bivariate
 //! polynomials ([`UPoly`], [`BPoly`]), the prime field [`Fp`], `f64`
-//! intervals with outward rounding ([`Interval`]) and exact real algebraic
-//! numbers ([`RealAlgebraic`]).
+//! intervals with outward rounding ([`Interval`]), exact real algebraic
+//! numbers ([`RealAlgebraic`]) and Lehmer's gcd of big integers ([`gcd`]).
 
+pub mod gcd;
 pub(crate) mod int;
 pub(crate) mod interval;
 pub(crate) mod modp;

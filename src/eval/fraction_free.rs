@@ -6,13 +6,15 @@
 //! curve:  t = p/q            → (a : b) = (q − p : p)
 //! rect:   u = p/q, v = r/s   → (q − p : p), (s − r : r)
 //! tri:    (u, v) = (a/q, b/q) → (a, b, q − a − b)
-//! X = H_d / H_w              (the only gcds: one per output coordinate)
+//! X = H_d / H_w              (the only gcds: one per output coordinate,
+//!                             by Lehmer's algorithm, crate::algebra::gcd)
 //! ```
 //!
 //! The kernel is the generic one of [`Net::eval_hom_into`] run on [`Int`]:
 //! `i128` while the values fit, big integers after, never a gcd on the way.
 
 use super::{Evaluator, Net, Shape, Workspace};
+use crate::algebra::gcd::fraction;
 use crate::algebra::int::{common_denominator, Int};
 use crate::error::Error;
 use num_bigint::BigInt;
@@ -60,7 +62,7 @@ fn project(h: &[Int], out: &mut [BigRational]) -> Result<(), Error> {
     }
     let w: BigInt = w[0].to_bigint();
     for (o, xi) in out.iter_mut().zip(x) {
-        *o = BigRational::new(xi.to_bigint(), w.clone());
+        *o = fraction(xi.to_bigint(), w.clone());
     }
     Ok(())
 }

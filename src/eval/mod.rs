@@ -314,39 +314,57 @@ impl<T: Ring> Net<T> {
 /// `Σ_i C(n,i) a^{n−i} bⁱ H_i` by Horner in `a`, into `out`: the points
 /// `H_i` are the `stride`-long chunks of `points`, `binom` is row `n` of
 /// Pascal's triangle.
+fn horner<T: Ring>(points: &[T], stride: usize, binom: &[T], a: &T, b: &T, out: &mut [T]) {
+    horner_lanes::<T, 1>(points, stride, binom, [a], [b], out);
+}
+
+/// [`horner`] at `L` parameters at once, lane `l` into
+/// `out[l·stride .. (l+1)·stride]`: the lanes' Horner chains are
+/// independent, so the processor overlaps them (for a high degree the
+/// chain's latency, not the arithmetic, bounds one lane).
 ///
 /// The body is [`horner_width`], instantiated for the common strides 3
 /// (planar) and 4 (spatial) so that the coordinate loop has a length known
 /// at compile time (unrolled, no bounds checks), and for any other stride.
-fn horner<T: Ring>(points: &[T], stride: usize, binom: &[T], a: &T, b: &T, out: &mut [T]) {
-    match stride {
-        3 => horner_width::<T, 3>(points, stride, binom, a, b, out),
-        4 => horner_width::<T, 4>(points, stride, binom, a, b, out),
-        _ => horner_width::<T, 0>(points, stride, binom, a, b, out),
-    }
-}
-
-/// [`horner`] with the stride `W` fixed at compile time (`W = 0`: the
-/// run-time `stride`).
-#[inline(always)]
-fn horner_width<T: Ring, const W: usize>(
+fn horner_lanes<T: Ring, const L: usize>(
     points: &[T],
     stride: usize,
     binom: &[T],
-    a: &T,
-    b: &T,
+    a: [&T; L],
+    b: [&T; L],
+    out: &mut [T],
+) {
+    match stride {
+        3 => horner_width::<T, 3, L>(points, stride, binom, a, b, out),
+        4 => horner_width::<T, 4, L>(points, stride, binom, a, b, out),
+        _ => horner_width::<T, 0, L>(points, stride, binom, a, b, out),
+    }
+}
+
+/// [`horner_lanes`] with the stride `W` fixed at compile time (`W = 0`:
+/// the run-time `stride`).
+#[inline(always)]
+fn horner_width<T: Ring, const W: usize, const L: usize>(
+    points: &[T],
+    stride: usize,
+    binom: &[T],
+    a: [&T; L],
+    b: [&T; L],
     out: &mut [T],
 ) {
     let s = if W == 0 { stride } else { W };
-    let out = &mut out[..s];
-    out.clone_from_slice(&points[..s]);
-    let mut bpow = T::one();
+    for lane in out[..L * s].chunks_exact_mut(s) {
+        lane.clone_from_slice(&points[..s]);
+    }
+    let mut bpow: [T; L] = std::array::from_fn(|_| T::one());
     for (c, point) in binom.iter().zip(points.chunks_exact(s)).skip(1) {
-        bpow = bpow * b;
-        let coef = c.clone() * &bpow;
-        for (o, x) in out.iter_mut().zip(&point[..s]) {
-            let prev = std::mem::replace(o, T::zero());
-            *o = prev * a + &(coef.clone() * x);
+        for (l, lane) in out[..L * s].chunks_exact_mut(s).enumerate() {
+            bpow[l] = std::mem::replace(&mut bpow[l], T::zero()) * b[l];
+            let coef = c.clone() * &bpow[l];
+            for (o, x) in lane.iter_mut().zip(&point[..s]) {
+                let prev = std::mem::replace(o, T::zero());
+                *o = prev * a[l] + &(coef.clone() * x);
+            }
         }
     }
 }
@@ -415,18 +433,28 @@ pub struct Evaluator<T> {
     ws: Workspace<T>,
     hom: [T; 4],
     point: Vec<T>,
+    /// [`LANES`] homogeneous points of a curve batch.
+    lanes: Vec<T>,
 }
+
+/// Curve points evaluated together in a batch ([`horner_lanes`]).
+const LANES: usize = 4;
 
 impl<T: Field> Evaluator<T> {
     /// An evaluator of `net`.
     pub fn new(net: Net<T>) -> Self {
         let ws = net.workspace();
         let point = vec![T::zero(); net.stride];
+        let lanes = match net.shape {
+            Shape::Curve(_) => vec![T::zero(); LANES * net.stride],
+            _ => Vec::new(),
+        };
         Evaluator {
             net,
             ws,
             hom: [T::zero(), T::zero(), T::zero(), T::zero()],
             point,
+            lanes,
         }
     }
 
@@ -489,9 +517,31 @@ impl<T: Field> Evaluator<T> {
     }
 
     /// The generic batch: [`Evaluator::eval_into`] point after point.
+    /// Curves go [`LANES`] points at a time ([`horner_lanes`]); the rest,
+    /// and patches, one at a time.
     pub(crate) fn eval_batch_generic(&mut self, params: &[T], out: &mut [T]) -> Result<(), Error> {
         let (k, d) = (self.net.shape.params(), self.net.dim());
-        for (p, o) in params.chunks(k).zip(out.chunks_mut(d)) {
+        let mut done = 0;
+        if let Shape::Curve(n) = self.net.shape {
+            let s = self.net.stride;
+            let mut groups = params
+                .chunks_exact(LANES)
+                .zip(out.chunks_exact_mut(LANES * d));
+            for (ts, o) in &mut groups {
+                let a: [T; LANES] = std::array::from_fn(|l| T::one() - &ts[l]);
+                let b: [&T; LANES] = std::array::from_fn(|l| &ts[l]);
+                let binom = self.net.binomial_row(n);
+                horner_lanes(&self.net.coords, s, binom, a.each_ref(), b, &mut self.lanes);
+                for (h, x) in self.lanes.chunks_exact(s).zip(o.chunks_exact_mut(d)) {
+                    project_into(h, x)?;
+                }
+                done += LANES;
+            }
+        }
+        for (p, o) in params[done * k..]
+            .chunks(k)
+            .zip(out[done * d..].chunks_mut(d))
+        {
             self.eval_into(p, o)?;
         }
         Ok(())

@@ -1,0 +1,151 @@
+//! Lehmer's gcd of big integers, and exact fractions normalized with it.
+//!
+//! `num-bigint`'s gcd is Stein's binary algorithm: one shift and one
+//! subtraction of the whole number per bit, quadratic in the size with a
+//! large constant. Lehmer's algorithm runs Euclid on the leading 64 bits
+//! of both numbers, collects the quotients in a 2 × 2 matrix while they are
+//! certain to be those of the full numbers (Collins' test below), and
+//! applies the matrix to the big numbers once per about 30 quotients.
+//!
+//! ```text
+//! x, y = leading 64 bits of a, b (same shift);  (A B; C D) = identity
+//! while y + C ≠ 0, y + D ≠ 0 and q = ⌊(x + A)/(y + C)⌋ = ⌊(x + B)/(y + D)⌋:
+//!     (A, B, C, D) ← (C, D, A − qC, B − qD);  (x, y) ← (y, x − qy)
+//! (a, b) ← (A a + B b, C a + D b), or one full Euclid step if B = 0
+//! ```
+//!
+//! Reference: D. E. Knuth, *The Art of Computer Programming*, vol. 2,
+//! 3rd ed., §4.5.2, Algorithm L.
+
+use num_bigint::{BigInt, BigUint, Sign};
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{ToPrimitive, Zero};
+
+/// `gcd(a, b)` by Lehmer's algorithm (`gcd(0, 0) = 0`).
+///
+/// ```
+/// use exact_bezier::algebra::gcd::gcd;
+/// use num_bigint::BigUint;
+/// let a: BigUint = "123456789012345678901234567890123456789012345678901234567890".parse().unwrap();
+/// let b: BigUint = "987654321098765432109876543210987654321098765432109876543210".parse().unwrap();
+/// assert_eq!(gcd(&a, &b), num_integer::Integer::gcd(&a, &b));
+/// ```
+pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
+    let (mut a, mut b) = if a >= b {
+        (a.clone(), b.clone())
+    } else {
+        (b.clone(), a.clone())
+    };
+    while !b.is_zero() {
+        if a.bits() <= 128 {
+            let (x, y) = (a.to_u128().unwrap_or(0), b.to_u128().unwrap_or(0));
+            return BigUint::from(gcd_u128(x, y));
+        }
+        let shift = a.bits() - 64;
+        let x = (&a >> shift).to_u64().unwrap_or(0);
+        let y = (&b >> shift).to_u64().unwrap_or(0);
+        let [m00, m01, m10, m11] = cosequence(x, y);
+        if m01 == 0 {
+            let r = &a % &b;
+            a = b;
+            b = r;
+        } else {
+            let (sa, sb) = (BigInt::from(a), BigInt::from(b));
+            a = (&sa * m00 + &sb * m01).magnitude().clone();
+            b = (&sa * m10 + &sb * m11).magnitude().clone();
+        }
+    }
+    a
+}
+
+/// The matrix `(A, B, C, D)` of the quotients of Euclid on `(x, y)` that
+/// are certain to be those of the full numbers (Knuth's Algorithm L).
+fn cosequence(x: u64, y: u64) -> [i128; 4] {
+    let (mut x, mut y) = (i128::from(x), i128::from(y));
+    let (mut a, mut b, mut c, mut d) = (1i128, 0i128, 0i128, 1i128);
+    while y + c != 0 && y + d != 0 {
+        let q = (x + a) / (y + c);
+        if q != (x + b) / (y + d) {
+            break;
+        }
+        (a, c) = (c, a - q * c);
+        (b, d) = (d, b - q * d);
+        (x, y) = (y, x - q * y);
+    }
+    [a, b, c, d]
+}
+
+/// `gcd(x, y)` on machine words, by Euclid.
+fn gcd_u128(mut x: u128, mut y: u128) -> u128 {
+    while y != 0 {
+        (x, y) = (y, x % y);
+    }
+    x
+}
+
+/// The fraction `numer/denom` in lowest terms with a positive denominator,
+/// reduced by [`gcd`].
+///
+/// **Panics if `denom` is zero.**
+///
+/// ```
+/// use exact_bezier::algebra::gcd::fraction;
+/// use num_rational::BigRational;
+/// assert_eq!(fraction(6.into(), (-4).into()), BigRational::new((-3).into(), 2.into()));
+/// ```
+pub fn fraction(numer: BigInt, denom: BigInt) -> BigRational {
+    assert!(!denom.is_zero(), "a fraction needs a nonzero denominator");
+    let g = BigInt::from(gcd(numer.magnitude(), denom.magnitude()));
+    let (n, d) = (numer.div_floor(&g), denom.div_floor(&g));
+    if d.sign() == Sign::Minus {
+        BigRational::new_raw(-n, -d)
+    } else {
+        BigRational::new_raw(n, d)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn big(limbs: &[u64]) -> BigUint {
+        BigUint::from_slice(
+            &limbs
+                .iter()
+                .flat_map(|l| [*l as u32, (*l >> 32) as u32])
+                .collect::<Vec<_>>(),
+        )
+    }
+
+    proptest! {
+        /// Lehmer's gcd equals the binary gcd of `num-integer`, on numbers
+        /// with a planted common factor and on random ones.
+        #[test]
+        fn lehmer_equals_binary_gcd(
+            a in prop::collection::vec(any::<u64>(), 0..12),
+            b in prop::collection::vec(any::<u64>(), 0..12),
+            f in prop::collection::vec(any::<u64>(), 0..4),
+        ) {
+            let (a, b, f) = (big(&a), big(&b), big(&f));
+            prop_assert_eq!(gcd(&a, &b), a.gcd(&b));
+            let (fa, fb) = (&a * &f, &b * &f);
+            prop_assert_eq!(gcd(&fa, &fb), fa.gcd(&fb));
+        }
+    }
+
+    #[test]
+    fn edge_cases() {
+        let two = BigUint::from(2u32);
+        let p = two.pow(300u32);
+        assert_eq!(gcd(&p, &BigUint::zero()), p);
+        assert_eq!(gcd(&BigUint::zero(), &BigUint::zero()), BigUint::zero());
+        assert_eq!(gcd(&p, &two.pow(200u32)), two.pow(200u32));
+        assert_eq!(gcd(&p, &(&p + 1u32)), BigUint::from(1u32));
+        assert_eq!(
+            fraction((-10).into(), (-4).into()),
+            BigRational::new(5.into(), 2.into())
+        );
+    }
+}
