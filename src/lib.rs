@@ -17,6 +17,9 @@
 //!   evaluation, derivatives, subdivision, elevation and Möbius maps. Their
 //!   facets are in the modules [`curve`] (curvature, joins, degree
 //!   reduction, circles), [`rect`] and [`tri`].
+//! - **Many points fast**: [`eval::Evaluator`] evaluates a batch of
+//!   parameters into your buffer with no allocation per point (`f64`), and
+//!   exact evaluation is fraction-free on machine integers.
 //! - **Exact numbers**: [`ratio`] builds a rational. [`io`] reads the JSON
 //!   format of `docs/FORMAT.md` (numbers are read exactly from their text)
 //!   and writes it back.

@@ -64,12 +64,17 @@ macro_rules! int_binary_op {
         impl<'a> $Trait<&'a Int> for Int {
             type Output = Int;
             fn $method(self, rhs: &'a Int) -> Int {
-                if let (Int::Small(a), Int::Small(b)) = (&self, rhs) {
-                    if let Some(r) = a.$checked(*b) {
-                        return Int::Small(r);
-                    }
+                // Big operands are used in place (no copy); a small one
+                // enters as a machine word (scalar arithmetic).
+                match (self, rhs) {
+                    (Int::Small(a), Int::Small(b)) => match a.$checked(*b) {
+                        Some(r) => Int::Small(r),
+                        None => Int::from_bigint(BigInt::from(a).$method(*b)),
+                    },
+                    (Int::Big(a), Int::Small(b)) => Int::from_bigint(a.$method(*b)),
+                    (Int::Small(a), Int::Big(b)) => Int::from_bigint(BigInt::from(a).$method(b)),
+                    (Int::Big(a), Int::Big(b)) => Int::from_bigint(a.$method(b)),
                 }
-                Int::from_bigint(self.to_bigint().$method(rhs.to_bigint()))
             }
         }
         impl $Trait for Int {

@@ -137,6 +137,23 @@ fn f64_kernel_agrees_with_de_casteljau() {
     }
 }
 
+/// A curve batch (four lanes at a time, then single points) gives, bit for
+/// bit, the values of one point at a time: the lanes run the same
+/// operations in the same order.
+#[test]
+fn f64_lanes_equal_single_points() {
+    let c = wavy_curve(10).map(crate::Ordered::to_f64);
+    let mut ev = Evaluator::curve(&c);
+    let ts: Vec<f64> = (0..11).map(|k| k as f64 / 10.0).collect();
+    let mut batch = vec![0.0; 22];
+    ev.eval_batch(&ts, &mut batch).unwrap();
+    for (t, x) in ts.iter().zip(batch.chunks(2)) {
+        let mut one = [0.0; 2];
+        ev.eval_into(&[*t], &mut one).unwrap();
+        assert_eq!(x, one);
+    }
+}
+
 #[test]
 fn mismatched_buffers_are_shape_errors() {
     let mut ev = Evaluator::curve(&wavy_curve(3));
