@@ -15,7 +15,8 @@ Cases (per point, so batch sizes differ between cases):
   `Triangle.evaluate_cartesian_multi(verify=False)` (200 000 points);
 - f64_bicubic: rational bicubic in space, geomdl `NURBS.Surface`
   (clamped knots, so the one Bézier patch) `evaluate_list` (2 000 points);
-- exact_bicubic, exact_curve40: the same homogeneous Horner–Bernstein sum
+- exact_curve3/10/40, exact_tri3, exact_bicubic: the same homogeneous
+  Horner–Bernstein sum
   as ours in Python with `Fraction` (200 points; coordinates decimals with
   two places (k/100, as CAD data in decimal text reads exactly), weights
   random p/q with p in 10000..20000 and q in 600..700 (like 12345/678),
@@ -84,13 +85,27 @@ def make_cases(seed):
                             "points": [[[frac_text(x) for x in p] for p in row] for row in rect_q],
                             "weights": [[frac_text(w) for w in row] for row in w_q]},
                   "params": [frac_text(exact_param()) for _ in range(2 * EXACT_POINTS)], "exact": True})
-    curve_q = [[Fraction(rng.randint(-10000, 10000), 100) for _ in range(2)] for _ in range(41)]
-    cw_q = [Fraction(rng.randint(10000, 20000), rng.randint(600, 700)) for _ in range(41)]
-    cases.append({"name": "exact_curve40",
-                  "patch": {"kind": "curve", "degree": 40,
-                            "points": [[frac_text(x) for x in p] for p in curve_q],
-                            "weights": [frac_text(w) for w in cw_q]},
-                  "params": [frac_text(exact_param()) for _ in range(EXACT_POINTS)], "exact": True})
+    for n in (3, 10, 40):
+        curve_q = [[Fraction(rng.randint(-10000, 10000), 100) for _ in range(2)] for _ in range(n + 1)]
+        cw_q = [Fraction(rng.randint(10000, 20000), rng.randint(600, 700)) for _ in range(n + 1)]
+        cases.append({"name": f"exact_curve{n}",
+                      "patch": {"kind": "curve", "degree": n,
+                                "points": [[frac_text(x) for x in p] for p in curve_q],
+                                "weights": [frac_text(w) for w in cw_q]},
+                      "params": [frac_text(exact_param()) for _ in range(EXACT_POINTS)], "exact": True})
+    tri_q = [[[Fraction(rng.randint(-10000, 10000), 100) for _ in range(3)] for _ in range(4 - j)] for j in range(4)]
+    tw_q = [[Fraction(rng.randint(10000, 20000), rng.randint(600, 700)) for _ in range(4 - j)] for j in range(4)]
+    uv_q = []
+    for _ in range(EXACT_POINTS):
+        u, v = exact_param(), exact_param()
+        if u + v > 1:
+            u, v = 1 - u, 1 - v
+        uv_q += [frac_text(u), frac_text(v)]
+    cases.append({"name": "exact_tri3",
+                  "patch": {"kind": "tri", "degree": 3,
+                            "points": [[[frac_text(x) for x in p] for p in row] for row in tri_q],
+                            "weights": [[frac_text(w) for w in row] for row in tw_q]},
+                  "params": uv_q, "exact": True})
     return cases
 
 
@@ -142,7 +157,7 @@ def theirs(cases, repeat):
             surf.knotvector_v = [0, 0, 0, 0, 1, 1, 1, 1]
             uv = [tuple(params[i:i + 2]) for i in range(0, len(params), 2)]
             result[name] = best(repeat, len(uv), lambda: surf.evaluate_list(uv))
-        elif name == "exact_curve40":
+        elif name.startswith("exact_curve"):
             hs = exact_hom(patch["points"], patch["weights"])
             ts = [Fraction(t) for t in params]
 
@@ -151,6 +166,21 @@ def theirs(cases, repeat):
                     h = horner_fraction(hs, 1 - t, t)
                     [x / h[-1] for x in h[:-1]]
             result[name] = best(repeat, len(ts), run)
+        elif name == "exact_tri3":
+            rows = [exact_hom(p, w) for p, w in zip(patch["points"], patch["weights"])]
+            uv = [(Fraction(params[i]), Fraction(params[i + 1])) for i in range(0, len(params), 2)]
+
+            def run():
+                for u, v in uv:
+                    w = 1 - u - v
+                    # Σ_j C(3,j) vʲ [Σ_i C(3−j,i) uⁱ w^{3−j−i} H_ij], as ours.
+                    h = [Fraction(0)] * 4
+                    for j, row in enumerate(rows):
+                        r = horner_fraction(row, w, u)
+                        c = comb(3, j) * v**j
+                        h = [a + c * b for a, b in zip(h, r)]
+                    [x / h[-1] for x in h[:-1]]
+            result[name] = best(repeat, len(uv), run)
         elif name == "exact_bicubic":
             rows = [exact_hom(p, w) for p, w in zip(patch["points"], patch["weights"])]
             uv = [(Fraction(params[i]), Fraction(params[i + 1])) for i in range(0, len(params), 2)]
@@ -170,6 +200,9 @@ PEERS = {
     "f64_curve40": ("f64_curve40_vs_bezier", "bezier Curve.evaluate_multi"),
     "f64_tri3": ("f64_tri3_vs_bezier", "bezier Triangle.evaluate_cartesian_multi"),
     "f64_bicubic": ("f64_bicubic_vs_geomdl", "geomdl NURBS.Surface.evaluate_list"),
+    "exact_curve3": ("exact_curve3_vs_fractions", "Python fractions, same Horner scheme"),
+    "exact_curve10": ("exact_curve10_vs_fractions", "Python fractions, same Horner scheme"),
+    "exact_tri3": ("exact_tri3_vs_fractions", "Python fractions, same Horner scheme"),
     "exact_bicubic": ("exact_bicubic_vs_fractions", "Python fractions, same Horner scheme"),
     "exact_curve40": ("exact_curve40_vs_fractions", "Python fractions, same Horner scheme"),
 }
