@@ -1,11 +1,15 @@
 //! `curvature FILE --at T [--scalar f64]`: `{"curvature_squared": κ²,
-//! "curvature": κ}` — κ² exact by default, κ always as `f64` (κ is
-//! irrational in general).
+//! "curvature": κ, "curvature_approx": κ as f64}` — exact by default: κ² is
+//! rational and κ = √κ² a real algebraic number (a rational when κ² is a
+//! square, `sqrt(q)`-style text otherwise); with `--scalar f64` both are
+//! numbers and there is no `curvature_approx`.
 
 use super::deriv::{curve_of, single_parameter};
 use super::{load, run_each, PatchOp, ScalarKind};
-use crate::algebra::scalar::Ordered;
+use crate::algebra::scalar::{Ordered, Roots, Scalar};
+use crate::algebra::RealAlgebraic;
 use crate::error::Error;
+use crate::io::parse_rational;
 use crate::io::{JsonScalar, Patch};
 use crate::limits::Size;
 use serde_json::{json, Value};
@@ -28,7 +32,34 @@ pub struct Args {
 
 pub fn run(a: &Args) -> Result<Value, Error> {
     let t = single_parameter(&a.at, a.extrapolate)?;
-    run_each(&load(&a.file)?, &[t], a.scalar, &Curvature)
+    let mut v = run_each(&load(&a.file)?, &[t], a.scalar, &Curvature)?;
+    if a.scalar == ScalarKind::Exact {
+        match &mut v {
+            Value::Array(items) => items.iter_mut().try_for_each(exact_kappa)?,
+            one => exact_kappa(one)?,
+        }
+    }
+    Ok(v)
+}
+
+/// Replace the `f64` κ of an exact result by κ = √κ², exactly (the `f64`
+/// value moves to `curvature_approx`). κ² is read back from the result's
+/// own exact text.
+fn exact_kappa(v: &mut Value) -> Result<(), Error> {
+    let text = match &v["curvature_squared"] {
+        Value::String(s) => s.clone(),
+        other => other.to_string(),
+    };
+    let k2 = RealAlgebraic::from_rational(&parse_rational(&text)?);
+    let kappa = k2
+        .nth_root(2)
+        .ok_or_else(|| Error::Domain(format!("κ² = {text} is negative")))?;
+    let approx = v["curvature"].take();
+    v["curvature"] = kappa.to_json();
+    if !approx.is_null() {
+        v["curvature_approx"] = approx;
+    }
+    Ok(())
 }
 
 /// κ² (exact for exact `T`) and κ of a curve at `params[0]`.

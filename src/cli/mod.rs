@@ -143,7 +143,7 @@ enum Command {
         after_help = "Example: exact-bezier deriv docs/examples/curve.json --at 1/2 --order 2"
     )]
     Deriv(deriv::Args),
-    /// Curvature of a curve: {"curvature_squared": κ² (exact), "curvature": κ (f64)}.
+    /// Curvature of a curve: {"curvature_squared": κ², "curvature": κ, "curvature_approx": κ as f64}, exact (κ = √κ², algebraic).
     #[command(after_help = "Example: exact-bezier curvature docs/examples/curve.json --at 1/2")]
     Curvature(curvature::Args),
     /// G0/G1/G2 verdicts for the join of curve A's end to curve B's start.

@@ -174,3 +174,37 @@ fn conic_types_of_known_arcs() {
     assert_eq!(conic([1, 1, 1]), ConicType::Parabola);
     assert_eq!(conic([1, 2, 2]), ConicType::Hyperbola);
 }
+
+/// `curvature` is exact (issue 14): on an arc of a circle of radius 5/3
+/// (control points (5/3)·(1, 0), (5/3)·(1, 1), (5/3)·(0, 1), weights 1, 1,
+/// 2, which is the quarter circle since w₁/√(w₀w₂) = cos 45°) κ is 3/5 at
+/// every t; elsewhere κ is irrational and its text squares to κ².
+#[test]
+fn curvature_is_exact() {
+    use crate::common::cli_json;
+    use exact_bezier::algebra::{parse_algebraic, RealAlgebraic};
+    let dir = std::env::temp_dir().join(format!("exact-bezier-kappa-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let arc = dir.join("arc.json");
+    std::fs::write(
+        &arc,
+        r#"{"kind":"curve","degree":2,"points":[["5/3",0],["5/3","5/3"],[0,"5/3"]],"weights":[1,1,2]}"#,
+    )
+    .unwrap();
+    for t in ["0", "1/7", "1/2", "0.9", "1"] {
+        let (code, v) = cli_json(&["curvature", arc.to_str().unwrap(), "--at", t]);
+        assert_eq!(code, 0);
+        assert_eq!(v["curvature"], "3/5", "t = {t}");
+        assert_eq!(v["curvature_squared"], "9/25");
+    }
+    let (code, v) = cli_json(&["curvature", "docs/examples/curve.json", "--at", "1/3"]);
+    assert_eq!(code, 0);
+    let kappa: RealAlgebraic = parse_algebraic(v["curvature"].as_str().unwrap()).unwrap();
+    assert!(kappa.as_rational().is_none(), "κ is irrational here");
+    let k2: RealAlgebraic = parse_algebraic(v["curvature_squared"].as_str().unwrap()).unwrap();
+    assert_eq!(kappa.clone() * &kappa, k2);
+    assert!(kappa > <RealAlgebraic as exact_bezier::Scalar>::from_i64(0));
+    let approx = v["curvature_approx"].as_f64().unwrap();
+    assert!((approx - exact_bezier::Ordered::to_f64(&kappa)).abs() < 1e-12);
+    let _ = std::fs::remove_dir_all(&dir);
+}
