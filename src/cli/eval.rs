@@ -29,8 +29,8 @@ pub struct Args {
     /// Input file (JSON), or - for standard input.
     file: String,
     /// Parameter point: t for a curve, u,v for a rect or tri patch (exact text: 1/3, 0.25).
-    /// Repeat --at for several points. Trig patches: tau=1/3[,tau=1/2] (exact, τ = tan(t/2))
-    /// or angles in radians (f64).
+    /// Repeat --at for several points. Trig patches: tau=1/3[,tau=1/2] (exact, τ = tan(t/2)),
+    /// angle=pi/3[,angle=pi/4] (exact, multiples of π/12) or angles in radians (f64).
     #[arg(long, allow_hyphen_values = true, required_unless_present = "grid")]
     at: Vec<String>,
     /// Evaluate on a grid instead: curve t = i/N; rect (i/N, j/N); tri (i/N, j/N) with i + j ≤ N.

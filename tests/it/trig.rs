@@ -282,6 +282,24 @@ fn cli_evaluates_trig_patches() {
     assert_eq!(code, 0);
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert!((v["point"][0].as_f64().unwrap() - 62.0 / 25.0).abs() < 1e-12);
+    // Exact angles: angle=pi/3 is the f64 angle π/3 to 1e-12, and
+    // angle=pi/2 is tau=1 exactly.
+    let (code, exact) = crate::common::cli_json(&["eval", curve, "--at", "angle=pi/3"]);
+    assert_eq!(code, 0);
+    let third = format!("{}", std::f64::consts::FRAC_PI_3);
+    let (_, float) = crate::common::cli_json(&["eval", curve, "--at", &third]);
+    for (x, f) in exact["point"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip(float["point"].as_array().unwrap())
+    {
+        let x = exact_bezier::algebra::parse_algebraic(x.as_str().unwrap()).unwrap();
+        assert!((exact_bezier::Ordered::to_f64(&x) - f.as_f64().unwrap()).abs() < 1e-12);
+    }
+    let (_, right) = crate::common::cli_json(&["eval", curve, "--at", "angle=pi/2"]);
+    let (_, tau1) = crate::common::cli_json(&["eval", curve, "--at", "tau=1"]);
+    assert_eq!(right, tau1);
     // The bowl: S₁ at (0, 0) is P₀₀.
     let bowl = fixture("bowl.json");
     let (code, out, _) = cli(&["eval", &bowl, "--at", "tau=0,tau=0"]);
