@@ -5,15 +5,19 @@
 //! such object per line, streamed (with `"patch": k` when the file holds
 //! several patches). Grids: a curve at `t = i/N`; a rect at `(i/N, j/N)`,
 //! `i` outer; a tri at `(i/N, j/N)` with `i + j ≤ N`, `i` outer.
+//! Control points and weights may be algebraic numbers (the text grammar
+//! of docs/FORMAT.md); the points then come out in that grammar.
 
 use super::{
-    charge_each, check_domain, check_finite, emit, json_text, one_or_many, parse_list, patch_f64,
-    read_input, run_each, PatchOp, ScalarKind,
+    check_domain, check_finite, emit, json_text, one_or_many, parse_list, patch_f64, read_input,
+    ScalarKind,
 };
-use crate::algebra::scalar::{Field, Ordered};
+use crate::algebra::scalar::{Field, Ordered, Scalar};
+use crate::algebra::RealAlgebraic;
 use crate::error::Error;
 use crate::eval::Evaluator;
-use crate::io::{point_to_json, read_patches, JsonScalar, Patch};
+use crate::io::{point_to_json, read_patches, read_patches_as, JsonScalar, Patch};
+use crate::limits::Size;
 use num_rational::BigRational;
 use serde_json::{json, Value};
 
@@ -49,32 +53,58 @@ pub struct Args {
 }
 
 /// The JSON result, or (with `--jsonl`) `Err(0)`: the lines are written.
+/// The JSON result, or (with `--jsonl`) `Err(0)`: the lines are written.
+///
+/// Patches whose numbers are all rational run on `BigRational`; a file
+/// with algebraic numbers (`"sqrt(6)/6"`, as `standardize` writes them)
+/// runs the same code on [`RealAlgebraic`].
 pub fn run(a: &Args) -> Result<Result<Value, i32>, Error> {
     let text = read_input(&a.file)?;
-    let single = a.at.len() == 1 && a.grid.is_none() && !a.jsonl;
     if let Some(trig) = crate::io::trig::read_trig_patches(&text)? {
-        if !single {
+        if !is_single(a) {
             return Err(Error::Shape(
                 "trig patches take one --at at a time (no --grid, --jsonl or repeated --at)".into(),
             ));
         }
         return super::eval_trig::run(&trig, &a.at[0], a.scalar).map(Ok);
     }
-    let patches = read_patches(&text)?;
+    match read_patches(&text) {
+        Ok(patches) => run_patches(a, &patches, crate::limits::bits, 1),
+        Err(rational) => match read_patches_as::<RealAlgebraic>(&text) {
+            Ok(patches) => run_patches(a, &patches, algebraic_bits, ALGEBRAIC_COST),
+            Err(_) => Err(rational),
+        },
+    }
+}
+
+/// One point, written as `{"point": …}`.
+fn is_single(a: &Args) -> bool {
+    a.at.len() == 1 && a.grid.is_none() && !a.jsonl
+}
+
+/// The work of one algebraic operation in units of a rational one of the
+/// same text size (a model: radical sums multiply term by term).
+const ALGEBRAIC_COST: u64 = 16;
+
+/// The size in bits of an algebraic number's text (≈ 3.4 bits a character).
+fn algebraic_bits(x: &RealAlgebraic) -> u64 {
+    x.to_string().len() as u64 * 7 / 2
+}
+
+/// `eval` on patches of exact numbers `T`: exactly, or on their nearest
+/// `f64` patches. The work is charged first (`cost` times the exact
+/// model for one operation on `T`).
+fn run_patches<T: JsonScalar + Ordered>(
+    a: &Args,
+    patches: &[Patch<T>],
+    bits_of: fn(&T) -> u64,
+    cost: u64,
+) -> Result<Result<Value, i32>, Error> {
     if patches.is_empty() {
         return Err(Error::Shape(format!(
             "{:?} holds an empty array: no curve or patch to evaluate",
             a.file
         )));
-    }
-    if single {
-        let params = parse_list(&a.at[0])?;
-        if !a.extrapolate {
-            for p in &patches {
-                check_domain(p, &params)?;
-            }
-        }
-        return run_each(&patches, &params, a.scalar, &Eval).map(Ok);
     }
     let lists: Vec<Vec<BigRational>> =
         a.at.iter()
@@ -87,17 +117,24 @@ pub fn run(a: &Args) -> Result<Result<Value, i32>, Error> {
             None => lists.clone(),
         };
         check_points(p, &at, a.extrapolate)?;
-        let param_bits = crate::limits::max_bits(at.iter().flatten());
-        charge_each("eval", std::slice::from_ref(p), a.scalar, |s| {
-            let ops = s.eval_ops().saturating_mul(at.len() as u64);
-            (ops, s.grown_bits(s.total_degree(), param_bits))
-        })?;
-        let tag = a.jsonl.then(|| (patches.len() > 1).then_some(k));
-        let points = match a.scalar {
-            ScalarKind::Exact => eval_points(p, &at, tag)?,
-            ScalarKind::F64 => eval_points(&patch_f64(p)?, &at, tag)?,
+        let size = Size::of(p, bits_of);
+        let ops = size.eval_ops().saturating_mul(at.len() as u64);
+        let units = match a.scalar {
+            ScalarKind::Exact => {
+                let bits = size.grown_bits(
+                    size.total_degree(),
+                    crate::limits::max_bits(at.iter().flatten()),
+                );
+                crate::limits::exact_work(ops, bits).saturating_mul(cost)
+            }
+            ScalarKind::F64 => ops,
         };
-        values.push(json!({ "points": points }));
+        crate::limits::charge("eval", units)?;
+        let tag = a.jsonl.then(|| (patches.len() > 1).then_some(k));
+        values.push(match a.scalar {
+            ScalarKind::Exact => evaluate(p, &at, is_single(a), tag)?,
+            ScalarKind::F64 => evaluate(&patch_f64(p)?, &at, is_single(a), tag)?,
+        });
     }
     if a.jsonl {
         return Ok(Err(0));
@@ -105,9 +142,29 @@ pub fn run(a: &Args) -> Result<Result<Value, i32>, Error> {
     Ok(Ok(one_or_many(values)))
 }
 
+/// `{"point": …}` for a single point, else `{"points": […]}` (or, with
+/// `tag`, the lines written).
+fn evaluate<U: JsonScalar + Field>(
+    p: &Patch<U>,
+    at: &[Vec<BigRational>],
+    single: bool,
+    tag: Option<Option<usize>>,
+) -> Result<Value, Error> {
+    if single {
+        let params: Vec<U> = at[0].iter().map(U::from_rational).collect();
+        let point = match p {
+            Patch::Curve(c) => c.eval(&params[0])?,
+            Patch::Rect(r) => r.eval(&params[0], &params[1])?,
+            Patch::Tri(t) => t.eval(&params[0], &params[1])?,
+        };
+        return Ok(json!({ "point": point_to_json(&point) }));
+    }
+    Ok(json!({ "points": eval_points(p, at, tag)? }))
+}
+
 /// The grid parameter points of `p` (module docs), refusing grids too
 /// large for one document.
-fn grid(p: &Patch<BigRational>, n: u64, jsonl: bool) -> Result<Vec<Vec<BigRational>>, Error> {
+fn grid<T: Scalar>(p: &Patch<T>, n: u64, jsonl: bool) -> Result<Vec<Vec<BigRational>>, Error> {
     if n == 0 {
         return Err(Error::Domain("--grid takes N ≥ 1".into()));
     }
@@ -138,8 +195,8 @@ fn grid(p: &Patch<BigRational>, n: u64, jsonl: bool) -> Result<Vec<Vec<BigRation
 
 /// Each point has the parameter count of `p` and, unless extrapolating,
 /// lies in its domain.
-fn check_points(
-    p: &Patch<BigRational>,
+fn check_points<T: Scalar>(
+    p: &Patch<T>,
     at: &[Vec<BigRational>],
     extrapolate: bool,
 ) -> Result<(), Error> {
@@ -193,32 +250,4 @@ fn eval_points<T: JsonScalar + Field>(
         }
     }
     Ok(kept)
-}
-
-/// The point of a curve at `t` or of a patch at `(u, v)`.
-struct Eval;
-
-impl PatchOp for Eval {
-    const NAME: &'static str = "eval";
-
-    fn apply<T: JsonScalar + Ordered>(&self, p: &Patch<T>, params: &[T]) -> Result<Value, Error> {
-        eval_with(p, params)
-    }
-}
-
-fn eval_with<T: JsonScalar + Ordered>(p: &Patch<T>, params: &[T]) -> Result<Value, Error> {
-    let want = if matches!(p, Patch::Curve(_)) { 1 } else { 2 };
-    if params.len() != want {
-        return Err(Error::Shape(format!(
-            "a {} takes {want} parameter(s) in --at, not {}",
-            p.kind(),
-            params.len()
-        )));
-    }
-    let point = match p {
-        Patch::Curve(c) => c.eval(&params[0])?,
-        Patch::Rect(r) => r.eval(&params[0], &params[1])?,
-        Patch::Tri(t) => t.eval(&params[0], &params[1])?,
-    };
-    Ok(json!({ "point": point_to_json(&point) }))
 }

@@ -588,7 +588,7 @@ pub(crate) fn charge_each(
 /// # Errors
 ///
 /// [`Error::NotFinite`] naming the first such number.
-pub(crate) fn patch_f64(p: &Patch<BigRational>) -> Result<Patch<f64>, Error> {
+pub(crate) fn patch_f64<T: Ordered>(p: &Patch<T>) -> Result<Patch<f64>, Error> {
     let bad = std::cell::Cell::new(false);
     let f = p.map(|x| {
         let y = x.to_f64();
@@ -641,7 +641,10 @@ pub(crate) fn run_each<Op: PatchOp>(
 /// # Errors
 ///
 /// [`Error::Domain`] naming the parameter and the flag.
-pub(crate) fn check_domain(p: &Patch<BigRational>, params: &[BigRational]) -> Result<(), Error> {
+pub(crate) fn check_domain<T: crate::Scalar>(
+    p: &Patch<T>,
+    params: &[BigRational],
+) -> Result<(), Error> {
     let (zero, one) = (BigRational::zero(), BigRational::one());
     let unit = |x: &BigRational| *x >= zero && *x <= one;
     let inside = match (p, params) {
