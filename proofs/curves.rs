@@ -163,7 +163,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "subdivision at τ keeps every point: left(s) = H(τs), right(s) = H(τ + s(1−τ))",
             "001 lecture, de Casteljau算法 (ours: subdivision)",
-            1..=8,
+            1..=10,
             "symbolic τ, s and c_i",
             |n| {
                 let (tau, s) = (v("tau"), v("s"));
@@ -177,7 +177,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "sub-segment [a, b] keeps every point: seg(s) = H(a + s(b − a))",
             "ours",
-            1..=6,
+            1..=10,
             "symbolic a, b, s and c_i",
             |n| {
                 let (a, b, s) = (v("a"), v("b"), v("s"));
@@ -199,7 +199,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "affine invariance: the curve of the mapped control points is the mapped curve, A X(t) + b",
             "001 lecture, 几何不变性",
-            1..=8,
+            1..=10,
             "symbolic 2×2 matrix A, translation b, t and homogeneous c_i (map applied as (A q + w b, w))",
             |n| {
                 let c = sym_rational(n, 2);
@@ -218,7 +218,7 @@ fn algorithm_claims() -> Vec<Claim> {
         over_degrees(
             "blossom: symmetric, affine in each argument, diagonal b[t,…,t] = H(t), dual functional b[0^{n−i}, 1^i] = c_i",
             "001 lecture (de Casteljau's multilinear form); ours",
-            1..=7,
+            1..=10,
             "symbolic arguments u_1…u_n, t and c_i; symmetry by swapping adjacent arguments; affinity as degree ≤ 1 in each u_j",
             |n| {
                 let c = sym_rational(n, 1);
@@ -324,7 +324,7 @@ fn derivative_claims() -> Vec<Claim> {
         over_degrees(
             "derivs_hom (Leibniz rule, fraction-free) gives the derivatives of X = H/w: X⁽ᵏ⁾ = M_k/w^{k+1}",
             "ours",
-            1..=4,
+            1..=6,
             "symbolic t, q_i, w_i; M_0 = H and the quotient rule M_{k+1} = M_k' w − (k+1) w' M_k checked for k = 0…2, weight entries w^{k+1}",
             |n| {
                 let c = sym_rational(n, 1);
@@ -393,7 +393,7 @@ fn curvature_claims() -> Vec<Claim> {
         over_degrees(
             "rational end curvature: κ(0) = (n−1)/n · (w0 w2/w1²) · |(P1−P0) × (P2−P1)| / |P1−P0|³ (and at t = 1 with the indices mirrored)",
             "ours (extends 001 lecture's k(0), k(1))",
-            2..=6,
+            2..=10,
             "symbolic 2D q_i and w_i: end_curvature_sq_frac cross-multiplied with κ² from the exact rational derivatives at t = 0 and t = 1",
             |n| {
                 let c = sym_rational(n, 2);
