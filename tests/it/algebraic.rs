@@ -72,3 +72,39 @@ fn example2_compact_standard_form_is_exact() {
         assert_eq!(s.patch.eval(&a(s_), &a(t_)).unwrap(), want);
     }
 }
+
+/// `eval` reads algebraic control points and weights (issue 14): the exact
+/// standard form of Example 1 at (s, t) = (1/3, 1/2), evaluated by the
+/// CLI, equals Example 1 evaluated (in the library, over RealAlgebraic) at
+/// the Möbius images u(s), v(t) of source 000 eq. (2) with the printed
+/// map's α = (2√6 − 3)/5 and β = 1/3: a second route to the same point.
+#[test]
+fn eval_reads_algebraic_patches() {
+    let p = fixture("yang_yong_example1.json");
+    let s = standardize_rect_algebraic(&p, false).unwrap();
+    let StandardMap::Mobius { alpha, beta, .. } = &s.map else {
+        panic!("linear")
+    };
+    let dir = std::env::temp_dir().join(format!("exact-bezier-alg-eval-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("standard.json");
+    let text = patch_to_json(&Patch::Rect(s.patch.clone())).unwrap().to_string();
+    std::fs::write(&file, text).unwrap();
+    let (code, v) = crate::common::cli_json(&["eval", file.to_str().unwrap(), "--at", "1/3,1/2"]);
+    assert_eq!(code, 0, "{v}");
+    let got: Vec<A> = v["point"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| match x {
+            serde_json::Value::String(s) => a(s),
+            n => a(&n.to_string()),
+        })
+        .collect();
+    let u = RationalCurve::<A>::mobius_param(alpha, &a("1/3")).unwrap();
+    let beta = beta.as_ref().expect("Example 1's map moves v too");
+    let w = RationalCurve::<A>::mobius_param(beta, &a("1/2")).unwrap();
+    let want = p.map(A::from_rational).eval(&u, &w).unwrap();
+    assert_eq!(got, want);
+    let _ = std::fs::remove_dir_all(&dir);
+}
