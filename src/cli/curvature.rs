@@ -9,7 +9,7 @@ use super::{load, run_each, PatchOp, ScalarKind};
 use crate::algebra::scalar::{Ordered, Roots, Scalar};
 use crate::algebra::RealAlgebraic;
 use crate::error::Error;
-use crate::io::parse_rational;
+use crate::io::parse_own_rational;
 use crate::io::{JsonScalar, Patch};
 use crate::limits::Size;
 use serde_json::{json, Value};
@@ -50,7 +50,7 @@ fn exact_kappa(v: &mut Value) -> Result<(), Error> {
         Value::String(s) => s.clone(),
         other => other.to_string(),
     };
-    let k2 = RealAlgebraic::from_rational(&parse_rational(&text)?);
+    let k2 = RealAlgebraic::from_rational(&parse_own_rational(&text)?);
     let kappa = k2
         .nth_root(2)
         .ok_or_else(|| Error::Domain(format!("κ² = {text} is negative")))?;

@@ -88,7 +88,9 @@ fn eval_reads_algebraic_patches() {
     let dir = std::env::temp_dir().join(format!("exact-bezier-alg-eval-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("standard.json");
-    let text = patch_to_json(&Patch::Rect(s.patch.clone())).unwrap().to_string();
+    let text = patch_to_json(&Patch::Rect(s.patch.clone()))
+        .unwrap()
+        .to_string();
     std::fs::write(&file, text).unwrap();
     let (code, v) = crate::common::cli_json(&["eval", file.to_str().unwrap(), "--at", "1/3,1/2"]);
     assert_eq!(code, 0, "{v}");

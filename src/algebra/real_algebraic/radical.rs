@@ -151,11 +151,20 @@ fn small_primes() -> &'static [u32] {
 }
 
 /// `k = d^j` with `d` not a perfect power: returns `(d, j)` (`k > 1`).
+///
+/// Only prime exponents `p ≤ log₂ k` are tried (a `pq`-th power is a `p`-th
+/// power of a `q`-th power), and each is first screened by
+/// [`may_be_power`], so that a 100 000-bit non-power costs a few hundred
+/// thousand word-sized remainders rather than thousands of big `p`-th roots.
 fn perfect_power_root(k: &BigInt) -> (BigInt, u32) {
     let mut d = k.clone();
     let mut j = 1u32;
     'outer: loop {
-        for p in 2..=d.bits() as u32 {
+        let max_exponent = u32::try_from(d.bits()).unwrap_or(u32::MAX);
+        for p in (2..=max_exponent).filter(|&p| is_small_prime(p)) {
+            if !may_be_power(&d, p) {
+                continue;
+            }
             let r = d.nth_root(p);
             if r > BigInt::one() && num_traits::pow(r.clone(), p as usize) == d {
                 d = r;
@@ -165,6 +174,44 @@ fn perfect_power_root(k: &BigInt) -> (BigInt, u32) {
         }
         return (d, j);
     }
+}
+
+/// Trial division: is `n` prime (for the word-sized exponents and moduli of
+/// [`perfect_power_root`]).
+fn is_small_prime(n: u32) -> bool {
+    n >= 2 && (2..).take_while(|q| q * q <= n).all(|q| n % q != 0)
+}
+
+/// A necessary condition for `d > 0` to be a `p`-th power (`p` prime): for
+/// four primes `q = 2kp + 1`, `d mod q` is 0 or a `p`-th power residue,
+/// `(d mod q)^{(q−1)/p} ≡ 1 (mod q)` (Euler's criterion generalised; the
+/// residues are a subgroup of index `p` in `(Z/q)^×`). A non-power passes
+/// each test with probability about `1/p`; `false` is a proof.
+fn may_be_power(d: &BigInt, p: u32) -> bool {
+    let p = u64::from(p);
+    let moduli = (1..)
+        .map(|k| 2 * k * p + 1)
+        .take_while(|&q| q < u64::from(u32::MAX))
+        .filter(|&q| is_small_prime(q as u32))
+        .take(4);
+    moduli.into_iter().all(|q| {
+        let r = (d % q).to_u64().unwrap_or(0);
+        r == 0 || pow_mod(r, (q - 1) / p, q) == 1
+    })
+}
+
+/// `b^e mod m` by repeated squaring (`m < 2³²`, so products fit in `u64`).
+fn pow_mod(mut b: u64, mut e: u64, m: u64) -> u64 {
+    let mut acc = 1 % m;
+    b %= m;
+    while e > 0 {
+        if e & 1 == 1 {
+            acc = acc * b % m;
+        }
+        b = b * b % m;
+        e >>= 1;
+    }
+    acc
 }
 
 /// A gcd-free basis of integers `> 1`: pairwise coprime, none a perfect
@@ -603,5 +650,21 @@ mod tests {
         );
         let one = x.mul(&x.recip());
         assert_eq!(one.as_rational(), Some(q(1)));
+    }
+
+    #[test]
+    fn perfect_powers_are_found_and_big_non_powers_are_cheap() {
+        let big = |b: u64, e: usize| num_traits::pow(BigInt::from(b), e);
+        assert_eq!(perfect_power_root(&big(12, 6)), (BigInt::from(12), 6));
+        assert_eq!(perfect_power_root(&big(4099, 35)), (BigInt::from(4099), 35));
+        assert_eq!(perfect_power_root(&big(10, 1)), (BigInt::from(10), 1));
+        // A 40 000-bit number that is one more than a square: every prime
+        // exponent up to 40 000 is screened, none is taken.
+        let n = big(3, 25_000) + BigInt::one();
+        assert_eq!(perfect_power_root(&n), (n.clone(), 1));
+        // The screen never rejects a true power.
+        for p in [2, 3, 5, 7, 101] {
+            assert!(may_be_power(&big(1_000_003, p as usize), p));
+        }
     }
 }
