@@ -96,6 +96,7 @@ mod display;
 mod error;
 pub mod eval;
 pub mod hpoint;
+pub mod intersect;
 pub mod io;
 pub mod limits;
 pub mod nurbs;

@@ -4,7 +4,8 @@
 //! ([`Poly`], the symbolic scalar of the proofs), univariate and bivariate
 //! polynomials ([`UPoly`], [`BPoly`]), the prime field [`Fp`], `f64`
 //! intervals with outward rounding ([`Interval`]), exact real algebraic
-//! numbers ([`RealAlgebraic`]) and Lehmer's gcd of big integers ([`gcd`]).
+//! numbers ([`RealAlgebraic`]), Lehmer's gcd of big integers ([`gcd`]) and
+//! Sylvester resultants with formal degrees ([`sylvester`]).
 
 pub mod gcd;
 pub(crate) mod int;
@@ -13,6 +14,7 @@ pub(crate) mod modp;
 pub(crate) mod poly;
 pub mod real_algebraic;
 pub(crate) mod scalar;
+pub mod sylvester;
 pub(crate) mod upoly;
 
 pub use int::Int;
@@ -24,4 +26,5 @@ pub use scalar::{
     binomial, binomial_scalar, ratio, rational_root, rational_to_f64, Field, Ordered, Ring, Roots,
     Scalar, Tolerance,
 };
+pub use sylvester::{linear_eliminant, resultant};
 pub use upoly::{BPoly, UPoly};

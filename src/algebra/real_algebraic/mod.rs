@@ -327,6 +327,90 @@ impl RealAlgebraic {
         }
     }
 
+    /// `num(α) / den(α)` at `α = self`, exactly, without arithmetic in the
+    /// field of `α` (whose degrees would multiply):
+    ///
+    /// ```text
+    /// p̃ = p / gcd(p, den)                    p: the defining polynomial of α
+    /// R(x) = Res_y(p̃(y), x·den(y) − num(y)) = lc^e ∏ (x·den(α_i) − num(α_i))
+    /// ```
+    ///
+    /// `R` has degree `deg p̃` and the value among its roots; the root is
+    /// isolated by rational interval evaluation of `num` and `den` on
+    /// enclosures of `α`. Cost: `deg p̃ + 1` Sylvester determinants of size
+    /// `deg p̃ + max(deg num, deg den)`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Domain`] when `den(α) = 0`.
+    ///
+    /// ```
+    /// use exact_bezier::{algebra::{RealAlgebraic, UPoly}, Roots, Scalar, ratio};
+    /// let s2 = RealAlgebraic::from_i64(2).nth_root(2).unwrap();
+    /// let p = |c: &[i64]| UPoly::new(c.iter().map(|&v| ratio(v, 1)).collect());
+    /// // (1 + α²) / (1 + α) at α = √2 is 3/(1 + √2) = 3√2 − 3.
+    /// let v = s2.rational_function_at(&p(&[1, 0, 1]), &p(&[1, 1])).unwrap();
+    /// assert_eq!(v, RealAlgebraic::from_i64(3) * &s2 - &RealAlgebraic::from_i64(3));
+    /// ```
+    pub fn rational_function_at(
+        &self,
+        num: &UPoly<BigRational>,
+        den: &UPoly<BigRational>,
+    ) -> Result<Self, Error> {
+        let pole = || Error::Domain(format!("the denominator vanishes at {self}"));
+        if let Some(a) = self.as_rational() {
+            let d = den.eval(&a);
+            return if d.is_zero() {
+                Err(pole())
+            } else {
+                Ok(Self::rat(num.eval(&a) / d))
+            };
+        }
+        let p = self.defining_polynomial();
+        let common = p.gcd(den);
+        if common.degree().unwrap_or(0) > 0
+            && Self::real_roots_in(
+                &common,
+                &-polys::cauchy_bound(&common),
+                &polys::cauchy_bound(&common),
+            )
+            .contains(self)
+        {
+            return Err(pole());
+        }
+        let p = p.div_exact(&common).expect("the gcd divides");
+        let e = num.degree().unwrap_or(0).max(den.degree().unwrap_or(0));
+        let padded = |c: &UPoly<BigRational>| {
+            let mut v = c.coeffs().to_vec();
+            v.resize(e + 1, BigRational::zero());
+            v
+        };
+        let (nums, dens) = (padded(num), padded(den));
+        let d = p.degree().unwrap_or(0);
+        let samples: Vec<BigRational> = (0..=d)
+            .map(|x| {
+                let x = BigRational::from_integer(x.into());
+                let h: Vec<BigRational> = nums.iter().zip(&dens).map(|(n, d)| &x * d - n).collect();
+                crate::algebra::sylvester::resultant(p.coeffs(), &h)
+            })
+            .collect();
+        let r = polys::interpolate(&samples);
+        let wide = polys::cauchy_bound(&r) + BigRational::one();
+        Ok(Self::from_enclosures(&r, |prec| {
+            let (lo, hi) = self.enclosure(prec);
+            let (n_lo, n_hi) = polys::eval_on_interval(num, &lo, &hi);
+            let (d_lo, d_hi) = polys::eval_on_interval(den, &lo, &hi);
+            if d_lo.is_positive() || d_hi.is_negative() {
+                let q = [&n_lo / &d_lo, &n_lo / &d_hi, &n_hi / &d_lo, &n_hi / &d_hi];
+                let min = q.iter().min().expect("four").clone();
+                let max = q.iter().max().expect("four").clone();
+                (min, max)
+            } else {
+                (-wide.clone(), wide.clone())
+            }
+        }))
+    }
+
     /// The real `n`-th root of `x ≥ 0` (any sign for odd `n`).
     fn root_exact(&self, n: u32) -> Option<Self> {
         match self.signum() {
@@ -513,6 +597,9 @@ fn rational_root_in(node: &RootNum) -> Option<RadicalSum> {
 fn binomial_root(node: &RootNum) -> Option<RadicalSum> {
     let c = node.poly().coeffs();
     let n = c.len() - 1;
+    if n == 2 {
+        return Some(quadratic_root(node));
+    }
     if n < 2 || c[1..n].iter().any(|x| !x.is_zero()) {
         return None;
     }
@@ -520,6 +607,23 @@ fn binomial_root(node: &RootNum) -> Option<RadicalSum> {
     let sign = node.signum();
     let abs_root = RadicalSum::rational(r.abs()).monomial_root(n as u32)?;
     Some(if sign < 0 { abs_root.neg() } else { abs_root })
+}
+
+/// The irrational root of a monic quadratic `x² + c₁x + c₀` isolated by
+/// `node`, as the radical sum `(−c₁ ± √(c₁² − 4c₀))/2`: the larger root
+/// (`+`) when the polynomial is positive at the interval's upper end.
+fn quadratic_root(node: &RootNum) -> RadicalSum {
+    let c = node.poly().coeffs();
+    let two = BigRational::from_integer(2.into());
+    let disc = &c[1] * &c[1] - BigRational::from_integer(4.into()) * &c[0];
+    let root_disc = RadicalSum::rational(disc)
+        .monomial_root(2)
+        .expect("two real roots: a positive discriminant");
+    let larger = node.poly().eval(&node.interval().1).is_positive();
+    let signed = if larger { root_disc } else { root_disc.neg() };
+    signed
+        .add(&RadicalSum::rational(-c[1].clone()))
+        .scale(&two.recip())
 }
 
 impl std::fmt::Debug for RealAlgebraic {

@@ -104,6 +104,21 @@ pub(crate) fn count_roots(seq: &[QPoly], a: &BigRational, b: &BigRational) -> us
     sign_changes(seq, a).saturating_sub(sign_changes(seq, b))
 }
 
+/// Rational bounds `(lo, hi)` on `p(x)` for every `x ∈ [a, b]` (Horner in
+/// interval arithmetic; exact rationals, so the enclosure is rigorous).
+pub(crate) fn eval_on_interval(
+    p: &QPoly,
+    a: &BigRational,
+    b: &BigRational,
+) -> (BigRational, BigRational) {
+    p.coeffs().iter().rev().fold((q(0), q(0)), |(lo, hi), c| {
+        let products = [&lo * a, &lo * b, &hi * a, &hi * b];
+        let min = products.iter().min().expect("four").clone();
+        let max = products.iter().max().expect("four").clone();
+        (min + c, max + c)
+    })
+}
+
 /// A bound `B` with every real root in `(−B, B)`.
 pub(crate) fn cauchy_bound(p: &QPoly) -> BigRational {
     let lead = p.lead().expect("non-zero").abs();
@@ -169,7 +184,7 @@ pub(crate) fn resultant(a: &QPoly, b: &QPoly) -> BigRational {
 
 /// The polynomial of degree ≤ `values.len() − 1` through `(k, values[k])`,
 /// `k = 0, 1, …` (Newton's divided differences).
-fn interpolate(values: &[BigRational]) -> QPoly {
+pub(crate) fn interpolate(values: &[BigRational]) -> QPoly {
     let n = values.len();
     let mut dd = values.to_vec();
     for level in 1..n {

@@ -1,0 +1,441 @@
+//! The `f64` paths: a rigorous interval filter in front of the exact
+//! intersection, and an approximate intersection with a caller's tolerance.
+//!
+//! Filter: the control polygons are subdivided at `1/2` in interval
+//! arithmetic with outward rounding ([`Interval`]); by the convex hull
+//! property (positive weights), each piece lies in the box of its
+//! projected control points. If at some depth every pair of pieces has
+//! disjoint boxes, the curves do not meet and the exact path is skipped.
+//!
+//! Approximate: the same subdivision in plain `f64` down to pieces whose
+//! boxes are below the tolerance, Newton steps on `A(s) − B(t)` from each
+//! surviving pair, and clustering in `(s, t)`.
+
+use super::{intersect, Intersections};
+use crate::algebra::Interval;
+use crate::curve::RationalCurve;
+use crate::error::Error;
+use crate::hpoint::HPoint;
+use num_rational::BigRational;
+
+/// Which stage decided an [`intersect_filtered`] call.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DecidedBy {
+    /// Interval boxes of subdivided control polygons separated the curves.
+    Intervals,
+    /// The exact elimination.
+    Exact,
+}
+
+/// Depth of the interval subdivision: `2⁸` pieces per curve at most.
+const FILTER_DEPTH: usize = 8;
+/// The most box pairs kept at one depth before the filter gives up.
+const FILTER_PAIRS: usize = 64;
+
+/// A homogeneous control polygon of `f64` boxes.
+type Boxes = Vec<Vec<Interval>>;
+
+/// Split a polygon at `1/2` (de Casteljau; halving is exact in `f64`, the
+/// sums are rounded outward).
+fn halve_boxes(ctrl: &Boxes) -> (Boxes, Boxes) {
+    let half = Interval { lo: 0.5, hi: 0.5 };
+    let mut rows = ctrl.clone();
+    let (mut left, mut right) = (vec![rows[0].clone()], vec![rows[rows.len() - 1].clone()]);
+    while rows.len() > 1 {
+        rows = rows
+            .windows(2)
+            .map(|w| {
+                w[0].iter()
+                    .zip(&w[1])
+                    .map(|(a, b)| a.add(b).mul(&half))
+                    .collect()
+            })
+            .collect();
+        left.push(rows[0].clone());
+        right.push(rows[rows.len() - 1].clone());
+    }
+    right.reverse();
+    (left, right)
+}
+
+/// The bounding box of the projected control points, or `None` when a
+/// weight box contains 0.
+fn bounding_box(ctrl: &Boxes) -> Option<Vec<Interval>> {
+    let dim = ctrl[0].len() - 1;
+    let mut hull: Option<Vec<Interval>> = None;
+    for h in ctrl {
+        let p: Vec<Interval> = (0..dim).map(|k| h[k].div(&h[dim])).collect::<Option<_>>()?;
+        hull = Some(match hull {
+            None => p,
+            Some(b) => b
+                .iter()
+                .zip(&p)
+                .map(|(x, y)| Interval {
+                    lo: x.lo.min(y.lo),
+                    hi: x.hi.max(y.hi),
+                })
+                .collect(),
+        });
+    }
+    hull
+}
+
+fn boxes_of(c: &RationalCurve<BigRational>) -> Boxes {
+    c.ctrl()
+        .iter()
+        .map(|h: &HPoint<BigRational>| h.coords.iter().map(Interval::enclose).collect())
+        .collect()
+}
+
+fn disjoint(a: &[Interval], b: &[Interval]) -> bool {
+    a.iter().zip(b).any(|(x, y)| x.disjoint(y))
+}
+
+/// `true` when interval boxes prove that the curves do not meet.
+fn separated(a: &RationalCurve<BigRational>, b: &RationalCurve<BigRational>) -> bool {
+    let mut pairs = vec![(boxes_of(a), boxes_of(b))];
+    for _ in 0..FILTER_DEPTH {
+        let mut next = Vec::new();
+        for (pa, pb) in &pairs {
+            let (Some(ba), Some(bb)) = (bounding_box(pa), bounding_box(pb)) else {
+                return false;
+            };
+            if disjoint(&ba, &bb) {
+                continue;
+            }
+            let (a0, a1) = halve_boxes(pa);
+            let (b0, b1) = halve_boxes(pb);
+            for x in [&a0, &a1] {
+                for y in [&b0, &b1] {
+                    next.push((x.clone(), y.clone()));
+                }
+            }
+        }
+        if next.is_empty() {
+            return true;
+        }
+        if next.len() > FILTER_PAIRS {
+            return false;
+        }
+        pairs = next;
+    }
+    false
+}
+
+/// [`intersect`], decided by interval boxes when they separate the curves
+/// (only "no intersection" can be certified that way), by the exact path
+/// otherwise; the same answer either way.
+///
+/// ```
+/// use exact_bezier::{intersect::{intersect_filtered, DecidedBy}, RationalCurve, ratio};
+/// use num_rational::BigRational;
+/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+/// let a = RationalCurve::polynomial(vec![p(0, 0), p(1, 2), p(2, 0)]).unwrap();
+/// let b = RationalCurve::polynomial(vec![p(0, 3), p(1, 5), p(2, 3)]).unwrap();
+/// let (x, by) = intersect_filtered(&a, &b).unwrap();
+/// assert!(x.points.is_empty() && by == DecidedBy::Intervals);
+/// ```
+///
+/// # Errors
+///
+/// As [`intersect`].
+pub fn intersect_filtered(
+    a: &RationalCurve<BigRational>,
+    b: &RationalCurve<BigRational>,
+) -> Result<(Intersections, DecidedBy), Error> {
+    if a.dim() == b.dim() {
+        a.check_positive_weights()?;
+        b.check_positive_weights()?;
+        if separated(a, b) {
+            return Ok((Intersections::default(), DecidedBy::Intervals));
+        }
+    }
+    intersect(a, b).map(|x| (x, DecidedBy::Exact))
+}
+
+/// An approximate intersection from [`intersect_approx`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct ApproxIntersection {
+    /// Parameter on the first curve (for an overlap, its start).
+    pub s: f64,
+    /// Parameter on the second curve (for an overlap, its start).
+    pub t: f64,
+    /// `A(s)`.
+    pub point: Vec<f64>,
+    /// `|A(s) − B(t)|` after refinement (≤ the tolerance).
+    pub distance: f64,
+    /// For a suspected overlap, the parameter ranges `(s0, s1, t0, t1)` of
+    /// the cluster of close pieces; `None` for an isolated point.
+    pub overlap: Option<[f64; 4]>,
+}
+
+/// A curve piece in `f64`: its homogeneous control points and parameter
+/// range.
+#[derive(Clone)]
+struct Piece {
+    ctrl: Vec<Vec<f64>>,
+    lo: f64,
+    hi: f64,
+}
+
+impl Piece {
+    fn halves(&self) -> (Piece, Piece) {
+        let mut rows = self.ctrl.clone();
+        let (mut left, mut right) = (vec![rows[0].clone()], vec![rows[rows.len() - 1].clone()]);
+        while rows.len() > 1 {
+            rows = rows
+                .windows(2)
+                .map(|w| w[0].iter().zip(&w[1]).map(|(a, b)| 0.5 * (a + b)).collect())
+                .collect();
+            left.push(rows[0].clone());
+            right.push(rows[rows.len() - 1].clone());
+        }
+        right.reverse();
+        let mid = 0.5 * (self.lo + self.hi);
+        (
+            Piece {
+                ctrl: left,
+                lo: self.lo,
+                hi: mid,
+            },
+            Piece {
+                ctrl: right,
+                lo: mid,
+                hi: self.hi,
+            },
+        )
+    }
+
+    /// `(min, max)` per coordinate of the projected control points.
+    fn bounds(&self) -> Vec<(f64, f64)> {
+        let dim = self.ctrl[0].len() - 1;
+        (0..dim)
+            .map(|k| {
+                self.ctrl
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), h| {
+                        let x = h[k] / h[dim];
+                        (lo.min(x), hi.max(x))
+                    })
+            })
+            .collect()
+    }
+}
+
+fn piece(c: &RationalCurve<f64>) -> Piece {
+    Piece {
+        ctrl: c.ctrl().iter().map(|h| h.coords.clone()).collect(),
+        lo: 0.0,
+        hi: 1.0,
+    }
+}
+
+/// Newton steps (least squares in 3D and above) on `A(s) − B(t) = 0`.
+fn refine(a: &RationalCurve<f64>, b: &RationalCurve<f64>, mut s: f64, mut t: f64) -> (f64, f64) {
+    for _ in 0..20 {
+        let (Ok(da), Ok(db)) = (a.derivs(&s, 1), b.derivs(&t, 1)) else {
+            break;
+        };
+        let r: Vec<f64> = da[0].iter().zip(&db[0]).map(|(x, y)| x - y).collect();
+        // J = [A'(s), −B'(t)]; normal equations JᵀJ δ = −Jᵀr.
+        let dot = |u: &[f64], v: &[f64]| u.iter().zip(v).map(|(x, y)| x * y).sum::<f64>();
+        let (aa, ab, bb) = (
+            dot(&da[1], &da[1]),
+            -dot(&da[1], &db[1]),
+            dot(&db[1], &db[1]),
+        );
+        let (ra, rb) = (-dot(&da[1], &r), dot(&db[1], &r));
+        let det = aa * bb - ab * ab;
+        if det.abs() <= f64::EPSILON * aa * bb || !det.is_finite() {
+            break;
+        }
+        let (ds, dt) = ((ra * bb - ab * rb) / det, (aa * rb - ab * ra) / det);
+        s = (s + ds).clamp(0.0, 1.0);
+        t = (t + dt).clamp(0.0, 1.0);
+        if ds.abs() + dt.abs() < 1e-16 {
+            break;
+        }
+    }
+    (s, t)
+}
+
+/// The most leaf pairs the approximate path keeps before refusing.
+const APPROX_PAIRS: usize = 100_000;
+/// A cluster of more leaves than this is reported as a suspected overlap.
+const OVERLAP_LEAVES: usize = 64;
+
+/// Intersections in `f64` within the tolerance `tol` (absolute, in model
+/// units): subdivision to pieces of size `L = max(tol, √(tol·D))` (`D` the
+/// diameter of both curves' boxes), Newton refinement from each cluster of
+/// touching piece pairs, kept when `|A(s) − B(t)| ≤ tol`. A cluster of more
+/// than 64 piece pairs is reported as a suspected overlap with its
+/// parameter ranges (a heuristic: the exact path decides overlaps).
+///
+/// ```
+/// use exact_bezier::{intersect::intersect_approx, RationalCurve};
+/// let a = RationalCurve::polynomial(vec![vec![0.0, 0.0], vec![2.0, 2.0]]).unwrap();
+/// let b = RationalCurve::polynomial(vec![vec![0.0, 2.0], vec![2.0, 0.0]]).unwrap();
+/// let x = intersect_approx(&a, &b, 1e-9).unwrap();
+/// assert_eq!(x.len(), 1);
+/// assert!((x[0].s - 0.5).abs() < 1e-9 && (x[0].t - 0.5).abs() < 1e-9);
+/// ```
+///
+/// # Errors
+///
+/// [`Error::Domain`] for a tolerance that is not finite and positive,
+/// [`Error::Shape`] for different dimensions, [`Error::Weight`] for
+/// non-positive weights, [`Error::Limit`] when more than 100 000 piece
+/// pairs stay close.
+pub fn intersect_approx(
+    a: &RationalCurve<f64>,
+    b: &RationalCurve<f64>,
+    tol: f64,
+) -> Result<Vec<ApproxIntersection>, Error> {
+    if !(tol.is_finite() && tol > 0.0) {
+        return Err(Error::Domain(format!(
+            "the tolerance {tol} must be finite and > 0"
+        )));
+    }
+    if a.dim() != b.dim() {
+        return Err(Error::Shape(format!(
+            "the curves have dimensions {} and {}",
+            a.dim(),
+            b.dim()
+        )));
+    }
+    a.check_positive_weights()?;
+    b.check_positive_weights()?;
+    let (pa, pb) = (piece(a), piece(b));
+    let diameter = pa
+        .bounds()
+        .iter()
+        .zip(pb.bounds())
+        .map(|(x, y)| (x.1.max(y.1) - x.0.min(y.0)).powi(2))
+        .sum::<f64>()
+        .sqrt();
+    let leaf = tol.max((tol * diameter).sqrt());
+    let leaves = close_leaves(pa, pb, tol, leaf)?;
+    Ok(clusters(&leaves)
+        .into_iter()
+        .filter_map(|c| cluster_result(a, b, &c, tol))
+        .collect())
+}
+
+/// Leaf pairs `(s0, s1, t0, t1)` whose boxes stay within `tol` of each
+/// other, subdivided to box diagonals of at most `leaf`.
+fn close_leaves(a: Piece, b: Piece, tol: f64, leaf: f64) -> Result<Vec<[f64; 4]>, Error> {
+    let near = |x: &[(f64, f64)], y: &[(f64, f64)]| {
+        x.iter()
+            .zip(y)
+            .all(|(p, q)| p.0 <= q.1 + tol && q.0 <= p.1 + tol)
+    };
+    let small = |x: &[(f64, f64)]| {
+        x.iter()
+            .map(|(lo, hi)| (hi - lo).powi(2))
+            .sum::<f64>()
+            .sqrt()
+            <= leaf
+    };
+    let mut stack = vec![(a, b)];
+    let mut leaves = Vec::new();
+    while let Some((pa, pb)) = stack.pop() {
+        let (ba, bb) = (pa.bounds(), pb.bounds());
+        if !near(&ba, &bb) {
+            continue;
+        }
+        let splittable = pa.hi - pa.lo > f64::EPSILON && pb.hi - pb.lo > f64::EPSILON;
+        if (small(&ba) && small(&bb)) || !splittable {
+            leaves.push([pa.lo, pa.hi, pb.lo, pb.hi]);
+            if leaves.len() > APPROX_PAIRS {
+                return Err(Error::Limit(format!(
+                    "over {APPROX_PAIRS} piece pairs within {tol} of each other: use the exact path"
+                )));
+            }
+            continue;
+        }
+        let (a0, a1) = pa.halves();
+        let (b0, b1) = pb.halves();
+        stack.extend([
+            (a0.clone(), b0.clone()),
+            (a0, b1.clone()),
+            (a1.clone(), b0),
+            (a1, b1),
+        ]);
+    }
+    Ok(leaves)
+}
+
+/// A group of touching leaves: its parameter rectangle and leaf count.
+struct Cluster {
+    range: [f64; 4],
+    leaves: usize,
+}
+
+/// Group leaves whose parameter rectangles touch (merging as they come).
+fn clusters(leaves: &[[f64; 4]]) -> Vec<Cluster> {
+    let touch =
+        |x: &[f64; 4], y: &[f64; 4]| x[0] <= y[1] && y[0] <= x[1] && x[2] <= y[3] && y[2] <= x[3];
+    let mut groups: Vec<Cluster> = Vec::new();
+    for leaf in leaves {
+        let mut merged = Cluster {
+            range: *leaf,
+            leaves: 1,
+        };
+        groups.retain(|g| {
+            if touch(&g.range, &merged.range) {
+                let (x, y) = (&g.range, &merged.range);
+                merged.range = [
+                    x[0].min(y[0]),
+                    x[1].max(y[1]),
+                    x[2].min(y[2]),
+                    x[3].max(y[3]),
+                ];
+                merged.leaves += g.leaves;
+                false
+            } else {
+                true
+            }
+        });
+        groups.push(merged);
+    }
+    groups
+}
+
+/// A cluster as an intersection (refined from its centre), or as a
+/// suspected overlap when it has many leaves.
+fn cluster_result(
+    a: &RationalCurve<f64>,
+    b: &RationalCurve<f64>,
+    c: &Cluster,
+    tol: f64,
+) -> Option<ApproxIntersection> {
+    let r = &c.range;
+    if c.leaves > OVERLAP_LEAVES {
+        let (pa, pb) = (a.eval(&r[0]).ok()?, b.eval(&r[2]).ok()?);
+        return Some(ApproxIntersection {
+            s: r[0],
+            t: r[2],
+            distance: distance(&pa, &pb),
+            point: pa,
+            overlap: Some(*r),
+        });
+    }
+    let (s, t) = refine(a, b, 0.5 * (r[0] + r[1]), 0.5 * (r[2] + r[3]));
+    let (pa, pb) = (a.eval(&s).ok()?, b.eval(&t).ok()?);
+    let d = distance(&pa, &pb);
+    (d <= tol).then_some(ApproxIntersection {
+        s,
+        t,
+        point: pa,
+        distance: d,
+        overlap: None,
+    })
+}
+
+fn distance(p: &[f64], q: &[f64]) -> f64 {
+    p.iter()
+        .zip(q)
+        .map(|(x, y)| (x - y).powi(2))
+        .sum::<f64>()
+        .sqrt()
+}

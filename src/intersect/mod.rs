@@ -1,0 +1,446 @@
+//! Exact intersections of rational Bézier curves: isolated points with
+//! exact parameters (real algebraic numbers), their multiplicity, overlaps
+//! with the exact Möbius map between the shared pieces, and
+//! self-intersections (loops and cusps).
+//!
+//! ## Method
+//!
+//! Elimination (module `system`): for curves `A(s)`, `B(t)` with positive
+//! weights, `A(s) = B(t)` is the polynomial system
+//! `E_k = X_k^A(s) W^B(t) − X_k^B(t) W^A(s) = 0`. Two combinations are
+//! eliminated by a Sylvester resultant in `t` (evaluated and interpolated in
+//! `s`); the real roots of its square-free factors in `[0, 1]` are isolated
+//! by Sturm sequences; each root's `t` is the root of the first
+//! subresultant, a rational function of `s`, and the remaining equations
+//! are checked to vanish exactly. A root whose `t` is not unique (two
+//! branches of `B` through one point of `A`) is retried with the roles of
+//! `s` and `t` swapped, and in 3D with another projection.
+//!
+//! Overlaps (module `overlap`): when the resultant vanishes identically,
+//! the curves lie on one rational curve; the Möbius map `s = φ(t)` with
+//! `B = A ∘ φ` is found from three rational correspondences and verified as
+//! a polynomial identity, the overlap is `{t ∈ [0, 1] : φ(t) ∈ [0, 1]}`,
+//! and the factor `(ct + d)s − (at + b)` is divided out to find the
+//! isolated intersections that remain (e.g. at a node of the common curve).
+//!
+//! Self-intersections: `E_k(s, t)` of a curve with itself is divisible by
+//! `s − t`; the quotients vanish off the diagonal at the double points
+//! (`s < t`), on it at the cusps (zero velocity).
+//!
+//! Common factors of the homogeneous components and degree elevation do not
+//! matter: both disappear in the power basis after dividing by the gcd.
+//!
+//! A filtered path ([`intersect_filtered`]) first tries to separate the
+//! curves by `f64` interval boxes of subdivided control polygons (rigorous:
+//! outward rounding, convex hull property); [`intersect_approx`] is the
+//! `f64` path with a tolerance the caller gives.
+//!
+//! Reference: Sederberg & Parry, *Comparison of three curve intersection
+//! algorithms*, Computer-Aided Design 18 (1986) 58–63 (implicitization and
+//! resultants); Basu, Pollack & Roy, *Algorithms in Real Algebraic
+//! Geometry* (2006), §2.2 and §4.2 (Sturm sequences, subresultants);
+//! Sederberg & Nishita, *Curve intersection using Bézier clipping*, CAD 22
+//! (1990) (convex hull culling).
+
+mod filter;
+mod overlap;
+mod system;
+
+pub use filter::{intersect_approx, intersect_filtered, ApproxIntersection, DecidedBy};
+pub use overlap::Mobius;
+
+use crate::algebra::{BPoly, RealAlgebraic, Scalar};
+use crate::curve::RationalCurve;
+use crate::error::Error;
+use num_rational::BigRational;
+use system::{combine, solve, PowerCurve, Solution, Unsolved};
+
+/// How two curves meet at an isolated intersection.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Contact {
+    /// Multiplicity 1: the tangents differ.
+    Transversal,
+    /// Multiplicity `order + 1` at regular points: the curves touch with
+    /// contact of order `order` (1 for a simple tangency).
+    Tangential {
+        /// The contact order, multiplicity − 1.
+        order: usize,
+    },
+    /// One of the curves has zero velocity there (a cusp or a stationary
+    /// point of its parameterization); the multiplicity is still exact.
+    Singular,
+    /// A self-intersection on the diagonal `s = t`: a cusp of the curve.
+    Cusp,
+    /// The curves lie on one curve and only touch at a shared end.
+    Continuation,
+}
+
+/// An isolated intersection `A(s) = B(t)` with exact parameters and point.
+#[derive(Clone, Debug)]
+pub struct IntersectionPoint {
+    /// The parameter on the first curve.
+    pub s: RealAlgebraic,
+    /// The parameter on the second curve (for a self-intersection, `s ≤ t`).
+    pub t: RealAlgebraic,
+    /// The common point.
+    pub point: Vec<RealAlgebraic>,
+    /// The intersection multiplicity (in a generic plane projection for
+    /// curves in 3D and above).
+    pub multiplicity: usize,
+    /// The kind of contact.
+    pub contact: Contact,
+}
+
+/// A shared piece: `A` on `[s0, s1]` and `B` on `[t0, t1]` are the same
+/// curve, `s = φ(t)` (φ maps `t0` to `s.0` and `t1` to `s.1`).
+#[derive(Clone, Debug)]
+pub struct Overlap {
+    /// The parameter interval on the first curve, as `φ(t0), φ(t1)`.
+    pub s: (BigRational, BigRational),
+    /// The parameter interval on the second curve, `t0 < t1`.
+    pub t: (BigRational, BigRational),
+    /// The reparameterization `s = φ(t)`.
+    pub map: Mobius,
+}
+
+/// All intersections of two curves (or of a curve with itself).
+#[derive(Clone, Debug, Default)]
+pub struct Intersections {
+    /// Isolated intersections, by increasing `s`.
+    pub points: Vec<IntersectionPoint>,
+    /// Shared pieces.
+    pub overlaps: Vec<Overlap>,
+}
+
+/// Check what the elimination relies on: positive weights, equal
+/// dimensions of at least 2, a curve that is not a single point.
+fn prepared(c: &RationalCurve<BigRational>, name: &str) -> Result<PowerCurve, Error> {
+    c.check_positive_weights()?;
+    if c.dim() < 2 {
+        return Err(Error::Shape(format!(
+            "curve {name} has dimension {}: intersections need points in 2D or more",
+            c.dim()
+        )));
+    }
+    let p = PowerCurve::new(c);
+    if p.is_point() {
+        return Err(Error::Domain(format!(
+            "curve {name} is a single point (all control points coincide)"
+        )));
+    }
+    Ok(p)
+}
+
+/// The polynomial pairs tried for the elimination: `(E_0, E_1)` in the
+/// plane; in 3D and above, combinations `E_0 + Σ c_k E_k`, `E_1 + Σ d_k E_k`
+/// (a generic plane projection), the other equations checked exactly.
+type Projection = (
+    BPoly<BigRational>,
+    BPoly<BigRational>,
+    Vec<BPoly<BigRational>>,
+);
+
+fn projections(eqs: &[BPoly<BigRational>]) -> Vec<Projection> {
+    let tries = if eqs.len() == 2 { 1 } else { 3 };
+    (0..tries)
+        .map(|k| {
+            let int = |v: i64| BigRational::from_integer(v.into());
+            let one = int(1);
+            let mut f = vec![(one.clone(), &eqs[0])];
+            let mut g = vec![(one, &eqs[1])];
+            for (j, e) in eqs.iter().enumerate().skip(2) {
+                let j = j as i64;
+                f.push((int(2 + j + 3 * k), e));
+                g.push((int(5 - 2 * j + 7 * k), e));
+            }
+            (combine(&f), combine(&g), eqs[2..].to_vec())
+        })
+        .collect()
+}
+
+/// Swap the roles of `s` and `t` in a solution set found with `t` outer.
+fn swapped(sols: Vec<Solution>) -> Vec<Solution> {
+    sols.into_iter()
+        .map(|x| Solution {
+            s: x.t,
+            t: x.s,
+            ..x
+        })
+        .collect()
+}
+
+/// Solve, retrying with `s` and `t` swapped when a root is degenerate.
+fn solve_either_way(
+    p: &Projection,
+    pa: &PowerCurve,
+    pb: &PowerCurve,
+) -> Result<Vec<Solution>, Unsolved> {
+    match solve(&p.0, &p.1, &p.2, pa.weight()) {
+        Err(Unsolved::Degenerate(_)) => {
+            let extra: Vec<_> = p.2.iter().map(BPoly::transpose).collect();
+            solve(&p.0.transpose(), &p.1.transpose(), &extra, pb.weight()).map(swapped)
+        }
+        other => other,
+    }
+}
+
+/// Divide `p` by `d` as often as it divides.
+fn strip_factor(p: &BPoly<BigRational>, d: &BPoly<BigRational>) -> BPoly<BigRational> {
+    let mut p = p.clone();
+    while let Some(q) = p.div_exact(d) {
+        if p.deg_u() == q.deg_u() && p.coeffs() == q.coeffs() {
+            break;
+        }
+        p = q;
+    }
+    p
+}
+
+/// Every intersection of two rational curves over `[0, 1] × [0, 1]`,
+/// exactly: isolated points with their parameters, point, multiplicity and
+/// contact, and shared pieces with their Möbius map.
+///
+/// # Examples
+///
+/// The parabola `y = x²` (a quadratic Bézier curve through (−1, 1), (0, 0),
+/// (1, 1)) meets the line `y = 1/2` at `x = ±1/√2`:
+///
+/// ```
+/// use exact_bezier::{intersect::intersect, RationalCurve, ratio};
+/// use num_rational::BigRational;
+/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+/// let parabola = RationalCurve::polynomial(vec![p(-1, 1), p(0, -1), p(1, 1)]).unwrap();
+/// let line = RationalCurve::polynomial(vec![
+///     vec![ratio(-1, 1), ratio(1, 2)],
+///     vec![ratio(1, 1), ratio(1, 2)],
+/// ]).unwrap();
+/// let x = intersect(&parabola, &line).unwrap();
+/// assert_eq!(x.points.len(), 2);
+/// assert_eq!(x.points[1].point[0].to_string(), "sqrt(2)/2");
+/// ```
+///
+/// # Errors
+///
+/// [`Error::Weight`] for a non-positive weight, [`Error::Shape`] for
+/// dimensions that differ or are below 2, [`Error::Domain`] for a curve
+/// that is a single point or a configuration the method does not resolve
+/// (named in the message).
+pub fn intersect(
+    a: &RationalCurve<BigRational>,
+    b: &RationalCurve<BigRational>,
+) -> Result<Intersections, Error> {
+    if a.dim() != b.dim() {
+        return Err(Error::Shape(format!(
+            "the curves have dimensions {} and {}",
+            a.dim(),
+            b.dim()
+        )));
+    }
+    let (pa, pb) = (prepared(a, "A")?, prepared(b, "B")?);
+    let eqs: Vec<_> = (0..pa.dim()).map(|k| pa.equation(&pb, k)).collect();
+    let mut last = String::new();
+    for proj in projections(&eqs) {
+        match solve_either_way(&proj, &pa, &pb) {
+            Ok(sols) => return finish(&pa, &pb, sols, Vec::new()),
+            Err(Unsolved::CommonFactor) => match overlap::find_mobius(&pa, &pb) {
+                Some(phi) => return with_overlap(&pa, &pb, &proj, phi),
+                None => last = "the curves share a component but are not Möbius reparameterizations of each other (an improper parameterization)".into(),
+            },
+            Err(Unsolved::Degenerate(s)) => {
+                last = format!("several intersections share the parameter s = {s} and t is not unique either")
+            }
+        }
+    }
+    Err(Error::Domain(last))
+}
+
+/// The overlaps given by `φ`, and the isolated intersections off them.
+fn with_overlap(
+    pa: &PowerCurve,
+    pb: &PowerCurve,
+    proj: &Projection,
+    phi: Mobius,
+) -> Result<Intersections, Error> {
+    let mut overlaps = Vec::new();
+    let mut touching = Vec::new();
+    for (t0, t1) in phi.preimage_of_unit() {
+        let s0 = phi.at(&t0).expect("inside the preimage");
+        let s1 = phi.at(&t1).expect("inside the preimage");
+        if t0 == t1 {
+            touching.push((s0, t0));
+        } else {
+            overlaps.push(Overlap {
+                s: (s0, s1),
+                t: (t0, t1),
+                map: phi.clone(),
+            });
+        }
+    }
+    let line = phi.graph();
+    let rest = (
+        strip_factor(&proj.0, &line),
+        strip_factor(&proj.1, &line),
+        proj.2.clone(),
+    );
+    let sols = match solve_either_way(&rest, pa, pb) {
+        Ok(sols) => sols,
+        Err(Unsolved::CommonFactor) => Vec::new(),
+        Err(Unsolved::Degenerate(s)) => {
+            return Err(Error::Domain(format!(
+                "several intersections share the parameter s = {s} beside the overlap"
+            )))
+        }
+    };
+    let inside = |x: &RealAlgebraic, lo: &BigRational, hi: &BigRational| {
+        let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
+        *x >= RealAlgebraic::from_rational(lo) && *x <= RealAlgebraic::from_rational(hi)
+    };
+    let off: Vec<Solution> = sols
+        .into_iter()
+        .filter(|x| {
+            !overlaps
+                .iter()
+                .any(|o| inside(&x.t, &o.t.0, &o.t.1) || inside(&x.s, &o.s.0, &o.s.1))
+        })
+        .collect();
+    let mut out = finish(pa, pb, off, overlaps)?;
+    for (s, t) in touching {
+        let (s, t) = (
+            RealAlgebraic::from_rational(&s),
+            RealAlgebraic::from_rational(&t),
+        );
+        if out.points.iter().any(|p| p.s == s && p.t == t) {
+            continue;
+        }
+        out.points.push(IntersectionPoint {
+            point: point_at(pa, &s)?,
+            s,
+            t,
+            multiplicity: 1,
+            contact: Contact::Continuation,
+        });
+    }
+    out.points
+        .sort_by(|x, y| x.s.partial_cmp(&y.s).expect("real numbers are ordered"));
+    Ok(out)
+}
+
+/// The exact point `A(s)`.
+fn point_at(pa: &PowerCurve, s: &RealAlgebraic) -> Result<Vec<RealAlgebraic>, Error> {
+    (0..pa.dim()).map(|k| pa.coordinate_at(k, s)).collect()
+}
+
+/// Points, contacts and order for the solutions.
+fn finish(
+    pa: &PowerCurve,
+    pb: &PowerCurve,
+    sols: Vec<Solution>,
+    overlaps: Vec<Overlap>,
+) -> Result<Intersections, Error> {
+    let mut points = Vec::with_capacity(sols.len());
+    for x in sols {
+        let contact = if pa.stationary_at(&x.s) || pb.stationary_at(&x.t) {
+            Contact::Singular
+        } else if x.multiplicity == 1 {
+            Contact::Transversal
+        } else {
+            Contact::Tangential {
+                order: x.multiplicity - 1,
+            }
+        };
+        points.push(IntersectionPoint {
+            point: point_at(pa, &x.s)?,
+            s: x.s,
+            t: x.t,
+            multiplicity: x.multiplicity,
+            contact,
+        });
+    }
+    points.sort_by(|x, y| x.s.partial_cmp(&y.s).expect("real numbers are ordered"));
+    Ok(Intersections { points, overlaps })
+}
+
+/// The self-intersections of one curve: double points `A(s) = A(t)` with
+/// `s < t` (loops, and a closed curve's shared end), and cusps (`s = t`,
+/// zero velocity), exactly.
+///
+/// # Examples
+///
+/// The cubic through (0, 0), (3, 3), (−1, 3), (2, 0) (control points) has a
+/// loop: its double point is reported once, with `s < t`.
+///
+/// ```
+/// use exact_bezier::{intersect::{self_intersect, Contact}, RationalCurve, ratio};
+/// use num_rational::BigRational;
+/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+/// let c = RationalCurve::polynomial(vec![p(0, 0), p(3, 3), p(-1, 3), p(2, 0)]).unwrap();
+/// let x = self_intersect(&c).unwrap();
+/// assert_eq!(x.points.len(), 1);
+/// assert!(x.points[0].s < x.points[0].t);
+/// assert_eq!(x.points[0].contact, Contact::Transversal);
+/// ```
+///
+/// # Errors
+///
+/// As [`intersect`]; [`Error::Domain`] when the curve covers a piece of
+/// itself twice (an improper parameterization).
+pub fn self_intersect(a: &RationalCurve<BigRational>) -> Result<Intersections, Error> {
+    let pa = prepared(a, "A")?;
+    let diagonal = BPoly::new(vec![
+        crate::algebra::UPoly::new(vec![
+            BigRational::from_integer(0.into()),
+            BigRational::from_integer(1.into()),
+        ]),
+        crate::algebra::UPoly::constant(BigRational::from_integer((-1).into())),
+    ]);
+    let eqs: Vec<_> = (0..pa.dim())
+        .map(|k| {
+            pa.equation(&pa, k)
+                .div_exact(&diagonal)
+                .expect("s − t divides X(s)W(t) − X(t)W(s)")
+        })
+        .collect();
+    let mut last = String::new();
+    for proj in projections(&eqs) {
+        match solve(&proj.0, &proj.1, &proj.2, pa.weight()) {
+            Ok(sols) => return finish_self(&pa, sols),
+            Err(Unsolved::CommonFactor) => last =
+                "the curve covers a piece of itself more than once (an improper parameterization)"
+                    .into(),
+            Err(Unsolved::Degenerate(s)) => {
+                last = format!("three or more branches pass through the point at s = {s}")
+            }
+        }
+    }
+    Err(Error::Domain(last))
+}
+
+/// Double points with `s < t` and cusps on the diagonal.
+fn finish_self(pa: &PowerCurve, sols: Vec<Solution>) -> Result<Intersections, Error> {
+    let mut points = Vec::new();
+    for x in sols {
+        let contact = match x.s.partial_cmp(&x.t) {
+            Some(std::cmp::Ordering::Greater) => continue,
+            Some(std::cmp::Ordering::Equal) => Contact::Cusp,
+            _ if pa.stationary_at(&x.s) || pa.stationary_at(&x.t) => Contact::Singular,
+            _ if x.multiplicity == 1 => Contact::Transversal,
+            _ => Contact::Tangential {
+                order: x.multiplicity - 1,
+            },
+        };
+        points.push(IntersectionPoint {
+            point: point_at(pa, &x.s)?,
+            s: x.s,
+            t: x.t,
+            multiplicity: x.multiplicity,
+            contact,
+        });
+    }
+    Ok(Intersections {
+        points,
+        overlaps: Vec::new(),
+    })
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,302 @@
+//! Constructed cases with answers derived by hand, checked against the
+//! exact elimination, and the laws every answer obeys.
+
+use super::*;
+use crate::algebra::{Ordered, Roots};
+use crate::ratio;
+use proptest::prelude::*;
+
+type Q = BigRational;
+
+fn q(n: i64, d: i64) -> Q {
+    ratio(n, d)
+}
+
+fn curve(points: &[&[Q]], weights: &[i64]) -> RationalCurve<Q> {
+    RationalCurve::new(
+        points.iter().map(|p| p.to_vec()).collect(),
+        weights.iter().map(|&w| q(w, 1)).collect(),
+    )
+    .unwrap()
+}
+
+fn alg(x: &Q) -> RealAlgebraic {
+    RealAlgebraic::from_rational(x)
+}
+
+/// `A(s)` by the generic de Casteljau algorithm over the algebraic numbers
+/// (a second route to the point, independent of the elimination).
+fn on_curve(c: &RationalCurve<Q>, s: &RealAlgebraic) -> Vec<RealAlgebraic> {
+    c.map(alg).eval(s).unwrap()
+}
+
+#[test]
+fn two_parabolas_touch_at_a_rational_point() {
+    // y = x² and y = −x² + 2x − 1/2 over x ∈ [0, 1] (x = parameter):
+    // their difference is 2(x − 1/2)², a tangency at (1/2, 1/4).
+    let f = curve(
+        &[
+            &[q(0, 1), q(0, 1)],
+            &[q(1, 2), q(0, 1)],
+            &[q(1, 1), q(1, 1)],
+        ],
+        &[1, 1, 1],
+    );
+    let g = curve(
+        &[
+            &[q(0, 1), q(-1, 2)],
+            &[q(1, 2), q(1, 2)],
+            &[q(1, 1), q(1, 2)],
+        ],
+        &[1, 1, 1],
+    );
+    let x = intersect(&f, &g).unwrap();
+    assert_eq!(x.points.len(), 1);
+    let p = &x.points[0];
+    assert_eq!((p.s.clone(), p.t.clone()), (alg(&q(1, 2)), alg(&q(1, 2))));
+    assert_eq!(p.point, vec![alg(&q(1, 2)), alg(&q(1, 4))]);
+    assert_eq!(p.multiplicity, 2);
+    assert_eq!(p.contact, Contact::Tangential { order: 1 });
+    assert!(x.overlaps.is_empty());
+}
+
+fn rational_cubic() -> RationalCurve<Q> {
+    curve(
+        &[
+            &[q(0, 1), q(0, 1)],
+            &[q(1, 1), q(3, 1)],
+            &[q(4, 1), q(2, 1)],
+            &[q(5, 1), q(-1, 1)],
+        ],
+        &[1, 3, 2, 1],
+    )
+}
+
+#[test]
+fn a_mobius_reparameterized_subsegment_is_an_overlap() {
+    let a = rational_cubic();
+    let b = a.subsegment(&q(1, 4), &q(3, 4)).mobius(&q(1, 3));
+    let x = intersect(&a, &b).unwrap();
+    assert!(x.points.is_empty(), "{:?}", x.points);
+    assert_eq!(x.overlaps.len(), 1);
+    let o = &x.overlaps[0];
+    assert_eq!(o.t, (q(0, 1), q(1, 1)));
+    assert_eq!(o.s, (q(1, 4), q(3, 4)));
+    // The map is exact: A(φ(t)) = B(t) at a few parameters.
+    for t in [q(1, 5), q(2, 3), q(7, 9)] {
+        let s = o.map.at(&t).unwrap();
+        assert_eq!(a.eval(&s).unwrap(), b.eval(&t).unwrap());
+    }
+}
+
+#[test]
+fn a_degree_elevated_copy_overlaps_everywhere_by_the_identity() {
+    let a = rational_cubic();
+    let x = intersect(&a, &a.elevate(2)).unwrap();
+    assert_eq!(x.overlaps.len(), 1);
+    let o = &x.overlaps[0];
+    assert_eq!(
+        (o.s.clone(), o.t.clone()),
+        ((q(0, 1), q(1, 1)), (q(0, 1), q(1, 1)))
+    );
+    assert_eq!(o.map.at(&q(2, 7)), Some(q(2, 7)));
+}
+
+#[test]
+fn pieces_of_one_curve_that_only_touch_meet_once() {
+    let a = rational_cubic();
+    let (left, right) = a.subdivide(&q(2, 5));
+    let x = intersect(&left, &right).unwrap();
+    assert!(x.overlaps.is_empty());
+    assert_eq!(x.points.len(), 1);
+    assert_eq!(x.points[0].contact, Contact::Continuation);
+    assert_eq!(
+        (x.points[0].s.clone(), x.points[0].t.clone()),
+        (alg(&q(1, 1)), alg(&q(0, 1)))
+    );
+}
+
+#[test]
+fn a_shared_endpoint_is_reported_once() {
+    let a = curve(
+        &[
+            &[q(0, 1), q(0, 1)],
+            &[q(1, 1), q(2, 1)],
+            &[q(2, 1), q(0, 1)],
+        ],
+        &[1, 1, 1],
+    );
+    let b = curve(
+        &[
+            &[q(2, 1), q(0, 1)],
+            &[q(3, 1), q(2, 1)],
+            &[q(4, 1), q(0, 1)],
+        ],
+        &[1, 2, 1],
+    );
+    let x = intersect(&a, &b).unwrap();
+    assert_eq!(x.points.len(), 1);
+    assert_eq!(
+        (x.points[0].s.clone(), x.points[0].t.clone()),
+        (alg(&q(1, 1)), alg(&q(0, 1)))
+    );
+    assert_eq!(x.points[0].contact, Contact::Transversal);
+}
+
+#[test]
+fn the_loop_of_a_symmetric_cubic_is_found_at_its_algebraic_parameters() {
+    // x(s) = 14s³ − 21s² + 9s, y(s) = 9s(1 − s): x(s) = 1 at s = 1/2 and
+    // at s(1 − s) = 1/7, i.e. s = 1/2 ∓ √21/14, where y = 9/7.
+    let c = curve(
+        &[
+            &[q(0, 1), q(0, 1)],
+            &[q(3, 1), q(3, 1)],
+            &[q(-1, 1), q(3, 1)],
+            &[q(2, 1), q(0, 1)],
+        ],
+        &[1, 1, 1, 1],
+    );
+    let x = self_intersect(&c).unwrap();
+    assert_eq!(x.points.len(), 1);
+    let p = &x.points[0];
+    let r21 = RealAlgebraic::from_i64(21).nth_root(2).unwrap();
+    let half = alg(&q(1, 2));
+    let d = r21 * &alg(&q(1, 14));
+    assert_eq!(p.s, half.clone() - &d);
+    assert_eq!(p.t, half + &d);
+    assert_eq!(p.point, vec![alg(&q(1, 1)), alg(&q(9, 7))]);
+    assert_eq!(p.contact, Contact::Transversal);
+}
+
+#[test]
+fn a_cusp_is_reported_on_the_diagonal() {
+    // (0,0), (1,1), (0,1), (1,0): x = 3s − 6s² + 4s³ has x'(1/2) = 0 and
+    // y = 3s(1 − s) has y'(1/2) = 0: a cusp at s = 1/2, point (1/2, 3/4).
+    let c = curve(
+        &[
+            &[q(0, 1), q(0, 1)],
+            &[q(1, 1), q(1, 1)],
+            &[q(0, 1), q(1, 1)],
+            &[q(1, 1), q(0, 1)],
+        ],
+        &[1, 1, 1, 1],
+    );
+    let x = self_intersect(&c).unwrap();
+    assert_eq!(x.points.len(), 1, "{:?}", x.points);
+    assert_eq!(x.points[0].contact, Contact::Cusp);
+    assert_eq!(x.points[0].s, alg(&q(1, 2)));
+    assert_eq!(x.points[0].point, vec![alg(&q(1, 2)), alg(&q(3, 4))]);
+}
+
+/// A rational quadratic in 3D and a line through its point at `s = 1/3`,
+/// shifted off it by `shift` along z.
+fn crossing_3d(shift: Q) -> (RationalCurve<Q>, RationalCurve<Q>, Vec<Q>) {
+    let a = curve(
+        &[
+            &[q(0, 1), q(0, 1), q(0, 1)],
+            &[q(1, 1), q(2, 1), q(1, 1)],
+            &[q(3, 1), q(0, 1), q(2, 1)],
+        ],
+        &[1, 2, 1],
+    );
+    let p = a.eval(&q(1, 3)).unwrap();
+    let dir = [q(1, 1), q(-1, 1), q(1, 1)];
+    let end = |sign: i64| -> Vec<Q> {
+        p.iter()
+            .zip(&dir)
+            .enumerate()
+            .map(|(k, (x, d))| {
+                let z = if k == 2 { shift.clone() } else { q(0, 1) };
+                x + d * q(sign, 2) + z
+            })
+            .collect()
+    };
+    let b = RationalCurve::polynomial(vec![end(-1), end(1)]).unwrap();
+    (a, b, p)
+}
+
+#[test]
+fn curves_in_3d_cross_at_the_constructed_point() {
+    let (a, b, p) = crossing_3d(q(0, 1));
+    let x = intersect(&a, &b).unwrap();
+    assert_eq!(x.points.len(), 1);
+    assert_eq!(x.points[0].s, alg(&q(1, 3)));
+    assert_eq!(x.points[0].t, alg(&q(1, 2)));
+    assert_eq!(x.points[0].point, p.iter().map(alg).collect::<Vec<_>>());
+}
+
+#[test]
+fn curves_in_3d_that_miss_by_1e_minus_30_do_not_meet() {
+    let tiny = Q::new(1.into(), num_bigint::BigInt::from(10).pow(30));
+    let (a, b, _) = crossing_3d(tiny);
+    assert!(intersect(&a, &b).unwrap().points.is_empty());
+    let (x, by) = intersect_filtered(&a, &b).unwrap();
+    assert!(x.points.is_empty());
+    // f64 boxes cannot separate 10⁻³⁰: the exact path decided.
+    assert_eq!(by, DecidedBy::Exact);
+}
+
+#[test]
+fn bad_input_gets_typed_errors() {
+    let a = rational_cubic();
+    let point = curve(&[&[q(1, 1), q(1, 1)], &[q(1, 1), q(1, 1)]], &[1, 2]);
+    assert!(matches!(intersect(&a, &point), Err(Error::Domain(_))));
+    let negative = curve(&[&[q(0, 1), q(0, 1)], &[q(1, 1), q(1, 1)]], &[1, -1]);
+    assert!(matches!(
+        intersect(&a, &negative),
+        Err(Error::Weight { .. })
+    ));
+    let (_, b3, _) = crossing_3d(q(0, 1));
+    assert!(matches!(intersect(&a, &b3), Err(Error::Shape(_))));
+}
+
+#[test]
+fn the_f64_path_agrees_with_the_exact_one_on_the_loop() {
+    let c = rational_cubic();
+    let line = curve(&[&[q(0, 1), q(1, 1)], &[q(5, 1), q(0, 1)]], &[1, 1]);
+    let exact = intersect(&c, &line).unwrap();
+    let mut approx =
+        intersect_approx(&c.map(Ordered::to_f64), &line.map(Ordered::to_f64), 1e-10).unwrap();
+    approx.sort_by(|x, y| x.s.total_cmp(&y.s));
+    assert_eq!(exact.points.len(), approx.len());
+    for (e, a) in exact.points.iter().zip(&approx) {
+        assert!((e.s.to_f64() - a.s).abs() < 1e-8, "{} vs {}", e.s, a.s);
+        assert!((e.t.to_f64() - a.t).abs() < 1e-8);
+    }
+}
+
+fn small_point(dim: usize) -> impl Strategy<Value = Vec<Q>> {
+    proptest::collection::vec((-6i64..=6).prop_map(|v| q(v, 1)), dim)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Every reported point lies on both curves, exactly (generic
+    /// evaluation over the algebraic numbers), for a line against a
+    /// rational quadratic (parameters of degree ≤ 2).
+    #[test]
+    fn reported_points_lie_on_both_curves(
+        line in proptest::collection::vec(small_point(2), 2),
+        quad in proptest::collection::vec(small_point(2), 3),
+        w in proptest::collection::vec(1i64..=4, 3),
+    ) {
+        let l = RationalCurve::polynomial(line).unwrap();
+        let c = RationalCurve::new(quad, w.iter().map(|&v| q(v, 1)).collect()).unwrap();
+        match intersect(&l, &c) {
+            Ok(x) => {
+                for p in &x.points {
+                    prop_assert_eq!(&on_curve(&l, &p.s), &p.point);
+                    prop_assert_eq!(&on_curve(&c, &p.t), &p.point);
+                }
+                for o in &x.overlaps {
+                    let t = (&o.t.0 + &o.t.1) / q(2, 1);
+                    let s = o.map.at(&t).unwrap();
+                    prop_assert_eq!(l.eval(&s).unwrap(), c.eval(&t).unwrap());
+                }
+            }
+            Err(Error::Domain(_)) => {} // a degenerate (point) curve
+            Err(e) => prop_assert!(false, "{e}"),
+        }
+    }
+}
