@@ -53,14 +53,13 @@ pub(crate) fn determinant<T: Field>(mut m: Vec<Vec<T>>) -> T {
         let pivot = m[col][col].clone();
         det = det * &pivot;
         let inv = pivot.recip();
-        for r in col + 1..n {
-            if m[r][col].is_zero() {
-                continue;
-            }
-            let factor = m[r][col].clone() * &inv;
-            for c in col..n {
-                let d = factor.clone() * &m[col][c];
-                m[r][c] = m[r][c].clone() - &d;
+        let (upper, lower) = m.split_at_mut(col + 1);
+        let pivot_row = &upper[col];
+        for row in lower.iter_mut().filter(|row| !row[col].is_zero()) {
+            let factor = row[col].clone() * &inv;
+            for (entry, p) in row[col..].iter_mut().zip(&pivot_row[col..]) {
+                let d = factor.clone() * p;
+                *entry = entry.clone() - &d;
             }
         }
     }

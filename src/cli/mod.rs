@@ -37,6 +37,7 @@ mod deriv;
 mod eval;
 mod eval_trig;
 mod figures;
+mod intersect;
 mod is_circle;
 mod join;
 mod key;
@@ -169,6 +170,11 @@ enum Command {
         after_help = "Same up to Möbius maps of each parameter, reversal, swapping u and v, degree elevation, common factors and weight scaling, decided exactly (no roots, no tolerance). The witness gives the map. Exit 0 either way.\n\nExample: exact-bezier coincide tests/fixtures/yang_yong_example1.json tests/fixtures/yang_yong_example3.json"
     )]
     Coincide(coincide::Args),
+    /// Exact intersections of two curves (or self-intersections of one): points, contacts, overlaps.
+    #[command(
+        after_help = "Parameters and points are exact real algebraic numbers (sqrt(...), CRootOf(...)) with f64 approximations; an overlap gives the parameter intervals on both curves and the Möbius map s = (a t + b)/(c t + d) between them. Without B: loops (s < t) and cusps of A.\n\nExample: exact-bezier intersect docs/examples/curve.json docs/examples/line.json"
+    )]
+    Intersect(intersect::Args),
     /// Group curves/rect patches (JSON Lines or array) into coincidence classes, one JSON line each.
     #[command(after_help = "Example: exact-bezier dedup patches.jsonl --witness")]
     Dedup(dedup::Args),
@@ -203,6 +209,7 @@ fn dispatch(command: Command) -> Result<Result<Value, i32>, Error> {
         Command::Arc(a) => arc::run(&a),
         Command::IsCircle(a) => is_circle::run(&a),
         Command::Coincide(a) => coincide::run(&a),
+        Command::Intersect(a) => intersect::run(&a),
         Command::Dedup(a) => return dedup::run(&a).map(|()| Err(0)),
         Command::Key(a) => return key::run(&a).map(|()| Err(0)),
         Command::Audit(a) => audit::run(&a),

@@ -53,6 +53,7 @@ use crate::algebra::{BPoly, RealAlgebraic, Scalar};
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use num_rational::BigRational;
+use num_traits::{One, Zero};
 use system::{combine, solve, PowerCurve, Solution, Unsolved};
 
 /// How two curves meet at an isolated intersection.
@@ -169,19 +170,47 @@ fn swapped(sols: Vec<Solution>) -> Vec<Solution> {
         .collect()
 }
 
-/// Solve, retrying with `s` and `t` swapped when a root is degenerate.
+/// Solve with `s` outer, and with `t` outer when a root is degenerate or an
+/// equation does not involve `t` (a curve with a constant coordinate).
 fn solve_either_way(
     p: &Projection,
     pa: &PowerCurve,
     pb: &PowerCurve,
 ) -> Result<Vec<Solution>, Unsolved> {
-    match solve(&p.0, &p.1, &p.2, pa.weight()) {
+    let free_of_t = |e: &BPoly<BigRational>| e.deg_u().unwrap_or(0) == 0;
+    let first = if free_of_t(&p.0) || free_of_t(&p.1) {
+        Err(Unsolved::Degenerate(RealAlgebraic::zero()))
+    } else {
+        solve(&p.0, &p.1, &p.2, pa.weight())
+    };
+    match first {
         Err(Unsolved::Degenerate(_)) => {
             let extra: Vec<_> = p.2.iter().map(BPoly::transpose).collect();
-            solve(&p.0.transpose(), &p.1.transpose(), &extra, pb.weight()).map(swapped)
+            let (f, g) = (p.0.transpose(), p.1.transpose());
+            if let Some(none) = constant_equation(&f, &g) {
+                return none;
+            }
+            solve(&f, &g, &extra, pb.weight()).map(swapped)
         }
         other => other,
     }
+}
+
+/// When `f` or `g` is a constant: no solutions if it is a non-zero one,
+/// a common factor (every point solves it) if it is zero.
+fn constant_equation(
+    f: &BPoly<BigRational>,
+    g: &BPoly<BigRational>,
+) -> Option<Result<Vec<Solution>, Unsolved>> {
+    let constant =
+        |e: &&BPoly<BigRational>| e.deg_u().unwrap_or(0) == 0 && e.deg_v().unwrap_or(0) == 0;
+    [f, g].into_iter().find(constant).map(|e| {
+        if e.is_zero() {
+            Err(Unsolved::CommonFactor)
+        } else {
+            Ok(Vec::new())
+        }
+    })
 }
 
 /// Divide `p` by `d` as often as it divides.
@@ -237,7 +266,12 @@ pub fn intersect(
         )));
     }
     let (pa, pb) = (prepared(a, "A")?, prepared(b, "B")?);
-    let eqs: Vec<_> = (0..pa.dim()).map(|k| pa.equation(&pb, k)).collect();
+    // A coordinate that is the same constant on both curves gives E_k ≡ 0.
+    let mut eqs: Vec<_> = (0..pa.dim()).map(|k| pa.equation(&pb, k)).collect();
+    eqs.retain(|e| !e.is_zero());
+    if eqs.len() < 2 {
+        return collinear(&pa, &pb, &eqs[0]);
+    }
     let mut last = String::new();
     for proj in projections(&eqs) {
         match solve_either_way(&proj, &pa, &pb) {
@@ -252,6 +286,23 @@ pub fn intersect(
         }
     }
     Err(Error::Domain(last))
+}
+
+/// Two curves on one line: related by a Möbius map (an overlap, possibly
+/// empty) or not handled. A proper parameterization of a line has degree 1,
+/// so off the map's graph the equation has no zeros.
+fn collinear(
+    pa: &PowerCurve,
+    pb: &PowerCurve,
+    eq: &BPoly<BigRational>,
+) -> Result<Intersections, Error> {
+    let phi = overlap::find_mobius(pa, pb).ok_or_else(|| {
+        Error::Domain(
+            "the curves lie on one line and are not Möbius reparameterizations of each other"
+                .into(),
+        )
+    })?;
+    with_overlap(pa, pb, &(eq.clone(), eq.clone(), Vec::new()), phi)
 }
 
 /// The overlaps given by `φ`, and the isolated intersections off them.
@@ -399,7 +450,11 @@ pub fn self_intersect(a: &RationalCurve<BigRational>) -> Result<Intersections, E
                 .div_exact(&diagonal)
                 .expect("s − t divides X(s)W(t) − X(t)W(s)")
         })
+        .filter(|e: &BPoly<BigRational>| !e.is_zero())
         .collect();
+    if eqs.len() < 2 {
+        return straight(&pa);
+    }
     let mut last = String::new();
     for proj in projections(&eqs) {
         match solve(&proj.0, &proj.1, &proj.2, pa.weight()) {
@@ -413,6 +468,33 @@ pub fn self_intersect(a: &RationalCurve<BigRational>) -> Result<Intersections, E
         }
     }
     Err(Error::Domain(last))
+}
+
+/// A curve on a line has no self-intersections iff it does not turn back:
+/// a coordinate that varies, `X/W`, is monotone on `[0, 1]` (its derivative's
+/// numerator `X'W − XW'` has no root of odd multiplicity in `(0, 1)`).
+fn straight(pa: &PowerCurve) -> Result<Intersections, Error> {
+    let w = pa.weight();
+    let turns = pa.comps[..pa.dim()].iter().any(|x| {
+        let d = system::derivative(x)
+            .mul(w)
+            .sub(&x.mul(&system::derivative(w)));
+        !d.is_zero()
+            && system::square_free_factors(&d)
+                .iter()
+                .filter(|(_, mult)| mult % 2 == 1)
+                .any(|(f, _)| {
+                    system::roots_in_unit(f)
+                        .iter()
+                        .any(|r| r.signum() > 0 && *r < RealAlgebraic::one())
+                })
+    });
+    if turns {
+        return Err(Error::Domain(
+            "the curve runs back along a line: it covers a piece of itself twice".into(),
+        ));
+    }
+    Ok(Intersections::default())
 }
 
 /// Double points with `s < t` and cusps on the diagonal.

@@ -18,6 +18,8 @@
 use super::system::{PowerCurve, QPoly};
 use crate::algebra::sylvester::determinant;
 use crate::algebra::UPoly;
+use num_bigint::BigInt;
+use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
@@ -34,6 +36,27 @@ impl Mobius {
         let [a, b, c, d] = &self.coeffs;
         let den = c * t + d;
         (!den.is_zero()).then(|| (a * t + b) / den)
+    }
+
+    /// The same map with coprime integer coefficients and `d > 0` (or
+    /// `c > 0` when `d = 0`): the identity is `[1, 0, 0, 1]`.
+    fn normalized(&self) -> Mobius {
+        let lcm = self
+            .coeffs
+            .iter()
+            .fold(BigInt::one(), |acc, x| acc.lcm(x.denom()));
+        let ints: Vec<BigInt> = self
+            .coeffs
+            .iter()
+            .map(|x| (x * BigRational::from_integer(lcm.clone())).to_integer())
+            .collect();
+        let gcd = ints.iter().fold(BigInt::zero(), |g, x| g.gcd(x));
+        let [_, _, c, d] = &self.coeffs;
+        let negative = d.is_negative() || (d.is_zero() && c.is_negative());
+        let unit = if negative { -gcd } else { gcd };
+        Mobius {
+            coeffs: std::array::from_fn(|i| BigRational::new(ints[i].clone(), unit.clone())),
+        }
     }
 
     /// The parameters in `(0, 1)` where `φ` is 0, 1 or infinite.
@@ -174,7 +197,7 @@ pub(crate) fn find_mobius(a: &PowerCurve, b: &PowerCurve) -> Option<Mobius> {
     if (x * w - y * z).is_zero() {
         return None;
     }
-    let phi = Mobius { coeffs };
+    let phi = Mobius { coeffs }.normalized();
     maps_onto(a, b, &phi).then_some(phi)
 }
 

@@ -32,6 +32,7 @@ use crate::curve::RationalCurve;
 use crate::error::Error;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
+pub(crate) use polys::derivative;
 
 /// A univariate polynomial over Q.
 pub(crate) type QPoly = UPoly<BigRational>;

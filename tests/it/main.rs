@@ -13,6 +13,7 @@ mod curve_props;
 mod curves;
 mod dedup;
 mod eval_batch;
+mod intersect;
 mod mesh;
 mod plot;
 mod proofs;

@@ -167,6 +167,24 @@ fn command_outputs_match_the_schema() {
         "coincide",
         &output(&["coincide", ex1, ex3]),
     );
+    let (curve, line, looped) = (
+        "docs/examples/curve.json",
+        "docs/examples/line.json",
+        "docs/examples/loop.json",
+    );
+    for args in [
+        vec!["intersect", curve, line],
+        vec!["intersect", curve, line, "--filtered"],
+        vec!["intersect", curve, curve],
+        vec!["intersect", looped],
+    ] {
+        assert_valid("intersectOutput", &args.join(" "), &output(&args));
+    }
+    assert_valid(
+        "intersectF64Output",
+        "intersect f64",
+        &output(&["intersect", curve, line, "--scalar", "f64"]),
+    );
     let teapot = "tests/fixtures/teapot.json";
     assert_valid(
         "auditSummary",
