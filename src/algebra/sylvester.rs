@@ -35,7 +35,10 @@
 use crate::algebra::real_algebraic::polys::interpolate;
 use crate::algebra::scalar::Field;
 use crate::algebra::upoly::{BPoly, UPoly};
+use num_bigint::BigInt;
+use num_integer::Integer;
 use num_rational::BigRational;
+use num_traits::{One, Zero};
 
 /// The determinant of a square matrix over a field, by Gaussian
 /// elimination with the first non-zero pivot (exact fields only).
@@ -64,6 +67,60 @@ pub(crate) fn determinant<T: Field>(mut m: Vec<Vec<T>>) -> T {
         }
     }
     det
+}
+
+/// The determinant of a square matrix over Q, fraction-free: each row is
+/// scaled to integers by the lcm of its denominators, then Bareiss's
+/// elimination keeps every entry an integer (each division is exact):
+///
+/// ```text
+/// a_ij ← (a_ij a_kk − a_ik a_kj) / a_{k−1,k−1}      det = a_{n−1,n−1} / ∏ row scales
+/// ```
+///
+/// No gcd per operation, unlike Gaussian elimination over `BigRational`.
+///
+/// Reference: Bareiss, *Sylvester's identity and multistep
+/// integer-preserving Gaussian elimination*, Math. Comp. 22 (1968) 565–578.
+pub(crate) fn rational_determinant(m: Vec<Vec<BigRational>>) -> BigRational {
+    let n = m.len();
+    if n == 0 {
+        return BigRational::one();
+    }
+    let mut scale = BigInt::one();
+    let mut a: Vec<Vec<BigInt>> = m
+        .iter()
+        .map(|row| {
+            let l = row.iter().fold(BigInt::one(), |acc, x| acc.lcm(x.denom()));
+            let ints = row.iter().map(|x| x.numer() * (&l / x.denom())).collect();
+            scale *= l;
+            ints
+        })
+        .collect();
+    let mut negate = false;
+    let mut prev = BigInt::one();
+    for k in 0..n {
+        let Some(p) = (k..n).find(|&r| !a[r][k].is_zero()) else {
+            return BigRational::zero();
+        };
+        if p != k {
+            a.swap(p, k);
+            negate = !negate;
+        }
+        let (upper, lower) = a.split_at_mut(k + 1);
+        let pivot_row = &upper[k];
+        for row in lower.iter_mut() {
+            for j in k + 1..n {
+                row[j] = (&row[j] * &pivot_row[k] - &row[k] * &pivot_row[j]) / &prev;
+            }
+        }
+        prev = a[k][k].clone();
+    }
+    let det = BigRational::new(prev, scale);
+    if negate {
+        -det
+    } else {
+        det
+    }
 }
 
 /// The rows of the `j`-th subresultant matrix of `f`, `g` (coefficient
@@ -99,6 +156,11 @@ pub fn resultant<T: Field>(f: &[T], g: &[T]) -> T {
     determinant(subresultant_rows(f, g, 0))
 }
 
+/// [`resultant`] over Q by the fraction-free [`rational_determinant`].
+pub(crate) fn rational_resultant(f: &[BigRational], g: &[BigRational]) -> BigRational {
+    rational_determinant(subresultant_rows(f, g, 0))
+}
+
 /// The coefficients `(S_{1,1}, S_{1,0})` of a linear polynomial that every
 /// common root of `f` and `g` satisfies, with `S_{1,1} ≠ 0` exactly when
 /// that root is unique: the first subresultant when both formal degrees
@@ -113,6 +175,11 @@ pub fn resultant<T: Field>(f: &[T], g: &[T]) -> T {
 /// assert_eq!(-b / a, q(1));
 /// ```
 pub fn linear_eliminant<T: Field>(f: &[T], g: &[T]) -> (T, T) {
+    linear_eliminant_by(f, g, determinant)
+}
+
+/// [`linear_eliminant`] with the determinant `det`.
+fn linear_eliminant_by<T: Field>(f: &[T], g: &[T], det: fn(Vec<Vec<T>>) -> T) -> (T, T) {
     let (m, n) = (f.len() - 1, g.len() - 1);
     if n == 1 {
         return (g[1].clone(), g[0].clone());
@@ -132,10 +199,7 @@ pub fn linear_eliminant<T: Field>(f: &[T], g: &[T]) -> (T, T) {
             .collect::<Vec<_>>()
     };
     let width = m + n - 1;
-    (
-        determinant(square(width - 2)),
-        determinant(square(width - 1)),
-    )
+    (det(square(width - 2)), det(square(width - 1)))
 }
 
 /// A polynomial in `t` whose coefficients are polynomials in `s`:
@@ -179,7 +243,7 @@ fn interpolated(degree: usize, values: impl Fn(&BigRational) -> BigRational) -> 
 pub fn resultant_in_t(f: &BPoly<BigRational>, g: &BPoly<BigRational>) -> UPoly<BigRational> {
     let ((mf, df), (mg, dg)) = (shape(f), shape(g));
     interpolated(df * mg + dg * mf, |s| {
-        resultant(&at_s(f, mf, s), &at_s(g, mg, s))
+        rational_resultant(&at_s(f, mf, s), &at_s(g, mg, s))
     })
 }
 
@@ -197,7 +261,9 @@ pub fn linear_eliminant_in_t(
         (1, _) => df,
         _ => df * (mg - 1) + dg * (mf - 1),
     };
-    let pair = |s: &BigRational| linear_eliminant(&at_s(f, mf, s), &at_s(g, mg, s));
+    let pair = |s: &BigRational| {
+        linear_eliminant_by(&at_s(f, mf, s), &at_s(g, mg, s), rational_determinant)
+    };
     (
         interpolated(degree, |s| pair(s).0),
         interpolated(degree, |s| pair(s).1),
@@ -238,6 +304,22 @@ mod tests {
         // The common root at s is t = s − 1 (from G itself).
         let (e1, e0) = linear_eliminant_in_t(&f, &g);
         assert_eq!(e0.eval(&q(5)) / e1.eval(&q(5)), q(-4));
+    }
+
+    #[test]
+    fn bareiss_agrees_with_gaussian_elimination() {
+        let r = |n: i64, d: i64| ratio::<BigRational>(n, d);
+        let m = vec![
+            vec![r(0, 1), r(2, 3), r(-1, 5), r(7, 2)],
+            vec![r(3, 4), r(0, 1), r(5, 1), r(-2, 9)],
+            vec![r(1, 7), r(-4, 3), r(0, 1), r(1, 1)],
+            vec![r(6, 1), r(1, 2), r(-3, 8), r(0, 1)],
+        ];
+        assert_eq!(rational_determinant(m.clone()), determinant(m.clone()));
+        // A singular matrix: the last row is the sum of the first two.
+        let mut s = m[..3].to_vec();
+        s.push(m[0].iter().zip(&m[1]).map(|(a, b)| a + b).collect());
+        assert_eq!(rational_determinant(s), r(0, 1));
     }
 
     #[test]

@@ -54,7 +54,7 @@ use crate::curve::RationalCurve;
 use crate::error::Error;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
-use system::{combine, solve, PowerCurve, Solution, Unsolved};
+use system::{combine, solve, PointCache, PowerCurve, Solution, Unsolved};
 
 /// How two curves meet at an isolated intersection.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -181,7 +181,7 @@ fn solve_either_way(
     let first = if free_of_t(&p.0) || free_of_t(&p.1) {
         Err(Unsolved::Degenerate(RealAlgebraic::zero()))
     } else {
-        solve(&p.0, &p.1, &p.2, pa.weight())
+        solve(&p.0, &p.1, &p.2, pa.weight(), pb.weight())
     };
     match first {
         Err(Unsolved::Degenerate(_)) => {
@@ -190,7 +190,7 @@ fn solve_either_way(
             if let Some(none) = constant_equation(&f, &g) {
                 return none;
             }
-            solve(&f, &g, &extra, pb.weight()).map(swapped)
+            solve(&f, &g, &extra, pb.weight(), pa.weight()).map(swapped)
         }
         other => other,
     }
@@ -364,7 +364,7 @@ fn with_overlap(
             continue;
         }
         out.points.push(IntersectionPoint {
-            point: point_at(pa, &s)?,
+            point: pa.point_at(&s, &mut PointCache::default())?,
             s,
             t,
             multiplicity: 1,
@@ -376,11 +376,6 @@ fn with_overlap(
     Ok(out)
 }
 
-/// The exact point `A(s)`.
-fn point_at(pa: &PowerCurve, s: &RealAlgebraic) -> Result<Vec<RealAlgebraic>, Error> {
-    (0..pa.dim()).map(|k| pa.coordinate_at(k, s)).collect()
-}
-
 /// Points, contacts and order for the solutions.
 fn finish(
     pa: &PowerCurve,
@@ -389,6 +384,7 @@ fn finish(
     overlaps: Vec<Overlap>,
 ) -> Result<Intersections, Error> {
     let mut points = Vec::with_capacity(sols.len());
+    let mut cache = PointCache::default();
     for x in sols {
         let contact = if pa.stationary_at(&x.s) || pb.stationary_at(&x.t) {
             Contact::Singular
@@ -400,7 +396,7 @@ fn finish(
             }
         };
         points.push(IntersectionPoint {
-            point: point_at(pa, &x.s)?,
+            point: pa.point_at(&x.s, &mut cache)?,
             s: x.s,
             t: x.t,
             multiplicity: x.multiplicity,
@@ -457,7 +453,7 @@ pub fn self_intersect(a: &RationalCurve<BigRational>) -> Result<Intersections, E
     }
     let mut last = String::new();
     for proj in projections(&eqs) {
-        match solve(&proj.0, &proj.1, &proj.2, pa.weight()) {
+        match solve(&proj.0, &proj.1, &proj.2, pa.weight(), pa.weight()) {
             Ok(sols) => return finish_self(&pa, sols),
             Err(Unsolved::CommonFactor) => last =
                 "the curve covers a piece of itself more than once (an improper parameterization)"
@@ -500,6 +496,7 @@ fn straight(pa: &PowerCurve) -> Result<Intersections, Error> {
 /// Double points with `s < t` and cusps on the diagonal.
 fn finish_self(pa: &PowerCurve, sols: Vec<Solution>) -> Result<Intersections, Error> {
     let mut points = Vec::new();
+    let mut cache = PointCache::default();
     for x in sols {
         let contact = match x.s.partial_cmp(&x.t) {
             Some(std::cmp::Ordering::Greater) => continue,
@@ -511,7 +508,7 @@ fn finish_self(pa: &PowerCurve, sols: Vec<Solution>) -> Result<Intersections, Er
             },
         };
         points.push(IntersectionPoint {
-            point: point_at(pa, &x.s)?,
+            point: pa.point_at(&x.s, &mut cache)?,
             s: x.s,
             t: x.t,
             multiplicity: x.multiplicity,

@@ -55,7 +55,7 @@ impl PowerCurve {
                 UPoly::new(bernstein_to_power(&coord))
             })
             .collect();
-        let g = comps.iter().fold(QPoly::zero(), |g, p| g.gcd(p));
+        let g = comps.iter().fold(QPoly::zero(), |g, p| polys::gcd(&g, p));
         let comps = comps
             .iter()
             .map(|p| p.div_exact(&g).expect("the gcd divides"))
@@ -105,6 +105,39 @@ impl PowerCurve {
         alpha.rational_function_at(&self.comps[k], self.weight())
     }
 
+    /// The exact point at `α`, sharing per-coordinate value polynomials
+    /// among the roots of one defining polynomial through `cache`.
+    pub fn point_at(
+        &self,
+        alpha: &RealAlgebraic,
+        cache: &mut PointCache,
+    ) -> Result<Vec<RealAlgebraic>, Error> {
+        let p = alpha.defining_polynomial();
+        let w = self.weight();
+        if alpha.as_rational().is_some() || polys::gcd(&p, w).degree().unwrap_or(0) > 0 {
+            return (0..self.dim())
+                .map(|k| self.coordinate_at(k, alpha))
+                .collect();
+        }
+        let index = match cache.0.iter().position(|(q, _)| *q == p) {
+            Some(i) => i,
+            None => {
+                let known = self.comps[..self.dim()]
+                    .iter()
+                    .map(|x| RealAlgebraic::value_polynomial(&p, x, w))
+                    .collect();
+                cache.0.push((p, known));
+                cache.0.len() - 1
+            }
+        };
+        Ok(cache.0[index]
+            .1
+            .iter()
+            .zip(&self.comps)
+            .map(|(known, x)| alpha.rational_function_root(known, x, w))
+            .collect())
+    }
+
     /// `true` when the velocity vanishes at `α` (every `X_k' W − X_k W'` is
     /// zero there): a cusp or a stationary point of the parameterization.
     pub fn stationary_at(&self, alpha: &RealAlgebraic) -> bool {
@@ -116,6 +149,11 @@ impl PowerCurve {
         })
     }
 }
+
+/// For each defining polynomial already met, the polynomials whose roots
+/// are the point's coordinates at its roots ([`PowerCurve::point_at`]).
+#[derive(Default)]
+pub(crate) struct PointCache(Vec<(QPoly, Vec<polys::Isolator>)>);
 
 /// A combination `Σ c_k p_k` of bivariate polynomials.
 pub(crate) fn combine(parts: &[(BigRational, &BPoly<BigRational>)]) -> BPoly<BigRational> {
@@ -146,7 +184,7 @@ pub(crate) fn vanishes_at(p: &QPoly, alpha: &RealAlgebraic) -> bool {
     if p.is_zero() {
         return true;
     }
-    let g = alpha.defining_polynomial().gcd(p);
+    let g = polys::gcd(&alpha.defining_polynomial(), p);
     if g.degree().unwrap_or(0) == 0 {
         return false;
     }
@@ -159,13 +197,13 @@ pub(crate) fn vanishes_at(p: &QPoly, alpha: &RealAlgebraic) -> bool {
 pub(crate) fn square_free_factors(p: &QPoly) -> Vec<(QPoly, usize)> {
     let mut out = Vec::new();
     let dp = polys::derivative(p);
-    let g = p.gcd(&dp);
+    let g = polys::gcd(p, &dp);
     let mut b = p.div_exact(&g).expect("the gcd divides");
     let mut c = dp.div_exact(&g).expect("the gcd divides");
     let mut d = c.sub(&polys::derivative(&b));
     let mut j = 1;
     while b.degree().unwrap_or(0) > 0 {
-        let a = b.gcd(&d);
+        let a = polys::gcd(&b, &d);
         b = b.div_exact(&a).expect("the gcd divides");
         c = d.div_exact(&a).expect("the gcd divides");
         d = c.sub(&polys::derivative(&b));
@@ -217,37 +255,46 @@ pub(crate) enum Unsolved {
 /// resultant vanishes without an intersection; those factors (no roots in
 /// `[0, 1]`) are divided out so that the remaining factors, and the degrees
 /// of the parameters' defining polynomials, are not inflated.
+/// `inner_weight` (the inner curve's) plays the same role for `Res_s`.
 pub(crate) fn solve(
     f: &BPoly<BigRational>,
     g: &BPoly<BigRational>,
     extra: &[BPoly<BigRational>],
     weight: &QPoly,
+    inner_weight: &QPoly,
 ) -> Result<Vec<Solution>, Unsolved> {
     if f.deg_u().unwrap_or(0) == 0 || g.deg_u().unwrap_or(0) == 0 {
         return Err(Unsolved::CommonFactor);
     }
-    let mut r = resultant_in_t(f, g);
+    let r = resultant_in_t(f, g);
     if r.is_zero() {
         return Err(Unsolved::CommonFactor);
     }
-    loop {
-        let common = r.gcd(weight);
-        if common.degree().unwrap_or(0) == 0 {
-            break;
-        }
-        r = r.div_exact(&common).expect("the gcd divides");
-    }
+    let r = without_weight_factors(r, weight);
     let (e1, e0) = linear_eliminant_in_t(f, g);
     let minus_e0 = e0.scale(&-BigRational::one());
+    let mut t_poly = None;
     let mut out = Vec::new();
     for (factor, multiplicity) in square_free_factors(&r) {
         for s in roots_in_unit(&factor) {
             if vanishes_at(&e1, &s) {
                 return Err(Unsolved::Degenerate(s));
             }
-            let t = s
-                .rational_function_at(&minus_e0, &e1)
-                .map_err(|_| Unsolved::Degenerate(s.clone()))?;
+            let t = if s.as_rational().is_some() {
+                s.rational_function_at(&minus_e0, &e1)
+                    .map_err(|_| Unsolved::Degenerate(s.clone()))?
+            } else {
+                let known = t_poly.get_or_insert_with(|| t_resultant(f, g, inner_weight));
+                let degree = s.defining_polynomial().degree();
+                match known {
+                    Some(known) if known.sf.degree() <= degree => {
+                        s.rational_function_root(known, &minus_e0, &e1)
+                    }
+                    _ => s
+                        .rational_function_at(&minus_e0, &e1)
+                        .map_err(|_| Unsolved::Degenerate(s.clone()))?,
+                }
+            };
             if t.signum() < 0 || t > RealAlgebraic::one() {
                 continue;
             }
@@ -260,6 +307,39 @@ pub(crate) fn solve(
         }
     }
     Ok(out)
+}
+
+/// `Res_s(F, G)`, prepared for root isolation: every `t` of a solution is
+/// among its roots, so an irrational `t` is isolated from enclosures of
+/// `−e_0(s)/e_1(s)` without a resultant over the field of `s`. `None` when
+/// it does not exist or vanishes identically.
+fn t_resultant(
+    f: &BPoly<BigRational>,
+    g: &BPoly<BigRational>,
+    inner_weight: &QPoly,
+) -> Option<polys::Isolator> {
+    let (ft, gt) = (f.transpose(), g.transpose());
+    if ft.deg_u().unwrap_or(0) == 0 || gt.deg_u().unwrap_or(0) == 0 {
+        return None;
+    }
+    let r = without_weight_factors(resultant_in_t(&ft, &gt), inner_weight);
+    (r.degree().unwrap_or(0) > 0).then(|| polys::Isolator::new(&r))
+}
+
+/// `r` without the factors it shares with `weight` (as often as they
+/// divide): roots of a weight are no intersections, they only inflate the
+/// degree.
+fn without_weight_factors(mut r: QPoly, weight: &QPoly) -> QPoly {
+    if r.is_zero() {
+        return r;
+    }
+    loop {
+        let common = polys::gcd(&r, weight);
+        if common.degree().unwrap_or(0) == 0 {
+            return r;
+        }
+        r = r.div_exact(&common).expect("the gcd divides");
+    }
 }
 
 /// `E(s, n(s)/d(s)) · d(s)^{deg_t E}`, a polynomial in `s`.

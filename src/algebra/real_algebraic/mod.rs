@@ -134,11 +134,11 @@ impl RealAlgebraic {
         if p.degree().unwrap_or(0) == 0 || a >= b {
             return Vec::new();
         }
-        let sf = polys::square_free(p);
+        let (sf, seq) = polys::square_free_with_sturm(p);
         let bound = polys::cauchy_bound(&sf);
         let mut roots = Vec::new();
-        for (lo, hi) in polys::isolate(&sf, &-bound.clone(), &bound) {
-            let x = Self::isolated(sf.clone(), lo, hi);
+        for (lo, hi) in polys::isolate(&seq, &-bound.clone(), &bound) {
+            let x = Self::isolated(sf.clone(), seq.clone(), lo, hi);
             let above = Self::rat(a.clone());
             let below = Self::rat(b.clone());
             if x > above && x < below {
@@ -151,8 +151,8 @@ impl RealAlgebraic {
     /// The root of the square-free `p` isolated in `(lo, hi)` (endpoints not
     /// roots), simplified: rational roots and roots of `x^n − c` come back as
     /// radical sums.
-    fn isolated(p: QPoly, lo: BigRational, hi: BigRational) -> Self {
-        let node = RootNum::new(p, lo, hi);
+    fn isolated(p: QPoly, sturm: Vec<polys::SignPoly>, lo: BigRational, hi: BigRational) -> Self {
+        let node = RootNum::with_sturm(p, sturm, lo, hi);
         match rational_root_in(&node) {
             Some(s) => Self::radical(s),
             None => Self::irrational(node),
@@ -173,17 +173,25 @@ impl RealAlgebraic {
     /// minimal polynomial) and enclosures `enclose(prec)` that shrink to it
     /// as `prec` grows.
     fn from_enclosures(p: &QPoly, enclose: impl Fn(u32) -> (BigRational, BigRational)) -> Self {
-        let sf = polys::square_free(p);
-        let seq = polys::sturm_sequence(&sf);
+        Self::isolate_enclosed(&polys::Isolator::new(p), enclose)
+    }
+
+    /// The root of `known.sf` that the enclosures `enclose(prec)` shrink
+    /// to: refined until the enclosure holds exactly one root.
+    fn isolate_enclosed(
+        known: &polys::Isolator,
+        enclose: impl Fn(u32) -> (BigRational, BigRational),
+    ) -> Self {
+        let seq = &known.seq;
         let mut prec = 16;
         loop {
             let (lo, hi) = enclose(prec);
             if lo < hi
-                && !sf.eval(&lo).is_zero()
-                && !sf.eval(&hi).is_zero()
-                && polys::count_roots(&seq, &lo, &hi) == 1
+                && seq[0].sign_at(&lo) != 0
+                && seq[0].sign_at(&hi) != 0
+                && polys::count_roots(seq, &lo, &hi) == 1
             {
-                return Self::isolated(sf, lo, hi);
+                return Self::isolated(known.sf.clone(), seq.clone(), lo, hi);
             }
             if lo == hi {
                 return Self::rat(lo);
@@ -337,8 +345,9 @@ impl RealAlgebraic {
     ///
     /// `R` has degree `deg p̃` and the value among its roots; the root is
     /// isolated by rational interval evaluation of `num` and `den` on
-    /// enclosures of `α`. Cost: `deg p̃ + 1` Sylvester determinants of size
-    /// `deg p̃ + max(deg num, deg den)`.
+    /// enclosures of `α`. Cost: that of `value_polynomial` (`deg p̃ + 1`
+    /// fraction-free Sylvester determinants of size at most `2 deg p̃ − 1`)
+    /// and the isolation.
     ///
     /// # Errors
     ///
@@ -367,7 +376,7 @@ impl RealAlgebraic {
             };
         }
         let p = self.defining_polynomial();
-        let common = p.gcd(den);
+        let common = polys::gcd(&p, den);
         if common.degree().unwrap_or(0) > 0
             && Self::real_roots_in(
                 &common,
@@ -379,24 +388,53 @@ impl RealAlgebraic {
             return Err(pole());
         }
         let p = p.div_exact(&common).expect("the gcd divides");
-        let e = num.degree().unwrap_or(0).max(den.degree().unwrap_or(0));
+        Ok(self.rational_function_root(&Self::value_polynomial(&p, num, den), num, den))
+    }
+
+    /// `R(x) = Res_y(p(y), x·den(y) − num(y))`, prepared for isolation: its
+    /// roots are the values `num(α)/den(α)` at the roots `α` of `p`, which
+    /// must be coprime to `den`. `num` and `den` are first reduced modulo
+    /// `p`; cost `deg p + 1` fraction-free Sylvester determinants of size
+    /// at most `2 deg p − 1`.
+    pub(crate) fn value_polynomial(
+        p: &QPoly,
+        num: &UPoly<BigRational>,
+        den: &UPoly<BigRational>,
+    ) -> polys::Isolator {
+        // num(α), den(α) only depend on num, den modulo p.
+        let reduce = |c: &UPoly<BigRational>| c.div_rem(p).expect("p is non-zero").1;
+        let (num_p, den_p) = (reduce(num), reduce(den));
+        let e = num_p.degree().unwrap_or(0).max(den_p.degree().unwrap_or(0));
         let padded = |c: &UPoly<BigRational>| {
             let mut v = c.coeffs().to_vec();
             v.resize(e + 1, BigRational::zero());
             v
         };
-        let (nums, dens) = (padded(num), padded(den));
+        let (nums, dens) = (padded(&num_p), padded(&den_p));
         let d = p.degree().unwrap_or(0);
         let samples: Vec<BigRational> = (0..=d)
             .map(|x| {
                 let x = BigRational::from_integer(x.into());
                 let h: Vec<BigRational> = nums.iter().zip(&dens).map(|(n, d)| &x * d - n).collect();
-                crate::algebra::sylvester::resultant(p.coeffs(), &h)
+                crate::algebra::sylvester::rational_resultant(p.coeffs(), &h)
             })
             .collect();
-        let r = polys::interpolate(&samples);
-        let wide = polys::cauchy_bound(&r) + BigRational::one();
-        Ok(Self::from_enclosures(&r, |prec| {
+        polys::Isolator::new(&polys::interpolate(&samples))
+    }
+
+    /// `num(α)/den(α)` at `α = self` (irrational, `den(α) ≠ 0`), given a
+    /// prepared polynomial `known` that vanishes there: the root is
+    /// isolated by rational interval evaluation of `num` and `den` on
+    /// enclosures of `α`. Lets a caller that knows such a polynomial (an
+    /// intersection's `t` is a root of `Res_s`) skip the resultant.
+    pub(crate) fn rational_function_root(
+        &self,
+        known: &polys::Isolator,
+        num: &UPoly<BigRational>,
+        den: &UPoly<BigRational>,
+    ) -> Self {
+        let wide = polys::cauchy_bound(&known.sf) + BigRational::one();
+        Self::isolate_enclosed(known, |prec| {
             let (lo, hi) = self.enclosure(prec);
             let (n_lo, n_hi) = polys::eval_on_interval(num, &lo, &hi);
             let (d_lo, d_hi) = polys::eval_on_interval(den, &lo, &hi);
@@ -408,7 +446,7 @@ impl RealAlgebraic {
             } else {
                 (-wide.clone(), wide.clone())
             }
-        }))
+        })
     }
 
     /// The real `n`-th root of `x ≥ 0` (any sign for odd `n`).
@@ -519,7 +557,7 @@ impl RealAlgebraic {
                     && s.add(&RadicalSum::rational(-hi)).signum() < 0
             }
             Repr::Root(t) => {
-                let g = r.poly().gcd(t.poly());
+                let g = polys::gcd(r.poly(), t.poly());
                 let (a, b) = t.interval();
                 let (lo, hi) = (lo.max(a), hi.min(b));
                 g.degree().unwrap_or(0) > 0
@@ -583,6 +621,9 @@ fn decimal_text(n: &BigInt, digits: usize) -> String {
 /// `k`, and an interval narrower than `1/L` holds at most one such point.
 fn rational_root_in(node: &RootNum) -> Option<RadicalSum> {
     let ints = polys::primitive_integer(node.poly());
+    if !polys::may_have_rational_root(&ints) {
+        return None;
+    }
     let lead = ints.last().expect("non-zero").clone();
     let prec = lead.bits() as u32 + 1;
     let (lo, hi) = node.enclosure(prec);

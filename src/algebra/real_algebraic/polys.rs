@@ -45,10 +45,58 @@ pub(crate) fn derivative(p: &QPoly) -> QPoly {
     )
 }
 
-/// The monic square-free part `p / gcd(p, p')` (`p ≠ 0`).
-pub(crate) fn square_free(p: &QPoly) -> QPoly {
-    let g = p.gcd(&derivative(p));
-    p.div_exact(&g).expect("gcd divides").monic()
+/// A square-free polynomial prepared (once) to isolate several of its
+/// roots: the monic square-free part of a non-zero `p` and its Sturm
+/// sequence.
+#[derive(Clone, Debug)]
+pub(crate) struct Isolator {
+    /// The monic square-free part.
+    pub sf: QPoly,
+    /// Its Sturm sequence.
+    pub seq: Vec<SignPoly>,
+}
+
+impl Isolator {
+    /// Prepare `p ≠ 0`.
+    pub(crate) fn new(p: &QPoly) -> Self {
+        let (sf, seq) = square_free_with_sturm(p);
+        Isolator { sf, seq }
+    }
+}
+
+/// The monic square-free part of `p ≠ 0` and its Sturm sequence. The
+/// remainder sequence of `p, p'` ends in `gcd(p, p')`: when that is a
+/// constant, `p` is square-free and the sequence is already its Sturm
+/// sequence.
+pub(crate) fn square_free_with_sturm(p: &QPoly) -> (QPoly, Vec<SignPoly>) {
+    let seq = sturm_sequence(p);
+    let g = seq.last().expect("p is non-zero");
+    if g.degree() == 0 {
+        return (p.monic(), seq);
+    }
+    let sf = p.div_exact(&g.to_qpoly()).expect("gcd divides").monic();
+    let seq = sturm_sequence(&sf);
+    (sf, seq)
+}
+
+/// The monic `gcd(a, b)` over Q (zero when both are zero), by a primitive
+/// remainder sequence over Z: Gauss's lemma makes the primitive part of
+/// the last non-zero remainder the gcd up to a constant, and the integers
+/// stay content-free without a gcd per coefficient operation.
+pub(crate) fn gcd(a: &QPoly, b: &QPoly) -> QPoly {
+    let (mut x, mut y) = (SignPoly::new(a), SignPoly::new(b));
+    if x.0.len() < y.0.len() {
+        std::mem::swap(&mut x, &mut y);
+    }
+    while !y.0.is_empty() {
+        let r = x.negated_remainder(&y);
+        x = y;
+        y = r;
+    }
+    if x.0.is_empty() {
+        return UPoly::zero();
+    }
+    x.to_qpoly().monic()
 }
 
 /// `p` scaled to integer coefficients with gcd 1 and a positive leading
@@ -72,36 +120,174 @@ pub(crate) fn primitive_integer(p: &QPoly) -> Vec<BigInt> {
     ints.into_iter().map(|c| c / &g * &sign).collect()
 }
 
-/// The Sturm sequence of a square-free `p`.
-pub(crate) fn sturm_sequence(p: &QPoly) -> Vec<QPoly> {
-    let mut seq = vec![p.clone(), derivative(p)];
-    while let Some(last) = seq.last().filter(|s| !s.is_zero()) {
-        let prev = &seq[seq.len() - 2];
-        let (_, r) = prev.div_rem(last).expect("non-zero divisor");
-        let next = r.scale(&q(-1));
-        if next.is_zero() {
-            break;
+/// A positive integer multiple of a polynomial over Q, for exact sign
+/// evaluation at rationals without a gcd per operation:
+///
+/// ```text
+/// x = a/b (b > 0):   b^d p(a/b) = Σ c_i a^i b^{d−i}   (homogeneous Horner)
+/// ```
+///
+/// has the sign of `p(a/b)`.
+#[derive(Clone, Debug)]
+pub(crate) struct SignPoly(Vec<BigInt>);
+
+impl SignPoly {
+    /// `p` times the positive lcm of its denominators, divided by the
+    /// positive gcd of the resulting integers.
+    pub(crate) fn new(p: &QPoly) -> Self {
+        let den = p
+            .coeffs()
+            .iter()
+            .fold(BigInt::one(), |acc, c| acc.lcm(c.denom()));
+        let ints: Vec<BigInt> = p
+            .coeffs()
+            .iter()
+            .map(|c| c.numer() * (&den / c.denom()))
+            .collect();
+        let g = ints.iter().fold(BigInt::zero(), |acc, c| acc.gcd(c));
+        if g.is_zero() {
+            return SignPoly(Vec::new());
+        }
+        SignPoly(ints.into_iter().map(|c| c / &g).collect())
+    }
+
+    /// The degree (0 for constants and for zero).
+    pub(crate) fn degree(&self) -> usize {
+        self.0.len().saturating_sub(1)
+    }
+
+    /// The polynomial over Q with these coefficients.
+    pub(crate) fn to_qpoly(&self) -> QPoly {
+        UPoly::new(
+            self.0
+                .iter()
+                .map(|c| BigRational::from_integer(c.clone()))
+                .collect(),
+        )
+    }
+
+    /// A positive multiple of `−(self mod other)`, primitive (empty for a
+    /// zero remainder): `lc^k self = q · other + r` with `lc = lc(other)`
+    /// after `k` reduction steps, so `r` is `−(self mod other)` times
+    /// `−lc^k`, whose sign is corrected.
+    fn negated_remainder(&self, other: &SignPoly) -> SignPoly {
+        let lc = other.0.last().expect("non-zero divisor");
+        let n = other.0.len();
+        let mut r = self.0.clone();
+        let mut steps = 0;
+        while r.len() >= n {
+            let lead = r.pop().expect("non-empty");
+            let shift = r.len() + 1 - n;
+            for c in r.iter_mut() {
+                *c *= lc;
+            }
+            for (k, b) in other.0[..n - 1].iter().enumerate() {
+                r[k + shift] -= &lead * b;
+            }
+            while r.last().is_some_and(Zero::is_zero) {
+                r.pop();
+            }
+            steps += 1;
+        }
+        let flip = !(lc.is_negative() && steps % 2 == 1);
+        let g = r.iter().fold(BigInt::zero(), |acc, c| acc.gcd(c));
+        SignPoly(
+            r.into_iter()
+                .map(|c| if flip { -(c / &g) } else { c / &g })
+                .collect(),
+        )
+    }
+
+    /// The sign of `p(x)`: −1, 0 or 1.
+    pub(crate) fn sign_at(&self, x: &BigRational) -> i32 {
+        let (a, b) = (x.numer(), x.denom());
+        let mut coeffs = self.0.iter().rev();
+        let Some(lead) = coeffs.next() else {
+            return 0;
+        };
+        let mut acc = lead.clone();
+        let mut bpow = BigInt::one();
+        for c in coeffs {
+            bpow *= b;
+            acc = acc * a + c * &bpow;
+        }
+        signum(&acc)
+    }
+}
+
+fn signum(x: &BigInt) -> i32 {
+    if x.is_positive() {
+        1
+    } else if x.is_negative() {
+        -1
+    } else {
+        0
+    }
+}
+
+/// The Sturm sequence `p, p', −rem(p, p'), …` of `p ≠ 0` (for a `p` that is
+/// not square-free it ends in `gcd(p, p')`), each term a positive multiple
+/// of the one over Q: a primitive pseudo-remainder sequence over Z, so no
+/// gcd runs per coefficient operation.
+pub(crate) fn sturm_sequence(p: &QPoly) -> Vec<SignPoly> {
+    let mut seq = vec![SignPoly::new(p)];
+    let dp = derivative(p);
+    if dp.is_zero() {
+        return seq;
+    }
+    seq.push(SignPoly::new(&dp));
+    loop {
+        let next = seq[seq.len() - 2].negated_remainder(&seq[seq.len() - 1]);
+        if next.0.is_empty() {
+            return seq;
         }
         seq.push(next);
     }
-    seq.retain(|s| !s.is_zero());
-    seq
 }
 
-fn sign_changes(seq: &[QPoly], x: &BigRational) -> usize {
-    let signs: Vec<bool> = seq
+fn sign_changes(seq: &[SignPoly], x: &BigRational) -> usize {
+    let signs: Vec<i32> = seq
         .iter()
-        .map(|s| s.eval(x))
-        .filter(|v| !v.is_zero())
-        .map(|v| v.is_positive())
+        .map(|s| s.sign_at(x))
+        .filter(|&v| v != 0)
         .collect();
     signs.windows(2).filter(|w| w[0] != w[1]).count()
 }
 
 /// The number of distinct real roots in the open interval `(a, b)`, `a < b`
 /// not roots themselves (Sturm's theorem).
-pub(crate) fn count_roots(seq: &[QPoly], a: &BigRational, b: &BigRational) -> usize {
+pub(crate) fn count_roots(seq: &[SignPoly], a: &BigRational, b: &BigRational) -> usize {
     sign_changes(seq, a).saturating_sub(sign_changes(seq, b))
+}
+
+/// Can the integer polynomial `c` have a rational root? A root `k/L`
+/// (`L` | leading coefficient) reduces to a root modulo every prime `p ∤ L`;
+/// so `false` as soon as one small prime gives a polynomial without roots
+/// in `F_p` (for an irreducible factor of degree `d ≥ 2` a prime does so
+/// with probability about `1/e`, so a few dozen primes settle almost every
+/// irrational case). `true` means "not excluded", not "has one".
+pub(crate) fn may_have_rational_root(c: &[BigInt]) -> bool {
+    const PRIMES: [u64; 24] = [
+        101, 103, 107, 109, 113, 127, 131, 137, 139, 149, 151, 157, 163, 167, 173, 179, 181, 191,
+        193, 197, 199, 211, 223, 227,
+    ];
+    if c.len() <= 2 {
+        return true;
+    }
+    !PRIMES.iter().any(|&p| {
+        let big = BigInt::from(p);
+        let reduced: Vec<u64> = c
+            .iter()
+            .map(|x| {
+                let r = x.mod_floor(&big);
+                u64::try_from(r).expect("reduced below p")
+            })
+            .collect();
+        if reduced.last() == Some(&0) {
+            return false; // p divides the leading coefficient: no information
+        }
+        (0..p).all(|x| reduced.iter().rev().fold(0, |acc, &k| (acc * x + k) % p) != 0)
+    })
 }
 
 /// Rational bounds `(lo, hi)` on `p(x)` for every `x ∈ [a, b]` (Horner in
@@ -131,22 +317,22 @@ pub(crate) fn cauchy_bound(p: &QPoly) -> BigRational {
 }
 
 /// Isolating intervals `(lo, hi)` (open, endpoints not roots, one root
-/// each, increasing) of the real roots of a square-free `p` in `(a, b)`,
-/// where `a < b` are not roots; by bisection with Sturm counts.
+/// each, increasing) of the real roots in `(a, b)` of the square-free
+/// polynomial whose Sturm sequence is `seq`, where `a < b` are not roots;
+/// by bisection with Sturm counts.
 pub(crate) fn isolate(
-    p: &QPoly,
+    seq: &[SignPoly],
     a: &BigRational,
     b: &BigRational,
 ) -> Vec<(BigRational, BigRational)> {
-    let seq = sturm_sequence(p);
     let mut out = Vec::new();
     let mut stack = vec![(a.clone(), b.clone())];
     while let Some((lo, hi)) = stack.pop() {
-        match count_roots(&seq, &lo, &hi) {
+        match count_roots(seq, &lo, &hi) {
             0 => {}
             1 => out.push((lo, hi)),
             _ => {
-                let mid = split_point(p, &lo, &hi);
+                let mid = split_point(&seq[0], &lo, &hi);
                 stack.push((mid.clone(), hi));
                 stack.push((lo, mid));
             }
@@ -157,9 +343,9 @@ pub(crate) fn isolate(
 }
 
 /// A point of `(lo, hi)` near the middle that is not a root of `p`.
-pub(crate) fn split_point(p: &QPoly, lo: &BigRational, hi: &BigRational) -> BigRational {
+pub(crate) fn split_point(p: &SignPoly, lo: &BigRational, hi: &BigRational) -> BigRational {
     let mut mid = (lo + hi) / q(2);
-    while p.eval(&mid).is_zero() {
+    while p.sign_at(&mid) == 0 {
         mid = (mid + hi) / q(2);
     }
     mid
@@ -182,23 +368,54 @@ pub(crate) fn resultant(a: &QPoly, b: &QPoly) -> BigRational {
     sign * b.lead().expect("non-zero").pow((m - k) as i32) * resultant(b, &r)
 }
 
-/// The polynomial of degree ≤ `values.len() − 1` through `(k, values[k])`,
-/// `k = 0, 1, …` (Newton's divided differences).
+/// The polynomial of degree ≤ `D = values.len() − 1` through
+/// `(k, values[k])`, `k = 0 … D` (Newton's forward differences), in
+/// integers: with `L` the lcm of the denominators and `Δ^k` the forward
+/// differences of `L·values`,
+///
+/// ```text
+/// D!·L·P(x) = Σ_k Δ^k · (D!/k!) · x(x − 1)…(x − k + 1)      (Horner in the Newton basis)
+/// ```
+///
+/// so the only divisions are the final `D + 1`.
 pub(crate) fn interpolate(values: &[BigRational]) -> QPoly {
-    let n = values.len();
-    let mut dd = values.to_vec();
-    for level in 1..n {
-        for k in (level..n).rev() {
-            dd[k] = (&dd[k] - &dd[k - 1]) / q(level as i64);
+    let Some(deg) = values.len().checked_sub(1) else {
+        return UPoly::zero();
+    };
+    let l = values
+        .iter()
+        .fold(BigInt::one(), |acc, v| acc.lcm(v.denom()));
+    let mut diff: Vec<BigInt> = values
+        .iter()
+        .map(|v| v.numer() * (&l / v.denom()))
+        .collect();
+    for level in 1..=deg {
+        for k in (level..=deg).rev() {
+            diff[k] = &diff[k] - &diff[k - 1];
         }
     }
-    // Horner in the Newton basis: c_0 + (x − 0)(c_1 + (x − 1)(c_2 + …)).
-    let mut acc = UPoly::constant(dd[n - 1].clone());
-    for k in (0..n - 1).rev() {
-        let factor = UPoly::new(vec![q(-(k as i64)), q(1)]);
-        acc = acc.mul(&factor).add(&UPoly::constant(dd[k].clone()));
+    // weight[k] = D!/k!
+    let mut weight = vec![BigInt::one(); deg + 1];
+    for k in (0..deg).rev() {
+        weight[k] = &weight[k + 1] * BigInt::from(k + 1);
     }
-    acc
+    let mut acc = vec![&diff[deg] * &weight[deg]];
+    for k in (0..deg).rev() {
+        // acc ← acc · (x − k) + Δ^k · D!/k!
+        let mut next = vec![BigInt::zero(); acc.len() + 1];
+        for (i, a) in acc.iter().enumerate() {
+            next[i + 1] += a;
+            next[i] -= a * BigInt::from(k);
+        }
+        next[0] += &diff[k] * &weight[k];
+        acc = next;
+    }
+    let scale = l * &weight[0];
+    UPoly::new(
+        acc.into_iter()
+            .map(|c| BigRational::new(c, scale.clone()))
+            .collect(),
+    )
 }
 
 /// `Res_z(p(z), g_t(z))` as a polynomial in `t` of degree ≤ `deg`, where
@@ -316,7 +533,7 @@ mod tests {
             .mul(&poly(&[3, 1]))
             .mul(&poly(&[-2, 0, 1]));
         let b = cauchy_bound(&p);
-        let roots = isolate(&p, &-b.clone(), &b);
+        let roots = isolate(&sturm_sequence(&p), &-b.clone(), &b);
         assert_eq!(roots.len(), 5);
     }
 }

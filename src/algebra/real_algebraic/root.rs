@@ -7,7 +7,7 @@
 //! is a root, `poly` has exactly one root in `(lo, hi)`, and that root is
 //! irrational (rational values are kept in the radical form).
 
-use super::polys::{count_roots, split_point, sturm_sequence, QPoly};
+use super::polys::{count_roots, split_point, sturm_sequence, QPoly, SignPoly};
 use num_rational::BigRational;
 use num_traits::Signed;
 use std::sync::Mutex;
@@ -16,7 +16,8 @@ use std::sync::Mutex;
 #[derive(Debug)]
 pub(crate) struct RootNum {
     poly: QPoly,
-    sturm: Vec<QPoly>,
+    /// The Sturm sequence; its first term is `poly` as a [`SignPoly`].
+    sturm: Vec<SignPoly>,
     interval: Mutex<(BigRational, BigRational)>,
 }
 
@@ -24,6 +25,16 @@ impl RootNum {
     /// The root of `poly` (monic, square-free) isolated in `(lo, hi)`.
     pub(crate) fn new(poly: QPoly, lo: BigRational, hi: BigRational) -> Self {
         let sturm = sturm_sequence(&poly);
+        Self::with_sturm(poly, sturm, lo, hi)
+    }
+
+    /// As [`RootNum::new`] with the Sturm sequence of `poly` already known.
+    pub(crate) fn with_sturm(
+        poly: QPoly,
+        sturm: Vec<SignPoly>,
+        lo: BigRational,
+        hi: BigRational,
+    ) -> Self {
         RootNum {
             poly,
             sturm,
@@ -45,10 +56,9 @@ impl RootNum {
     fn bisect(&self) {
         let mut guard = self.interval.lock().expect("not poisoned");
         let (lo, hi) = guard.clone();
-        let mid = split_point(&self.poly, &lo, &hi);
-        let plo = self.poly.eval(&lo);
-        let pmid = self.poly.eval(&mid);
-        *guard = if plo.is_positive() == pmid.is_positive() {
+        let p = &self.sturm[0];
+        let mid = split_point(p, &lo, &hi);
+        *guard = if p.sign_at(&lo) == p.sign_at(&mid) {
             (mid, hi)
         } else {
             (lo, mid)

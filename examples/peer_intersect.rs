@@ -1,0 +1,87 @@
+//! Our side of the intersection peer comparison `benches/peers/intersect`
+//! (issue 18): reads the curve pairs that `benches/peers/peer_intersect.py`
+//! generated, intersects each pair exactly, through the filter and in
+//! `f64`, and prints one JSON object per pair: the exact answers as `f64`
+//! pairs `(s, t)` (for the agreement check against the peer) and the best
+//! time of each path over `--repeat` runs, in microseconds.
+//!
+//! ```text
+//! cargo run --release --example peer_intersect -- PAIRS.json [--repeat 5]
+//! ```
+//!
+//! Each pair is `{"a": curve, "b": curve}` in our JSON format.
+
+use exact_bezier::intersect::{intersect, intersect_approx, intersect_filtered};
+use exact_bezier::io::read_patches;
+use exact_bezier::{Ordered, Patch, RationalCurve};
+use num_rational::BigRational;
+use serde_json::{json, Value};
+use std::time::Instant;
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let path = args
+        .get(1)
+        .expect("usage: peer_intersect PAIRS.json [--repeat N]");
+    let repeat = match args.iter().position(|a| a == "--repeat") {
+        Some(i) => args[i + 1].parse().expect("--repeat takes a count"),
+        None => 5,
+    };
+    let text = std::fs::read_to_string(path).expect("readable pairs file");
+    let pairs: Vec<Value> = serde_json::from_str(&text).expect("a JSON array of pairs");
+    let out: Vec<Value> = pairs
+        .iter()
+        .map(|p| run_pair(&curve(&p["a"]), &curve(&p["b"]), repeat))
+        .collect();
+    println!("{}", Value::Array(out));
+}
+
+fn curve(v: &Value) -> RationalCurve<BigRational> {
+    match read_patches(&v.to_string())
+        .expect("a valid curve")
+        .remove(0)
+    {
+        Patch::Curve(c) => c,
+        _ => panic!("the pairs hold curves"),
+    }
+}
+
+/// Microseconds of the best of `repeat` runs of `f`.
+fn best_us(repeat: usize, mut f: impl FnMut()) -> f64 {
+    (0..repeat.max(1))
+        .map(|_| {
+            let start = Instant::now();
+            f();
+            start.elapsed().as_secs_f64() * 1e6
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+fn run_pair(
+    a: &RationalCurve<BigRational>,
+    b: &RationalCurve<BigRational>,
+    repeat: usize,
+) -> Value {
+    let x = match intersect(a, b) {
+        Ok(x) => x,
+        Err(e) => return json!({"error": e.to_string()}),
+    };
+    let (a64, b64) = (a.map(Ordered::to_f64), b.map(Ordered::to_f64));
+    let mut decided_by = String::new();
+    let t_filtered = best_us(repeat, || {
+        let (_, by) = intersect_filtered(a, b).expect("the filtered path runs");
+        decided_by = format!("{by:?}").to_lowercase();
+    });
+    let t_exact = best_us(repeat, || {
+        intersect(a, b).expect("the exact path runs");
+    });
+    let t_f64 = best_us(repeat, || {
+        intersect_approx(&a64, &b64, 1e-12).expect("the f64 path runs");
+    });
+    json!({
+        "points": x.points.iter().map(|p| [p.s.to_f64(), p.t.to_f64()]).collect::<Vec<_>>(),
+        "overlaps": x.overlaps.len(),
+        "decided_by": decided_by,
+        "us": {"exact": t_exact, "filtered": t_filtered, "f64": t_f64},
+    })
+}
