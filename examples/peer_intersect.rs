@@ -11,7 +11,10 @@
 //!
 //! Each pair is `{"a": curve, "b": curve}` in our JSON format.
 
-use exact_bezier::intersect::{intersect, intersect_approx, intersect_filtered};
+use exact_bezier::algebra::{Interval, RealAlgebraic};
+use exact_bezier::intersect::{
+    intersect, intersect_approx, intersect_filtered, Filtered, Intersections,
+};
 use exact_bezier::io::read_patches;
 use exact_bezier::{Ordered, Patch, RationalCurve};
 use num_rational::BigRational;
@@ -57,6 +60,31 @@ fn best_us(repeat: usize, mut f: impl FnMut()) -> f64 {
         .fold(f64::INFINITY, f64::min)
 }
 
+/// Do the certified boxes hold the exact crossings, one each (or is the
+/// filtered answer the exact one)?
+fn filtered_agrees(exact: &Intersections, filtered: &Filtered) -> bool {
+    let Filtered::Certified(boxes) = filtered else {
+        return true;
+    };
+    let inside = |x: &RealAlgebraic, i: &Interval| {
+        let (lo, hi) = x.enclosure(64);
+        let (Some(a), Some(b)) = (BigRational::from_float(i.lo), BigRational::from_float(i.hi))
+        else {
+            return false;
+        };
+        a <= lo && hi <= b
+    };
+    exact.overlaps.is_empty()
+        && boxes.len() == exact.points.len()
+        && exact.points.iter().all(|p| {
+            boxes
+                .iter()
+                .filter(|k| inside(&p.s, &k.s) && inside(&p.t, &k.t))
+                .count()
+                == 1
+        })
+}
+
 fn run_pair(
     a: &RationalCurve<BigRational>,
     b: &RationalCurve<BigRational>,
@@ -67,10 +95,10 @@ fn run_pair(
         Err(e) => return json!({"error": e.to_string()}),
     };
     let (a64, b64) = (a.map(Ordered::to_f64), b.map(Ordered::to_f64));
-    let mut decided_by = String::new();
+    let filtered = intersect_filtered(a, b).expect("the filtered path runs");
+    let decided_by = format!("{:?}", filtered.decided_by()).to_lowercase();
     let t_filtered = best_us(repeat, || {
-        let (_, by) = intersect_filtered(a, b).expect("the filtered path runs");
-        decided_by = format!("{by:?}").to_lowercase();
+        intersect_filtered(a, b).expect("the filtered path runs");
     });
     let t_exact = best_us(repeat, || {
         intersect(a, b).expect("the exact path runs");
@@ -82,6 +110,7 @@ fn run_pair(
         "points": x.points.iter().map(|p| [p.s.to_f64(), p.t.to_f64()]).collect::<Vec<_>>(),
         "overlaps": x.overlaps.len(),
         "decided_by": decided_by,
+        "filtered_agrees": filtered_agrees(&x, &filtered),
         "us": {"exact": t_exact, "filtered": t_filtered, "f64": t_f64},
     })
 }

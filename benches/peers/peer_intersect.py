@@ -11,9 +11,12 @@ Control points are decimals k/100 in [0, 1] (exact as text), so most pairs
 cross. Agreement: every (s, t) the peer reports is within 1e-9 of one of
 ours and the counts match, on the pairs where the peer succeeds (it raises
 on some, e.g. tangencies and overlaps; those are counted, not compared).
-Speed: the best of `--repeat` runs per pair, for the cubic pairs, bezier
-`Curve.intersect` against our filtered path (exact answers), our exact path
-and our f64 path; the last lines print the medians and their ratios.
+Our filtered path is checked against our exact path on every pair (each
+certified box holds exactly one exact crossing). Speed: the best of
+`--repeat` runs per pair, for the cubic pairs, bezier `Curve.intersect`
+against our filtered path (certified boxes where interval arithmetic
+decides, exact answers elsewhere), our exact path and our f64 path; the
+last lines print the medians and their ratios.
 """
 
 import argparse
@@ -74,11 +77,14 @@ def main():
     ours = json.loads(subprocess.run([args.ours, f.name, "--repeat", str(args.repeat)],
                                      check=True, capture_output=True, text=True).stdout)
     agreed, disagreed, peer_failed, ours_failed = 0, [], 0, 0
+    decided = {"intervals": 0, "exact": 0}
+    filtered_disagreed = [k for k, mine in enumerate(ours) if not mine.get("filtered_agrees", True)]
     cubic = {"peer": [], "filtered": [], "exact": [], "f64": []}
     for k, (pair, mine) in enumerate(zip(pairs, ours)):
         if "error" in mine:
             ours_failed += 1
             continue
+        decided[mine["decided_by"]] += 1
         try:
             peer, peer_us = peer_intersect(pair, args.repeat)
         except Exception:
@@ -93,7 +99,9 @@ def main():
             for path in ("filtered", "exact", "f64"):
                 cubic[path].append(mine["us"][path])
     print(json.dumps({"pairs": len(pairs), "agreed": agreed, "disagreed": len(disagreed),
-                      "peer_raised": peer_failed, "ours_raised": ours_failed}))
+                      "peer_raised": peer_failed, "ours_raised": ours_failed,
+                      "filtered_decided_by": decided,
+                      "filtered_disagrees_with_exact": filtered_disagreed}))
     for d in disagreed:
         print(json.dumps(d))
     med = {k: statistics.median(v) for k, v in cubic.items() if v}

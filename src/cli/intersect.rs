@@ -5,18 +5,22 @@
 //! "multiplicity", "contact", "contact_order"?}], "overlaps": [{"s": [s0, s1],
 //! "t": [t0, t1], "map", "mobius": [a, b, c, d]}]}` with parameters and
 //! points in the algebraic number grammar (docs/FORMAT.md), `approx` their
-//! `f64` values; `--filtered` adds `"decided_by"`. With `--scalar f64`:
+//! `f64` values. `--filtered`: where `f64` interval arithmetic decides,
+//! `{"crossings": [{"s": [lo, hi], "t": [lo, hi], "point": [[lo, hi], …]}],
+//! "decided_by": "intervals"}` (certified boxes, one transversal crossing
+//! each, no other common point); otherwise the exact output with
+//! `"decided_by": "exact"`. With `--scalar f64`:
 //! `{"intersections": [{"s", "t", "point", "distance"}], "overlaps":
 //! [{"s": [s0, s1], "t": [t0, t1]}], "tolerance"}` as numbers.
 
 use super::deriv::curve_of;
 use super::{load_one, patch_f64, ScalarKind};
-use crate::algebra::{Ordered, RealAlgebraic};
+use crate::algebra::{Interval, Ordered, RealAlgebraic};
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::intersect::{
-    intersect, intersect_approx, intersect_filtered, self_intersect, ApproxIntersection, Contact,
-    IntersectionPoint, Intersections, Overlap,
+    intersect, intersect_approx, intersect_filtered, self_intersect, ApproxIntersection,
+    CertifiedCrossing, Contact, Filtered, IntersectionPoint, Intersections, Overlap,
 };
 use crate::io::{JsonScalar, Patch};
 use crate::limits::{self, Size};
@@ -36,8 +40,9 @@ pub struct Args {
     /// Tolerance for --scalar f64 (absolute, model units); default 1e-9.
     #[arg(long)]
     tol: Option<f64>,
-    /// Exact answer, decided by f64 interval boxes when they separate the
-    /// curves; adds "decided_by".
+    /// Decide in f64 interval arithmetic where it can (certified boxes of
+    /// transversal crossings, or separation), exactly otherwise; adds
+    /// "decided_by".
     #[arg(long)]
     filtered: bool,
 }
@@ -89,12 +94,14 @@ pub fn run(a: &Args) -> Result<Value, Error> {
                 )),
                 (None, false) => Ok(to_json(&self_intersect(&ca)?)),
                 (Some(b), false) => Ok(to_json(&intersect(&ca, b)?)),
-                (Some(b), true) => {
-                    let (x, by) = intersect_filtered(&ca, b)?;
-                    let mut v = to_json(&x);
-                    v["decided_by"] = format!("{by:?}").to_lowercase().into();
-                    Ok(v)
-                }
+                (Some(b), true) => Ok(match intersect_filtered(&ca, b)? {
+                    Filtered::Exact(x) => {
+                        let mut v = to_json(&x);
+                        v["decided_by"] = "exact".into();
+                        v
+                    }
+                    Filtered::Certified(found) => certified_json(&found),
+                }),
             }
         }
     }
@@ -173,6 +180,20 @@ fn overlap_json(o: &Overlap) -> Value {
         "t": [o.t.0.to_json(), o.t.1.to_json()],
         "map": format!("s = (({a})*t + ({b}))/(({c})*t + ({d}))"),
         "mobius": [a.to_json(), b.to_json(), c.to_json(), d.to_json()],
+    })
+}
+
+/// `{"crossings": [{"s": [lo, hi], "t": [lo, hi], "point": [[lo, hi], …]}],
+/// "decided_by": "intervals"}`: interval bounds as JSON numbers.
+fn certified_json(found: &[CertifiedCrossing]) -> Value {
+    let pair = |i: &Interval| json!([i.lo, i.hi]);
+    json!({
+        "crossings": found.iter().map(|k| json!({
+            "s": pair(&k.s),
+            "t": pair(&k.t),
+            "point": k.point.iter().map(pair).collect::<Vec<_>>(),
+        })).collect::<Vec<_>>(),
+        "decided_by": "intervals",
     })
 }
 

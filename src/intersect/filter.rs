@@ -4,13 +4,19 @@
 //! Filter: the control polygons are subdivided at `1/2` in interval
 //! arithmetic with outward rounding ([`Interval`]); by the convex hull
 //! property (positive weights), each piece lies in the box of its
-//! projected control points. If at some depth every pair of pieces has
-//! disjoint boxes, the curves do not meet and the exact path is skipped.
+//! projected control points. Pairs of pieces with disjoint boxes are
+//! dropped; in the plane, the Krawczyk test (module `certify`) certifies a
+//! unique transversal crossing in a pair's parameter box or excludes one.
+//! When every pair is decided by some depth, the answer is certified
+//! without the exact path.
 //!
 //! Approximate: the same subdivision in plain `f64` down to pieces whose
 //! boxes are below the tolerance, Newton steps on `A(s) − B(t)` from each
 //! surviving pair, and clustering in `(s, t)`.
 
+use super::certify::{
+    contract, jacobian, krawczyk, point_and_velocity, velocity_hull, Krawczyk, PlanarBoxes,
+};
 use super::{intersect, Intersections};
 use crate::algebra::Interval;
 use crate::curve::RationalCurve;
@@ -21,14 +27,48 @@ use num_rational::BigRational;
 /// Which stage decided an [`intersect_filtered`] call.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum DecidedBy {
-    /// Interval boxes of subdivided control polygons separated the curves.
+    /// Interval arithmetic: hulls of subdivided control polygons and the
+    /// Krawczyk test.
     Intervals,
     /// The exact elimination.
     Exact,
 }
 
-/// Depth of the interval subdivision: `2⁸` pieces per curve at most.
-const FILTER_DEPTH: usize = 8;
+/// A transversal crossing of two planar curves certified by interval
+/// arithmetic: exactly one intersection has its parameters in `s × t`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CertifiedCrossing {
+    /// An interval holding the parameter on the first curve.
+    pub s: Interval,
+    /// An interval holding the parameter on the second curve.
+    pub t: Interval,
+    /// A box holding the common point.
+    pub point: Vec<Interval>,
+}
+
+/// The answer of [`intersect_filtered`].
+#[derive(Clone, Debug)]
+pub enum Filtered {
+    /// Decided by interval arithmetic: the curves meet exactly once in each
+    /// box, transversally, and nowhere else (no tangency, no overlap);
+    /// empty when they are separated.
+    Certified(Vec<CertifiedCrossing>),
+    /// Decided by the exact elimination ([`intersect`]).
+    Exact(Intersections),
+}
+
+impl Filtered {
+    /// Which stage decided.
+    pub fn decided_by(&self) -> DecidedBy {
+        match self {
+            Filtered::Certified(_) => DecidedBy::Intervals,
+            Filtered::Exact(_) => DecidedBy::Exact,
+        }
+    }
+}
+
+/// Depth of the interval subdivision: parameter boxes down to `2⁻¹⁶`.
+const FILTER_DEPTH: usize = 16;
 /// The most box pairs kept at one depth before the filter gives up.
 const FILTER_PAIRS: usize = 64;
 
@@ -91,49 +131,158 @@ fn disjoint(a: &[Interval], b: &[Interval]) -> bool {
     a.iter().zip(b).any(|(x, y)| x.disjoint(y))
 }
 
-/// `true` when interval boxes prove that the curves do not meet.
-fn separated(a: &RationalCurve<BigRational>, b: &RationalCurve<BigRational>) -> bool {
-    let mut pairs = vec![(boxes_of(a), boxes_of(b))];
+/// A subdivided piece: its control polygon of boxes and its exact
+/// (dyadic) parameter range.
+struct BoxPiece {
+    ctrl: Boxes,
+    range: Interval,
+}
+
+impl BoxPiece {
+    fn halves(&self) -> [BoxPiece; 2] {
+        let (l, r) = halve_boxes(&self.ctrl);
+        let m = 0.5 * (self.range.lo + self.range.hi);
+        [
+            BoxPiece {
+                ctrl: l,
+                range: Interval {
+                    lo: self.range.lo,
+                    hi: m,
+                },
+            },
+            BoxPiece {
+                ctrl: r,
+                range: Interval {
+                    lo: m,
+                    hi: self.range.hi,
+                },
+            },
+        ]
+    }
+}
+
+/// The control boxes of a planar curve as `[x, y, w]`.
+fn planar(b: &Boxes) -> Vec<[Interval; 3]> {
+    b.iter().map(|h| [h[0], h[1], h[2]]).collect()
+}
+
+/// The certified crossings when interval arithmetic decides every box
+/// pair of a subdivision (separated hulls, or a Krawczyk verdict in the
+/// plane), `None` when some pair stays undecided.
+fn decide(
+    a: &RationalCurve<BigRational>,
+    b: &RationalCurve<BigRational>,
+) -> Option<Vec<CertifiedCrossing>> {
+    let (ba, bb) = (boxes_of(a), boxes_of(b));
+    let curves = (a.dim() == 2).then(|| (planar(&ba), planar(&bb)));
+    let unit = Interval { lo: 0.0, hi: 1.0 };
+    let mut pairs = vec![(
+        BoxPiece {
+            ctrl: ba,
+            range: unit,
+        },
+        BoxPiece {
+            ctrl: bb,
+            range: unit,
+        },
+    )];
+    let mut found = Vec::new();
     for _ in 0..FILTER_DEPTH {
         let mut next = Vec::new();
         for (pa, pb) in &pairs {
-            let (Some(ba), Some(bb)) = (bounding_box(pa), bounding_box(pb)) else {
-                return false;
-            };
-            if disjoint(&ba, &bb) {
+            let (ha, hb) = (bounding_box(&pa.ctrl)?, bounding_box(&pb.ctrl)?);
+            if disjoint(&ha, &hb) {
                 continue;
             }
-            let (a0, a1) = halve_boxes(pa);
-            let (b0, b1) = halve_boxes(pb);
-            for x in [&a0, &a1] {
-                for y in [&b0, &b1] {
-                    next.push((x.clone(), y.clone()));
+            if let Some((ca, cb)) = &curves {
+                match certify_pair(ca, cb, pa, pb) {
+                    Krawczyk::Unique(_) => {
+                        found.push(crossing(ca, cb, contract(ca, cb, [pa.range, pb.range]))?);
+                        continue;
+                    }
+                    Krawczyk::None => continue,
+                    Krawczyk::Unknown => {}
+                }
+            }
+            for x in pa.halves() {
+                for y in pb.halves() {
+                    next.push((
+                        BoxPiece {
+                            ctrl: x.ctrl.clone(),
+                            range: x.range,
+                        },
+                        y,
+                    ));
                 }
             }
         }
         if next.is_empty() {
-            return true;
+            return Some(found);
         }
         if next.len() > FILTER_PAIRS {
-            return false;
+            return None;
         }
         pairs = next;
     }
-    false
+    None
 }
 
-/// [`intersect`], decided by interval boxes when they separate the curves
-/// (only "no intersection" can be certified that way), by the exact path
-/// otherwise; the same answer either way.
+/// The Krawczyk test on the parameter box of two pieces, with the
+/// Jacobian bounded by the pieces' Bernstein hulls.
+fn certify_pair(a: &PlanarBoxes, b: &PlanarBoxes, pa: &BoxPiece, pb: &BoxPiece) -> Krawczyk {
+    let width = |p: &BoxPiece| p.range.hi - p.range.lo;
+    match (
+        velocity_hull(&planar(&pa.ctrl), width(pa)),
+        velocity_hull(&planar(&pb.ctrl), width(pb)),
+    ) {
+        (Some(va), Some(vb)) => krawczyk(a, b, [pa.range, pb.range], jacobian(va, vb)),
+        _ => Krawczyk::Unknown,
+    }
+}
+
+/// The crossing in the certified box `x`, with the point box `A(S) ∩ B(T)`.
+fn crossing(a: &PlanarBoxes, b: &PlanarBoxes, x: [Interval; 2]) -> Option<CertifiedCrossing> {
+    let (pa, _) = point_and_velocity(a, x[0])?;
+    let (pb, _) = point_and_velocity(b, x[1])?;
+    Some(CertifiedCrossing {
+        s: x[0],
+        t: x[1],
+        point: pa
+            .iter()
+            .zip(&pb)
+            .map(|(u, v)| Interval {
+                lo: u.lo.max(v.lo),
+                hi: u.hi.min(v.hi),
+            })
+            .collect(),
+    })
+}
+
+/// The intersections of two curves, decided by `f64` interval arithmetic
+/// where it can (curves separated by hulls of subdivided control
+/// polygons; in the plane, transversal crossings certified by the
+/// Krawczyk test, see module `certify`), by the exact elimination
+/// otherwise (tangencies, overlaps, intersections at curve ends or on a
+/// dyadic split line, curves in 3D that come close). The answer says which
+/// ([`Filtered::decided_by`]); [`intersect`] gives the exact parameters of
+/// certified crossings when they are wanted.
 ///
 /// ```
-/// use exact_bezier::{intersect::{intersect_filtered, DecidedBy}, RationalCurve, ratio};
+/// use exact_bezier::{intersect::{intersect_filtered, Filtered}, RationalCurve, ratio};
 /// use num_rational::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let a = RationalCurve::polynomial(vec![p(0, 0), p(1, 2), p(2, 0)]).unwrap();
 /// let b = RationalCurve::polynomial(vec![p(0, 3), p(1, 5), p(2, 3)]).unwrap();
-/// let (x, by) = intersect_filtered(&a, &b).unwrap();
-/// assert!(x.points.is_empty() && by == DecidedBy::Intervals);
+/// let Filtered::Certified(x) = intersect_filtered(&a, &b).unwrap() else { panic!() };
+/// assert!(x.is_empty()); // separated
+/// // The line y = 1/2 crosses the arch y = 2x(2 − x)/2 twice.
+/// let c = RationalCurve::polynomial(vec![
+///     vec![ratio(-1, 1), ratio(1, 2)],
+///     vec![ratio(3, 1), ratio(1, 2)],
+/// ]).unwrap();
+/// let Filtered::Certified(x) = intersect_filtered(&a, &c).unwrap() else { panic!() };
+/// assert_eq!(x.len(), 2);
+/// assert!(x.iter().all(|k| k.point[1].lo <= 0.5 && 0.5 <= k.point[1].hi));
 /// ```
 ///
 /// # Errors
@@ -142,15 +291,15 @@ fn separated(a: &RationalCurve<BigRational>, b: &RationalCurve<BigRational>) -> 
 pub fn intersect_filtered(
     a: &RationalCurve<BigRational>,
     b: &RationalCurve<BigRational>,
-) -> Result<(Intersections, DecidedBy), Error> {
-    if a.dim() == b.dim() {
+) -> Result<Filtered, Error> {
+    if a.dim() == b.dim() && a.dim() >= 2 {
         a.check_positive_weights()?;
         b.check_positive_weights()?;
-        if separated(a, b) {
-            return Ok((Intersections::default(), DecidedBy::Intervals));
+        if let Some(found) = decide(a, b) {
+            return Ok(Filtered::Certified(found));
         }
     }
-    intersect(a, b).map(|x| (x, DecidedBy::Exact))
+    intersect(a, b).map(Filtered::Exact)
 }
 
 /// An approximate intersection from [`intersect_approx`].

@@ -30,10 +30,11 @@
 //! Common factors of the homogeneous components and degree elevation do not
 //! matter: both disappear in the power basis after dividing by the gcd.
 //!
-//! A filtered path ([`intersect_filtered`]) first tries to separate the
-//! curves by `f64` interval boxes of subdivided control polygons (rigorous:
-//! outward rounding, convex hull property); [`intersect_approx`] is the
-//! `f64` path with a tolerance the caller gives.
+//! A filtered path ([`intersect_filtered`]) first tries to decide in `f64`
+//! interval arithmetic (rigorous: outward rounding, convex hull property,
+//! the Krawczyk test for transversal crossings in the plane) and falls back
+//! to the exact path where that fails; [`intersect_approx`] is the `f64`
+//! path with a tolerance the caller gives.
 //!
 //! Reference: Sederberg & Parry, *Comparison of three curve intersection
 //! algorithms*, Computer-Aided Design 18 (1986) 58–63 (implicitization and
@@ -42,11 +43,15 @@
 //! Sederberg & Nishita, *Curve intersection using Bézier clipping*, CAD 22
 //! (1990) (convex hull culling).
 
+mod certify;
 mod filter;
 mod overlap;
 mod system;
 
-pub use filter::{intersect_approx, intersect_filtered, ApproxIntersection, DecidedBy};
+pub use filter::{
+    intersect_approx, intersect_filtered, ApproxIntersection, CertifiedCrossing, DecidedBy,
+    Filtered,
+};
 pub use overlap::Mobius;
 
 use crate::algebra::{BPoly, RealAlgebraic, Scalar};

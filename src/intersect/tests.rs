@@ -230,10 +230,65 @@ fn curves_in_3d_that_miss_by_1e_minus_30_do_not_meet() {
     let tiny = Q::new(1.into(), num_bigint::BigInt::from(10).pow(30));
     let (a, b, _) = crossing_3d(tiny);
     assert!(intersect(&a, &b).unwrap().points.is_empty());
-    let (x, by) = intersect_filtered(&a, &b).unwrap();
-    assert!(x.points.is_empty());
+    let x = intersect_filtered(&a, &b).unwrap();
     // f64 boxes cannot separate 10⁻³⁰: the exact path decided.
-    assert_eq!(by, DecidedBy::Exact);
+    assert_eq!(x.decided_by(), DecidedBy::Exact);
+    let Filtered::Exact(x) = x else {
+        unreachable!()
+    };
+    assert!(x.points.is_empty());
+}
+
+/// Certified crossings hold the exact intersections, one each, and the
+/// filter leaves a tangency and an overlap to the exact path.
+#[test]
+fn certified_crossings_hold_the_exact_ones() {
+    let a = rational_cubic();
+    let b = curve(&[&[q(0, 1), q(3, 4)], &[q(3, 1), q(1, 4)]], &[1, 1]);
+    let exact = intersect(&a, &b).unwrap();
+    assert!(!exact.points.is_empty());
+    let Filtered::Certified(boxes) = intersect_filtered(&a, &b).unwrap() else {
+        panic!("two transversal crossings in the plane are certified");
+    };
+    assert_eq!(boxes.len(), exact.points.len());
+    let inside = |x: &RealAlgebraic, i: &crate::algebra::Interval| {
+        let (lo, hi) = x.enclosure(64);
+        Q::from_float(i.lo).unwrap() <= lo && hi <= Q::from_float(i.hi).unwrap()
+    };
+    for p in &exact.points {
+        let holding: Vec<_> = boxes
+            .iter()
+            .filter(|k| inside(&p.s, &k.s) && inside(&p.t, &k.t))
+            .collect();
+        assert_eq!(holding.len(), 1, "one box per exact crossing");
+        assert!(holding[0].s.hi - holding[0].s.lo < 1e-12);
+    }
+    // A tangency (two parabolas touching at a rational point) is exact.
+    let f = curve(
+        &[
+            &[q(0, 1), q(0, 1)],
+            &[q(1, 2), q(0, 1)],
+            &[q(1, 1), q(1, 1)],
+        ],
+        &[1, 1, 1],
+    );
+    let g = curve(
+        &[
+            &[q(0, 1), q(-1, 2)],
+            &[q(1, 2), q(1, 2)],
+            &[q(1, 1), q(1, 2)],
+        ],
+        &[1, 1, 1],
+    );
+    assert_eq!(
+        intersect_filtered(&f, &g).unwrap().decided_by(),
+        DecidedBy::Exact
+    );
+    // A curve against itself (an overlap).
+    assert_eq!(
+        intersect_filtered(&a, &a).unwrap().decided_by(),
+        DecidedBy::Exact
+    );
 }
 
 #[test]

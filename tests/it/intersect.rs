@@ -57,11 +57,35 @@ fn rational_cubic_meets_a_line_at_radicals() {
 }
 
 #[test]
-fn filtered_answer_is_the_exact_one_and_says_who_decided() {
+fn filtered_answer_certifies_crossings_or_is_the_exact_one() {
     let (_, exact) = cli_json(&["intersect", CURVE, LINE]);
-    let (code, mut filtered) = cli_json(&["intersect", CURVE, LINE, "--filtered"]);
+    let (code, filtered) = cli_json(&["intersect", CURVE, LINE, "--filtered"]);
     assert_eq!(code, 0);
-    // The curves cross, so the boxes cannot separate them.
+    // Two transversal crossings in the plane: interval arithmetic decides,
+    // each box holding one exact crossing (s = 1/2 ∓ √3/6, t = 1/2 ∓ 11√3/48).
+    assert_eq!(filtered["decided_by"], "intervals");
+    let boxes = filtered["crossings"].as_array().unwrap();
+    let r3 = 3f64.sqrt();
+    let want = [
+        (0.5 - r3 / 6.0, 0.5 - 11.0 * r3 / 48.0),
+        (0.5 + r3 / 6.0, 0.5 + 11.0 * r3 / 48.0),
+    ];
+    assert_eq!(boxes.len(), want.len());
+    assert_eq!(exact["intersections"].as_array().unwrap().len(), want.len());
+    let holds = |b: &Value, x: f64| {
+        let (lo, hi) = (b[0].as_f64().unwrap(), b[1].as_f64().unwrap());
+        lo <= x + 1e-15 && x - 1e-15 <= hi && hi - lo < 1e-12
+    };
+    for (s, t) in want {
+        let n = boxes
+            .iter()
+            .filter(|b| holds(&b["s"], s) && holds(&b["t"], t))
+            .count();
+        assert_eq!(n, 1, "one certified box holds ({s}, {t})");
+    }
+    // An overlap is left to the exact path: the exact answer, plus who decided.
+    let (_, exact) = cli_json(&["intersect", CURVE, CURVE]);
+    let (_, mut filtered) = cli_json(&["intersect", CURVE, CURVE, "--filtered"]);
     assert_eq!(filtered["decided_by"], "exact");
     filtered.as_object_mut().unwrap().remove("decided_by");
     assert_eq!(filtered, exact);

@@ -174,12 +174,17 @@ fn command_outputs_match_the_schema() {
     );
     for args in [
         vec!["intersect", curve, line],
-        vec!["intersect", curve, line, "--filtered"],
+        vec!["intersect", curve, curve, "--filtered"],
         vec!["intersect", curve, curve],
         vec!["intersect", looped],
     ] {
         assert_valid("intersectOutput", &args.join(" "), &output(&args));
     }
+    assert_valid(
+        "intersectCertifiedOutput",
+        "intersect --filtered",
+        &output(&["intersect", curve, line, "--filtered"]),
+    );
     assert_valid(
         "intersectF64Output",
         "intersect f64",
