@@ -573,7 +573,7 @@ impl RealAlgebraic {
         if self.same_value(other) {
             return Ordering::Equal;
         }
-        let mut prec = 32;
+        let mut prec = 2;
         loop {
             let (a, b) = self.enclosure(prec);
             let (c, d) = other.enclosure(prec);
