@@ -1,6 +1,8 @@
 //! What `key` and `dedup` share: the input as a counted byte stream, keys
 //! of a chunk of records on all cores, the progress bar, the exit code.
 
+use crate::algebra::scalar::Scalar;
+use crate::algebra::RealAlgebraic;
 use crate::error::Error;
 use crate::io::{Patch, Record};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle, TermLike};
@@ -76,16 +78,44 @@ impl BulkArgs {
     }
 }
 
+/// The patch of one record: over Q when its numbers are all rational (and
+/// for NURBS objects), else over the real algebraic numbers.
+pub(crate) enum Member {
+    /// Every number rational.
+    Rational(Patch<BigRational>),
+    /// Some number algebraic and irrational (`"sqrt(6)/6"`).
+    Algebraic(Patch<RealAlgebraic>),
+}
+
+impl Member {
+    /// Read `r`; a record neither reader accepts gets the rational
+    /// reader's error.
+    pub(crate) fn read(r: &Record) -> Result<Member, Error> {
+        match r.patch() {
+            Ok(p) => Ok(Member::Rational(p)),
+            Err(e) => r.patch_as().map(Member::Algebraic).map_err(|_| e),
+        }
+    }
+
+    /// The patch over the real algebraic numbers (a rational one lifted).
+    pub(crate) fn algebraic(&self) -> Patch<RealAlgebraic> {
+        match self {
+            Member::Rational(p) => p.map(RealAlgebraic::from_rational),
+            Member::Algebraic(p) => p.clone(),
+        }
+    }
+}
+
 /// `f` on the patch of every record of a chunk, in parallel, results in
 /// input order. The error reported is that of the first failing record in
 /// input order, whatever the thread count; errors of `f` are located too.
 pub(crate) fn map_chunk<T: Send>(
     records: &[Record],
-    f: impl Fn(Patch<BigRational>) -> Result<T, Error> + Sync,
+    f: impl Fn(Member) -> Result<T, Error> + Sync,
 ) -> Result<Vec<T>, Error> {
     let done: Vec<Result<T, Error>> = records
         .par_iter()
-        .map(|r| f(r.patch()?).map_err(|e| r.locate(e)))
+        .map(|r| f(Member::read(r)?).map_err(|e| r.locate(e)))
         .collect();
     done.into_iter().collect()
 }

@@ -2,13 +2,12 @@
 //! rect patches the same up to Möbius maps, reversal, swapping, elevation,
 //! common factors and weight scaling? Exit 0 either way.
 
-use super::{charge_each, load_one, patch_f64, ScalarKind};
+use super::{charge_each, load_exact, patch_f64, ExactPatches, ExactScalar, ScalarKind};
 use crate::algebra::scalar::Tolerance;
 use crate::coincide::filter::coincide_filtered;
 use crate::error::Error;
 use crate::io::Patch;
 use crate::limits::Size;
-use num_rational::BigRational;
 use serde_json::Value;
 
 /// Arguments of `coincide`.
@@ -43,15 +42,61 @@ pub(super) fn coincide_cost(s: &Size) -> (u64, u64) {
     )
 }
 
-/// Read exactly one curve or patch from `path`.
-fn one_patch(path: &str) -> Result<Patch<BigRational>, Error> {
-    load_one(path, |n| {
-        format!("{path} holds {n} patches; coincide compares one with one")
-    })
+/// Read exactly one curve or patch from `path` (rational or algebraic).
+fn one_patch(path: &str) -> Result<ExactPatches, Error> {
+    let patches = load_exact(path)?;
+    if patches.len() != 1 {
+        return Err(Error::Shape(format!(
+            "{path} holds {} patches; coincide compares one with one",
+            patches.len()
+        )));
+    }
+    Ok(patches)
 }
 
+/// Two rational inputs run on `BigRational` (with `--filtered` available);
+/// if either has an algebraic number, both run on `RealAlgebraic`, where
+/// `--filtered` is the exact decision itself (`"decided_by": "exact"`).
 pub fn run(a: &Args) -> Result<Value, Error> {
-    let (pa, pb) = (one_patch(&a.a)?, one_patch(&a.b)?);
+    if a.filtered && a.scalar == ScalarKind::F64 {
+        return Err(Error::Domain(
+            "--filtered is the exact predicate: it does not combine with --scalar f64".into(),
+        ));
+    }
+    if a.tol.is_some() && a.scalar == ScalarKind::Exact {
+        return Err(Error::Domain(
+            "--tol applies to --scalar f64 only: the exact decision has no tolerance".into(),
+        ));
+    }
+    match (one_patch(&a.a)?, one_patch(&a.b)?) {
+        (ExactPatches::Rational(pa), ExactPatches::Rational(pb)) => {
+            if a.filtered {
+                charge_each(
+                    "coincide",
+                    &[pa[0].clone(), pb[0].clone()],
+                    a.scalar,
+                    coincide_cost,
+                )?;
+                let (c, by) = coincide_filtered(&pa[0], &pb[0])?;
+                let mut v = c.to_json();
+                v["decided_by"] = format!("{by:?}").to_lowercase().into();
+                return Ok(v);
+            }
+            decide(a, &pa[0], &pb[0])
+        }
+        (pa, pb) => {
+            let (pa, pb) = (pa.into_algebraic(), pb.into_algebraic());
+            let mut v = decide(a, &pa[0], &pb[0])?;
+            if a.filtered {
+                v["decided_by"] = "exact".into();
+            }
+            Ok(v)
+        }
+    }
+}
+
+/// The exact decision over `T`, or (with `--scalar f64`) the tolerance one.
+fn decide<T: ExactScalar>(a: &Args, pa: &Patch<T>, pb: &Patch<T>) -> Result<Value, Error> {
     charge_each(
         "coincide",
         &[pa.clone(), pb.clone()],
@@ -60,12 +105,6 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     )?;
     match a.scalar {
         ScalarKind::F64 => {
-            if a.filtered {
-                return Err(Error::Domain(
-                    "--filtered is the exact predicate: it does not combine with --scalar f64"
-                        .into(),
-                ));
-            }
             let tol = a.tol.unwrap_or(Tolerance::default().0);
             if !tol.is_finite() || tol < 0.0 {
                 return Err(Error::Domain(format!(
@@ -73,26 +112,11 @@ pub fn run(a: &Args) -> Result<Value, Error> {
                 )));
             }
             let c =
-                crate::coincide::coincide_f64(&patch_f64(&pa)?, &patch_f64(&pb)?, Tolerance(tol))?;
+                crate::coincide::coincide_f64(&patch_f64(pa)?, &patch_f64(pb)?, Tolerance(tol))?;
             let mut v = c.to_json();
             v["tolerance"] = tol.into();
             Ok(v)
         }
-        ScalarKind::Exact => {
-            if a.tol.is_some() {
-                return Err(Error::Domain(
-                    "--tol applies to --scalar f64 only: the exact decision has no tolerance"
-                        .into(),
-                ));
-            }
-            if a.filtered {
-                let (c, by) = coincide_filtered(&pa, &pb)?;
-                let mut v = c.to_json();
-                v["decided_by"] = format!("{by:?}").to_lowercase().into();
-                Ok(v)
-            } else {
-                Ok(crate::coincide::coincide(&pa, &pb)?.to_json())
-            }
-        }
+        ScalarKind::Exact => Ok(crate::coincide::coincide(pa, pb)?.to_json()),
     }
 }

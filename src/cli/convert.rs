@@ -4,8 +4,11 @@
 //! 002) to their exact rational Bézier form, NURBS/STEP to their Bézier
 //! pieces with origins (`docs/nurbs_step.md`). Output: a JSON array of patches.
 
-use super::{charge_each, load, open_input, parse_list, patch_f64, read_input, ScalarKind};
-use crate::algebra::scalar::{Field, Ordered};
+use super::{
+    charge_each, load_exact, on_exact, open_input, parse_list, patch_f64, read_input, ExactScalar,
+    ScalarKind,
+};
+use crate::algebra::scalar::{Field, Ordered, Scalar};
 use crate::audit::{piece_to_json, read_model};
 use crate::convert::{rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Split};
 use crate::error::Error;
@@ -99,33 +102,45 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         degenerate: a.degenerate,
         normalize: a.normalize,
     };
-    let patches = load(&a.file)?;
+    on_exact!(load_exact(&a.file)?, patches => convert_each(&patches, &plan, a.scalar))
+}
+
+/// Convert every patch over `T` (exactly, or on its nearest `f64` patch).
+fn convert_each<T: ExactScalar>(
+    patches: &[Patch<T>],
+    plan: &Plan<BigRational>,
+    scalar: ScalarKind,
+) -> Result<Value, Error> {
     let split_bits = limits::max_bits(plan.split.params());
-    for p in &patches {
+    for p in patches {
         if let Patch::Rect(r) = p {
             let (m, n) = r.degree();
             check_result_degree(m + n)?;
         }
     }
-    charge_each("convert", &patches, a.scalar, |s| {
-        convert_cost(s, split_bits)
-    })?;
+    charge_each("convert", patches, scalar, |s| convert_cost(s, split_bits))?;
     let mut out = Vec::new();
-    for p in &patches {
-        match a.scalar {
-            ScalarKind::Exact => out.extend(convert_with(p, &plan)?),
+    for p in patches {
+        match scalar {
+            ScalarKind::Exact => out.extend(convert_with(p, &plan.map(T::from_rational))?),
             ScalarKind::F64 => {
-                let plan64 = Plan {
-                    to: plan.to,
-                    split: Split::new_unchecked(plan.split.params().clone().map(|x| x.to_f64())),
-                    degenerate: plan.degenerate,
-                    normalize: plan.normalize,
-                };
-                out.extend(convert_with(&patch_f64(p)?, &plan64)?);
+                out.extend(convert_with(&patch_f64(p)?, &plan.map(Ordered::to_f64))?)
             }
         }
     }
     Ok(Value::Array(out))
+}
+
+impl Plan<BigRational> {
+    /// The same plan with the split parameters mapped by `f`.
+    fn map<U: Scalar>(&self, f: impl Fn(&BigRational) -> U) -> Plan<U> {
+        Plan {
+            to: self.to,
+            split: Split::new_unchecked(self.split.params().clone().map(|x| f(&x))),
+            degenerate: self.degenerate,
+            normalize: self.normalize,
+        }
+    }
 }
 
 /// Estimated `(operations, bits)` of converting a patch of size `s`: a rect

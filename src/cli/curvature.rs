@@ -1,15 +1,16 @@
 //! `curvature FILE --at T [--scalar f64]`: `{"curvature_squared": κ²,
 //! "curvature": κ, "curvature_approx": κ as f64}` — exact by default: κ² is
-//! rational and κ = √κ² a real algebraic number (a rational when κ² is a
-//! square, `sqrt(q)`-style text otherwise); with `--scalar f64` both are
-//! numbers and there is no `curvature_approx`.
+//! rational (algebraic for a curve with algebraic numbers) and κ = √κ² a
+//! real algebraic number (a rational when κ² is a square, `sqrt(q)`-style
+//! text otherwise); with `--scalar f64` both are numbers and there is no
+//! `curvature_approx`.
 
 use super::deriv::{curve_of, single_parameter};
-use super::{load, run_each, PatchOp, ScalarKind};
+use super::{
+    charge_each, load_exact, on_exact, one_or_many, run_each, ExactScalar, PatchOp, ScalarKind,
+};
 use crate::algebra::scalar::{Ordered, Roots, Scalar};
-use crate::algebra::RealAlgebraic;
 use crate::error::Error;
-use crate::io::parse_own_rational;
 use crate::io::{JsonScalar, Patch};
 use crate::limits::Size;
 use serde_json::{json, Value};
@@ -32,34 +33,39 @@ pub struct Args {
 
 pub fn run(a: &Args) -> Result<Value, Error> {
     let t = single_parameter(&a.at, a.extrapolate)?;
-    let mut v = run_each(&load(&a.file)?, &[t], a.scalar, &Curvature)?;
-    if a.scalar == ScalarKind::Exact {
-        match &mut v {
-            Value::Array(items) => items.iter_mut().try_for_each(exact_kappa)?,
-            one => exact_kappa(one)?,
+    on_exact!(load_exact(&a.file)?, patches => {
+        let at = [Scalar::from_rational(&t)];
+        match a.scalar {
+            ScalarKind::F64 => run_each(&patches, &at, a.scalar, &Curvature),
+            ScalarKind::Exact => exact_each(&patches, &at[0]),
         }
-    }
-    Ok(v)
+    })
 }
 
-/// Replace the `f64` κ of an exact result by κ = √κ², exactly (the `f64`
-/// value moves to `curvature_approx`). κ² is read back from the result's
-/// own exact text.
-fn exact_kappa(v: &mut Value) -> Result<(), Error> {
-    let text = match &v["curvature_squared"] {
-        Value::String(s) => s.clone(),
-        other => other.to_string(),
-    };
-    let k2 = RealAlgebraic::from_rational(&parse_own_rational(&text)?);
-    let kappa = k2
-        .nth_root(2)
-        .ok_or_else(|| Error::Domain(format!("κ² = {text} is negative")))?;
-    let approx = v["curvature"].take();
-    v["curvature"] = kappa.to_json();
-    if !approx.is_null() {
-        v["curvature_approx"] = approx;
-    }
-    Ok(())
+/// The exact result on every patch: κ² over `T` and κ = √κ² as a real
+/// algebraic number, with κ as `f64` in `curvature_approx` (left out when
+/// it overflows). The work is charged first.
+fn exact_each<T: ExactScalar>(patches: &[Patch<T>], t: &T) -> Result<Value, Error> {
+    charge_each("curvature", patches, ScalarKind::Exact, |s| {
+        Curvature.cost(s, t.bits())
+    })?;
+    let values = patches
+        .iter()
+        .map(|p| {
+            let k2 = curve_of(p, "curvature")?.curvature_sq(t)?;
+            let kappa = k2
+                .to_algebraic()
+                .nth_root(2)
+                .ok_or_else(|| Error::Domain(format!("κ² = {k2} is negative")))?;
+            let mut v = json!({ "curvature_squared": k2.to_json(), "curvature": kappa.to_json() });
+            let approx = kappa.to_f64();
+            if approx.is_finite() {
+                v["curvature_approx"] = approx.into();
+            }
+            Ok(v)
+        })
+        .collect::<Result<Vec<_>, Error>>()?;
+    Ok(one_or_many(values))
 }
 
 /// κ² (exact for exact `T`) and κ of a curve at `params[0]`.

@@ -7,17 +7,21 @@
 //! ```
 //!
 //! Memory: per input a 4-byte class id, per class a 32-byte key digest —
-//! never the patches. With `--witness` each member also gets the exact
+//! never the patches. Patches with algebraic numbers (`"sqrt(6)/6"`) are
+//! keyed over the real algebraic numbers: a key whose numbers are all
+//! rational is the digest of their copies over Q; an irrational key is kept
+//! whole and compared exactly with the kept keys of its skeleton
+//! ([`Deduper::insert_algebraic`]). With `--witness` each member also gets the exact
 //! witness of `coincide` against its class's representative (in parallel),
 //! which re-checks every grouping exactly; it keeps each representative's
 //! text and each witness until the end.
 
-use super::bulk::{map_chunk, BulkArgs, Out, Progress, CHUNK};
-use crate::coincide::canonical::{key_digest, Deduper};
-use crate::coincide::coincide;
+use super::bulk::{map_chunk, BulkArgs, Member, Out, Progress, CHUNK};
+use crate::algebra::RealAlgebraic;
+use crate::coincide::canonical::{canonical_key, key_digest, CanonicalKey, Deduper, KeyDigest};
+use crate::coincide::{coincide, Coincidence};
 use crate::error::Error;
-use crate::io::{for_each_chunk, parse_json, patch_from_value, Patch, Record};
-use num_rational::BigRational;
+use crate::io::{for_each_chunk, JsonScalar, Record};
 use rayon::prelude::*;
 use serde_json::json;
 
@@ -51,7 +55,7 @@ impl Witnesses {
         d: &Deduper,
         first: usize,
         records: &[Record],
-        patches: Vec<Patch<BigRational>>,
+        patches: Vec<Member>,
         ids: &[usize],
     ) -> Result<(), Error> {
         for (k, (r, &id)) in records.iter().zip(ids).enumerate() {
@@ -69,16 +73,18 @@ impl Witnesses {
                 if rep == first + k {
                     return Ok(None);
                 }
-                let a = patch_from_value(&parse_json(&reps[id])?)?;
-                let c = coincide(&a, p)?;
-                if !c.coincident {
+                let a = Member::read(&Record::Line(rep + 1, reps[id].to_string()))?;
+                let (coincident, reason, witness) = match (&a, p) {
+                    (Member::Rational(a), Member::Rational(p)) => summary(coincide(a, p)?),
+                    (a, p) => summary(coincide(&a.algebraic(), &p.algebraic())?),
+                };
+                if !coincident {
                     return Err(Error::Format(format!(
-                        "inputs {rep} and {} have equal keys but do not coincide: {}",
+                        "inputs {rep} and {} have equal keys but do not coincide: {reason}",
                         first + k,
-                        c.reason
                     )));
                 }
-                Ok(Some(c.to_json()["witness"].to_string().into_boxed_str()))
+                Ok(Some(witness.into_boxed_str()))
             })
             .collect();
         for w in done {
@@ -88,6 +94,18 @@ impl Witnesses {
     }
 }
 
+/// Whether they coincide, why, and the witness's JSON text.
+fn summary<T: JsonScalar>(c: Coincidence<T>) -> (bool, String, String) {
+    let witness = c.to_json()["witness"].to_string();
+    (c.coincident, c.reason, witness)
+}
+
+/// A record's key: a digest, or (over the real algebraic numbers) the key.
+enum Keyed {
+    Digest(KeyDigest),
+    Algebraic(CanonicalKey<RealAlgebraic>),
+}
+
 fn dedup(a: &Args) -> Result<(), Error> {
     let (reader, input) = a.bulk.open()?;
     let progress = Progress::new(&a.bulk, &input);
@@ -95,13 +113,19 @@ fn dedup(a: &Args) -> Result<(), Error> {
     let mut witnesses = a.witness.then(Witnesses::default);
     for_each_chunk(reader, CHUNK, |first, records| {
         let keyed = map_chunk(&records, |p| {
-            let key = key_digest(&p)?;
+            let key = match &p {
+                Member::Rational(q) => Keyed::Digest(key_digest(q)?),
+                Member::Algebraic(q) => Keyed::Algebraic(canonical_key(q)?),
+            };
             Ok((key, a.witness.then_some(p)))
         })?;
         let mut ids = Vec::with_capacity(keyed.len());
         let mut patches = Vec::new();
         for (key, p) in keyed {
-            ids.push(d.insert_digest(key)?);
+            ids.push(match key {
+                Keyed::Digest(k) => d.insert_digest(k)?,
+                Keyed::Algebraic(k) => d.insert_algebraic(k)?,
+            });
             patches.extend(p);
         }
         if let Some(w) = &mut witnesses {

@@ -1,8 +1,9 @@
 //! `deriv FILE --at T [--order K] [--scalar f64]`: the K-th derivative of a
 //! curve at T, `{"order": K, "derivative": [...]}` (exact by default).
 
-use super::{load, parse_list, run_each, PatchOp, ScalarKind};
+use super::{load_exact, on_exact, parse_list, run_each, PatchOp, ScalarKind};
 use crate::algebra::scalar::Ordered;
+use crate::algebra::scalar::Scalar;
 use crate::curve::RationalCurve;
 use crate::error::{Error, MAX_DEGREE};
 use crate::io::{point_to_json, JsonScalar, Patch};
@@ -71,7 +72,9 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         )));
     }
     let t = single_parameter(&a.at, a.extrapolate)?;
-    run_each(&load(&a.file)?, &[t], a.scalar, &Deriv(a.order))
+    on_exact!(load_exact(&a.file)?, patches => {
+        run_each(&patches, &[Scalar::from_rational(&t)], a.scalar, &Deriv(a.order))
+    })
 }
 
 /// The derivative of the given order of a curve at `params[0]`.

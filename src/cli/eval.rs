@@ -9,14 +9,13 @@
 //! of docs/FORMAT.md); the points then come out in that grammar.
 
 use super::{
-    check_domain, check_finite, emit, json_text, one_or_many, parse_list, patch_f64, read_input,
-    ScalarKind,
+    check_domain, check_finite, emit, json_text, on_exact, one_or_many, parse_list, patch_f64,
+    read_input, ExactPatches, ExactScalar, ScalarKind,
 };
-use crate::algebra::scalar::{Field, Ordered, Scalar};
-use crate::algebra::RealAlgebraic;
+use crate::algebra::scalar::{Field, Scalar};
 use crate::error::Error;
 use crate::eval::Evaluator;
-use crate::io::{point_to_json, read_patches, read_patches_as, JsonScalar, Patch};
+use crate::io::{point_to_json, JsonScalar, Patch};
 use crate::limits::Size;
 use num_rational::BigRational;
 use serde_json::{json, Value};
@@ -53,11 +52,10 @@ pub struct Args {
 }
 
 /// The JSON result, or (with `--jsonl`) `Err(0)`: the lines are written.
-/// The JSON result, or (with `--jsonl`) `Err(0)`: the lines are written.
 ///
 /// Patches whose numbers are all rational run on `BigRational`; a file
 /// with algebraic numbers (`"sqrt(6)/6"`, as `standardize` writes them)
-/// runs the same code on [`RealAlgebraic`].
+/// runs the same code on [`RealAlgebraic`](crate::algebra::RealAlgebraic).
 pub fn run(a: &Args) -> Result<Result<Value, i32>, Error> {
     let text = read_input(&a.file)?;
     if let Some(trig) = crate::io::trig::read_trig_patches(&text)? {
@@ -68,13 +66,7 @@ pub fn run(a: &Args) -> Result<Result<Value, i32>, Error> {
         }
         return super::eval_trig::run(&trig, &a.at[0], a.scalar).map(Ok);
     }
-    match read_patches(&text) {
-        Ok(patches) => run_patches(a, &patches, crate::limits::bits, 1),
-        Err(rational) => match read_patches_as::<RealAlgebraic>(&text) {
-            Ok(patches) => run_patches(a, &patches, algebraic_bits, ALGEBRAIC_COST),
-            Err(_) => Err(rational),
-        },
-    }
+    on_exact!(ExactPatches::parse(&text)?, patches => run_patches(a, &patches))
 }
 
 /// One point, written as `{"point": …}`.
@@ -82,23 +74,12 @@ fn is_single(a: &Args) -> bool {
     a.at.len() == 1 && a.grid.is_none() && !a.jsonl
 }
 
-/// The work of one algebraic operation in units of a rational one of the
-/// same text size (a model: radical sums multiply term by term).
-const ALGEBRAIC_COST: u64 = 16;
-
-/// The size in bits of an algebraic number's text (≈ 3.4 bits a character).
-fn algebraic_bits(x: &RealAlgebraic) -> u64 {
-    x.to_string().len() as u64 * 7 / 2
-}
-
 /// `eval` on patches of exact numbers `T`: exactly, or on their nearest
-/// `f64` patches. The work is charged first (`cost` times the exact
-/// model for one operation on `T`).
-fn run_patches<T: JsonScalar + Ordered>(
+/// `f64` patches. The work is charged first ([`ExactScalar::OP_COST`]
+/// times the exact model for one operation).
+fn run_patches<T: ExactScalar>(
     a: &Args,
     patches: &[Patch<T>],
-    bits_of: fn(&T) -> u64,
-    cost: u64,
 ) -> Result<Result<Value, i32>, Error> {
     if patches.is_empty() {
         return Err(Error::Shape(format!(
@@ -117,7 +98,7 @@ fn run_patches<T: JsonScalar + Ordered>(
             None => lists.clone(),
         };
         check_points(p, &at, a.extrapolate)?;
-        let size = Size::of(p, bits_of);
+        let size = Size::of(p, T::bits);
         let ops = size.eval_ops().saturating_mul(at.len() as u64);
         let units = match a.scalar {
             ScalarKind::Exact => {
@@ -125,7 +106,7 @@ fn run_patches<T: JsonScalar + Ordered>(
                     size.total_degree(),
                     crate::limits::max_bits(at.iter().flatten()),
                 );
-                crate::limits::exact_work(ops, bits).saturating_mul(cost)
+                crate::limits::exact_work(ops, bits).saturating_mul(T::OP_COST)
             }
             ScalarKind::F64 => ops,
         };

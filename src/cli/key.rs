@@ -4,8 +4,8 @@
 //! DuckDB, Spark, `sort`) gives the classes of `dedup`; see
 //! `docs/bulk_dedup.md`.
 
-use super::bulk::{map_chunk, BulkArgs, Out, Progress, CHUNK};
-use crate::coincide::canonical::{canonical_text, KeyDigest};
+use super::bulk::{map_chunk, BulkArgs, Member, Out, Progress, CHUNK};
+use crate::coincide::canonical::{canonical_key, canonical_text, KeyDigest};
 use crate::error::Error;
 use crate::io::for_each_chunk;
 use serde_json::json;
@@ -28,6 +28,27 @@ pub fn run(a: &Args) -> Result<(), Error> {
     keys(a)
 }
 
+/// The key text of a record: a patch over the real algebraic numbers has
+/// one when its key is rational (then it is the key of its copies over Q).
+///
+/// # Errors
+///
+/// [`Error::Domain`] for an irrational key (no canonical text: use
+/// `dedup`, which compares such keys exactly).
+fn member_text(p: &Member) -> Result<String, Error> {
+    match p {
+        Member::Rational(p) => canonical_text(p),
+        Member::Algebraic(p) => canonical_key(p)?
+            .to_rational()
+            .map(|k| k.text())
+            .ok_or_else(|| {
+                Error::Domain(
+                    "this patch's key has irrational algebraic numbers, which have no canonical text; dedup compares such keys exactly".into(),
+                )
+            }),
+    }
+}
+
 fn keys(a: &Args) -> Result<(), Error> {
     let (reader, input) = a.bulk.open()?;
     let progress = Progress::new(&a.bulk, &input);
@@ -35,7 +56,7 @@ fn keys(a: &Args) -> Result<(), Error> {
     let mut done = 0;
     let n = for_each_chunk(reader, CHUNK, |first, records| {
         let lines = map_chunk(&records, |p| {
-            let text = canonical_text(&p)?;
+            let text = member_text(&p)?;
             let digest = KeyDigest::of_text(&text).to_string();
             Ok((digest, a.text.then_some(text)))
         })?;

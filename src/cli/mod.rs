@@ -16,8 +16,11 @@
 //! Exact arithmetic is the default; `--scalar f64` selects floats.
 
 use crate::algebra::scalar::Ordered;
+use crate::algebra::scalar::{Roots, Scalar};
+use crate::algebra::RealAlgebraic;
+use crate::coincide::Reducible;
 use crate::error::Error;
-use crate::io::{read_patches, JsonScalar, Patch};
+use crate::io::{read_patches, read_patches_as, JsonScalar, Patch};
 use crate::limits::{self, Limits, Size};
 use clap::{Parser, Subcommand, ValueEnum};
 use num_rational::BigRational;
@@ -514,11 +517,16 @@ pub(crate) fn open_input(path: &str) -> Result<Box<dyn std::io::BufRead>, Error>
 pub(crate) fn load(path: &str) -> Result<Vec<Patch<BigRational>>, Error> {
     let patches = read_patches(&read_input(path)?)?;
     if patches.is_empty() {
-        return Err(Error::Shape(format!(
-            "{path:?} holds an empty array: no curve or patch to work on"
-        )));
+        return Err(empty_input(path));
     }
     Ok(patches)
+}
+
+/// The error for a file that holds an empty array.
+fn empty_input(path: &str) -> Error {
+    Error::Shape(format!(
+        "{path:?} holds an empty array: no curve or patch to work on"
+    ))
 }
 
 /// The single curve or patch of `path`; `count_error(n)` words the error
@@ -532,6 +540,103 @@ pub(crate) fn load_one(
         return Err(Error::Shape(count_error(patches.len())));
     }
     Ok(patches.swap_remove(0))
+}
+
+/// An exact scalar a command runs on, with what the cost model
+/// ([`crate::limits`]) needs to know of it.
+pub(crate) trait ExactScalar: JsonScalar + Reducible + Roots {
+    /// The work of one operation, in units of a rational operation on
+    /// numbers of the same text size.
+    const OP_COST: u64;
+    /// The size of one number in bits.
+    fn bits(&self) -> u64;
+    /// The same number as a real algebraic number.
+    fn to_algebraic(&self) -> RealAlgebraic;
+}
+
+impl ExactScalar for BigRational {
+    const OP_COST: u64 = 1;
+    fn bits(&self) -> u64 {
+        limits::bits(self)
+    }
+    fn to_algebraic(&self) -> RealAlgebraic {
+        RealAlgebraic::from_rational(self)
+    }
+}
+
+/// A model: radical sums multiply term by term, and a general algebraic
+/// operation is a resultant.
+impl ExactScalar for RealAlgebraic {
+    const OP_COST: u64 = 16;
+    /// ≈ 3.5 bits a character of the number's text.
+    fn bits(&self) -> u64 {
+        self.to_string().len() as u64 * 7 / 2
+    }
+    fn to_algebraic(&self) -> RealAlgebraic {
+        self.clone()
+    }
+}
+
+/// Exact patches as read: over Q when every number of the file is
+/// rational, else over the real algebraic numbers (`"sqrt(6)/6"`, the
+/// grammar of docs/algebraic_numbers.md, as `standardize` writes them).
+pub(crate) enum ExactPatches {
+    /// Every number rational (also every NURBS input).
+    Rational(Vec<Patch<BigRational>>),
+    /// Some number algebraic and irrational.
+    Algebraic(Vec<Patch<RealAlgebraic>>),
+}
+
+/// Run `$body` with `$p` bound to the patches of an [`ExactPatches`],
+/// whichever scalar they have: one generic body, two instantiations.
+macro_rules! on_exact {
+    ($patches:expr, $p:ident => $body:expr) => {
+        match $patches {
+            $crate::cli::ExactPatches::Rational($p) => $body,
+            $crate::cli::ExactPatches::Algebraic($p) => $body,
+        }
+    };
+}
+pub(crate) use on_exact;
+
+impl ExactPatches {
+    /// The patches of `text`: rational if they all are, else algebraic; a
+    /// text neither reader accepts gets the rational reader's error.
+    pub(crate) fn parse(text: &str) -> Result<Self, Error> {
+        match read_patches(text) {
+            Ok(p) => Ok(ExactPatches::Rational(p)),
+            Err(rational) => match read_patches_as::<RealAlgebraic>(text) {
+                Ok(p) => Ok(ExactPatches::Algebraic(p)),
+                Err(_) => Err(rational),
+            },
+        }
+    }
+
+    /// The patches over the real algebraic numbers (rationals lifted).
+    pub(crate) fn into_algebraic(self) -> Vec<Patch<RealAlgebraic>> {
+        match self {
+            ExactPatches::Rational(p) => p
+                .iter()
+                .map(|p| p.map(RealAlgebraic::from_rational))
+                .collect(),
+            ExactPatches::Algebraic(p) => p,
+        }
+    }
+
+    /// How many patches.
+    pub(crate) fn len(&self) -> usize {
+        on_exact!(self, p => p.len())
+    }
+}
+
+/// Read the exact patches of `path` (see [`ExactPatches::parse`]); an empty
+/// array is refused as by [`load`].
+pub(crate) fn load_exact(path: &str) -> Result<ExactPatches, Error> {
+    let patches = ExactPatches::parse(&read_input(path)?)?;
+    if patches.len() == 0 {
+        return Err(empty_input(path));
+    }
+    Ok(patches)
 }
 
 /// Check the `--tol` of an f64 comparison: finite and ≥ 0.
@@ -573,16 +678,16 @@ pub(crate) trait PatchOp {
 /// Charge `what`'s estimated work on each patch before computing: `cost`
 /// gives `(operations, bits)` ([`limits::exact_work`]); an `f64` run counts
 /// the operations only.
-pub(crate) fn charge_each(
+pub(crate) fn charge_each<T: ExactScalar>(
     what: &str,
-    patches: &[Patch<BigRational>],
+    patches: &[Patch<T>],
     scalar: ScalarKind,
     cost: impl Fn(&Size) -> (u64, u64),
 ) -> Result<(), Error> {
     for p in patches {
-        let (ops, bits) = cost(&Size::exact(p));
+        let (ops, bits) = cost(&Size::of(p, T::bits));
         let units = match scalar {
-            ScalarKind::Exact => limits::exact_work(ops, bits),
+            ScalarKind::Exact => limits::exact_work(ops, bits).saturating_mul(T::OP_COST),
             ScalarKind::F64 => ops,
         };
         limits::charge(what, units)?;
@@ -619,13 +724,13 @@ pub(crate) fn patch_f64<T: Ordered>(p: &Patch<T>) -> Result<Patch<f64>, Error> {
 /// # Errors
 ///
 /// [`Error::Limit`] over the work budget; the first error of `op`.
-pub(crate) fn run_each<Op: PatchOp>(
-    patches: &[Patch<BigRational>],
-    params: &[BigRational],
+pub(crate) fn run_each<Op: PatchOp, T: ExactScalar>(
+    patches: &[Patch<T>],
+    params: &[T],
     scalar: ScalarKind,
     op: &Op,
 ) -> Result<Value, Error> {
-    let param_bits = limits::max_bits(params);
+    let param_bits = params.iter().map(T::bits).max().unwrap_or(0);
     charge_each(Op::NAME, patches, scalar, |s| op.cost(s, param_bits))?;
     let values = patches
         .iter()

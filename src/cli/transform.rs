@@ -1,12 +1,16 @@
 //! `reparam` and `elevate`: transformations that return patches.
 
-use super::{charge_each, load, one_or_many, parse_list, run_each, PatchOp, ScalarKind};
+use super::{
+    charge_each, load_exact, on_exact, one_or_many, parse_list, run_each, ExactPatches,
+    ExactScalar, PatchOp, ScalarKind,
+};
 use crate::algebra::scalar::Ordered;
+use crate::algebra::RealAlgebraic;
 use crate::error::Error;
+use crate::io::ExactNumber;
 use crate::io::{patch_to_json, JsonScalar, Patch};
 use crate::limits::{check_result_degree, Size};
 use crate::reparam::Quadratic;
-use num_rational::BigRational;
 use serde_json::Value;
 
 /// Arguments of `reparam`.
@@ -50,24 +54,45 @@ pub fn reparam(a: &ReparamArgs) -> Result<Value, Error> {
             ))
         }
     };
-    let params = parse_list(text)?;
-    for p in &params {
-        if !(p > &BigRational::from_integer(0.into()) && p < &BigRational::from_integer(1.into())) {
-            return Err(Error::Domain(format!(
-                "reparameterization parameter {p} must lie strictly between 0 and 1 (weights stay positive and [0,1] maps onto itself)"
-            )));
+    let op = Reparam { quadratic };
+    match (load_exact(&a.file)?, parse_list(text)) {
+        (ExactPatches::Rational(patches), Ok(params)) => op.run(&patches, &params, a.scalar),
+        (patches, rational) => {
+            let params = text
+                .split(',')
+                .map(RealAlgebraic::from_text)
+                .collect::<Result<Vec<_>, _>>()
+                .map_err(|algebraic| rational.err().unwrap_or(algebraic))?;
+            op.run(&patches.into_algebraic(), &params, a.scalar)
         }
     }
-    let patches = load(&a.file)?;
-    if quadratic {
-        for p in &patches {
-            if let Patch::Rect(r) = p {
-                let (m, n) = r.degree();
-                check_result_degree(m + n)?;
+}
+
+impl Reparam {
+    /// Check the parameters and the result's degree, then map every patch.
+    fn run<T: ExactScalar>(
+        &self,
+        patches: &[Patch<T>],
+        params: &[T],
+        scalar: ScalarKind,
+    ) -> Result<Value, Error> {
+        for p in params {
+            if !(p > &T::zero() && p < &T::one()) {
+                return Err(Error::Domain(format!(
+                    "reparameterization parameter {p} must lie strictly between 0 and 1 (weights stay positive and [0,1] maps onto itself)"
+                )));
             }
         }
+        if self.quadratic {
+            for p in patches {
+                if let Patch::Rect(r) = p {
+                    let (m, n) = r.degree();
+                    check_result_degree(m + n)?;
+                }
+            }
+        }
+        run_each(patches, params, scalar, self)
     }
-    run_each(&patches, &params, a.scalar, &Reparam { quadratic })
 }
 
 /// A Möbius map (or, if `quadratic`, the quadratic map of a rect patch).
@@ -157,8 +182,16 @@ pub fn elevate(a: &ElevateArgs) -> Result<Value, Error> {
                     })
             })
             .collect::<Result<_, _>>()?;
-    let patches = load(&a.file)?;
-    for p in &patches {
+    on_exact!(load_exact(&a.file)?, patches => elevate_each(&patches, &by, &a.by))
+}
+
+/// `elevate` on exact patches over `T`; `text` is the `--by` argument.
+fn elevate_each<T: ExactScalar>(
+    patches: &[Patch<T>],
+    by: &[usize],
+    text: &str,
+) -> Result<Value, Error> {
+    for p in patches {
         let (m, n) = match p {
             Patch::Curve(c) => (c.degree(), 0),
             Patch::Rect(q) => q.degree(),
@@ -167,7 +200,7 @@ pub fn elevate(a: &ElevateArgs) -> Result<Value, Error> {
         check_result_degree(m + by[0])?;
         check_result_degree(n + by.get(1).copied().unwrap_or(0))?;
     }
-    charge_each("elevate", &patches, ScalarKind::Exact, |s| {
+    charge_each("elevate", patches, ScalarKind::Exact, |s| {
         let (r, t) = (by[0], by.get(1).copied().unwrap_or(0));
         let (m, n) = (s.degree.0 + r, s.degree.1 + t);
         let ops = ((m + 1) * (n + 1) * (m + n + 2) * (s.dim + 1)) as u64;
@@ -176,13 +209,12 @@ pub fn elevate(a: &ElevateArgs) -> Result<Value, Error> {
     let out = patches
         .iter()
         .map(|p| {
-            let raised = match (p, by.as_slice()) {
+            let raised = match (p, by) {
                 (Patch::Curve(c), [r]) => Patch::Curve(c.elevate(*r)),
                 (Patch::Rect(q), [r, s]) => Patch::Rect(q.elevate(*r, *s)),
                 _ => {
                     return Err(Error::Shape(format!(
-                        "--by {} does not apply to a {}",
-                        a.by,
+                        "--by {text} does not apply to a {}",
                         p.kind()
                     )))
                 }

@@ -22,7 +22,9 @@
 //! `ω_{0,0} = ω_{1,0} = ω_{0,1} = 1` by an exact rational Möbius map and
 //! scaling (ρ = ω_{0,0}/ω_{1,0}, σ = ω_{0,0}/ω_{0,1}, k = 1/ω_{0,0}).
 
-use crate::coincide::minimal::{certified_minimal, minimal_net};
+use crate::algebra::scalar::Ordered;
+use crate::algebra::RealAlgebraic;
+use crate::coincide::minimal::{certified_minimal, minimal_net, Reducible};
 use crate::coincide::{net_of, Prepared, Symmetry, View};
 use crate::error::Error;
 use crate::io::Patch;
@@ -48,15 +50,19 @@ mod small;
 /// let copy = c.mobius(&ratio(1, 3)).reverse().elevate(1).scale_weights(&ratio(7, 2));
 /// assert_eq!(canonical_key(&Patch::Curve(c)).unwrap(), canonical_key(&Patch::Curve(copy)).unwrap());
 /// ```
+/// Over `BigRational` (the default) keys are hashable and have a text
+/// ([`CanonicalKey::text`]); over [`RealAlgebraic`] they compare exactly,
+/// and [`CanonicalKey::to_rational`] gives the rational key when every
+/// number of the key is rational.
 #[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct CanonicalKey {
+pub struct CanonicalKey<T = BigRational> {
     curve: bool,
     degree: (usize, usize),
-    points: Vec<Option<Vec<BigRational>>>,
-    invariants: Vec<(i8, BigRational)>,
+    points: Vec<Option<Vec<T>>>,
+    invariants: Vec<(i8, T)>,
 }
 
-impl CanonicalKey {
+impl<T> CanonicalKey<T> {
     /// The minimal (bi)degree of the class.
     pub fn degree(&self) -> (usize, usize) {
         self.degree
@@ -64,8 +70,67 @@ impl CanonicalKey {
 
     /// The weight invariants `I_{i,j}` row by row (for positive weights:
     /// the weights normalized to `ω_{0,0} = ω_{1,0} = ω_{0,1} = 1`).
-    pub fn invariants(&self) -> impl Iterator<Item = &BigRational> {
+    pub fn invariants(&self) -> impl Iterator<Item = &T> {
         self.invariants.iter().map(|(_, x)| x)
+    }
+
+    /// The same key with every number mapped by `f` (`None` if `f` is
+    /// `None` for one of them).
+    fn try_map<U>(&self, f: impl Fn(&T) -> Option<U>) -> Option<CanonicalKey<U>> {
+        let point = |p: &Option<Vec<T>>| match p {
+            None => Some(None),
+            Some(p) => p.iter().map(&f).collect::<Option<Vec<U>>>().map(Some),
+        };
+        Some(CanonicalKey {
+            curve: self.curve,
+            degree: self.degree,
+            points: self.points.iter().map(point).collect::<Option<_>>()?,
+            invariants: self
+                .invariants
+                .iter()
+                .map(|(s, x)| f(x).map(|x| (*s, x)))
+                .collect::<Option<_>>()?,
+        })
+    }
+}
+
+impl CanonicalKey<RealAlgebraic> {
+    /// The rational key when every number of this one is rational: then it
+    /// is the key (and [`text`](CanonicalKey::text)) that the same patch
+    /// written over Q has, since keys are built from values only. A patch
+    /// whose key is not rational coincides with no patch over Q.
+    pub fn to_rational(&self) -> Option<CanonicalKey<BigRational>> {
+        self.try_map(RealAlgebraic::as_rational)
+    }
+
+    /// The key with each irrational number replaced by `?`, as text: equal
+    /// keys have equal skeletons (which numbers are rational is a property
+    /// of the values), so it buckets irrational keys for exact comparison.
+    pub fn skeleton(&self) -> String {
+        let shown = self.try_map(|x| {
+            Some(
+                x.as_rational()
+                    .map_or("?".to_string(), |q| rational_text(&q)),
+            )
+        });
+        let shown = shown.expect("every number has a text");
+        let numbers = |v: &[String]| v.join(",");
+        let points: Vec<String> = shown
+            .points
+            .iter()
+            .map(|p| p.as_deref().map_or("*".into(), numbers))
+            .collect();
+        let invariants: Vec<String> = shown
+            .invariants
+            .iter()
+            .map(|(s, x)| format!("{}:{x}", sign_char(*s)))
+            .collect();
+        format!(
+            "{}{};I={}",
+            text_head(self.curve, self.degree),
+            points.join(";"),
+            invariants.join(";")
+        )
     }
 }
 
@@ -73,35 +138,41 @@ fn positions(m: usize, n: usize) -> impl Iterator<Item = (usize, usize)> {
     (0..=m).flat_map(move |i| (0..=n).map(move |j| (i, j)))
 }
 
-fn cmp_points(a: &View<'_, BigRational>, b: &View<'_, BigRational>) -> Ordering {
+/// The exact order of two values (exact scalars are totally ordered).
+fn exact_cmp<T: PartialOrd>(a: &T, b: &T) -> Ordering {
+    a.partial_cmp(b).unwrap_or(Ordering::Equal)
+}
+
+fn cmp_points<T: Ordered>(a: &View<'_, T>, b: &View<'_, T>) -> Ordering {
     positions(a.m, a.n)
-        .map(|(i, j)| a.hat(i, j).cmp(&b.hat(i, j)))
+        .map(|(i, j)| exact_cmp(&a.hat(i, j), &b.hat(i, j)))
         .find(|o| o.is_ne())
         .unwrap_or(Ordering::Equal)
 }
 
-fn invariants(v: &View<'_, BigRational>) -> Vec<(i8, BigRational)> {
+fn invariants<T: Ordered>(v: &View<'_, T>) -> Vec<(i8, T)> {
     positions(v.m, v.n)
         .map(|(i, j)| v.sign(i, j))
         .zip(v.invariants())
         .collect()
 }
 
-/// The canonical key of a curve or rect patch (exact).
+/// The canonical key of a curve or rect patch (exact), over Q or over the
+/// real algebraic numbers (see [`CanonicalKey`]).
 ///
 /// # Errors
 ///
 /// [`Error::Shape`] for a tri patch, [`Error::Weight`] for a non-positive weight.
-pub fn canonical_key(p: &Patch<BigRational>) -> Result<CanonicalKey, Error> {
+pub fn canonical_key<T: Reducible>(p: &Patch<T>) -> Result<CanonicalKey<T>, Error> {
     let (net, curve) = net_of(p)?;
     let red = minimal_net(&net).patch;
     let prep = Prepared::new(&red);
     let (m, n) = (prep.m, prep.n);
     let target = if curve { (m, n) } else { (m.min(n), m.max(n)) };
-    let views: Vec<View<'_, BigRational>> = Symmetry::admissible(curve, (m, n), target)
+    let views: Vec<View<'_, T>> = Symmetry::admissible(curve, (m, n), target)
         .map(|s| prep.view(s))
         .collect();
-    let mut best: Vec<View<'_, BigRational>> = Vec::new();
+    let mut best: Vec<View<'_, T>> = Vec::new();
     for v in views {
         match best.first().map(|b| cmp_points(&v, b)) {
             None | Some(Ordering::Equal) => best.push(v),
@@ -112,7 +183,7 @@ pub fn canonical_key(p: &Patch<BigRational>) -> Result<CanonicalKey, Error> {
     let (view, invariants) = best
         .iter()
         .map(|v| (v, invariants(v)))
-        .min_by(|a, b| a.1.cmp(&b.1))
+        .min_by(|a, b| exact_cmp(&a.1, &b.1))
         .expect("the identity is admissible");
     Ok(CanonicalKey {
         curve,
@@ -134,6 +205,22 @@ fn push_rational(out: &mut String, q: &BigRational) {
     } else {
         write!(out, "{}/{}", q.numer(), q.denom())
     };
+}
+
+/// `q` as in the key text.
+fn rational_text(q: &BigRational) -> String {
+    let mut s = String::new();
+    push_rational(&mut s, q);
+    s
+}
+
+/// The sign of an invariant in the key text.
+fn sign_char(sign: i8) -> char {
+    match sign.cmp(&0) {
+        Ordering::Less => '-',
+        Ordering::Equal => '0',
+        Ordering::Greater => '+',
+    }
 }
 
 impl CanonicalKey {
@@ -180,11 +267,7 @@ impl CanonicalKey {
             if k > 0 {
                 out.push(';');
             }
-            out.push(match sign.cmp(&0) {
-                Ordering::Less => '-',
-                Ordering::Equal => '0',
-                Ordering::Greater => '+',
-            });
+            out.push(sign_char(*sign));
             out.push(':');
             push_rational(&mut out, x);
         }
@@ -309,9 +392,17 @@ impl Hasher for DigestHasher {
 /// assert_eq!(d.insert(&Patch::Curve(a.elevate(1).scale_weights(&ratio(1, 2)).reverse())).unwrap(), 0);
 /// assert_eq!(d.classes(), vec![vec![0, 1, 2]]);
 /// ```
+///
+/// Patches over the real algebraic numbers enter by
+/// [`insert_algebraic`](Self::insert_algebraic): a rational key joins the
+/// digest index (so they group with their copies over Q); an irrational
+/// key — algebraic numbers have no cheap canonical text — is kept whole
+/// and compared exactly with the kept keys of the same
+/// [`skeleton`](CanonicalKey::skeleton).
 #[derive(Clone, Debug, Default)]
 pub struct Deduper {
     index: HashMap<KeyDigest, u32, BuildHasherDefault<DigestHasher>>,
+    irrational: HashMap<KeyDigest, Vec<(CanonicalKey<RealAlgebraic>, u32)>>,
     class_of: Vec<u32>,
     first: Vec<u32>,
 }
@@ -333,15 +424,50 @@ impl Deduper {
     ///
     /// [`Error::Shape`] beyond 2³² − 1 inputs.
     pub fn insert_digest(&mut self, key: KeyDigest) -> Result<usize, Error> {
-        let too_many = || Error::Shape("more than 2^32 - 1 inputs".into());
-        let seen = u32::try_from(self.class_of.len()).map_err(|_| too_many())?;
-        let next = u32::try_from(self.first.len()).map_err(|_| too_many())?;
+        let next = self.next_class()?;
         let id = *self.index.entry(key).or_insert(next);
+        Ok(self.record(id, next))
+    }
+
+    /// Add the next input by its key over the real algebraic numbers;
+    /// returns its class id (see the type's docs).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Shape`] beyond 2³² − 1 inputs.
+    pub fn insert_algebraic(&mut self, key: CanonicalKey<RealAlgebraic>) -> Result<usize, Error> {
+        if let Some(q) = key.to_rational() {
+            return self.insert_digest(q.digest());
+        }
+        let next = self.next_class()?;
+        let bucket = self
+            .irrational
+            .entry(KeyDigest::of_text(&key.skeleton()))
+            .or_default();
+        let id = match bucket.iter().find(|(k, _)| *k == key) {
+            Some((_, id)) => *id,
+            None => {
+                bucket.push((key, next));
+                next
+            }
+        };
+        Ok(self.record(id, next))
+    }
+
+    /// The id a new class would get; an error beyond 2³² − 1 inputs.
+    fn next_class(&self) -> Result<u32, Error> {
+        let too_many = || Error::Shape("more than 2^32 - 1 inputs".into());
+        u32::try_from(self.class_of.len()).map_err(|_| too_many())?;
+        u32::try_from(self.first.len()).map_err(|_| too_many())
+    }
+
+    /// Record the next input in class `id` (new if `id == next`).
+    fn record(&mut self, id: u32, next: u32) -> usize {
         if id == next {
-            self.first.push(seen);
+            self.first.push(self.class_of.len() as u32);
         }
         self.class_of.push(id);
-        Ok(id as usize)
+        id as usize
     }
 
     /// The number of inputs so far.

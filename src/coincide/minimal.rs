@@ -1,5 +1,6 @@
 //! Minimal (bi)degree of a rational curve or tensor-product patch: remove
-//! the common factor of the homogeneous components (exact gcd over Q) and
+//! the common factor of the homogeneous components (exact gcd over Q, or
+//! over the real algebraic numbers) and
 //! undo degree elevation.
 //!
 //! A patch of bidegree (m, n) with homogeneous control points
@@ -27,12 +28,13 @@
 use crate::algebra::modp::Fp;
 use crate::algebra::scalar::{binomial_scalar, Field, Ordered, Scalar, Tolerance};
 use crate::algebra::upoly::{BPoly, UPoly};
+use crate::algebra::RealAlgebraic;
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::rect::RectPatch;
 use num_rational::BigRational;
-use num_traits::{Signed, Zero};
+use num_traits::Zero;
 
 /// A homogeneous control net `net[i][j]` of bidegree (m, n); a curve is (m, 0).
 pub(crate) type Net<T> = Vec<Vec<HPoint<T>>>;
@@ -242,9 +244,9 @@ fn remove_common_factor<T: Field>(
     (quotients, pure.mul(&g))
 }
 
-/// The result of reducing a curve or patch to its minimal degree.
+/// The result of reducing a curve or patch over `T` to its minimal degree.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Minimal<P> {
+pub struct Minimal<P, T = BigRational> {
     /// The reduced curve or patch (the same parametric map).
     pub patch: P,
     /// The (bi)degree before reduction (`(m, 0)` for a curve).
@@ -256,53 +258,116 @@ pub struct Minimal<P> {
     /// formula in `u`, `v`; `"1"` if none.
     pub common_factor: String,
     /// The same factor `g(u, v)` as a polynomial.
-    pub factor: BPoly<BigRational>,
+    pub factor: BPoly<T>,
     /// Was minimality certified modulo `p` (no exact gcd was needed)?
     pub certified: bool,
 }
 
-/// Exact reduction of a homogeneous net over Q to minimal bidegree.
+/// Exact scalars whose nets [`minimal_rect`] and [`minimal_curve`] reduce:
+/// a field with exact equality, plus what lets the reduction skip the
+/// exact bivariate gcd when it can prove there is no common factor.
+///
+/// Implemented for `BigRational` (certificates modulo `p = 2⁶¹ − 1`) and
+/// for [`RealAlgebraic`] (no certificate: the gcd is always computed,
+/// exactly, over the real algebraic numbers).
+pub trait Reducible: Ordered + std::fmt::Display {
+    /// A proof that `net` is already of minimal bidegree; `false` only
+    /// means "not certified".
+    fn certified_minimal(net: &Net<Self>) -> bool;
+    /// A proof that `polys` have no common factor of positive degree;
+    /// `false` only means "not certified".
+    fn certified_coprime(polys: &[BPoly<Self>]) -> bool;
+    /// `g(u, v)` as a formula.
+    fn factor_text(g: &BPoly<Self>) -> String;
+}
+
+impl Reducible for BigRational {
+    fn certified_minimal(net: &Net<Self>) -> bool {
+        certified_minimal(net)
+    }
+
+    fn certified_coprime(polys: &[BPoly<Self>]) -> bool {
+        coprime_mod_p(polys)
+    }
+
+    fn factor_text(g: &BPoly<Self>) -> String {
+        g.to_poly("u", "v").to_string()
+    }
+}
+
+impl Reducible for RealAlgebraic {
+    fn certified_minimal(_: &Net<Self>) -> bool {
+        false
+    }
+
+    fn certified_coprime(_: &[BPoly<Self>]) -> bool {
+        false
+    }
+
+    /// The rational formula when every coefficient is rational, else
+    /// `Σ (c)*u^p*v^q` with each `c` in the algebraic number grammar.
+    fn factor_text(g: &BPoly<Self>) -> String {
+        let rational: Option<Vec<UPoly<BigRational>>> = g
+            .coeffs()
+            .iter()
+            .map(|c| {
+                let cs: Option<Vec<BigRational>> =
+                    c.coeffs().iter().map(RealAlgebraic::as_rational).collect();
+                cs.map(UPoly::new)
+            })
+            .collect();
+        if let Some(r) = rational {
+            return BigRational::factor_text(&BPoly::new(r));
+        }
+        let mut terms = Vec::new();
+        for (p, c) in g.coeffs().iter().enumerate() {
+            for (q, a) in c.coeffs().iter().enumerate() {
+                if !a.is_zero() {
+                    terms.push(format!("({a})*u**{p}*v**{q}"));
+                }
+            }
+        }
+        terms.join(" + ")
+    }
+}
+
+/// Exact reduction of a homogeneous net to minimal bidegree.
 ///
 /// Weights stay positive at the corners: the removed factor is taken with
 /// `g(0, 0) > 0` (it has no zero on the closed unit square when the corner
 /// weights are positive, since it divides the weight function).
-pub(crate) fn minimal_net(net: &Net<BigRational>) -> Minimal<Net<BigRational>> {
+pub(crate) fn minimal_net<T: Reducible>(net: &Net<T>) -> Minimal<Net<T>, T> {
     let before = (net.len() - 1, net[0].len() - 1);
-    if certified_minimal(net) {
+    if T::certified_minimal(net) {
         return Minimal {
             patch: net.clone(),
             degree_before: before,
             degree_after: before,
             common_factor: "1".into(),
-            factor: BPoly::from_grid(&[vec![BigRational::from_integer(1.into())]]),
+            factor: BPoly::from_grid(&[vec![T::one()]]),
             certified: true,
         };
     }
     let comps = power_components(net);
-    let (mut quotients, mut g) = remove_common_factor(&comps, coprime_mod_p);
+    let (mut quotients, mut g) = remove_common_factor(&comps, T::certified_coprime);
     let g00 = g.coeffs().first().and_then(|c| c.coeffs().first()).cloned();
-    if g00.is_some_and(|x| x.is_negative()) {
-        let minus = UPoly::constant(-BigRational::from_integer(1.into()));
+    if g00.is_some_and(|x| x < T::zero()) {
+        let minus = UPoly::constant(-T::one());
         g = g.mul_v(&minus);
         quotients = quotients.iter().map(|q| q.mul_v(&minus)).collect();
     }
     let (m, n) = quotients.iter().fold((0, 0), |(m, n), q| {
         (m.max(q.deg_u().unwrap_or(0)), n.max(q.deg_v().unwrap_or(0)))
     });
-    let grids: Vec<Vec<Vec<BigRational>>> = quotients.iter().map(|q| q.to_grid(m, n)).collect();
+    let grids: Vec<Vec<Vec<T>>> = quotients.iter().map(|q| q.to_grid(m, n)).collect();
     Minimal {
         patch: net_from_power(&grids, m, n),
         degree_before: before,
         degree_after: (m, n),
-        common_factor: factor_text(&g),
+        common_factor: T::factor_text(&g),
         factor: g,
         certified: false,
     }
-}
-
-/// `g(u, v)` as a formula.
-fn factor_text(g: &BPoly<BigRational>) -> String {
-    g.to_poly("u", "v").to_string()
 }
 
 /// Fixed evaluation points in `Z/pZ` for the coprimality certificate.
@@ -451,7 +516,7 @@ pub fn multiply_components<T: Scalar>(r: &RectPatch<T>, f: &[Vec<T>]) -> RectPat
     RectPatch::from_hom(ctrl).expect("a product of valid nets")
 }
 
-/// Reduce a rational tensor-product patch over Q to its minimal bidegree:
+/// Reduce a rational tensor-product patch (over Q, or over the real algebraic numbers) to its minimal bidegree:
 /// divide the homogeneous components by their gcd and undo elevation.
 ///
 /// # Examples
@@ -479,7 +544,7 @@ pub fn multiply_components<T: Scalar>(r: &RectPatch<T>, f: &[Vec<T>]) -> RectPat
 /// [`Error::Shape`] if the reduced patch would have a control point of
 /// weight zero (its control points are then not Cartesian points; the
 /// homogeneous net is still available through [`crate::coincide::coincide`]).
-pub fn minimal_rect(r: &RectPatch<BigRational>) -> Result<Minimal<RectPatch<BigRational>>, Error> {
+pub fn minimal_rect<T: Reducible>(r: &RectPatch<T>) -> Result<Minimal<RectPatch<T>, T>, Error> {
     let red = minimal_net(&r.ctrl().to_vec());
     let patch = RectPatch::from_hom(red.patch.clone())?;
     check_finite_points(&red.patch)?;
@@ -493,7 +558,7 @@ pub fn minimal_rect(r: &RectPatch<BigRational>) -> Result<Minimal<RectPatch<BigR
     })
 }
 
-/// Reduce a rational curve over Q to its minimal degree (see
+/// Reduce a rational curve (over any [`Reducible`] scalar) to its minimal degree (see
 /// [`minimal_rect`]; the common factor is a polynomial in `u = t`).
 ///
 /// ```
@@ -508,9 +573,9 @@ pub fn minimal_rect(r: &RectPatch<BigRational>) -> Result<Minimal<RectPatch<BigR
 /// # Errors
 ///
 /// As [`minimal_rect`].
-pub fn minimal_curve(
-    c: &RationalCurve<BigRational>,
-) -> Result<Minimal<RationalCurve<BigRational>>, Error> {
+pub fn minimal_curve<T: Reducible>(
+    c: &RationalCurve<T>,
+) -> Result<Minimal<RationalCurve<T>, T>, Error> {
     let red = minimal_net(&curve_net(c));
     check_finite_points(&red.patch)?;
     let ctrl = red.patch.iter().map(|row| row[0].clone()).collect();
@@ -524,7 +589,7 @@ pub fn minimal_curve(
     })
 }
 
-fn check_finite_points(net: &Net<BigRational>) -> Result<(), Error> {
+fn check_finite_points<T: Scalar>(net: &Net<T>) -> Result<(), Error> {
     for (i, row) in net.iter().enumerate() {
         if let Some(j) = row.iter().position(|h| h.weight().is_zero()) {
             return Err(Error::Shape(format!(

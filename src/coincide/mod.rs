@@ -36,7 +36,7 @@ pub use canonical::{canonical_text, key_digest, Classes, KeyDigest, KEY_VERSION}
 pub use filter::{coincide_filtered, DecidedBy};
 pub use minimal::{
     bernstein_to_power, minimal_curve, minimal_rect, multiply_components, power_to_bernstein,
-    Minimal,
+    Minimal, Reducible,
 };
 
 mod boundary;
@@ -433,7 +433,7 @@ fn decide<T: Roots + fmt::Display>(
     }
 }
 
-fn info<T>(red: &crate::coincide::minimal::Minimal<Net<T>>) -> ReductionInfo {
+fn info<T>(red: &Minimal<Net<T>, T>) -> ReductionInfo {
     ReductionInfo {
         from: red.degree_before,
         to: red.degree_after,
@@ -476,7 +476,11 @@ fn kinds_differ<T: Scalar>(a: &Patch<T>, b: &Patch<T>) -> Option<Coincidence<T>>
 }
 
 /// Exact coincidence of two curves or two rect patches (see the module
-/// docs): no roots, no tolerance.
+/// docs): no tolerance. Over `BigRational` no roots either; over
+/// [`RealAlgebraic`](crate::algebra::RealAlgebraic) (patches with algebraic
+/// control points or weights, e.g. a standard form) the same decision runs
+/// on exact algebraic numbers, and the witness's `ρ = (λ_{a,0}/λ_{0,0})^{1/a}`
+/// is always a number (an exact root).
 ///
 /// # Examples
 ///
@@ -498,10 +502,7 @@ fn kinds_differ<T: Scalar>(a: &Patch<T>, b: &Patch<T>) -> Option<Coincidence<T>>
 ///
 /// [`Error::Shape`] for tri patches; [`Error::Weight`] for a non-positive
 /// weight.
-pub fn coincide(
-    a: &Patch<BigRational>,
-    b: &Patch<BigRational>,
-) -> Result<Coincidence<BigRational>, Error> {
+pub fn coincide<T: Reducible + Roots>(a: &Patch<T>, b: &Patch<T>) -> Result<Coincidence<T>, Error> {
     let ((na, curve), (nb, _)) = (net_of(a)?, net_of(b)?);
     if let Some(c) = kinds_differ(a, b) {
         return Ok(c);
@@ -510,11 +511,11 @@ pub fn coincide(
 }
 
 /// The exact decision for two homogeneous nets of the same kind.
-pub(crate) fn coincide_nets(
-    na: &Net<BigRational>,
-    nb: &Net<BigRational>,
+pub(crate) fn coincide_nets<T: Reducible + Roots>(
+    na: &Net<T>,
+    nb: &Net<T>,
     curve: bool,
-) -> Coincidence<BigRational> {
+) -> Coincidence<T> {
     let (ra, rb) = (minimal_net(na), minimal_net(nb));
     decide(
         &ra.patch,

@@ -10,7 +10,7 @@
 //! caller, in parallel, with [`patch_from_value`](crate::io::patch_from_value).
 
 use crate::error::Error;
-use crate::io::{parse_json, patch_from_value, Patch};
+use crate::io::{parse_json, patch_from_value, patch_from_value_as, ExactNumber, Patch};
 use num_rational::BigRational;
 use serde::de::{DeserializeSeed, Error as _, SeqAccess, Visitor};
 use serde_json::Value;
@@ -37,6 +37,20 @@ impl Record {
         let parsed = match self {
             Record::Line(_, text) => parse_json(text).and_then(|v| patch_from_value(&v)),
             Record::Element(_, v) => patch_from_value(v),
+        };
+        parsed.map_err(|e| self.locate(e))
+    }
+
+    /// The patch of this record over any exact number type (e.g.
+    /// `RealAlgebraic` for algebraic weights; no NURBS objects).
+    ///
+    /// # Errors
+    ///
+    /// As [`patch_from_value_as`], prefixed with the line or element.
+    pub fn patch_as<T: ExactNumber>(&self) -> Result<Patch<T>, Error> {
+        let parsed = match self {
+            Record::Line(_, text) => parse_json(text).and_then(|v| patch_from_value_as(&v)),
+            Record::Element(_, v) => patch_from_value_as(v),
         };
         parsed.map_err(|e| self.locate(e))
     }

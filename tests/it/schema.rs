@@ -217,6 +217,35 @@ fn command_outputs_match_the_schema() {
     }
 }
 
+/// Outputs on inputs with algebraic numbers (`"sqrt(6)/6"`) match too.
+#[test]
+fn algebraic_outputs_match_the_schema() {
+    let ex1 = "tests/fixtures/yang_yong_example1.json";
+    let std1 = "tests/fixtures/yang_yong_example1_standard.json";
+    let quarter = "tests/fixtures/quarter_circle.json";
+    for (def, args) in [
+        ("coincideOutput", vec!["coincide", ex1, std1]),
+        ("coincideOutput", vec!["coincide", std1, ex1, "--filtered"]),
+        ("patch", vec!["reparam", std1, "--mobius", "1/3,sqrt(2)/2"]),
+        ("patch", vec!["elevate", std1, "--by", "1,0"]),
+        ("patches", vec!["convert", std1, "--to", "tri"]),
+        ("evalOutput", vec!["eval", quarter, "--at", "1/3"]),
+        ("derivOutput", vec!["deriv", quarter, "--at", "1/3"]),
+    ] {
+        assert_valid(def, &args.join(" "), &output(&args));
+    }
+    let v = output(&["curvature", quarter, "--at", "1/3"]);
+    assert_valid("number", "curvature", &v["curvature"]);
+    assert_valid("number", "curvature_squared", &v["curvature_squared"]);
+    for (cmd, def) in [("dedup", "dedupLine"), ("key", "keyLine")] {
+        let (code, out, err) = cli(&[cmd, std1]);
+        assert_eq!(code, 0, "{cmd}: {err}");
+        for line in out.lines() {
+            assert_valid(def, cmd, &serde_json::from_str(line).expect("a JSON line"));
+        }
+    }
+}
+
 /// The pieces of `convert --to bezier` without their `origin` field (the
 /// one field beyond the patch format).
 fn strip_origins(mut v: Value) -> Value {
