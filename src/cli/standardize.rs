@@ -59,7 +59,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 /// as `ops · D⁴` on numbers of the input's size (`D⁸` when β needs the
 /// general root isolation, below). Measured: Example 2 of
 /// source 000, bicubic with radicals in one cubic field, passes the
-/// default budget only when raised (about 8 s in a release build), and a
+/// default budget only when raised (about 5 s in a release build), and a
 /// bicubic with unrelated cube roots is refused before it runs for minutes.
 fn standardize_cost(p: &Patch<BigRational>) -> u64 {
     let s = Size::exact(p);
