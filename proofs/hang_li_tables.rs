@@ -1,55 +1,108 @@
 //! Source 004 (Hang & Li 2011), the numbers: Tables 1 and 2 and the worked
-//! examples of §4, compared with ours at printed precision.
+//! examples of §4, compared with ours at printed precision, exactly.
 //!
-//! Method. A printed decimal `v` with `d` digits is reproduced when our value
-//! lies within half a unit of its last digit. Weights are decided exactly:
-//! `ω₁³ = k³/(27N²D)` and `ω₂³ = k³E³/(27ND²)` are rational (family
-//! `hang_li`, claim "ω₁³ = …"), so `v − h ≤ ω ≤ v + h ⇔ (v−h)³ ≤ ω³ ≤ (v+h)³`.
-//! Shoulder points `P(1/2)` carry cube roots (and √3 in Table 1): they are
-//! computed by the same generic construction in `f64` (error ≪ 10⁻¹²,
-//! against a half unit of 5·10⁻⁵). The §4 quarter circle is checked exactly
-//! with √2 as a symbol `r`, `r² = 2`.
+//! Method. Every table entry and every §4 number is computed by the generic
+//! library code — [`sigma_of_lambda`], [`QuadArc::standard_cubic`],
+//! [`RationalCurve::eval`], [`QuadArc::mu_of_point`],
+//! [`QuadArc::lambda_for_point`], [`QuadArc::param_of_point`],
+//! [`circle_of`] — instantiated on the exact real algebraic numbers
+//! [`RealAlgebraic`]: `σ = ∛(N/D)` is a cube root, Table 1's arc carries
+//! `b̄₁ = (1, √3)` and §4 example 1 `c = √2/2`, so the weights are elements
+//! of `Q(∛(N/D))` and the shoulder points `P(1/2)` of `Q(√3, ∛(N/D))`.
+//! A printed decimal `v` with `d` digits is reproduced iff
+//!
+//! ```text
+//! v − h ≤ x ≤ v + h,   h = 10^{−d}/2
+//! ```
+//!
+//! decided by the exact comparison of [`RealAlgebraic`] (enclosures refined
+//! until they separate from the rational bounds `v ± h`): no `f64` and no
+//! tolerance anywhere on that path. Each `detail` shows our exact value
+//! (the SymPy-compatible text of [`RealAlgebraic`]), its correctly rounded
+//! decimal expansion ([`RealAlgebraic::to_decimal`], three digits beyond the
+//! printed ones) and the printed value.
 
-use super::hang_li::omega_cubes;
 use super::{Claim, Verdict};
-use crate::algebra::poly::Poly;
-use crate::algebra::scalar::{ratio, Ordered, Scalar, Tolerance};
+use crate::algebra::scalar::{ratio, Field, Roots, Scalar, Tolerance};
+use crate::algebra::RealAlgebraic;
 use crate::arc::{sigma_of_lambda, QuadArc};
 use crate::curve::circle::circle_of;
 use crate::curve::RationalCurve;
-use crate::hpoint::HPoint;
+use crate::error::Error;
 use crate::io::parse_rational;
 use num_rational::BigRational;
-use num_traits::{Signed, Zero};
 
 const SRC: &str = "004 Hang & Li";
 
-/// The printed decimal and half a unit of its last digit.
-fn printed(text: &str) -> (BigRational, BigRational) {
+/// The exact scalar of this family.
+type R = RealAlgebraic;
+
+/// The integer `n`.
+fn int(n: i64) -> R {
+    R::from_i64(n)
+}
+
+/// The printed decimal (or fraction) `text`, exactly.
+fn exact(text: &str) -> R {
+    R::from_rational(&parse_rational(text).expect("printed numbers parse"))
+}
+
+/// The number of decimal digits printed after the point.
+fn digits(text: &str) -> usize {
+    text.split_once('.').map_or(0, |(_, f)| f.len())
+}
+
+/// Does `x` round to the printed decimal `text`? Exactly:
+/// `v − h ≤ x ≤ v + h` with `h` half a unit of the last printed digit.
+fn rounds_to(x: &R, text: &str) -> bool {
     let v = parse_rational(text).expect("printed decimals parse");
-    let digits = text.split_once('.').map_or(0, |(_, f)| f.len()) as i64;
-    let half = ratio::<BigRational>(1, 2) / BigRational::from_i64(10).pow_u32(digits as u32);
-    (v, half)
+    let exponent = u32::try_from(digits(text)).expect("few digits");
+    let h = ratio::<BigRational>(1, 2) / BigRational::from_i64(10).pow_u32(exponent);
+    let (lo, hi) = (
+        R::from_rational(&(v.clone() - &h)),
+        R::from_rational(&(v + h)),
+    );
+    lo <= *x && *x <= hi
 }
 
-/// Does the positive number with cube `cube` round to `text`?
-fn cube_rounds_to(cube: &BigRational, text: &str) -> bool {
-    let (v, h) = printed(text);
-    let (lo, hi) = (v.clone() - &h, v + &h);
-    lo.pow_u32(3) <= *cube && *cube <= hi.pow_u32(3)
+/// Our exact value as text and its decimal expansion to three digits more
+/// than `text` prints.
+fn shown(x: &R, text: &str) -> String {
+    format!("{x} ≈ {}", x.to_decimal(digits(text) + 3))
 }
 
-/// Does `ours` round to `text`? Decided only with a margin of 10⁻⁹ to the
-/// rounding boundary (far above the f64 error), else `false`.
-fn f64_rounds_to(ours: f64, text: &str) -> bool {
-    let (v, h) = printed(text);
-    (ours - v.to_f64()).abs() <= h.to_f64() - 1e-9
+/// The claim that the printed decimal `text` is our value rounded; `note`
+/// adds to the detail. `Broken` if the computation of our value failed.
+fn decimal(
+    claim: &str,
+    source: &str,
+    expected: Verdict,
+    ours: &Result<R, Error>,
+    text: &str,
+    note: impl FnOnce(&R) -> String,
+) -> Claim {
+    match ours {
+        Ok(x) => Claim::compare(
+            claim,
+            source,
+            expected,
+            rounds_to(x, text),
+            text,
+            &format!("{}{}", shown(x, text), note(x)),
+        ),
+        Err(e) => Claim::compare(claim, source, expected, false, text, "nothing")
+            .given(false, &format!("the computation failed: {e}")),
+    }
 }
 
-/// The distance of `ours` to the nearer rounding boundary of `text`.
-fn margin(ours: f64, text: &str) -> f64 {
-    let (v, h) = printed(text);
-    h.to_f64() - (ours - v.to_f64()).abs()
+/// The planar point `(x, y)`.
+fn pt(x: R, y: R) -> Vec<R> {
+    vec![x, y]
+}
+
+/// The standard cubic of λ for `arc` (source 004 eq. 1, eq. 2 for θ = π).
+fn cubic_of(arc: &QuadArc<R>, lambda: &R) -> Result<RationalCurve<R>, Error> {
+    sigma_of_lambda(arc.cos_half(), lambda).and_then(|s| arc.standard_cubic(&s))
 }
 
 /// One printed table row: λ, ω₁, ω₂, shoulder x, y.
@@ -65,7 +118,6 @@ struct Row {
 pub fn claims() -> Vec<Claim> {
     let mut out = table(
         "Table 1 (θ = 2π/3)",
-        &ratio(1, 2),
         &table1_arc(),
         &[
             Row {
@@ -107,8 +159,7 @@ pub fn claims() -> Vec<Claim> {
     );
     out.extend(table(
         "Table 2 (θ = π)",
-        &BigRational::zero(),
-        &semicircle().map(Ordered::to_f64),
+        &semicircle(),
         &[
             Row {
                 lambda: "-0.45",
@@ -153,212 +204,222 @@ pub fn claims() -> Vec<Claim> {
 }
 
 /// Table 1's arc: b̄₀ = (0, 0), b̄₁ = (1, √3), b̄₂ = (2, 0), c = 1/2 (the
-/// printed "ρ" is a 0), in `f64`.
-fn table1_arc() -> QuadArc<f64> {
+/// printed "ρ" is a 0), exactly.
+fn table1_arc() -> QuadArc<R> {
+    let root3 = int(3).nth_root(2).expect("√3");
     QuadArc::from_control(
-        &[0.0, 0.0],
-        &[1.0, 3f64.sqrt()],
-        &[2.0, 0.0],
-        &0.5,
-        Tolerance(1e-12),
+        &pt(int(0), int(0)),
+        &pt(int(1), root3),
+        &pt(int(2), int(0)),
+        &ratio(1, 2),
+        Tolerance::EXACT,
     )
     .expect("the 2π/3 arc")
 }
 
 /// The semicircle b̄₀ = (0, 0), b̄₂ = (2, 0), b = (0, 1), exactly.
-fn semicircle() -> QuadArc<BigRational> {
-    let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
-    QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).expect("semicircle")
+fn semicircle() -> QuadArc<R> {
+    QuadArc::semicircle(
+        &pt(int(0), int(0)),
+        &pt(int(2), int(0)),
+        &pt(int(0), int(1)),
+        Tolerance::EXACT,
+    )
+    .expect("semicircle")
 }
 
-/// Compare one table: weights exactly, shoulder points in f64.
-fn table(name: &str, c: &BigRational, arc: &QuadArc<f64>, rows: &[Row]) -> Vec<Claim> {
+/// Compare one table: the weights ω₁, ω₂ and the shoulder point `P(1/2)` of
+/// the standard cubic of each λ, exactly.
+fn table(name: &str, arc: &QuadArc<R>, rows: &[Row]) -> Vec<Claim> {
+    let source = format!("{SRC} {name}");
     let mut out = Vec::new();
     for row in rows {
-        let lambda = parse_rational(row.lambda).expect("printed λ");
-        let (c1, c2) = omega_cubes(c, &lambda);
-        let source = format!("{SRC} {name}");
-        for (label, cube, text) in [("ω₁", &c1, row.w1), ("ω₂", &c2, row.w2)] {
-            let ours = cube.to_f64().cbrt();
-            out.push(Claim::compare(
-                &format!("{name}, λ = {}: {label} = {text}", row.lambda),
+        let entries = cubic_of(arc, &exact(row.lambda)).and_then(|cubic| {
+            let w = cubic.weights();
+            let p = cubic.eval(&ratio(1, 2))?;
+            Ok([w[1].clone(), w[2].clone(), p[0].clone(), p[1].clone()])
+        });
+        let items = [
+            ("ω₁", row.w1),
+            ("ω₂", row.w2),
+            ("shoulder point x", row.x),
+            ("shoulder point y", row.y),
+        ];
+        for (i, (label, text)) in items.into_iter().enumerate() {
+            let claim = format!("{name}, λ = {}: {label} = {text}", row.lambda);
+            let ours = entries.as_ref().map(|v| v[i].clone()).map_err(Clone::clone);
+            out.push(decimal(
+                &claim,
                 &source,
                 Verdict::Reproduced,
-                cube_rounds_to(cube, text),
+                &ours,
                 text,
-                &format!("{ours:.7} ({label}³ = {cube} exactly)"),
-            ));
-        }
-        let shoulder = sigma_of_lambda(&c.to_f64(), &lambda.to_f64())
-            .and_then(|s| arc.standard_cubic(&s))
-            .and_then(|cubic| cubic.eval(&0.5));
-        let Ok(point) = shoulder else {
-            continue;
-        };
-        for (label, ours, text) in [("x", point[0], row.x), ("y", point[1], row.y)] {
-            out.push(Claim::compare(
-                &format!(
-                    "{name}, λ = {}: shoulder point {label} = {text}",
-                    row.lambda
-                ),
-                &source,
-                Verdict::Reproduced,
-                f64_rounds_to(ours, text),
-                text,
-                &format!(
-                    "{ours:.7} (P(1/2) of the f64 cubic; margin {:.1e} to the rounding boundary)",
-                    margin(ours, text)
-                ),
+                |x| {
+                    if i < 2 {
+                        format!(" ({label}³ = {})", x.pow_u32(3))
+                    } else {
+                        " (P(1/2) of the standard cubic)".to_string()
+                    }
+                },
             ));
         }
     }
     out
 }
 
-/// `√2` as the symbol `r` with `r² = 2`.
-fn root2(p: &Poly) -> Poly {
-    p.reduce_power("r2", 2, &Poly::from_int(2))
-}
-
 /// The printed quarter-circle cubic: b̄₀, (b̄₀ + 4b̄₁)/5, (2b̄₂ + b̄₁)/3, b̄₂
 /// with weights 1, 5/6, 1, 1.
-fn printed_quarter() -> RationalCurve<BigRational> {
-    let p = |x: i64, xd: i64, y: i64, yd: i64| vec![ratio::<BigRational>(x, xd), ratio(y, yd)];
+fn printed_quarter() -> RationalCurve<R> {
+    let p = |x: i64, xd: i64, y: i64, yd: i64| pt(ratio(x, xd), ratio(y, yd));
     RationalCurve::new(
         vec![p(1, 1, 0, 1), p(1, 1, 4, 5), p(1, 3, 1, 1), p(0, 1, 1, 1)],
-        vec![ratio(1, 1), ratio(5, 6), ratio(1, 1), ratio(1, 1)],
+        vec![int(1), ratio(5, 6), int(1), int(1)],
     )
     .expect("four points")
+}
+
+/// A cubic's Cartesian control points and weights, as text.
+fn cubic_text(cubic: &RationalCurve<R>) -> String {
+    let points = cubic.points().map_or_else(
+        |e| e.to_string(),
+        |ps| {
+            ps.iter()
+                .map(|p| format!("({}, {})", p[0], p[1]))
+                .collect::<Vec<_>>()
+                .join(", ")
+        },
+    );
+    let weights: Vec<String> = cubic.weights().iter().map(R::to_string).collect();
+    format!("{points}; {}", weights.join(", "))
+}
+
+/// A point as exact text and decimals to `places` digits.
+fn point_text(p: &[R], places: usize) -> String {
+    let coords: Vec<String> = p.iter().map(R::to_string).collect();
+    let decimals: Vec<String> = p.iter().map(|x| x.to_decimal(places)).collect();
+    format!("({}) ≈ ({})", coords.join(", "), decimals.join(", "))
+}
+
+/// A result as text.
+fn result_text(r: &Result<R, Error>) -> String {
+    r.as_ref().map_or_else(|e| e.to_string(), R::to_string)
 }
 
 /// §4, first example: the 90° arc of the unit circle, shoulder (3/5, 4/5).
 fn quarter_circle() -> Vec<Claim> {
     let src = format!("{SRC} §4 example 1");
-    let (r, one, two) = (Poly::var("r2"), Poly::from_int(1), Poly::from_int(2));
-    let c = r.clone() * Poly::constant(ratio(1, 2)); // cos 45° = √2/2
-    let b = |x: i64, y: i64| vec![Poly::from_int(x), Poly::from_int(y)];
-    let arc = QuadArc::new_raw([
-        HPoint::from_cartesian(&b(1, 0)),
-        HPoint::from_point(&b(1, 1), &c),
-        HPoint::from_cartesian(&b(0, 1)),
-    ]);
-    // μ of (3/5, 4/5): the line b̄₁p does not depend on the middle weight, so
-    // the same control points with weight 1 give it exactly.
-    let q = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
-    let exact_ctrl = QuadArc::new_raw([
-        HPoint::from_cartesian(&q(1, 0)),
-        HPoint::from_cartesian(&q(1, 1)),
-        HPoint::from_cartesian(&q(0, 1)),
-    ]);
-    let mu = exact_ctrl.mu_of_point(&[ratio(3, 5), ratio(4, 5)]);
-    let mu_star = exact_ctrl.mu_of_point(&[ratio(1, 2), ratio(1, 2)]); // same line as (√2/2, √2/2)
-                                                                       // Eq. (9): λ* = (1 − μ√μ)/((1+2c)(1 + 2μ√μc)) with μ√μ = 2√2; claimed (3√2 − 5)/5.
-    let m = two.clone() * &r;
-    let (num, den) = (
-        one.clone() - &m,
-        (one.clone() + two.clone() * &c) * &(one.clone() + two.clone() * &m * &c),
-    );
-    let lambda_ok =
-        root2(&(num * Poly::from_int(5) - (Poly::from_int(3) * &r - Poly::from_int(5)) * den))
-            .is_zero();
-    // σ = √μ(1/ū − 1) = √2 at ū = 1/2; the cubic of the construction, normalized by σ² = 2.
-    let cubic = arc.cubic_hom(&r, &one);
-    let got: Vec<Vec<Poly>> = cubic
-        .ctrl()
-        .iter()
-        .map(|h| {
-            h.coords
-                .iter()
-                .map(|x| root2(&(x.clone() * Poly::constant(ratio(1, 2)))))
-                .collect()
-        })
-        .collect();
+    let root2 = int(2).nth_root(2).expect("√2");
+    let c = root2.clone() * &ratio(1, 2); // cos 45° = √2/2
+    let arc = QuadArc::from_control(
+        &pt(int(1), int(0)),
+        &pt(int(1), int(1)),
+        &pt(int(0), int(1)),
+        &c,
+        Tolerance::EXACT,
+    )
+    .expect("the 90° arc");
+    let half = ratio::<R>(1, 2);
+    let p = pt(ratio(3, 5), ratio(4, 5));
+    let mu = arc.mu_of_point(&p);
+    // Eq. (9): λ* at ū = 1/2; σ = √μ(1/ū − 1) = √2.
+    let lambda = arc.lambda_for_point(&p, &half);
+    let lambda_printed = (int(3) * &root2 - &int(5)) / &int(5);
+    let cubic = lambda.clone().and_then(|l| cubic_of(&arc, &l));
     let want = printed_quarter();
-    let same_cubic = got.iter().zip(want.ctrl()).all(|(g, w)| {
-        g.iter()
-            .zip(&w.coords)
-            .all(|(a, b)| a.as_constant().as_ref() == Some(b))
-    });
     let circle = circle_of(&want, Tolerance::EXACT);
-    let shoulder = want.eval(&ratio(1, 2)).expect("finite");
-    // Weights of the quadratic, eqs. (3), (4): ω̄₁/ω̄₀ = cσ, ω̄₁/ω̄₂ = c/σ = c·σ/2.
-    let ratio_ok = root2(&(c.clone() * &r)) == one
-        && root2(&(c.clone() * &r * Poly::constant(ratio(1, 2)))) == Poly::constant(ratio(1, 2));
-    // Parameter of p* = (√2/2, √2/2) on the printed cubic.
-    let sym = want.map(|x| Poly::constant(x.clone()));
-    let on_curve = |u: &Poly| {
-        let h = sym.eval_hom(u);
-        let half = r.clone() * Poly::constant(ratio(1, 2));
-        (0..2).all(|i| root2(&(h.coords[i].clone() - &(half.clone() * &h.coords[2]))).is_zero())
-    };
-    let ours_u = r.clone() - &one; // 1/(1 + √2)
-    let printed_u = r.clone() * Poly::constant(ratio(1, 4)); // 1/(2√2)
-    let at_printed = want
-        .map(Ordered::to_f64)
-        .eval(&(2f64.sqrt() / 4.0))
-        .expect("finite");
+    let shoulder = want.eval(&half);
+    // Weights of the non-standard quadratic, eqs. (3), (4): 1, cσ, σ².
+    let quad_w = arc
+        .sigma_for_point(&p, &half)
+        .map(|s| arc.nonstandard_quadratic(&s, &int(1)).weights());
+    let ratios = quad_w
+        .as_ref()
+        .map(|w| (w[1].clone() / &w[0], w[1].clone() / &w[2]));
+    // p* = (√2/2, √2/2) and its parameter on the cubic of λ*.
+    let p_star = pt(c.clone(), c.clone());
+    let mu_star = arc.mu_of_point(&p_star);
+    let u_star = lambda.clone().and_then(|l| arc.param_of_point(&p_star, &l));
+    let u_printed = (int(2) * &root2).recip(); // 1/(2√2)
+    let at = |u: &R| cubic.as_ref().map_err(Clone::clone).and_then(|k| k.eval(u));
+    let at_ours = u_star.as_ref().map_err(Clone::clone).and_then(at);
+    let at_printed = at(&u_printed);
     vec![
         Claim::compare(
             "§4 ex. 1: m = (1/3, 2/3), μ = |b̄₀m|/|mb̄₂| = 2 for p = (3/5, 4/5)",
             &src,
             Verdict::Reproduced,
-            mu == Ok(ratio(2, 1)),
+            mu.as_ref().is_ok_and(|m| *m == int(2)),
             "μ = 2",
-            &format!("μ = {:?}", mu.map(|x| x.to_string())),
+            &format!("μ = {}", result_text(&mu)),
         ),
         Claim::compare(
             "§4 ex. 1: eq. (9) gives λ* = (3√2 − 5)/5",
             &src,
             Verdict::Reproduced,
-            lambda_ok,
+            lambda.as_ref().is_ok_and(|l| *l == lambda_printed),
             "λ* = (3√2 − 5)/5",
-            "(1 − 2√2)/((1+√2)(1+2·2√2·√2/2)) = (3√2 − 5)/5, exact with r² = 2",
+            &format!(
+                "λ* = (1 − M)/((1 + 2c)(1 + 2cM)), M = μ√μ = 2√2, c = √2/2: {}",
+                lambda.as_ref().map_or_else(|e| e.to_string(), |l| shown(l, "0.000000"))
+            ),
         ),
         Claim::compare(
             "§4 ex. 1: the cubic is b̄₀, (b̄₀+4b̄₁)/5, (2b̄₂+b̄₁)/3, b̄₂ with ω = 1, 5/6, 1, 1",
             &src,
             Verdict::Reproduced,
-            same_cubic,
+            cubic.as_ref().is_ok_and(|k| *k == want),
             "(1,0), (1,4/5), (1/3,1), (0,1); 1, 5/6, 1, 1",
-            &format!("the construction with c = √2/2, σ = √2 reduced mod r² = 2: {:?}", got.iter().map(|h| h.iter().map(|x| x.to_string()).collect::<Vec<_>>()).collect::<Vec<_>>()),
+            &format!(
+                "the standard cubic of λ* (σ = ∛(N/D) = √2): {}",
+                cubic.as_ref().map_or_else(|e| e.to_string(), cubic_text)
+            ),
         ),
         Claim::compare(
             "§4 ex. 1: the printed cubic lies on the unit circle and P(1/2) = (3/5, 4/5)",
             &src,
             Verdict::Reproduced,
-            circle.as_ref().is_ok_and(|c| c.center == q(0, 0) && c.radius_squared == ratio(1, 1))
-                && shoulder == vec![ratio(3, 5), ratio(4, 5)],
+            circle.as_ref().is_ok_and(|k| k.center == pt(int(0), int(0)) && k.radius_squared == int(1))
+                && shoulder.as_ref().is_ok_and(|s| *s == pt(ratio(3, 5), ratio(4, 5))),
             "unit circle, shoulder (3/5, 4/5)",
-            &format!("circle test: {circle:?}; P(1/2) = ({}, {})", shoulder[0], shoulder[1]),
+            &format!(
+                "circle test: {}; P(1/2) = {}",
+                circle.as_ref().map_or_else(
+                    |e| format!("{e:?}"),
+                    |k| format!("centre ({}, {}), R² = {}", k.center[0], k.center[1], k.radius_squared)
+                ),
+                shoulder.as_ref().map_or_else(|e| e.to_string(), |s| point_text(s, 6))
+            ),
         ),
         Claim::compare(
             "§4 ex. 1: eqs. (3), (4) give ω̄₁/ω̄₀ = 1, ω̄₁/ω̄₂ = 1/2",
             &src,
             Verdict::Reproduced,
-            ratio_ok,
+            ratios.as_ref().is_ok_and(|(a, b)| *a == int(1) && *b == ratio(1, 2)),
             "1 and 1/2",
-            "cσ = (√2/2)·√2 = 1, c/σ = 1/2 (r² = 2)",
+            &ratios.as_ref().map_or_else(
+                |e| e.to_string(),
+                |(a, b)| format!("the non-standard quadratic with σ = √2 has weights 1, cσ, σ²: ω̄₁/ω̄₀ = cσ = {a}, ω̄₁/ω̄₂ = c/σ = {b}"),
+            ),
         ),
         Claim::compare(
             "§4 ex. 1: μ = 1 for p* = (√2/2, √2/2)",
             &src,
             Verdict::Reproduced,
-            mu_star == Ok(ratio(1, 1)),
+            mu_star.as_ref().is_ok_and(|m| *m == int(1)),
             "μ = 1",
-            &format!("μ = {:?} (p* lies on the line through b̄₁ and (1/2, 1/2))", mu_star.map(|x| x.to_string())),
+            &format!("μ = {}", result_text(&mu_star)),
         ),
         Claim::compare(
             "§4 ex. 1: the parameter of p* = (√2/2, √2/2) is ū = 1/(2√2)",
             &src,
             Verdict::Mismatch,
-            on_curve(&printed_u),
-            "ū = 1/(2√2) ≈ 0.353553",
+            u_star.as_ref().is_ok_and(|u| *u == u_printed),
+            &format!("ū = 1/(2√2) = {}", shown(&u_printed, "0.000")),
             &format!(
-                "ū = √2 − 1 = 1/(1+√2) ≈ {:.6} (P(√2 − 1) = p* exactly with r² = 2: {}); at 1/(2√2) the cubic is at ({:.6}, {:.6}); the printed value is the radicand μ√μ·D/N = 1/(2√2) of eq. (10) without the cube root and X/(X+1)",
-                2f64.sqrt() - 1.0,
-                on_curve(&ours_u),
-                at_printed[0],
-                at_printed[1]
+                "ū = {} by eq. (10) (P(ū) = p* exactly: {}); at 1/(2√2) the cubic is at {}; the printed value is the radicand μ√μ·D/N = 1/(2√2) of eq. (10) without the cube root and X/(X+1)",
+                u_star.as_ref().map_or_else(|e| e.to_string(), |u| shown(u, "0.000")),
+                at_ours.as_ref().is_ok_and(|q| *q == p_star),
+                at_printed.as_ref().map_or_else(|e| e.to_string(), |q| point_text(q, 6)),
             ),
         ),
     ]
@@ -368,100 +429,113 @@ fn quarter_circle() -> Vec<Claim> {
 fn semicircle_example() -> Vec<Claim> {
     let src = format!("{SRC} §4 example 2");
     let arc = semicircle();
-    let p = vec![ratio::<BigRational>(1, 1), ratio(1, 1)];
-    let u_printed = parse_rational("0.5185900").expect("decimal");
+    let p = pt(int(1), int(1));
+    let fifth = ratio::<R>(1, 5);
     let mu = arc.mu_of_point(&p);
-    let lambda = arc.lambda_for_point(&p, &u_printed);
-    let lambda_f = lambda.as_ref().map(Ordered::to_f64).unwrap_or(f64::NAN);
-    let fp = arc.map(Ordered::to_f64);
-    let u_exact = fp.param_of_point(&[1.0, 1.0], &0.2).unwrap_or(f64::NAN);
-    // Control points at λ = 0.2, exactly: x(C₁) = w(C₁)·(0, 1.6), x(C₂) = w(C₂)·(2, 2.5) mod r³ = 0.8.
-    let sym = arc.map(|x| Poly::constant(x.clone()));
-    let cubic = sym.cubic_hom(&Poly::var("r"), &Poly::from_int(1));
-    let rel = Poly::constant(ratio(4, 5));
-    let lies = |i: usize, x: BigRational, y: BigRational| {
-        let h = &cubic.ctrl()[i];
-        [x, y].iter().enumerate().all(|(k, v)| {
-            (h.coords[k].clone() - &(h.weight().clone() * Poly::constant(v.clone())))
-                .reduce_power("r", 3, &rel)
-                .is_zero()
-        })
-    };
-    let ctrl_ok = lies(1, ratio(0, 1), ratio(8, 5)) && lies(2, ratio(2, 1), ratio(5, 2));
-    let pstar = vec![
-        parse_rational("0.8817").expect("x"),
-        parse_rational("0.9930").expect("y"),
-    ];
-    let mu_star = arc.mu_of_point(&pstar);
-    let mu_star_f = mu_star.as_ref().map(Ordered::to_f64).unwrap_or(f64::NAN);
-    let u_star = fp
-        .param_of_point(&[0.8817, 0.9930], &0.2)
-        .unwrap_or(f64::NAN);
-    // The exact shoulder A of λ = 0.3 (which p* rounds): ū/(1−ū) = σ(0.3)/σ(0.2).
-    let ratio_sigma = (0.7f64 / 0.8).cbrt();
-    let u_of_a = ratio_sigma / (1.0 + ratio_sigma);
+    let lambda = arc.lambda_for_point(&p, &exact("0.5185900"));
+    let u_exact = arc.param_of_point(&p, &fifth);
+    let cubic = cubic_of(&arc, &fifth);
+    let points = cubic
+        .as_ref()
+        .map_err(Clone::clone)
+        .and_then(RationalCurve::points);
+    let weights = cubic.as_ref().map(RationalCurve::weights);
+    let p_star = pt(exact("0.8817"), exact("0.9930"));
+    let mu_star = arc.mu_of_point(&p_star);
+    let u_star = arc.param_of_point(&p_star, &fifth);
+    // The exact shoulder A of λ = 0.3 (which p* rounds, Table 2) and its
+    // parameter on the cubic of λ = 0.2.
+    let u_of_a = cubic_of(&arc, &exact("0.3"))
+        .and_then(|k| k.eval(&ratio(1, 2)))
+        .and_then(|a| arc.param_of_point(&a, &fifth));
     vec![
         Claim::compare(
             "§4 ex. 2: μ = 1 for p = (1, 1)",
             &src,
             Verdict::Reproduced,
-            mu == Ok(ratio(1, 1)),
+            mu.as_ref().is_ok_and(|m| *m == int(1)),
             "μ = 1",
-            &format!("{:?}", mu.map(|x| x.to_string())),
+            &format!("μ = {}", result_text(&mu)),
         ),
-        Claim::compare(
+        decimal(
             "§4 ex. 2: eq. (8) with ū = 0.5185900 gives λ* = 0.2",
             &src,
             Verdict::Reproduced,
-            lambda.is_ok() && (lambda_f - 0.2).abs() <= 0.05,
-            "λ* = 0.2",
-            &format!("λ* = 1 − (1/ū − 1)³ = {lambda_f:.7} exactly from the printed ū"),
+            &lambda,
+            "0.2",
+            |_| " (λ* = 1 − (1/ū − 1)³ from the printed ū)".to_string(),
         ),
-        Claim::compare(
+        decimal(
             "§4 ex. 2: ū = 0.5185900 is the parameter of p = (1, 1) for λ* = 0.2",
             &src,
             Verdict::Mismatch,
-            f64_rounds_to(u_exact, "0.5185900"),
+            &u_exact,
             "0.5185900",
-            &format!("ū = 1/(1 + ∛0.8) = {u_exact:.7} (eq. 11); the printed ū carries 5 correct decimals"),
+            |u| {
+                format!(
+                    " (eq. 11: 1/(1 + ∛0.8)); the printed ū rounds correctly to 5 decimals, 0.51859: {}",
+                    rounds_to(u, "0.51859")
+                )
+            },
         ),
         Claim::compare(
             "§4 ex. 2: b₁* = b̄₀ + 1.6b, b₂* = b̄₂ + 2.5b at λ* = 0.2",
             &src,
             Verdict::Reproduced,
-            ctrl_ok,
+            points.as_ref().is_ok_and(|ps| {
+                ps[1] == pt(int(0), exact("1.6")) && ps[2] == pt(int(2), exact("2.5"))
+            }),
             "b̄₀ + 1.6b, b̄₂ + 2.5b",
-            "x(Cᵢ) = w(Cᵢ)·bᵢ* exactly, mod r³ = 4/5",
+            &format!(
+                "the standard cubic of λ = 1/5 (σ = ∛(4/5)): {}",
+                cubic.as_ref().map_or_else(|e| e.to_string(), cubic_text)
+            ),
         ),
         Claim::compare(
             "§4 ex. 2: ω₁ = 0.3868, ω₂ = 0.2873 at λ* = 0.2",
             &src,
             Verdict::Reproduced,
-            {
-                let (a, b) = omega_cubes(&BigRational::zero(), &ratio(1, 5));
-                cube_rounds_to(&a, "0.3868") && cube_rounds_to(&b, "0.2873")
-            },
+            weights
+                .as_ref()
+                .is_ok_and(|w| rounds_to(&w[1], "0.3868") && rounds_to(&w[2], "0.2873")),
             "0.3868, 0.2873",
-            "ω₁³ = 1/(27·0.8²), ω₂³ = 0.8²/27, rounded exactly",
+            &weights.as_ref().map_or_else(
+                |e| e.to_string(),
+                |w| {
+                    format!(
+                        "ω₁ = {}, ω₂ = {}",
+                        shown(&w[1], "0.3868"),
+                        shown(&w[2], "0.2873")
+                    )
+                },
+            ),
         ),
-        Claim::compare(
+        decimal(
             "§4 ex. 2: μ = 0.8817/(2 − 0.8817) = 0.7884288 for p* = (0.8817, 0.9930)",
             &src,
             Verdict::Mismatch,
-            mu_star.as_ref().is_ok_and(|m| {
-                let (v, h) = printed("0.7884288");
-                (m.clone() - v).abs() <= h
-            }),
+            &mu_star,
             "0.7884288",
-            &format!("μ = 8817/11183 = {mu_star_f:.9}, which rounds to 0.7884289 (the printed digits are truncated)"),
+            |m| {
+                format!(
+                    ", which rounds to {} (the printed digits are truncated)",
+                    m.to_decimal(7)
+                )
+            },
         ),
-        Claim::compare(
+        decimal(
             "§4 ex. 2: the parameter of p* = (0.8817, 0.9930) for λ* = 0.2 is ū = 0.488829",
             &src,
             Verdict::Mismatch,
-            f64_rounds_to(u_star, "0.488829"),
+            &u_star,
             "0.488829",
-            &format!("eq. (11) with μ = 8817/11183: ū = {u_star:.6} (the printed 0.488829 looks like a digit slip of 0.488883); for the exact shoulder A of λ = 0.3, which p* rounds, ū = {u_of_a:.6}"),
+            |u| {
+                format!(
+                    " (eq. 11 with μ = 8817/11183; the printed 0.488829 looks like a digit slip of {}); for the exact shoulder A of λ = 0.3, which p* rounds, ū = {}",
+                    u.to_decimal(6),
+                    u_of_a.as_ref().map_or_else(|e| e.to_string(), |v| shown(v, "0.488829")),
+                )
+            },
         ),
     ]
 }
@@ -471,10 +545,42 @@ mod tests {
     use super::*;
 
     #[test]
-    fn rounding_decisions() {
-        assert!(cube_rounds_to(&ratio(8, 1), "2.000"));
-        assert!(!cube_rounds_to(&ratio(8, 1), "2.001"));
-        assert!(f64_rounds_to(0.577351, "0.5774"));
-        assert!(!f64_rounds_to(0.57725, "0.5774"));
+    fn rounding_is_decided_exactly() {
+        let root3 = int(3).nth_root(2).unwrap();
+        let y = root3.recip(); // √3/3 = 0.57735…
+        assert!(rounds_to(&y, "0.5774"));
+        assert!(rounds_to(&y, "0.57735"));
+        assert!(!rounds_to(&y, "0.5773"));
+        assert!(!rounds_to(&y, "0.577351")); // 0.5773502…
+                                             // The rounding boundaries belong to the printed value.
+        assert!(rounds_to(&ratio(57735, 100_000), "0.5774"));
+        assert!(rounds_to(&ratio(57745, 100_000), "0.5774"));
+        assert!(!rounds_to(&ratio(577_451, 1_000_000), "0.5774"));
+        // ∛2 = 1.25992104989…: right at 7 digits, wrong when truncated.
+        let cbrt2 = int(2).nth_root(3).unwrap();
+        assert!(rounds_to(&cbrt2, "1.2599210"));
+        assert!(!rounds_to(&cbrt2, "1.2599211"));
+        assert!(rounds_to(&int(1), "1"));
+        assert!(rounds_to(&int(1), "1.0"));
+    }
+
+    #[test]
+    fn detail_shows_exact_and_decimal_values() {
+        let y = int(3).nth_root(2).unwrap().recip();
+        assert_eq!(shown(&y, "0.5774"), "sqrt(3)/3 ≈ 0.5773503");
+        let claim = decimal("c", "s", Verdict::Mismatch, &Ok(y), "0.5773", |_| {
+            String::new()
+        });
+        assert_eq!(claim.verdict, Verdict::Mismatch);
+        assert_eq!(claim.detail, "printed 0.5773; ours sqrt(3)/3 ≈ 0.5773503");
+        let failed = decimal(
+            "c",
+            "s",
+            Verdict::Reproduced,
+            &Err(Error::Domain("no".into())),
+            "1",
+            |_| String::new(),
+        );
+        assert_eq!(failed.verdict, Verdict::Broken);
     }
 }
