@@ -28,10 +28,11 @@
 //! `b₂* = (N·b̄₂ + 2cD·b̄₁)/(kE)` (eq. 1, checked in `proofs/hang_li.rs`).
 //! λ is admissible (positive weights) iff `N, D, E > 0`.
 //!
-//! Exactness: [`Roots`] gives exact cube and square roots for `BigRational`
-//! (when they are rational) and rounded ones for `f64`;
-//! [`QuadArc::cubic_for_lambda`] computes exactly when every quantity is
-//! rational and falls back to `f64` otherwise, saying which ([`ArcCubic`]).
+//! Exactness: [`Roots`] gives exact cube and square roots for
+//! [`RealAlgebraic`](crate::algebra::RealAlgebraic) (always), for
+//! `BigRational` when they are rational ([`Error::NotRational`] otherwise),
+//! and rounded ones for `f64`; the `arc` command computes over the real
+//! algebraic numbers, so every λ gives an exact cubic.
 //!
 //! Reference: source 004 (Hang & Li 2011) §1–§3.
 
@@ -43,7 +44,6 @@ use crate::algebra::scalar::{ratio, Field, Ordered, Roots, Scalar, Tolerance};
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use num_rational::BigRational;
 
 /// A circular arc as a rational quadratic Bézier curve with weights
 /// `1, c, 1`, `c = cos(θ/2)`; for `θ = π` the middle point is the direction
@@ -505,151 +505,42 @@ pub fn lambda_of_sigma_cubed<T: Field>(c: &T, m: &T) -> Result<T, Error> {
     Ok((one - m) / &den)
 }
 
-/// A result computed exactly when every quantity is rational, else in `f64`
-/// — the variant says which.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Computed<E, A> {
-    /// Every quantity was rational: the exact result.
-    Exact(E),
-    /// A root was irrational: the result computed in `f64`.
-    Approx(A),
-}
-
-impl<E, A> Computed<E, A> {
-    /// Was the result computed exactly?
-    pub fn is_exact(&self) -> bool {
-        matches!(self, Computed::Exact(_))
-    }
-
-    /// Try `exact`; on [`Error::NotRational`] compute `approx` instead.
-    ///
-    /// # Errors
-    ///
-    /// Any other error of `exact`, or the error of `approx`.
-    pub fn exact_or(
-        exact: Result<E, Error>,
-        approx: impl FnOnce() -> Result<A, Error>,
-    ) -> Result<Self, Error> {
-        match exact {
-            Ok(e) => Ok(Computed::Exact(e)),
-            Err(Error::NotRational(_)) => approx().map(Computed::Approx),
-            Err(e) => Err(e),
-        }
-    }
-}
-
-impl Computed<BigRational, f64> {
-    /// The value in `f64` (rounded if exact).
-    pub fn to_f64(&self) -> f64 {
-        match self {
-            Computed::Exact(x) => x.to_f64(),
-            Computed::Approx(x) => *x,
-        }
-    }
-}
-
-/// The standard cubic of an exact arc, exact or in `f64`.
-pub type ArcCubic = Computed<RationalCurve<BigRational>, RationalCurve<f64>>;
-
-impl ArcCubic {
-    /// The cubic in `f64` (rounded from the exact one if exact).
-    pub fn to_f64(&self) -> RationalCurve<f64> {
-        match self {
-            Computed::Exact(c) => c.map(Ordered::to_f64),
-            Computed::Approx(c) => c.clone(),
-        }
-    }
-}
-
-/// # The λ-family from an exact arc
-impl QuadArc<BigRational> {
+/// # The λ-family
+impl<T: Roots> QuadArc<T> {
     /// The standard-form cubic of source 004 eq. (1) (eq. (2) for θ = π) for
-    /// `λ`: exact when `σ = ∛(N/D)` is rational (decided exactly), else
-    /// computed in `f64`, as [`ArcCubic`] says.
+    /// `λ`: `σ = ∛(N/D)` ([`sigma_of_lambda`]), then
+    /// [`standard_cubic`](Self::standard_cubic). Exact over
+    /// [`RealAlgebraic`](crate::algebra::RealAlgebraic) for every admissible
+    /// λ; over `BigRational` only when σ is rational.
     ///
     /// # Errors
     ///
-    /// [`Error::Domain`] if θ ∉ (0, 4π/3) or λ is not admissible.
+    /// [`Error::Domain`] if θ ∉ (0, 4π/3) or λ is not admissible;
+    /// [`Error::NotRational`] over `BigRational` when σ is irrational.
     ///
     /// ```
-    /// use exact_bezier::{arc::ArcCubic, arc::QuadArc, ratio, Tolerance};
+    /// use exact_bezier::{algebra::RealAlgebraic, arc::QuadArc, ratio, Scalar, Tolerance};
     /// use num_rational::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
-    /// assert!(arc.cubic_for_lambda(&ratio(-7, 1)).unwrap().is_exact());    // σ³ = 8
-    /// assert!(!arc.cubic_for_lambda(&ratio(1, 5)).unwrap().is_exact());    // σ³ = 4/5
+    /// assert!(arc.cubic_for_lambda(&ratio(-7, 1)).is_ok());                // σ³ = 8
+    /// assert!(arc.cubic_for_lambda(&ratio(1, 5)).is_err());                // σ³ = 4/5
     /// assert!(arc.cubic_for_lambda(&ratio(1, 1)).is_err());                // λ < 1 needed
+    /// // Over the real algebraic numbers every admissible λ is exact:
+    /// // ω₂ = σ²/3 = ∛(16/25)/3 at λ = 1/5.
+    /// let exact = arc.map(RealAlgebraic::from_rational);
+    /// let cubic = exact.cubic_for_lambda(&RealAlgebraic::from_rational(&ratio(1, 5))).unwrap();
+    /// assert_eq!(cubic.weights()[2], "cbrt(16/25)/3".parse::<RealAlgebraic>().unwrap());
     /// ```
-    pub fn cubic_for_lambda(&self, lambda: &BigRational) -> Result<ArcCubic, Error> {
-        let exact = sigma_of_lambda(self.cos_half(), lambda).and_then(|s| self.standard_cubic(&s));
-        Computed::exact_or(exact, || {
-            let arc = self.map(Ordered::to_f64);
-            let sigma = sigma_of_lambda(arc.cos_half(), &lambda.to_f64())?;
-            arc.standard_cubic(&sigma)
-        })
-    }
-
-    /// [`QuadArc::lambda_for_point`] (source 004 eq. 7), exact when `√μ` is
-    /// rational, else in `f64`.
-    ///
-    /// # Errors
-    ///
-    /// As [`QuadArc::lambda_for_point`], except [`Error::NotRational`].
-    ///
-    /// ```
-    /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
-    /// use num_rational::BigRational;
-    /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
-    /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
-    /// // (8/5, 4/5) has μ = 4: exact.
-    /// let l = arc.lambda_for_point_or_f64(&[ratio(8, 5), ratio(4, 5)], &ratio(1, 2)).unwrap();
-    /// assert!(l.is_exact());
-    /// assert_eq!(l.to_f64(), -7.0); // σ = 2·1 = 2, λ = 1 − 8
-    /// ```
-    pub fn lambda_for_point_or_f64(
-        &self,
-        p: &[BigRational],
-        u_bar: &BigRational,
-    ) -> Result<Computed<BigRational, f64>, Error> {
-        Computed::exact_or(self.lambda_for_point(p, u_bar), || {
-            let pf: Vec<f64> = p.iter().map(Ordered::to_f64).collect();
-            self.map(Ordered::to_f64)
-                .lambda_for_point(&pf, &u_bar.to_f64())
-        })
-    }
-
-    /// [`QuadArc::param_of_point`] (source 004 eqs. 10, 11), exact when
-    /// `σ/√μ` is rational, else in `f64`.
-    ///
-    /// # Errors
-    ///
-    /// As [`QuadArc::param_of_point`], except [`Error::NotRational`].
-    ///
-    /// ```
-    /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
-    /// use num_rational::BigRational;
-    /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
-    /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
-    /// let u = arc.param_of_point_or_f64(&p(1, 1), &ratio(1, 5)).unwrap();
-    /// assert!(!u.is_exact()); // 1/(1 + ∛0.8)
-    /// assert!((u.to_f64() - 0.5185867).abs() < 1e-7);
-    /// ```
-    pub fn param_of_point_or_f64(
-        &self,
-        p: &[BigRational],
-        lambda: &BigRational,
-    ) -> Result<Computed<BigRational, f64>, Error> {
-        Computed::exact_or(self.param_of_point(p, lambda), || {
-            let pf: Vec<f64> = p.iter().map(Ordered::to_f64).collect();
-            self.map(Ordered::to_f64)
-                .param_of_point(&pf, &lambda.to_f64())
-        })
+    pub fn cubic_for_lambda(&self, lambda: &T) -> Result<RationalCurve<T>, Error> {
+        self.standard_cubic(&sigma_of_lambda(self.cos_half(), lambda)?)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use num_rational::BigRational;
 
     fn q(p: i64, d: i64) -> BigRational {
         ratio(p, d)

@@ -1,7 +1,8 @@
 //! `mesh FILE... -o OUT.obj|OUT.stl|OUT.ply [--density N] [--scalar exact|f64]`.
 
-use super::{charge_each, load, patch_f64, ScalarKind};
+use super::{charge_each, load_all_exact, on_exact, patch_f64, ExactScalar, ScalarKind};
 use crate::error::Error;
+use crate::io::Patch;
 use crate::limits::MAX_MESH_VERTICES;
 use crate::render::mesh::Mesh;
 use serde_json::{json, Value};
@@ -25,10 +26,11 @@ pub struct Args {
 
 /// Write the mesh; reports `{"output", "vertices", "triangles"}`.
 pub fn run(a: &Args) -> Result<Value, Error> {
-    let mut patches = Vec::new();
-    for f in &a.files {
-        patches.extend(load(f)?);
-    }
+    on_exact!(load_all_exact(&a.files)?, patches => mesh_of(a, &patches))
+}
+
+/// Mesh `patches` and write the output file of `a`.
+fn mesh_of<T: ExactScalar>(a: &Args, patches: &[Patch<T>]) -> Result<Value, Error> {
     let n1 = a.density as u64 + 1;
     let vertices = patches.len() as u64 * n1 * n1;
     if vertices > MAX_MESH_VERTICES {
@@ -41,7 +43,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     // A point, two partial derivatives and a normal per vertex, at
     // parameters i/N (measured: about 4 evaluations' work).
     let param_bits = 2 * (64 - n1.leading_zeros() as u64);
-    charge_each("mesh", &patches, a.scalar, |s| {
+    charge_each("mesh", patches, a.scalar, |s| {
         let (ops, bits) = (
             12 * s.eval_ops(),
             s.grown_bits(s.total_degree(), param_bits),
@@ -49,7 +51,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         (ops.saturating_mul(n1 * n1), bits)
     })?;
     let mesh = match a.scalar {
-        ScalarKind::Exact => Mesh::from_patches(&patches, a.density)?,
+        ScalarKind::Exact => Mesh::from_patches(patches, a.density)?,
         ScalarKind::F64 => {
             let pf = patches
                 .iter()

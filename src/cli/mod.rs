@@ -162,7 +162,7 @@ enum Command {
     Reduce(reduce::Args),
     /// A circular arc as a standard-form rational cubic (source 004 eq. 1).
     #[command(
-        after_help = "λ picks one member of the family of standard-form cubics of the same arc. It is admissible (all weights positive) iff 1 − λk > 0, 1 + 2λck > 0 and 1 − λ(1 − 4c²) > 0, with c = cos(θ/2) and k = 1 + 2c: λ in (−1/(2ck), 1/k) for 0 < θ < π, and λ < 1/(1 − 4c²) for π ≤ θ < 4π/3.\n\nExample: exact-bezier arc --cos-half 1/2 --lambda 0 --points '1,0;1,1;0,1'"
+        after_help = "λ picks one member of the family of standard-form cubics of the same arc. It is admissible (all weights positive) iff 1 − λk > 0, 1 + 2λck > 0 and 1 − λ(1 − 4c²) > 0, with c = cos(θ/2) and k = 1 + 2c: λ in (−1/(2ck), 1/k) for 0 < θ < π, and λ < 1/(1 − 4c²) for π ≤ θ < 4π/3.\n\nExample: exact-bezier arc --cos-half 'sqrt(2)/2' --lambda 0 --points '1,0;1,1;0,1'"
     )]
     Arc(arc::Args),
     /// Does a curve lie on a circle? Exact centre and radius², or the reason.
@@ -627,6 +627,24 @@ impl ExactPatches {
     pub(crate) fn len(&self) -> usize {
         on_exact!(self, p => p.len())
     }
+}
+
+/// The patches of every file of `paths`, in order: rational if they all
+/// are, else all lifted to the real algebraic numbers.
+pub(crate) fn load_all_exact(paths: &[String]) -> Result<ExactPatches, Error> {
+    let files = paths
+        .iter()
+        .map(|p| load_exact(p))
+        .collect::<Result<Vec<_>, _>>()?;
+    if files.iter().all(|f| matches!(f, ExactPatches::Rational(_))) {
+        let all = files.into_iter().flat_map(|f| match f {
+            ExactPatches::Rational(p) => p,
+            ExactPatches::Algebraic(_) => Vec::new(),
+        });
+        return Ok(ExactPatches::Rational(all.collect()));
+    }
+    let all = files.into_iter().flat_map(ExactPatches::into_algebraic);
+    Ok(ExactPatches::Algebraic(all.collect()))
 }
 
 /// Read the exact patches of `path` (see [`ExactPatches::parse`]); an empty

@@ -2,12 +2,12 @@
 //! [--width W] [--height H] [--iso N] [--samples S] [--speed] [--no-net]
 //! [--split diagonal|a,b,c,d,e,f] [--title T]`.
 
-use super::{charge_each, load, ScalarKind};
+use super::{charge_each, load_all_exact, on_exact, ExactScalar, ScalarKind};
 use crate::error::Error;
 use crate::io::Patch;
 use crate::limits::{MAX_PIXELS, MAX_PLOT_POINTS};
 use crate::render::plot::{plot_png, plot_svg, PlotOptions, Projection, Split};
-use num_rational::BigRational;
+
 use serde_json::{json, Value};
 
 /// Arguments of `plot`.
@@ -79,16 +79,21 @@ impl Args {
 /// Write the picture; reports `{"output": OUT, "format": "svg"|"png", "patches": n}`.
 pub fn run(a: &Args) -> Result<Value, Error> {
     let opts = a.options()?;
-    let mut patches = Vec::new();
-    for f in &a.files {
-        patches.extend(load(f)?);
-    }
-    check_plot_size(&patches, &opts)?;
+    on_exact!(load_all_exact(&a.files)?, patches => plot_to(a, &patches, &opts))
+}
+
+/// Draw `patches` into the output file of `a`.
+fn plot_to<T: ExactScalar>(
+    a: &Args,
+    patches: &[Patch<T>],
+    opts: &PlotOptions,
+) -> Result<Value, Error> {
+    check_plot_size(patches, opts)?;
     let lower = a.output.to_ascii_lowercase();
     let (bytes, format) = if lower.ends_with(".svg") {
-        (plot_svg(&patches, &opts)?.into_bytes(), "svg")
+        (plot_svg(patches, opts)?.into_bytes(), "svg")
     } else if lower.ends_with(".png") {
-        (plot_png(&patches, &opts)?, "png")
+        (plot_png(patches, opts)?, "png")
     } else {
         return Err(Error::Format(format!(
             "the output {:?} must end in .svg or .png",
@@ -102,7 +107,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 /// Refuse pictures over [`MAX_PIXELS`] or [`MAX_PLOT_POINTS`] sample
 /// points (curves, iso-lines both ways, speed dots), then charge the `f64`
 /// evaluations of the samples.
-fn check_plot_size(patches: &[Patch<BigRational>], opts: &PlotOptions) -> Result<(), Error> {
+fn check_plot_size<T: ExactScalar>(patches: &[Patch<T>], opts: &PlotOptions) -> Result<(), Error> {
     let pixels = u64::from(opts.width) * u64::from(opts.height);
     if pixels > MAX_PIXELS {
         return Err(Error::Limit(format!(

@@ -6,14 +6,15 @@
 use crate::common::cli;
 use exact_bezier::strategy::point;
 use exact_bezier::{
-    arc::check_lambda, arc::lambda_change_delta, arc::lambda_change_param,
-    arc::lambda_of_sigma_cubed, arc::ArcCubic, arc::QuadArc, curve::circle_of, ratio,
-    RationalCurve, Scalar, Tolerance,
+    algebra::RealAlgebraic, arc::check_lambda, arc::lambda_change_delta, arc::lambda_change_param,
+    arc::lambda_of_sigma_cubed, arc::QuadArc, curve::circle_of, ratio, Field, RationalCurve,
+    Scalar, Tolerance,
 };
 use num_rational::BigRational;
 use proptest::prelude::*;
 
 type Q = BigRational;
+type A = RealAlgebraic;
 
 /// A half-angle with rational cos and sin, θ ∈ (0, 4π/3): τ = tan(θ/4) < √3.
 fn half_angle() -> impl Strategy<Value = (Q, Q)> {
@@ -45,10 +46,8 @@ fn lambda_of(arc: &QuadArc<Q>, sigma: &Q) -> Option<Q> {
 }
 
 fn exact(arc: &QuadArc<Q>, l: &Q) -> RationalCurve<Q> {
-    match arc.cubic_for_lambda(l).unwrap() {
-        ArcCubic::Exact(c) => c,
-        ArcCubic::Approx(_) => panic!("perfect-cube radicand computed in f64"),
-    }
+    arc.cubic_for_lambda(l)
+        .expect("a perfect-cube radicand gives a rational σ")
 }
 
 proptest! {
@@ -115,19 +114,52 @@ fn lambda_outside_interval_is_a_typed_error() {
     );
 }
 
+/// σ³ = 4/5 is not a rational cube: over Q the cubic is refused as
+/// `NotRational`; over the real algebraic numbers it is exact, with the hand
+/// values of eq. (2) for the semicircle of radius 1: ω₁ = 1/(3σ²),
+/// ω₂ = σ²/3 (σ² = ∛(16/25)), b₁* = (0, 8/5), b₂* = (2, 5/2) — the inner
+/// control points rational although the weights are not.
 #[test]
-fn irrational_radicand_falls_back_to_f64() {
+fn irrational_radicand_is_exact_over_the_algebraic_numbers() {
     let p = |x: i64, y: i64| vec![q(x, 1), q(y, 1)];
     let half = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
-    let cubic = half.cubic_for_lambda(&q(1, 5)).unwrap();
-    assert!(!cubic.is_exact());
-    // Hand values: ω₁ = 1/(3·0.8^{2/3}), ω₂ = 0.8^{2/3}/3, b₁* = (0, 1.6), b₂* = (2, 2.5).
-    let c = cubic.to_f64();
-    let w = c.weights();
-    assert!((w[1] - 1.0 / (3.0 * 0.8f64.powf(2.0 / 3.0))).abs() < 1e-12);
-    assert!((w[2] - 0.8f64.powf(2.0 / 3.0) / 3.0).abs() < 1e-12);
+    assert!(matches!(
+        half.cubic_for_lambda(&q(1, 5)),
+        Err(exact_bezier::Error::NotRational(_))
+    ));
+    let alg = half.map(A::from_rational);
+    let c = alg.cubic_for_lambda(&A::from_rational(&q(1, 5))).unwrap();
+    let a = |s: &str| s.parse::<A>().unwrap();
+    let sigma2 = a("cbrt(16/25)");
+    assert_eq!(c.weights()[1], (A::from_i64(3) * &sigma2).recip());
+    assert_eq!(c.weights()[2], sigma2 / &A::from_i64(3));
     let pts = c.points().unwrap();
-    assert!((pts[1][1] - 1.6).abs() < 1e-12 && (pts[2][1] - 2.5).abs() < 1e-12);
+    assert_eq!(pts[1], vec![a("0"), a("8/5")]);
+    assert_eq!(pts[2], vec![a("2"), a("5/2")]);
+}
+
+/// The command line gives Table 1's first row exactly (b̄₁ = (1, √3) read as
+/// algebraic text; source 004 prints ω₁ = 0.6614, ω₂ = 1.0499). By hand,
+/// c = 1/2, λ = −3/10: k = 2, N = 8/5, D = 2/5, E = 1, σ³ = N/D = 4, so
+/// ω₁ = kσ/(3N) = 5σ/12 and ω₂ = kE/(3Dσ) = 5/(3σ): ω₁³ = 125/432 and
+/// ω₂³ = 125/108.
+#[test]
+fn cli_arc_is_exact_for_table_1() {
+    let (code, out, err) = cli(&[
+        "arc",
+        "--cos-half",
+        "1/2",
+        "--lambda",
+        "-0.3",
+        "--points",
+        "1,0;1,sqrt(3);-1/2,sqrt(3)/2",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["exact"], true);
+    let w = |k: usize| v["weights"][k].as_str().unwrap().parse::<A>().unwrap();
+    assert_eq!(w(1).pow_u32(3), A::from_rational(&q(125, 432)));
+    assert_eq!(w(2).pow_u32(3), A::from_rational(&q(125, 108)));
 }
 
 #[test]
