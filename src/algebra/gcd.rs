@@ -42,10 +42,8 @@ pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
             let (x, y) = (a.to_u128().unwrap_or(0), b.to_u128().unwrap_or(0));
             return BigUint::from(gcd_u128(x, y));
         }
-        let shift = a.bits() - 64;
-        let x = (&a >> shift).to_u64().unwrap_or(0);
-        let y = (&b >> shift).to_u64().unwrap_or(0);
-        let [m00, m01, m10, m11] = cosequence(x, y);
+        let shift = a.bits() - LEAD_BITS;
+        let [m00, m01, m10, m11] = cosequence(leading(&a, shift), leading(&b, shift));
         if m01 == 0 {
             let r = &a % &b;
             a = b;
@@ -59,11 +57,28 @@ pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
     a
 }
 
+/// Bits of the leading parts Lehmer's inner loop runs on: 62, so that the
+/// parts, the cofactors (bounded by the parts) and their sums fit `i64`
+/// and every quotient is one machine division.
+const LEAD_BITS: u64 = 62;
+
+/// `⌊n / 2^shift⌋` for a shift that leaves at most 64 bits, read from the
+/// two digits it spans (no shifted copy of `n`).
+fn leading(n: &BigUint, shift: u64) -> u64 {
+    let (word, bit) = ((shift / 64) as usize, (shift % 64) as u32);
+    let mut digits = n.iter_u64_digits().skip(word);
+    let low = digits.next().unwrap_or(0);
+    let high = digits.next().unwrap_or(0);
+    let wide = (u128::from(high) << 64) | u128::from(low);
+    (wide >> bit) as u64
+}
+
 /// The matrix `(A, B, C, D)` of the quotients of Euclid on `(x, y)` that
-/// are certain to be those of the full numbers (Knuth's Algorithm L).
-fn cosequence(x: u64, y: u64) -> [i128; 4] {
-    let (mut x, mut y) = (i128::from(x), i128::from(y));
-    let (mut a, mut b, mut c, mut d) = (1i128, 0i128, 0i128, 1i128);
+/// are certain to be those of the full numbers (Knuth's Algorithm L);
+/// `x, y < 2⁶²`, so every entry and sum fits `i64`.
+fn cosequence(x: u64, y: u64) -> [i64; 4] {
+    let (mut x, mut y) = (x as i64, y as i64);
+    let (mut a, mut b, mut c, mut d) = (1i64, 0i64, 0i64, 1i64);
     while y + c != 0 && y + d != 0 {
         let q = (x + a) / (y + c);
         if q != (x + b) / (y + d) {
@@ -76,12 +91,22 @@ fn cosequence(x: u64, y: u64) -> [i128; 4] {
     [a, b, c, d]
 }
 
-/// `gcd(x, y)` on machine words, by Euclid.
-fn gcd_u128(mut x: u128, mut y: u128) -> u128 {
-    while y != 0 {
-        (x, y) = (y, x % y);
+/// `gcd(x, y)` on machine words, by Stein's binary algorithm (shifts and
+/// subtractions: no 128-bit division).
+fn gcd_u128(x: u128, y: u128) -> u128 {
+    if x == 0 || y == 0 {
+        return x | y;
     }
-    x
+    let twos = (x | y).trailing_zeros();
+    let (mut x, mut y) = (x >> x.trailing_zeros(), y);
+    while y != 0 {
+        y >>= y.trailing_zeros();
+        if x > y {
+            std::mem::swap(&mut x, &mut y);
+        }
+        y -= x;
+    }
+    x << twos
 }
 
 /// The fraction `numer/denom` in lowest terms with a positive denominator,
