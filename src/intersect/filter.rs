@@ -69,8 +69,10 @@ impl Filtered {
 
 /// Depth of the interval subdivision: parameter boxes down to `2⁻¹⁶`.
 const FILTER_DEPTH: usize = 16;
-/// The most box pairs kept at one depth before the filter gives up.
-const FILTER_PAIRS: usize = 64;
+/// The most box pairs kept at one depth before the filter gives up (high
+/// degrees need many: two random degree-20 curves with 8 crossings are
+/// not decided within 64).
+const FILTER_PAIRS: usize = 1024;
 
 /// A homogeneous control polygon of `f64` boxes.
 type Boxes = Vec<Vec<Interval>>;
@@ -292,14 +294,42 @@ pub fn intersect_filtered(
     a: &RationalCurve<BigRational>,
     b: &RationalCurve<BigRational>,
 ) -> Result<Filtered, Error> {
-    if a.dim() == b.dim() && a.dim() >= 2 {
-        a.check_positive_weights()?;
-        b.check_positive_weights()?;
-        if let Some(found) = decide(a, b) {
-            return Ok(Filtered::Certified(found));
-        }
+    match certify_crossings(a, b)? {
+        Some(found) => Ok(Filtered::Certified(found)),
+        None => intersect(a, b).map(Filtered::Exact),
     }
-    intersect(a, b).map(Filtered::Exact)
+}
+
+/// The interval stage of [`intersect_filtered`] alone: `Some(crossings)`
+/// when `f64` interval arithmetic decides the pair (empty when the curves
+/// are separated), `None` when the exact elimination is needed (or the
+/// curves are not of one dimension ≥ 2). Its cost is bounded whatever the
+/// degrees — at most 16 levels of 1024 piece pairs, each a de Casteljau
+/// split of interval nets — so a caller can
+/// run it before paying for the exact path (the CLI does).
+///
+/// ```
+/// use exact_bezier::{intersect::certify_crossings, RationalCurve, ratio};
+/// use num_rational::BigRational;
+/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+/// let a = RationalCurve::polynomial(vec![p(0, 0), p(1, 2), p(2, 0)]).unwrap();
+/// let touching = RationalCurve::polynomial(vec![p(0, 1), p(2, 1)]).unwrap(); // tangent at (1, 1)
+/// assert!(certify_crossings(&a, &touching).unwrap().is_none());
+/// ```
+///
+/// # Errors
+///
+/// [`Error::Weight`] for a non-positive weight.
+pub fn certify_crossings(
+    a: &RationalCurve<BigRational>,
+    b: &RationalCurve<BigRational>,
+) -> Result<Option<Vec<CertifiedCrossing>>, Error> {
+    if a.dim() != b.dim() || a.dim() < 2 {
+        return Ok(None);
+    }
+    a.check_positive_weights()?;
+    b.check_positive_weights()?;
+    Ok(decide(a, b))
 }
 
 /// An approximate intersection from [`intersect_approx`].
@@ -464,10 +494,32 @@ pub fn intersect_approx(
         .sqrt();
     let leaf = tol.max((tol * diameter).sqrt());
     let leaves = close_leaves(pa, pb, tol, leaf)?;
-    Ok(clusters(&leaves)
+    let found = clusters(&leaves)
         .into_iter()
-        .filter_map(|c| cluster_result(a, b, &c, tol))
-        .collect())
+        .filter_map(|c| cluster_result(a, b, &c, tol).map(|x| (x, c.range)))
+        .collect();
+    Ok(distinct(found))
+}
+
+/// Drop an intersection that Newton refined onto the root of an earlier
+/// one — two clusters that do not touch can still converge to one root —
+/// judged in parameters, at the resolution of the search: `s` and `t`
+/// each within the wider of the two clusters' extents. Overlaps are kept.
+fn distinct(found: Vec<(ApproxIntersection, [f64; 4])>) -> Vec<ApproxIntersection> {
+    let mut kept: Vec<(ApproxIntersection, [f64; 4])> = Vec::new();
+    for (x, r) in found {
+        let same = |(y, q): &(ApproxIntersection, [f64; 4])| {
+            let near = |d: f64, w: f64| d.abs() <= w;
+            x.overlap.is_none()
+                && y.overlap.is_none()
+                && near(x.s - y.s, (r[1] - r[0]).max(q[1] - q[0]))
+                && near(x.t - y.t, (r[3] - r[2]).max(q[3] - q[2]))
+        };
+        if !kept.iter().any(same) {
+            kept.push((x, r));
+        }
+    }
+    kept.into_iter().map(|(x, _)| x).collect()
 }
 
 /// Leaf pairs `(s0, s1, t0, t1)` whose boxes stay within `tol` of each

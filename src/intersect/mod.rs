@@ -49,8 +49,8 @@ mod overlap;
 mod system;
 
 pub use filter::{
-    intersect_approx, intersect_filtered, ApproxIntersection, CertifiedCrossing, DecidedBy,
-    Filtered,
+    certify_crossings, intersect_approx, intersect_filtered, ApproxIntersection, CertifiedCrossing,
+    DecidedBy, Filtered,
 };
 pub use overlap::Mobius;
 

@@ -165,3 +165,66 @@ fn misuse_is_a_typed_error() {
         assert!(out.is_empty() && err.contains(says), "{all:?}: {err}");
     }
 }
+
+/// Two degree-12 curves: the exact path is over the default work budget,
+/// but `--filtered` charges only its bounded interval stage first and
+/// decides them there. Checked against the independent `f64` search
+/// (subdivision and Newton): as many crossings, each `f64` root inside
+/// exactly one certified box (widened by the `f64` search's own 10⁻⁹).
+#[test]
+fn filtered_decides_high_degree_pairs_within_the_default_budget() {
+    let (a, b) = (
+        "tests/fixtures/degree12_a.json",
+        "tests/fixtures/degree12_b.json",
+    );
+    let (code, _, err) = cli(&["intersect", a, b]);
+    assert_eq!(code, 2, "the exact path should be over the budget");
+    assert!(err.contains("--max-work"), "{err}");
+    let (code, v) = cli_json(&["intersect", a, b, "--filtered"]);
+    assert_eq!(code, 0, "{v}");
+    assert_eq!(v["decided_by"], "intervals");
+    let boxes = v["crossings"].as_array().unwrap();
+    let (code, f) = cli_json(&["intersect", a, b, "--scalar", "f64"]);
+    assert_eq!(code, 0, "{f}");
+    let roots = f["intersections"].as_array().unwrap();
+    assert_eq!(boxes.len(), roots.len());
+    assert!(boxes.len() >= 2, "the fixture crosses several times");
+    let within = |r: &Value, iv: &Value| {
+        let (x, lo, hi) = (
+            r.as_f64().unwrap(),
+            iv[0].as_f64().unwrap(),
+            iv[1].as_f64().unwrap(),
+        );
+        lo - 1e-9 <= x && x <= hi + 1e-9
+    };
+    for r in roots {
+        let hits = boxes
+            .iter()
+            .filter(|bx| within(&r["s"], &bx["s"]) && within(&r["t"], &bx["t"]))
+            .count();
+        assert_eq!(hits, 1, "root {r} in {hits} boxes");
+    }
+}
+
+/// The `f64` search reports each crossing once: on two degree-20 curves two
+/// clusters of close pieces that do not touch converged by Newton to one
+/// root and came out twice; now its roots are pairwise distinct and as many
+/// as the certified boxes of `--filtered`.
+#[test]
+fn the_f64_search_reports_each_crossing_once() {
+    let (a, b) = (
+        "tests/fixtures/degree20_a.json",
+        "tests/fixtures/degree20_b.json",
+    );
+    let (_, v) = cli_json(&["intersect", a, b, "--filtered"]);
+    let (_, f) = cli_json(&["intersect", a, b, "--scalar", "f64"]);
+    let roots = f["intersections"].as_array().unwrap();
+    assert_eq!(roots.len(), v["crossings"].as_array().unwrap().len());
+    let st = |r: &Value| (r["s"].as_f64().unwrap(), r["t"].as_f64().unwrap());
+    for (k, x) in roots.iter().enumerate() {
+        for y in &roots[..k] {
+            let ((s1, t1), (s2, t2)) = (st(x), st(y));
+            assert!((s1 - s2).abs() + (t1 - t2).abs() > 1e-6, "{x} repeats {y}");
+        }
+    }
+}
