@@ -163,12 +163,14 @@ impl<T: Field> UPoly<T> {
     }
 
     /// The monic greatest common divisor (zero iff both are zero), by
-    /// Euclid's algorithm.
+    /// Euclid's algorithm with every remainder made monic (over Q and over
+    /// number fields this keeps the coefficients from growing with each
+    /// step).
     pub fn gcd(&self, other: &Self) -> Self {
-        let (mut a, mut b) = (self.clone(), other.clone());
+        let (mut a, mut b) = (self.clone(), other.monic());
         while let Some((_, r)) = a.div_rem(&b) {
             a = b;
-            b = r;
+            b = r.monic();
         }
         a.monic()
     }

@@ -29,6 +29,7 @@ use crate::algebra::modp::Fp;
 use crate::algebra::scalar::{binomial_scalar, Field, Ordered, Scalar, Tolerance};
 use crate::algebra::upoly::{BPoly, UPoly};
 use crate::algebra::RealAlgebraic;
+use crate::coincide::coprime::coprime_by_intervals;
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
@@ -268,8 +269,8 @@ pub struct Minimal<P, T = BigRational> {
 /// exact bivariate gcd when it can prove there is no common factor.
 ///
 /// Implemented for `BigRational` (certificates modulo `p = 2⁶¹ − 1`) and
-/// for [`RealAlgebraic`] (no certificate: the gcd is always computed,
-/// exactly, over the real algebraic numbers).
+/// for [`RealAlgebraic`] (certificates by interval resultants; when they
+/// fail, the gcd is computed exactly over the real algebraic numbers).
 pub trait Reducible: Ordered + std::fmt::Display {
     /// A proof that `net` is already of minimal bidegree; `false` only
     /// means "not certified".
@@ -295,13 +296,20 @@ impl Reducible for BigRational {
     }
 }
 
+/// Certificates by interval arithmetic ([`coprime_by_intervals`]): the
+/// actual degree is read exactly, coprimality from interval resultants.
 impl Reducible for RealAlgebraic {
-    fn certified_minimal(_: &Net<Self>) -> bool {
-        false
+    fn certified_minimal(net: &Net<Self>) -> bool {
+        let comps = power_components(net);
+        let shape = (net.len() - 1, net[0].len() - 1);
+        actual_degree(&comps, |a, _| a.is_zero()) == shape && coprime_by_intervals(&comps, shape)
     }
 
-    fn certified_coprime(_: &[BPoly<Self>]) -> bool {
-        false
+    fn certified_coprime(polys: &[BPoly<Self>]) -> bool {
+        let m = polys.iter().filter_map(BPoly::deg_u).max().unwrap_or(0);
+        let n = polys.iter().filter_map(BPoly::deg_v).max().unwrap_or(0);
+        let grids: Vec<Vec<Vec<Self>>> = polys.iter().map(|p| p.to_grid(m, n)).collect();
+        coprime_by_intervals(&grids, (m, n))
     }
 
     /// The rational formula when every coefficient is rational, else
@@ -338,15 +346,23 @@ impl Reducible for RealAlgebraic {
 /// weights are positive, since it divides the weight function).
 pub(crate) fn minimal_net<T: Reducible>(net: &Net<T>) -> Minimal<Net<T>, T> {
     let before = (net.len() - 1, net[0].len() - 1);
+    let certified = |patch: Net<T>| Minimal {
+        degree_after: (patch.len() - 1, patch[0].len() - 1),
+        patch,
+        degree_before: before,
+        common_factor: "1".into(),
+        factor: BPoly::from_grid(&[vec![T::one()]]),
+        certified: true,
+    };
     if T::certified_minimal(net) {
-        return Minimal {
-            patch: net.clone(),
-            degree_before: before,
-            degree_after: before,
-            common_factor: "1".into(),
-            factor: BPoly::from_grid(&[vec![T::one()]]),
-            certified: true,
-        };
+        return certified(net.clone());
+    }
+    // An elevated net without a common factor: undo the elevation (exact
+    // zero tests in the power basis), then certify, before any gcd.
+    let lowered = drop_elevation(net, Tolerance::EXACT);
+    if lowered.len() * lowered[0].len() < net.len() * net[0].len() && T::certified_minimal(&lowered)
+    {
+        return certified(lowered);
     }
     let comps = power_components(net);
     let (mut quotients, mut g) = remove_common_factor(&comps, T::certified_coprime);

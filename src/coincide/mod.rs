@@ -28,6 +28,7 @@
 //! decision and its witness), `boundary` (shared boundary curves).
 
 pub(crate) mod canonical;
+mod coprime;
 pub(crate) mod filter;
 pub(crate) mod minimal;
 

@@ -346,3 +346,49 @@ proptest::proptest! {
         proptest::prop_assert_eq!(key, Some(coincide::canonical_key(&Patch::Rect(r)).unwrap()));
     }
 }
+
+/// A bicubic whose weights `k + √p` span the degree-16 field Q(√2, √3, √5,
+/// √7): its copy under Möbius maps with an algebraic α coincides, and so
+/// does its elevated copy (minimality certified by interval resultants,
+/// elevation undone exactly; the exact gcd over this field took minutes),
+/// while a copy with one point moved does not.
+#[test]
+fn algebraic_bicubics_over_a_degree_16_field() {
+    let primes = [2, 3, 5, 7];
+    let pts: Vec<Vec<Vec<A>>> = (0..4)
+        .map(|i| {
+            (0..4)
+                .map(|j| vec![A::from_i64(i), A::from_i64(j), A::from_i64((i * j + i) % 5)])
+                .collect()
+        })
+        .collect();
+    let w: Vec<Vec<A>> = (0..4)
+        .map(|i| {
+            (0..4)
+                .map(|j| {
+                    a(&format!(
+                        "{} + sqrt({})",
+                        1 + (i + 2 * j) % 4,
+                        primes[(i + j) % 4]
+                    ))
+                })
+                .collect()
+        })
+        .collect();
+    let r = RectPatch::new(pts.clone(), w.clone()).unwrap();
+    let moved = r.mobius_u(&a("sqrt(2)/2")).mobius_v(&a("1/3"));
+    let c = coincide::coincide(&Patch::Rect(r.clone()), &Patch::Rect(moved)).unwrap();
+    assert!(c.coincident, "{}", c.reason);
+    let raised =
+        coincide::coincide(&Patch::Rect(r.clone()), &Patch::Rect(r.elevate(1, 2))).unwrap();
+    assert!(raised.coincident, "{}", raised.reason);
+    assert_eq!(raised.reductions[1].to, (3, 3));
+    let mut bent = pts;
+    bent[2][1][2] = A::from_i64(9);
+    let other = RectPatch::new(bent, w).unwrap();
+    assert!(
+        !coincide::coincide(&Patch::Rect(r), &Patch::Rect(other))
+            .unwrap()
+            .coincident
+    );
+}
