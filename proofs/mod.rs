@@ -34,6 +34,7 @@ pub mod calculus;
 pub mod coincide;
 pub mod conversions;
 pub mod curves;
+pub mod general_degree;
 pub mod hang_li;
 pub mod hang_li_tables;
 pub mod lecture_joins;
@@ -307,6 +308,7 @@ pub struct Family {
 pub const FAMILIES: &[Family] = &[
     Family { name: "quiz", run: quiz::claims },
     Family { name: "bernstein", run: bernstein::claims },
+    Family { name: "general_degree", run: general_degree::claims },
     Family { name: "curves", run: curves::claims },
     Family { name: "lecture_joins", run: lecture_joins::claims },
     Family { name: "reduction", run: reduction::claims },

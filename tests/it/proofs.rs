@@ -69,6 +69,7 @@ macro_rules! families {
 families!(
     quiz,
     bernstein,
+    general_degree,
     curves,
     lecture_joins,
     reduction,
