@@ -324,7 +324,7 @@ fn derivative_claims() -> Vec<Claim> {
         over_degrees(
             "derivs_hom (Leibniz rule, fraction-free) gives the derivatives of X = H/w: X⁽ᵏ⁾ = M_k/w^{k+1}",
             "ours",
-            1..=6,
+            1..=8,
             "symbolic t, q_i, w_i; M_0 = H and the quotient rule M_{k+1} = M_k' w − (k+1) w' M_k checked for k = 0…2, weight entries w^{k+1}",
             |n| {
                 let c = sym_rational(n, 1);
@@ -371,7 +371,7 @@ fn curvature_claims() -> Vec<Claim> {
         over_degrees(
             "end curvature: k(0) = (n−1)/n · |(P1−P0) × (P2−P1)| / |P1−P0|³ and k(1) = (n−1)/n · |(Pn−1−Pn−2) × (Pn−Pn−1)| / |Pn−Pn−1|³",
             "001 lecture, 二阶导数 (曲率公式)",
-            2..=8,
+            2..=10,
             "symbolic 3D P_i: the squared printed formula (explicit cross product) cross-multiplied with κ² = |X'×X''|²/|X'|⁶ from the exact derivatives at t = 0 and t = 1",
             |n| {
                 let c = sym_polynomial(n, 3);
