@@ -22,6 +22,7 @@
 //! decimal expansion ([`RealAlgebraic::to_decimal`], three digits beyond the
 //! printed ones) and the printed value.
 
+use super::printed::{decimal, rounds_to, shown};
 use super::{Claim, Verdict};
 use crate::algebra::scalar::{ratio, Field, Roots, Scalar, Tolerance};
 use crate::algebra::RealAlgebraic;
@@ -30,7 +31,6 @@ use crate::curve::circle::circle_of;
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::io::parse_rational;
-use num_rational::BigRational;
 
 const SRC: &str = "004 Hang & Li";
 
@@ -45,54 +45,6 @@ fn int(n: i64) -> R {
 /// The printed decimal (or fraction) `text`, exactly.
 fn exact(text: &str) -> R {
     R::from_rational(&parse_rational(text).expect("printed numbers parse"))
-}
-
-/// The number of decimal digits printed after the point.
-fn digits(text: &str) -> usize {
-    text.split_once('.').map_or(0, |(_, f)| f.len())
-}
-
-/// Does `x` round to the printed decimal `text`? Exactly:
-/// `v − h ≤ x ≤ v + h` with `h` half a unit of the last printed digit.
-fn rounds_to(x: &R, text: &str) -> bool {
-    let v = parse_rational(text).expect("printed decimals parse");
-    let exponent = u32::try_from(digits(text)).expect("few digits");
-    let h = ratio::<BigRational>(1, 2) / BigRational::from_i64(10).pow_u32(exponent);
-    let (lo, hi) = (
-        R::from_rational(&(v.clone() - &h)),
-        R::from_rational(&(v + h)),
-    );
-    lo <= *x && *x <= hi
-}
-
-/// Our exact value as text and its decimal expansion to three digits more
-/// than `text` prints.
-fn shown(x: &R, text: &str) -> String {
-    format!("{x} ≈ {}", x.to_decimal(digits(text) + 3))
-}
-
-/// The claim that the printed decimal `text` is our value rounded; `note`
-/// adds to the detail. `Broken` if the computation of our value failed.
-fn decimal(
-    claim: &str,
-    source: &str,
-    expected: Verdict,
-    ours: &Result<R, Error>,
-    text: &str,
-    note: impl FnOnce(&R) -> String,
-) -> Claim {
-    match ours {
-        Ok(x) => Claim::compare(
-            claim,
-            source,
-            expected,
-            rounds_to(x, text),
-            text,
-            &format!("{}{}", shown(x, text), note(x)),
-        ),
-        Err(e) => Claim::compare(claim, source, expected, false, text, "nothing")
-            .given(false, &format!("the computation failed: {e}")),
-    }
 }
 
 /// The planar point `(x, y)`.

@@ -39,6 +39,7 @@ pub mod hang_li;
 pub mod hang_li_tables;
 pub mod lecture_joins;
 pub mod nurbs;
+mod printed;
 pub mod quiz;
 pub mod reduction;
 pub mod surfaces;

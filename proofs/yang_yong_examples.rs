@@ -1,16 +1,24 @@
 //! Source 000 (Yang & Yong), §3, Examples 1–3, reproduced by running our
 //! code on the printed inputs (`tests/fixtures/yang_yong_example{1,2,3}.json`,
 //! read exactly). Every printed number is compared with ours **at the
-//! printed precision** (ours rounded to as many decimals as printed):
-//! `reproduced` if equal, else `mismatch` with both values.
+//! printed precision**, exactly (module `printed`: `v − h ≤ x ≤ v + h` on
+//! the real algebraic numbers, `h` half a unit of the last printed digit):
+//! `reproduced` if so, else `mismatch` with both values. Examples 1 and 3
+//! run the exact standardization ([`standardize_rect_algebraic`]); Example
+//! 2's printed parameters come from the exact map of eq. (19)
+//! ([`standard_quadratic_map`]), its (6, 6) standard form in `f64` (claims
+//! `checked`).
 
+use super::printed::{rounds_to, shown};
 use super::{Claim, Verdict};
-use crate::algebra::scalar::{ratio, Ordered, Tolerance};
+use crate::algebra::scalar::{ratio, Field, Ordered, Roots, Scalar, Tolerance};
+use crate::algebra::RealAlgebraic;
 use crate::curve::geometry::ConicType;
 use crate::io::{read_patches, Patch};
 use crate::rect::{RectPatch, Side};
 use crate::reparam::standard::{
-    corner_weights, standardize_rect_exact_or_f64, theorem1_holds, Exactness, Standard, StandardMap,
+    corner_weights, standard_quadratic_map, standardize_quadratic, standardize_rect_algebraic,
+    theorem1_holds, Standard, StandardMap,
 };
 use num_rational::BigRational;
 use Verdict::{Checked as C, Mismatch as M, Proved as P, Refuted as R, Reproduced as Y};
@@ -40,24 +48,19 @@ pub(crate) fn example3() -> RectPatch<BigRational> {
     fixture(include_str!("../tests/fixtures/yang_yong_example3.json"))
 }
 
-/// `ours` rounded to the number of decimals of `printed`.
-fn at_precision(printed: &str, ours: f64) -> String {
-    let decimals = printed.split('.').nth(1).map_or(0, str::len);
-    format!("{ours:.decimals$}")
-}
+/// The exact scalar of the comparisons.
+type A = RealAlgebraic;
 
-/// A printed decimal against ours at the printed precision; the expected
-/// verdict is given per claim (a regression guard).
-fn number(example: &str, what: &str, printed: &str, ours: f64, expected: Verdict) -> Claim {
-    let rounded = at_precision(printed, ours);
-    let agrees = rounded.parse::<f64>().ok() == printed.parse::<f64>().ok();
+/// A printed decimal against our exact value at the printed precision; the
+/// expected verdict is given per claim (a regression guard).
+fn number(example: &str, what: &str, printed: &str, ours: &A, expected: Verdict) -> Claim {
     Claim::compare(
         &format!("{example}: {what} = {printed}"),
         SRC,
         expected,
-        agrees,
+        rounds_to(ours, printed),
         printed,
-        &format!("{rounded} (unrounded {ours})"),
+        &shown(ours, printed),
     )
 }
 
@@ -69,23 +72,20 @@ pub fn claims() -> Vec<Claim> {
     out
 }
 
-/// The linear standard form in f64 (Examples 1 and 3) and the weights after
-/// the Möbius maps, before scaling.
-/// α, β, k, the weights before and after scaling, and exactness.
+/// The exact linear standard form (Examples 1 and 3): α, β, k, the weights
+/// after the Möbius maps before scaling and after, and whether α, β and k
+/// are all rational.
 struct Linear {
-    alpha: f64,
-    beta: f64,
-    k: f64,
-    before: Vec<Vec<f64>>,
-    after: Vec<Vec<f64>>,
-    exact: bool,
+    alpha: A,
+    beta: A,
+    k: A,
+    before: Vec<Vec<A>>,
+    after: Vec<Vec<A>>,
+    rational: bool,
 }
 
 fn linear_parts(p: &RectPatch<BigRational>) -> Linear {
-    let (std, exact) = match standardize_rect_exact_or_f64(p, false).expect("positive weights") {
-        Exactness::Exact(s) => (to_f64(&s), true),
-        Exactness::Approximate(s, _) => (s, false),
-    };
+    let std = standardize_rect_algebraic(p, false).expect("positive weights");
     let StandardMap::Mobius {
         alpha,
         beta: Some(beta),
@@ -95,40 +95,20 @@ fn linear_parts(p: &RectPatch<BigRational>) -> Linear {
         panic!("Theorem 1 holds: a linear map")
     };
     let before = p
-        .map(Ordered::to_f64)
+        .map(A::from_rational)
         .mobius_u(&alpha)
         .mobius_v(&beta)
         .weights();
+    let rational = [&alpha, &beta, &k]
+        .iter()
+        .all(|x| x.as_rational().is_some());
     Linear {
         alpha,
         beta,
         k,
         before,
         after: std.patch.weights(),
-        exact,
-    }
-}
-
-fn to_f64(s: &Standard<RectPatch<BigRational>, BigRational>) -> Standard<RectPatch<f64>, f64> {
-    let f = |x: &BigRational| x.to_f64();
-    Standard {
-        patch: s.patch.map(f),
-        map: match &s.map {
-            StandardMap::Mobius { alpha, beta, k } => StandardMap::Mobius {
-                alpha: f(alpha),
-                beta: beta.as_ref().map(f),
-                k: f(k),
-            },
-            StandardMap::Quadratic { map, k } => StandardMap::Quadratic {
-                map: crate::reparam::Quadratic {
-                    alpha1: f(&map.alpha1),
-                    alpha2: f(&map.alpha2),
-                    beta1: f(&map.beta1),
-                    beta2: f(&map.beta2),
-                },
-                k: f(k),
-            },
-        },
+        rational,
     }
 }
 
@@ -138,7 +118,7 @@ fn grid_claims(
     example: &str,
     stage: &str,
     printed: [&str; 9],
-    ours: &[Vec<f64>],
+    ours: &[Vec<A>],
     expected: [Verdict; 9],
 ) -> Vec<Claim> {
     let order = [
@@ -161,7 +141,7 @@ fn grid_claims(
                 example,
                 &format!("{stage} ω_{{{i},{j}}}"),
                 text,
-                ours[i][j],
+                &ours[i][j],
                 e,
             )
         })
@@ -188,7 +168,7 @@ fn example1_claims() -> Vec<Claim> {
         k,
         before,
         after,
-        exact,
+        rational,
     } = linear_parts(&p);
     out.push(Claim::check(
         &format!(
@@ -196,12 +176,12 @@ fn example1_claims() -> Vec<Claim> {
         ),
         SRC,
         P,
-        !exact,
-        "8/3 is not a square in Q; β = 1/(1 + √4) = 1/3 is rational".into(),
+        !rational && alpha.as_rational().is_none() && beta.as_rational().is_some(),
+        format!("α = {alpha} is irrational (8/3 is not a square in Q); β = {beta} is rational"),
     ));
-    out.push(number(ex, "α = 1/(1 + √(8/3))", "0.3798", alpha, Y));
-    out.push(number(ex, "β = 1/(1 + √(8/2))", "0.3333", beta, Y));
-    let mut k_claim = number(ex, "k = 1/(ω00 α² β²)", "7.8378", k, M);
+    out.push(number(ex, "α = 1/(1 + √(8/3))", "0.3798", &alpha, Y));
+    out.push(number(ex, "β = 1/(1 + √(8/2))", "0.3333", &beta, Y));
+    let mut k_claim = number(ex, "k = 1/(ω00 α² β²)", "7.8378", &k, M);
     k_claim.detail += "; k·ω̃00 must be 1, but 7.8378 × 0.1282 = 1.0048. The printed standardized weights are the printed Möbius weights times 7.8378 (0.0523 × 7.8378 = 0.4099, 0.1603 × 7.8378 = 1.2564), so they inherit the error";
     out.push(k_claim);
     out.extend(grid_claims(
@@ -282,56 +262,73 @@ fn example2_claims() -> Vec<Claim> {
         "24 ≠ 10",
         &format!("{} ≠ {}", w00.clone() * &w33, w30.clone() * &w03),
     )];
-    let (std, exact) = match standardize_rect_exact_or_f64(&p, false).expect("positive weights") {
-        Exactness::Exact(s) => (to_f64(&s), true),
-        Exactness::Approximate(s, _) => (s, false),
-    };
-    let StandardMap::Quadratic { map, k } = std.map.clone() else {
-        panic!("Theorem 1 fails: the quadratic map")
-    };
+    let map = standard_quadratic_map(&p.map(A::from_rational)).expect("positive weights");
+    let [w00_exact, ..] = corner_weights(&p.map(A::from_rational));
+    let corner = map.alpha2.pow_u32(3) * &w00_exact * &map.beta1.pow_u32(3);
     out.push(Claim::check(
         &format!("{ex}: the standardization is not exact over Q (∛(3/2) is irrational)"),
         SRC,
         P,
-        !exact,
-        "3/2 is not a cube in Q".into(),
+        map.alpha2.as_rational().is_none(),
+        format!(
+            "α2 = 1/(1 + ∛(3/2)) = {} is irrational (3/2 is not a cube in Q)",
+            map.alpha2
+        ),
     ));
-    out.push(number(ex, "α2", "0.4663", map.alpha2, Y));
-    out.push(number(ex, "α1", "0.5391", map.alpha1, Y));
-    out.push(number(ex, "β1", "0.5782", map.beta1, Y));
-    out.push(number(ex, "β2", "0.5782", map.beta2, Y));
+    out.push(number(ex, "α2", "0.4663", &map.alpha2, Y));
+    out.push(number(ex, "α1", "0.5391", &map.alpha1, Y));
+    out.push(number(ex, "β1", "0.5782", &map.beta1, Y));
+    out.push(number(ex, "β2", "0.5782", &map.beta2, Y));
     out.push(number(
         ex,
         "common corner weight α2³ω00β1³",
         "0.0588",
-        1.0 / k,
+        &corner,
         Y,
     ));
     // The printed formula shapes: 1/∛(3/2 + 1) and 1/∛(5/8 + 1).
-    let printed_a2 = 1.0 / (1.5f64 + 1.0).cbrt();
-    let printed_a1 = 1.0 / (0.625f64 + 1.0).cbrt();
-    out.push(Claim::compare(
-        &format!("{ex}: the printed expression α2 = 1/∛(3/2 + 1) gives the printed 0.4663"),
-        SRC,
-        M,
-        at_precision("0.4663", printed_a2) == "0.4663",
-        "1/∛(3/2 + 1) ≈ 0.4663",
-        &format!(
-            "1/∛(5/2) = {printed_a2:.4}; (19) reads 1/(1 + ∛(ω00/ω30)) = 1/(1 + ∛(3/2)) = {:.4}",
-            map.alpha2
+    let shape = |q: (i64, i64)| {
+        A::from_rational(&ratio(q.0, q.1))
+            .nth_root(3)
+            .expect("a positive radicand")
+            .recip()
+    };
+    for (name, printed, radicand, reads, ours) in [
+        (
+            "α2",
+            "0.4663",
+            (5, 2),
+            "1/(1 + ∛(ω00/ω30)) = 1/(1 + ∛(3/2))",
+            &map.alpha2,
         ),
-    ));
-    out.push(Claim::compare(
-        &format!("{ex}: the printed expression α1 = 1/∛(5/8 + 1) gives the printed 0.5391"),
-        SRC,
-        M,
-        at_precision("0.5391", printed_a1) == "0.5391",
-        "1/∛(5/8 + 1) ≈ 0.5391",
-        &format!(
-            "1/∛(13/8) = {printed_a1:.4}; (19) reads 1/(1 + ∛(ω03/ω33)) = 1/(1 + ∛(5/8)) = {:.4}",
-            map.alpha1
+        (
+            "α1",
+            "0.5391",
+            (13, 8),
+            "1/(1 + ∛(ω03/ω33)) = 1/(1 + ∛(5/8))",
+            &map.alpha1,
         ),
-    ));
+    ] {
+        let value = shape(radicand);
+        out.push(Claim::compare(
+            &format!(
+                "{ex}: the printed expression {name} = 1/∛({} + 1) gives the printed {printed}",
+                if name == "α2" { "3/2" } else { "5/8" }
+            ),
+            SRC,
+            M,
+            rounds_to(&value, printed),
+            &format!("1/∛(…) ≈ {printed}"),
+            &format!(
+                "1/∛({}/{}) = {}; (19) reads {reads} = {}",
+                radicand.0,
+                radicand.1,
+                shown(&value, printed),
+                shown(ours, printed)
+            ),
+        ));
+    }
+    let std = standardize_quadratic(&p.map(Ordered::to_f64)).expect("positive weights");
     out.extend(example2_carried(&p, &std));
     out
 }
@@ -407,18 +404,20 @@ fn example3_claims() -> Vec<Claim> {
         k,
         before,
         after,
-        exact,
+        rational,
     } = linear_parts(&p);
     out.push(Claim::check(
         &format!("{ex}: the standardization is exact over Q (α = 3/5, β = 7/10)"),
         SRC,
         P,
-        exact,
-        "1.44/3.24 = (2/3)² and 1.44/7.84 = (3/7)²".into(),
+        rational
+            && alpha == A::from_rational(&ratio(3, 5))
+            && beta == A::from_rational(&ratio(7, 10)),
+        format!("α = {alpha}, β = {beta}, k = {k} (1.44/3.24 = (2/3)² and 1.44/7.84 = (3/7)²)"),
     ));
-    out.push(number(ex, "α", "0.6", alpha, Y));
-    out.push(number(ex, "β", "0.7", beta, Y));
-    let mut k_claim = number(ex, "k", "3.9367", k, M);
+    out.push(number(ex, "α", "0.6", &alpha, Y));
+    out.push(number(ex, "β", "0.7", &beta, Y));
+    let mut k_claim = number(ex, "k", "3.9367", &k, M);
     k_claim.detail += "; exactly 15625/3969 = 3.93676…: printed truncated, not rounded";
     out.push(k_claim);
     out.extend(grid_claims(

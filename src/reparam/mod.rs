@@ -45,10 +45,10 @@
 pub(crate) mod standard;
 
 pub use standard::{
-    corner_weights, standardize_curve, standardize_curve_algebraic, standardize_curve_exact_or_f64,
-    standardize_mobius, standardize_quadratic, standardize_quadratic_compact, standardize_rect,
-    standardize_rect_algebraic, standardize_rect_exact_or_f64, theorem1_holds, Exactness, Standard,
-    StandardMap,
+    corner_weights, standard_quadratic_map, standardize_curve, standardize_curve_algebraic,
+    standardize_curve_exact_or_f64, standardize_mobius, standardize_quadratic,
+    standardize_quadratic_compact, standardize_rect, standardize_rect_algebraic,
+    standardize_rect_exact_or_f64, theorem1_holds, Exactness, Standard, StandardMap,
 };
 
 use crate::algebra::scalar::{binomial, binomial_scalar, recip_int, Field, Scalar};

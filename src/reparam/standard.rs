@@ -369,7 +369,7 @@ fn mobius_unchecked<T: Roots>(p: &RectPatch<T>) -> Result<Standard<RectPatch<T>,
 pub fn standardize_quadratic<T: Roots>(
     p: &RectPatch<T>,
 ) -> Result<Standard<RectPatch<T>, T>, Error> {
-    let map = quadratic_params(p)?;
+    let map = standard_quadratic_map(p)?;
     Ok(scaled(p.quadratic_reparam(&map), map))
 }
 
@@ -397,15 +397,33 @@ pub fn standardize_quadratic<T: Roots>(
 pub fn standardize_quadratic_compact<T: Roots>(
     p: &RectPatch<T>,
 ) -> Result<Standard<RectPatch<T>, T>, Error> {
-    let map = quadratic_params(p)?;
+    let map = standard_quadratic_map(p)?;
     let moved = p
         .mobius_v(&map.beta1)
         .quadratic_reparam_u(&map.alpha1, &map.alpha2);
     Ok(scaled(moved, map))
 }
 
-/// The generalized (19): α1, α2 and β1 = β2 (module docs).
-fn quadratic_params<T: Roots>(p: &RectPatch<T>) -> Result<Quadratic<T>, Error> {
+/// The map of the quadratic standardization alone: the generalized eq.
+/// (19) of source 000, `α2 = 1/(1 + (ω_{0,0}/ω_{m,0})^{1/m})`,
+/// `α1 = 1/(1 + (ω_{0,n}/ω_{m,n})^{1/m})` and `β1 = β2 = 1/(1 + ρ)` with
+/// `ρ = (α2^m ω_{0,0} / (α1^m ω_{0,n}))^{1/n}` — without the (m + n, m + n)
+/// patch (cheap where the patch is not: Example 2's exact form takes
+/// seconds, its map milliseconds).
+///
+/// # Errors
+///
+/// [`Error::Weight`] for a non-positive weight; over `BigRational`,
+/// [`Error::NotRational`] when a root is irrational.
+///
+/// ```
+/// use exact_bezier::{algebra::RealAlgebraic, io::read_patches, reparam::standard_quadratic_map, Patch, Scalar};
+/// let text = std::fs::read_to_string("tests/fixtures/yang_yong_example2.json").unwrap();
+/// let Patch::Rect(p) = read_patches(&text).unwrap().remove(0) else { unreachable!() };
+/// let map = standard_quadratic_map(&p.map(RealAlgebraic::from_rational)).unwrap();
+/// assert_eq!(map.alpha2, "1/(1 + cbrt(3/2))".parse::<RealAlgebraic>().unwrap());
+/// ```
+pub fn standard_quadratic_map<T: Roots>(p: &RectPatch<T>) -> Result<Quadratic<T>, Error> {
     p.check_positive_weights()?;
     let (m, n) = p.degree();
     let [w00, wm0, w0n, wmn] = corner_weights(p);
