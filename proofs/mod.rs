@@ -109,6 +109,22 @@ impl Verdict {
     ];
 }
 
+/// Set by `prove --deep`: families with a costly degree bound check to a
+/// higher one (see [`set_deep`]).
+static DEEP: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Check the costly families to their deep bounds (`prove --deep`): the
+/// quadratic-map claims of `yang_yong` to m, n ≤ 8 instead of 5 (minutes
+/// instead of a second).
+pub fn set_deep(on: bool) {
+    DEEP.store(on, std::sync::atomic::Ordering::Relaxed);
+}
+
+/// Is the deep mode on ([`set_deep`])?
+fn deep() -> bool {
+    DEEP.load(std::sync::atomic::Ordering::Relaxed)
+}
+
 thread_local! {
     /// When the previous claim of the family running on this thread was
     /// completed (or the family started).

@@ -29,7 +29,15 @@ const MAX: usize = 8;
 const MAX_EVAL: usize = 5;
 /// The largest m and n of the quadratic-reparameterization claims (the
 /// (m+n, m+n) result; was 4: 4 → 5 quadruples the time of the point identity, 187 → 758 ms in release, so 8 would take minutes).
-const MAX_QUADRATIC: usize = 5;
+/// The degree bound of the quadratic-map claims: 5 by default, 8 with
+/// `prove --deep` ([`super::deep`]).
+fn max_quadratic() -> usize {
+    if super::deep() {
+        8
+    } else {
+        5
+    }
+}
 
 /// The fully symbolic 1D net of bidegree (m, n): `ctrl[i][j] = (p_ij, w_ij)`.
 pub(crate) fn sym_net(m: usize, n: usize) -> RectPatch<Poly> {
@@ -291,7 +299,7 @@ fn sym_quadratic() -> Quadratic<Poly> {
 /// (9)–(17): the new patch at (s, t) is the old one at (u(s,t), v(s,t)):
 /// `H̃(s, t) = H(α(1−s), (1−α)s; β(1−t), (1−β)t)`, a homogeneous identity.
 ///
-/// How it is established (every (m, n) ≤ (MAX_QUADRATIC, MAX_QUADRATIC)): α1, α2, β1,
+/// How it is established (every (m, n) ≤ (5, 5), or (8, 8) with `prove --deep`): α1, α2, β1,
 /// β2 are symbols. The map from the net to either side is linear and acts on
 /// each homogeneous coordinate alike, so it suffices to check each basis net
 /// (one weight 1 at (i, j), everything else 0); the old side is definition
@@ -301,7 +309,7 @@ fn sym_quadratic() -> Quadratic<Poly> {
 /// degree bound is computed by [`grid_suffices`]).
 fn quadratic_keeps_points() -> Claim {
     for_all_bidegrees(
-        MAX_QUADRATIC,
+        max_quadratic(),
         "quadratic reparameterization (9)-(17) keeps every point: new(s, t) = old(u(s,t), v(s,t)) (homogeneous identity, common factor E^m F^n), for all α1, α2, β1, β2, s, t",
         &format!("{SRC} eqs. (9)-(17)"),
         Verdict::Proved,
@@ -408,7 +416,7 @@ fn combination(x: &[Poly], c: &[BigRational]) -> Poly {
 /// ω̃_{0,m+n} = α1^m (1−β2)^n ω_{0,n}, ω̃_{m+n,m+n} = (1−α1)^m(1−β1)^n ω_{m,n}.
 fn quadratic_corner_weights() -> Claim {
     for_all_bidegrees(
-        MAX_QUADRATIC,
+        max_quadratic(),
         "corner weights before (18): ω̃_{0,0} = α2^m β2^n ω00, ω̃_{m+n,0} = (1−α2)^m β1^n ω_{m0}, ω̃_{0,m+n} = α1^m(1−β2)^n ω_{0n}, ω̃_{m+n,m+n} = (1−α1)^m(1−β1)^n ω_{mn} (printed for m = n = 3, e.g. ω̃_{6,0} = (1−α2)³β1³ω30, ω̃_{0,6} = (1−β2)³α1³ω03)",
         &format!("{SRC} §2, before eq. (18)"),
         Verdict::Proved,
@@ -437,7 +445,7 @@ fn quadratic_corner_weights() -> Claim {
 /// α2 = a2, α1 = a1, β = b (checked), and the corners come out equal.
 fn eq19_equal_corners() -> Claim {
     for_all_bidegrees(
-        MAX_QUADRATIC,
+        max_quadratic(),
         "(19), generalized to (m, n) with β1 = β2: the quadratic map makes the four corner weights equal (to α2^m β^n ω00)",
         &format!("{SRC} eqs. (18), (19)"),
         Verdict::Proved,
@@ -472,7 +480,7 @@ fn eq19_equal_corners() -> Claim {
 /// of the (m, m+n) patch `mobius_v(β)` then `quadratic_reparam_u(α1, α2)`.
 fn compact_form() -> Claim {
     for_all_bidegrees(
-        MAX_QUADRATIC,
+        max_quadratic(),
         "ours: with β1 = β2 = β (as in (19)) the (m+n, m+n) result is the n-fold degree elevation in s of an exact (m, m+n) patch (Möbius in v, then the quadratic map in u only), so the standard form exists in bidegree (m, m+n)",
         &format!("{SRC} eqs. (16), (19)"),
         Verdict::Proved,
@@ -501,7 +509,7 @@ fn paper_c(m: usize, at0: &Poly, at1: &Poly) -> Vec<Vec<Poly>> {
 /// with ours: equal up to the common sign (−1)^{m+n}.
 fn eq17_matches() -> Claim {
     for_all_bidegrees(
-        MAX_QUADRATIC,
+        max_quadratic(),
         "eq. (17) (with Appendix-1 c_{l,i} and the analogous e_{l,j}) gives our weights times (−1)^{m+n} (equal for m + n even, e.g. bicubic; all negative for m + n odd)",
         &format!("{SRC} eqs. (15)-(17)"),
         Verdict::Proved,
