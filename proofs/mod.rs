@@ -114,8 +114,8 @@ impl Verdict {
 static DEEP: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
 
 /// Check the costly families to their deep bounds (`prove --deep`): the
-/// quadratic-map claims of `yang_yong` to m, n ≤ 8 instead of 5 (minutes
-/// instead of a second).
+/// symbolic-evaluation and quadratic-map claims of `yang_yong` to
+/// m, n ≤ 8 instead of 5 (minutes instead of a second).
 pub fn set_deep(on: bool) {
     DEEP.store(on, std::sync::atomic::Ordering::Relaxed);
 }

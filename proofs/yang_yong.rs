@@ -24,14 +24,12 @@ use num_traits::Zero;
 const SRC: &str = "000 Yang & Yong";
 /// The largest m and n checked by the cheap claims (weights, corners).
 const MAX: usize = 8;
-/// The largest m and n of the claims that evaluate the patch symbolically
-/// at (s, t) (was 4; the time grows like m^7).
-const MAX_EVAL: usize = 5;
-/// The largest m and n of the quadratic-reparameterization claims (the
-/// (m+n, m+n) result; was 4: 4 → 5 quadruples the time of the point identity, 187 → 758 ms in release, so 8 would take minutes).
-/// The degree bound of the quadratic-map claims: 5 by default, 8 with
-/// `prove --deep` ([`super::deep`]).
-fn max_quadratic() -> usize {
+/// The largest m and n of the costly claims — those that evaluate the
+/// patch symbolically at (s, t) (time growing like m^7) and the
+/// quadratic-map claims (an (m+n, m+n) result; 4 → 5 quadrupled the point
+/// identity, 187 → 758 ms in release): 5 by default (was 4), 8 with
+/// `prove --deep` ([`super::deep`], about a minute).
+fn max_symbolic() -> usize {
     if super::deep() {
         8
     } else {
@@ -128,7 +126,7 @@ pub fn claims() -> Vec<Claim> {
 fn mobius_keeps_points(in_u: bool) -> Claim {
     let (dir, eq) = if in_u { ("u", "(2)") } else { ("v", "(3)") };
     for_all_bidegrees(
-        MAX_EVAL,
+        max_symbolic(),
         &format!("Möbius map {eq} in {dir} keeps every point: new(s, t) = old at u(s) (resp. v(t)), for all α, s, t"),
         &format!("{SRC} eq. {eq}, (4)"),
         Verdict::Proved,
@@ -204,7 +202,7 @@ fn weight_rule_with(factor: impl Fn(usize, usize, usize, usize) -> Poly) -> Clai
 /// (5): scaling every weight by k multiplies H by k (same point).
 fn scaling_keeps_points() -> Claim {
     for_all_bidegrees(
-        MAX_EVAL,
+        max_symbolic(),
         "uniform weight scaling (5) keeps every point: H̃(u, v) = k·H(u, v)",
         &format!("{SRC} eq. (5)"),
         Verdict::Proved,
@@ -309,7 +307,7 @@ fn sym_quadratic() -> Quadratic<Poly> {
 /// degree bound is computed by [`grid_suffices`]).
 fn quadratic_keeps_points() -> Claim {
     for_all_bidegrees(
-        max_quadratic(),
+        max_symbolic(),
         "quadratic reparameterization (9)-(17) keeps every point: new(s, t) = old(u(s,t), v(s,t)) (homogeneous identity, common factor E^m F^n), for all α1, α2, β1, β2, s, t",
         &format!("{SRC} eqs. (9)-(17)"),
         Verdict::Proved,
@@ -416,7 +414,7 @@ fn combination(x: &[Poly], c: &[BigRational]) -> Poly {
 /// ω̃_{0,m+n} = α1^m (1−β2)^n ω_{0,n}, ω̃_{m+n,m+n} = (1−α1)^m(1−β1)^n ω_{m,n}.
 fn quadratic_corner_weights() -> Claim {
     for_all_bidegrees(
-        max_quadratic(),
+        max_symbolic(),
         "corner weights before (18): ω̃_{0,0} = α2^m β2^n ω00, ω̃_{m+n,0} = (1−α2)^m β1^n ω_{m0}, ω̃_{0,m+n} = α1^m(1−β2)^n ω_{0n}, ω̃_{m+n,m+n} = (1−α1)^m(1−β1)^n ω_{mn} (printed for m = n = 3, e.g. ω̃_{6,0} = (1−α2)³β1³ω30, ω̃_{0,6} = (1−β2)³α1³ω03)",
         &format!("{SRC} §2, before eq. (18)"),
         Verdict::Proved,
@@ -445,7 +443,7 @@ fn quadratic_corner_weights() -> Claim {
 /// α2 = a2, α1 = a1, β = b (checked), and the corners come out equal.
 fn eq19_equal_corners() -> Claim {
     for_all_bidegrees(
-        max_quadratic(),
+        max_symbolic(),
         "(19), generalized to (m, n) with β1 = β2: the quadratic map makes the four corner weights equal (to α2^m β^n ω00)",
         &format!("{SRC} eqs. (18), (19)"),
         Verdict::Proved,
@@ -480,7 +478,7 @@ fn eq19_equal_corners() -> Claim {
 /// of the (m, m+n) patch `mobius_v(β)` then `quadratic_reparam_u(α1, α2)`.
 fn compact_form() -> Claim {
     for_all_bidegrees(
-        max_quadratic(),
+        max_symbolic(),
         "ours: with β1 = β2 = β (as in (19)) the (m+n, m+n) result is the n-fold degree elevation in s of an exact (m, m+n) patch (Möbius in v, then the quadratic map in u only), so the standard form exists in bidegree (m, m+n)",
         &format!("{SRC} eqs. (16), (19)"),
         Verdict::Proved,
@@ -509,7 +507,7 @@ fn paper_c(m: usize, at0: &Poly, at1: &Poly) -> Vec<Vec<Poly>> {
 /// with ours: equal up to the common sign (−1)^{m+n}.
 fn eq17_matches() -> Claim {
     for_all_bidegrees(
-        max_quadratic(),
+        max_symbolic(),
         "eq. (17) (with Appendix-1 c_{l,i} and the analogous e_{l,j}) gives our weights times (−1)^{m+n} (equal for m + n even, e.g. bicubic; all negative for m + n odd)",
         &format!("{SRC} eqs. (15)-(17)"),
         Verdict::Proved,

@@ -16,9 +16,9 @@ pub struct Args {
     /// Run only this family (a file name in proofs/ without `.rs`).
     #[arg(long, value_name = "NAME")]
     family: Option<String>,
-    /// Check the costly bounded claims to their deep bounds (the
-    /// quadratic-map claims of yang_yong to m, n ≤ 8 instead of 5): minutes,
-    /// not a second.
+    /// Check the costly bounded claims to their deep bounds (yang_yong's
+    /// symbolic-evaluation and quadratic-map claims to m, n ≤ 8 instead of
+    /// 5): minutes, not a second.
     #[arg(long)]
     deep: bool,
 }
