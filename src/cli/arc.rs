@@ -1,6 +1,7 @@
 //! `arc --cos-half C --lambda L --points B0;B1;B2 [--direction B]`: the
 //! standard-form rational cubic of source 004 eq. (1) (eq. (2) for θ = π).
 
+use super::parse_algebraic_list;
 use crate::algebra::scalar::Tolerance;
 use crate::algebra::RealAlgebraic;
 use crate::arc::QuadArc;
@@ -37,12 +38,12 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     let pts = a
         .points
         .split(';')
-        .map(numbers)
+        .map(parse_algebraic_list)
         .collect::<Result<Vec<_>, _>>()?;
     let arc = match (pts.as_slice(), &a.direction) {
         ([b0, b1, b2], None) => QuadArc::from_control(b0, b1, b2, &c, Tolerance::EXACT)?,
         ([b0, b2], Some(d)) if c.is_zero() => {
-            QuadArc::semicircle(b0, b2, &numbers(d)?, Tolerance::EXACT)?
+            QuadArc::semicircle(b0, b2, &parse_algebraic_list(d)?, Tolerance::EXACT)?
         }
         _ => {
             return Err(Error::Shape(
@@ -63,9 +64,4 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 /// One exact number: rational or algebraic text.
 fn number(text: &str) -> Result<RealAlgebraic, Error> {
     RealAlgebraic::from_text(text.trim())
-}
-
-/// A comma-separated list of exact numbers.
-fn numbers(text: &str) -> Result<Vec<RealAlgebraic>, Error> {
-    text.split(',').map(number).collect()
 }

@@ -1,6 +1,7 @@
 //! What `key` and `dedup` share: the input as a counted byte stream, keys
 //! of a chunk of records on all cores, the progress bar, the exit code.
 
+use super::{patch_op_cost, ExactScalar};
 use crate::algebra::scalar::Scalar;
 use crate::algebra::RealAlgebraic;
 use crate::error::Error;
@@ -104,6 +105,27 @@ impl Member {
             Member::Algebraic(p) => p.clone(),
         }
     }
+}
+
+/// Refuse a record over the real algebraic numbers whose canonical key
+/// would cost more than the work budget `max` (the model of `coincide`,
+/// times the operation cost of its numbers: general roots make every
+/// operation a resultant). Records over Q are not charged: their cost is
+/// bounded by their size.
+///
+/// # Errors
+///
+/// [`Error::Limit`] naming the estimate and `--max-work`.
+pub(crate) fn check_record_cost(p: &Patch<RealAlgebraic>, max: u64) -> Result<(), Error> {
+    let (ops, bits) =
+        super::coincide::coincide_cost(&crate::limits::Size::of(p, ExactScalar::bits));
+    let units = crate::limits::exact_work(ops, bits).saturating_mul(patch_op_cost(p));
+    if units > max {
+        return Err(Error::Limit(format!(
+            "this record's algebraic numbers need an estimated {units:.2e} work units, over the budget of {max:.2e} (raise it with --max-work)"
+        )));
+    }
+    Ok(())
 }
 
 /// `f` on the patch of every record of a chunk, in parallel, results in

@@ -16,7 +16,7 @@
 //! which re-checks every grouping exactly; it keeps each representative's
 //! text and each witness until the end.
 
-use super::bulk::{map_chunk, BulkArgs, Member, Out, Progress, CHUNK};
+use super::bulk::{check_record_cost, map_chunk, BulkArgs, Member, Out, Progress, CHUNK};
 use crate::algebra::RealAlgebraic;
 use crate::coincide::canonical::{canonical_key, key_digest, CanonicalKey, Deduper, KeyDigest};
 use crate::coincide::{coincide, Coincidence};
@@ -111,11 +111,15 @@ fn dedup(a: &Args) -> Result<(), Error> {
     let progress = Progress::new(&a.bulk, &input);
     let mut d = Deduper::default();
     let mut witnesses = a.witness.then(Witnesses::default);
+    let max_work = crate::limits::current().max_work;
     for_each_chunk(reader, CHUNK, |first, records| {
         let keyed = map_chunk(&records, |p| {
             let key = match &p {
                 Member::Rational(q) => Keyed::Digest(key_digest(q)?),
-                Member::Algebraic(q) => Keyed::Algebraic(canonical_key(q)?),
+                Member::Algebraic(q) => {
+                    check_record_cost(q, max_work)?;
+                    Keyed::Algebraic(canonical_key(q)?)
+                }
             };
             Ok((key, a.witness.then_some(p)))
         })?;

@@ -10,7 +10,7 @@
 
 use super::{
     check_domain, check_finite, emit, json_text, on_exact, one_or_many, parse_list, patch_f64,
-    read_input, ExactPatches, ExactScalar, ScalarKind,
+    patch_op_cost, read_input, ExactPatches, ExactScalar, ScalarKind,
 };
 use crate::algebra::scalar::{Field, Scalar};
 use crate::error::Error;
@@ -75,7 +75,7 @@ fn is_single(a: &Args) -> bool {
 }
 
 /// `eval` on patches of exact numbers `T`: exactly, or on their nearest
-/// `f64` patches. The work is charged first ([`ExactScalar::OP_COST`]
+/// `f64` patches. The work is charged first ([`ExactScalar::op_cost`]
 /// times the exact model for one operation).
 fn run_patches<T: ExactScalar>(
     a: &Args,
@@ -106,7 +106,7 @@ fn run_patches<T: ExactScalar>(
                     size.total_degree(),
                     crate::limits::max_bits(at.iter().flatten()),
                 );
-                crate::limits::exact_work(ops, bits).saturating_mul(T::OP_COST)
+                crate::limits::exact_work(ops, bits).saturating_mul(patch_op_cost(p))
             }
             ScalarKind::F64 => ops,
         };

@@ -4,7 +4,7 @@
 //! DuckDB, Spark, `sort`) gives the classes of `dedup`; see
 //! `docs/bulk_dedup.md`.
 
-use super::bulk::{map_chunk, BulkArgs, Member, Out, Progress, CHUNK};
+use super::bulk::{check_record_cost, map_chunk, BulkArgs, Member, Out, Progress, CHUNK};
 use crate::coincide::canonical::{canonical_key, canonical_text, KeyDigest};
 use crate::error::Error;
 use crate::io::for_each_chunk;
@@ -35,18 +35,27 @@ pub fn run(a: &Args) -> Result<(), Error> {
 ///
 /// [`Error::Domain`] for an irrational key (no canonical text: use
 /// `dedup`, which compares such keys exactly).
-fn member_text(p: &Member) -> Result<String, Error> {
+fn member_text(p: &Member, max_work: u64) -> Result<String, Error> {
     match p {
         Member::Rational(p) => canonical_text(p),
-        Member::Algebraic(p) => canonical_key(p)?
+        Member::Algebraic(p) => {
+            check_record_cost(p, max_work)?;
+            algebraic_text(p)
+        }
+    }
+}
+
+/// The key text of a patch over the real algebraic numbers (see
+/// [`member_text`]).
+fn algebraic_text(p: &crate::io::Patch<crate::algebra::RealAlgebraic>) -> Result<String, Error> {
+    canonical_key(p)?
             .to_rational()
             .map(|k| k.text())
             .ok_or_else(|| {
                 Error::Domain(
                     "this patch's key has irrational algebraic numbers, which have no canonical text; dedup compares such keys exactly".into(),
                 )
-            }),
-    }
+            })
 }
 
 fn keys(a: &Args) -> Result<(), Error> {
@@ -54,9 +63,10 @@ fn keys(a: &Args) -> Result<(), Error> {
     let progress = Progress::new(&a.bulk, &input);
     let mut out = Out::new();
     let mut done = 0;
+    let max_work = crate::limits::current().max_work;
     let n = for_each_chunk(reader, CHUNK, |first, records| {
         let lines = map_chunk(&records, |p| {
-            let text = member_text(&p)?;
+            let text = member_text(&p, max_work)?;
             let digest = KeyDigest::of_text(&text).to_string();
             Ok((digest, a.text.then_some(text)))
         })?;

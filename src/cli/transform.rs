@@ -1,13 +1,11 @@
 //! `reparam` and `elevate`: transformations that return patches.
 
 use super::{
-    charge_each, load_exact, on_exact, one_or_many, parse_list, run_each, ExactPatches,
-    ExactScalar, PatchOp, ScalarKind,
+    charge_each, load_exact, on_exact, one_or_many, parse_algebraic_list, parse_list, run_each,
+    ExactPatches, ExactScalar, PatchOp, ScalarKind,
 };
 use crate::algebra::scalar::Ordered;
-use crate::algebra::RealAlgebraic;
 use crate::error::Error;
-use crate::io::ExactNumber;
 use crate::io::{patch_to_json, JsonScalar, Patch};
 use crate::limits::{check_result_degree, Size};
 use crate::reparam::Quadratic;
@@ -58,10 +56,7 @@ pub fn reparam(a: &ReparamArgs) -> Result<Value, Error> {
     match (load_exact(&a.file)?, parse_list(text)) {
         (ExactPatches::Rational(patches), Ok(params)) => op.run(&patches, &params, a.scalar),
         (patches, rational) => {
-            let params = text
-                .split(',')
-                .map(RealAlgebraic::from_text)
-                .collect::<Result<Vec<_>, _>>()
+            let params = parse_algebraic_list(text)
                 .map_err(|algebraic| rational.err().unwrap_or(algebraic))?;
             op.run(&patches.into_algebraic(), &params, a.scalar)
         }

@@ -200,6 +200,24 @@ impl RealAlgebraic {
         }
     }
 
+    /// The degree of the defining polynomial when the number is held as an
+    /// isolated root of a general polynomial (`CRootOf`), `None` for a sum
+    /// of radicals. Arithmetic on such numbers goes through resultants, so
+    /// the degrees of results multiply: what cost models need to know.
+    ///
+    /// ```
+    /// use exact_bezier::algebra::RealAlgebraic;
+    /// let r: RealAlgebraic = "CRootOf(x**5 - x - 1, 0)".parse().unwrap();
+    /// assert_eq!(r.root_degree(), Some(5));
+    /// assert_eq!("sqrt(2)".parse::<RealAlgebraic>().unwrap().root_degree(), None);
+    /// ```
+    pub fn root_degree(&self) -> Option<usize> {
+        match &self.0 {
+            Repr::Radical(_) => None,
+            Repr::Root(r) => r.poly().degree(),
+        }
+    }
+
     /// A polynomial over Q with this number as a root: the minimal
     /// polynomial for radical sums, the square-free defining polynomial
     /// otherwise.
