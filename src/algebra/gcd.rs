@@ -18,9 +18,8 @@
 //! 3rd ed., §4.5.2, Algorithm L.
 
 use num_bigint::{BigInt, BigUint, Sign};
-use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::{ToPrimitive, Zero};
+use num_traits::{One, Zero};
 
 /// `gcd(a, b)` by Lehmer's algorithm (`gcd(0, 0) = 0`).
 ///
@@ -32,29 +31,95 @@ use num_traits::{ToPrimitive, Zero};
 /// assert_eq!(gcd(&a, &b), num_integer::Integer::gcd(&a, &b));
 /// ```
 pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
-    let (mut a, mut b) = if a >= b {
-        (a.clone(), b.clone())
-    } else {
-        (b.clone(), a.clone())
-    };
-    while !b.is_zero() {
-        if a.bits() <= 128 {
-            let (x, y) = (a.to_u128().unwrap_or(0), b.to_u128().unwrap_or(0));
-            return BigUint::from(gcd_u128(x, y));
+    let (mut a, mut b) = (a.to_u64_digits(), b.to_u64_digits());
+    if a.len() < b.len() || (a.len() == b.len() && a.iter().rev().lt(b.iter().rev())) {
+        std::mem::swap(&mut a, &mut b);
+    }
+    b.resize(a.len(), 0);
+    loop {
+        trim(&mut a, &mut b);
+        if b.is_empty() {
+            return from_limbs(&a);
         }
-        let shift = a.bits() - LEAD_BITS;
-        let [m00, m01, m10, m11] = cosequence(leading(&a, shift), leading(&b, shift));
-        if m01 == 0 {
-            let r = &a % &b;
-            a = b;
-            b = r;
+        if a.len() <= 2 {
+            return BigUint::from(gcd_u128(to_u128(&a), to_u128(&b)));
+        }
+        let shift = bits(&a) - LEAD_BITS;
+        let cofactors = cosequence(leading(&a, shift), leading(&b, shift));
+        if cofactors[1] == 0 {
+            // One quotient too large for the leading parts: a full step.
+            let r = from_limbs(&a) % from_limbs(&b);
+            a = std::mem::take(&mut b);
+            b = r.to_u64_digits();
+            b.resize(a.len(), 0);
         } else {
-            let (sa, sb) = (BigInt::from(a), BigInt::from(b));
-            a = (&sa * m00 + &sb * m01).magnitude().clone();
-            b = (&sa * m10 + &sb * m11).magnitude().clone();
+            combine(&mut a, &mut b, cofactors);
         }
     }
-    a
+}
+
+/// `(a, b) ← (A a + B b, C a + D b)` in place, limb by limb with signed
+/// 128-bit carries. Each row of Lehmer's cofactors has entries of opposite
+/// signs (or a zero), below 2⁶² in size: a row is `±(|A| a − |B| b)`, two
+/// single-word products per limb; both results stay in `[0, a]`, so the
+/// last carries are zero.
+fn combine(a: &mut [u64], b: &mut [u64], [m00, m01, m10, m11]: [i64; 4]) {
+    let row = |p: i64, q: i64| {
+        let (p_abs, q_abs) = (p.unsigned_abs(), q.unsigned_abs());
+        let sign: i128 = if p >= 0 && q <= 0 { 1 } else { -1 };
+        move |x: u64, y: u64| {
+            let px = u128::from(p_abs) * u128::from(x);
+            let qy = u128::from(q_abs) * u128::from(y);
+            sign * (px as i128 - qy as i128)
+        }
+    };
+    let (row_a, row_b) = (row(m00, m01), row(m10, m11));
+    let (mut carry_a, mut carry_b) = (0i128, 0i128);
+    for (x, y) in a.iter_mut().zip(b.iter_mut()) {
+        let na = row_a(*x, *y) + carry_a;
+        let nb = row_b(*x, *y) + carry_b;
+        (*x, *y) = (na as u64, nb as u64);
+        (carry_a, carry_b) = (na >> 64, nb >> 64);
+    }
+    debug_assert!(
+        carry_a == 0 && carry_b == 0,
+        "Lehmer's cofactors keep 0 ≤ b ≤ a"
+    );
+}
+
+/// Drop the leading zero limbs of `a`, and of `b` down to `a`'s length (the
+/// two stay equally long, `b ≤ a`); `b` empties when it is zero.
+fn trim(a: &mut Vec<u64>, b: &mut Vec<u64>) {
+    while a.last() == Some(&0) {
+        a.pop();
+    }
+    b.truncate(a.len());
+    if b.iter().all(|&d| d == 0) {
+        b.clear();
+    }
+}
+
+/// The number of significant bits of a trimmed limb vector.
+fn bits(n: &[u64]) -> u64 {
+    n.last().map_or(0, |top| {
+        64 * n.len() as u64 - u64::from(top.leading_zeros())
+    })
+}
+
+/// The value of at most two limbs.
+fn to_u128(n: &[u64]) -> u128 {
+    n.iter()
+        .rev()
+        .fold(0, |acc, &d| (acc << 64) | u128::from(d))
+}
+
+/// The big integer of little-endian 64-bit limbs.
+fn from_limbs(n: &[u64]) -> BigUint {
+    BigUint::new(
+        n.iter()
+            .flat_map(|&d| [d as u32, (d >> 32) as u32])
+            .collect(),
+    )
 }
 
 /// Bits of the leading parts Lehmer's inner loop runs on: 62, so that the
@@ -63,12 +128,11 @@ pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
 const LEAD_BITS: u64 = 62;
 
 /// `⌊n / 2^shift⌋` for a shift that leaves at most 64 bits, read from the
-/// two digits it spans (no shifted copy of `n`).
-fn leading(n: &BigUint, shift: u64) -> u64 {
+/// two limbs it spans (no shifted copy of `n`).
+fn leading(n: &[u64], shift: u64) -> u64 {
     let (word, bit) = ((shift / 64) as usize, (shift % 64) as u32);
-    let mut digits = n.iter_u64_digits().skip(word);
-    let low = digits.next().unwrap_or(0);
-    let high = digits.next().unwrap_or(0);
+    let low = n.get(word).copied().unwrap_or(0);
+    let high = n.get(word + 1).copied().unwrap_or(0);
     let wide = (u128::from(high) << 64) | u128::from(low);
     (wide >> bit) as u64
 }
@@ -93,7 +157,7 @@ fn cosequence(x: u64, y: u64) -> [i64; 4] {
 
 /// `gcd(x, y)` on machine words, by Stein's binary algorithm (shifts and
 /// subtractions: no 128-bit division).
-fn gcd_u128(x: u128, y: u128) -> u128 {
+pub(crate) fn gcd_u128(x: u128, y: u128) -> u128 {
     if x == 0 || y == 0 {
         return x | y;
     }
@@ -121,8 +185,13 @@ fn gcd_u128(x: u128, y: u128) -> u128 {
 /// ```
 pub fn fraction(numer: BigInt, denom: BigInt) -> BigRational {
     assert!(!denom.is_zero(), "a fraction needs a nonzero denominator");
-    let g = BigInt::from(gcd(numer.magnitude(), denom.magnitude()));
-    let (n, d) = (numer.div_floor(&g), denom.div_floor(&g));
+    let g = gcd(numer.magnitude(), denom.magnitude());
+    let (n, d) = if g.is_one() {
+        (numer, denom)
+    } else {
+        let g = BigInt::from(g);
+        (numer / &g, denom / &g)
+    };
     if d.sign() == Sign::Minus {
         BigRational::new_raw(-n, -d)
     } else {
@@ -133,6 +202,7 @@ pub fn fraction(numer: BigInt, denom: BigInt) -> BigRational {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use num_integer::Integer;
     use proptest::prelude::*;
 
     fn big(limbs: &[u64]) -> BigUint {

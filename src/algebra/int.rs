@@ -37,9 +37,64 @@ impl Int {
         }
     }
 
-    /// `Small` when `n` fits `i128`, else `Big`.
+    /// `Small` when `n` fits `i128`, else `Big` (the representation is
+    /// canonical: equal values have equal variants).
     pub fn from_bigint(n: BigInt) -> Int {
+        // `bits()` is O(1); only a number of at most 128 bits can fit.
+        if n.bits() > 128 {
+            return Int::Big(n);
+        }
         n.to_i128().map_or(Int::Big(n), Int::Small)
+    }
+}
+
+/// # Number theory
+impl Int {
+    /// The big integer `n` as an `Int`, copying it only when it is big.
+    pub fn from_ref(n: &BigInt) -> Int {
+        if n.bits() <= 127 {
+            if let Some(small) = n.to_i128() {
+                return Int::Small(small);
+            }
+        }
+        Int::Big(n.clone())
+    }
+
+    /// The number of bits of `|self|` (0 for zero).
+    pub fn bits(&self) -> u64 {
+        match self {
+            Int::Small(a) => u64::from(128 - a.unsigned_abs().leading_zeros()),
+            Int::Big(a) => a.bits(),
+        }
+    }
+
+    /// `gcd(|self|, |other|) ≥ 0`: Euclid on machine words while both are
+    /// small, Lehmer's algorithm ([`crate::algebra::gcd`]) otherwise.
+    pub fn gcd(&self, other: &Int) -> Int {
+        if let (Int::Small(x), Int::Small(y)) = (self, other) {
+            let (mut x, mut y) = (x.unsigned_abs(), y.unsigned_abs());
+            while y != 0 {
+                (x, y) = (y, x % y);
+            }
+            if let Ok(g) = i128::try_from(x) {
+                return Int::Small(g);
+            }
+        }
+        let (a, b) = (self.to_bigint(), other.to_bigint());
+        Int::from_bigint(BigInt::from(crate::algebra::gcd::gcd(
+            a.magnitude(),
+            b.magnitude(),
+        )))
+    }
+
+    /// `self / d` for a divisor `d ≠ 0` of `self`.
+    pub fn div_exact(&self, d: &Int) -> Int {
+        if let (Int::Small(x), Int::Small(y)) = (self, d) {
+            if let Some(q) = x.checked_div(*y) {
+                return Int::Small(q);
+            }
+        }
+        Int::from_bigint(self.to_bigint() / d.to_bigint())
     }
 }
 
@@ -59,20 +114,24 @@ impl PartialEq for Int {
 }
 
 /// `+`, `−`, `×` with an `i128` fast path and a big-integer fallback.
+///
+/// A big operand is updated in place where `num-bigint` allows it (a big
+/// number times or plus a machine word, or plus a big number): the Horner
+/// loops of exact evaluation and the coefficient arithmetic of `Poly` then
+/// allocate only for a product of two big numbers or a small times a
+/// borrowed big one.
 macro_rules! int_binary_op {
-    ($Trait:ident, $method:ident, $checked:ident) => {
+    ($Trait:ident, $method:ident, $checked:ident, $small_big:expr) => {
         impl<'a> $Trait<&'a Int> for Int {
             type Output = Int;
             fn $method(self, rhs: &'a Int) -> Int {
-                // Big operands are used in place (no copy); a small one
-                // enters as a machine word (scalar arithmetic).
                 match (self, rhs) {
                     (Int::Small(a), Int::Small(b)) => match a.$checked(*b) {
                         Some(r) => Int::Small(r),
-                        None => Int::from_bigint(BigInt::from(a).$method(*b)),
+                        None => Int::Big(BigInt::from(a).$method(*b)),
                     },
                     (Int::Big(a), Int::Small(b)) => Int::from_bigint(a.$method(*b)),
-                    (Int::Small(a), Int::Big(b)) => Int::from_bigint(BigInt::from(a).$method(b)),
+                    (Int::Small(a), Int::Big(b)) => Int::from_bigint($small_big(a, b)),
                     (Int::Big(a), Int::Big(b)) => Int::from_bigint(a.$method(b)),
                 }
             }
@@ -86,9 +145,9 @@ macro_rules! int_binary_op {
     };
 }
 
-int_binary_op!(Add, add, checked_add);
-int_binary_op!(Sub, sub, checked_sub);
-int_binary_op!(Mul, mul, checked_mul);
+int_binary_op!(Add, add, checked_add, |a: i128, b: &BigInt| b + a);
+int_binary_op!(Sub, sub, checked_sub, |a: i128, b: &BigInt| -(b - a));
+int_binary_op!(Mul, mul, checked_mul, |a: i128, b: &BigInt| b * a);
 
 impl Neg for Int {
     type Output = Int;
@@ -120,8 +179,14 @@ impl One for Int {
 /// Integer numerators over one common denominator: `values[i] = nums[i]/den`
 /// with `den` the lcm of the denominators (`den > 0`).
 pub(crate) fn common_denominator(values: &[&BigRational]) -> (Vec<Int>, BigInt) {
-    use num_integer::Integer;
-    let den = values.iter().fold(BigInt::one(), |l, q| l.lcm(q.denom()));
+    let den = values.iter().fold(BigInt::one(), |l, q| {
+        let g = crate::algebra::gcd::gcd(l.magnitude(), q.denom().magnitude());
+        if g.is_one() {
+            l * q.denom()
+        } else {
+            l * (q.denom() / BigInt::from(g))
+        }
+    });
     let nums = values
         .iter()
         .map(|q| Int::from_bigint(q.numer() * (&den / q.denom())))

@@ -1,6 +1,7 @@
 //! The scalar tower and the number types the algorithms run on: the
 //! [`Ring`] / [`Scalar`] / [`Field`] / [`Ordered`] traits, exact integers
-//! with a machine-word fast path ([`Int`]), multivariate polynomials over Q
+//! with a machine-word fast path ([`Int`]) and a 256-bit stack tier
+//! ([`Wide`]), multivariate polynomials over Q
 //! ([`Poly`], the symbolic scalar of the proofs), univariate and bivariate
 //! polynomials ([`UPoly`], [`BPoly`]), the prime field [`Fp`], `f64`
 //! intervals with outward rounding ([`Interval`]), exact real algebraic
@@ -16,6 +17,7 @@ pub mod real_algebraic;
 pub(crate) mod scalar;
 pub mod sylvester;
 pub(crate) mod upoly;
+pub(crate) mod wide;
 
 pub use int::Int;
 pub use interval::Interval;
@@ -28,3 +30,4 @@ pub use scalar::{
 };
 pub use sylvester::{linear_eliminant, resultant};
 pub use upoly::{BPoly, UPoly};
+pub use wide::Wide;

@@ -46,7 +46,7 @@ mod monomial;
 mod terms;
 
 use monomial::Monomial;
-use terms::{content_with, div_exact, divide, gcd, int, is_negative, is_one, mul, Terms};
+use terms::{content_with, divide, is_negative, is_one, mul, Terms};
 
 /// The process-wide table of variable names; a variable's id is its index.
 #[derive(Default)]
@@ -106,7 +106,7 @@ impl Poly {
         divide(&mut terms, &g);
         Poly {
             terms,
-            den: div_exact(&den, &g),
+            den: den.div_exact(&g),
         }
     }
 
@@ -140,7 +140,11 @@ impl Poly {
 
     /// The constant `q`.
     pub fn constant(q: BigRational) -> Poly {
-        Poly::term(Monomial::default(), int(q.numer()), int(q.denom()))
+        Poly::term(
+            Monomial::default(),
+            Int::from_ref(q.numer()),
+            Int::from_ref(q.denom()),
+        )
     }
 
     /// The integer constant `n`.
@@ -353,8 +357,8 @@ impl Poly {
             return Poly::zero();
         }
         let mut terms = self.terms.clone();
-        terms::scale(&mut terms, &int(q.numer()));
-        Poly::normalized(terms, mul(&self.den, &int(q.denom())))
+        terms::scale(&mut terms, &Int::from_ref(q.numer()));
+        Poly::normalized(terms, mul(&self.den, &Int::from_ref(q.denom())))
     }
 
     /// The terms as `(variables with exponents, coefficient)`, in the
@@ -379,9 +383,9 @@ impl Poly {
             );
             return Poly::normalized(t, self.den.clone());
         }
-        let g = gcd(&self.den, &other.den);
-        let fa = div_exact(&other.den, &g);
-        let fb = div_exact(&self.den, &g);
+        let g = self.den.gcd(&other.den);
+        let fa = other.den.div_exact(&g);
+        let fb = self.den.div_exact(&g);
         let t = terms::add(&self.terms, &fa, &other.terms, &sign(fb));
         Poly::normalized(t, mul(&self.den, &fa))
     }

@@ -6,20 +6,184 @@
 //! curve:  t = p/q            → (a : b) = (q − p : p)
 //! rect:   u = p/q, v = r/s   → (q − p : p), (s − r : r)
 //! tri:    (u, v) = (a/q, b/q) → (a, b, q − a − b)
-//! X = H_d / H_w              (the only gcds: one per output coordinate,
-//!                             by Lehmer's algorithm, crate::algebra::gcd)
+//! X = H_d / H_w              (the only gcds: one per output coordinate)
 //! ```
 //!
-//! The kernel is the generic one of [`Net::eval_hom_into`] run on [`Int`]:
-//! `i128` while the values fit, big integers after, never a gcd on the way.
+//! The kernel is the generic one of [`Net::eval_hom_into`], run point by
+//! point on the narrowest integer type that provably holds all its values:
+//! `i128`, then [`Wide`] (256 bits, on the stack), then [`Int`] (machine
+//! word or big integer, checked). With `N` the bits of the largest `|H_i|`
+//! and `P` those of the largest homogeneous parameter, every value of the
+//! kernel has fewer than `E` bits of magnitude:
+//!
+//! ```text
+//! curve n:      E = N + n + n·P + bits(n+1)
+//!               (G_i = C(n,i) H_i < 2^{N+n};  out_k = Σ_{i≤k} a^{k−i} bⁱ G_i,  k + 1 terms)
+//! rect (m, n):  E = N + m + n + (m+n)·P + bits(m+1) + bits(n+1)
+//!               (rows as curves of degree n, then a curve of degree m over them)
+//! tri n:        E = N + 2n + n·P + 2·bits(n+1)
+//!               (G < 3ⁿ|H| ≤ 2^{2n}|H|;  Σ_j vʲ R_j,  R_j a curve of degree n − j)
+//! ```
+//!
+//! so `E ≤ 127` runs on `i128` and `E ≤ 255` on `Wide`, without overflow
+//! tests and without allocation.
 
 use super::{Evaluator, Net, Shape, Workspace};
-use crate::algebra::gcd::fraction;
+use crate::algebra::gcd::{fraction, gcd_u128};
 use crate::algebra::int::{common_denominator, Int};
+use crate::algebra::scalar::Ring;
+use crate::algebra::wide::Wide;
 use crate::error::Error;
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::Zero;
+
+/// An integer type the kernel runs on.
+trait KernelInt: Ring {
+    /// Every integer of at most this many bits is exact in the type.
+    const BITS: u64;
+
+    /// The integer `n`, of at most [`KernelInt::BITS`] bits.
+    fn from_int(n: &Int) -> Self;
+
+    /// `num / den` in lowest terms (`den ≠ 0`).
+    fn fraction(num: &Self, den: &Self) -> BigRational;
+}
+
+impl KernelInt for i128 {
+    const BITS: u64 = 127;
+
+    fn from_int(n: &Int) -> i128 {
+        match n {
+            Int::Small(v) => *v,
+            Int::Big(_) => unreachable!("a big Int has more than 127 bits"),
+        }
+    }
+
+    fn fraction(num: &i128, den: &i128) -> BigRational {
+        // |num|, |den| < 2¹²⁷: the quotients and their negations fit.
+        let g = gcd_u128(num.unsigned_abs(), den.unsigned_abs()) as i128;
+        let (n, d) = (num / g, den / g);
+        let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
+        BigRational::new_raw(BigInt::from(n), BigInt::from(d))
+    }
+}
+
+impl KernelInt for Wide {
+    const BITS: u64 = Wide::BITS;
+
+    fn from_int(n: &Int) -> Wide {
+        match n {
+            Int::Small(v) => Wide::from(*v),
+            Int::Big(b) => Wide::from_bigint(b).expect("the bound admits the value"),
+        }
+    }
+
+    fn fraction(num: &Wide, den: &Wide) -> BigRational {
+        fraction(num.to_bigint(), den.to_bigint())
+    }
+}
+
+impl KernelInt for Int {
+    const BITS: u64 = u64::MAX;
+
+    fn from_int(n: &Int) -> Int {
+        n.clone()
+    }
+
+    fn fraction(num: &Int, den: &Int) -> BigRational {
+        fraction(num.to_bigint(), den.to_bigint())
+    }
+}
+
+/// The kernel on one integer type: the net converted once, its workspace
+/// and the homogeneous parameters and point of the current evaluation.
+struct Lane<T> {
+    net: Net<T>,
+    ws: Workspace<T>,
+    hom: Vec<T>,
+    point: Vec<T>,
+}
+
+impl<T: KernelInt> Lane<T> {
+    fn new(net: &Net<Int>) -> Self {
+        let net = net.map_coords(net.coords().iter().map(T::from_int).collect());
+        Lane {
+            ws: net.workspace(),
+            hom: Vec::with_capacity(4),
+            point: vec![T::zero(); net.stride()],
+            net,
+        }
+    }
+
+    /// The Cartesian point at the integer homogeneous parameters `hom`.
+    fn eval(&mut self, hom: &[Int], out: &mut [BigRational]) -> Result<(), Error> {
+        self.hom.clear();
+        self.hom.extend(hom.iter().map(T::from_int));
+        self.net
+            .eval_hom_into(&self.hom, &mut self.point, &mut self.ws);
+        let (x, w) = self.point.split_at(self.point.len() - 1);
+        if w[0].is_zero() {
+            return Err(Error::PointAtInfinity);
+        }
+        for (o, xi) in out.iter_mut().zip(x) {
+            *o = T::fraction(xi, &w[0]);
+        }
+        Ok(())
+    }
+}
+
+/// The three kernels of one net; the narrow ones are built on first use.
+struct Kernels {
+    shape: Shape,
+    /// Bits of the largest integer coordinate of the net.
+    net_bits: u64,
+    word: Option<Lane<i128>>,
+    wide: Option<Lane<Wide>>,
+    big: Lane<Int>,
+}
+
+impl Kernels {
+    fn new(net: Net<Int>) -> Self {
+        Kernels {
+            shape: net.shape(),
+            net_bits: net.coords().iter().map(Int::bits).max().unwrap_or(0),
+            word: None,
+            wide: None,
+            big: Lane::new(&net),
+        }
+    }
+
+    /// The point at `hom` on the narrowest kernel its bound admits.
+    fn eval(&mut self, hom: &[Int], out: &mut [BigRational]) -> Result<(), Error> {
+        let param_bits = hom.iter().map(Int::bits).max().unwrap_or(0);
+        let bits = value_bits(self.shape, self.net_bits, param_bits);
+        if bits <= <i128 as KernelInt>::BITS {
+            let net = &self.big.net;
+            self.word
+                .get_or_insert_with(|| Lane::new(net))
+                .eval(hom, out)
+        } else if bits <= Wide::BITS {
+            let net = &self.big.net;
+            self.wide
+                .get_or_insert_with(|| Lane::new(net))
+                .eval(hom, out)
+        } else {
+            self.big.eval(hom, out)
+        }
+    }
+}
+
+/// The bound `E` of the module documentation: every value of the kernel
+/// is below `2^E` in magnitude.
+fn value_bits(shape: Shape, net_bits: u64, param_bits: u64) -> u64 {
+    let bits = |k: usize| u64::from(usize::BITS - k.leading_zeros());
+    let (n, p) = (net_bits, param_bits);
+    match shape {
+        Shape::Curve(d) => n + d as u64 * (1 + p) + bits(d + 1),
+        Shape::Rect(du, dv) => n + (du + dv) as u64 * (1 + p) + bits(du + 1) + bits(dv + 1),
+        Shape::Tri(d) => n + d as u64 * (2 + p) + 2 * bits(d + 1),
+    }
+}
 
 /// The integer net over one common denominator (a projective rescaling:
 /// the points it represents are unchanged).
@@ -29,42 +193,29 @@ fn integral(net: &Net<BigRational>) -> Net<Int> {
     net.map_coords(nums)
 }
 
-/// The integer homogeneous parameters of one parameter point.
+/// The integer homogeneous parameters of one parameter point (machine
+/// words, no allocation, while its numbers fit).
 fn hom_params(shape: Shape, params: &[BigRational], hom: &mut Vec<Int>) {
     hom.clear();
-    let pair = |t: &BigRational| {
-        let p = Int::from_bigint(t.numer().clone());
-        let q = Int::from_bigint(t.denom().clone());
-        (q - &p, p)
-    };
+    let parts = |t: &BigRational| (Int::from_ref(t.numer()), Int::from_ref(t.denom()));
     match shape {
         Shape::Curve(_) | Shape::Rect(..) => {
             for t in params {
-                let (a, b) = pair(t);
-                hom.push(a);
-                hom.push(b);
+                let (p, q) = parts(t);
+                hom.push(q - &p);
+                hom.push(p);
             }
         }
         Shape::Tri(_) => {
-            let (nums, q) = common_denominator(&[&params[0], &params[1]]);
-            let w = Int::from_bigint(q) - &nums[0] - &nums[1];
-            hom.extend(nums);
-            hom.push(w);
+            let ((pu, qu), (pv, qv)) = (parts(&params[0]), parts(&params[1]));
+            let g = qu.gcd(&qv);
+            let (fu, fv) = (qv.div_exact(&g), qu.div_exact(&g));
+            let q = qu * &fu;
+            let (a, b) = (pu * &fu, pv * &fv);
+            let w = q - &a - &b;
+            hom.extend([a, b, w]);
         }
     }
-}
-
-/// Divide the integer homogeneous point once per coordinate.
-fn project(h: &[Int], out: &mut [BigRational]) -> Result<(), Error> {
-    let (x, w) = h.split_at(h.len() - 1);
-    if w[0].is_zero() {
-        return Err(Error::PointAtInfinity);
-    }
-    let w: BigInt = w[0].to_bigint();
-    for (o, xi) in out.iter_mut().zip(x) {
-        *o = fraction(xi.to_bigint(), w.clone());
-    }
-    Ok(())
 }
 
 /// The batch of [`Evaluator::eval_batch`] for `BigRational`, fraction-free.
@@ -73,16 +224,125 @@ pub(crate) fn eval_batch(
     params: &[BigRational],
     out: &mut [BigRational],
 ) -> Result<(), Error> {
-    let net = integral(ev.net());
-    let shape = net.shape();
-    let mut ws: Workspace<Int> = net.workspace();
-    let mut point = vec![Int::zero(); net.stride()];
+    let mut kernels = Kernels::new(integral(ev.net()));
+    let (k, d) = (kernels.shape.params(), ev.net().dim());
     let mut hom = Vec::with_capacity(4);
-    let (k, d) = (shape.params(), net.dim());
     for (p, o) in params.chunks(k).zip(out.chunks_mut(d)) {
-        hom_params(shape, p, &mut hom);
-        net.eval_hom_into(&hom, &mut point, &mut ws);
-        project(&point, o)?;
+        hom_params(kernels.shape, p, &mut hom);
+        kernels.eval(&hom, o)?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::scalar::ratio;
+    use proptest::prelude::*;
+
+    /// A curve net of degree `n` whose every coordinate is `±(2^N − 1)`,
+    /// with alternating signs chosen by `signs`.
+    fn extreme_net(shape: Shape, net_bits: u32, signs: u64) -> Net<Int> {
+        let top: BigInt = (BigInt::from(1) << net_bits) - 1;
+        let coords = (0..shape.points() * 3)
+            .map(|i| {
+                let v = if signs >> (i % 64) & 1 == 1 {
+                    -&top
+                } else {
+                    top.clone()
+                };
+                Int::from_bigint(v)
+            })
+            .collect();
+        Net::new(coords, 3, shape).unwrap()
+    }
+
+    /// The bound is an upper bound: at the extreme net (every coordinate
+    /// of `N` bits) and extreme parameters (all `±(2^P − 1)`), the exact
+    /// value computed on `Int` has fewer than `E` bits, for every shape and
+    /// degree up to 12, and the narrow kernels agree with `Int` whenever
+    /// the bound admits them.
+    #[test]
+    fn bound_holds_at_the_extremes() {
+        for d in 0..=12usize {
+            for shape in [Shape::Curve(d), Shape::Rect(d, d / 2 + 1), Shape::Tri(d)] {
+                for (net_bits, p) in [(20u32, 9u32), (60, 20), (1, 1)] {
+                    for signs in [0u64, u64::MAX, 0x5555_5555_5555_5555] {
+                        let net = extreme_net(shape, net_bits, signs);
+                        let top = Int::from((1i128 << p) - 1);
+                        let hom: Vec<Int> = (0..4)
+                            .map(|i| {
+                                if signs >> i & 1 == 1 {
+                                    -top.clone()
+                                } else {
+                                    top.clone()
+                                }
+                            })
+                            .collect();
+                        let hom = &hom[..match shape {
+                            Shape::Tri(_) => 3,
+                            Shape::Curve(_) => 2,
+                            Shape::Rect(..) => 4,
+                        }];
+                        let mut big = Lane::<Int>::new(&net);
+                        big.net.eval_hom_into(hom, &mut big.point, &mut big.ws);
+                        let e = value_bits(shape, u64::from(net_bits), u64::from(p));
+                        for v in &big.point {
+                            assert!(
+                                v.bits() <= e,
+                                "{shape:?} N={net_bits} P={p}: {} > {e}",
+                                v.bits()
+                            );
+                        }
+                        if e <= Wide::BITS {
+                            let mut wide = Lane::<Wide>::new(&net);
+                            wide.hom = hom.iter().map(Wide::from_int).collect();
+                            wide.net
+                                .eval_hom_into(&wide.hom, &mut wide.point, &mut wide.ws);
+                            let got: Vec<BigInt> = wide.point.iter().map(Wide::to_bigint).collect();
+                            let want: Vec<BigInt> = big.point.iter().map(Int::to_bigint).collect();
+                            assert_eq!(got, want, "{shape:?} N={net_bits} P={p}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    proptest! {
+        /// Every kernel gives the Cartesian point of the generic
+        /// `BigRational` path (de Casteljau-free Horner on fractions), at
+        /// small and at large parameters (which move the point from the
+        /// `i128` kernel to `Wide` and to `Int`).
+        #[test]
+        fn tiers_agree_with_rationals(
+            coords in prop::collection::vec(-10_000i64..10_000, 12),
+            weights in prop::collection::vec(1i64..1_000, 4),
+            (p, q) in (-3_000i64..3_000, 1i64..1_000),
+            scale in 0u32..4,
+        ) {
+            let big = num_traits::pow(BigInt::from(1_000_003), 10 * scale as usize);
+            let t = BigRational::new(BigInt::from(p) * &big, BigInt::from(q) * &big + 1);
+            let pts: Vec<crate::hpoint::HPoint<BigRational>> = (0..4)
+                .map(|i| {
+                    let w = ratio::<BigRational>(weights[i], 7 + i as i64);
+                    crate::hpoint::HPoint {
+                        coords: vec![
+                            ratio::<BigRational>(coords[3 * i], 100) * &w,
+                            ratio::<BigRational>(coords[3 * i + 1], 100) * &w,
+                            w,
+                        ],
+                    }
+                })
+                .collect();
+            let c = crate::RationalCurve::from_hom(pts).unwrap();
+            let mut ev = Evaluator::curve(&c);
+            let mut fast = vec![ratio(0, 1); 2];
+            let mut generic = fast.clone();
+            let fast_result = ev.eval_batch(std::slice::from_ref(&t), &mut fast);
+            let generic_result = ev.eval_batch_generic(std::slice::from_ref(&t), &mut generic);
+            prop_assert_eq!(fast_result.is_ok(), generic_result.is_ok());
+            prop_assert_eq!(fast, generic);
+        }
+    }
 }

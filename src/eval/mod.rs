@@ -2,17 +2,18 @@
 //! many parameters into a caller's buffer with a reusable workspace.
 //!
 //! A [`Net`] holds the homogeneous control points `(w·P, w)` of a curve, a
-//! rect or a tri patch back to back, `stride = dim + 1` scalars each, with
-//! the binomial coefficients its degrees need. Evaluation is the
-//! homogeneous Horner–Bernstein scheme, O(n) per point for a curve instead
-//! of de Casteljau's O(n²), with ring operations only:
+//! rect or a tri patch back to back, `stride = dim + 1` scalars each, and
+//! the same points times their Bernstein coefficients (binomial or
+//! trinomial), which the kernel sums. Evaluation is the homogeneous
+//! Horner–Bernstein scheme, O(n) per point for a curve instead of de
+//! Casteljau's O(n²), with ring operations only:
 //!
 //! ```text
-//! curve:  H(a : b)     = Σ_i C(n,i) a^{n−i} bⁱ H_i
-//!                      = (…((H_0·a + C(n,1) b H_1)·a + C(n,2) b² H_2)·a + …)
-//! rect:   H(u, v)      = Σ_i C(m,i) (1−u)^{m−i} uⁱ [Σ_j C(n,j) (1−v)^{n−j} vʲ H_ij]
-//! tri:    H(u, v, w)   = Σ_j C(n,j) vʲ [Σ_i C(n−j,i) uⁱ w^{n−j−i} H_{i,j}]
-//!         (n!/(i! j! k!) = C(n,j)·C(n−j,i), k = n − i − j)
+//! curve:  G_i = C(n,i) H_i,              H(a : b) = Σ_i a^{n−i} bⁱ G_i
+//!                                                 = (…((G_0·a + b G_1)·a + b² G_2)·a + …)
+//! rect:   G_ij = C(m,i) C(n,j) H_ij,     H(u, v)  = Σ_i (1−u)^{m−i} uⁱ [Σ_j (1−v)^{n−j} vʲ G_ij]
+//! tri:    G_ij = n!/(i! j! k!) H_ijk,    H(u, v, w) = Σ_j vʲ [Σ_i uⁱ w^{n−j−i} G_ij]
+//!         (k = n − i − j;  n!/(i! j! k!) = C(n,j)·C(n−j,i))
 //! X = H_d / H_w        (one division per coordinate, at the end)
 //! ```
 //!
@@ -21,7 +22,9 @@
 //! arithmetic throughout when the net is integral. That is how exact
 //! evaluation stays fraction-free: [`Field::eval_net`] is the per-type hook,
 //! and `BigRational` clears the denominators of the net once, runs the
-//! same kernel on [`Int`] (machine integers while they fit, no gcd) and
+//! same kernel on the narrowest integer type that provably holds its
+//! values (`i128`, [`Wide`](crate::algebra::Wide) or
+//! [`Int`](crate::algebra::Int): no gcd, no allocation below 256 bits) and
 //! divides once per coordinate ([`fraction_free`]).
 //!
 //! For `f64` the scheme is the one of dhermes/bezier's `evaluate_multi`;
@@ -80,7 +83,7 @@ impl Shape {
         }
     }
 
-    /// The largest degree, which sizes the binomial table.
+    /// The largest degree, which sizes the table of binomials.
     fn max_degree(&self) -> usize {
         match *self {
             Shape::Curve(n) | Shape::Tri(n) => n,
@@ -90,7 +93,7 @@ impl Shape {
 }
 
 /// A control net as one contiguous buffer of homogeneous coordinates,
-/// with the binomial coefficients of its degrees.
+/// with the same points times their Bernstein coefficients.
 ///
 /// # Examples
 ///
@@ -109,11 +112,11 @@ impl Shape {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Net<T> {
     coords: Vec<T>,
+    /// `coords` with each point times its Bernstein coefficient (`G` in
+    /// the module's formulas): what the kernel sums.
+    scaled: Vec<T>,
     stride: usize,
     shape: Shape,
-    /// Row `k` of Pascal's triangle, `C(k, 0) … C(k, k)`, for `k ≤` the
-    /// largest degree, flattened: row `k` starts at `k(k + 1)/2`.
-    binomials: Vec<T>,
 }
 
 /// # Construction
@@ -132,13 +135,7 @@ impl<T: Ring> Net<T> {
                 coords.len()
             )));
         }
-        let binomials = pascal(shape.max_degree());
-        Ok(Net {
-            coords,
-            stride,
-            shape,
-            binomials,
-        })
+        Ok(Net::with_coords(coords, stride, shape))
     }
 
     /// The net of `shape` from homogeneous points, in the order of [`Shape`].
@@ -203,20 +200,54 @@ impl<T> Net<T> {
         &self.coords
     }
 
-    /// The same net with every coordinate mapped by `f` (e.g. to integers
-    /// over a common denominator); the binomials are rebuilt for `U`.
+    /// The net of the same shape and stride with the coordinates `coords`
+    /// (e.g. the integers of this net over a common denominator, in another
+    /// ring).
+    ///
+    /// **Panics if `coords` is not as long as [`Net::coords`].**
     pub fn map_coords<U: Ring>(&self, coords: Vec<U>) -> Net<U> {
+        assert_eq!(
+            coords.len(),
+            self.coords.len(),
+            "a mapped net keeps its size"
+        );
+        Net::with_coords(coords, self.stride, self.shape)
+    }
+}
+
+impl<T: Ring> Net<T> {
+    /// The net of validated `coords`, with its scaled points.
+    fn with_coords(coords: Vec<T>, stride: usize, shape: Shape) -> Self {
+        let factors = bernstein_factors::<T>(shape);
+        let scaled = coords
+            .chunks_exact(stride)
+            .zip(&factors)
+            .flat_map(|(point, f)| point.iter().map(move |x| f.clone() * x))
+            .collect();
         Net {
             coords,
-            stride: self.stride,
-            shape: self.shape,
-            binomials: pascal(self.shape.max_degree()),
+            scaled,
+            stride,
+            shape,
         }
     }
+}
 
-    fn binomial_row(&self, k: usize) -> &[T] {
-        let start = k * (k + 1) / 2;
-        &self.binomials[start..=start + k]
+/// The Bernstein coefficient of each point of a net of `shape`, in the
+/// order of [`Shape`]: `C(n,i)`, `C(m,i)·C(n,j)` or `C(n,j)·C(n−j,i)`.
+fn bernstein_factors<T: Ring>(shape: Shape) -> Vec<T> {
+    let table = pascal::<T>(shape.max_degree());
+    let c = |k: usize, i: usize| table[k * (k + 1) / 2 + i].clone();
+    match shape {
+        Shape::Curve(n) => (0..=n).map(|i| c(n, i)).collect(),
+        Shape::Rect(m, n) => (0..=m)
+            .flat_map(|i| (0..=n).map(move |j| (i, j)))
+            .map(|(i, j)| c(m, i) * &c(n, j))
+            .collect(),
+        Shape::Tri(n) => (0..=n)
+            .flat_map(|j| (0..=n - j).map(move |i| (i, j)))
+            .map(|(i, j)| c(n, j) * &c(n - j, i))
+            .collect(),
     }
 }
 
@@ -272,50 +303,47 @@ impl<T: Ring> Net<T> {
     pub fn eval_hom_into(&self, hom: &[T], out: &mut [T], ws: &mut Workspace<T>) {
         let s = self.stride;
         match self.shape {
-            Shape::Curve(n) => horner(&self.coords, s, self.binomial_row(n), &hom[0], &hom[1], out),
-            Shape::Rect(m, n) => {
+            Shape::Curve(_) => horner(&self.scaled, s, &hom[0], &hom[1], out),
+            Shape::Rect(_, n) => {
                 let row_len = (n + 1) * s;
-                for (i, row) in ws.rows.chunks_mut(s).enumerate() {
-                    let net_row = &self.coords[i * row_len..(i + 1) * row_len];
-                    horner(net_row, s, self.binomial_row(n), &hom[2], &hom[3], row);
+                for (row, sum) in self.scaled.chunks_exact(row_len).zip(ws.rows.chunks_mut(s)) {
+                    horner(row, s, &hom[2], &hom[3], sum);
                 }
-                horner(&ws.rows, s, self.binomial_row(m), &hom[0], &hom[1], out);
+                horner(&ws.rows, s, &hom[0], &hom[1], out);
             }
             Shape::Tri(n) => self.tri_into(n, hom, out, ws),
         }
     }
 
-    /// `Σ_j C(n,j) vʲ R_j` with `R_j = Σ_i C(n−j,i) uⁱ w^{n−j−i} H_{i,j}`.
+    /// `Σ_j vʲ R_j` with `R_j = Σ_i uⁱ w^{n−j−i} G_ij`.
     fn tri_into(&self, n: usize, hom: &[T], out: &mut [T], ws: &mut Workspace<T>) {
         let (u, v, w) = (&hom[0], &hom[1], &hom[2]);
         let s = self.stride;
-        let outer = self.binomial_row(n);
         let mut start = 0;
         let mut vpow = T::one();
-        for (j, c) in outer.iter().enumerate() {
+        for j in 0..=n {
             let len = (n - j + 1) * s;
-            let row = &self.coords[start..start + len];
+            horner(&self.scaled[start..start + len], s, w, u, &mut ws.rows);
             start += len;
-            horner(row, s, self.binomial_row(n - j), w, u, &mut ws.rows);
-            let coef = c.clone() * &vpow;
             for (o, r) in out.iter_mut().zip(&ws.rows) {
-                let term = coef.clone() * r;
                 *o = if j == 0 {
-                    term
+                    r.clone()
                 } else {
-                    std::mem::replace(o, T::zero()) + &term
+                    std::mem::replace(o, T::zero()) + &(vpow.clone() * r)
                 };
             }
-            vpow = vpow * v;
+            if j < n {
+                vpow = vpow * v;
+            }
         }
     }
 }
 
-/// `Σ_i C(n,i) a^{n−i} bⁱ H_i` by Horner in `a`, into `out`: the points
-/// `H_i` are the `stride`-long chunks of `points`, `binom` is row `n` of
-/// Pascal's triangle.
-fn horner<T: Ring>(points: &[T], stride: usize, binom: &[T], a: &T, b: &T, out: &mut [T]) {
-    horner_lanes::<T, 1>(points, stride, binom, [a], [b], out);
+/// `Σ_i a^{n−i} bⁱ G_i` by Horner in `a`, into `out`: the points `G_i`
+/// (already times their binomials) are the `stride`-long chunks of
+/// `points`.
+fn horner<T: Ring>(points: &[T], stride: usize, a: &T, b: &T, out: &mut [T]) {
+    horner_lanes::<T, 1>(points, stride, [a], [b], out);
 }
 
 /// [`horner`] at `L` parameters at once, lane `l` into
@@ -329,15 +357,14 @@ fn horner<T: Ring>(points: &[T], stride: usize, binom: &[T], a: &T, b: &T, out: 
 fn horner_lanes<T: Ring, const L: usize>(
     points: &[T],
     stride: usize,
-    binom: &[T],
     a: [&T; L],
     b: [&T; L],
     out: &mut [T],
 ) {
     match stride {
-        3 => horner_width::<T, 3, L>(points, stride, binom, a, b, out),
-        4 => horner_width::<T, 4, L>(points, stride, binom, a, b, out),
-        _ => horner_width::<T, 0, L>(points, stride, binom, a, b, out),
+        3 => horner_width::<T, 3, L>(points, stride, a, b, out),
+        4 => horner_width::<T, 4, L>(points, stride, a, b, out),
+        _ => horner_width::<T, 0, L>(points, stride, a, b, out),
     }
 }
 
@@ -347,7 +374,6 @@ fn horner_lanes<T: Ring, const L: usize>(
 fn horner_width<T: Ring, const W: usize, const L: usize>(
     points: &[T],
     stride: usize,
-    binom: &[T],
     a: [&T; L],
     b: [&T; L],
     out: &mut [T],
@@ -357,13 +383,12 @@ fn horner_width<T: Ring, const W: usize, const L: usize>(
         lane.clone_from_slice(&points[..s]);
     }
     let mut bpow: [T; L] = std::array::from_fn(|_| T::one());
-    for (c, point) in binom.iter().zip(points.chunks_exact(s)).skip(1) {
+    for point in points.chunks_exact(s).skip(1) {
         for (l, lane) in out[..L * s].chunks_exact_mut(s).enumerate() {
             bpow[l] = std::mem::replace(&mut bpow[l], T::zero()) * b[l];
-            let coef = c.clone() * &bpow[l];
             for (o, x) in lane.iter_mut().zip(&point[..s]) {
                 let prev = std::mem::replace(o, T::zero());
-                *o = prev * a[l] + &(coef.clone() * x);
+                *o = prev * a[l] + &(bpow[l].clone() * x);
             }
         }
     }
@@ -522,7 +547,7 @@ impl<T: Field> Evaluator<T> {
     pub(crate) fn eval_batch_generic(&mut self, params: &[T], out: &mut [T]) -> Result<(), Error> {
         let (k, d) = (self.net.shape.params(), self.net.dim());
         let mut done = 0;
-        if let Shape::Curve(n) = self.net.shape {
+        if let Shape::Curve(_) = self.net.shape {
             let s = self.net.stride;
             let mut groups = params
                 .chunks_exact(LANES)
@@ -530,8 +555,7 @@ impl<T: Field> Evaluator<T> {
             for (ts, o) in &mut groups {
                 let a: [T; LANES] = std::array::from_fn(|l| T::one() - &ts[l]);
                 let b: [&T; LANES] = std::array::from_fn(|l| &ts[l]);
-                let binom = self.net.binomial_row(n);
-                horner_lanes(&self.net.coords, s, binom, a.each_ref(), b, &mut self.lanes);
+                horner_lanes(&self.net.scaled, s, a.each_ref(), b, &mut self.lanes);
                 for (h, x) in self.lanes.chunks_exact(s).zip(o.chunks_exact_mut(d)) {
                     project_into(h, x)?;
                 }

@@ -14,38 +14,12 @@
 
 use super::monomial::Monomial;
 use crate::algebra::int::Int;
-use num_bigint::BigInt;
-use num_integer::Integer;
 use num_traits::{Signed, Zero};
 use std::cmp::{Ordering, Reverse};
 use std::collections::BinaryHeap;
 
 /// A sorted term list.
 pub(crate) type Terms = Vec<(Monomial, Int)>;
-
-/// `gcd(|a|, |b|) ≥ 0`.
-pub(crate) fn gcd(a: &Int, b: &Int) -> Int {
-    if let (Int::Small(x), Int::Small(y)) = (a, b) {
-        let (mut x, mut y) = (x.unsigned_abs(), y.unsigned_abs());
-        while y != 0 {
-            (x, y) = (y, x % y);
-        }
-        if let Ok(g) = i128::try_from(x) {
-            return Int::Small(g);
-        }
-    }
-    Int::from_bigint(a.to_bigint().gcd(&b.to_bigint()))
-}
-
-/// `a / b` for `b | a`, `b ≠ 0`.
-pub(crate) fn div_exact(a: &Int, b: &Int) -> Int {
-    if let (Int::Small(x), Int::Small(y)) = (a, b) {
-        if let Some(q) = x.checked_div(*y) {
-            return Int::Small(q);
-        }
-    }
-    Int::from_bigint(a.to_bigint() / b.to_bigint())
-}
 
 /// Is `a < 0`?
 pub(crate) fn is_negative(a: &Int) -> bool {
@@ -58,11 +32,6 @@ pub(crate) fn is_negative(a: &Int) -> bool {
 /// Is `a = 1`?
 pub(crate) fn is_one(a: &Int) -> bool {
     matches!(a, Int::Small(1))
-}
-
-/// The big integer `n` as an [`Int`] (a clone).
-pub(crate) fn int(n: &BigInt) -> Int {
-    Int::from_bigint(n.clone())
 }
 
 /// `a·b` without consuming `a`.
@@ -78,7 +47,7 @@ pub(crate) fn content_with(terms: &Terms, start: &Int) -> Int {
         if is_one(&g) {
             break;
         }
-        g = gcd(&g, c);
+        g = g.gcd(c);
     }
     g
 }
@@ -96,7 +65,7 @@ pub(crate) fn scale(terms: &mut Terms, f: &Int) {
 pub(crate) fn divide(terms: &mut Terms, g: &Int) {
     if !is_one(g) {
         for (_, c) in terms.iter_mut() {
-            *c = div_exact(c, g);
+            *c = c.div_exact(g);
         }
     }
 }
