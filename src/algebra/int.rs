@@ -20,7 +20,7 @@ use std::ops::{Add, Mul, Neg, Sub};
 /// assert_eq!(big.to_bigint(), num_bigint::BigInt::from(i128::MAX) + 1);
 /// assert_eq!(big - &Int::from(1), Int::from(i128::MAX)); // back to i128
 /// ```
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub enum Int {
     /// A machine integer.
     Small(i128),
@@ -98,6 +98,25 @@ impl Int {
     }
 }
 
+impl Clone for Int {
+    fn clone(&self) -> Int {
+        match self {
+            Int::Small(a) => Int::Small(*a),
+            Int::Big(a) => Int::Big(a.clone()),
+        }
+    }
+
+    /// Reuses the digits of a big `self` for a big `source`, so that
+    /// refilling a buffer of big numbers (the kernel's lanes) allocates
+    /// nothing once it has grown.
+    fn clone_from(&mut self, source: &Int) {
+        match (self, source) {
+            (Int::Big(a), Int::Big(b)) => a.clone_from(b),
+            (this, _) => *this = source.clone(),
+        }
+    }
+}
+
 impl From<i128> for Int {
     fn from(n: i128) -> Int {
         Int::Small(n)
@@ -108,15 +127,17 @@ impl PartialEq for Int {
     fn eq(&self, other: &Int) -> bool {
         match (self, other) {
             (Int::Small(a), Int::Small(b)) => a == b,
-            _ => self.to_bigint() == other.to_bigint(),
+            (Int::Big(a), Int::Big(b)) => a == b,
+            // The representation is canonical: a small value is never big.
+            _ => false,
         }
     }
 }
 
-/// `+`, `−`, `×` with an `i128` fast path and a big-integer fallback.
+/// `+` and `−` with an `i128` fast path and a big-integer fallback.
 ///
 /// A big operand is updated in place where `num-bigint` allows it (a big
-/// number times or plus a machine word, or plus a big number): the Horner
+/// number plus a machine word or a big number; `×` below): the Horner
 /// loops of exact evaluation and the coefficient arithmetic of `Poly` then
 /// allocate only for a product of two big numbers or a small times a
 /// borrowed big one.
@@ -147,7 +168,66 @@ macro_rules! int_binary_op {
 
 int_binary_op!(Add, add, checked_add, |a: i128, b: &BigInt| b + a);
 int_binary_op!(Sub, sub, checked_sub, |a: i128, b: &BigInt| -(b - a));
-int_binary_op!(Mul, mul, checked_mul, |a: i128, b: &BigInt| b * a);
+
+impl<'a> Mul<&'a Int> for Int {
+    type Output = Int;
+    /// A big factor has `|x| ≥ 2¹²⁷`: its product with another big one, or
+    /// with a small one of `|s| ≥ 2`, is big again without a range test.
+    fn mul(self, rhs: &'a Int) -> Int {
+        match (self, rhs) {
+            (Int::Small(a), Int::Small(b)) => match a.checked_mul(*b) {
+                Some(r) => Int::Small(r),
+                None => Int::Big(BigInt::from(a) * *b),
+            },
+            (Int::Big(a), Int::Small(b)) => big_times(a * *b, *b),
+            (Int::Small(a), Int::Big(b)) => big_times(b * a, a),
+            (Int::Big(a), Int::Big(b)) => Int::Big(a * b),
+        }
+    }
+}
+
+impl Mul for Int {
+    type Output = Int;
+    fn mul(self, rhs: Int) -> Int {
+        self * &rhs
+    }
+}
+
+/// `big·s` for a big `|big| ≥ 2¹²⁷`: big again without a range test when
+/// `|s| ≥ 2`.
+fn big_times(product: BigInt, s: i128) -> Int {
+    if s.unsigned_abs() >= 2 {
+        Int::Big(product)
+    } else {
+        Int::from_bigint(product)
+    }
+}
+
+/// `a·b` of borrowed operands: two big operands multiply without a copy.
+fn product(a: &Int, b: &Int) -> Int {
+    match (a, b) {
+        (Int::Big(x), Int::Big(y)) => Int::Big(x * y),
+        (Int::Big(_), Int::Small(_)) => a.clone() * b,
+        (Int::Small(_), _) => b.clone() * a,
+    }
+}
+
+impl crate::algebra::scalar::MulAcc for Int {
+    /// `acc·a` in place (a machine-word `a` scales the big number's
+    /// digits), then `+ c·x`, with `c·x` formed from borrowed operands,
+    /// added in place.
+    fn mul_acc(acc: &mut Int, a: &Int, c: &Int, x: &Int) {
+        let prev = std::mem::replace(acc, Int::Small(0));
+        *acc = prev * a + &product(c, x);
+    }
+
+    /// Blocks of `k` points with `a^k`, `b^k` below 2⁶³ (one machine word
+    /// each): parameters of `p` bits give `k = ⌊63/p⌋`.
+    fn horner_block(a: &Int, b: &Int) -> usize {
+        let bits = a.bits().max(b.bits()).max(1);
+        (63 / bits) as usize
+    }
+}
 
 impl Neg for Int {
     type Output = Int;

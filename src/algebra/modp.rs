@@ -156,6 +156,8 @@ impl One for Fp {
     }
 }
 
+impl crate::algebra::scalar::MulAcc for Fp {}
+
 impl Scalar for Fp {
     fn from_i64(n: i64) -> Self {
         Fp(n.rem_euclid(MODULUS as i64) as u64)

@@ -515,6 +515,8 @@ impl std::iter::Sum for Poly {
     }
 }
 
+impl crate::algebra::scalar::MulAcc for Poly {}
+
 impl Scalar for Poly {
     fn from_i64(n: i64) -> Self {
         Poly::from_int(n)

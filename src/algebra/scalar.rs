@@ -92,6 +92,49 @@ impl<T> Ring for T where
 {
 }
 
+/// The multiply-accumulate step of the Horner–Bernstein kernel
+/// ([`crate::eval`]): `acc ← acc·a + c·x`. The default is those ring
+/// operations; a big-integer type overrides it to multiply `c·x` without
+/// copying an operand ([`Int`](crate::algebra::Int)).
+pub trait MulAcc: Ring {
+    /// `*acc = acc·a + c·x`.
+    fn mul_acc(acc: &mut Self, a: &Self, c: &Self, x: &Self) {
+        let prev = std::mem::replace(acc, Self::zero());
+        *acc = prev * a + &(c.clone() * x);
+    }
+
+    /// How many points the kernel sums at a time at the homogeneous
+    /// parameter `(a : b)` (see `eval::horner`): 1, unless products of
+    /// big numbers cost more than products by machine words.
+    fn horner_block(a: &Self, b: &Self) -> usize {
+        let _ = (a, b);
+        1
+    }
+
+    /// `self^e` by repeated squaring (`x^0 = 1`).
+    fn pow_ring(self, e: usize) -> Self {
+        let (mut result, mut base, mut e) = (Self::one(), self, e);
+        while e > 0 {
+            if e & 1 == 1 {
+                result = result * &base;
+            }
+            e >>= 1;
+            if e > 0 {
+                base = base.clone() * &base;
+            }
+        }
+        result
+    }
+}
+
+impl MulAcc for f64 {
+    fn mul_acc(acc: &mut f64, a: &f64, c: &f64, x: &f64) {
+        *acc = *acc * a + c * x;
+    }
+}
+impl MulAcc for i128 {}
+impl MulAcc for BigRational {}
+
 /// A commutative ring that contains Q (a Q-algebra): `+ − ×`, negation, zero,
 /// one, integer and rational constants, and an exact zero test.
 ///
@@ -105,7 +148,7 @@ impl<T> Ring for T where
 ///   0 + a = a,      1·a = a,    a + (−a) = 0,
 ///   from_rational(p/q)·from_i64(q) = from_i64(p)
 /// ```
-pub trait Scalar: Ring {
+pub trait Scalar: Ring + MulAcc {
     /// The integer `n` as a scalar.
     fn from_i64(n: i64) -> Self;
 

@@ -85,6 +85,8 @@ impl Neg for Wide {
     }
 }
 
+impl crate::algebra::scalar::MulAcc for Wide {}
+
 impl Zero for Wide {
     fn zero() -> Wide {
         Wide(I256::ZERO)
@@ -112,7 +114,7 @@ mod tests {
         fn agrees_with_bigint(a in any::<i128>(), b in any::<i128>(), c in any::<i64>()) {
             let (wa, wb, wc) = (Wide::from(a), Wide::from(b), Wide::from(i128::from(c)));
             let (ba, bb, bc) = (BigInt::from(a), BigInt::from(b), BigInt::from(c));
-            let w = wa * &wb - &(wc * &wc) + &wa;
+            let w = wa * wb - wc * wc + wa;
             let n = &ba * &bb - &bc * &bc + &ba;
             prop_assert_eq!(w.to_bigint(), n.clone());
             prop_assert_eq!(Wide::from_bigint(&n), Some(w));

@@ -45,7 +45,7 @@ mod jet;
 
 pub use jet::Jets;
 
-use crate::algebra::scalar::{Field, Ring};
+use crate::algebra::scalar::{Field, MulAcc, Ring};
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
@@ -270,15 +270,16 @@ fn pascal<T: Ring>(n: usize) -> Vec<T> {
 }
 
 /// Scratch space for [`Net::eval_hom_into`]: the partial sums of the rows
-/// of a patch, `stride` scalars each, allocated once and reused for every
-/// point.
+/// of a patch and of one block of a blocked Horner sum, `stride` scalars
+/// each, allocated once and reused for every point.
 #[derive(Clone, Debug)]
 pub struct Workspace<T> {
     rows: Vec<T>,
+    block: Vec<T>,
 }
 
 /// # Evaluation (ring operations only)
-impl<T: Ring> Net<T> {
+impl<T: MulAcc> Net<T> {
     /// A workspace sized for this net.
     pub fn workspace(&self) -> Workspace<T> {
         let rows = match self.shape {
@@ -288,6 +289,7 @@ impl<T: Ring> Net<T> {
         };
         Workspace {
             rows: vec![T::zero(); rows * self.stride],
+            block: vec![T::zero(); self.stride],
         }
     }
 
@@ -303,13 +305,13 @@ impl<T: Ring> Net<T> {
     pub fn eval_hom_into(&self, hom: &[T], out: &mut [T], ws: &mut Workspace<T>) {
         let s = self.stride;
         match self.shape {
-            Shape::Curve(_) => horner(&self.scaled, s, &hom[0], &hom[1], out),
+            Shape::Curve(_) => horner(&self.scaled, s, &hom[0], &hom[1], out, &mut ws.block),
             Shape::Rect(_, n) => {
                 let row_len = (n + 1) * s;
                 for (row, sum) in self.scaled.chunks_exact(row_len).zip(ws.rows.chunks_mut(s)) {
-                    horner(row, s, &hom[2], &hom[3], sum);
+                    horner(row, s, &hom[2], &hom[3], sum, &mut ws.block);
                 }
-                horner(&ws.rows, s, &hom[0], &hom[1], out);
+                horner(&ws.rows, s, &hom[0], &hom[1], out, &mut ws.block);
             }
             Shape::Tri(n) => self.tri_into(n, hom, out, ws),
         }
@@ -323,7 +325,14 @@ impl<T: Ring> Net<T> {
         let mut vpow = T::one();
         for j in 0..=n {
             let len = (n - j + 1) * s;
-            horner(&self.scaled[start..start + len], s, w, u, &mut ws.rows);
+            horner(
+                &self.scaled[start..start + len],
+                s,
+                w,
+                u,
+                &mut ws.rows,
+                &mut ws.block,
+            );
             start += len;
             for (o, r) in out.iter_mut().zip(&ws.rows) {
                 *o = if j == 0 {
@@ -342,8 +351,42 @@ impl<T: Ring> Net<T> {
 /// `Σ_i a^{n−i} bⁱ G_i` by Horner in `a`, into `out`: the points `G_i`
 /// (already times their binomials) are the `stride`-long chunks of
 /// `points`.
-fn horner<T: Ring>(points: &[T], stride: usize, a: &T, b: &T, out: &mut [T]) {
-    horner_lanes::<T, 1>(points, stride, [a], [b], out);
+///
+/// When `T` asks for blocks of `k > 1` points ([`MulAcc::horner_block`]:
+/// big integers at machine-word parameters), the sum goes block by block,
+/// `block` holding one block's sum:
+///
+/// ```text
+/// C_j = Σ_{r<k_j} a^{k_j−1−r} bʳ G_{s_j+r}        (powers of a, b below k: machine words)
+/// acc ← acc·a^{k_j} + b^{s_j}·C_j                   (s_j = first index of block j)
+/// ```
+///
+/// so that a product of two big numbers (`b^{s_j}·C_j`) comes once per
+/// block instead of once per point.
+fn horner<T: MulAcc>(points: &[T], stride: usize, a: &T, b: &T, out: &mut [T], block: &mut [T]) {
+    let k = T::horner_block(a, b);
+    if k <= 1 {
+        return horner_lanes::<T, 1>(points, stride, [a], [b], out);
+    }
+    let (a_k, b_k) = (a.clone().pow_ring(k), b.clone().pow_ring(k));
+    let mut b_start = T::one();
+    for (j, chunk) in points.chunks(k * stride).enumerate() {
+        horner_lanes::<T, 1>(chunk, stride, [a], [b], block);
+        if j == 0 {
+            out.swap_with_slice(block);
+        } else {
+            let len = chunk.len() / stride;
+            let a_len = if len == k {
+                a_k.clone()
+            } else {
+                a.clone().pow_ring(len)
+            };
+            for (o, c) in out.iter_mut().zip(block.iter()) {
+                T::mul_acc(o, &a_len, &b_start, c);
+            }
+        }
+        b_start = b_start * &b_k;
+    }
 }
 
 /// [`horner`] at `L` parameters at once, lane `l` into
@@ -354,7 +397,7 @@ fn horner<T: Ring>(points: &[T], stride: usize, a: &T, b: &T, out: &mut [T]) {
 /// The body is [`horner_width`], instantiated for the common strides 3
 /// (planar) and 4 (spatial) so that the coordinate loop has a length known
 /// at compile time (unrolled, no bounds checks), and for any other stride.
-fn horner_lanes<T: Ring, const L: usize>(
+fn horner_lanes<T: MulAcc, const L: usize>(
     points: &[T],
     stride: usize,
     a: [&T; L],
@@ -371,7 +414,7 @@ fn horner_lanes<T: Ring, const L: usize>(
 /// [`horner_lanes`] with the stride `W` fixed at compile time (`W = 0`:
 /// the run-time `stride`).
 #[inline(always)]
-fn horner_width<T: Ring, const W: usize, const L: usize>(
+fn horner_width<T: MulAcc, const W: usize, const L: usize>(
     points: &[T],
     stride: usize,
     a: [&T; L],
@@ -387,8 +430,7 @@ fn horner_width<T: Ring, const W: usize, const L: usize>(
         for (l, lane) in out[..L * s].chunks_exact_mut(s).enumerate() {
             bpow[l] = std::mem::replace(&mut bpow[l], T::zero()) * b[l];
             for (o, x) in lane.iter_mut().zip(&point[..s]) {
-                let prev = std::mem::replace(o, T::zero());
-                *o = prev * a[l] + &(bpow[l].clone() * x);
+                T::mul_acc(o, a[l], &bpow[l], x);
             }
         }
     }

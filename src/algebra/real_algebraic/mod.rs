@@ -780,6 +780,8 @@ macro_rules! by_value {
 }
 by_value!(Add add, Sub sub, Mul mul, Div div);
 
+impl crate::algebra::scalar::MulAcc for RealAlgebraic {}
+
 impl Scalar for RealAlgebraic {
     fn from_i64(n: i64) -> Self {
         Self::rat(BigRational::from_integer(n.into()))
