@@ -1,9 +1,10 @@
 //! Steady-state `f64` batch evaluation makes no heap allocation per point
 //! (issue 12): a counting global allocator counts the allocations of a
 //! batch of 1 000 points and of a batch of 10 000 with the same evaluator,
-//! for curves, rect and tri patches; both counts must be zero.
+//! for curves, rect and tri patches, points and first derivatives
+//! ([`Jets`]); both counts must be zero.
 
-use exact_bezier::eval::Evaluator;
+use exact_bezier::eval::{Evaluator, Jets};
 use exact_bezier::{RationalCurve, RectPatch, TriPatch};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
@@ -103,6 +104,22 @@ fn f64_batches_allocate_nothing() {
     for (ev, per_point, dim, what) in &mut evs {
         for points in [1_000, 10_000] {
             let n = batch_allocations(ev, points, *per_point, *dim);
+            assert_eq!(n, 0, "{what}: {n} allocations for a batch of {points}");
+        }
+    }
+    let mut jets = [
+        (Jets::curve(&curve), "curve jets"),
+        (Jets::rect(&rect), "rect jets"),
+        (Jets::tri(&tri), "tri jets"),
+    ];
+    for (jets, what) in &mut jets {
+        for points in [1_000, 10_000] {
+            let ps = params(points, jets.params());
+            let per_point = (jets.params() + 1) * jets.stride();
+            let mut out = vec![0.0; points * per_point];
+            jets.eval_batch(&ps, &mut out).unwrap(); // warm-up
+            let n = allocations(|| jets.eval_batch(&ps, &mut out).unwrap());
+            assert!(out.iter().all(|x| x.is_finite()));
             assert_eq!(n, 0, "{what}: {n} allocations for a batch of {points}");
         }
     }

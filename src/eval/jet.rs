@@ -1,8 +1,10 @@
-//! [`Jets`]: a patch's homogeneous point and first partial derivatives
-//! `H`, `H_u`, `H_v` at many parameter points, each by the Horner–Bernstein
-//! kernel on a derivative net built once (what meshes and normals need).
+//! [`Jets`]: a curve's or a patch's homogeneous point and first
+//! derivatives — `H`, `H'` or `H`, `H_u`, `H_v` — at many parameter points,
+//! each by the Horner–Bernstein kernel on a derivative net built once (what
+//! tangents, normals and meshes need), in batch into a caller's buffer.
 //!
 //! ```text
+//! curve n:      H'  = n Σ (H_{i+1} − H_i) B_{i,n−1}(t)
 //! rect (m, n):  H_u = m Σ (H_{i+1,j} − H_{i,j}) B_{i,m−1}(u) B_{j,n}(v)
 //!               H_v = n Σ (H_{i,j+1} − H_{i,j}) B_{i,m}(u) B_{j,n−1}(v)
 //! tri n:        H_u = n Σ (H_{i+1,j,k} − H_{i,j,k+1}) B^{n−1}_{ijk}(u, v, w)
@@ -11,19 +13,23 @@
 //!
 //! (`w = 1 − u − v`, so `∂/∂u` of the tri patch is the directional
 //! derivative along `(1, 0, −1)`.) Ring operations only: exact for exact
-//! scalars and symbolic for `Poly`.
+//! scalars and symbolic for `Poly`. The Cartesian derivative follows by the
+//! quotient rule, `X' = (w·P' − w'·P)/w²` with `H = (w·P, w)`.
 //!
 //! Reference: source 001 (lecture), derivatives of Bézier curves and
 //! surfaces ("导矢"), and of triangular patches (directional derivatives).
 
 use super::{Net, Shape, Workspace};
 use crate::algebra::scalar::Scalar;
+use crate::curve::RationalCurve;
+use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::rect::RectPatch;
 use crate::render::Jet;
 use crate::tri::TriPatch;
 
-/// The nets of `H`, `H_u`, `H_v` of a patch, with their workspaces.
+/// The nets of `H` and its first derivatives (`H'` for a curve, `H_u`,
+/// `H_v` for a patch), with their workspaces.
 ///
 /// # Examples
 ///
@@ -39,12 +45,36 @@ use crate::tri::TriPatch;
 /// ```
 #[derive(Clone, Debug)]
 pub struct Jets<T> {
-    nets: [Net<T>; 3],
-    workspaces: [Workspace<T>; 3],
+    /// `H`, then one derivative net per parameter.
+    nets: Vec<Net<T>>,
+    workspaces: Vec<Workspace<T>>,
+    /// The homogeneous parameters of the point being evaluated.
+    hom: [T; 4],
 }
 
 impl<T: Scalar> Jets<T> {
-    /// The jets of a rect patch.
+    /// The jets of a curve: `H` and `H'`.
+    ///
+    /// ```
+    /// use exact_bezier::{eval::Jets, RationalCurve, ratio};
+    /// use num_rational::BigRational;
+    /// // The parabola X(t) = (t, t²): X'(t) = (1, 2t), weight 1 (w' = 0).
+    /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 2), ratio(y, 1)];
+    /// let c = RationalCurve::polynomial(vec![p(0, 0), p(1, 0), p(2, 1)]).unwrap();
+    /// let mut out = vec![ratio(0, 1); 6];
+    /// Jets::curve(&c).eval_batch(&[ratio(1, 3)], &mut out).unwrap();
+    /// assert_eq!(out[3..], [ratio(1, 1), ratio(2, 3), ratio(0, 1)]);
+    /// ```
+    pub fn curve(c: &RationalCurve<T>) -> Self {
+        let n = c.degree();
+        let ctrl = c.ctrl();
+        let dt = difference_net(Shape::Curve(n.saturating_sub(1)), n, c.dim(), |i, _| {
+            (n > 0).then(|| (&ctrl[i + 1], &ctrl[i]))
+        });
+        Self::from_nets(vec![Net::from_curve(c), dt])
+    }
+
+    /// The jets of a rect patch: `H`, `H_u`, `H_v`.
     pub fn rect(r: &RectPatch<T>) -> Self {
         let (m, n) = r.degree();
         let ctrl = r.ctrl();
@@ -54,10 +84,10 @@ impl<T: Scalar> Jets<T> {
         let dv = difference_net(Shape::Rect(m, n.saturating_sub(1)), n, r.dim(), |i, j| {
             (n > 0).then(|| (&ctrl[i][j + 1], &ctrl[i][j]))
         });
-        Self::from_nets([Net::from_rect(r), du, dv])
+        Self::from_nets(vec![Net::from_rect(r), du, dv])
     }
 
-    /// The jets of a tri patch.
+    /// The jets of a tri patch: `H`, `H_u`, `H_v` (`w = 1 − u − v`).
     pub fn tri(t: &TriPatch<T>) -> Self {
         let n = t.degree();
         let rows = t.rows();
@@ -68,31 +98,104 @@ impl<T: Scalar> Jets<T> {
         let dv = difference_net(lower, n, t.dim(), |i, j| {
             (n > 0).then(|| (&rows[j + 1][i], &rows[j][i]))
         });
-        Self::from_nets([Net::from_tri(t), du, dv])
+        Self::from_nets(vec![Net::from_tri(t), du, dv])
     }
 
-    fn from_nets(nets: [Net<T>; 3]) -> Self {
-        let workspaces = [
-            nets[0].workspace(),
-            nets[1].workspace(),
-            nets[2].workspace(),
-        ];
-        Jets { nets, workspaces }
+    fn from_nets(nets: Vec<Net<T>>) -> Self {
+        let workspaces = nets.iter().map(Net::workspace).collect();
+        Jets {
+            nets,
+            workspaces,
+            hom: std::array::from_fn(|_| T::zero()),
+        }
     }
 
-    /// `H`, `H_u`, `H_v` at `(u, v)` (`w = 1 − u − v` for a tri patch).
-    pub fn jet(&mut self, u: &T, v: &T) -> Jet<T> {
+    /// Coordinates per homogeneous point: the dimension plus one.
+    pub fn stride(&self) -> usize {
+        self.nets[0].stride()
+    }
+
+    /// Parameters per point: 1 for a curve, 2 for a patch.
+    pub fn params(&self) -> usize {
+        self.nets[0].shape().params()
+    }
+
+    /// `H` and its derivatives at the parameter point `params` (`[t]` or
+    /// `[u, v]`), written into `out`: `stride` scalars each, `H` first.
+    /// Allocates nothing.
+    ///
+    /// **Panics if `params` or `out` have the wrong length.**
+    pub fn eval_into(&mut self, params: &[T], out: &mut [T]) {
         let one = T::one();
-        let hom = match self.nets[0].shape() {
-            Shape::Tri(_) => vec![u.clone(), v.clone(), one - u - v],
-            _ => vec![one.clone() - u, u.clone(), one - v, v.clone()],
-        };
-        let [value, du, dv] = std::array::from_fn(|k| {
-            let mut out = vec![T::zero(); self.nets[k].stride()];
-            self.nets[k].eval_hom_into(&hom, &mut out, &mut self.workspaces[k]);
-            HPoint { coords: out }
-        });
-        Jet { value, du, dv }
+        match self.nets[0].shape() {
+            Shape::Curve(_) => {
+                self.hom[0] = one - &params[0];
+                self.hom[1] = params[0].clone();
+            }
+            Shape::Rect(..) => {
+                self.hom[0] = one.clone() - &params[0];
+                self.hom[1] = params[0].clone();
+                self.hom[2] = one - &params[1];
+                self.hom[3] = params[1].clone();
+            }
+            Shape::Tri(_) => {
+                self.hom[2] = one - &params[0] - &params[1];
+                self.hom[0] = params[0].clone();
+                self.hom[1] = params[1].clone();
+            }
+        }
+        let s = self.stride();
+        for ((net, ws), h) in self
+            .nets
+            .iter()
+            .zip(&mut self.workspaces)
+            .zip(out.chunks_exact_mut(s))
+        {
+            net.eval_hom_into(&self.hom, h, ws);
+        }
+    }
+
+    /// [`Jets::eval_into`] at a batch of parameter points (`params` holds
+    /// one value per point for a curve, two for a patch, back to back):
+    /// `out` receives `2·stride` (curve) or `3·stride` (patch) scalars per
+    /// point. In steady state an `f64` batch allocates nothing
+    /// (tests/alloc.rs).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Shape`] if the buffer lengths do not match.
+    pub fn eval_batch(&mut self, params: &[T], out: &mut [T]) -> Result<(), Error> {
+        let (k, per_point) = (self.params(), self.nets.len() * self.stride());
+        if params.len() % k != 0 || out.len() != params.len() / k * per_point {
+            return Err(Error::Shape(format!(
+                "a batch of {} parameter values ({k} per point) needs an output of {} values, not {}",
+                params.len(),
+                params.len() / k * per_point,
+                out.len()
+            )));
+        }
+        for (p, o) in params.chunks_exact(k).zip(out.chunks_exact_mut(per_point)) {
+            self.eval_into(p, o);
+        }
+        Ok(())
+    }
+
+    /// `H`, `H_u`, `H_v` of a patch at `(u, v)` (`w = 1 − u − v` for a tri
+    /// patch), as homogeneous points.
+    ///
+    /// **Panics for the jets of a curve** (use [`Jets::eval_into`]).
+    pub fn jet(&mut self, u: &T, v: &T) -> Jet<T> {
+        assert_eq!(self.nets.len(), 3, "a jet (H, H_u, H_v) is a patch's");
+        let s = self.stride();
+        let mut out = vec![T::zero(); 3 * s];
+        self.eval_into(&[u.clone(), v.clone()], &mut out);
+        let mut parts = out.chunks_exact(s).map(|h| HPoint { coords: h.to_vec() });
+        let mut next = || parts.next().expect("three parts");
+        Jet {
+            value: next(),
+            du: next(),
+            dv: next(),
+        }
     }
 }
 

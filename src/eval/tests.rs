@@ -167,3 +167,45 @@ fn mismatched_buffers_are_shape_errors() {
         Err(Error::Shape(_))
     ));
 }
+
+/// Curve jets equal `H` and `H'` of de Casteljau on the hodograph
+/// (`RationalCurve::hom_derivs_at`, a second method), exactly, at awkward
+/// parameters and up to degree 40; and symbolically for degree 0 … 6.
+#[test]
+fn curve_jets_equal_hodograph_de_casteljau() {
+    let ts = [ratio(0, 1), ratio(1, 1), ratio(123, 457), ratio(-3, 2)];
+    for n in [0, 1, 3, 10, 40] {
+        let c = wavy_curve(n);
+        let mut jets = Jets::curve(&c);
+        let s = jets.stride();
+        let mut out = vec![ratio(0, 1); ts.len() * 2 * s];
+        jets.eval_batch(&ts, &mut out).unwrap();
+        for (t, o) in ts.iter().zip(out.chunks_exact(2 * s)) {
+            let want = c.hom_derivs_at(t, 1);
+            assert_eq!(o[..s], want[0].coords[..], "H, degree {n}");
+            assert_eq!(o[s..], want[1].coords[..], "H', degree {n}");
+        }
+    }
+    let t = Poly::var("t");
+    for n in 0..=6 {
+        let pts: Vec<HPoint<Poly>> = (0..=n).map(|i| sym_point(&i.to_string())).collect();
+        let c = RationalCurve::from_hom(pts).unwrap();
+        let mut out = vec![Poly::zero(); 6];
+        Jets::curve(&c)
+            .eval_batch(std::slice::from_ref(&t), &mut out)
+            .unwrap();
+        let want = c.hom_derivs_at(&t, 1);
+        assert_eq!(out[3..], want[1].coords[..], "symbolic H', degree {n}");
+    }
+}
+
+/// A jets batch checks its buffer lengths.
+#[test]
+fn jets_batch_rejects_mismatched_buffers() {
+    let c = wavy_curve(3);
+    let mut out = vec![ratio(0, 1); 5];
+    assert!(matches!(
+        Jets::curve(&c).eval_batch(&[ratio(1, 2)], &mut out),
+        Err(Error::Shape(_))
+    ));
+}
