@@ -153,23 +153,24 @@ pub fn tri_jet<T: Scalar>(patch: &TriPatch<T>, u: &T, v: &T) -> Jet<T> {
 /// assert_eq!(n, vec![ratio(-1, 4), ratio(-1, 2), ratio(1, 1)]);
 /// ```
 pub fn normal_direction<T: Scalar>(jet: &Jet<T>) -> Result<Vec<T>, Error> {
-    let tu = tangent3(&jet.value, &jet.du)?;
-    let tv = tangent3(&jet.value, &jet.dv)?;
+    let tu = tangent3(&jet.value.coords, &jet.du.coords)?;
+    let tv = tangent3(&jet.value.coords, &jet.dv.coords)?;
     Ok(cross(&tu, &tv))
 }
 
-/// `w·P' − w'·P` padded to three coordinates.
-fn tangent3<T: Scalar>(h: &HPoint<T>, d: &HPoint<T>) -> Result<[T; 3], Error> {
-    let dim = h.dim();
+/// `w·P' − w'·P` padded to three coordinates, from the homogeneous point
+/// `h = (P, w)` and its derivative `d = (P', w')`.
+fn tangent3<T: Scalar>(h: &[T], d: &[T]) -> Result<[T; 3], Error> {
+    let dim = h.len() - 1;
     if !(2..=3).contains(&dim) {
         return Err(Error::Shape(format!(
             "a mesh needs 2D or 3D points, not {dim}D"
         )));
     }
-    let (w, dw) = (h.weight(), d.weight());
+    let (w, dw) = (&h[dim], &d[dim]);
     let c = |k: usize| {
         if k < dim {
-            d.weighted()[k].clone() * w - &(h.weighted()[k].clone() * dw)
+            d[k].clone() * w - &(h[k].clone() * dw)
         } else {
             T::zero()
         }
@@ -239,15 +240,15 @@ impl Mesh {
     /// As [`Mesh::from_patches`].
     pub fn from_rect<T: Ordered>(patch: &RectPatch<T>, density: usize) -> Result<Mesh, Error> {
         let n = check_density(density)?;
+        let grid: Vec<(usize, usize)> =
+            (0..=n).flat_map(|i| (0..=n).map(move |j| (i, j))).collect();
         let mut mesh = Mesh::default();
-        let mut jets = Jets::rect(patch);
-        let mut jet = |u: &T, v: &T| jets.jet(u, v);
-        let centre = (ratio(1, 2), ratio(1, 2));
-        for i in 0..=n {
-            for j in 0..=n {
-                mesh.push_vertex(&mut jet, grid_point(i, j, n), &centre)?;
-            }
-        }
+        mesh.push_vertices(
+            &mut Jets::rect(patch),
+            &grid,
+            n,
+            &(ratio(1, 2), ratio(1, 2)),
+        )?;
         let id = |i: usize, j: usize| i * (n + 1) + j;
         for i in 0..n {
             for j in 0..n {
@@ -266,16 +267,14 @@ impl Mesh {
     /// As [`Mesh::from_patches`].
     pub fn from_tri<T: Ordered>(patch: &TriPatch<T>, density: usize) -> Result<Mesh, Error> {
         let n = check_density(density)?;
+        let grid: Vec<(usize, usize)> = (0..=n)
+            .flat_map(|j| (0..=n - j).map(move |i| (i, j)))
+            .collect();
         let mut mesh = Mesh::default();
-        let mut jets = Jets::tri(patch);
-        let mut jet = |u: &T, v: &T| jets.jet(u, v);
-        let centre = (ratio(1, 3), ratio(1, 3));
+        mesh.push_vertices(&mut Jets::tri(patch), &grid, n, &(ratio(1, 3), ratio(1, 3)))?;
         let mut start = Vec::with_capacity(n + 1);
         for j in 0..=n {
-            start.push(mesh.positions.len());
-            for i in 0..=n - j {
-                mesh.push_vertex(&mut jet, grid_point(i, j, n), &centre)?;
-            }
+            start.push(if j == 0 { 0 } else { start[j - 1] + n + 2 - j });
         }
         let id = |i: usize, j: usize| start[j] + i;
         for j in 0..n {
@@ -299,33 +298,49 @@ impl Mesh {
             .extend(other.triangles.iter().map(|t| t.map(|k| k + base)));
     }
 
-    /// Add the vertex at `(u, v)` with its unit normal (see the module
-    /// docs for collapsed points).
-    fn push_vertex<T: Ordered>(
+    /// Add the vertices at the grid points `(i/N, j/N)` with their unit
+    /// normals, from one batch of jets (see the module docs for collapsed
+    /// points, which take a second evaluation nearer `centre`).
+    fn push_vertices<T: Ordered>(
         &mut self,
-        jet: &mut impl FnMut(&T, &T) -> Jet<T>,
-        (u, v): (T, T),
+        jets: &mut Jets<T>,
+        grid: &[(usize, usize)],
+        n: usize,
         centre: &(T, T),
     ) -> Result<(), Error> {
-        let here = jet(&u, &v);
-        let x = here.value.project()?;
-        let mut p = [0.0; 3];
-        for (slot, c) in p.iter_mut().zip(&x) {
-            *slot = c.to_f64();
-        }
-        let mut n = unit_normal(&here)?;
-        for eps in [ratio::<T>(1, 1_000_000), ratio(1, 1000)] {
-            if n != [0.0; 3] {
-                break;
+        let params: Vec<T> = grid
+            .iter()
+            .flat_map(|&(i, j)| [ratio(i as i64, n as i64), ratio(j as i64, n as i64)])
+            .collect();
+        let per_point = 3 * jets.stride();
+        let mut out = vec![T::zero(); grid.len() * per_point];
+        jets.eval_batch(&params, &mut out)?;
+        let mut nearby = vec![T::zero(); per_point];
+        for (uv, jet) in params.chunks_exact(2).zip(out.chunks_exact(per_point)) {
+            let h = &jet[..jets.stride()];
+            let x = HPoint { coords: h.to_vec() }.project()?;
+            let mut p = [0.0; 3];
+            for (slot, c) in p.iter_mut().zip(&x) {
+                *slot = c.to_f64();
             }
-            let toward = |a: &T, c: &T| a.clone() + &((c.clone() - a) * &eps);
-            n = unit_normal(&jet(&toward(&u, &centre.0), &toward(&v, &centre.1)))?;
+            let mut normal = unit_normal(jet)?;
+            for eps in [ratio::<T>(1, 1_000_000), ratio(1, 1000)] {
+                if normal != [0.0; 3] {
+                    break;
+                }
+                let toward = |a: &T, c: &T| a.clone() + &((c.clone() - a) * &eps);
+                jets.eval_into(
+                    &[toward(&uv[0], &centre.0), toward(&uv[1], &centre.1)],
+                    &mut nearby,
+                );
+                normal = unit_normal(&nearby)?;
+            }
+            if p.iter().any(|c| !c.is_finite()) {
+                return Err(Error::NotFinite(format!("mesh vertex {p:?} is not finite")));
+            }
+            self.positions.push(p);
+            self.normals.push(normal);
         }
-        if p.iter().any(|c| !c.is_finite()) {
-            return Err(Error::NotFinite(format!("mesh vertex {p:?} is not finite")));
-        }
-        self.positions.push(p);
-        self.normals.push(n);
         Ok(())
     }
 
@@ -398,11 +413,15 @@ impl Mesh {
     }
 }
 
-/// The unit normal at a jet, or zero where `X_u × X_v` vanishes relative
-/// to `|X_u|·|X_v|` (f64 rounding leaves a tiny, meaningless remainder).
-fn unit_normal<T: Ordered>(jet: &Jet<T>) -> Result<[f64; 3], Error> {
-    let tu = tangent3(&jet.value, &jet.du)?.map(|c| c.to_f64());
-    let tv = tangent3(&jet.value, &jet.dv)?.map(|c| c.to_f64());
+/// The unit normal at a jet (`H`, `H_u`, `H_v` back to back), or zero where
+/// `X_u × X_v` vanishes relative to `|X_u|·|X_v|` (f64 rounding leaves a
+/// tiny, meaningless remainder).
+fn unit_normal<T: Ordered>(jet: &[T]) -> Result<[f64; 3], Error> {
+    let s = jet.len() / 3;
+    let (h, rest) = jet.split_at(s);
+    let (du, dv) = rest.split_at(s);
+    let tu = tangent3(h, du)?.map(|c| c.to_f64());
+    let tv = tangent3(h, dv)?.map(|c| c.to_f64());
     let c = cross(&tu, &tv);
     let n = [c[0], c[1], c[2]];
     if n.iter().any(|c| !c.is_finite()) {
@@ -412,11 +431,6 @@ fn unit_normal<T: Ordered>(jet: &Jet<T>) -> Result<[f64; 3], Error> {
         return Ok([0.0; 3]);
     }
     Ok(normalize(n))
-}
-
-/// `(i/N, j/N)`.
-fn grid_point<T: Ordered>(i: usize, j: usize, n: usize) -> (T, T) {
-    (ratio(i as i64, n as i64), ratio(j as i64, n as i64))
 }
 
 fn check_density(density: usize) -> Result<usize, Error> {
