@@ -132,43 +132,44 @@ impl<T: KernelInt> Lane<T> {
     }
 }
 
-/// The three kernels of one net; the narrow ones are built on first use.
+/// The three kernels of one integer net, each built on first use.
 struct Kernels {
-    shape: Shape,
+    net: Net<Int>,
     /// Bits of the largest integer coordinate of the net.
     net_bits: u64,
     word: Option<Lane<i128>>,
     wide: Option<Lane<Wide>>,
-    big: Lane<Int>,
+    big: Option<Lane<Int>>,
 }
 
 impl Kernels {
     fn new(net: Net<Int>) -> Self {
         Kernels {
-            shape: net.shape(),
             net_bits: net.coords().iter().map(Int::bits).max().unwrap_or(0),
+            net,
             word: None,
             wide: None,
-            big: Lane::new(&net),
+            big: None,
         }
     }
 
     /// The point at `hom` on the narrowest kernel its bound admits.
     fn eval(&mut self, hom: &[Int], out: &mut [BigRational]) -> Result<(), Error> {
         let param_bits = hom.iter().map(Int::bits).max().unwrap_or(0);
-        let bits = value_bits(self.shape, self.net_bits, param_bits);
+        let bits = value_bits(self.net.shape(), self.net_bits, param_bits);
+        let net = &self.net;
         if bits <= <i128 as KernelInt>::BITS {
-            let net = &self.big.net;
             self.word
                 .get_or_insert_with(|| Lane::new(net))
                 .eval(hom, out)
         } else if bits <= Wide::BITS {
-            let net = &self.big.net;
             self.wide
                 .get_or_insert_with(|| Lane::new(net))
                 .eval(hom, out)
         } else {
-            self.big.eval(hom, out)
+            self.big
+                .get_or_insert_with(|| Lane::new(net))
+                .eval(hom, out)
         }
     }
 }
@@ -224,11 +225,12 @@ pub(crate) fn eval_batch(
     params: &[BigRational],
     out: &mut [BigRational],
 ) -> Result<(), Error> {
+    let shape = ev.net().shape();
     let mut kernels = Kernels::new(integral(ev.net()));
-    let (k, d) = (kernels.shape.params(), ev.net().dim());
+    let (k, d) = (shape.params(), ev.net().dim());
     let mut hom = Vec::with_capacity(4);
     for (p, o) in params.chunks(k).zip(out.chunks_mut(d)) {
-        hom_params(kernels.shape, p, &mut hom);
+        hom_params(shape, p, &mut hom);
         kernels.eval(&hom, o)?;
     }
     Ok(())

@@ -51,6 +51,7 @@ use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::rect::RectPatch;
 use crate::tri::TriPatch;
+use std::sync::OnceLock;
 
 /// The shape of a [`Net`]: which Bernstein sum it evaluates.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -109,14 +110,22 @@ impl Shape {
 /// net.eval_hom_into(&[ratio(1, 1), ratio(1, 1)], &mut h, &mut net.workspace());
 /// assert_eq!(h, vec![ratio(680, 1), ratio(360, 1), ratio(8, 1)]);
 /// ```
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct Net<T> {
     coords: Vec<T>,
     /// `coords` with each point times its Bernstein coefficient (`G` in
-    /// the module's formulas): what the kernel sums.
-    scaled: Vec<T>,
+    /// the module's formulas): what the kernel sums, computed on first use
+    /// (exact evaluation reads only `coords`).
+    scaled: OnceLock<Vec<T>>,
     stride: usize,
     shape: Shape,
+}
+
+impl<T: PartialEq> PartialEq for Net<T> {
+    /// Nets are equal when their shapes and points are.
+    fn eq(&self, other: &Self) -> bool {
+        (self.shape, self.stride) == (other.shape, other.stride) && self.coords == other.coords
+    }
 }
 
 /// # Construction
@@ -216,38 +225,51 @@ impl<T> Net<T> {
 }
 
 impl<T: Ring> Net<T> {
-    /// The net of validated `coords`, with its scaled points.
+    /// The net of validated `coords`.
     fn with_coords(coords: Vec<T>, stride: usize, shape: Shape) -> Self {
-        let factors = bernstein_factors::<T>(shape);
-        let scaled = coords
-            .chunks_exact(stride)
-            .zip(&factors)
-            .flat_map(|(point, f)| point.iter().map(move |x| f.clone() * x))
-            .collect();
         Net {
             coords,
-            scaled,
+            scaled: OnceLock::new(),
             stride,
             shape,
         }
     }
-}
 
-/// The Bernstein coefficient of each point of a net of `shape`, in the
-/// order of [`Shape`]: `C(n,i)`, `C(m,i)·C(n,j)` or `C(n,j)·C(n−j,i)`.
-fn bernstein_factors<T: Ring>(shape: Shape) -> Vec<T> {
-    let table = pascal::<T>(shape.max_degree());
-    let c = |k: usize, i: usize| table[k * (k + 1) / 2 + i].clone();
-    match shape {
-        Shape::Curve(n) => (0..=n).map(|i| c(n, i)).collect(),
-        Shape::Rect(m, n) => (0..=m)
-            .flat_map(|i| (0..=n).map(move |j| (i, j)))
-            .map(|(i, j)| c(m, i) * &c(n, j))
-            .collect(),
-        Shape::Tri(n) => (0..=n)
-            .flat_map(|j| (0..=n - j).map(move |i| (i, j)))
-            .map(|(i, j)| c(n, j) * &c(n - j, i))
-            .collect(),
+    /// Each point times its Bernstein coefficient, `C(n,i)`,
+    /// `C(m,i)·C(n,j)` or `C(n,j)·C(n−j,i)` (in the order of [`Shape`]).
+    fn scaled(&self) -> &[T] {
+        self.scaled.get_or_init(|| {
+            let table = pascal::<T>(self.shape.max_degree());
+            let c = |k: usize, i: usize| &table[k * (k + 1) / 2 + i];
+            let mut scaled = Vec::with_capacity(self.coords.len());
+            let mut points = self.coords.chunks_exact(self.stride);
+            let mut push = |f: T| {
+                let point = points.next().expect("one point per coefficient");
+                scaled.extend(point.iter().map(|x| f.clone() * x));
+            };
+            match self.shape {
+                Shape::Curve(n) => {
+                    for i in 0..=n {
+                        push(c(n, i).clone());
+                    }
+                }
+                Shape::Rect(m, n) => {
+                    for i in 0..=m {
+                        for j in 0..=n {
+                            push(c(m, i).clone() * c(n, j));
+                        }
+                    }
+                }
+                Shape::Tri(n) => {
+                    for j in 0..=n {
+                        for i in 0..=n - j {
+                            push(c(n, j).clone() * c(n - j, i));
+                        }
+                    }
+                }
+            }
+            scaled
+        })
     }
 }
 
@@ -270,8 +292,8 @@ fn pascal<T: Ring>(n: usize) -> Vec<T> {
 }
 
 /// Scratch space for [`Net::eval_hom_into`]: the partial sums of the rows
-/// of a patch and of one block of a blocked Horner sum, `stride` scalars
-/// each, allocated once and reused for every point.
+/// of a patch and of one block of a blocked Horner sum (sized on first
+/// use), `stride` scalars each, reused for every point.
 #[derive(Clone, Debug)]
 pub struct Workspace<T> {
     rows: Vec<T>,
@@ -289,7 +311,7 @@ impl<T: MulAcc> Net<T> {
         };
         Workspace {
             rows: vec![T::zero(); rows * self.stride],
-            block: vec![T::zero(); self.stride],
+            block: Vec::new(),
         }
     }
 
@@ -305,10 +327,14 @@ impl<T: MulAcc> Net<T> {
     pub fn eval_hom_into(&self, hom: &[T], out: &mut [T], ws: &mut Workspace<T>) {
         let s = self.stride;
         match self.shape {
-            Shape::Curve(_) => horner(&self.scaled, s, &hom[0], &hom[1], out, &mut ws.block),
+            Shape::Curve(_) => horner(self.scaled(), s, &hom[0], &hom[1], out, &mut ws.block),
             Shape::Rect(_, n) => {
                 let row_len = (n + 1) * s;
-                for (row, sum) in self.scaled.chunks_exact(row_len).zip(ws.rows.chunks_mut(s)) {
+                for (row, sum) in self
+                    .scaled()
+                    .chunks_exact(row_len)
+                    .zip(ws.rows.chunks_mut(s))
+                {
                     horner(row, s, &hom[2], &hom[3], sum, &mut ws.block);
                 }
                 horner(&ws.rows, s, &hom[0], &hom[1], out, &mut ws.block);
@@ -326,7 +352,7 @@ impl<T: MulAcc> Net<T> {
         for j in 0..=n {
             let len = (n - j + 1) * s;
             horner(
-                &self.scaled[start..start + len],
+                &self.scaled()[start..start + len],
                 s,
                 w,
                 u,
@@ -363,11 +389,12 @@ impl<T: MulAcc> Net<T> {
 ///
 /// so that a product of two big numbers (`b^{s_j}·C_j`) comes once per
 /// block instead of once per point.
-fn horner<T: MulAcc>(points: &[T], stride: usize, a: &T, b: &T, out: &mut [T], block: &mut [T]) {
+fn horner<T: MulAcc>(points: &[T], stride: usize, a: &T, b: &T, out: &mut [T], block: &mut Vec<T>) {
     let k = T::horner_block(a, b);
     if k <= 1 {
         return horner_lanes::<T, 1>(points, stride, [a], [b], out);
     }
+    block.resize(stride, T::zero());
     let (a_k, b_k) = (a.clone().pow_ring(k), b.clone().pow_ring(k));
     let mut b_start = T::one();
     for (j, chunk) in points.chunks(k * stride).enumerate() {
@@ -500,7 +527,8 @@ pub struct Evaluator<T> {
     ws: Workspace<T>,
     hom: [T; 4],
     point: Vec<T>,
-    /// [`LANES`] homogeneous points of a curve batch.
+    /// [`LANES`] homogeneous points of a curve batch (sized by the first
+    /// batch of at least [`LANES`] points).
     lanes: Vec<T>,
 }
 
@@ -512,16 +540,12 @@ impl<T: Field> Evaluator<T> {
     pub fn new(net: Net<T>) -> Self {
         let ws = net.workspace();
         let point = vec![T::zero(); net.stride];
-        let lanes = match net.shape {
-            Shape::Curve(_) => vec![T::zero(); LANES * net.stride],
-            _ => Vec::new(),
-        };
         Evaluator {
             net,
             ws,
             hom: [T::zero(), T::zero(), T::zero(), T::zero()],
             point,
-            lanes,
+            lanes: Vec::new(),
         }
     }
 
@@ -589,15 +613,16 @@ impl<T: Field> Evaluator<T> {
     pub(crate) fn eval_batch_generic(&mut self, params: &[T], out: &mut [T]) -> Result<(), Error> {
         let (k, d) = (self.net.shape.params(), self.net.dim());
         let mut done = 0;
-        if let Shape::Curve(_) = self.net.shape {
+        if let (Shape::Curve(_), true) = (self.net.shape, params.len() >= LANES) {
             let s = self.net.stride;
+            self.lanes.resize(LANES * s, T::zero());
             let mut groups = params
                 .chunks_exact(LANES)
                 .zip(out.chunks_exact_mut(LANES * d));
             for (ts, o) in &mut groups {
                 let a: [T; LANES] = std::array::from_fn(|l| T::one() - &ts[l]);
                 let b: [&T; LANES] = std::array::from_fn(|l| &ts[l]);
-                horner_lanes(&self.net.scaled, s, a.each_ref(), b, &mut self.lanes);
+                horner_lanes(self.net.scaled(), s, a.each_ref(), b, &mut self.lanes);
                 for (h, x) in self.lanes.chunks_exact(s).zip(o.chunks_exact_mut(d)) {
                     project_into(h, x)?;
                 }
