@@ -12,7 +12,7 @@
 //! [`Ring`](crate::Ring).
 
 use ethnum::I256;
-use num_bigint::BigInt;
+use num_bigint::{BigInt, BigUint, Sign};
 use num_traits::{One, Zero};
 use std::ops::{Add, Mul, Neg, Sub};
 
@@ -32,10 +32,25 @@ impl Wide {
     /// Bits of magnitude a `Wide` holds: every `|x| < 2²⁵⁵`.
     pub const BITS: u64 = 255;
 
-    /// The value as a big integer: `hi·2¹²⁸ + lo` of its two words.
+    /// The value as a big integer (its magnitude's 32-bit digits, one
+    /// allocation).
     pub fn to_bigint(&self) -> BigInt {
-        let (hi, lo) = self.0.into_words();
-        (BigInt::from(hi) << 128) + BigInt::from(lo as u128)
+        let sign = if self.0 < I256::ZERO {
+            Sign::Minus
+        } else {
+            Sign::Plus
+        };
+        let (hi, lo) = self.0.unsigned_abs().into_words();
+        let digits: [u32; 8] = std::array::from_fn(|k| {
+            let word = if k < 4 { lo } else { hi };
+            (word >> (32 * (k % 4))) as u32
+        });
+        BigInt::from_biguint(sign, BigUint::from_slice(&digits))
+    }
+
+    /// The number of bits of `|self|` (0 for zero).
+    pub fn bits(&self) -> u64 {
+        u64::from(256 - self.0.unsigned_abs().leading_zeros())
     }
 
     /// The big integer `n`, or `None` if `|n| ≥ 2²⁵⁵`.

@@ -28,6 +28,7 @@
 //! so `E ≤ 127` runs on `i128` and `E ≤ 255` on `Wide`, without overflow
 //! tests and without allocation.
 
+use super::blocks::BlockedCurve;
 use super::{Evaluator, Net, Shape, Workspace};
 use crate::algebra::gcd::{fraction, gcd_u128};
 use crate::algebra::int::{common_denominator, Int};
@@ -36,6 +37,7 @@ use crate::algebra::wide::Wide;
 use crate::error::Error;
 use num_bigint::BigInt;
 use num_rational::BigRational;
+use num_traits::Zero;
 
 /// An integer type the kernel runs on.
 trait KernelInt: MulAcc {
@@ -132,24 +134,32 @@ impl<T: KernelInt> Lane<T> {
     }
 }
 
-/// The three kernels of one integer net, each built on first use.
-struct Kernels {
+/// The kernels of one net, each built on first use: three integer types
+/// over one common denominator, and blocks over their own denominators for
+/// curves whose one-denominator integers outgrow 256 bits
+/// ([`BlockedCurve`]).
+struct Kernels<'a> {
+    rational: &'a Net<BigRational>,
     net: Net<Int>,
     /// Bits of the largest integer coordinate of the net.
     net_bits: u64,
     word: Option<Lane<i128>>,
     wide: Option<Lane<Wide>>,
     big: Option<Lane<Int>>,
+    blocked: Option<Option<(BlockedCurve, Vec<BigInt>)>>,
 }
 
-impl Kernels {
-    fn new(net: Net<Int>) -> Self {
+impl<'a> Kernels<'a> {
+    fn new(rational: &'a Net<BigRational>) -> Self {
+        let net = integral(rational);
         Kernels {
+            rational,
             net_bits: net.coords().iter().map(Int::bits).max().unwrap_or(0),
             net,
             word: None,
             wide: None,
             big: None,
+            blocked: None,
         }
     }
 
@@ -159,19 +169,42 @@ impl Kernels {
         let bits = value_bits(self.net.shape(), self.net_bits, param_bits);
         let net = &self.net;
         if bits <= <i128 as KernelInt>::BITS {
-            self.word
+            return self
+                .word
                 .get_or_insert_with(|| Lane::new(net))
-                .eval(hom, out)
-        } else if bits <= Wide::BITS {
-            self.wide
-                .get_or_insert_with(|| Lane::new(net))
-                .eval(hom, out)
-        } else {
-            self.big
-                .get_or_insert_with(|| Lane::new(net))
-                .eval(hom, out)
+                .eval(hom, out);
         }
+        if bits <= Wide::BITS {
+            return self
+                .wide
+                .get_or_insert_with(|| Lane::new(net))
+                .eval(hom, out);
+        }
+        let rational = self.rational;
+        let blocked = self.blocked.get_or_insert_with(|| {
+            BlockedCurve::new(rational).map(|b| (b, vec![BigInt::zero(); rational.stride()]))
+        });
+        if let Some((curve, point)) = blocked {
+            if curve.eval(&hom[0], &hom[1], point) {
+                return project(point, out);
+            }
+        }
+        self.big
+            .get_or_insert_with(|| Lane::new(net))
+            .eval(hom, out)
     }
+}
+
+/// Divide a big homogeneous point once per coordinate.
+fn project(h: &[BigInt], out: &mut [BigRational]) -> Result<(), Error> {
+    let (x, w) = h.split_at(h.len() - 1);
+    if w[0].is_zero() {
+        return Err(Error::PointAtInfinity);
+    }
+    for (o, xi) in out.iter_mut().zip(x) {
+        *o = fraction(xi.clone(), w[0].clone());
+    }
+    Ok(())
 }
 
 /// The bound `E` of the module documentation: every value of the kernel
@@ -226,7 +259,7 @@ pub(crate) fn eval_batch(
     out: &mut [BigRational],
 ) -> Result<(), Error> {
     let shape = ev.net().shape();
-    let mut kernels = Kernels::new(integral(ev.net()));
+    let mut kernels = Kernels::new(ev.net());
     let (k, d) = (shape.params(), ev.net().dim());
     let mut hom = Vec::with_capacity(4);
     for (p, o) in params.chunks(k).zip(out.chunks_mut(d)) {

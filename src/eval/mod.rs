@@ -40,6 +40,7 @@
 //! *Efficient evaluation of multivariate polynomials*, CAGD 3 (1986); the
 //! homogeneous form avoids its division by `1 − t`.
 
+mod blocks;
 pub(crate) mod fraction_free;
 mod jet;
 
