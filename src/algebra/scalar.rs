@@ -173,21 +173,9 @@ pub trait Scalar: Ring + MulAcc {
         self.clone() * other
     }
 
-    /// `self^e` by repeated squaring (`x^0 = 1`).
+    /// `self^e` by repeated squaring (`x^0 = 1`), [`MulAcc::pow_ring`].
     fn pow_u32(&self, e: u32) -> Self {
-        let mut result = Self::one();
-        let mut base = self.clone();
-        let mut e = e;
-        while e > 0 {
-            if e & 1 == 1 {
-                result = result * &base;
-            }
-            e >>= 1;
-            if e > 0 {
-                base = base.clone() * &base;
-            }
-        }
-        result
+        self.clone().pow_ring(e as usize)
     }
 }
 

@@ -126,24 +126,7 @@ impl<T: Scalar> Jets<T> {
     ///
     /// **Panics if `params` or `out` have the wrong length.**
     pub fn eval_into(&mut self, params: &[T], out: &mut [T]) {
-        let one = T::one();
-        match self.nets[0].shape() {
-            Shape::Curve(_) => {
-                self.hom[0] = one - &params[0];
-                self.hom[1] = params[0].clone();
-            }
-            Shape::Rect(..) => {
-                self.hom[0] = one.clone() - &params[0];
-                self.hom[1] = params[0].clone();
-                self.hom[2] = one - &params[1];
-                self.hom[3] = params[1].clone();
-            }
-            Shape::Tri(_) => {
-                self.hom[2] = one - &params[0] - &params[1];
-                self.hom[0] = params[0].clone();
-                self.hom[1] = params[1].clone();
-            }
-        }
+        self.nets[0].hom_params(params, &mut self.hom);
         let s = self.stride();
         for ((net, ws), h) in self
             .nets
@@ -166,14 +149,7 @@ impl<T: Scalar> Jets<T> {
     /// [`Error::Shape`] if the buffer lengths do not match.
     pub fn eval_batch(&mut self, params: &[T], out: &mut [T]) -> Result<(), Error> {
         let (k, per_point) = (self.params(), self.nets.len() * self.stride());
-        if params.len() % k != 0 || out.len() != params.len() / k * per_point {
-            return Err(Error::Shape(format!(
-                "a batch of {} parameter values ({k} per point) needs an output of {} values, not {}",
-                params.len(),
-                params.len() / k * per_point,
-                out.len()
-            )));
-        }
+        super::check_batch(params.len(), k, per_point, out.len())?;
         for (p, o) in params.chunks_exact(k).zip(out.chunks_exact_mut(per_point)) {
             self.eval_into(p, o);
         }

@@ -464,8 +464,8 @@ fn horner_width<T: MulAcc, const W: usize, const L: usize>(
     }
 }
 
-/// # Cartesian evaluation
-impl<T: Field> Net<T> {
+/// # Homogeneous parameters
+impl<T: Ring> Net<T> {
     /// The homogeneous parameters of an affine parameter point: `(1 − t, t)`,
     /// `(1 − u, u, 1 − v, v)` or `(u, v, 1 − u − v)`.
     fn hom_params(&self, params: &[T], hom: &mut [T; 4]) {
@@ -488,6 +488,22 @@ impl<T: Field> Net<T> {
             }
         }
     }
+}
+
+/// Check a batch's buffers: `params` values, `k` per point, need an
+/// output of `per_point` values per point.
+///
+/// # Errors
+///
+/// [`Error::Shape`] if the lengths do not match.
+fn check_batch(params: usize, k: usize, per_point: usize, out: usize) -> Result<(), Error> {
+    if params % k != 0 || out != params / k * per_point {
+        return Err(Error::Shape(format!(
+            "a batch of {params} parameter values ({k} per point) needs an output of {} values, not {out}",
+            params / k * per_point
+        )));
+    }
+    Ok(())
 }
 
 /// Divide a homogeneous point `h = (w·X, w)` into `out = X`.
@@ -596,15 +612,12 @@ impl<T: Field> Evaluator<T> {
     /// [`Error::PointAtInfinity`] at the first point where the weight
     /// vanishes.
     pub fn eval_batch(&mut self, params: &[T], out: &mut [T]) -> Result<(), Error> {
-        let (k, d) = (self.net.shape.params(), self.net.dim());
-        if params.len() % k != 0 || out.len() != params.len() / k * d {
-            return Err(Error::Shape(format!(
-                "a batch of {} parameter values ({k} per point) needs an output of {} values, not {}",
-                params.len(),
-                params.len() / k * d,
-                out.len()
-            )));
-        }
+        check_batch(
+            params.len(),
+            self.net.shape.params(),
+            self.net.dim(),
+            out.len(),
+        )?;
         T::eval_net(self, params, out)
     }
 
