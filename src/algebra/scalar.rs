@@ -92,6 +92,23 @@ impl<T> Ring for T where
 {
 }
 
+/// `x^e` by repeated squaring (`x^0 = 1`), in any ring.
+pub(crate) fn pow<T: Ring>(x: &T, e: u32) -> T {
+    let mut result = T::one();
+    let mut base = x.clone();
+    let mut e = e;
+    while e > 0 {
+        if e & 1 == 1 {
+            result = result * &base;
+        }
+        e >>= 1;
+        if e > 0 {
+            base = base.clone() * &base;
+        }
+    }
+    result
+}
+
 /// The multiply-accumulate step of the Horner–Bernstein kernel
 /// ([`crate::eval`]): `acc ← acc·a + c·x`. The default is those ring
 /// operations; a big-integer type overrides it to multiply `c·x` without
@@ -109,21 +126,6 @@ pub trait MulAcc: Ring {
     fn horner_block(a: &Self, b: &Self) -> usize {
         let _ = (a, b);
         1
-    }
-
-    /// `self^e` by repeated squaring (`x^0 = 1`).
-    fn pow_ring(self, e: usize) -> Self {
-        let (mut result, mut base, mut e) = (Self::one(), self, e);
-        while e > 0 {
-            if e & 1 == 1 {
-                result = result * &base;
-            }
-            e >>= 1;
-            if e > 0 {
-                base = base.clone() * &base;
-            }
-        }
-        result
     }
 }
 
@@ -173,9 +175,9 @@ pub trait Scalar: Ring + MulAcc {
         self.clone() * other
     }
 
-    /// `self^e` by repeated squaring (`x^0 = 1`), [`MulAcc::pow_ring`].
+    /// `self^e` by repeated squaring ([`pow`]).
     fn pow_u32(&self, e: u32) -> Self {
-        self.clone().pow_ring(e as usize)
+        pow(self, e)
     }
 }
 

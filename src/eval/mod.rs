@@ -46,7 +46,7 @@ mod jet;
 
 pub use jet::Jets;
 
-use crate::algebra::scalar::{Field, MulAcc, Ring};
+use crate::algebra::scalar::{pow, Field, MulAcc, Ring};
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
@@ -396,7 +396,7 @@ fn horner<T: MulAcc>(points: &[T], stride: usize, a: &T, b: &T, out: &mut [T], b
         return horner_lanes::<T, 1>(points, stride, [a], [b], out);
     }
     block.resize(stride, T::zero());
-    let (a_k, b_k) = (a.clone().pow_ring(k), b.clone().pow_ring(k));
+    let (a_k, b_k) = (pow(a, k as u32), pow(b, k as u32));
     let mut b_start = T::one();
     for (j, chunk) in points.chunks(k * stride).enumerate() {
         horner_lanes::<T, 1>(chunk, stride, [a], [b], block);
@@ -407,7 +407,7 @@ fn horner<T: MulAcc>(points: &[T], stride: usize, a: &T, b: &T, out: &mut [T], b
             let a_len = if len == k {
                 a_k.clone()
             } else {
-                a.clone().pow_ring(len)
+                pow(a, len as u32)
             };
             for (o, c) in out.iter_mut().zip(block.iter()) {
                 T::mul_acc(o, &a_len, &b_start, c);
