@@ -146,15 +146,23 @@ macro_rules! int_binary_op {
         impl<'a> $Trait<&'a Int> for Int {
             type Output = Int;
             fn $method(self, rhs: &'a Int) -> Int {
-                match (self, rhs) {
-                    (Int::Small(a), Int::Small(b)) => match a.$checked(*b) {
-                        Some(r) => Int::Small(r),
-                        None => Int::Big(BigInt::from(a).$method(*b)),
-                    },
-                    (Int::Big(a), Int::Small(b)) => Int::from_bigint(a.$method(*b)),
-                    (Int::Small(a), Int::Big(b)) => Int::from_bigint($small_big(a, b)),
-                    (Int::Big(a), Int::Big(b)) => Int::from_bigint(a.$method(b)),
+                // The machine-word case inline; the rest out of line, so
+                // that loops over small coefficients stay small.
+                #[inline(never)]
+                fn wide(x: Int, y: &Int) -> Int {
+                    match (x, y) {
+                        (Int::Small(a), Int::Small(b)) => Int::Big(BigInt::from(a).$method(*b)),
+                        (Int::Big(a), Int::Small(b)) => Int::from_bigint(a.$method(*b)),
+                        (Int::Small(a), Int::Big(b)) => Int::from_bigint($small_big(a, b)),
+                        (Int::Big(a), Int::Big(b)) => Int::from_bigint(a.$method(b)),
+                    }
                 }
+                if let (Int::Small(a), Int::Small(b)) = (&self, rhs) {
+                    if let Some(r) = a.$checked(*b) {
+                        return Int::Small(r);
+                    }
+                }
+                wide(self, rhs)
             }
         }
         impl $Trait for Int {
@@ -174,15 +182,23 @@ impl<'a> Mul<&'a Int> for Int {
     /// A big factor has `|x| ≥ 2¹²⁷`: its product with another big one, or
     /// with a small one of `|s| ≥ 2`, is big again without a range test.
     fn mul(self, rhs: &'a Int) -> Int {
-        match (self, rhs) {
-            (Int::Small(a), Int::Small(b)) => match a.checked_mul(*b) {
-                Some(r) => Int::Small(r),
-                None => Int::Big(BigInt::from(a) * *b),
-            },
-            (Int::Big(a), Int::Small(b)) => big_times(a * *b, *b),
-            (Int::Small(a), Int::Big(b)) => big_times(b * a, a),
-            (Int::Big(a), Int::Big(b)) => Int::Big(a * b),
+        // The machine-word case inline; the rest out of line, so that
+        // loops over small coefficients stay small.
+        #[inline(never)]
+        fn wide(x: Int, y: &Int) -> Int {
+            match (x, y) {
+                (Int::Small(a), Int::Small(b)) => Int::Big(BigInt::from(a) * *b),
+                (Int::Big(a), Int::Small(b)) => big_times(a * *b, *b),
+                (Int::Small(a), Int::Big(b)) => big_times(b * a, a),
+                (Int::Big(a), Int::Big(b)) => Int::Big(a * b),
+            }
         }
+        if let (Int::Small(a), Int::Small(b)) = (&self, rhs) {
+            if let Some(r) = a.checked_mul(*b) {
+                return Int::Small(r);
+            }
+        }
+        wide(self, rhs)
     }
 }
 

@@ -25,16 +25,21 @@
 //! same kernel on the narrowest integer type that provably holds its
 //! values (`i128`, [`Wide`](crate::algebra::Wide) or
 //! [`Int`](crate::algebra::Int): no gcd, no allocation below 256 bits) and
-//! divides once per coordinate ([`fraction_free`]).
+//! divides once per coordinate ([`fraction_free`]). Curves of high degree
+//! keep one denominator per block of control points instead (`blocks`), so
+//! that their block sums stay within 256 bits.
+//!
+//! [`Jets`] evaluate the first derivatives (`H'`, or `H_u`, `H_v`) the same
+//! way, on difference nets, in batch.
 //!
 //! For `f64` the scheme is the one of dhermes/bezier's `evaluate_multi`;
 //! its rounding differs from de Casteljau's by a few ulps times the size of
 //! the binomial-weighted terms (tests compare the two within `1e-12`
 //! relative on nets of size 1 up to degree 40).
 //!
-//! In steady state ([`Evaluator::eval_into`] with a reused evaluator, or
-//! [`Evaluator::eval_batch`]) an `f64` evaluation makes no heap allocation
-//! (tests/alloc.rs counts them).
+//! In steady state ([`Evaluator::eval_into`] with a reused evaluator,
+//! [`Evaluator::eval_batch`], [`Jets::eval_batch`]) an `f64` evaluation
+//! makes no heap allocation (tests/alloc.rs counts them).
 //!
 //! Reference: the scheme is the "VS algorithm", W. Schumaker and W. Volk,
 //! *Efficient evaluation of multivariate polynomials*, CAGD 3 (1986); the
