@@ -2,7 +2,7 @@
 //! computation.
 //!
 //! One file per claim family. Each family is a function returning its
-//! [`Claim`]s; every verdict is **computed** — by the symbolic scalar
+//! [`Claim`](crate::proofs::Claim)s; every verdict is **computed** — by the symbolic scalar
 //! ([`Poly`]) for identities that must hold for all symbol
 //! values, by exact rationals for printed examples. A claim the computation
 //! refutes is kept with its counterexample and the corrected statement: that
@@ -10,7 +10,7 @@
 //! expect, so `exact-bezier prove` (and `cargo test`) fail if a computation
 //! ever changes its answer.
 //!
-//! Verdicts (see [`Verdict`]): `proved` (an identity over all symbol
+//! Verdicts (see [`Verdict`](crate::proofs::Verdict)): `proved` (an identity over all symbol
 //! values, or exact sampling whose sufficiency follows from a degree bound
 //! the code computes and checks), `checked` (exact sampling without such a
 //! bound, or an f64 comparison within a stated tolerance), `refuted` (the
@@ -20,7 +20,7 @@
 //! check itself failed: nothing was decided, and it is never expected).
 //!
 //! Claims checked for every degree up to a bound say so in their text and
-//! carry the bound ([`Claim::bound`], `degree_bound` in `prove --json`).
+//! carry the bound ([`Claim::bound`](crate::proofs::Claim::bound), `degree_bound` in `prove --json`).
 
 use crate::algebra::poly::Poly;
 use serde_json::{json, Value};
@@ -157,7 +157,7 @@ pub struct Claim {
     /// The degree bound checked, for claims about every degree (also stated
     /// in `claim`), e.g. `"n ≤ 12"`.
     pub bound: Option<String>,
-    /// Time spent computing the claim (see [`lap`]).
+    /// Time spent computing the claim (see `lap`).
     pub elapsed: Duration,
 }
 

@@ -175,7 +175,7 @@ pub trait Scalar: Ring + MulAcc {
         self.clone() * other
     }
 
-    /// `self^e` by repeated squaring ([`pow`]).
+    /// `self^e` by repeated squaring (the ring power `pow` of this module).
     fn pow_u32(&self, e: u32) -> Self {
         pow(self, e)
     }

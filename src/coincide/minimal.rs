@@ -296,7 +296,7 @@ impl Reducible for BigRational {
     }
 }
 
-/// Certificates by interval arithmetic ([`coprime_by_intervals`]): the
+/// Certificates by interval arithmetic (`coprime_by_intervals`): the
 /// actual degree is read exactly, coprimality from interval resultants.
 impl Reducible for RealAlgebraic {
     fn certified_minimal(net: &Net<Self>) -> bool {

@@ -8,7 +8,7 @@
 //! 6. uniform scaling of the weights (source 000 eq. 5)?
 //!
 //! The decision: reduce both inputs to minimal bidegree
-//! ([`minimal_rect`](crate::coincide::minimal_rect)); then for each admissible symmetry
+//! ([`minimal_rect`]); then for each admissible symmetry
 //! compare the normalized control points exactly and the weight invariants
 //! `I_{i,j}` (module `view`). After reduction, Möbius maps and
 //! scaling act on the homogeneous control points by `H_{i,j} ↦ k ρ^i σ^j H_{i,j}`
@@ -531,7 +531,7 @@ pub(crate) fn coincide_nets<T: Reducible + Roots>(
 /// `tol` (absolute), invariants within `tol` (relative to their size). Degree elevation
 /// is undone with power coefficients within `tol` treated as zero; common
 /// factors of degree ≥ 1 are **not** removed (a floating-point gcd is not a
-/// decision: use [`coincide`] or [`coincide_filtered`](crate::coincide::coincide_filtered)).
+/// decision: use [`coincide`] or [`coincide_filtered`]).
 ///
 /// ```
 /// use exact_bezier::{coincide::coincide_f64, io::read_patches, Tolerance};

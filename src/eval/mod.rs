@@ -25,7 +25,7 @@
 //! same kernel on the narrowest integer type that provably holds its
 //! values (`i128`, [`Wide`](crate::algebra::Wide) or
 //! [`Int`](crate::algebra::Int): no gcd, no allocation below 256 bits) and
-//! divides once per coordinate ([`fraction_free`]). Curves of high degree
+//! divides once per coordinate (`fraction_free`). Curves of high degree
 //! keep one denominator per block of control points instead (`blocks`), so
 //! that their block sums stay within 256 bits.
 //!

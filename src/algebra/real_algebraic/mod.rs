@@ -5,14 +5,14 @@
 //!
 //! ## Two representations, one type
 //!
-//! - **Radical sums** ([`radical`]): `Σ c_k ∏ b_j^{e_{k,j}}`, rationals `c_k`
+//! - **Radical sums** (`radical`): `Σ c_k ∏ b_j^{e_{k,j}}`, rationals `c_k`
 //!   times products of real radicals of pairwise coprime integers. Ring
 //!   operations are sparse polynomial arithmetic, `==` is structural (the
 //!   monomials are linearly independent over Q, Mordell 1953), division goes
 //!   through the minimal polynomial. Rationals, `√q`, `∛q`, and everything
 //!   the sources' standard forms, arcs and trigonometric angles produce stay
 //!   here: this is the number-field fast path.
-//! - **Isolated roots** ([`root`]): a monic square-free polynomial over Q and
+//! - **Isolated roots** (`root`): a monic square-free polynomial over Q and
 //!   an isolating interval with rational endpoints. Needed for roots of sums
 //!   (`∛(1 + √2)`), `CRootOf(x⁵ − x − 1, 0)`, and anything combined with
 //!   them. Sums and products use resultants (`Res_z(p(z), q(t − z))`,

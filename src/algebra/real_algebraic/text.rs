@@ -25,7 +25,7 @@
 //!
 //! Bounds on hostile input: at most 10 000 characters, nesting depth 64,
 //! root indices and exponents at most 64 in absolute value, `CRootOf`
-//! degree at most [`MAX_DEGREE`](crate::MAX_DEGREE).
+//! degree at most [`crate::MAX_DEGREE`].
 
 use super::polys::{primitive_integer, QPoly};
 use super::radical::RadicalSum;
