@@ -173,6 +173,22 @@ pub(crate) fn gcd_u128(x: u128, y: u128) -> u128 {
     x << twos
 }
 
+/// `lcm(a, b)` of positive integers, by [`gcd`].
+///
+/// ```
+/// use exact_bezier::algebra::gcd::lcm;
+/// use num_bigint::BigInt;
+/// assert_eq!(lcm(&BigInt::from(600), &BigInt::from(678)), BigInt::from(67800));
+/// ```
+pub fn lcm(a: &BigInt, b: &BigInt) -> BigInt {
+    let g = gcd(a.magnitude(), b.magnitude());
+    if g.is_one() {
+        a * b
+    } else {
+        a / BigInt::from(g) * b
+    }
+}
+
 /// The fraction `numer/denom` in lowest terms with a positive denominator,
 /// reduced by [`gcd`].
 ///

@@ -276,12 +276,7 @@ impl One for Int {
 /// with `den` the lcm of the denominators (`den > 0`).
 pub(crate) fn common_denominator(values: &[&BigRational]) -> (Vec<Int>, BigInt) {
     let den = values.iter().fold(BigInt::one(), |l, q| {
-        let g = crate::algebra::gcd::gcd(l.magnitude(), q.denom().magnitude());
-        if g.is_one() {
-            l * q.denom()
-        } else {
-            l * (q.denom() / BigInt::from(g))
-        }
+        crate::algebra::gcd::lcm(&l, q.denom())
     });
     let nums = values
         .iter()

@@ -23,7 +23,7 @@
 //! the one-denominator kernel.
 
 use super::{horner_lanes, Net, Shape};
-use crate::algebra::gcd::gcd;
+use crate::algebra::gcd::lcm;
 use crate::algebra::int::Int;
 use crate::algebra::scalar::binomial;
 use crate::algebra::wide::Wide;
@@ -51,12 +51,6 @@ pub(crate) struct BlockedCurve {
     blocks: Vec<Block>,
     /// One block's sums, reused.
     sums: Vec<Wide>,
-}
-
-/// `lcm(a, b)` of positive integers.
-fn lcm(a: &BigInt, b: &BigInt) -> BigInt {
-    let g = BigInt::from(gcd(a.magnitude(), b.magnitude()));
-    a / g * b
 }
 
 impl BlockedCurve {
