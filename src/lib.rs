@@ -85,15 +85,12 @@ pub mod arc;
 pub mod audit;
 pub mod bernstein;
 pub mod blossom;
-#[cfg(feature = "cli")]
-#[doc(hidden)]
-pub mod cli;
 pub mod coincide;
 pub mod convert;
 pub mod coords;
 pub mod curve;
 mod display;
-mod error;
+pub mod error;
 pub mod eval;
 pub mod hpoint;
 pub mod intersect;
@@ -101,17 +98,11 @@ pub mod io;
 pub mod limits;
 pub mod nurbs;
 pub mod prelude;
-/// The claims of the sources and their proofs, run by `exact-bezier prove`.
-/// Not part of the public API.
-#[cfg(feature = "cli")]
-#[doc(hidden)]
-#[path = "../proofs/mod.rs"]
-pub mod proofs;
 pub mod rect;
 #[cfg(feature = "render")]
 pub mod render;
 pub mod reparam;
-#[cfg(any(test, feature = "cli"))]
+#[cfg(test)]
 mod samples;
 #[cfg(feature = "serde")]
 mod serde_support;

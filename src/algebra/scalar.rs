@@ -362,7 +362,7 @@ pub fn binomial_scalar<T: Scalar>(n: usize, k: usize) -> T {
 /// The reciprocal `1/k` of an integer as a scalar (exact for exact `T`).
 ///
 /// **Panics if `k` is zero.**
-pub(crate) fn recip_int<T: Scalar>(k: &BigInt) -> T {
+pub fn recip_int<T: Scalar>(k: &BigInt) -> T {
     T::from_rational(&BigRational::new(BigInt::one(), k.clone()))
 }
 

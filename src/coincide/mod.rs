@@ -27,10 +27,10 @@
 //! Module layout: `view` (normalized nets under symmetries), this file (the
 //! decision and its witness), `boundary` (shared boundary curves).
 
-pub(crate) mod canonical;
+pub mod canonical;
 mod coprime;
-pub(crate) mod filter;
-pub(crate) mod minimal;
+pub mod filter;
+pub mod minimal;
 
 pub use canonical::{canonical_key, dedup, CanonicalKey, Deduper};
 pub use canonical::{canonical_text, key_digest, Classes, KeyDigest, KEY_VERSION};
@@ -44,8 +44,7 @@ mod boundary;
 mod view;
 
 pub use boundary::{boundary_curve, shared_boundaries, Edge};
-#[cfg(feature = "cli")]
-pub(crate) use view::invariant_parts;
+pub use view::invariant_parts;
 pub(crate) use view::{Prepared, View};
 
 use crate::algebra::scalar::{Ordered, Roots, Scalar, Tolerance};

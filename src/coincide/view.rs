@@ -197,7 +197,7 @@ impl<'a, T: Ordered> View<'a, T> {
 /// from the scales `s`, with pivots `a = pu`, `b = pv` (a missing pivot, for
 /// a direction of degree 0, counts as 1 with no factor). Ring operations
 /// only, so the proofs run it on symbols.
-pub(crate) fn invariant_parts<T: Scalar>(
+pub fn invariant_parts<T: Scalar>(
     s: impl Fn(usize, usize) -> T,
     i: usize,
     j: usize,

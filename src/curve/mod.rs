@@ -13,11 +13,11 @@
 //! Reference: source 001 (lecture) for the Bézier curve and its algorithms;
 //! source 000 (Yang & Yong) eqs (2)–(5) for the Möbius map and weight scaling.
 
-pub(crate) mod circle;
-pub(crate) mod deriv;
-pub(crate) mod geometry;
-pub(crate) mod join;
-pub(crate) mod reduction;
+pub mod circle;
+pub mod deriv;
+pub mod geometry;
+pub mod join;
+pub mod reduction;
 
 pub use circle::{circle_of, integer_coords, Circle, NotCircle};
 pub use deriv::forward_differences;

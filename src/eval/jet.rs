@@ -25,8 +25,19 @@ use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::rect::RectPatch;
-use crate::render::Jet;
 use crate::tri::TriPatch;
+
+/// A homogeneous point and its first partial derivatives at one parameter
+/// point: `H(u, v)`, `∂H/∂u`, `∂H/∂v` (each `(w·P, w)`-shaped).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Jet<T> {
+    /// `H(u, v)`.
+    pub value: HPoint<T>,
+    /// `∂H/∂u`.
+    pub du: HPoint<T>,
+    /// `∂H/∂v`.
+    pub dv: HPoint<T>,
+}
 
 /// The nets of `H` and its first derivatives (`H'` for a curve, `H_u`,
 /// `H_v` for a patch), with their workspaces.

@@ -49,7 +49,7 @@ mod blocks;
 pub(crate) mod fraction_free;
 mod jet;
 
-pub use jet::Jets;
+pub use jet::{Jet, Jets};
 
 use crate::algebra::scalar::{pow, Field, MulAcc, Ring};
 use crate::curve::RationalCurve;

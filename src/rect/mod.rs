@@ -11,8 +11,8 @@
 //!
 //! Reference: source 001 (lecture), "矩形域曲面"; source 000 eq. (1).
 
-pub(crate) mod join;
-pub(crate) mod ops;
+pub mod join;
+pub mod ops;
 
 pub use join::{g0_join, g1_join};
 pub use ops::Corner;

@@ -154,7 +154,7 @@ impl Corner {
 }
 
 /// The cross product of two 3-vectors.
-pub(crate) fn cross<T: Scalar>(a: &[T], b: &[T]) -> Vec<T> {
+pub fn cross<T: Scalar>(a: &[T], b: &[T]) -> Vec<T> {
     vec![
         a[1].clone() * &b[2] - &(a[2].clone() * &b[1]),
         a[2].clone() * &b[0] - &(a[0].clone() * &b[2]),

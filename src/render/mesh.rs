@@ -44,17 +44,7 @@ use std::fmt::Write;
 /// The largest mesh density accepted: 1024 steps per parameter.
 pub const MAX_DENSITY: usize = 1024;
 
-/// A homogeneous point and its first partial derivatives at one parameter
-/// point: `H(u, v)`, `∂H/∂u`, `∂H/∂v` (each `(w·P, w)`-shaped).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Jet<T> {
-    /// `H(u, v)`.
-    pub value: HPoint<T>,
-    /// `∂H/∂u`.
-    pub du: HPoint<T>,
-    /// `∂H/∂v`.
-    pub dv: HPoint<T>,
-}
+pub use crate::eval::Jet;
 
 /// The homogeneous point of a curve at `t` and its derivative:
 /// `(b₀ⁿ, n·(b₁ⁿ⁻¹ − b₀ⁿ⁻¹))` from de Casteljau stopped one level early.

@@ -42,7 +42,7 @@
 //! the image of `[0, 1]²` is `[0, 1]²` and the point set is kept (proofs
 //! family `yang_yong`).
 
-pub(crate) mod standard;
+pub mod standard;
 
 pub use standard::{
     corner_weights, standard_quadratic_map, standardize_curve, standardize_curve_algebraic,

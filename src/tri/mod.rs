@@ -19,7 +19,7 @@ use crate::algebra::scalar::{Field, Ordered, Ring, Scalar};
 use crate::error::Error;
 use crate::hpoint::{check_positive_weights, check_same_dimension, hom_rows, HPoint};
 
-mod ops;
+pub mod ops;
 pub use ops::{affine_combination, tri_bernstein, Bary, SYMMETRIES};
 
 /// One level of triangular de Casteljau with barycentric `b = (u, v, w)`:

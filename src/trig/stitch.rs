@@ -132,7 +132,7 @@ pub fn trig_g1_factor<T: Ordered>(
 }
 
 /// `a × b` in 3-D.
-pub(crate) fn cross<T: Scalar>(a: &[T], b: &[T]) -> [T; 3] {
+pub fn cross<T: Scalar>(a: &[T], b: &[T]) -> [T; 3] {
     std::array::from_fn(|k| {
         let (i, j) = ((k + 1) % 3, (k + 2) % 3);
         a[i].clone() * &b[j] - a[j].clone() * &b[i]

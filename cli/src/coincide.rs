@@ -1,0 +1,122 @@
+//! `coincide A B [--filtered] [--scalar f64 --tol T]`: are two curves or
+//! rect patches the same up to Möbius maps, reversal, swapping, elevation,
+//! common factors and weight scaling? Exit 0 either way.
+
+use super::{charge_each, load_exact, patch_f64, ExactPatches, ExactScalar, ScalarKind};
+use exact_bezier::algebra::Tolerance;
+use exact_bezier::coincide::filter::coincide_filtered;
+use exact_bezier::Error;
+use exact_bezier::io::Patch;
+use exact_bezier::limits::Size;
+use serde_json::Value;
+
+/// Arguments of `coincide`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// First input (JSON, one curve or rect patch), or - for standard input.
+    a: String,
+    /// Second input (JSON, one curve or rect patch).
+    b: String,
+    /// Scalar to compute with (exact by default).
+    #[arg(long, value_enum, default_value_t)]
+    scalar: ScalarKind,
+    /// Tolerance for --scalar f64 (absolute for points, relative for weight
+    /// invariants); default 1e-9.
+    #[arg(long)]
+    tol: Option<f64>,
+    /// Exact answer, decided by f64 interval bounds when they can; adds
+    /// "decided_by".
+    #[arg(long)]
+    filtered: bool,
+}
+
+/// Estimated `(operations, bits)` of deciding coincidence for a patch of
+/// size `s` (canonical forms: polynomial gcds and Möbius solves over the
+/// whole net, numbers grown by the total degree N):
+/// `(N+1)⁴(d+1)` operations on `(N+1)·bits`-bit numbers.
+pub(super) fn coincide_cost(s: &Size) -> (u64, u64) {
+    let n1 = s.total_degree() + 1;
+    (
+        n1.pow(4) * (s.dim as u64 + 1),
+        s.bits.max(8).saturating_mul(n1),
+    )
+}
+
+/// Read exactly one curve or patch from `path` (rational or algebraic).
+fn one_patch(path: &str) -> Result<ExactPatches, Error> {
+    let patches = load_exact(path)?;
+    if patches.len() != 1 {
+        return Err(Error::Shape(format!(
+            "{path} holds {} patches; coincide compares one with one",
+            patches.len()
+        )));
+    }
+    Ok(patches)
+}
+
+/// Two rational inputs run on `BigRational` (with `--filtered` available);
+/// if either has an algebraic number, both run on `RealAlgebraic`, where
+/// `--filtered` is the exact decision itself (`"decided_by": "exact"`).
+pub fn run(a: &Args) -> Result<Value, Error> {
+    if a.filtered && a.scalar == ScalarKind::F64 {
+        return Err(Error::Domain(
+            "--filtered is the exact predicate: it does not combine with --scalar f64".into(),
+        ));
+    }
+    if a.tol.is_some() && a.scalar == ScalarKind::Exact {
+        return Err(Error::Domain(
+            "--tol applies to --scalar f64 only: the exact decision has no tolerance".into(),
+        ));
+    }
+    match (one_patch(&a.a)?, one_patch(&a.b)?) {
+        (ExactPatches::Rational(pa), ExactPatches::Rational(pb)) => {
+            if a.filtered {
+                charge_each(
+                    "coincide",
+                    &[pa[0].clone(), pb[0].clone()],
+                    a.scalar,
+                    coincide_cost,
+                )?;
+                let (c, by) = coincide_filtered(&pa[0], &pb[0])?;
+                let mut v = c.to_json();
+                v["decided_by"] = format!("{by:?}").to_lowercase().into();
+                return Ok(v);
+            }
+            decide(a, &pa[0], &pb[0])
+        }
+        (pa, pb) => {
+            let (pa, pb) = (pa.into_algebraic(), pb.into_algebraic());
+            let mut v = decide(a, &pa[0], &pb[0])?;
+            if a.filtered {
+                v["decided_by"] = "exact".into();
+            }
+            Ok(v)
+        }
+    }
+}
+
+/// The exact decision over `T`, or (with `--scalar f64`) the tolerance one.
+fn decide<T: ExactScalar>(a: &Args, pa: &Patch<T>, pb: &Patch<T>) -> Result<Value, Error> {
+    charge_each(
+        "coincide",
+        &[pa.clone(), pb.clone()],
+        a.scalar,
+        coincide_cost,
+    )?;
+    match a.scalar {
+        ScalarKind::F64 => {
+            let tol = a.tol.unwrap_or(Tolerance::default().0);
+            if !tol.is_finite() || tol < 0.0 {
+                return Err(Error::Domain(format!(
+                    "--tol {tol} must be a finite number ≥ 0"
+                )));
+            }
+            let c =
+                exact_bezier::coincide::coincide_f64(&patch_f64(pa)?, &patch_f64(pb)?, Tolerance(tol))?;
+            let mut v = c.to_json();
+            v["tolerance"] = tol.into();
+            Ok(v)
+        }
+        ScalarKind::Exact => Ok(exact_bezier::coincide::coincide(pa, pb)?.to_json()),
+    }
+}

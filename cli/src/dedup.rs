@@ -1,0 +1,159 @@
+//! `dedup FILE`: group curves and rect patches (JSON Lines or a JSON array,
+//! streamed) into coincidence classes by their canonical keys, computed on
+//! all cores; one JSON line per class, classes by first member:
+//!
+//! ```text
+//! {"class": 0, "representative": 0, "members": [0, 5, 9]}
+//! ```
+//!
+//! Memory: per input a 4-byte class id, per class a 32-byte key digest —
+//! never the patches. Patches with algebraic numbers (`"sqrt(6)/6"`) are
+//! keyed over the real algebraic numbers: a key whose numbers are all
+//! rational is the digest of their copies over Q; an irrational key is kept
+//! whole and compared exactly with the kept keys of its skeleton
+//! ([`Deduper::insert_algebraic`]). With `--witness` each member also gets the exact
+//! witness of `coincide` against its class's representative (in parallel),
+//! which re-checks every grouping exactly; it keeps each representative's
+//! text and each witness until the end.
+
+use super::bulk::{check_record_cost, map_chunk, BulkArgs, Member, Out, Progress, CHUNK};
+use exact_bezier::algebra::RealAlgebraic;
+use exact_bezier::coincide::canonical::{canonical_key, key_digest, CanonicalKey, Deduper, KeyDigest};
+use exact_bezier::coincide::{coincide, Coincidence};
+use exact_bezier::Error;
+use exact_bezier::io::{for_each_chunk, JsonScalar, Record};
+use rayon::prelude::*;
+use serde_json::json;
+
+/// Arguments of `dedup`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    bulk: BulkArgs,
+    /// Give every member the exact witness mapping the representative to it.
+    #[arg(long)]
+    witness: bool,
+}
+
+/// Run `dedup`; its lines are written as they are ready.
+pub fn run(a: &Args) -> Result<(), Error> {
+    dedup(a)
+}
+
+/// The witnesses of `--witness`: each representative's text (per class)
+/// and each member's witness (per input; `None` for a representative).
+#[derive(Default)]
+struct Witnesses {
+    reps: Vec<Box<str>>,
+    of: Vec<Option<Box<str>>>,
+}
+
+impl Witnesses {
+    /// The witnesses of one keyed chunk whose class ids are `ids`.
+    fn add_chunk(
+        &mut self,
+        d: &Deduper,
+        first: usize,
+        records: &[Record],
+        patches: Vec<Member>,
+        ids: &[usize],
+    ) -> Result<(), Error> {
+        for (k, (r, &id)) in records.iter().zip(ids).enumerate() {
+            if d.representative(id) == first + k {
+                self.reps.push(r.text().into_boxed_str());
+            }
+        }
+        let reps = &self.reps;
+        let done: Vec<Result<Option<Box<str>>, Error>> = patches
+            .par_iter()
+            .zip(ids)
+            .enumerate()
+            .map(|(k, (p, &id))| {
+                let rep = d.representative(id);
+                if rep == first + k {
+                    return Ok(None);
+                }
+                let a = Member::read(&Record::Line(rep + 1, reps[id].to_string()))?;
+                let (coincident, reason, witness) = match (&a, p) {
+                    (Member::Rational(a), Member::Rational(p)) => summary(coincide(a, p)?),
+                    (a, p) => summary(coincide(&a.algebraic(), &p.algebraic())?),
+                };
+                if !coincident {
+                    return Err(Error::Format(format!(
+                        "inputs {rep} and {} have equal keys but do not coincide: {reason}",
+                        first + k,
+                    )));
+                }
+                Ok(Some(witness.into_boxed_str()))
+            })
+            .collect();
+        for w in done {
+            self.of.push(w?);
+        }
+        Ok(())
+    }
+}
+
+/// Whether they coincide, why, and the witness's JSON text.
+fn summary<T: JsonScalar>(c: Coincidence<T>) -> (bool, String, String) {
+    let witness = c.to_json()["witness"].to_string();
+    (c.coincident, c.reason, witness)
+}
+
+/// A record's key: a digest, or (over the real algebraic numbers) the key.
+enum Keyed {
+    Digest(KeyDigest),
+    Algebraic(CanonicalKey<RealAlgebraic>),
+}
+
+fn dedup(a: &Args) -> Result<(), Error> {
+    let (reader, input) = a.bulk.open()?;
+    let progress = Progress::new(&a.bulk, &input);
+    let mut d = Deduper::default();
+    let mut witnesses = a.witness.then(Witnesses::default);
+    let max_work = exact_bezier::limits::current().max_work;
+    for_each_chunk(reader, CHUNK, |first, records| {
+        let keyed = map_chunk(&records, |p| {
+            let key = match &p {
+                Member::Rational(q) => Keyed::Digest(key_digest(q)?),
+                Member::Algebraic(q) => {
+                    check_record_cost(q, max_work)?;
+                    Keyed::Algebraic(canonical_key(q)?)
+                }
+            };
+            Ok((key, a.witness.then_some(p)))
+        })?;
+        let mut ids = Vec::with_capacity(keyed.len());
+        let mut patches = Vec::new();
+        for (key, p) in keyed {
+            ids.push(match key {
+                Keyed::Digest(k) => d.insert_digest(k)?,
+                Keyed::Algebraic(k) => d.insert_algebraic(k)?,
+            });
+            patches.extend(p);
+        }
+        if let Some(w) = &mut witnesses {
+            w.add_chunk(&d, first, &records, patches, &ids)?;
+        }
+        progress.update(&input, d.len());
+        Ok(())
+    })?;
+    let (n, count) = (d.len(), d.class_count());
+    let mut out = Out::new();
+    for (id, members) in d.into_classes().iter().enumerate() {
+        let mut line =
+            json!({"class": id, "representative": members[0], "members": members}).to_string();
+        if let Some(w) = &witnesses {
+            let list: Vec<&str> = members
+                .iter()
+                .map(|&k| w.of[k as usize].as_deref().unwrap_or("null"))
+                .collect();
+            line.pop();
+            line.push_str(&format!(",\"witnesses\":[{}]}}", list.join(",")));
+        }
+        out.line(&line);
+    }
+    out.flush();
+    progress.finish(&format!("{n} patches, {count} classes"));
+    Ok(())
+}

@@ -1,0 +1,220 @@
+//! `intersect A [B] [--filtered] [--scalar f64 --tol T]`: the intersections
+//! of two curves, or the self-intersections of one, exactly by default.
+//!
+//! Output (exact): `{"intersections": [{"s", "t", "point", "approx",
+//! "multiplicity", "contact", "contact_order"?}], "overlaps": [{"s": [s0, s1],
+//! "t": [t0, t1], "map", "mobius": [a, b, c, d]}]}` with parameters and
+//! points in the algebraic number grammar (docs/FORMAT.md), `approx` their
+//! `f64` values. `--filtered`: where `f64` interval arithmetic decides,
+//! `{"crossings": [{"s": [lo, hi], "t": [lo, hi], "point": [[lo, hi], …]}],
+//! "decided_by": "intervals"}` (certified boxes, one transversal crossing
+//! each, no other common point); otherwise the exact output with
+//! `"decided_by": "exact"`. With `--scalar f64`:
+//! `{"intersections": [{"s", "t", "point", "distance"}], "overlaps":
+//! [{"s": [s0, s1], "t": [t0, t1]}], "tolerance"}` as numbers.
+
+use super::deriv::curve_of;
+use super::{load_one, patch_f64, ScalarKind};
+use exact_bezier::algebra::{Interval, Ordered, RealAlgebraic};
+use exact_bezier::curve::RationalCurve;
+use exact_bezier::Error;
+use exact_bezier::intersect::{
+    certify_crossings, intersect, intersect_approx, self_intersect, ApproxIntersection,
+    CertifiedCrossing, Contact, IntersectionPoint, Intersections, Overlap,
+};
+use exact_bezier::io::{JsonScalar, Patch};
+use exact_bezier::limits::{self, Size};
+use num_rational::BigRational;
+use serde_json::{json, Value};
+
+/// Arguments of `intersect`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// First curve (JSON), or - for standard input.
+    a: String,
+    /// Second curve (JSON); without it, the self-intersections of the first.
+    b: Option<String>,
+    /// Scalar to compute with (exact by default).
+    #[arg(long, value_enum, default_value_t)]
+    scalar: ScalarKind,
+    /// Tolerance for --scalar f64 (absolute, model units); default 1e-9.
+    #[arg(long)]
+    tol: Option<f64>,
+    /// Decide in f64 interval arithmetic where it can (certified boxes of
+    /// transversal crossings, or separation), exactly otherwise; adds
+    /// "decided_by".
+    #[arg(long)]
+    filtered: bool,
+}
+
+/// Estimated `(operations, bits)` of the exact elimination for curves of
+/// degrees `m`, `n`: `D + 1 = 2mn + 1` Sylvester determinants of size
+/// `2n`, Sturm isolation of a degree-`D` polynomial (`D³`), on numbers of
+/// about `(m + n)·bits` bits.
+fn intersect_cost(a: &Size, b: &Size) -> (u64, u64) {
+    let (m, n) = (a.degree.0 as u64, b.degree.0 as u64);
+    let d = 2 * m * n + 1;
+    let size = 2 * m.max(n) + 2;
+    (
+        d * size.pow(3) * (a.dim as u64 + 1) + d.pow(3),
+        (a.bits + b.bits + 64).saturating_mul(m + n),
+    )
+}
+
+/// The work of the interval stage of `--filtered` (charged before it
+/// runs; the exact path is charged only if it is needed): at most 16
+/// levels of 1024 piece pairs, each two interval de Casteljau splits of
+/// `(n + 1)²` operations per coordinate.
+fn filter_cost(a: &Size, b: &Size) -> u64 {
+    let split = |s: &Size| (s.degree.0 as u64 + 1).pow(2) * (s.dim as u64 + 1);
+    16 * 1024 * 2 * (split(a) + split(b))
+}
+
+/// Read one curve from `path`.
+fn one_curve(path: &str) -> Result<RationalCurve<BigRational>, Error> {
+    let p = load_one(path, |n| {
+        format!("{path} holds {n} patches; intersect takes one curve per file")
+    })?;
+    curve_of(&p, "intersect").cloned()
+}
+
+pub fn run(a: &Args) -> Result<Value, Error> {
+    let ca = one_curve(&a.a)?;
+    let cb = a.b.as_deref().map(one_curve).transpose()?;
+    let other = cb.as_ref().unwrap_or(&ca);
+    let (sa, sb) = (
+        Size::exact(&Patch::Curve(ca.clone())),
+        Size::exact(&Patch::Curve(other.clone())),
+    );
+    let (ops, bits) = intersect_cost(&sa, &sb);
+    match a.scalar {
+        ScalarKind::F64 => run_f64(a, &ca, cb.as_ref(), ops),
+        ScalarKind::Exact => {
+            if a.tol.is_some() {
+                return Err(Error::Domain(
+                    "--tol applies to --scalar f64 only: the exact intersection has no tolerance"
+                        .into(),
+                ));
+            }
+            if a.filtered {
+                let Some(b) = &cb else {
+                    return Err(Error::Domain(
+                        "--filtered separates two curves: it needs a second curve".into(),
+                    ));
+                };
+                limits::charge("intersect --filtered", filter_cost(&sa, &sb))?;
+                if let Some(found) = certify_crossings(&ca, b)? {
+                    return Ok(certified_json(&found));
+                }
+            }
+            limits::charge("intersect", limits::exact_work(ops, bits))?;
+            match &cb {
+                None => Ok(to_json(&self_intersect(&ca)?)),
+                Some(b) => {
+                    let mut v = to_json(&intersect(&ca, b)?);
+                    if a.filtered {
+                        v["decided_by"] = "exact".into();
+                    }
+                    Ok(v)
+                }
+            }
+        }
+    }
+}
+
+fn run_f64(
+    a: &Args,
+    ca: &RationalCurve<BigRational>,
+    cb: Option<&RationalCurve<BigRational>>,
+    ops: u64,
+) -> Result<Value, Error> {
+    if a.filtered {
+        return Err(Error::Domain(
+            "--filtered is the exact predicate: it does not combine with --scalar f64".into(),
+        ));
+    }
+    let Some(cb) = cb else {
+        return Err(Error::Domain(
+            "self-intersections are exact only: drop --scalar f64".into(),
+        ));
+    };
+    let tol = a.tol.unwrap_or(1e-9);
+    limits::charge("intersect", ops)?;
+    let as_f64 = |c: &RationalCurve<BigRational>| match patch_f64(&Patch::Curve(c.clone()))? {
+        Patch::Curve(c) => Ok(c),
+        _ => unreachable!("a curve maps to a curve"),
+    };
+    let found = intersect_approx(&as_f64(ca)?, &as_f64(cb)?, tol)?;
+    let (overlaps, points): (Vec<&ApproxIntersection>, Vec<_>) =
+        found.iter().partition(|x| x.overlap.is_some());
+    Ok(json!({
+        "intersections": points.iter().map(|x| json!({
+            "s": x.s, "t": x.t, "point": x.point, "distance": x.distance,
+        })).collect::<Vec<_>>(),
+        "overlaps": overlaps.iter().filter_map(|x| x.overlap).map(|r| json!({
+            "s": [r[0], r[1]], "t": [r[2], r[3]],
+        })).collect::<Vec<_>>(),
+        "tolerance": tol,
+    }))
+}
+
+fn contact_name(c: &Contact) -> &'static str {
+    match c {
+        Contact::Transversal => "transversal",
+        Contact::Tangential { .. } => "tangential",
+        Contact::Singular => "singular",
+        Contact::Cusp => "cusp",
+        Contact::Continuation => "continuation",
+    }
+}
+
+fn point_json(p: &IntersectionPoint) -> Value {
+    let approx = |x: &RealAlgebraic| x.to_f64();
+    let mut v = json!({
+        "s": p.s.to_json(),
+        "t": p.t.to_json(),
+        "point": p.point.iter().map(RealAlgebraic::to_json).collect::<Vec<_>>(),
+        "approx": {
+            "s": approx(&p.s),
+            "t": approx(&p.t),
+            "point": p.point.iter().map(approx).collect::<Vec<_>>(),
+        },
+        "multiplicity": p.multiplicity,
+        "contact": contact_name(&p.contact),
+    });
+    if let Contact::Tangential { order } = p.contact {
+        v["contact_order"] = order.into();
+    }
+    v
+}
+
+fn overlap_json(o: &Overlap) -> Value {
+    let [a, b, c, d] = &o.map.coeffs;
+    json!({
+        "s": [o.s.0.to_json(), o.s.1.to_json()],
+        "t": [o.t.0.to_json(), o.t.1.to_json()],
+        "map": format!("s = (({a})*t + ({b}))/(({c})*t + ({d}))"),
+        "mobius": [a.to_json(), b.to_json(), c.to_json(), d.to_json()],
+    })
+}
+
+/// `{"crossings": [{"s": [lo, hi], "t": [lo, hi], "point": [[lo, hi], …]}],
+/// "decided_by": "intervals"}`: interval bounds as JSON numbers.
+fn certified_json(found: &[CertifiedCrossing]) -> Value {
+    let pair = |i: &Interval| json!([i.lo, i.hi]);
+    json!({
+        "crossings": found.iter().map(|k| json!({
+            "s": pair(&k.s),
+            "t": pair(&k.t),
+            "point": k.point.iter().map(pair).collect::<Vec<_>>(),
+        })).collect::<Vec<_>>(),
+        "decided_by": "intervals",
+    })
+}
+
+fn to_json(x: &Intersections) -> Value {
+    json!({
+        "intersections": x.points.iter().map(point_json).collect::<Vec<_>>(),
+        "overlaps": x.overlaps.iter().map(overlap_json).collect::<Vec<_>>(),
+    })
+}

@@ -1,0 +1,5 @@
+//! The `exact-bezier` command line: see `exact-bezier --help`.
+
+fn main() {
+    std::process::exit(exact_bezier_cli::main());
+}

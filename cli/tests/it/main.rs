@@ -1,0 +1,21 @@
+//! The integration tests, built as one binary: one link of the library
+//! instead of one per file. Each module is one former `tests/NAME.rs`.
+//! (`tests/fuzz.rs` stays a separate binary: it installs its own global
+//! allocator.)
+
+mod algebraic;
+mod arcs;
+mod audit;
+mod coincide;
+mod common;
+mod conversions;
+mod curves;
+mod dedup;
+mod eval_batch;
+mod intersect;
+mod mesh;
+mod plot;
+mod readme;
+mod schema;
+mod surfaces;
+mod trig;

@@ -1,0 +1,259 @@
+//! Every fixture and the output of every command validate against the JSON
+//! Schema of the format (docs/exact-bezier.schema.json, described in
+//! docs/FORMAT.md), and the schema rejects what the reader rejects.
+
+use crate::common::cli;
+use boon::{Compiler, SchemaIndex, Schemas};
+use serde_json::Value;
+
+const SCHEMA: &str = "file:///exact-bezier.schema.json";
+
+/// The schema compiled at the definition `def` (e.g. `curve`, `evalOutput`).
+fn schema(def: &str) -> (Schemas, SchemaIndex) {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/..", "/docs/exact-bezier.schema.json");
+    let text = std::fs::read_to_string(path).expect("the schema file exists");
+    let value: Value = serde_json::from_str(&text).expect("the schema is JSON");
+    let mut compiler = Compiler::new();
+    compiler.add_resource(SCHEMA, value).expect("a resource");
+    let mut schemas = Schemas::new();
+    let index = compiler
+        .compile(&format!("{SCHEMA}#/$defs/{def}"), &mut schemas)
+        .expect("the schema compiles");
+    (schemas, index)
+}
+
+fn assert_valid(def: &str, what: &str, instance: &Value) {
+    let (schemas, index) = schema(def);
+    if let Err(e) = schemas.validate(instance, index) {
+        panic!("{what} does not match #/$defs/{def}: {e}\n{instance}");
+    }
+}
+
+fn assert_invalid(def: &str, what: &str, instance: &Value) {
+    let (schemas, index) = schema(def);
+    assert!(
+        schemas.validate(instance, index).is_err(),
+        "{what} should not match #/$defs/{def}: {instance}"
+    );
+}
+
+/// The JSON printed by `exact-bezier args…` (exit code 0).
+fn output(args: &[&str]) -> Value {
+    let (code, out, err) = cli(args);
+    assert_eq!(code, 0, "exact-bezier {args:?} failed: {err}");
+    serde_json::from_str(&out).unwrap_or_else(|e| panic!("{args:?} printed non-JSON ({e}): {out}"))
+}
+
+fn fixtures() -> Vec<std::path::PathBuf> {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/..", "/tests/fixtures");
+    let mut files: Vec<_> = std::fs::read_dir(dir)
+        .expect("the fixtures folder exists")
+        .map(|e| e.expect("a directory entry").path())
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    files.sort();
+    files
+}
+
+#[test]
+fn every_fixture_is_valid_input() {
+    let files = fixtures();
+    assert!(files.len() >= 8, "fixtures found: {files:?}");
+    for f in files {
+        let text = std::fs::read_to_string(&f).expect("readable");
+        let v: Value = serde_json::from_str(&text).expect("JSON");
+        assert_valid("input", &f.display().to_string(), &v);
+    }
+}
+
+#[test]
+fn the_schema_rejects_what_the_reader_rejects() {
+    let bad = [
+        r#"{"kind": "curve", "points": [[0], [1]], "weights": [1, 1], "colour": "red"}"#,
+        r#"{"kind": "curve", "points": [[0], [1]], "weights": [1, 0]}"#,
+        r#"{"kind": "curve", "points": [[0], ["NaN"]]}"#,
+        r#"{"kind": "curve", "points": [[0], ["1/3x"]]}"#,
+        r#"{"kind": "surface", "points": [[0]]}"#,
+        r#"{"kind": "curve", "points": []}"#,
+    ];
+    for text in bad {
+        let v: Value = serde_json::from_str(text).expect("JSON");
+        assert_invalid("input", text, &v);
+        assert!(
+            exact_bezier::io::read_patches(text).is_err(),
+            "the reader accepts {text}"
+        );
+    }
+}
+
+#[test]
+fn command_outputs_match_the_schema() {
+    let ex1 = "tests/fixtures/yang_yong_example1.json";
+    let ex3 = "tests/fixtures/yang_yong_example3.json";
+    let tri = "tests/fixtures/zcf_4_2_tri.json";
+    assert_valid(
+        "evalOutput",
+        "eval rect",
+        &output(&["eval", ex1, "--at", "1/3,1/2"]),
+    );
+    assert_valid(
+        "evalOutput",
+        "eval rect f64",
+        &output(&["eval", ex1, "--at", "0.25,0.5", "--scalar", "f64"]),
+    );
+    assert_valid(
+        "evalOutput",
+        "eval tri",
+        &output(&["eval", tri, "--at", "1/4,1/4"]),
+    );
+    assert_valid(
+        "evalPointsOutput",
+        "eval --grid",
+        &output(&["eval", tri, "--grid", "2"]),
+    );
+    assert_valid(
+        "evalPointsOutput",
+        "eval repeated --at f64",
+        &output(&[
+            "eval", ex1, "--at", "0,0", "--at", "1/3,1/2", "--scalar", "f64",
+        ]),
+    );
+    let (_, lines, _) = cli(&[
+        "eval",
+        "tests/fixtures/zcf_4_2_rects.json",
+        "--grid",
+        "1",
+        "--jsonl",
+    ]);
+    for line in lines.lines() {
+        assert_valid(
+            "evalPoint",
+            "eval --jsonl line",
+            &serde_json::from_str(line).unwrap(),
+        );
+    }
+    assert_valid(
+        "patch",
+        "reparam",
+        &output(&["reparam", ex1, "--mobius", "3/5,7/10"]),
+    );
+    assert_valid(
+        "patch",
+        "elevate",
+        &output(&["elevate", ex1, "--by", "1,2"]),
+    );
+    assert_valid(
+        "patches",
+        "convert",
+        &output(&["convert", ex1, "--to", "tri"]),
+    );
+    assert_valid(
+        "patches",
+        "convert back",
+        &output(&["convert", tri, "--to", "rect"]),
+    );
+    assert_valid(
+        "standardizeOutput",
+        "standardize",
+        &output(&["standardize", ex3]),
+    );
+    assert_valid(
+        "standardizeOutput",
+        "standardize f64",
+        &output(&["standardize", ex1]),
+    );
+    assert_valid(
+        "coincideOutput",
+        "coincide",
+        &output(&["coincide", ex1, ex3]),
+    );
+    let (curve, line, looped) = (
+        "docs/examples/curve.json",
+        "docs/examples/line.json",
+        "docs/examples/loop.json",
+    );
+    for args in [
+        vec!["intersect", curve, line],
+        vec!["intersect", curve, curve, "--filtered"],
+        vec!["intersect", curve, curve],
+        vec!["intersect", looped],
+    ] {
+        assert_valid("intersectOutput", &args.join(" "), &output(&args));
+    }
+    assert_valid(
+        "intersectCertifiedOutput",
+        "intersect --filtered",
+        &output(&["intersect", curve, line, "--filtered"]),
+    );
+    assert_valid(
+        "intersectF64Output",
+        "intersect f64",
+        &output(&["intersect", curve, line, "--scalar", "f64"]),
+    );
+    let teapot = "tests/fixtures/teapot.json";
+    assert_valid(
+        "auditSummary",
+        "audit",
+        &output(&["audit", teapot, "--summary"]),
+    );
+    assert_valid(
+        "patches",
+        "convert --to bezier",
+        &strip_origins(output(&[
+            "convert",
+            "tests/fixtures/cylinder.json",
+            "--to",
+            "bezier",
+        ])),
+    );
+    let curves = "docs/examples/three_curves.jsonl";
+    for (cmd, def) in [("dedup", "dedupLine"), ("key", "keyLine")] {
+        let (code, out, err) = cli(&[cmd, curves]);
+        assert_eq!(code, 0, "{cmd}: {err}");
+        for line in out.lines() {
+            let v: Value = serde_json::from_str(line).expect("a JSON line");
+            assert_valid(def, cmd, &v);
+        }
+    }
+}
+
+/// Outputs on inputs with algebraic numbers (`"sqrt(6)/6"`) match too.
+#[test]
+fn algebraic_outputs_match_the_schema() {
+    let ex1 = "tests/fixtures/yang_yong_example1.json";
+    let std1 = "tests/fixtures/yang_yong_example1_standard.json";
+    let quarter = "tests/fixtures/quarter_circle.json";
+    for (def, args) in [
+        ("coincideOutput", vec!["coincide", ex1, std1]),
+        ("coincideOutput", vec!["coincide", std1, ex1, "--filtered"]),
+        ("patch", vec!["reparam", std1, "--mobius", "1/3,sqrt(2)/2"]),
+        ("patch", vec!["elevate", std1, "--by", "1,0"]),
+        ("patches", vec!["convert", std1, "--to", "tri"]),
+        ("evalOutput", vec!["eval", quarter, "--at", "1/3"]),
+        ("derivOutput", vec!["deriv", quarter, "--at", "1/3"]),
+    ] {
+        assert_valid(def, &args.join(" "), &output(&args));
+    }
+    let v = output(&["curvature", quarter, "--at", "1/3"]);
+    assert_valid("number", "curvature", &v["curvature"]);
+    assert_valid("number", "curvature_squared", &v["curvature_squared"]);
+    for (cmd, def) in [("dedup", "dedupLine"), ("key", "keyLine")] {
+        let (code, out, err) = cli(&[cmd, std1]);
+        assert_eq!(code, 0, "{cmd}: {err}");
+        for line in out.lines() {
+            assert_valid(def, cmd, &serde_json::from_str(line).expect("a JSON line"));
+        }
+    }
+}
+
+/// The pieces of `convert --to bezier` without their `origin` field (the
+/// one field beyond the patch format).
+fn strip_origins(mut v: Value) -> Value {
+    for piece in v.as_array_mut().expect("an array of pieces") {
+        piece
+            .as_object_mut()
+            .expect("a piece object")
+            .remove("origin");
+    }
+    v
+}

@@ -1,5 +1,0 @@
-//! The `exact-bezier` command line: see `exact-bezier --help`.
-
-fn main() {
-    std::process::exit(exact_bezier::cli::main());
-}
