@@ -97,6 +97,7 @@ pub mod intersect;
 pub mod io;
 pub mod limits;
 pub mod nurbs;
+pub mod patch;
 pub mod prelude;
 pub mod rect;
 #[cfg(feature = "render")]
@@ -115,7 +116,7 @@ pub mod trig;
 pub use algebra::{ratio, Field, Ordered, Poly, Ring, Roots, Scalar, Tolerance};
 pub use curve::RationalCurve;
 pub use error::{Error, MAX_DEGREE};
-pub use io::Patch;
+pub use patch::Patch;
 pub use rect::RectPatch;
 pub use tri::TriPatch;
 

@@ -25,7 +25,7 @@
 //! refused, never rounded.
 
 use crate::error::Error;
-use crate::io::Patch;
+use crate::patch::Patch;
 use num_rational::BigRational;
 use std::cell::Cell;
 

@@ -24,10 +24,12 @@ use crate::coincide::Coincidence;
 use crate::error::Error;
 use crate::io::{
     patch_from_value_as, patch_to_json, read_patches_as, trig_patch_from_value, trig_patch_to_json,
-    ExactNumber, JsonScalar, Patch, TrigPatch,
+    ExactNumber, JsonScalar,
 };
 use crate::nurbs::{nurbs_to_json, read_nurbs, Nurbs};
+use crate::patch::Patch;
 use crate::reparam::standard::Standard;
+use crate::trig::TrigPatch;
 use crate::{RationalCurve, RectPatch, TriPatch};
 use num_rational::BigRational;
 use serde::de::Error as _;

@@ -2,10 +2,11 @@
 //! of a chunk of records on all cores, the progress bar, the exit code.
 
 use super::{patch_op_cost, ExactScalar};
-use exact_bezier::algebra::Scalar;
 use exact_bezier::algebra::RealAlgebraic;
+use exact_bezier::algebra::Scalar;
+use exact_bezier::io::Record;
+use exact_bezier::patch::Patch;
 use exact_bezier::Error;
-use exact_bezier::io::{Patch, Record};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle, TermLike};
 use num_rational::BigRational;
 use rayon::prelude::*;

@@ -30,7 +30,8 @@ use exact_bezier::coincide::minimal::{minimal_rect, multiply_components};
 use exact_bezier::coincide::{coincide, invariant_parts};
 use exact_bezier::curve::RationalCurve;
 use exact_bezier::hpoint::HPoint;
-use exact_bezier::io::{read_patches, Patch};
+use exact_bezier::io::read_patches;
+use exact_bezier::patch::Patch;
 use exact_bezier::rect::RectPatch;
 use num_rational::BigRational;
 

@@ -11,10 +11,11 @@
 
 use super::printed::{rounds_to, shown};
 use super::{Claim, Verdict};
-use exact_bezier::algebra::{ratio, Field, Ordered, Roots, Scalar, Tolerance};
 use exact_bezier::algebra::RealAlgebraic;
+use exact_bezier::algebra::{ratio, Field, Ordered, Roots, Scalar, Tolerance};
 use exact_bezier::curve::geometry::ConicType;
-use exact_bezier::io::{read_patches, Patch};
+use exact_bezier::io::read_patches;
+use exact_bezier::patch::Patch;
 use exact_bezier::rect::{RectPatch, Side};
 use exact_bezier::reparam::standard::{
     corner_weights, standard_quadratic_map, standardize_quadratic, standardize_rect_algebraic,

@@ -15,7 +15,8 @@
 use crate::coincide::canonical::{canonical_key, CanonicalKey};
 use crate::coincide::{boundary_curve, Edge};
 use crate::error::Error;
-use crate::io::{point_to_json, Patch};
+use crate::io::point_to_json;
+use crate::patch::Patch;
 use crate::{RectPatch, Tolerance};
 use num_rational::BigRational;
 use serde_json::{json, Value};

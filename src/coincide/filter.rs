@@ -25,7 +25,7 @@ use crate::coincide::minimal::{certified_minimal, Net};
 use crate::coincide::{coincide_nets, net_of, Coincidence, ReductionInfo, Symmetry};
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::io::Patch;
+use crate::patch::Patch;
 use num_rational::BigRational;
 
 /// Interval images of one row of a net: Cartesian points and weights.

@@ -13,7 +13,7 @@
 
 pub mod trig;
 
-pub use trig::{read_trig_patches, trig_patch_from_value, trig_patch_to_json, TrigPatch};
+pub use trig::{read_trig_patches, trig_patch_from_value, trig_patch_to_json};
 
 use crate::algebra::poly::Poly;
 use crate::algebra::scalar::{Field, Ordered, Scalar};
@@ -30,61 +30,7 @@ mod duplicate_keys;
 mod stream;
 pub use stream::{for_each_chunk, Record};
 
-/// A curve or patch of any kind read from JSON.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Patch<T> {
-    /// `"kind": "curve"`.
-    Curve(RationalCurve<T>),
-    /// `"kind": "rect"`.
-    Rect(RectPatch<T>),
-    /// `"kind": "tri"`.
-    Tri(TriPatch<T>),
-}
-
-impl<T> From<RationalCurve<T>> for Patch<T> {
-    fn from(c: RationalCurve<T>) -> Self {
-        Patch::Curve(c)
-    }
-}
-
-impl<T> From<RectPatch<T>> for Patch<T> {
-    fn from(r: RectPatch<T>) -> Self {
-        Patch::Rect(r)
-    }
-}
-
-impl<T> From<TriPatch<T>> for Patch<T> {
-    fn from(t: TriPatch<T>) -> Self {
-        Patch::Tri(t)
-    }
-}
-
-impl<T: Scalar> Patch<T> {
-    /// The same patch over another scalar type.
-    pub fn map<U: Scalar>(&self, f: impl Fn(&T) -> U) -> Patch<U> {
-        match self {
-            Patch::Curve(c) => Patch::Curve(c.map(f)),
-            Patch::Rect(r) => Patch::Rect(r.map(f)),
-            Patch::Tri(t) => Patch::Tri(t.map(f)),
-        }
-    }
-
-    /// `"curve"`, `"rect"` or `"tri"`.
-    pub fn kind(&self) -> &'static str {
-        match self {
-            Patch::Curve(_) => "curve",
-            Patch::Rect(_) => "rect",
-            Patch::Tri(_) => "tri",
-        }
-    }
-}
-
-impl Patch<BigRational> {
-    /// The patch with `f64` coordinates (nearest values).
-    pub fn to_f64(&self) -> Patch<f64> {
-        self.map(Ordered::to_f64)
-    }
-}
+use crate::patch::Patch;
 
 /// Read a rational exactly from decimal or fraction text: `"3"`, `"-0.885"`,
 /// `"1.5e-3"`, `"1/3"`, `"-2/4"`.

@@ -10,7 +10,8 @@
 //! caller, in parallel, with [`patch_from_value`](crate::io::patch_from_value).
 
 use crate::error::Error;
-use crate::io::{parse_json, patch_from_value, patch_from_value_as, ExactNumber, Patch};
+use crate::io::{parse_json, patch_from_value, patch_from_value_as, ExactNumber};
+use crate::patch::Patch;
 use num_rational::BigRational;
 use serde::de::{DeserializeSeed, Error as _, SeqAccess, Visitor};
 use serde_json::Value;

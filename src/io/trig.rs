@@ -13,39 +13,13 @@
 //!
 //! Reference: source 002 Definitions 2–3; DESIGN.md §4.
 
-use crate::algebra::scalar::{Ordered, Scalar};
 use crate::error::Error;
 use crate::io::{array, field_array, missing, number, parse_json, point_to_json, JsonScalar};
 use crate::trig::curve::TrigCurve;
 use crate::trig::surface::TrigRect;
+use crate::trig::TrigPatch;
 use num_rational::BigRational;
 use serde_json::{json, Map, Value};
-
-/// A trigonometric curve or surface read from JSON.
-#[derive(Clone, Debug, PartialEq)]
-pub enum TrigPatch<T> {
-    /// `"kind": "trig-curve"`.
-    Curve(TrigCurve<T>),
-    /// `"kind": "trig-rect"`.
-    Rect(TrigRect<T>),
-}
-
-impl<T: Scalar> TrigPatch<T> {
-    /// Apply `f` to every number (e.g. exact → `f64` with [`Ordered::to_f64`]).
-    pub fn map<U: Scalar>(&self, f: impl Fn(&T) -> U) -> TrigPatch<U> {
-        match self {
-            TrigPatch::Curve(c) => TrigPatch::Curve(c.map(f)),
-            TrigPatch::Rect(r) => TrigPatch::Rect(r.map(f)),
-        }
-    }
-}
-
-impl TrigPatch<BigRational> {
-    /// The nearest `f64` patch.
-    pub fn to_f64(&self) -> TrigPatch<f64> {
-        self.map(Ordered::to_f64)
-    }
-}
 
 fn points(v: &Value, what: &str) -> Result<Vec<Vec<BigRational>>, Error> {
     array(v, what)?
@@ -121,7 +95,7 @@ fn read_one(obj: &Map<String, Value>) -> Result<TrigPatch<BigRational>, Error> {
 /// # Examples
 ///
 /// ```
-/// use exact_bezier::{ratio, io::read_trig_patches, trig::TrigParam, io::TrigPatch};
+/// use exact_bezier::{ratio, io::read_trig_patches, trig::TrigParam, trig::TrigPatch};
 /// let text = r#"{"kind": "trig-curve", "alpha": "1/2", "points": [[0], [1], [2], [3]]}"#;
 /// let v = read_trig_patches(text).unwrap().unwrap();
 /// let TrigPatch::Curve(c) = &v[0] else { panic!() };
@@ -157,7 +131,7 @@ pub fn read_trig_patches(text: &str) -> Result<Option<Vec<TrigPatch<BigRational>
 /// Write a trigonometric patch as JSON (`kind`, `alpha`, `points`).
 ///
 /// ```
-/// use exact_bezier::{ratio, io::read_trig_patches, io::trig_patch_to_json, trig::TrigCurve, io::TrigPatch};
+/// use exact_bezier::{ratio, io::read_trig_patches, io::trig_patch_to_json, trig::TrigCurve, trig::TrigPatch};
 /// let c = TrigCurve::new((0..4).map(|i| vec![ratio(i, 3)]).collect(), ratio(3, 2)).unwrap();
 /// let text = trig_patch_to_json(&TrigPatch::Curve(c.clone())).to_string();
 /// assert_eq!(read_trig_patches(&text).unwrap().unwrap(), vec![TrigPatch::Curve(c)]);

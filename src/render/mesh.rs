@@ -36,7 +36,7 @@ use crate::algebra::scalar::{ratio, Ordered, Scalar};
 use crate::error::Error;
 use crate::eval::Jets;
 use crate::hpoint::HPoint;
-use crate::io::Patch;
+use crate::patch::Patch;
 use crate::rect::RectPatch;
 use crate::tri::TriPatch;
 use std::fmt::Write;

@@ -8,12 +8,14 @@
 pub use basis::{circle_normal_form, trig_basis_values, TrigFn, TrigParam};
 pub use bowl::trig_bowl;
 pub use curve::TrigCurve;
+pub use patch::TrigPatch;
 pub use stitch::{trig_g0, trig_g1_factor, trig_stitch, trig_tangent_continuous, TrigJoin};
 pub use surface::TrigRect;
 
 pub mod basis;
 pub mod bowl;
 pub mod curve;
+mod patch;
 pub mod rational;
 pub mod stitch;
 pub mod surface;

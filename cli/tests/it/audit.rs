@@ -8,7 +8,7 @@
 use crate::common::{cli, cli_json};
 use exact_bezier::{
     audit::audit, audit::read_model, audit::Continuity, audit::Model, audit::Piece,
-    io::read_trig_patches, io::TrigPatch, Patch, RectPatch,
+    io::read_trig_patches, trig::TrigPatch, Patch, RectPatch,
 };
 use num_rational::BigRational;
 use serde_json::Value;
@@ -16,7 +16,10 @@ use serde_json::Value;
 type Q = BigRational;
 
 fn fixture(name: &str) -> String {
-    format!("{}/tests/fixtures/{name}", concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+    format!(
+        "{}/tests/fixtures/{name}",
+        concat!(env!("CARGO_MANIFEST_DIR"), "/..")
+    )
 }
 
 fn model(name: &str) -> Model {

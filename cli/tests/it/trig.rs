@@ -5,10 +5,10 @@
 use crate::common::cli;
 use exact_bezier::strategy::{point, positive_weight, rational_in, small_rational, unit_parameter};
 use exact_bezier::{
-    io::read_trig_patches, io::trig_patch_to_json, io::TrigPatch, ratio, trig::trig_basis_values,
-    trig::trig_bowl, trig::trig_g0, trig::trig_g1_factor, trig::trig_stitch,
-    trig::trig_tangent_continuous, trig::TrigCurve, trig::TrigJoin, trig::TrigParam,
-    trig::TrigRect, Error, Ordered, Tolerance,
+    io::read_trig_patches, io::trig_patch_to_json, ratio, trig::trig_basis_values, trig::trig_bowl,
+    trig::trig_g0, trig::trig_g1_factor, trig::trig_stitch, trig::trig_tangent_continuous,
+    trig::TrigCurve, trig::TrigJoin, trig::TrigParam, trig::TrigPatch, trig::TrigRect, Error,
+    Ordered, Tolerance,
 };
 use num_rational::BigRational;
 use num_traits::{One, Zero};
@@ -205,7 +205,10 @@ fn bowl_parameters() -> (Q, [Q; 4], [Q; 4]) {
 }
 
 fn fixture(name: &str) -> String {
-    format!("{}/tests/fixtures/{name}", concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+    format!(
+        "{}/tests/fixtures/{name}",
+        concat!(env!("CARGO_MANIFEST_DIR"), "/..")
+    )
 }
 
 /// The fixture file holds exactly these surfaces; `EXACT_BEZIER_BLESS=1`

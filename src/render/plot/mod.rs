@@ -37,7 +37,7 @@ pub use view::{Plane, Projection};
 
 use crate::algebra::scalar::Ordered;
 use crate::error::Error;
-use crate::io::Patch;
+use crate::patch::Patch;
 use num_traits::One;
 use std::fmt::Display;
 

@@ -16,7 +16,7 @@ use super::Split;
 use crate::algebra::scalar::Ordered;
 use crate::error::Error;
 use crate::eval::Evaluator;
-use crate::io::Patch;
+use crate::patch::Patch;
 use std::fmt::Display;
 
 /// What a mark shows; decides its style.
