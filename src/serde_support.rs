@@ -22,11 +22,12 @@
 use crate::algebra::scalar::Field;
 use crate::coincide::Coincidence;
 use crate::error::Error;
+use crate::io::{nurbs_to_json, read_nurbs};
 use crate::io::{
     patch_from_value_as, patch_to_json, read_patches_as, trig_patch_from_value, trig_patch_to_json,
     ExactNumber, JsonScalar,
 };
-use crate::nurbs::{nurbs_to_json, read_nurbs, Nurbs};
+use crate::nurbs::Nurbs;
 use crate::patch::Patch;
 use crate::reparam::standard::Standard;
 use crate::trig::TrigPatch;

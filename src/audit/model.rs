@@ -2,8 +2,9 @@
 //! from our JSON (patches, `nurbs-*` objects, geomdl) or from STEP.
 
 use crate::error::Error;
+use crate::io::{is_nurbs, read_nurbs};
 use crate::io::{parse_json, patch_from_value, point_to_json, JsonScalar};
-use crate::nurbs::json::{is_nurbs, read_nurbs, Nurbs};
+use crate::nurbs::Nurbs;
 use crate::patch::Patch;
 use crate::step::read_step;
 use num_rational::BigRational;

@@ -27,6 +27,8 @@ use num_traits::Zero;
 use serde_json::{Map, Number, Value};
 
 mod duplicate_keys;
+mod nurbs;
+pub use nurbs::{is_nurbs, nurbs_to_json, read_nurbs};
 mod stream;
 pub use stream::{for_each_chunk, Record};
 
@@ -411,7 +413,7 @@ pub fn patch_from_value_as<T: ExactNumber>(v: &Value) -> Result<Patch<T>, Error>
 fn unknown_kind(kind: &str) -> String {
     let elsewhere = match kind {
         "trig-curve" | "trig-rect" => " (a trigonometric patch: read it with `io::read_trig_patches`; CLI `eval`, `convert --to rational`)",
-        "nurbs-curve" | "nurbs-surface" => " (a NURBS: read it with `nurbs::read_nurbs`; CLI `convert --to bezier`)",
+        "nurbs-curve" | "nurbs-surface" => " (a NURBS: read it with `io::read_nurbs`; CLI `convert --to bezier`)",
         _ => "",
     };
     format!(
@@ -482,10 +484,10 @@ pub fn read_patches_as<T: ExactNumber>(text: &str) -> Result<Vec<Patch<T>>, Erro
     }
 }
 
-/// One patch, or the Bézier pieces of a NURBS object (`crate::nurbs::json`).
+/// One patch, or the Bézier pieces of a NURBS object ([`read_nurbs`]).
 fn patches_from_value(v: &Value) -> Result<Vec<Patch<BigRational>>, Error> {
-    if crate::nurbs::json::is_nurbs(v) {
-        let nurbs = crate::nurbs::json::read_nurbs(v)?;
+    if is_nurbs(v) {
+        let nurbs = read_nurbs(v)?;
         return Ok(nurbs
             .iter()
             .flat_map(|n| n.pieces())

@@ -29,7 +29,7 @@
 //! [`Scalar::from_rational`], so no division in the scalar is needed; see
 //! `proofs/nurbs.rs`). Everything is homogeneous: `(w_i P_i, w_i)`.
 
-pub use json::{is_nurbs, nurbs_to_json, read_nurbs, Nurbs, SpannedPatch};
+pub use spanned::{Nurbs, SpannedPatch};
 
 use crate::error::{Error, MAX_DEGREE};
 use crate::hpoint::HPoint;
@@ -37,7 +37,7 @@ use crate::{RationalCurve, RectPatch, Scalar};
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
-pub mod json;
+mod spanned;
 
 /// A knot vector with its degree: validated once, used by curves and both
 /// directions of surfaces.

@@ -24,7 +24,7 @@
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::io::parse_rational;
-use crate::nurbs::json::Nurbs;
+use crate::nurbs::Nurbs;
 use crate::nurbs::{Knots, NurbsCurve, NurbsSurface};
 use num_rational::BigRational;
 use num_traits::{One, Signed};

@@ -327,7 +327,7 @@ fn audit_plot_writes_a_png_and_refuses_other_names() {
 /// `nurbs-surface` object; a geomdl curve too.
 #[test]
 fn geomdl_json_layouts_read_as_our_nurbs() {
-    use exact_bezier::{io::read_patches, nurbs::read_nurbs};
+    use exact_bezier::io::{read_nurbs, read_patches};
     let ours = r#"{"kind": "nurbs-surface", "degree": [2, 1], "knots": [[0,0,0,"1/2",1,1,1],[0,0,1,1]],
         "points": [[[0,0,0],[0,1,0]],[[1,0,1],[1,1,1]],[[2,0,0],[2,1,"0.5"]],[[3,0,1],[3,1,0]]],
         "weights": [[1,2],[1,1],[3,1],[1,1]]}"#;

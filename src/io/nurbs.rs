@@ -19,67 +19,20 @@
 //! `degree_u`, `degree_v`, `knotvector_u`, `knotvector_v`, `size_u`,
 //! `size_v`; both spellings are read.
 
-use super::{Knots, NurbsCurve, NurbsSurface};
+use super::{array, missing, number, point, positive_weight, JsonScalar};
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::io::{array, missing, number, point, positive_weight, JsonScalar};
-use crate::Patch;
+use crate::nurbs::{Knots, Nurbs, NurbsCurve, NurbsSurface};
 use num_rational::BigRational;
 use num_traits::One;
 use serde_json::{json, Map, Value};
-
-/// A B-spline curve or surface read from JSON.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Nurbs {
-    /// A (rational) B-spline curve.
-    Curve(NurbsCurve<BigRational>),
-    /// A (rational) B-spline surface.
-    Surface(NurbsSurface<BigRational>),
-}
-
-/// A Bézier piece with the knot spans it came from (`v` is `None` for a curve).
-#[derive(Clone, Debug, PartialEq)]
-pub struct SpannedPatch {
-    /// The piece.
-    pub patch: Patch<BigRational>,
-    /// Its span in u (or along the curve).
-    pub u: [BigRational; 2],
-    /// Its span in v (surfaces).
-    pub v: Option<[BigRational; 2]>,
-}
-
-impl Nurbs {
-    /// The Bézier pieces with their spans.
-    pub fn pieces(&self) -> Vec<SpannedPatch> {
-        match self {
-            Nurbs::Curve(c) => c
-                .bezier_pieces()
-                .into_iter()
-                .map(|p| SpannedPatch {
-                    patch: Patch::Curve(p.curve),
-                    u: p.span,
-                    v: None,
-                })
-                .collect(),
-            Nurbs::Surface(s) => s
-                .bezier_pieces()
-                .into_iter()
-                .map(|p| SpannedPatch {
-                    patch: Patch::Rect(p.patch),
-                    u: p.u,
-                    v: Some(p.v),
-                })
-                .collect(),
-        }
-    }
-}
 
 /// Write `n` in our JSON layout (`"kind": "nurbs-curve"` or
 /// `"nurbs-surface"`, Cartesian points, weights), which [`read_nurbs`] reads
 /// back to an equal value.
 ///
 /// ```
-/// use exact_bezier::nurbs::{nurbs_to_json, read_nurbs};
+/// use exact_bezier::io::{nurbs_to_json, read_nurbs};
 /// let v = serde_json::json!({"kind": "nurbs-curve", "degree": 1, "knots": [0, 0, "1/2", 1, 1],
 ///                            "points": [[0, 0], [1, 2], [3, 0]], "weights": [1, "1/3", 1]});
 /// let n = read_nurbs(&v).unwrap().remove(0);
