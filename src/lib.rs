@@ -56,19 +56,43 @@
 //! assert_eq!(moved.dim(), 2);
 //! ```
 //!
+//! ## Layers
+//!
+//! The modules form layers, each using only those below it (checked by
+//! `tests/layers.rs`, which fails on an upward import or a circle):
+//!
+//! 1. [`Error`] and [`limits`] — errors, and every limit and the cost model;
+//! 2. [`algebra`] — the scalar tower ([`Ring`], [`Scalar`], [`Field`],
+//!    [`Ordered`]) and the number types: integers, intervals, the symbolic
+//!    [`Poly`], real algebraic numbers, resultants;
+//! 3. [`hpoint`] and [`bernstein`] — homogeneous points, de Casteljau, the
+//!    Bernstein basis;
+//! 4. [`eval`] — the evaluation kernels (batches, jets, fraction-free exact);
+//! 5. [`curve`], [`rect`], [`tri`], then [`Patch`] — the three shapes and
+//!    their sum;
+//! 6. operations: [`blossom`], [`convert`], [`reparam`], [`arc`], [`trig`];
+//! 7. predicates: [`coincide`], [`intersect`];
+//! 8. formats: [`nurbs`], [`step`], [`io`] (all JSON reading and writing);
+//! 9. applications: [`audit`], `render`, [`coords`], `strategy`, the
+//!    [`prelude`].
+//!
+//! The command line (crate `exact-bezier-cli`) and the proofs report
+//! (crate `exact-bezier-proofs`) are separate crates of the workspace that
+//! use this crate's public API only.
+//!
 //! ## Features
 //!
 //! | feature | default | what it adds |
 //! | --- | --- | --- |
-//! | `cli` | yes | the `exact-bezier` binary (turns on `render`) |
 //! | `serde` | yes | `serde` for curves and patches (Bézier, trigonometric, NURBS) and results (coincidence, standard forms), in the JSON format of [`io`]; `FromStr` from that text |
-//! | `render` | with `cli` | `render`: SVG/PNG plots and OBJ/STL/PLY meshes |
+//! | `render` | no | `render`: SVG/PNG plots and OBJ/STL/PLY meshes (the command line turns it on) |
 //! | `proptest` | no | `strategy`: proptest strategies for curves and patches |
 //! | `mint` | no | [`coords`]: control points from `mint` points |
 //!
 //! With `default-features = false` the crate is the mathematics and the
 //! JSON format ([`io`]) alone: it depends on the `num-*` crates and
-//! `serde_json`, and not on `clap` or `resvg`.
+//! `serde_json`, and not on `resvg`. The `exact-bezier` binary is the
+//! workspace's `cli` crate (`cargo install --path cli`).
 //!
 //! ## Sources
 //!
