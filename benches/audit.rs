@@ -7,7 +7,7 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use exact_bezier::{
-    audit::audit, audit::read_model, audit::Model, audit::Piece, hpoint::HPoint, nurbs::Knots,
+    audit::audit, audit::Model, audit::Piece, hpoint::HPoint, io::read_model, nurbs::Knots,
     nurbs::NurbsSurface, Patch,
 };
 use num_rational::BigRational;

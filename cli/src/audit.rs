@@ -4,8 +4,9 @@
 //! See `docs/audit.md`.
 
 use super::open_input;
-use exact_bezier::audit::{audit, read_model, Audit, Continuity, Model, PatchEdge};
+use exact_bezier::audit::{audit, Audit, Continuity, Model, PatchEdge};
 use exact_bezier::coincide::boundary_curve;
+use exact_bezier::io::{audit_to_json, read_model};
 use exact_bezier::patch::Patch;
 use exact_bezier::render::plot::{plot_colored_png, PlotOptions};
 use exact_bezier::Error;
@@ -38,7 +39,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
             json!({"summary": report.summary(), "counts": {"G0": g0, "G1": g1, "G2": g2, "undecided": u}}),
         );
     }
-    Ok(report.to_json(&model))
+    Ok(audit_to_json(&report, &model))
 }
 
 /// Palette indices (see [`plot_colored_png`]).

@@ -9,10 +9,10 @@ use super::{
     ScalarKind,
 };
 use exact_bezier::algebra::{Field, Ordered, Scalar};
-use exact_bezier::audit::{piece_to_json, read_model};
 use exact_bezier::convert::{rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Split};
 use exact_bezier::io::trig::read_trig_patches;
 use exact_bezier::io::{patch_to_json, JsonScalar};
+use exact_bezier::io::{piece_to_json, read_model};
 use exact_bezier::limits::{self, check_result_degree, Size};
 use exact_bezier::patch::Patch;
 use exact_bezier::trig::TrigPatch;

@@ -15,17 +15,15 @@
 use crate::coincide::canonical::{canonical_key, CanonicalKey};
 use crate::coincide::{boundary_curve, Edge};
 use crate::error::Error;
-use crate::io::point_to_json;
 use crate::patch::Patch;
 use crate::{RectPatch, Tolerance};
 use num_rational::BigRational;
-use serde_json::{json, Value};
-use std::collections::{BTreeMap, HashMap};
+use std::collections::HashMap;
 
 pub mod model;
 pub mod seam;
 
-pub use model::{piece_to_json, read_model, Model, Origin, Piece};
+pub use model::{nurbs_pieces, Model, Origin, Piece};
 pub use seam::{seam_continuity, Continuity, SeamVerdict};
 
 type Q = BigRational;
@@ -203,71 +201,6 @@ impl Audit {
             self.duplicates.len()
         )
     }
-
-    /// The audit as JSON, with each patch's origin from `model`.
-    pub fn to_json(&self, model: &Model) -> Value {
-        let pe = |e: &PatchEdge| json!({"patch": e.patch, "edge": e.edge.to_string(), "origin": model.pieces[e.patch].origin.to_json()});
-        let seams: Vec<Value> = self
-            .seams
-            .iter()
-            .map(|s| {
-                json!({
-                    "a": pe(&s.a),
-                    "b": pe(&s.b),
-                    "continuity": s.verdict.continuity.map_or(Value::Null, |c| json!(c.to_string())),
-                    "reason": s.verdict.reason,
-                    "reversed": s.verdict.reversed,
-                    "reparameterized": s.verdict.reparameterized,
-                    "non_manifold": s.non_manifold,
-                })
-            })
-            .collect();
-        let [g0, g1, g2, u] = self.counts();
-        json!({
-            "summary": self.summary(),
-            "patches": self.patches,
-            "counts": {"G0": g0, "G1": g1, "G2": g2, "undecided": u},
-            "seams": seams,
-            "open_edges": self.open_edges.iter().map(pe).collect::<Vec<_>>(),
-            "degenerate_edges": self.degenerate_edges.iter().map(|(e, p)| {
-                let mut v = pe(e);
-                v["point"] = point_to_json(p);
-                v
-            }).collect::<Vec<_>>(),
-            "duplicates": self.duplicates,
-            "same_surface": same_surface(model),
-            "not_audited": self.not_rect,
-            "skipped_entities": model.skipped,
-            "invalid_entities": model.invalid.iter().map(|(id, r)| json!({"entity": format!("#{id}"), "reason": r})).collect::<Vec<_>>(),
-            "faces_on_other_surfaces": model.other_faces.len(),
-        })
-    }
-}
-
-/// Pieces that come from one source surface (one STEP entity or one NURBS
-/// object), and STEP faces that share one surface entity.
-fn same_surface(model: &Model) -> Vec<Value> {
-    let mut by_source: BTreeMap<(Option<u64>, Option<usize>), Vec<usize>> = BTreeMap::new();
-    for (k, p) in model.pieces.iter().enumerate() {
-        let src = p.origin.source();
-        if src != (None, None) {
-            by_source.entry(src).or_default().push(k);
-        }
-    }
-    by_source
-        .into_iter()
-        .filter_map(|((entity, element), pieces)| {
-            let faces = &model.pieces[pieces[0]].origin.faces;
-            (pieces.len() > 1 || faces.len() > 1).then(|| {
-                json!({
-                    "entity": entity.map(|e| format!("#{e}")),
-                    "element": element,
-                    "faces": faces.iter().map(|f| format!("#{f}")).collect::<Vec<_>>(),
-                    "patches": pieces,
-                })
-            })
-        })
-        .collect()
 }
 
 #[cfg(test)]

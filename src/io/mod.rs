@@ -27,7 +27,9 @@ use num_traits::Zero;
 use serde_json::{Map, Number, Value};
 
 mod duplicate_keys;
+mod model;
 mod nurbs;
+pub use model::{audit_to_json, origin_to_json, piece_to_json, read_model};
 pub use nurbs::{is_nurbs, nurbs_to_json, read_nurbs};
 mod stream;
 pub use stream::{for_each_chunk, Record};

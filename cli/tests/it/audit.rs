@@ -7,7 +7,7 @@
 
 use crate::common::{cli, cli_json};
 use exact_bezier::{
-    audit::audit, audit::read_model, audit::Continuity, audit::Model, audit::Piece,
+    audit::audit, audit::Continuity, audit::Model, audit::Piece, io::read_model,
     io::read_trig_patches, trig::TrigPatch, Patch, RectPatch,
 };
 use num_rational::BigRational;
@@ -60,7 +60,7 @@ fn teapot_seams_open_and_degenerate_edges_checked_independently() {
     let m = model("teapot.json");
     let a = audit(&m).unwrap();
     assert_eq!(a.patches, 32);
-    let json = a.to_json(&m);
+    let json = exact_bezier::io::audit_to_json(&a, &m);
     // Independent seam finding: two edges are shared iff their control
     // points agree in order or reversed (the teapot has no reparameterized
     // edges); collapsed edges have one point four times.
@@ -207,7 +207,7 @@ fn split_at_an_inner_knot_the_halves_meet_g2_on_one_surface() {
         "{}",
         a.seams[0].verdict.reason
     );
-    let same = &a.to_json(&m)["same_surface"];
+    let same = &exact_bezier::io::audit_to_json(&a, &m)["same_surface"];
     assert_eq!(same[0]["patches"], serde_json::json!([0, 1]));
 }
 

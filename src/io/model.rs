@@ -1,0 +1,172 @@
+//! Models and audits in JSON: [`read_model`] reads the Bézier pieces of a
+//! file (our JSON, NURBS objects, geomdl, or STEP) with where each came
+//! from; [`piece_to_json`] and [`audit_to_json`] write them.
+
+use super::{
+    is_nurbs, parse_json, patch_from_value, patch_to_json, point_to_json, read_nurbs, JsonScalar,
+};
+use crate::algebra::Field;
+use crate::audit::{nurbs_pieces, Audit, Model, Origin, PatchEdge, Piece};
+use crate::error::Error;
+use crate::patch::Patch;
+use crate::step::read_step;
+use serde_json::{json, Value};
+use std::collections::BTreeMap;
+use std::io::BufRead;
+
+/// A piece's origin as JSON: `{"element"|"entity", "faces", "span_u",
+/// "span_v"}` (absent fields omitted).
+pub fn origin_to_json(origin: &Origin) -> Value {
+    let mut o = serde_json::Map::new();
+    if let Some(e) = origin.element {
+        o.insert("element".into(), json!(e));
+    }
+    if let Some(e) = origin.entity {
+        o.insert("entity".into(), json!(format!("#{e}")));
+        let faces: Vec<String> = origin.faces.iter().map(|f| format!("#{f}")).collect();
+        o.insert("faces".into(), json!(faces));
+    }
+    if let Some(u) = &origin.u {
+        o.insert("span_u".into(), point_to_json(u));
+    }
+    if let Some(v) = &origin.v {
+        o.insert("span_v".into(), point_to_json(v));
+    }
+    Value::Object(o)
+}
+
+fn json_pieces(v: &Value, element: Option<usize>) -> Result<Vec<Piece>, Error> {
+    let base = Origin {
+        element,
+        ..Origin::default()
+    };
+    if is_nurbs(v) {
+        let nurbs = read_nurbs(v)?;
+        return Ok(nurbs
+            .iter()
+            .flat_map(|n| nurbs_pieces(n, base.clone()))
+            .collect());
+    }
+    Ok(vec![Piece {
+        patch: patch_from_value(v)?,
+        origin: base,
+    }])
+}
+
+/// Read a model from a stream: STEP if it begins with `ISO-10303-21`,
+/// otherwise JSON (one object or an array). STEP is read statement by
+/// statement; JSON is read whole.
+///
+/// # Errors
+///
+/// The readers' errors (JSON: the failing element's index is named).
+pub fn read_model(mut input: impl BufRead) -> Result<Model, Error> {
+    let head = input
+        .fill_buf()
+        .map_err(|e| Error::Io(format!("cannot read the input: {e}")))?;
+    let text_start = String::from_utf8_lossy(&head[..head.len().min(64)]).into_owned();
+    if text_start.trim_start().starts_with("ISO-10303-21") {
+        return Ok(Model::from_step(read_step(input)?));
+    }
+    let mut text = String::new();
+    input
+        .read_to_string(&mut text)
+        .map_err(|e| Error::Io(format!("cannot read the input: {e}")))?;
+    let v = parse_json(&text)?;
+    let pieces = match &v {
+        Value::Array(items) => {
+            let mut out = Vec::new();
+            for (k, item) in items.iter().enumerate() {
+                out.extend(
+                    json_pieces(item, Some(k))
+                        .map_err(|e| Error::Format(format!("element {k}: {e}")))?,
+                );
+            }
+            out
+        }
+        _ => json_pieces(&v, Some(0))?,
+    };
+    Ok(Model {
+        pieces,
+        ..Model::default()
+    })
+}
+
+/// A piece as JSON: the patch object with an `"origin"` field.
+///
+/// # Errors
+///
+/// [`Error::PointAtInfinity`] never for positive weights (as
+/// [`patch_to_json`](crate::io::patch_to_json)).
+pub fn piece_to_json<T: JsonScalar + Field>(p: &Patch<T>, origin: &Origin) -> Result<Value, Error> {
+    let mut v = patch_to_json(p)?;
+    if let Value::Object(o) = &mut v {
+        o.insert("origin".into(), origin_to_json(origin));
+    }
+    Ok(v)
+}
+
+/// The audit as JSON, with each patch's origin from `model`.
+pub fn audit_to_json(audit: &Audit, model: &Model) -> Value {
+    let pe = |e: &PatchEdge| json!({"patch": e.patch, "edge": e.edge.to_string(), "origin": origin_to_json(&model.pieces[e.patch].origin)});
+    let seams: Vec<Value> = audit
+        .seams
+        .iter()
+        .map(|s| {
+            json!({
+                "a": pe(&s.a),
+                "b": pe(&s.b),
+                "continuity": s.verdict.continuity.map_or(Value::Null, |c| json!(c.to_string())),
+                "reason": s.verdict.reason,
+                "reversed": s.verdict.reversed,
+                "reparameterized": s.verdict.reparameterized,
+                "non_manifold": s.non_manifold,
+            })
+        })
+        .collect();
+    let [g0, g1, g2, u] = audit.counts();
+    json!({
+        "summary": audit.summary(),
+        "patches": audit.patches,
+        "counts": {"G0": g0, "G1": g1, "G2": g2, "undecided": u},
+        "seams": seams,
+        "open_edges": audit.open_edges.iter().map(pe).collect::<Vec<_>>(),
+        "degenerate_edges": audit.degenerate_edges.iter().map(|(e, p)| {
+            let mut v = pe(e);
+            v["point"] = point_to_json(p);
+            v
+        }).collect::<Vec<_>>(),
+        "duplicates": audit.duplicates,
+        "same_surface": same_surface(model),
+        "not_audited": audit.not_rect,
+        "skipped_entities": model.skipped,
+        "invalid_entities": model.invalid.iter().map(|(id, r)| json!({"entity": format!("#{id}"), "reason": r})).collect::<Vec<_>>(),
+        "faces_on_other_surfaces": model.other_faces.len(),
+    })
+}
+
+/// Pieces that come from one source surface (one STEP entity or one NURBS
+/// object), and STEP faces that share one surface entity.
+fn same_surface(model: &Model) -> Vec<Value> {
+    let mut by_source: BTreeMap<(Option<u64>, Option<usize>), Vec<usize>> = BTreeMap::new();
+    for (k, p) in model.pieces.iter().enumerate() {
+        let src = p.origin.source();
+        if src != (None, None) {
+            by_source.entry(src).or_default().push(k);
+        }
+    }
+    by_source
+        .into_iter()
+        .filter_map(|((entity, element), pieces)| {
+            let faces = &model.pieces[pieces[0]].origin.faces;
+            (pieces.len() > 1 || faces.len() > 1).then(|| {
+                json!({
+                    "entity": entity.map(|e| format!("#{e}")),
+                    "element": element,
+                    "faces": faces.iter().map(|f| format!("#{f}")).collect::<Vec<_>>(),
+                    "patches": pieces,
+                })
+            })
+        })
+        .collect()
+}
