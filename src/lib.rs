@@ -7,7 +7,7 @@
 //! | scalar | for |
 //! | --- | --- |
 //! | `f64` | speed; comparisons take an explicit [`Tolerance`] |
-//! | [`BigRational`](num_rational::BigRational) | exact answers, where equality is equality |
+//! | [`BigRational`] | exact answers, where equality is equality |
 //! | [`Poly`] | proofs: an identity that comes out `== 0` on symbols holds for all their values |
 //!
 //! ## Start here
@@ -118,6 +118,16 @@ pub use error::{Error, MAX_DEGREE};
 pub use io::Patch;
 pub use rect::RectPatch;
 pub use tri::TriPatch;
+
+/// Exact rational numbers (`num-rational`'s `BigRational`), the scalar of
+/// exact answers. Re-exported so that code using this crate names it as
+/// `exact_bezier::BigRational` (or through the [`prelude`]) and needs no
+/// dependency of its own on `num-rational`.
+pub use num_rational::BigRational;
+/// Arbitrary-precision integers (`num-bigint`): the numerator and
+/// denominator of a [`BigRational`], and the operands of
+/// [`algebra::gcd`]. Re-exported for the same reason as [`BigRational`].
+pub use num_bigint::{BigInt, BigUint};
 
 /// The README's Rust examples, run as doctests.
 #[cfg(doctest)]

@@ -4,4 +4,4 @@ pub use crate::{
     ratio, Error, Field, Ordered, Patch, Poly, RationalCurve, RectPatch, Ring, Roots, Scalar,
     Tolerance, TriPatch,
 };
-pub use num_rational::BigRational;
+pub use crate::BigRational;

@@ -108,7 +108,7 @@ impl Symmetry {
     ///
     /// ```
     /// use exact_bezier::{RectPatch, coincide::Symmetry, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// let r = RectPatch::polynomial(vec![vec![p(0), p(1)], vec![p(2), p(3)]]).unwrap();
     /// let s = Symmetry { swap: true, reverse_u: true, reverse_v: false };

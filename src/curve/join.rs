@@ -77,7 +77,7 @@ fn is_zero_vec<T: Scalar>(v: &[T], tol: Tolerance) -> bool {
 ///
 /// ```
 /// use exact_bezier::{curve::join, RationalCurve, Tolerance, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let a = RationalCurve::polynomial(vec![p(0, 0), p(1, 1), p(2, 1)]).unwrap();
 /// // P'(1) = 2·(1, 0) and Q'(0) = 3·(2, 0) = 3 P'(1): G¹ with α = 3.
@@ -167,7 +167,7 @@ pub fn join<T: Ordered>(
 ///
 /// ```
 /// use exact_bezier::{curve::g2_leading_points, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// // n = m = 2, α = 1, β = 0: x(t) = t² continues as (1 + t)² (C²).
 /// let q = g2_leading_points(&[p(0), p(0), p(1)], 2, &ratio(1, 1), &ratio(0, 1)).unwrap();

@@ -38,7 +38,7 @@ use crate::hpoint::{check_positive_weights, de_casteljau, de_casteljau_hom, HPoi
 ///
 /// ```
 /// use exact_bezier::{RationalCurve, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let c = RationalCurve::polynomial(vec![p(10, 0), p(30, 60), p(130, 60), p(190, 0)]).unwrap();
 /// assert_eq!(c.eval(&ratio(1, 2)).unwrap(), p(85, 45));
@@ -183,7 +183,7 @@ impl<T: Scalar> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// let c = RationalCurve::polynomial(vec![p(0), p(3), p(9)]).unwrap();
     /// // (2 : 1) is t = 1/3, scaled by (2 + 1)² = 9.
@@ -206,7 +206,7 @@ impl<T: Scalar> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// let c = RationalCurve::polynomial(vec![p(0), p(3), p(9)]).unwrap();
     /// // b[0, 1] is the middle control point.
@@ -291,7 +291,7 @@ impl<T: Scalar> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let c = RationalCurve::new(vec![p(0, 0), p(1, 2), p(3, 0)], vec![ratio(1, 1), ratio(2, 1), ratio(1, 1)]).unwrap();
     /// let alpha = ratio(1, 3);
@@ -361,7 +361,7 @@ impl<T: Field> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let c = RationalCurve::polynomial(vec![p(10, 0), p(30, 60), p(130, 60), p(190, 0)]).unwrap();
     /// let xs = c.eval_many(&[ratio(0, 1), ratio(1, 2)]).unwrap();

@@ -259,7 +259,7 @@ enum Step<T> {
 ///
 /// ```
 /// use exact_bezier::{nurbs::NurbsCurve, nurbs::Knots, hpoint::HPoint, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let k = |x: i64| ratio::<BigRational>(x, 1);
 /// let pts: Vec<HPoint<BigRational>> = [0, 2, 4, 8, 16].iter().map(|&x| HPoint::from_cartesian(&[k(x)])).collect();
 /// let knots = Knots::new(2, (0..8).map(k).collect(), 5).unwrap();

@@ -30,7 +30,7 @@ use crate::hpoint::{check_positive_weights, check_same_dimension, de_casteljau, 
 ///
 /// ```
 /// use exact_bezier::{RectPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let s = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 2)], vec![p(2, 0), p(4, 4)]]).unwrap();
 /// // The average of the four corners: (6/4, 6/4).
@@ -227,7 +227,7 @@ impl<T: Scalar> RectPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{RectPatch, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let s = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 2)], vec![p(2, 0), p(4, 4)]]).unwrap();
     /// let (u, v) = (ratio(1, 3), ratio(3, 4));
@@ -255,7 +255,7 @@ impl<T: Scalar> RectPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{RectPatch, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// let s = RectPatch::polynomial(vec![vec![p(0), p(1)], vec![p(2), p(5)]]).unwrap();
     /// // (u₀, u₁) = (2, 2) is u = 1/2 scaled by 4; (v₀, v₁) = (1, 0) is v = 0.
@@ -312,7 +312,7 @@ impl<T: Scalar> RectPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{RectPatch, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let s = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 2)], vec![p(2, 0), p(4, 4)]]).unwrap();
     /// let c = s.iso_u(&ratio(1, 2));
@@ -339,7 +339,7 @@ impl<T: Scalar> RectPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{RectPatch, rect::Side, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let s = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 2)], vec![p(2, 0), p(4, 4)]]).unwrap();
     /// assert_eq!(s.boundary(Side::U1).points().unwrap(), vec![p(2, 0), p(4, 4)]);

@@ -54,7 +54,7 @@ pub(crate) fn casteljau_level<T: Ring>(
 ///
 /// ```
 /// use exact_bezier::{TriPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// // rows by j: [P_{0,0,1}, P_{1,0,0}], [P_{0,1,0}]
 /// let t = TriPatch::polynomial(vec![vec![p(0, 0), p(1, 0)], vec![p(0, 1)]]).unwrap();
