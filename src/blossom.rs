@@ -35,7 +35,7 @@ impl<T: Scalar> TriPatch<T> {
     ///
     /// Symmetric, affine in each barycentric argument, `b[x, …, x] = T̂(x)`,
     /// and `b[T1^i, T2^j, T3^k] = Q̂_{ijk}` (dual functionals, eq. 4) — all
-    /// proved in `proofs/blossoms.rs`.
+    /// proved in `proofs/src/blossoms.rs`.
     ///
     /// # Errors
     ///

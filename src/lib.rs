@@ -60,22 +60,42 @@
 //!
 //! | feature | default | what it adds |
 //! | --- | --- | --- |
-//! | `cli` | yes | the `exact-bezier` binary (turns on `render`) |
 //! | `serde` | yes | `serde` for curves and patches (Bézier, trigonometric, NURBS) and results (coincidence, standard forms), in the JSON format of [`io`]; `FromStr` from that text |
-//! | `render` | with `cli` | `render`: SVG/PNG plots and OBJ/STL/PLY meshes |
+//! | `render` | no | `render`: SVG/PNG plots and OBJ/STL/PLY meshes (depends on `resvg`) |
 //! | `proptest` | no | `strategy`: proptest strategies for curves and patches |
 //! | `mint` | no | [`coords`]: control points from `mint` points |
 //!
 //! With `default-features = false` the crate is the mathematics and the
-//! JSON format ([`io`]) alone: it depends on the `num-*` crates and
-//! `serde_json`, and not on `clap` or `resvg`.
+//! JSON format ([`io`]) without the `serde` impls; it depends on `resvg`
+//! only with `render`. The command-line tool `exact-bezier` is another
+//! crate of the repository's workspace (`exact-bezier-cli`, in `cli/`),
+//! which turns `render` on.
 //!
 //! ## Sources
 //!
 //! The algorithms come from five documents, which the docs cite as
-//! "source 000" to "source 004". The README's bibliography lists them in
-//! full. Every claim the sources make is checked in `proofs/`
-//! (`exact-bezier prove`).
+//! "source 000" to "source 004" (the README's references give them in full,
+//! with their Chinese titles):
+//!
+//! - **000**: Yang Yi-Jun, Yong Jun-Hai, Zhang Hui, Sun Jia-Guang,
+//!   *Standardization of rational Bézier surfaces*, Journal of
+//!   Computer-Aided Design & Computer Graphics, 2007.
+//! - **001**: Hu Shi-Min, *Bézier curves and surfaces*, lecture slides of
+//!   the course Fundamentals of Computer Graphics, Tsinghua University
+//!   (undated).
+//! - **002**: Sun Mingcan, Shi Jing, *Smooth stitching of bicubic Bézier
+//!   triangular surface with shape parameters*, Journal of Yanbian
+//!   University (Natural Science Edition), 2023.
+//! - **003**: Zhang Ming-li, Chen Xiao-qun, Feng Yu-yu, *Conversion between
+//!   rational rectangular and rational triangular Bézier patches by
+//!   Blossoming method*, University of Science and Technology of China
+//!   (our copy prints neither journal nor year).
+//! - **004**: Hang Houjun, Li Wanggen, *Investigation of inner properties
+//!   of the standard-form cubic rational Bézier representation of circular
+//!   arcs*, Journal of Image and Graphics, 2011, 16(12).
+//!
+//! Every claim the sources make is checked by the workspace's proofs crate
+//! (`proofs/`, run by `exact-bezier prove`).
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]

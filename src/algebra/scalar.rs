@@ -13,7 +13,7 @@
 //! that ring operations suffice; division happens only where a Cartesian answer
 //! is asked for, and is then bounded by [`Field`].
 //!
-//! Reference: DESIGN.md §2; the split follows CGAL's RingNumberType /
+//! Reference: the split follows CGAL's RingNumberType /
 //! FieldNumberType and num-traits' `NumOps` / `NumRef`.
 
 use num_bigint::BigInt;

@@ -25,7 +25,7 @@
 //! ```
 //!
 //! so `ω₁ = kσ/(3N)`, `ω₂ = kE/(3Dσ)`, `b₁* = (D·b̄₀ + 2cN·b̄₁)/k`,
-//! `b₂* = (N·b̄₂ + 2cD·b̄₁)/(kE)` (eq. 1, checked in `proofs/hang_li.rs`).
+//! `b₂* = (N·b̄₂ + 2cD·b̄₁)/(kE)` (eq. 1, checked in `proofs/src/hang_li.rs`).
 //! λ is admissible (positive weights) iff `N, D, E > 0`.
 //!
 //! Exactness: [`Roots`] gives exact cube and square roots for
@@ -402,7 +402,7 @@ impl<T: Scalar> LambdaFactors<T> {
 /// The admissible interval of λ for `c = cos(θ/2) ∈ (−1/2, 1)` (source 004
 /// eq. 1): `(−1/(2ck), 1/k)` for `c > 0` (0 < θ < π), `(−∞, 1/(1 − 4c²))`
 /// for `c ≤ 0` (π ≤ θ < 4π/3); `None` stands for −∞. It is exactly the set
-/// where `N, D, E > 0` (all weights positive; proved in `proofs/hang_li.rs`).
+/// where `N, D, E > 0` (all weights positive; proved in `proofs/src/hang_li.rs`).
 ///
 /// # Errors
 ///

@@ -15,7 +15,7 @@
 //! `Ĥ` and `I` unchanged; so the set of candidate keys of b equals that of a
 //! (T ↦ T∘S permutes the symmetries) and so do their minima. Conversely equal
 //! keys mean equal points and invariants under some symmetries, which by the
-//! completeness of the invariants (`proofs/coincide.rs`) makes the patches
+//! completeness of the invariants (`proofs/src/coincide.rs`) makes the patches
 //! coincident.
 //!
 //! For positive weights the invariants are the weights normalized to

@@ -18,7 +18,7 @@
 //!
 //! Reference: the filtered-predicate design of CGAL (Brönnimann, Burnikel,
 //! Pion, "Interval arithmetic yields efficient dynamic filters for
-//! computational geometry", 2001); DESIGN §7.
+//! computational geometry", 2001).
 
 use crate::algebra::interval::Interval;
 use crate::coincide::minimal::{certified_minimal, Net};

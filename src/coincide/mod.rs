@@ -14,7 +14,7 @@
 //! scaling act on the homogeneous control points by `H_{i,j} ↦ k ρ^i σ^j H_{i,j}`
 //! with `ρ = (1 − α)/α > 0`, `σ = (1 − β)/β > 0` (eq. 4 with `k` absorbing
 //! `α^m β^n`), so two reduced nets coincide iff their normalized points agree
-//! and their invariants and signs agree (proved in `proofs/coincide.rs`).
+//! and their invariants and signs agree (proved in `proofs/src/coincide.rs`).
 //! The witness is exact: `ρ = x_{1,0}` is rational whenever both nets have
 //! non-zero `H_{1,0}` (always, for positive weights), hence `α = 1/(1 + ρ)`
 //! is rational too; otherwise `ρ^a` is given.

@@ -27,7 +27,7 @@ use crate::tri::TriPatch;
 /// ```
 ///
 /// The lecture prints a `(k+1) × k` matrix with a spurious second row
-/// `(1, (n−k)/(n+1−k), 0, …)`; see `proofs/conversions.rs` (refuted).
+/// `(1, (n−k)/(n+1−k), 0, …)`; see `proofs/src/conversions.rs` (refuted).
 ///
 /// # Errors
 ///

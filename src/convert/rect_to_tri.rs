@@ -36,7 +36,7 @@ impl Half {
 ///
 /// on Δ1, and the same with `P̂_{m−i,n−j}` on Δ2 (eq. 16). Homogeneous
 /// points, so rational patches convert exactly; see [`Half`] for the
-/// parameter maps (proved in `proofs/conversions.rs` for m, n ≤ 5).
+/// parameter maps (proved in `proofs/src/conversions.rs` for m, n ≤ 5).
 ///
 /// # Examples
 ///

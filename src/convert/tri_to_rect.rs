@@ -294,7 +294,7 @@ pub fn tri_to_rects<T: Scalar>(tri: &TriPatch<T>, split: &Split<T>) -> [RectPatc
 ///
 /// with the binomial convention `C(m, l) = 0` for `l < 0` or `l > m`. The
 /// operator polynomials are expanded by [`ShiftOp`]; shown equal to
-/// [`tri_to_rects`] in `proofs/conversions.rs`.
+/// [`tri_to_rects`] in `proofs/src/conversions.rs`.
 pub fn tri_to_rects_operators<T: Scalar>(tri: &TriPatch<T>, split: &Split<T>) -> [RectPatch<T>; 3] {
     let [p1, p2, p3, p4, p5] = split.points().map(|p| ShiftOp::linear(&p));
     let e1 = ShiftOp::linear(&[T::one(), T::zero(), T::zero()]);
@@ -350,7 +350,7 @@ fn operator_rect<T: Scalar>(
 ///
 /// Both sums run over their full printed ranges; the pair `(k, l)` is kept
 /// only when `k + l = j`. Homogeneous points make it rational. Shown equal
-/// to piece D1 of [`tri_to_rects`] in `proofs/conversions.rs`.
+/// to piece D1 of [`tri_to_rects`] in `proofs/src/conversions.rs`.
 pub fn tri_to_rect_hu<T: Scalar>(tri: &TriPatch<T>, split: &Split<T>) -> RectPatch<T> {
     let n = tri.degree();
     let [_, p2, p3, p4, _] = split.points().map(|p| ShiftOp::linear(&p));

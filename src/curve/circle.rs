@@ -18,8 +18,8 @@
 //!
 //! — linear in `α, β, K`. Its `2n + 1` coefficients (on the basis
 //! `tⁱ(1 − t)^{2n−i}`) give an overdetermined linear system over the scalar,
-//! solved exactly for exact scalars. Reference: DESIGN §3 (source 004 arcs);
-//! the method is ours.
+//! solved exactly for exact scalars. Reference: source 004 (circular arcs as
+//! rational cubics); the method is ours.
 
 use crate::algebra::scalar::{binomial_scalar, Field, Scalar, Tolerance};
 use crate::curve::RationalCurve;

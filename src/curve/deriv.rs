@@ -121,7 +121,7 @@ impl<T: Scalar> RationalCurve<T> {
     /// entry `j` is `X⁽ʲ⁾(t)`.
     ///
     /// Reference: ours (quotient rule in homogeneous form); proved in
-    /// `proofs/curves.rs`.
+    /// `proofs/src/curves.rs`.
     ///
     /// # Examples
     ///

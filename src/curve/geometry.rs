@@ -97,7 +97,7 @@ impl<T: Scalar> RationalCurve<T> {
     /// degree < 2 has κ = 0 (`(0, 1)`).
     ///
     /// Reference: source 001 (lecture), "二阶导数" (k(0), k(1)); the rational
-    /// factor is ours. Both proved in `proofs/curves.rs`.
+    /// factor is ours. Both proved in `proofs/src/curves.rs`.
     pub fn end_curvature_sq_frac(&self, end: CurveEnd) -> (T, T) {
         let n = self.degree();
         if n < 2 {
@@ -178,7 +178,7 @@ impl<T: Scalar> RationalCurve<T> {
     /// and by [`RationalCurve::scale_weights`]; two curves with the same
     /// control points are Möbius-equivalent iff their invariants agree.
     ///
-    /// Reference: ours, from source 000 eq. (4); proved in `proofs/curves.rs`.
+    /// Reference: ours, from source 000 eq. (4); proved in `proofs/src/curves.rs`.
     pub fn mobius_invariants_frac(&self) -> Vec<(T, T)> {
         let w = self.weights();
         let n = self.degree();
@@ -201,7 +201,7 @@ impl<T: Scalar> RationalCurve<T> {
     ///
     /// (for a quadratic, `J_1 = w_0 w_2 / w_1²` decides the conic type).
     ///
-    /// Reference: ours, from source 000 eq. (4); proved in `proofs/curves.rs`.
+    /// Reference: ours, from source 000 eq. (4); proved in `proofs/src/curves.rs`.
     pub fn local_invariants_frac(&self) -> Vec<(T, T)> {
         let w = self.weights();
         (1..self.degree())

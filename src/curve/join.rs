@@ -15,7 +15,7 @@
 //! The lecture's control-point form of G¹ has the wrong sign; the G² formula
 //! holds as printed only when `m = n`. [`g2_leading_points`] is the corrected
 //! general form. Reference: source 001 (lecture), "Gⁿ 几何连续性"; checked in
-//! `proofs/lecture_joins.rs`.
+//! `proofs/src/lecture_joins.rs`.
 
 use crate::algebra::scalar::{ratio, Ordered, Scalar, Tolerance};
 use crate::curve::RationalCurve;
@@ -66,7 +66,7 @@ fn is_zero_vec<T: Scalar>(v: &[T], tol: Tolerance) -> bool {
 /// with the reason.
 ///
 /// Reference: source 001 (lecture), "Gⁿ 几何连续性", with the corrected sign
-/// of G¹ (see `proofs/lecture_joins.rs`).
+/// of G¹ (see `proofs/src/lecture_joins.rs`).
 ///
 /// # Errors
 ///
@@ -157,7 +157,7 @@ pub fn join<T: Ordered>(
 /// Ring operations only (runs on symbols).
 ///
 /// Reference: source 001 (lecture), "Gⁿ 几何连续性", generalized to `m ≠ n`;
-/// proved in `proofs/lecture_joins.rs`.
+/// proved in `proofs/src/lecture_joins.rs`.
 ///
 /// # Errors
 ///

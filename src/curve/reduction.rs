@@ -15,7 +15,7 @@
 //!
 //! and both recursions return `c*` exactly; on other curves they differ and
 //! the schemes blend them. The recursions and schemes are as printed in the
-//! lecture (checked in `proofs/reduction.rs`).
+//! lecture (checked in `proofs/src/reduction.rs`).
 //!
 //! Reference: source 001 (lecture), "降阶".
 
@@ -195,7 +195,7 @@ impl<T: Scalar> RationalCurve<T> {
     /// applied to every homogeneous coordinate (for a polynomial curve the
     /// weights' `D` is 0, so only the points move: the lecture's problem).
     /// Exact over Q. Optimality (orthogonality to the constraint's null
-    /// space) is proved in `proofs/reduction.rs`.
+    /// space) is proved in `proofs/src/reduction.rs`.
     ///
     /// Reference: source 001 (lecture), "约束优化方法"; the closed form is ours.
     ///

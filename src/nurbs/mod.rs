@@ -27,7 +27,7 @@
 //! and weights are any [`Scalar`] — `BigRational` for exact pieces, `f64`, or
 //! the symbolic [`Poly`](crate::Poly) (the coefficients enter through
 //! [`Scalar::from_rational`], so no division in the scalar is needed; see
-//! `proofs/nurbs.rs`). Everything is homogeneous: `(w_i P_i, w_i)`.
+//! `proofs/src/nurbs.rs`). Everything is homogeneous: `(w_i P_i, w_i)`.
 
 pub use json::{is_nurbs, nurbs_to_json, read_nurbs, Nurbs, SpannedPatch};
 

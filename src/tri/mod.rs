@@ -1,7 +1,7 @@
 //! [`TriPatch`]: rational triangular Bézier patches of degree n, in
 //! homogeneous form, generic over the scalar.
 //!
-//! Conventions (DESIGN §4): barycentric coordinates `(u, v, w)`,
+//! Conventions (those of docs/FORMAT.md): barycentric coordinates `(u, v, w)`,
 //! `w = 1 − u − v`; the control point `P_{i,j,k}` (`i + j + k = n`) carries
 //! the exponents of `u`, `v`, `w`:
 //!

@@ -36,7 +36,7 @@ pub const SYMMETRIES: [[usize; 3]; 6] = [
 /// (0 when `i + j > n`).
 ///
 /// ```text
-/// Laws (proved in proofs/triangles.rs for n ≤ 6):
+/// Laws (proved in proofs/src/triangles.rs for n ≤ 6):
 ///   B^n_{ijk} ≥ 0 on the triangle,   Σ_{i+j+k=n} B^n_{ijk} = (u + v + w)ⁿ = 1,
 ///   B^n_{ijk} = u B^{n−1}_{i−1,j,k} + v B^{n−1}_{i,j−1,k} + w B^{n−1}_{i,j,k−1}
 /// ```
@@ -106,7 +106,7 @@ impl<T: Scalar> TriPatch<T> {
     /// on the homogeneous points.
     ///
     /// Reference: the triangular analogue of source 001 "升阶"; proved in
-    /// `proofs/triangles.rs`.
+    /// `proofs/src/triangles.rs`.
     ///
     /// # Examples
     ///
@@ -182,7 +182,7 @@ impl<T: Scalar> TriPatch<T> {
     /// `(a u, b v, c w) / (a u + b v + c w)` (homogeneously: the same point
     /// without the division), the triangle analogue of the Möbius map
     /// (source 000 eq. 4). Positive `a, b, c` keep the weights positive and
-    /// map the triangle onto itself. Proved in `proofs/triangles.rs`.
+    /// map the triangle onto itself. Proved in `proofs/src/triangles.rs`.
     ///
     /// # Examples
     ///

@@ -69,7 +69,8 @@ impl<T: Field> TrigParam<T> {
     /// `sin t = 2τ/(1+τ²)`, `cos t = (1−τ²)/(1+τ²)`; `τ ∈ [0, 1]` gives
     /// `t ∈ [0, π/2]`.
     ///
-    /// Reference: the half-angle substitution (DESIGN.md §3).
+    /// Reference: the half-angle substitution, the rational parameterization
+    /// of the unit circle.
     pub fn from_tau(tau: &T) -> Self {
         let tt = tau.clone() * tau;
         let den = T::one() + &tt;

@@ -5,7 +5,7 @@
 //! meets the edge `v = 0` of `S₂` (parameter u, shape λ₁). The other joins
 //! are reduced to it by exchanging u and v ([`TrigJoin`]).
 //!
-//! The correct conditions (proved in `proofs/trig_stitching.rs`), with
+//! The correct conditions (proved in `proofs/src/trig_stitching.rs`), with
 //! `ΔPᵢ = Pᵢ₃ − Pᵢ₂`, `ΔQᵢ = Qᵢ₁ − Qᵢ₀`:
 //!
 //! ```text
