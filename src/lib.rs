@@ -104,7 +104,6 @@ pub mod algebra;
 pub mod arc;
 pub mod audit;
 pub mod bernstein;
-pub mod blossom;
 pub mod coincide;
 pub mod convert;
 pub mod coords;
@@ -132,6 +131,11 @@ pub mod strategy;
 pub mod tri;
 pub mod trig;
 
+// After `tri`: rustdoc lists a type's inherent impl blocks in module order,
+// and `blossom` adds one to `TriPatch` that should follow its construction
+// and evaluation.
+pub mod blossom;
+
 pub use algebra::{ratio, Field, Ordered, Poly, Ring, Roots, Scalar, Tolerance};
 pub use curve::RationalCurve;
 pub use error::{Error, MAX_DEGREE};
@@ -139,15 +143,15 @@ pub use io::Patch;
 pub use rect::RectPatch;
 pub use tri::TriPatch;
 
+/// Arbitrary-precision integers (`num-bigint`): the numerator and
+/// denominator of a [`BigRational`], and the operands of
+/// [`algebra::gcd`]. Re-exported for the same reason as [`BigRational`].
+pub use num_bigint::{BigInt, BigUint};
 /// Exact rational numbers (`num-rational`'s `BigRational`), the scalar of
 /// exact answers. Re-exported so that code using this crate names it as
 /// `exact_bezier::BigRational` (or through the [`prelude`]) and needs no
 /// dependency of its own on `num-rational`.
 pub use num_rational::BigRational;
-/// Arbitrary-precision integers (`num-bigint`): the numerator and
-/// denominator of a [`BigRational`], and the operands of
-/// [`algebra::gcd`]. Re-exported for the same reason as [`BigRational`].
-pub use num_bigint::{BigInt, BigUint};
 
 /// The README's Rust examples, run as doctests.
 #[cfg(doctest)]

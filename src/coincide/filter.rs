@@ -14,7 +14,7 @@
 //!    reduction) under every symmetry;
 //! 2. if both nets are certified minimal modulo p (exact, cheap), control
 //!    points and weight invariants under every admissible symmetry;
-//! 3. otherwise, or when a symmetry survives, the exact [`coincide`].
+//! 3. otherwise, or when a symmetry survives, the exact [`coincide`](crate::coincide::coincide).
 //!
 //! Reference: the filtered-predicate design of CGAL (Brönnimann, Burnikel,
 //! Pion, "Interval arithmetic yields efficient dynamic filters for

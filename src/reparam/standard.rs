@@ -8,7 +8,7 @@
 //! proofs family `yang_yong`.
 //!
 //! The formulas need m-th and n-th roots. Over Q they are exact when the
-//! roots are rational ([`rational_root`]); [`standardize_curve_algebraic`]
+//! roots are rational ([`rational_root`](crate::algebra::rational_root)); [`standardize_curve_algebraic`]
 //! and [`standardize_rect_algebraic`] run the same code on
 //! [`RealAlgebraic`] and are exact for every input. The older
 //! [`standardize_rect_exact_or_f64`] and [`standardize_curve_exact_or_f64`]
