@@ -5,9 +5,9 @@
 use super::{charge_each, load_exact, patch_f64, ExactPatches, ExactScalar, ScalarKind};
 use exact_bezier::algebra::Tolerance;
 use exact_bezier::coincide::filter::coincide_filtered;
-use exact_bezier::Error;
 use exact_bezier::io::Patch;
 use exact_bezier::limits::Size;
+use exact_bezier::Error;
 use serde_json::Value;
 
 /// Arguments of `coincide`.
@@ -111,8 +111,11 @@ fn decide<T: ExactScalar>(a: &Args, pa: &Patch<T>, pb: &Patch<T>) -> Result<Valu
                     "--tol {tol} must be a finite number ≥ 0"
                 )));
             }
-            let c =
-                exact_bezier::coincide::coincide_f64(&patch_f64(pa)?, &patch_f64(pb)?, Tolerance(tol))?;
+            let c = exact_bezier::coincide::coincide_f64(
+                &patch_f64(pa)?,
+                &patch_f64(pb)?,
+                Tolerance(tol),
+            )?;
             let mut v = c.to_json();
             v["tolerance"] = tol.into();
             Ok(v)

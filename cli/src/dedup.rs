@@ -18,10 +18,12 @@
 
 use super::bulk::{check_record_cost, map_chunk, BulkArgs, Member, Out, Progress, CHUNK};
 use exact_bezier::algebra::RealAlgebraic;
-use exact_bezier::coincide::canonical::{canonical_key, key_digest, CanonicalKey, Deduper, KeyDigest};
+use exact_bezier::coincide::canonical::{
+    canonical_key, key_digest, CanonicalKey, Deduper, KeyDigest,
+};
 use exact_bezier::coincide::{coincide, Coincidence};
-use exact_bezier::Error;
 use exact_bezier::io::{for_each_chunk, JsonScalar, Record};
+use exact_bezier::Error;
 use rayon::prelude::*;
 use serde_json::json;
 

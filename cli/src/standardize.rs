@@ -4,12 +4,12 @@
 //! reparameterization with its parameters.
 
 use super::{load, one_or_many};
-use exact_bezier::Error;
 use exact_bezier::io::Patch;
 use exact_bezier::limits::{self, Size};
 use exact_bezier::reparam::standard::{
     standardize_curve_algebraic, standardize_rect_algebraic, theorem1_holds,
 };
+use exact_bezier::Error;
 use exact_bezier::Tolerance;
 use num_rational::BigRational;
 use serde_json::Value;

@@ -11,8 +11,8 @@
 
 use super::printed::{rounds_to, shown};
 use super::{Claim, Verdict};
-use exact_bezier::algebra::{ratio, Field, Ordered, Roots, Scalar, Tolerance};
 use exact_bezier::algebra::RealAlgebraic;
+use exact_bezier::algebra::{ratio, Field, Ordered, Roots, Scalar, Tolerance};
 use exact_bezier::curve::geometry::ConicType;
 use exact_bezier::io::{read_patches, Patch};
 use exact_bezier::rect::{RectPatch, Side};
