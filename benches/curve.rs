@@ -4,7 +4,7 @@
 //! `cargo bench --bench curve -- --warm-up-time 1 --measurement-time 3`;
 //! the exact/f64 ratio is the ratio of the reported times.
 //!
-//! A third variant shows the fraction-free path of DESIGN §2 with the
+//! A third variant shows the fraction-free path (README, "Speed") with the
 //! generic API only: the homogeneous control points are scaled to integers
 //! ([`RationalCurve::scale_weights`] by the lcm of the denominators, which
 //! keeps every point), `t = p/q` becomes the homogeneous parameter

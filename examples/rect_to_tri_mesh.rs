@@ -7,7 +7,8 @@
 //! exact normals and written as an OBJ file to the system's temporary
 //! directory.
 //!
-//! Run: `cargo run --example rect_to_tri_mesh`
+//! Run: `cargo run --example rect_to_tri_mesh` (feature `render`: on in the
+//! workspace; for the crate alone add `--features render`)
 
 use exact_bezier::{convert::rect_to_tris, ratio, render::Mesh, Patch, RectPatch};
 use num_rational::BigRational;

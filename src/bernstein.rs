@@ -11,7 +11,7 @@ use crate::algebra::scalar::{binomial_scalar, Scalar};
 ///
 /// ```
 /// use exact_bezier::{bernstein::bernstein, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let b: BigRational = bernstein(1, 3, &ratio(1, 2));
 /// assert_eq!(b, ratio(3, 8));
 /// ```
@@ -28,7 +28,7 @@ pub fn bernstein<T: Scalar>(i: usize, n: usize, t: &T) -> T {
 ///
 /// ```
 /// use exact_bezier::{bernstein::bernstein_all, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let b: Vec<BigRational> = bernstein_all(2, &ratio(1, 3));
 /// assert_eq!(b, vec![ratio(4, 9), ratio(4, 9), ratio(1, 9)]);
 /// ```

@@ -35,7 +35,7 @@ impl<T: Scalar> TriPatch<T> {
     ///
     /// Symmetric, affine in each barycentric argument, `b[x, …, x] = T̂(x)`,
     /// and `b[T1^i, T2^j, T3^k] = Q̂_{ijk}` (dual functionals, eq. 4) — all
-    /// proved in `proofs/blossoms.rs`.
+    /// proved in `proofs/src/blossoms.rs`.
     ///
     /// # Errors
     ///
@@ -45,7 +45,7 @@ impl<T: Scalar> TriPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{TriPatch, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// let t = TriPatch::polynomial(vec![vec![p(0), p(1), p(2)], vec![p(3), p(4)], vec![p(5)]]).unwrap();
     /// let (t1, t2) = ([ratio(1, 1), ratio(0, 1), ratio(0, 1)], [ratio(0, 1), ratio(1, 1), ratio(0, 1)]);
@@ -88,7 +88,7 @@ impl<T: Scalar> TriPatch<T> {
 ///
 /// ```
 /// use exact_bezier::{blossom::rect_blossom, RectPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let r = RectPatch::polynomial(vec![vec![p(0), p(1)], vec![p(2), p(7)]]).unwrap();
 /// assert_eq!(rect_blossom(&r, &[ratio(1, 1)], &[ratio(0, 1)]).unwrap(), r.ctrl()[1][0]);
@@ -219,7 +219,7 @@ fn elementary<T: Scalar>(args: &[T], n: usize) -> Vec<T> {
 ///
 /// ```
 /// use exact_bezier::{blossom::polar_univariate, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// // p(t) = t² as degree 2: B[u₁, u₂] = u₁ u₂
 /// let c = [ratio::<BigRational>(0, 1), ratio(0, 1), ratio(1, 1)];
 /// assert_eq!(polar_univariate(&c, 2, &[ratio(2, 1), ratio(3, 1)]).unwrap(), ratio(6, 1));
@@ -257,7 +257,7 @@ pub fn polar_univariate<T: Scalar>(coef: &[T], n: usize, args: &[T]) -> Result<T
 ///
 /// ```
 /// use exact_bezier::{blossom::polar_bivariate, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// // p = x·y as degree 2: B[(x1,y1),(x2,y2)] = (x1 y2 + x2 y1)/2
 /// let z = ratio::<BigRational>(0, 1);
 /// let c = vec![vec![z.clone(), z.clone()], vec![z.clone(), ratio(1, 1)]];
@@ -319,7 +319,7 @@ pub fn polar_bivariate<T: Scalar>(coef: &[Vec<T>], n: usize, args: &[[T; 2]]) ->
 ///
 /// ```
 /// use exact_bezier::{blossom::polar_tensor, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// // p = x·y, bidegree (1, 1): B[u₁; v₁] = u₁ v₁
 /// let z = ratio::<BigRational>(0, 1);
 /// let c = vec![vec![z.clone(), z.clone()], vec![z, ratio(1, 1)]];

@@ -52,7 +52,7 @@ fn write_net<'a, T: Field + fmt::Display + 'a>(
 
 /// ```
 /// use exact_bezier::{ratio, RationalCurve};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let c = RationalCurve::new(vec![p(0, 0), p(1, 2), p(2, 0)], vec![ratio(1, 1), ratio(1, 3), ratio(1, 1)]).unwrap();
 /// assert_eq!(c.to_string(), "rational curve of degree 2 in 2D: (0, 0) w 1, (1, 2) w 1/3, (2, 0) w 1");

@@ -14,7 +14,7 @@ use crate::error::Error;
 ///
 /// ```
 /// use exact_bezier::{hpoint::HPoint, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p: HPoint<BigRational> = HPoint::from_point(&[ratio(1, 2), ratio(3, 1)], &ratio(2, 1));
 /// assert_eq!(p.coords, vec![ratio(1, 1), ratio(6, 1), ratio(2, 1)]);
 /// assert_eq!(p.project().unwrap(), vec![ratio(1, 2), ratio(3, 1)]);
@@ -175,7 +175,7 @@ pub fn de_casteljau<T: Scalar>(points: &[HPoint<T>], t: &T) -> HPoint<T> {
 ///
 /// ```
 /// use exact_bezier::{hpoint::de_casteljau, hpoint::de_casteljau_hom, hpoint::HPoint, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let pts: Vec<HPoint<BigRational>> = (0..4).map(|i| HPoint::from_cartesian(&[ratio(i * i, 1)])).collect();
 /// let t = ratio(1, 3);
 /// let scaled = de_casteljau_hom(&pts, &ratio(2, 1), &ratio(1, 1)); // (2 : 1) is t = 1/3, times 3³

@@ -7,7 +7,7 @@
 //! | scalar | for |
 //! | --- | --- |
 //! | `f64` | speed; comparisons take an explicit [`Tolerance`] |
-//! | [`BigRational`](num_rational::BigRational) | exact answers, where equality is equality |
+//! | [`BigRational`] | exact answers, where equality is equality |
 //! | [`Poly`] | proofs: an identity that comes out `== 0` on symbols holds for all their values |
 //!
 //! ## Start here
@@ -85,21 +85,41 @@
 //! | feature | default | what it adds |
 //! | --- | --- | --- |
 //! | `serde` | yes | `serde` for curves and patches (Bézier, trigonometric, NURBS) and results (coincidence, standard forms), in the JSON format of [`io`]; `FromStr` from that text |
-//! | `render` | no | `render`: SVG/PNG plots and OBJ/STL/PLY meshes (the command line turns it on) |
+//! | `render` | no | `render`: SVG/PNG plots and OBJ/STL/PLY meshes (depends on `resvg`) |
 //! | `proptest` | no | `strategy`: proptest strategies for curves and patches |
 //! | `mint` | no | [`coords`]: control points from `mint` points |
 //!
 //! With `default-features = false` the crate is the mathematics and the
-//! JSON format ([`io`]) alone: it depends on the `num-*` crates and
-//! `serde_json`, and not on `resvg`. The `exact-bezier` binary is the
-//! workspace's `cli` crate (`cargo install --path cli`).
+//! JSON format ([`io`]) without the `serde` impls; it depends on `resvg`
+//! only with `render`. The command-line tool `exact-bezier` is another
+//! crate of the repository's workspace (`exact-bezier-cli`, in `cli/`),
+//! which turns `render` on.
 //!
 //! ## Sources
 //!
 //! The algorithms come from five documents, which the docs cite as
-//! "source 000" to "source 004". The README's bibliography lists them in
-//! full. Every claim the sources make is checked in `proofs/`
-//! (`exact-bezier prove`).
+//! "source 000" to "source 004" (the README's references give them in full,
+//! with their Chinese titles):
+//!
+//! - **000**: Yang Yi-Jun, Yong Jun-Hai, Zhang Hui, Sun Jia-Guang,
+//!   *Standardization of rational Bézier surfaces*, Journal of
+//!   Computer-Aided Design & Computer Graphics, 2007.
+//! - **001**: Hu Shi-Min, *Bézier curves and surfaces*, lecture slides of
+//!   the course Fundamentals of Computer Graphics, Tsinghua University
+//!   (undated).
+//! - **002**: Sun Mingcan, Shi Jing, *Smooth stitching of bicubic Bézier
+//!   triangular surface with shape parameters*, Journal of Yanbian
+//!   University (Natural Science Edition), 2023.
+//! - **003**: Zhang Ming-li, Chen Xiao-qun, Feng Yu-yu, *Conversion between
+//!   rational rectangular and rational triangular Bézier patches by
+//!   Blossoming method*, University of Science and Technology of China
+//!   (our copy prints neither journal nor year).
+//! - **004**: Hang Houjun, Li Wanggen, *Investigation of inner properties
+//!   of the standard-form cubic rational Bézier representation of circular
+//!   arcs*, Journal of Image and Graphics, 2011, 16(12).
+//!
+//! Every claim the sources make is checked by the workspace's proofs crate
+//! (`proofs/`, run by `exact-bezier prove`).
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
@@ -108,7 +128,6 @@ pub mod algebra;
 pub mod arc;
 pub mod audit;
 pub mod bernstein;
-pub mod blossom;
 pub mod coincide;
 pub mod convert;
 pub mod coords;
@@ -137,12 +156,27 @@ pub mod strategy;
 pub mod tri;
 pub mod trig;
 
+// After `tri`: rustdoc lists a type's inherent impl blocks in module order,
+// and `blossom` adds one to `TriPatch` that should follow its construction
+// and evaluation.
+pub mod blossom;
+
 pub use algebra::{ratio, Field, Ordered, Poly, Ring, Roots, Scalar, Tolerance};
 pub use curve::RationalCurve;
 pub use error::{Error, MAX_DEGREE};
 pub use patch::Patch;
 pub use rect::RectPatch;
 pub use tri::TriPatch;
+
+/// Arbitrary-precision integers (`num-bigint`): the numerator and
+/// denominator of a [`BigRational`], and the operands of
+/// [`algebra::gcd`]. Re-exported for the same reason as [`BigRational`].
+pub use num_bigint::{BigInt, BigUint};
+/// Exact rational numbers (`num-rational`'s `BigRational`), the scalar of
+/// exact answers. Re-exported so that code using this crate names it as
+/// `exact_bezier::BigRational` (or through the [`prelude`]) and needs no
+/// dependency of its own on `num-rational`.
+pub use num_rational::BigRational;
 
 /// The README's Rust examples, run as doctests.
 #[cfg(doctest)]

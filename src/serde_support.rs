@@ -9,12 +9,13 @@
 //! value. `f64` patches are written as JSON numbers.
 //!
 //! ```
-//! use exact_bezier::{ratio, RationalCurve};
-//! use num_rational::BigRational;
+//! use exact_bezier::io::patch_to_json;
+//! use exact_bezier::{ratio, BigRational, Patch, RationalCurve};
 //! let c: RationalCurve<BigRational> =
 //!     r#"{"kind": "curve", "points": [[0, 0], [1, 2], [2, 0]], "weights": [1, "1/3", 1]}"#.parse().unwrap();
 //! assert_eq!(c.weights()[1], ratio(1, 3));
-//! let text = serde_json::to_string(&c).unwrap();
+//! // The text that `serde` writes too (e.g. `serde_json::to_string(&c)`).
+//! let text = patch_to_json(&Patch::Curve(c.clone())).unwrap().to_string();
 //! assert_eq!(text, r#"{"kind":"curve","degree":2,"points":[[0,0],[1,2],[2,0]],"weights":[1,"1/3",1]}"#);
 //! assert_eq!(text.parse::<RationalCurve<BigRational>>().unwrap(), c);
 //! ```
@@ -171,6 +172,22 @@ mod tests {
     fn round_trip<X: Serialize + for<'de> Deserialize<'de> + PartialEq + std::fmt::Debug>(x: &X) {
         let text = serde_json::to_string(x).unwrap();
         assert_eq!(&serde_json::from_str::<X>(&text).unwrap(), x, "{text}");
+    }
+
+    /// The module example's text, written by `serde` (the example writes it
+    /// with `patch_to_json`, to need no JSON crate of its own).
+    #[test]
+    fn serde_writes_the_interchange_text() {
+        let c: RationalCurve<BigRational> =
+            r#"{"kind": "curve", "points": [[0, 0], [1, 2], [2, 0]], "weights": [1, "1/3", 1]}"#
+                .parse()
+                .unwrap();
+        let text = serde_json::to_string(&c).unwrap();
+        assert_eq!(
+            text,
+            r#"{"kind":"curve","degree":2,"points":[[0,0],[1,2],[2,0]],"weights":[1,"1/3",1]}"#
+        );
+        assert_eq!(text, patch_to_json(&Patch::Curve(c)).unwrap().to_string());
     }
 
     #[test]

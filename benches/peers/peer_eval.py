@@ -5,7 +5,10 @@ same random inputs, interleaved over several rounds.
 Run through `benches/peers/run` (it makes the virtual environment and
 builds our side). Alone:
 
-    python peer_eval.py --ours target/release/examples/peer_eval [--rounds 3]
+    python peer_eval.py --ours BINARY [--rounds 3]
+
+where BINARY is the executable that `cargo bench --bench peer_eval --no-run`
+names (target/release/deps/peer_eval-…).
 
 Cases (per point, so batch sizes differ between cases):
 
@@ -210,7 +213,7 @@ PEERS = {
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--ours", required=True, help="path of the peer_eval example binary")
+    ap.add_argument("--ours", required=True, help="path of the peer_eval bench binary")
     ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--seed", type=int, default=12)

@@ -5,7 +5,10 @@ planar polynomial pairs of degrees 1 to 5, in one run.
 Run through `benches/peers/intersect` (it makes the virtual environment and
 builds our side). Alone:
 
-    python peer_intersect.py --ours target/release/examples/peer_intersect [--pairs 200]
+    python peer_intersect.py --ours BINARY [--pairs 200]
+
+where BINARY is the executable that `cargo bench --bench peer_intersect --no-run`
+names (target/release/deps/peer_intersect-…).
 
 Control points are decimals k/100 in [0, 1] (exact as text), so most pairs
 cross. Agreement: every (s, t) the peer reports is within 1e-9 of one of

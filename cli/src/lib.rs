@@ -1,6 +1,6 @@
-//! The command line (DESIGN §5): subcommands read the JSON interchange
-//! format (a path, or `-` for standard input) and write JSON to standard
-//! output. Exit codes: 0 success, 1 a `prove` claim off its expected
+//! The command line (README, "A short tour"): subcommands read the JSON
+//! interchange format (a path, or `-` for standard input) and write JSON to
+//! standard output. Exit codes: 0 success, 1 a `prove` claim off its expected
 //! verdict, 2 bad input or a limit (one line on standard error, argument
 //! errors included), 3 a result written but outside the valid domain (e.g.
 //! `reduce` giving a non-positive weight; the output says which). Never a

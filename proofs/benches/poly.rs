@@ -6,7 +6,7 @@
 //!
 //! - `mobius identity/m=…`: the library's own algorithms (`mobius_u`,
 //!   `mobius_v`, then de Casteljau by `eval_hom` and
-//!   `eval_hom_projective`), as in `proofs/yang_yong.rs`;
+//!   `eval_hom_projective`), as in `proofs/src/yang_yong.rs`;
 //! - `mobius identity, Bernstein sums/m=…`: both sides written as the
 //!   defining double Bernstein sums and expanded.
 //!

@@ -25,10 +25,16 @@ use num_traits::{One, Zero};
 ///
 /// ```
 /// use exact_bezier::algebra::gcd::gcd;
-/// use num_bigint::BigUint;
+/// use exact_bezier::BigUint;
 /// let a: BigUint = "123456789012345678901234567890123456789012345678901234567890".parse().unwrap();
 /// let b: BigUint = "987654321098765432109876543210987654321098765432109876543210".parse().unwrap();
-/// assert_eq!(gcd(&a, &b), num_integer::Integer::gcd(&a, &b));
+/// // Euclid's algorithm, one remainder at a time, gives the same answer.
+/// let (mut x, mut y) = (a.clone(), b.clone());
+/// while y != BigUint::from(0u32) {
+///     let r = &x % &y;
+///     (x, y) = (y, r);
+/// }
+/// assert_eq!(gcd(&a, &b), x);
 /// ```
 pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
     let (mut a, mut b) = (a.to_u64_digits(), b.to_u64_digits());
@@ -177,7 +183,7 @@ pub(crate) fn gcd_u128(x: u128, y: u128) -> u128 {
 ///
 /// ```
 /// use exact_bezier::algebra::gcd::lcm;
-/// use num_bigint::BigInt;
+/// use exact_bezier::BigInt;
 /// assert_eq!(lcm(&BigInt::from(600), &BigInt::from(678)), BigInt::from(67800));
 /// ```
 pub fn lcm(a: &BigInt, b: &BigInt) -> BigInt {
@@ -196,7 +202,7 @@ pub fn lcm(a: &BigInt, b: &BigInt) -> BigInt {
 ///
 /// ```
 /// use exact_bezier::algebra::gcd::fraction;
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// assert_eq!(fraction(6.into(), (-4).into()), BigRational::new((-3).into(), 2.into()));
 /// ```
 pub fn fraction(numer: BigInt, denom: BigInt) -> BigRational {

@@ -17,7 +17,7 @@ use std::ops::{Add, Mul, Neg, Sub};
 /// ```
 /// use exact_bezier::algebra::Int;
 /// let big = Int::from(i128::MAX) + &Int::from(1);
-/// assert_eq!(big.to_bigint(), num_bigint::BigInt::from(i128::MAX) + 1);
+/// assert_eq!(big.to_bigint(), exact_bezier::BigInt::from(i128::MAX) + 1);
 /// assert_eq!(big - &Int::from(1), Int::from(i128::MAX)); // back to i128
 /// ```
 #[derive(Debug)]

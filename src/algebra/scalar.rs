@@ -13,7 +13,7 @@
 //! that ring operations suffice; division happens only where a Cartesian answer
 //! is asked for, and is then bounded by [`Field`].
 //!
-//! Reference: DESIGN.md §2; the split follows CGAL's RingNumberType /
+//! Reference: the split follows CGAL's RingNumberType /
 //! FieldNumberType and num-traits' `NumOps` / `NumRef`.
 
 use num_bigint::BigInt;
@@ -341,7 +341,7 @@ pub fn binomial(n: usize, k: usize) -> BigInt {
 ///
 /// ```
 /// use exact_bezier::{algebra::binomial_scalar, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// assert_eq!(binomial_scalar::<BigRational>(6, 3), ratio(20, 1));
 /// assert_eq!(binomial_scalar::<f64>(70, 35), 112186277816662845432.0);
 /// ```
@@ -370,7 +370,7 @@ pub fn recip_int<T: Scalar>(k: &BigInt) -> T {
 ///
 /// ```
 /// use exact_bezier::ratio;
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let third: BigRational = ratio(1, 3);
 /// assert_eq!(third * BigRational::from_integer(3.into()), BigRational::from_integer(1.into()));
 /// ```
@@ -389,7 +389,7 @@ pub fn ratio<T: Scalar>(p: i64, q: i64) -> T {
 ///
 /// ```
 /// use exact_bezier::{ratio, Roots};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// assert_eq!(ratio::<BigRational>(-8, 27).nth_root(3), Some(ratio(-2, 3)));
 /// assert_eq!(ratio::<BigRational>(2, 1).nth_root(2), None);
 /// assert_eq!(ratio::<BigRational>(-4, 1).nth_root(2), None);

@@ -146,7 +146,7 @@ fn subresultant_rows<T: Field>(f: &[T], g: &[T], j: usize) -> Vec<Vec<T>> {
 ///
 /// ```
 /// use exact_bezier::{algebra::resultant, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let q = |v: i64| ratio::<BigRational>(v, 1);
 /// // Res(x − 2, x² − 4) = (2)² − 4 = 0; Res(x − 1, x² − 4) = 1 − 4 = −3.
 /// assert_eq!(resultant(&[q(-2), q(1)], &[q(-4), q(0), q(1)]), q(0));
@@ -168,7 +168,7 @@ pub(crate) fn rational_resultant(f: &[BigRational], g: &[BigRational]) -> BigRat
 ///
 /// ```
 /// use exact_bezier::{algebra::linear_eliminant, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let q = |v: i64| ratio::<BigRational>(v, 1);
 /// // (x − 1)(x − 2) and (x − 1)(x + 3) share x = 1: S_1 ∝ x − 1.
 /// let (a, b) = linear_eliminant(&[q(2), q(-3), q(1)], &[q(-3), q(2), q(1)]);

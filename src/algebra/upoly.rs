@@ -25,7 +25,7 @@ use num_rational::BigRational;
 ///
 /// ```
 /// use exact_bezier::{algebra::UPoly, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let c = |v: &[i64]| UPoly::new(v.iter().map(|&x| ratio::<BigRational>(x, 1)).collect());
 /// // (x − 1)(x + 2) and (x − 1)(x − 3) have gcd x − 1.
 /// let a = c(&[-2, 1, 1]);
@@ -183,7 +183,7 @@ impl<T: Field> UPoly<T> {
 ///
 /// ```
 /// use exact_bezier::{algebra::BPoly, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let q = |x: i64| ratio::<BigRational>(x, 1);
 /// // grid[p][q] is the coefficient of u^p v^q.
 /// // (1 + uv)(u − v) = u − v + u²v − uv²  and  (1 + uv)(2 + u) = 2 + u + 2uv + u²v.

@@ -23,7 +23,7 @@ use std::ops::{Add, Mul, Neg, Sub};
 /// ```
 /// use exact_bezier::algebra::Wide;
 /// let big = Wide::from(i128::MAX) * &Wide::from(4);
-/// assert_eq!(big.to_bigint(), num_bigint::BigInt::from(i128::MAX) * 4);
+/// assert_eq!(big.to_bigint(), exact_bezier::BigInt::from(i128::MAX) * 4);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Wide(I256);

@@ -26,7 +26,7 @@ impl<T: Roots> QuadArc<T> {
     ///
     /// ```
     /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// // Source 004 §4: the semicircle on (0,0), (2,0) and its top point (1, 1).
     /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
@@ -98,7 +98,7 @@ impl<T: Roots> QuadArc<T> {
     ///
     /// ```
     /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
     /// // (1, 1) at ū = 1/3: σ = 2, λ* = 1 − 8 = −7 (eq. 8).
@@ -125,7 +125,7 @@ impl<T: Roots> QuadArc<T> {
     ///
     /// ```
     /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
     /// assert_eq!(arc.param_of_point(&p(1, 1), &ratio(-7, 1)).unwrap(), ratio(1, 3));
@@ -164,7 +164,7 @@ fn check_open_unit<T: Ordered>(u: &T) -> Result<(), Error> {
 ///
 /// ```
 /// use exact_bezier::{arc::lambda_change_delta, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let c = ratio::<BigRational>(0, 1);
 /// assert_eq!(lambda_change_delta(&c, &ratio(-7, 1), &ratio(0, 1)).unwrap(), ratio(2, 1));
 /// ```
@@ -194,7 +194,7 @@ pub fn lambda_change_delta<T: Roots>(c: &T, lambda1: &T, lambda2: &T) -> Result<
 ///
 /// ```
 /// use exact_bezier::{arc::lambda_change_param, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// assert_eq!(lambda_change_param(&ratio::<BigRational>(2, 1), &ratio(1, 3)).unwrap(), ratio(1, 5));
 /// ```
 pub fn lambda_change_param<T: Field>(delta: &T, u_bar: &T) -> Result<T, Error> {

@@ -25,7 +25,7 @@
 //! ```
 //!
 //! so `ω₁ = kσ/(3N)`, `ω₂ = kE/(3Dσ)`, `b₁* = (D·b̄₀ + 2cN·b̄₁)/k`,
-//! `b₂* = (N·b̄₂ + 2cD·b̄₁)/(kE)` (eq. 1, checked in `proofs/hang_li.rs`).
+//! `b₂* = (N·b̄₂ + 2cD·b̄₁)/(kE)` (eq. 1, checked in `proofs/src/hang_li.rs`).
 //! λ is admissible (positive weights) iff `N, D, E > 0`.
 //!
 //! Exactness: [`Roots`] gives exact cube and square roots for
@@ -56,7 +56,7 @@ use crate::hpoint::HPoint;
 ///
 /// ```
 /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let b0 = vec![ratio::<BigRational>(1, 1), ratio(0, 1)];
 /// let b2 = vec![ratio(7, 25), ratio(24, 25)];
 /// let arc = QuadArc::from_ends(&b0, &b2, &ratio(4, 5), &ratio(3, 5), Tolerance::EXACT).unwrap();
@@ -276,7 +276,7 @@ impl<T: Scalar> QuadArc<T> {
     ///
     /// ```
     /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let arc = QuadArc::from_ends(&p(0, 0), &p(2, 0), &ratio(3, 5), &ratio(4, 5), Tolerance::EXACT).unwrap();
     /// let quad = arc.nonstandard_quadratic(&ratio(2, 1), &ratio(1, 1));
@@ -299,7 +299,7 @@ impl<T: Scalar> QuadArc<T> {
     ///
     /// ```
     /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
     /// let (two, one) = (ratio(2, 1), ratio(1, 1));
@@ -351,7 +351,7 @@ impl<T: Field> QuadArc<T> {
     ///
     /// ```
     /// use exact_bezier::{arc::QuadArc, ratio, Tolerance};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
     /// let cubic = arc.standard_cubic(&ratio(2, 1)).unwrap();
@@ -383,7 +383,7 @@ impl<T: Scalar> LambdaFactors<T> {
     ///
     /// ```
     /// use exact_bezier::{arc::LambdaFactors, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let f = LambdaFactors::new(&ratio::<BigRational>(1, 2), &ratio(1, 5));
     /// assert_eq!((f.n, f.d, f.e), (ratio(3, 5), ratio(7, 5), ratio(1, 1)));
     /// ```
@@ -402,7 +402,7 @@ impl<T: Scalar> LambdaFactors<T> {
 /// The admissible interval of λ for `c = cos(θ/2) ∈ (−1/2, 1)` (source 004
 /// eq. 1): `(−1/(2ck), 1/k)` for `c > 0` (0 < θ < π), `(−∞, 1/(1 − 4c²))`
 /// for `c ≤ 0` (π ≤ θ < 4π/3); `None` stands for −∞. It is exactly the set
-/// where `N, D, E > 0` (all weights positive; proved in `proofs/hang_li.rs`).
+/// where `N, D, E > 0` (all weights positive; proved in `proofs/src/hang_li.rs`).
 ///
 /// # Errors
 ///
@@ -410,7 +410,7 @@ impl<T: Scalar> LambdaFactors<T> {
 ///
 /// ```
 /// use exact_bezier::{arc::lambda_interval, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// assert_eq!(lambda_interval(&ratio::<BigRational>(1, 2)).unwrap(), (Some(ratio(-1, 2)), ratio(1, 2)));
 /// assert_eq!(lambda_interval(&ratio::<BigRational>(0, 1)).unwrap(), (None, ratio(1, 1)));
 /// ```
@@ -438,7 +438,7 @@ pub fn lambda_interval<T: Ordered>(c: &T) -> Result<(Option<T>, T), Error> {
 ///
 /// ```
 /// use exact_bezier::{arc::check_lambda, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let c = ratio::<BigRational>(1, 2); // θ = 2π/3: λ ∈ (−1/2, 1/2)
 /// assert!(check_lambda(&c, &ratio(2, 5)).is_ok());
 /// assert!(check_lambda(&c, &ratio(1, 2)).is_err());
@@ -468,7 +468,7 @@ pub fn check_lambda<T: Ordered>(c: &T, lambda: &T) -> Result<(), Error> {
 ///
 /// ```
 /// use exact_bezier::{arc::sigma_of_lambda, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// // θ = π: σ³ = 1 − λ.
 /// assert_eq!(sigma_of_lambda(&ratio::<BigRational>(0, 1), &ratio(-7, 1)).unwrap(), ratio(2, 1));
 /// assert!(sigma_of_lambda(&ratio::<BigRational>(0, 1), &ratio(1, 5)).is_err());
@@ -491,7 +491,7 @@ pub fn sigma_of_lambda<T: Roots>(c: &T, lambda: &T) -> Result<T, Error> {
 ///
 /// ```
 /// use exact_bezier::{arc::lambda_of_sigma_cubed, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// assert_eq!(lambda_of_sigma_cubed(&ratio::<BigRational>(1, 2), &ratio(3, 7)).unwrap(), ratio(1, 5));
 /// ```
 pub fn lambda_of_sigma_cubed<T: Field>(c: &T, m: &T) -> Result<T, Error> {
@@ -520,7 +520,7 @@ impl<T: Roots> QuadArc<T> {
     ///
     /// ```
     /// use exact_bezier::{algebra::RealAlgebraic, arc::QuadArc, ratio, Scalar, Tolerance};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let arc = QuadArc::semicircle(&p(0, 0), &p(2, 0), &p(0, 1), Tolerance::EXACT).unwrap();
     /// assert!(arc.cubic_for_lambda(&ratio(-7, 1)).is_ok());                // σ³ = 8

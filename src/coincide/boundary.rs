@@ -46,7 +46,7 @@ impl fmt::Display for Edge {
 ///
 /// ```
 /// use exact_bezier::{coincide::boundary_curve, coincide::Edge, RectPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let r = RectPatch::polynomial(vec![vec![p(0), p(1), p(2)], vec![p(3), p(4), p(5)]]).unwrap();
 /// assert_eq!(boundary_curve(&r, Edge::V1).points().unwrap(), vec![p(2), p(5)]);
@@ -68,7 +68,7 @@ pub fn boundary_curve<T: Scalar>(r: &RectPatch<T>, edge: Edge) -> RationalCurve<
 ///
 /// ```
 /// use exact_bezier::{coincide::shared_boundaries, coincide::Edge, RectPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let a = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 1)], vec![p(1, 0), p(1, 1)]]).unwrap();
 /// // b's edge u = 0 is a's edge u = 1, traversed backwards and elevated.

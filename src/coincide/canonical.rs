@@ -15,7 +15,7 @@
 //! `Ĥ` and `I` unchanged; so the set of candidate keys of b equals that of a
 //! (T ↦ T∘S permutes the symmetries) and so do their minima. Conversely equal
 //! keys mean equal points and invariants under some symmetries, which by the
-//! completeness of the invariants (`proofs/coincide.rs`) makes the patches
+//! completeness of the invariants (`proofs/src/coincide.rs`) makes the patches
 //! coincident.
 //!
 //! For positive weights the invariants are the weights normalized to
@@ -44,7 +44,7 @@ mod small;
 ///
 /// ```
 /// use exact_bezier::{coincide::canonical_key, Patch, RationalCurve, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let c = RationalCurve::new(vec![p(0, 0), p(1, 2), p(3, 0)], vec![ratio(1, 1), ratio(2, 1), ratio(5, 1)]).unwrap();
 /// let copy = c.mobius(&ratio(1, 3)).reverse().elevate(1).scale_weights(&ratio(7, 2));
@@ -239,7 +239,7 @@ impl CanonicalKey {
     ///
     /// ```
     /// use exact_bezier::{coincide::canonical_key, Patch, RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// let c = RationalCurve::new(vec![p(0), p(1)], vec![ratio(1, 1), ratio(1, 3)]).unwrap();
     /// assert_eq!(canonical_key(&Patch::Curve(c)).unwrap().text(), "eb1;curve;1,0;P=0,1;1,1;I=+:1;+:1");
@@ -293,7 +293,7 @@ fn text_head(curve: bool, (m, n): (usize, usize)) -> String {
 ///
 /// ```
 /// use exact_bezier::{coincide::canonical_key, coincide::canonical_text, Patch, RectPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let r = RectPatch::new(
 ///     vec![vec![p(0, 0), p(0, 1)], vec![p(1, 0), p(2, 3)]],
@@ -341,7 +341,7 @@ impl fmt::Display for KeyDigest {
 ///
 /// ```
 /// use exact_bezier::{coincide::key_digest, Patch, RationalCurve, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let c = RationalCurve::new(vec![p(0), p(1), p(3)], vec![ratio(1, 1), ratio(2, 1), ratio(1, 1)]).unwrap();
 /// let k = key_digest(&Patch::Curve(c.clone())).unwrap();
@@ -383,7 +383,7 @@ impl Hasher for DigestHasher {
 ///
 /// ```
 /// use exact_bezier::{coincide::Deduper, Patch, RationalCurve, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let a = RationalCurve::new(vec![p(0), p(1), p(3)], vec![ratio(1, 1), ratio(2, 1), ratio(1, 1)]).unwrap();
 /// let mut d = Deduper::default();
@@ -550,7 +550,7 @@ impl Classes {
 ///
 /// ```
 /// use exact_bezier::{coincide::dedup, Patch, RationalCurve, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let a = RationalCurve::new(vec![p(0), p(1), p(3)], vec![ratio(1, 1), ratio(2, 1), ratio(1, 1)]).unwrap();
 /// let b = a.reverse().mobius(&ratio(1, 4));

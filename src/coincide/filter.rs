@@ -14,11 +14,11 @@
 //!    reduction) under every symmetry;
 //! 2. if both nets are certified minimal modulo p (exact, cheap), control
 //!    points and weight invariants under every admissible symmetry;
-//! 3. otherwise, or when a symmetry survives, the exact [`coincide`].
+//! 3. otherwise, or when a symmetry survives, the exact [`coincide`](crate::coincide::coincide).
 //!
 //! Reference: the filtered-predicate design of CGAL (Brönnimann, Burnikel,
 //! Pion, "Interval arithmetic yields efficient dynamic filters for
-//! computational geometry", 2001); DESIGN §7.
+//! computational geometry", 2001).
 
 use crate::algebra::interval::Interval;
 use crate::coincide::minimal::{certified_minimal, Net};

@@ -19,7 +19,7 @@
 //! `b_i = Σ_{k≤i} C(i, k) / C(m', k) a_k`.
 //!
 //! Fast path: a certificate modulo the prime `p = 2⁶¹ − 1` (see
-//! [`Fp`](crate::algebra::Fp)) that the patch is already minimal, so that the exact
+//! [`Fp`]) that the patch is already minimal, so that the exact
 //! bivariate gcd runs only when the certificate fails.
 //!
 //! Reference: source 000 §3 ("调整使得两个曲面同阶") asks for equal degrees
@@ -50,7 +50,7 @@ pub(crate) fn curve_net<T: Scalar>(c: &RationalCurve<T>) -> Net<T> {
 ///
 /// ```
 /// use exact_bezier::{coincide::bernstein_to_power, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// // Elevated constant: 1·B_{0,2} + 1·B_{1,2} + 1·B_{2,2} = 1.
 /// let one = ratio::<BigRational>(1, 1);
 /// let a = bernstein_to_power(&[one.clone(), one.clone(), one.clone()]);
@@ -78,7 +78,7 @@ pub fn bernstein_to_power<T: Scalar>(b: &[T]) -> Vec<T> {
 ///
 /// ```
 /// use exact_bezier::{coincide::power_to_bernstein, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// // t in degree 2: 0·B_0 + ½·B_1 + 1·B_2.
 /// let b = power_to_bernstein(&[ratio::<BigRational>(0, 1), ratio(1, 1)], 2);
 /// assert_eq!(b, vec![ratio(0, 1), ratio(1, 2), ratio(1, 1)]);
@@ -491,7 +491,7 @@ fn specialize_u(grid: &[Vec<Fp>], u0: Fp) -> UPoly<Fp> {
 ///
 /// ```
 /// use exact_bezier::{coincide::multiply_components, coincide::minimal_rect, RectPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let r = RectPatch::polynomial(vec![vec![p(0), p(1)], vec![p(2), p(5)]]).unwrap();
 /// // f = 1 + uv has Bernstein net [[1, 1], [1, 2]].
@@ -542,7 +542,7 @@ pub fn multiply_components<T: Scalar>(r: &RectPatch<T>, f: &[Vec<T>]) -> RectPat
 ///
 /// ```
 /// use exact_bezier::{coincide::minimal_rect, RectPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let s = RectPatch::new(
 ///     vec![vec![p(0, 0), p(0, 1)], vec![p(1, 0), p(2, 3)]],
@@ -579,7 +579,7 @@ pub fn minimal_rect<T: Reducible>(r: &RectPatch<T>) -> Result<Minimal<RectPatch<
 ///
 /// ```
 /// use exact_bezier::{coincide::minimal_curve, RationalCurve, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let c = RationalCurve::new(vec![p(0, 0), p(1, 2), p(3, 0)], vec![ratio(1, 1), ratio(2, 1), ratio(1, 1)]).unwrap();
 /// let r = minimal_curve(&c.mobius(&ratio(1, 4)).elevate(2)).unwrap();

@@ -14,7 +14,7 @@
 //! scaling act on the homogeneous control points by `H_{i,j} ↦ k ρ^i σ^j H_{i,j}`
 //! with `ρ = (1 − α)/α > 0`, `σ = (1 − β)/β > 0` (eq. 4 with `k` absorbing
 //! `α^m β^n`), so two reduced nets coincide iff their normalized points agree
-//! and their invariants and signs agree (proved in `proofs/coincide.rs`).
+//! and their invariants and signs agree (proved in `proofs/src/coincide.rs`).
 //! The witness is exact: `ρ = x_{1,0}` is rational whenever both nets have
 //! non-zero `H_{1,0}` (always, for positive weights), hence `α = 1/(1 + ρ)`
 //! is rational too; otherwise `ρ^a` is given.
@@ -109,7 +109,7 @@ impl Symmetry {
     ///
     /// ```
     /// use exact_bezier::{RectPatch, coincide::Symmetry, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// let r = RectPatch::polynomial(vec![vec![p(0), p(1)], vec![p(2), p(3)]]).unwrap();
     /// let s = Symmetry { swap: true, reverse_u: true, reverse_v: false };

@@ -18,7 +18,7 @@
 //! a, b > 0; a = b = 1 for positive weights, where
 //! `I_{i,j} = ω_{i,j} ω_{0,0}^{i+j−1} / (ω_{1,0}^i ω_{0,1}^j)`, the weights
 //! normalized to `ω_{0,0} = ω_{1,0} = ω_{0,1} = 1`) are invariant, and with
-//! the signs `sgn(s_{i,j} s_{0,0})` they are complete: see `proofs/coincide.rs`.
+//! the signs `sgn(s_{i,j} s_{0,0})` they are complete: see `proofs/src/coincide.rs`.
 
 use super::Symmetry;
 use crate::algebra::scalar::{Field, Ordered, Scalar};

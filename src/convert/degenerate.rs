@@ -27,7 +27,7 @@ use crate::tri::TriPatch;
 /// ```
 ///
 /// The lecture prints a `(k+1) × k` matrix with a spurious second row
-/// `(1, (n−k)/(n+1−k), 0, …)`; see `proofs/conversions.rs` (refuted).
+/// `(1, (n−k)/(n+1−k), 0, …)`; see `proofs/src/conversions.rs` (refuted).
 ///
 /// # Errors
 ///
@@ -37,7 +37,7 @@ use crate::tri::TriPatch;
 ///
 /// ```
 /// use exact_bezier::{convert::degree_raising_matrix, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let a = degree_raising_matrix::<BigRational>(2, 1).unwrap();
 /// let z: BigRational = ratio(0, 1);
 /// assert_eq!(a, vec![vec![ratio(1, 1), z.clone()], vec![ratio(1, 2), ratio(1, 2)], vec![z, ratio(1, 1)]]);
@@ -82,7 +82,7 @@ fn apply<T: Scalar>(a: &[Vec<T>], x: &[HPoint<T>]) -> Vec<HPoint<T>> {
 ///
 /// ```
 /// use exact_bezier::{convert::tri_to_degenerate_rect, TriPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let t = TriPatch::polynomial(vec![vec![p(0, 0), p(1, 0)], vec![p(0, 1)]]).unwrap();
 /// let r = tri_to_degenerate_rect(&t);

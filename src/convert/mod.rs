@@ -12,7 +12,7 @@
 //!
 //! Parameter maps (each conversion is exact: the new patch at the mapped
 //! parameters equals the old one homogeneously, proved in
-//! `proofs/conversions.rs`):
+//! `proofs/src/conversions.rs`):
 //!
 //! ```text
 //! rect → tri on Δ1:   tri(u, v, w) = rect(u, v)

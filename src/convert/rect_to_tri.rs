@@ -36,13 +36,13 @@ impl Half {
 ///
 /// on Δ1, and the same with `P̂_{m−i,n−j}` on Δ2 (eq. 16). Homogeneous
 /// points, so rational patches convert exactly; see [`Half`] for the
-/// parameter maps (proved in `proofs/conversions.rs` for m, n ≤ 5).
+/// parameter maps (proved in `proofs/src/conversions.rs` for m, n ≤ 5).
 ///
 /// # Examples
 ///
 /// ```
 /// use exact_bezier::{convert::rect_to_tri, convert::Half, RectPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let r = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 1)], vec![p(1, 0), p(1, 1)]]).unwrap();
 /// let t = rect_to_tri(&r, Half::Upper);

@@ -103,7 +103,7 @@ impl<T: Ordered> Split<T> {
     ///
     /// ```
     /// use exact_bezier::{convert::Split, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let ok = Split::<BigRational>::new([ratio(3, 10), ratio(1, 2), ratio(3, 10), ratio(1, 2), ratio(1, 2), ratio(1, 2)]);
     /// assert!(ok.is_ok());
     /// let bad = Split::<BigRational>::new([ratio(3, 10), ratio(1, 2), ratio(3, 10), ratio(1, 2), ratio(1, 2), ratio(1, 3)]);
@@ -198,7 +198,7 @@ fn k_range(n: usize, i: usize, j: usize) -> std::ops::RangeInclusive<usize> {
 ///
 /// ```
 /// use exact_bezier::{convert::bilinear, convert::tri_to_rect_on_quad, convert::Split, TriPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let t = TriPatch::polynomial(vec![vec![p(0, 0), p(1, 0)], vec![p(0, 1)]]).unwrap();
 /// let q = Split::standard().quad(0).unwrap();
@@ -270,7 +270,7 @@ fn quad_blossoms<T: Scalar>(tri: &TriPatch<T>, corners: &[Bary<T>; 4]) -> Vec<Ve
 ///
 /// ```
 /// use exact_bezier::{convert::tri_to_rects, convert::Split, TriPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let t = TriPatch::polynomial(vec![vec![p(0, 0), p(1, 0)], vec![p(0, 1)]]).unwrap();
 /// let [d1, _, _] = tri_to_rects(&t, &Split::standard());
@@ -294,7 +294,7 @@ pub fn tri_to_rects<T: Scalar>(tri: &TriPatch<T>, split: &Split<T>) -> [RectPatc
 ///
 /// with the binomial convention `C(m, l) = 0` for `l < 0` or `l > m`. The
 /// operator polynomials are expanded by [`ShiftOp`]; shown equal to
-/// [`tri_to_rects`] in `proofs/conversions.rs`.
+/// [`tri_to_rects`] in `proofs/src/conversions.rs`.
 pub fn tri_to_rects_operators<T: Scalar>(tri: &TriPatch<T>, split: &Split<T>) -> [RectPatch<T>; 3] {
     let [p1, p2, p3, p4, p5] = split.points().map(|p| ShiftOp::linear(&p));
     let e1 = ShiftOp::linear(&[T::one(), T::zero(), T::zero()]);
@@ -350,7 +350,7 @@ fn operator_rect<T: Scalar>(
 ///
 /// Both sums run over their full printed ranges; the pair `(k, l)` is kept
 /// only when `k + l = j`. Homogeneous points make it rational. Shown equal
-/// to piece D1 of [`tri_to_rects`] in `proofs/conversions.rs`.
+/// to piece D1 of [`tri_to_rects`] in `proofs/src/conversions.rs`.
 pub fn tri_to_rect_hu<T: Scalar>(tri: &TriPatch<T>, split: &Split<T>) -> RectPatch<T> {
     let n = tri.degree();
     let [_, p2, p3, p4, _] = split.points().map(|p| ShiftOp::linear(&p));

@@ -18,8 +18,8 @@
 //!
 //! — linear in `α, β, K`. Its `2n + 1` coefficients (on the basis
 //! `tⁱ(1 − t)^{2n−i}`) give an overdetermined linear system over the scalar,
-//! solved exactly for exact scalars. Reference: DESIGN §3 (source 004 arcs);
-//! the method is ours.
+//! solved exactly for exact scalars. Reference: source 004 (circular arcs as
+//! rational cubics); the method is ours.
 
 use crate::algebra::scalar::{binomial_scalar, Field, Scalar, Tolerance};
 use crate::curve::RationalCurve;
@@ -88,7 +88,7 @@ impl fmt::Display for NotCircle {
 ///
 /// ```
 /// use exact_bezier::{curve::circle_of, ratio, RationalCurve, Tolerance};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// // The quarter circle (1,0), (1,1), (0,1) needs weight √2/2; the
 /// // semicircle with its direction at infinity is rational:
@@ -181,7 +181,7 @@ pub fn circle_of<T: Field>(
 ///
 /// ```
 /// use exact_bezier::{curve::integer_coords, ratio, RationalCurve};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let c = RationalCurve::new(vec![vec![ratio::<BigRational>(1, 2)], vec![ratio(1, 3)]], vec![ratio(1, 1), ratio(3, 4)]).unwrap();
 /// let i = integer_coords(&c);
 /// assert_eq!(i.ctrl()[1].coords, vec![ratio(1, 1), ratio(3, 1)]);

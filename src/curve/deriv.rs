@@ -30,7 +30,7 @@ use num_bigint::BigInt;
 ///
 /// ```
 /// use exact_bezier::{curve::forward_differences, hpoint::HPoint, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let c: Vec<HPoint<BigRational>> =
 ///     [0, 1, 4, 9].iter().map(|&x| HPoint::from_cartesian(&[ratio(x, 1)])).collect();
 /// // Second differences of squares are 2; the weights (all 1) difference to 0.
@@ -77,7 +77,7 @@ impl<T: Scalar> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let c = RationalCurve::polynomial(vec![p(0, 0), p(1, 2), p(3, 2), p(4, 0)]).unwrap();
     /// // P'(0) = n (P1 − P0) = 3·(1, 2).
@@ -121,13 +121,13 @@ impl<T: Scalar> RationalCurve<T> {
     /// entry `j` is `X⁽ʲ⁾(t)`.
     ///
     /// Reference: ours (quotient rule in homogeneous form); proved in
-    /// `proofs/curves.rs`.
+    /// `proofs/src/curves.rs`.
     ///
     /// # Examples
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// // x(t) = t/(1 + t) (weights 1, 2; points 0, 1/2): x' = 1/(1 + t)².
     /// let c = RationalCurve::new(vec![vec![ratio::<BigRational>(0, 1)], vec![ratio(1, 2)]],
     ///                            vec![ratio(1, 1), ratio(2, 1)]).unwrap();
@@ -178,7 +178,7 @@ impl<T: Field> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// // The quarter circle (1,0),(1,1),(0,1) with weights 1, 1, 2:
     /// // X(t) = ((1 − t²), 2t)/(1 + t²); X'(0) = (0, 2), X''(0) = (−4, 0).
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];

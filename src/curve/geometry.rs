@@ -28,7 +28,7 @@ fn dot<T: Scalar>(a: &[T], b: &[T]) -> T {
 ///
 /// ```
 /// use exact_bezier::{curve::cross_norm_sq, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let a = [ratio::<BigRational>(1, 1), ratio(0, 1), ratio(0, 1)];
 /// let b = [ratio::<BigRational>(1, 1), ratio(2, 1), ratio(0, 1)];
 /// assert_eq!(cross_norm_sq(&a, &b), ratio(4, 1)); // a × b = (0, 0, 2)
@@ -97,7 +97,7 @@ impl<T: Scalar> RationalCurve<T> {
     /// degree < 2 has κ = 0 (`(0, 1)`).
     ///
     /// Reference: source 001 (lecture), "二阶导数" (k(0), k(1)); the rational
-    /// factor is ours. Both proved in `proofs/curves.rs`.
+    /// factor is ours. Both proved in `proofs/src/curves.rs`.
     pub fn end_curvature_sq_frac(&self, end: CurveEnd) -> (T, T) {
         let n = self.degree();
         if n < 2 {
@@ -134,7 +134,7 @@ impl<T: Scalar> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let q = |x: i64| ratio::<BigRational>(x, 1);
     /// let c = RationalCurve::new(vec![vec![q(0), q(0)], vec![q(1), q(0)]], vec![q(1), q(3)]).unwrap();
     /// let rot = vec![vec![q(0), q(-1)], vec![q(1), q(0)]]; // a quarter turn
@@ -178,7 +178,7 @@ impl<T: Scalar> RationalCurve<T> {
     /// and by [`RationalCurve::scale_weights`]; two curves with the same
     /// control points are Möbius-equivalent iff their invariants agree.
     ///
-    /// Reference: ours, from source 000 eq. (4); proved in `proofs/curves.rs`.
+    /// Reference: ours, from source 000 eq. (4); proved in `proofs/src/curves.rs`.
     pub fn mobius_invariants_frac(&self) -> Vec<(T, T)> {
         let w = self.weights();
         let n = self.degree();
@@ -201,7 +201,7 @@ impl<T: Scalar> RationalCurve<T> {
     ///
     /// (for a quadratic, `J_1 = w_0 w_2 / w_1²` decides the conic type).
     ///
-    /// Reference: ours, from source 000 eq. (4); proved in `proofs/curves.rs`.
+    /// Reference: ours, from source 000 eq. (4); proved in `proofs/src/curves.rs`.
     pub fn local_invariants_frac(&self) -> Vec<(T, T)> {
         let w = self.weights();
         (1..self.degree())
@@ -238,7 +238,7 @@ impl<T: Field> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// // The unit quarter circle has κ = 1 everywhere.
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let c = RationalCurve::new(vec![p(1, 0), p(1, 1), p(0, 1)], vec![ratio(1, 1), ratio(1, 1), ratio(2, 1)]).unwrap();
@@ -264,7 +264,7 @@ impl<T: Field> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{curve::CurveEnd, RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let c = RationalCurve::polynomial(vec![p(0, 0), p(1, 0), p(1, 1)]).unwrap();
     /// // k(0) = (1/2)·|(1,0) × (0,1)| / 1 = 1/2, so κ² = 1/4.
@@ -285,7 +285,7 @@ impl<T: Field> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// let c = RationalCurve::new(vec![p(0), p(1), p(2)], vec![ratio(1, 1), ratio(2, 1), ratio(4, 1)]).unwrap();
     /// assert_eq!(c.mobius_invariants().unwrap(), vec![ratio(1, 1)]);
@@ -303,7 +303,7 @@ impl<T: Field> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// let w = vec![ratio(1, 1), ratio(2, 1), ratio(3, 1), ratio(1, 1)];
     /// let c = RationalCurve::new(vec![p(0), p(1), p(2), p(3)], w).unwrap();
@@ -344,7 +344,7 @@ impl<T: Ordered> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{curve::ConicType, RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let pts = vec![p(1, 0), p(1, 1), p(0, 1)];
     /// let w = |a, b, c| vec![ratio(a, 1), ratio(b, 1), ratio(c, 1)];

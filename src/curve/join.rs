@@ -15,7 +15,7 @@
 //! The lecture's control-point form of G¹ has the wrong sign; the G² formula
 //! holds as printed only when `m = n`. [`g2_leading_points`] is the corrected
 //! general form. Reference: source 001 (lecture), "Gⁿ 几何连续性"; checked in
-//! `proofs/lecture_joins.rs`.
+//! `proofs/src/lecture_joins.rs`.
 
 use crate::algebra::scalar::{ratio, Ordered, Scalar, Tolerance};
 use crate::curve::RationalCurve;
@@ -66,7 +66,7 @@ fn is_zero_vec<T: Scalar>(v: &[T], tol: Tolerance) -> bool {
 /// with the reason.
 ///
 /// Reference: source 001 (lecture), "Gⁿ 几何连续性", with the corrected sign
-/// of G¹ (see `proofs/lecture_joins.rs`).
+/// of G¹ (see `proofs/src/lecture_joins.rs`).
 ///
 /// # Errors
 ///
@@ -77,7 +77,7 @@ fn is_zero_vec<T: Scalar>(v: &[T], tol: Tolerance) -> bool {
 ///
 /// ```
 /// use exact_bezier::{curve::join, RationalCurve, Tolerance, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let a = RationalCurve::polynomial(vec![p(0, 0), p(1, 1), p(2, 1)]).unwrap();
 /// // P'(1) = 2·(1, 0) and Q'(0) = 3·(2, 0) = 3 P'(1): G¹ with α = 3.
@@ -157,7 +157,7 @@ pub fn join<T: Ordered>(
 /// Ring operations only (runs on symbols).
 ///
 /// Reference: source 001 (lecture), "Gⁿ 几何连续性", generalized to `m ≠ n`;
-/// proved in `proofs/lecture_joins.rs`.
+/// proved in `proofs/src/lecture_joins.rs`.
 ///
 /// # Errors
 ///
@@ -167,7 +167,7 @@ pub fn join<T: Ordered>(
 ///
 /// ```
 /// use exact_bezier::{curve::g2_leading_points, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// // n = m = 2, α = 1, β = 0: x(t) = t² continues as (1 + t)² (C²).
 /// let q = g2_leading_points(&[p(0), p(0), p(1)], 2, &ratio(1, 1), &ratio(0, 1)).unwrap();

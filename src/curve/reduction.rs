@@ -15,7 +15,7 @@
 //!
 //! and both recursions return `c*` exactly; on other curves they differ and
 //! the schemes blend them. The recursions and schemes are as printed in the
-//! lecture (checked in `proofs/reduction.rs`).
+//! lecture (checked in `proofs/src/reduction.rs`).
 //!
 //! Reference: source 001 (lecture), "降阶".
 
@@ -59,7 +59,7 @@ impl<T: Scalar> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// let c = RationalCurve::polynomial(vec![p(0), p(3), p(6)]).unwrap().elevate(1);
     /// let back = c.reduce_forward().unwrap();
@@ -115,7 +115,7 @@ impl<T: Scalar> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, curve::Reduction, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let c = RationalCurve::polynomial(vec![p(0, 0), p(1, 3), p(4, 3), p(5, 0)]).unwrap();
     /// for s in [Reduction::Forrest, Reduction::Farin, Reduction::LeastSquares] {
@@ -169,7 +169,7 @@ impl<T: Scalar> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// // 0, 1, 2 lie on a line (degree 1): D = 0 − 2·1 + 2 = 0.
     /// let line = RationalCurve::polynomial(vec![p(0), p(1), p(2)]).unwrap();
@@ -195,7 +195,7 @@ impl<T: Scalar> RationalCurve<T> {
     /// applied to every homogeneous coordinate (for a polynomial curve the
     /// weights' `D` is 0, so only the points move: the lecture's problem).
     /// Exact over Q. Optimality (orthogonality to the constraint's null
-    /// space) is proved in `proofs/reduction.rs`.
+    /// space) is proved in `proofs/src/reduction.rs`.
     ///
     /// Reference: source 001 (lecture), "约束优化方法"; the closed form is ours.
     ///
@@ -207,7 +207,7 @@ impl<T: Scalar> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// // x: 0, 1, 0 has D = 0 − 2 + 0 = −2; C(4, 2) = 6; ε = (1/3, −2/3, 1/3).
     /// let c = RationalCurve::polynomial(vec![p(0), p(1), p(0)]).unwrap();
@@ -236,7 +236,7 @@ impl<T: Scalar> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, Tolerance, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let c = RationalCurve::polynomial(vec![p(0, 0), p(1, 3), p(5, 0)]).unwrap();
     /// assert_eq!(c.elevate(2).reduce_exact(Tolerance::EXACT).unwrap().reduce_exact(Tolerance::EXACT), Some(c.clone()));
@@ -254,7 +254,7 @@ impl<T: Scalar> RationalCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{RationalCurve, Tolerance, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// let seg = RationalCurve::polynomial(vec![p(2), p(5)]).unwrap();
     /// assert_eq!(seg.elevate(4).reduce_exact_fully(Tolerance::EXACT), seg);

@@ -46,7 +46,7 @@ pub struct Jet<T> {
 ///
 /// ```
 /// use exact_bezier::{eval::Jets, RectPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// // The bilinear patch X(u, v) = (u, v, u·v).
 /// let p = |x: i64, y: i64, z: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1), ratio(z, 1)];
 /// let r = RectPatch::polynomial(vec![vec![p(0, 0, 0), p(0, 1, 0)], vec![p(1, 0, 0), p(1, 1, 1)]]).unwrap();
@@ -68,7 +68,7 @@ impl<T: Scalar> Jets<T> {
     ///
     /// ```
     /// use exact_bezier::{eval::Jets, RationalCurve, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// // The parabola X(t) = (t, t²): X'(t) = (1, 2t), weight 1 (w' = 0).
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 2), ratio(y, 1)];
     /// let c = RationalCurve::polynomial(vec![p(0, 0), p(1, 0), p(2, 1)]).unwrap();

@@ -106,7 +106,7 @@ impl Shape {
 ///
 /// ```
 /// use exact_bezier::{eval::Net, RationalCurve, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let c = RationalCurve::polynomial(vec![p(10, 0), p(30, 60), p(130, 60), p(190, 0)]).unwrap();
 /// let net = Net::from_curve(&c);

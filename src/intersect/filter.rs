@@ -271,7 +271,7 @@ fn crossing(a: &PlanarBoxes, b: &PlanarBoxes, x: [Interval; 2]) -> Option<Certif
 ///
 /// ```
 /// use exact_bezier::{intersect::{intersect_filtered, Filtered}, RationalCurve, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let a = RationalCurve::polynomial(vec![p(0, 0), p(1, 2), p(2, 0)]).unwrap();
 /// let b = RationalCurve::polynomial(vec![p(0, 3), p(1, 5), p(2, 3)]).unwrap();
@@ -310,7 +310,7 @@ pub fn intersect_filtered(
 ///
 /// ```
 /// use exact_bezier::{intersect::certify_crossings, RationalCurve, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let a = RationalCurve::polynomial(vec![p(0, 0), p(1, 2), p(2, 0)]).unwrap();
 /// let touching = RationalCurve::polynomial(vec![p(0, 1), p(2, 1)]).unwrap(); // tangent at (1, 1)

@@ -241,7 +241,7 @@ fn strip_factor(p: &BPoly<BigRational>, d: &BPoly<BigRational>) -> BPoly<BigRati
 ///
 /// ```
 /// use exact_bezier::{intersect::intersect, RationalCurve, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let parabola = RationalCurve::polynomial(vec![p(-1, 1), p(0, -1), p(1, 1)]).unwrap();
 /// let line = RationalCurve::polynomial(vec![
@@ -423,7 +423,7 @@ fn finish(
 ///
 /// ```
 /// use exact_bezier::{intersect::{self_intersect, Contact}, RationalCurve, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let c = RationalCurve::polynomial(vec![p(0, 0), p(3, 3), p(-1, 3), p(2, 0)]).unwrap();
 /// let x = self_intersect(&c).unwrap();

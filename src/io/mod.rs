@@ -1,5 +1,5 @@
-//! JSON interchange (DESIGN §4): one object per curve or patch, or an array
-//! of them; every number read **exactly** from its text.
+//! JSON interchange (docs/FORMAT.md): one object per curve or patch, or an
+//! array of them; every number read **exactly** from its text.
 //!
 //! ```text
 //! {"kind": "curve", "degree": 3, "points": [[0,0],[1,2],[3,2],[4,0]], "weights": [1, "1/3", "1/3", 1]}

@@ -32,9 +32,10 @@ use serde_json::{json, Map, Value};
 /// back to an equal value.
 ///
 /// ```
+/// use exact_bezier::io::parse_json;
 /// use exact_bezier::io::{nurbs_to_json, read_nurbs};
-/// let v = serde_json::json!({"kind": "nurbs-curve", "degree": 1, "knots": [0, 0, "1/2", 1, 1],
-///                            "points": [[0, 0], [1, 2], [3, 0]], "weights": [1, "1/3", 1]});
+/// let v = parse_json(r#"{"kind": "nurbs-curve", "degree": 1, "knots": [0, 0, "1/2", 1, 1],
+///                      "points": [[0, 0], [1, 2], [3, 0]], "weights": [1, "1/3", 1]}"#).unwrap();
 /// let n = read_nurbs(&v).unwrap().remove(0);
 /// assert_eq!(read_nurbs(&nurbs_to_json(&n)).unwrap(), vec![n]);
 /// ```

@@ -11,7 +11,8 @@
 //! Any α is accepted (the basis is non-negative, so the convex-hull
 //! property holds, exactly for α ∈ [0, 2]).
 //!
-//! Reference: source 002 Definitions 2–3; DESIGN.md §4.
+//! Reference: source 002 Definitions 2–3; the format is that of
+//! docs/FORMAT.md (`trig-curve` and `trig-rect`).
 
 use crate::error::Error;
 use crate::io::{array, field_array, missing, number, parse_json, point_to_json, JsonScalar};

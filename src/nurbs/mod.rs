@@ -27,7 +27,7 @@
 //! and weights are any [`Scalar`] — `BigRational` for exact pieces, `f64`, or
 //! the symbolic [`Poly`](crate::Poly) (the coefficients enter through
 //! [`Scalar::from_rational`], so no division in the scalar is needed; see
-//! `proofs/nurbs.rs`). Everything is homogeneous: `(w_i P_i, w_i)`.
+//! `proofs/src/nurbs.rs`). Everything is homogeneous: `(w_i P_i, w_i)`.
 
 pub use spanned::{Nurbs, SpannedPatch};
 
@@ -259,7 +259,7 @@ enum Step<T> {
 ///
 /// ```
 /// use exact_bezier::{nurbs::NurbsCurve, nurbs::Knots, hpoint::HPoint, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let k = |x: i64| ratio::<BigRational>(x, 1);
 /// let pts: Vec<HPoint<BigRational>> = [0, 2, 4, 8, 16].iter().map(|&x| HPoint::from_cartesian(&[k(x)])).collect();
 /// let knots = Knots::new(2, (0..8).map(k).collect(), 5).unwrap();

@@ -36,7 +36,7 @@ use crate::rect::{RectPatch, Side};
 ///
 /// ```
 /// use exact_bezier::{RectPatch, rect::g0_join, ratio, Tolerance};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let a = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 1)], vec![p(1, 0), p(1, 1)]]).unwrap();
 /// let b = RectPatch::polynomial(vec![vec![p(1, 0), p(1, 1)], vec![p(2, 0), p(2, 1)]]).unwrap();
@@ -70,7 +70,7 @@ pub fn g0_join<T: Scalar>(p: &RectPatch<T>, q: &RectPatch<T>, tol: Tolerance) ->
 ///
 /// ```
 /// use exact_bezier::{RectPatch, rect::g1_join, ratio, Tolerance};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64, z: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1), ratio(z, 1)];
 /// let a = RectPatch::polynomial(vec![vec![p(0, 0, 0), p(0, 1, 0)], vec![p(1, 0, 0), p(1, 1, 0)]]).unwrap();
 /// let flat = RectPatch::polynomial(vec![vec![p(1, 0, 0), p(1, 1, 0)], vec![p(3, 0, 0), p(3, 1, 0)]]).unwrap();

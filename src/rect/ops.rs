@@ -26,7 +26,7 @@ impl<T: Scalar> RectPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{RectPatch, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// // H = (x(u, v), 1) with x = 4uv: the mixed derivative is 4 everywhere.
     /// let s = RectPatch::polynomial(vec![vec![p(0), p(0)], vec![p(0), p(4)]]).unwrap();
@@ -73,7 +73,7 @@ impl<T: Scalar> RectPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{RectPatch, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1), ratio(0, 1)];
     /// // The unit square in the plane z = 0: normal along +z.
     /// let s = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 1)], vec![p(1, 0), p(1, 1)]]).unwrap();
@@ -108,7 +108,7 @@ impl<T: Scalar> RectPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{RectPatch, rect::Corner, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// let s = RectPatch::polynomial(vec![vec![p(0); 4]; 3]).unwrap(); // (m, n) = (2, 3)
     /// assert_eq!(s.corner_triangle(Corner::Uv10), [(2, 0), (1, 0), (2, 1)]);
@@ -188,7 +188,7 @@ impl<T: Field> RectPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{RectPatch, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// // x(u, v) = u with weights 1 + u (linear in u): X = u exactly, X_u = 1, X_uu = 0.
     /// let s = RectPatch::new(vec![vec![p(0)], vec![p(1)]], vec![vec![ratio(1, 1)], vec![ratio(2, 1)]]).unwrap();
@@ -241,7 +241,7 @@ impl<T: Scalar> RectPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{RectPatch, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let s = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 2)], vec![p(2, 0), p(4, 4)]]).unwrap();
     /// let (left, _) = s.subdivide_u(&ratio(1, 2));
@@ -269,7 +269,7 @@ impl<T: Scalar> RectPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{RectPatch, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let s = RectPatch::polynomial(vec![vec![p(0, 0), p(0, 2)], vec![p(2, 0), p(4, 4)]]).unwrap();
     /// let sub = s.subpatch(&ratio(1, 4), &ratio(3, 4), &ratio(0, 1), &ratio(1, 2));

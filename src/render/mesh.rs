@@ -55,7 +55,7 @@ pub use crate::eval::Jet;
 ///
 /// ```
 /// use exact_bezier::{render::curve_jet, hpoint::HPoint, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// // H(t) = (t², 1) from the control points 0, 0, 1 (weights 1).
 /// let pts: Vec<HPoint<BigRational>> =
 ///     [0, 0, 1].iter().map(|&x| HPoint::from_cartesian(&[ratio(x, 1)])).collect();
@@ -90,7 +90,7 @@ pub fn curve_jet<T: Scalar>(points: &[HPoint<T>], t: &T) -> (HPoint<T>, HPoint<T
 ///
 /// ```
 /// use exact_bezier::{render::rect_jet, RectPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// // The bilinear patch X(u, v) = (u, v, u·v).
 /// let p = |x: i64, y: i64, z: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1), ratio(z, 1)];
 /// let r = RectPatch::polynomial(vec![vec![p(0, 0, 0), p(0, 1, 0)], vec![p(1, 0, 0), p(1, 1, 1)]]).unwrap();
@@ -110,7 +110,7 @@ pub fn rect_jet<T: Scalar>(patch: &RectPatch<T>, u: &T, v: &T) -> Jet<T> {
 ///
 /// ```
 /// use exact_bezier::{render::tri_jet, TriPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// // Quadratic tri patch with scalar values: X = u² (only P_{2,0,0} = 1).
 /// let c = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let t = TriPatch::polynomial(vec![vec![c(0), c(0), c(1)], vec![c(0), c(0)], vec![c(0)]]).unwrap();
@@ -135,7 +135,7 @@ pub fn tri_jet<T: Scalar>(patch: &TriPatch<T>, u: &T, v: &T) -> Jet<T> {
 ///
 /// ```
 /// use exact_bezier::{render::normal_direction, render::rect_jet, RectPatch, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64, z: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1), ratio(z, 1)];
 /// let r = RectPatch::polynomial(vec![vec![p(0, 0, 0), p(0, 1, 0)], vec![p(1, 0, 0), p(1, 1, 1)]]).unwrap();
 /// // X = (u, v, uv): X_u × X_v = (−v, −u, 1).

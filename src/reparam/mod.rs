@@ -77,7 +77,7 @@ pub struct Quadratic<T> {
 ///
 /// ```
 /// use exact_bezier::{reparam::bernstein_product, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// // t · t = t²: coefficients (0, 1) times (0, 1) is (0, 0, 1).
 /// let a: Vec<BigRational> = vec![ratio(0, 1), ratio(1, 1)];
 /// assert_eq!(bernstein_product(&a, &a), vec![ratio(0, 1), ratio(0, 1), ratio(1, 1)]);
@@ -140,7 +140,7 @@ impl<T: Scalar> RectPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{RectPatch, reparam::Quadratic, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let s = RectPatch::new(vec![vec![p(0, 0), p(0, 2)], vec![p(2, 0), p(4, 4)]],
     ///                        vec![vec![ratio(1, 1), ratio(2, 1)], vec![ratio(3, 1), ratio(1, 2)]]).unwrap();
@@ -214,7 +214,7 @@ impl<T: Scalar> RectPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{RectPatch, reparam::Quadratic, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let s = RectPatch::new(vec![vec![p(0, 0), p(0, 2)], vec![p(2, 0), p(4, 4)]],
     ///                        vec![vec![ratio(1, 1), ratio(2, 1)], vec![ratio(3, 1), ratio(1, 2)]]).unwrap();

@@ -8,7 +8,7 @@
 //! proofs family `yang_yong`.
 //!
 //! The formulas need m-th and n-th roots. Over Q they are exact when the
-//! roots are rational ([`rational_root`]); [`standardize_curve_algebraic`]
+//! roots are rational ([`rational_root`](crate::algebra::rational_root)); [`standardize_curve_algebraic`]
 //! and [`standardize_rect_algebraic`] run the same code on
 //! [`RealAlgebraic`] and are exact for every input. The older
 //! [`standardize_rect_exact_or_f64`] and [`standardize_curve_exact_or_f64`]
@@ -179,7 +179,7 @@ fn irrational<T: Ordered>(what: &str, n: usize, q: &T) -> Error {
 ///
 /// ```
 /// use exact_bezier::{RationalCurve, reparam::standardize_curve, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let c = RationalCurve::new(vec![p(0), p(1), p(3)], vec![ratio(4, 1), ratio(1, 1), ratio(1, 1)]).unwrap();
 /// let s = standardize_curve(&c).unwrap();
@@ -280,7 +280,7 @@ pub fn corner_weights<T: Scalar>(p: &RectPatch<T>) -> [T; 4] {
 ///
 /// ```
 /// use exact_bezier::{RectPatch, reparam::theorem1_holds, ratio, Tolerance};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let w = |a: i64, b: i64, c: i64, d: i64| vec![vec![ratio(a, 1), ratio(b, 1)], vec![ratio(c, 1), ratio(d, 1)]];
 /// let net = vec![vec![p(0), p(1)], vec![p(2), p(3)]];
@@ -361,7 +361,7 @@ fn mobius_unchecked<T: Roots>(p: &RectPatch<T>) -> Result<Standard<RectPatch<T>,
 ///
 /// ```
 /// use exact_bezier::{RectPatch, reparam::standardize_quadratic, reparam::corner_weights, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let w = vec![vec![ratio(1, 1), ratio(1, 1)], vec![ratio(4, 1), ratio(9, 1)]];
 /// let s = standardize_quadratic(&RectPatch::new(vec![vec![p(0), p(1)], vec![p(2), p(3)]], w).unwrap()).unwrap();
@@ -387,7 +387,7 @@ pub fn standardize_quadratic<T: Roots>(
 ///
 /// ```
 /// use exact_bezier::{RectPatch, reparam::standardize_quadratic, reparam::standardize_quadratic_compact, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let w = vec![vec![ratio(1, 1), ratio(1, 1)], vec![ratio(4, 1), ratio(9, 1)]];
 /// let patch = RectPatch::new(vec![vec![p(0), p(1)], vec![p(2), p(3)]], w).unwrap();
@@ -514,7 +514,7 @@ pub fn standardize_rect<T: Roots>(
 ///
 /// ```
 /// use exact_bezier::{RationalCurve, reparam::standardize_curve_algebraic, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let c = RationalCurve::new(vec![p(0), p(1), p(3)], vec![ratio(2, 1), ratio(1, 1), ratio(1, 1)]).unwrap();
 /// let s = standardize_curve_algebraic(&c).unwrap();

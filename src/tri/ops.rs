@@ -36,7 +36,7 @@ pub const SYMMETRIES: [[usize; 3]; 6] = [
 /// (0 when `i + j > n`).
 ///
 /// ```text
-/// Laws (proved in proofs/triangles.rs for n ≤ 6):
+/// Laws (proved in proofs/src/triangles.rs for n ≤ 6):
 ///   B^n_{ijk} ≥ 0 on the triangle,   Σ_{i+j+k=n} B^n_{ijk} = (u + v + w)ⁿ = 1,
 ///   B^n_{ijk} = u B^{n−1}_{i−1,j,k} + v B^{n−1}_{i,j−1,k} + w B^{n−1}_{i,j,k−1}
 /// ```
@@ -47,7 +47,7 @@ pub const SYMMETRIES: [[usize; 3]; 6] = [
 ///
 /// ```
 /// use exact_bezier::{tri::tri_bernstein, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let b = [ratio::<BigRational>(1, 2), ratio(1, 4), ratio(1, 4)];
 /// // 2!/(1! 1! 0!) · (1/2)(1/4) = 1/4
 /// assert_eq!(tri_bernstein(2, 1, 1, &b), ratio(1, 4));
@@ -77,7 +77,7 @@ pub(crate) fn vertex<T: Scalar>(index: usize) -> Bary<T> {
 ///
 /// ```
 /// use exact_bezier::{tri::affine_combination, ratio};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let v = |a: i64, b: i64, c: i64| [ratio::<BigRational>(a, 1), ratio(b, 1), ratio(c, 1)];
 /// let x = [ratio(1, 2), ratio(1, 2), ratio(0, 1)];
 /// assert_eq!(affine_combination(&x, &[v(1, 0, 0), v(0, 0, 1), v(0, 1, 0)]), [ratio(1, 2), ratio(0, 1), ratio(1, 2)]);
@@ -106,13 +106,13 @@ impl<T: Scalar> TriPatch<T> {
     /// on the homogeneous points.
     ///
     /// Reference: the triangular analogue of source 001 "升阶"; proved in
-    /// `proofs/triangles.rs`.
+    /// `proofs/src/triangles.rs`.
     ///
     /// # Examples
     ///
     /// ```
     /// use exact_bezier::{TriPatch, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
     /// let t = TriPatch::polynomial(vec![vec![p(0), p(3)], vec![p(6)]]).unwrap();
     /// let e = t.elevate();
@@ -149,7 +149,7 @@ impl<T: Scalar> TriPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{TriPatch, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let t = TriPatch::polynomial(vec![vec![p(0, 0), p(1, 0)], vec![p(0, 1)]]).unwrap();
     /// // swap u and v: the identity map becomes (u, v) ↦ (v, u)
@@ -182,13 +182,13 @@ impl<T: Scalar> TriPatch<T> {
     /// `(a u, b v, c w) / (a u + b v + c w)` (homogeneously: the same point
     /// without the division), the triangle analogue of the Möbius map
     /// (source 000 eq. 4). Positive `a, b, c` keep the weights positive and
-    /// map the triangle onto itself. Proved in `proofs/triangles.rs`.
+    /// map the triangle onto itself. Proved in `proofs/src/triangles.rs`.
     ///
     /// # Examples
     ///
     /// ```
     /// use exact_bezier::{TriPatch, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let t = TriPatch::polynomial(vec![vec![p(0, 0), p(1, 0)], vec![p(0, 1)]]).unwrap();
     /// let r = t.reparam(&ratio(2, 1), &ratio(1, 1), &ratio(1, 1));
@@ -229,7 +229,7 @@ impl<T: Scalar> TriPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{TriPatch, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let t = TriPatch::polynomial(vec![vec![p(0, 0), p(1, 0)], vec![p(0, 1)]]).unwrap();
     /// let h = ratio::<BigRational>(1, 2);
@@ -297,7 +297,7 @@ impl<T: Scalar> TriPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{TriPatch, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let t = TriPatch::polynomial(vec![vec![p(0, 0), p(1, 0)], vec![p(0, 1)]]).unwrap();
     /// let c = t.boundary(1).unwrap();
@@ -367,7 +367,7 @@ impl<T: Field> TriPatch<T> {
     ///
     /// ```
     /// use exact_bezier::{TriPatch, ratio};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let t = TriPatch::polynomial(vec![vec![p(0, 0), p(1, 0)], vec![p(0, 1)]]).unwrap();
     /// let du = [ratio(1, 1), ratio(0, 1), ratio(-1, 1)];

@@ -29,7 +29,7 @@ use crate::algebra::scalar::{Field, Scalar};
 ///
 /// ```
 /// use exact_bezier::{ratio, trig::TrigParam};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// // τ = tan(t/2) = 1/2: sin t = 4/5, cos t = 3/5, exactly.
 /// let p = TrigParam::from_tau(&ratio::<BigRational>(1, 2));
 /// assert_eq!((p.sin.clone(), p.cos.clone()), (ratio(4, 5), ratio(3, 5)));
@@ -69,7 +69,8 @@ impl<T: Field> TrigParam<T> {
     /// `sin t = 2τ/(1+τ²)`, `cos t = (1−τ²)/(1+τ²)`; `τ ∈ [0, 1]` gives
     /// `t ∈ [0, π/2]`.
     ///
-    /// Reference: the half-angle substitution (DESIGN.md §3).
+    /// Reference: the half-angle substitution, the rational parameterization
+    /// of the unit circle.
     pub fn from_tau(tau: &T) -> Self {
         let tt = tau.clone() * tau;
         let den = T::one() + &tt;
@@ -111,7 +112,7 @@ pub fn circle_normal_form(p: &Poly, s: &str, c: &str) -> Poly {
 ///
 /// ```
 /// use exact_bezier::{ratio, trig::TrigFn, trig::TrigParam};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let sin = TrigFn::<BigRational>::new([0, 1, 0, 0, 0].map(|k| ratio(k, 1)));
 /// // d/dt sin = cos, d²/dt² sin = −sin.
 /// assert_eq!(sin.derivative().coeffs()[2], ratio(1, 1));
@@ -140,7 +141,7 @@ impl<T: Scalar> TrigFn<T> {
     ///
     /// ```
     /// use exact_bezier::{ratio, trig::TrigFn, trig::TrigParam};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let x = TrigFn::basis(&ratio::<BigRational>(1, 1));
     /// let at = TrigParam::from_tau(&ratio(1, 2)); // s = 4/5, c = 3/5
     /// // X₁ = α s (1 − s) = 4/25.
@@ -202,7 +203,7 @@ impl<T: Scalar> TrigFn<T> {
 ///
 /// ```
 /// use exact_bezier::{ratio, trig::trig_basis_values, trig::TrigParam};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let a = ratio::<BigRational>(3, 2);
 /// // End derivatives: X'(0) = (−α, α, 0, 0).
 /// let d0 = trig_basis_values(&a, 1, &TrigParam::start());

@@ -95,7 +95,7 @@ fn column_of<T: Ordered>(s: &TrigRect<T>, j: usize) -> Vec<Vec<T>> {
 ///
 /// ```
 /// use exact_bezier::{ratio, trig::trig_bowl, trig::trig_g0, Tolerance, trig::TrigJoin};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let a2: [BigRational; 4] = [13, 11, 11, 13].map(|k| ratio(k, 10));
 /// let bowl = trig_bowl(&ratio(6, 5), &a2, None).unwrap();
 /// for k in 0..4 {

@@ -13,7 +13,7 @@ use crate::error::Error;
 ///
 /// ```
 /// use exact_bezier::{ratio, trig::TrigCurve, trig::TrigParam};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let c = TrigCurve::new(vec![p(0, 0), p(1, 2), p(3, 2), p(4, 0)], ratio(1, 1)).unwrap();
 /// assert_eq!(c.eval(&TrigParam::end()), p(4, 0));

@@ -79,7 +79,7 @@ impl<T: Scalar> TrigCurve<T> {
     ///
     /// ```
     /// use exact_bezier::{ratio, trig::TrigCurve, trig::TrigParam};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
     /// let c = TrigCurve::new(vec![p(0, 0), p(1, 2), p(3, 2), p(4, 0)], ratio(1, 1)).unwrap();
     /// let q = c.to_rational();
@@ -110,7 +110,7 @@ impl<T: Scalar> TrigRect<T> {
     ///
     /// ```
     /// use exact_bezier::{ratio, trig::TrigParam, trig::TrigRect};
-    /// use num_rational::BigRational;
+    /// use exact_bezier::BigRational;
     /// let net = (0..4).map(|i| (0..4).map(|j| vec![ratio::<BigRational>(i, 1), ratio(j, 1), ratio(i * j, 1)]).collect()).collect();
     /// let s = TrigRect::new(net, [ratio(1, 2), ratio(3, 2)]).unwrap();
     /// let r = s.to_rational();

@@ -5,7 +5,7 @@
 //! meets the edge `v = 0` of `S₂` (parameter u, shape λ₁). The other joins
 //! are reduced to it by exchanging u and v ([`TrigJoin`]).
 //!
-//! The correct conditions (proved in `proofs/trig_stitching.rs`), with
+//! The correct conditions (proved in `proofs/src/trig_stitching.rs`), with
 //! `ΔPᵢ = Pᵢ₃ − Pᵢ₂`, `ΔQᵢ = Qᵢ₁ − Qᵢ₀`:
 //!
 //! ```text
@@ -56,7 +56,7 @@ impl TrigJoin {
 ///
 /// ```
 /// use exact_bezier::{ratio, trig::trig_g0, Tolerance, trig::TrigJoin, trig::TrigRect};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let net = |dx: i64| -> Vec<Vec<Vec<BigRational>>> {
 ///     (0..4).map(|i| (0..4).map(|j| vec![ratio(i, 1), ratio(j + dx, 1), ratio(i * j, 1)]).collect()).collect()
 /// };
@@ -162,7 +162,7 @@ pub fn cross<T: Scalar>(a: &[T], b: &[T]) -> [T; 3] {
 ///
 /// ```
 /// use exact_bezier::{ratio, trig::trig_g1_factor, trig::trig_tangent_continuous, Tolerance, trig::TrigJoin, trig::TrigRect};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1), ratio(0, 1)];
 /// let one = || [ratio(1, 1), ratio(1, 1)];
 /// let s1 = TrigRect::new((0..4).map(|i| (0..4).map(|j| p(i, j)).collect()).collect(), one()).unwrap();
@@ -226,7 +226,7 @@ pub fn trig_tangent_continuous<T: Ordered>(
 ///
 /// ```
 /// use exact_bezier::{ratio, trig::trig_g1_factor, trig::trig_stitch, Tolerance, trig::TrigJoin, trig::TrigRect};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let net: Vec<Vec<Vec<BigRational>>> = (0..4)
 ///     .map(|i| (0..4).map(|j| vec![ratio(i, 1), ratio(j, 1), ratio(i * j % 3, 1)]).collect())
 ///     .collect();

@@ -21,7 +21,7 @@ use crate::error::Error;
 ///
 /// ```
 /// use exact_bezier::{ratio, trig::TrigParam, trig::TrigRect};
-/// use num_rational::BigRational;
+/// use exact_bezier::BigRational;
 /// let net: Vec<Vec<Vec<BigRational>>> = (0..4)
 ///     .map(|i| (0..4).map(|j| vec![ratio(i, 1), ratio(j, 1), ratio(i * j, 1)]).collect())
 ///     .collect();

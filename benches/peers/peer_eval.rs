@@ -4,7 +4,7 @@
 //! nanoseconds per point (the best of `--repeat` passes).
 //!
 //! ```text
-//! cargo run --release --example peer_eval -- CASES.json [--repeat 5]
+//! cargo bench --bench peer_eval -- CASES.json [--repeat 5]
 //! ```
 //!
 //! Each case is `{"name", "patch" (our JSON format), "params": [...],
@@ -23,9 +23,11 @@ use std::time::Instant;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let path = args
-        .get(1)
-        .expect("usage: peer_eval CASES.json [--repeat N]");
+    // `cargo bench` appends `--bench`; with no cases file there is nothing to time.
+    let Some(path) = args.get(1).filter(|a| !a.starts_with("--")) else {
+        eprintln!("usage: cargo bench --bench peer_eval -- CASES.json [--repeat N]");
+        return;
+    };
     let repeat = match args.iter().position(|a| a == "--repeat") {
         Some(i) => args[i + 1].parse().expect("--repeat takes a count"),
         None => 5,

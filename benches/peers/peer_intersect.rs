@@ -6,7 +6,7 @@
 //! time of each path over `--repeat` runs, in microseconds.
 //!
 //! ```text
-//! cargo run --release --example peer_intersect -- PAIRS.json [--repeat 5]
+//! cargo bench --bench peer_intersect -- PAIRS.json [--repeat 5]
 //! ```
 //!
 //! Each pair is `{"a": curve, "b": curve}` in our JSON format.
@@ -23,9 +23,11 @@ use std::time::Instant;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let path = args
-        .get(1)
-        .expect("usage: peer_intersect PAIRS.json [--repeat N]");
+    // `cargo bench` appends `--bench`; with no pairs file there is nothing to time.
+    let Some(path) = args.get(1).filter(|a| !a.starts_with("--")) else {
+        eprintln!("usage: cargo bench --bench peer_intersect -- PAIRS.json [--repeat N]");
+        return;
+    };
     let repeat = match args.iter().position(|a| a == "--repeat") {
         Some(i) => args[i + 1].parse().expect("--repeat takes a count"),
         None => 5,
