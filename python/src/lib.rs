@@ -18,6 +18,8 @@
 //! the command line prints, and a Rust panic becomes `ExactBezierError`
 //! instead of crossing into Python.
 
+#![warn(missing_docs)]
+
 use exact_bezier::coincide::{canonical_text, KeyDigest};
 use exact_bezier::eval::Evaluator;
 use exact_bezier::io::{parse_rational, patch_from_value, patch_to_json, read_patches};
@@ -105,10 +107,7 @@ fn guarded<T>(f: impl FnOnce() -> Result<T, Error>) -> Result<T, Failure> {
 
 /// [`guarded`] with the GIL released: for work that may take long (exact
 /// arithmetic, batches), so other Python threads run meanwhile.
-fn detached<T: Send>(
-    py: Python<'_>,
-    f: impl FnOnce() -> Result<T, Error> + Send,
-) -> PyResult<T> {
+fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, Error> + Send) -> PyResult<T> {
     Ok(py.detach(|| guarded(f))?)
 }
 
@@ -355,7 +354,9 @@ fn points_py<'py>(py: Python<'py>, p: &Patch<BigRational>) -> PyResult<Bound<'py
             .map(|r| {
                 PyList::new(
                     py,
-                    r.iter().map(|q| fractions(py, q)).collect::<PyResult<Vec<_>>>()?,
+                    r.iter()
+                        .map(|q| fractions(py, q))
+                        .collect::<PyResult<Vec<_>>>()?,
                 )
             })
             .collect::<PyResult<Vec<_>>>()?;
@@ -366,7 +367,9 @@ fn points_py<'py>(py: Python<'py>, p: &Patch<BigRational>) -> PyResult<Bound<'py
             let pts = guarded(|| c.points())?;
             PyList::new(
                 py,
-                pts.iter().map(|q| fractions(py, q)).collect::<PyResult<Vec<_>>>()?,
+                pts.iter()
+                    .map(|q| fractions(py, q))
+                    .collect::<PyResult<Vec<_>>>()?,
             )
         }
         Patch::Rect(r) => grid(guarded(|| r.points())?),
@@ -384,7 +387,9 @@ fn weights_py<'py>(py: Python<'py>, p: &Patch<BigRational>) -> PyResult<Bound<'p
     let grid = |rows: Vec<Vec<BigRational>>| -> PyResult<Bound<'py, PyList>> {
         PyList::new(
             py,
-            rows.iter().map(|r| fractions(py, r)).collect::<PyResult<Vec<_>>>()?,
+            rows.iter()
+                .map(|r| fractions(py, r))
+                .collect::<PyResult<Vec<_>>>()?,
         )
     };
     match p {
@@ -538,53 +543,74 @@ macro_rules! patch_class {
     };
 }
 
-patch_class!(Curve, "curve", "A rational Bézier curve with exact rational control points and weights.", {
-    /// The exact point at `t`, as a list of `Fraction`s.
-    #[pyo3(signature = (t, *, exact_from_float = false))]
-    fn eval<'py>(
-        &self,
-        py: Python<'py>,
-        t: &Bound<'py, PyAny>,
-        exact_from_float: bool,
-    ) -> PyResult<Bound<'py, PyList>> {
-        let t = exact_param(t, exact_from_float)?;
-        let x = detached(py, || eval_exact(&self.patch, &[t]))?;
-        fractions(py, &x)
+patch_class!(
+    Curve,
+    "curve",
+    "A rational Bézier curve with exact rational control points and weights.",
+    {
+        /// The exact point at `t`, as a list of `Fraction`s.
+        #[pyo3(signature = (t, *, exact_from_float = false))]
+        fn eval<'py>(
+            &self,
+            py: Python<'py>,
+            t: &Bound<'py, PyAny>,
+            exact_from_float: bool,
+        ) -> PyResult<Bound<'py, PyList>> {
+            let t = exact_param(t, exact_from_float)?;
+            let x = detached(py, || eval_exact(&self.patch, &[t]))?;
+            fractions(py, &x)
+        }
     }
-});
+);
 
-patch_class!(RectPatch, "rect", "A rational tensor-product Bézier patch with exact rational control points and weights.", {
-    /// The exact point at `(u, v)`, as a list of `Fraction`s.
-    #[pyo3(signature = (u, v, *, exact_from_float = false))]
-    fn eval<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-        exact_from_float: bool,
-    ) -> PyResult<Bound<'py, PyList>> {
-        let uv = [exact_param(u, exact_from_float)?, exact_param(v, exact_from_float)?];
-        let x = detached(py, || eval_exact(&self.patch, &uv))?;
-        fractions(py, &x)
+patch_class!(
+    RectPatch,
+    "rect",
+    "A rational tensor-product Bézier patch with exact rational control points and weights.",
+    {
+        /// The exact point at `(u, v)`, as a list of `Fraction`s.
+        #[pyo3(signature = (u, v, *, exact_from_float = false))]
+        fn eval<'py>(
+            &self,
+            py: Python<'py>,
+            u: &Bound<'py, PyAny>,
+            v: &Bound<'py, PyAny>,
+            exact_from_float: bool,
+        ) -> PyResult<Bound<'py, PyList>> {
+            let uv = [
+                exact_param(u, exact_from_float)?,
+                exact_param(v, exact_from_float)?,
+            ];
+            let x = detached(py, || eval_exact(&self.patch, &uv))?;
+            fractions(py, &x)
+        }
     }
-});
+);
 
-patch_class!(TriPatch, "tri", "A rational triangular Bézier patch with exact rational control points and weights.", {
-    /// The exact point at barycentric `(u, v, 1 − u − v)`, as a list of
-    /// `Fraction`s.
-    #[pyo3(signature = (u, v, *, exact_from_float = false))]
-    fn eval<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-        exact_from_float: bool,
-    ) -> PyResult<Bound<'py, PyList>> {
-        let uv = [exact_param(u, exact_from_float)?, exact_param(v, exact_from_float)?];
-        let x = detached(py, || eval_exact(&self.patch, &uv))?;
-        fractions(py, &x)
+patch_class!(
+    TriPatch,
+    "tri",
+    "A rational triangular Bézier patch with exact rational control points and weights.",
+    {
+        /// The exact point at barycentric `(u, v, 1 − u − v)`, as a list of
+        /// `Fraction`s.
+        #[pyo3(signature = (u, v, *, exact_from_float = false))]
+        fn eval<'py>(
+            &self,
+            py: Python<'py>,
+            u: &Bound<'py, PyAny>,
+            v: &Bound<'py, PyAny>,
+            exact_from_float: bool,
+        ) -> PyResult<Bound<'py, PyList>> {
+            let uv = [
+                exact_param(u, exact_from_float)?,
+                exact_param(v, exact_from_float)?,
+            ];
+            let x = detached(py, || eval_exact(&self.patch, &uv))?;
+            fractions(py, &x)
+        }
     }
-});
+);
 
 /// The Python object of an exact patch: `Curve`, `RectPatch` or `TriPatch`.
 fn wrap_any(py: Python<'_>, p: Patch<BigRational>) -> PyResult<Py<PyAny>> {
@@ -635,7 +661,9 @@ fn key_text(py: Python<'_>, patch: &Bound<'_, PyAny>) -> PyResult<String> {
 #[pyfunction]
 fn key(py: Python<'_>, patch: &Bound<'_, PyAny>) -> PyResult<String> {
     let p = patch_of(patch)?;
-    detached(py, || canonical_text(&p).map(|t| KeyDigest::of_text(&t).to_string()))
+    detached(py, || {
+        canonical_text(&p).map(|t| KeyDigest::of_text(&t).to_string())
+    })
 }
 
 /// The exact coincidence decision of two patches as the command line's
