@@ -447,6 +447,13 @@ macro_rules! patch_class {
             /// omitted). Numbers are `int`, `fractions.Fraction`,
             /// `decimal.Decimal` or exact strings ("1/3", "0.885");
             /// `float` only with `exact_from_float=True`.
+            ///
+            /// ```text
+            /// >>> from exact_bezier import Curve
+            /// >>> Curve([[0, 0], ["1/2", 1], [1, 0]], weights=[1, 2, 1]).degree
+            /// 2
+            ///
+            /// ```
             #[new]
             #[pyo3(signature = (points, weights = None, *, exact_from_float = false))]
             fn new(
@@ -458,12 +465,26 @@ macro_rules! patch_class {
             }
 
             /// Read one patch of this kind from JSON text (docs/FORMAT.md).
+            ///
+            /// ```text
+            /// >>> from exact_bezier import Curve
+            /// >>> Curve.from_json('{"kind": "curve", "points": [[0], [0.5]]}').points
+            /// [[Fraction(0, 1)], [Fraction(1, 2)]]
+            ///
+            /// ```
             #[staticmethod]
             fn from_json(text: &str) -> PyResult<Self> {
                 Ok(Self::wrap(read_one(text, $kind, stringify!($name))?))
             }
 
             /// The JSON text of the patch (docs/FORMAT.md).
+            ///
+            /// ```text
+            /// >>> from exact_bezier import Curve
+            /// >>> Curve([[0], [1]], weights=[1, "1/3"]).to_json()
+            /// '{"kind":"curve","degree":1,"points":[[0],[1]],"weights":[1,"1/3"]}'
+            ///
+            /// ```
             fn to_json(&self) -> PyResult<String> {
                 json_text(&self.patch)
             }
@@ -499,7 +520,15 @@ macro_rules! patch_class {
             }
 
             /// Points at many parameters in `float64`, as an array of
-            /// shape `(N, dim)` (the GIL is released meanwhile).
+            /// shape `(N, dim)` (the GIL is released meanwhile). Parameters
+            /// have shape `(N,)` or `(N, 1)` for a curve, `(N, 2)` for a patch.
+            ///
+            /// ```text
+            /// >>> from exact_bezier import Curve
+            /// >>> Curve([[0, 0], [2, 4], [4, 0]]).eval_many([0, 0.5, 1]).tolist()
+            /// [[0.0, 0.0], [2.0, 2.0], [4.0, 0.0]]
+            ///
+            /// ```
             fn eval_many<'py>(
                 &self,
                 py: Python<'py>,
@@ -546,9 +575,16 @@ macro_rules! patch_class {
 patch_class!(
     Curve,
     "curve",
-    "A rational Bézier curve with exact rational control points and weights.",
+    "A rational Bézier curve with exact rational control points and weights.\n\n```text\n>>> from exact_bezier import Curve\n>>> c = Curve([[0, 0], [1, 2], [2, 0]], weights=[1, \"1/3\", 1])\n>>> (c.degree, c.dim, c.weights[1])\n(2, 2, Fraction(1, 3))\n\n```",
     {
         /// The exact point at `t`, as a list of `Fraction`s.
+        ///
+        /// ```text
+        /// >>> from exact_bezier import Curve
+        /// >>> Curve([[0, 0], [1, 2], [2, 0]]).eval("1/3")
+        /// [Fraction(2, 3), Fraction(8, 9)]
+        ///
+        /// ```
         #[pyo3(signature = (t, *, exact_from_float = false))]
         fn eval<'py>(
             &self,
@@ -566,9 +602,16 @@ patch_class!(
 patch_class!(
     RectPatch,
     "rect",
-    "A rational tensor-product Bézier patch with exact rational control points and weights.",
+    "A rational tensor-product Bézier patch with exact rational control points and weights;\n`points[i][j]` is `P_{i,j}`, `i` the u index.\n\n```text\n>>> from exact_bezier import RectPatch\n>>> RectPatch([[[0, 0], [0, 1], [0, 2]], [[1, 0], [1, 1], [1, 2]]]).degree\n(1, 2)\n\n```",
     {
         /// The exact point at `(u, v)`, as a list of `Fraction`s.
+        ///
+        /// ```text
+        /// >>> from exact_bezier import RectPatch
+        /// >>> RectPatch([[[0], [1]], [[2], [4]]]).eval("1/2", "1/2")
+        /// [Fraction(7, 4)]
+        ///
+        /// ```
         #[pyo3(signature = (u, v, *, exact_from_float = false))]
         fn eval<'py>(
             &self,
@@ -590,10 +633,17 @@ patch_class!(
 patch_class!(
     TriPatch,
     "tri",
-    "A rational triangular Bézier patch with exact rational control points and weights.",
+    "A rational triangular Bézier patch with exact rational control points and weights;\n`points[j][i]` is `P_{i,j,n-i-j}`.\n\n```text\n>>> from exact_bezier import TriPatch\n>>> TriPatch([[[0, 0], [1, 0]], [[0, 1]]]).degree\n1\n\n```",
     {
         /// The exact point at barycentric `(u, v, 1 − u − v)`, as a list of
         /// `Fraction`s.
+        ///
+        /// ```text
+        /// >>> from exact_bezier import TriPatch
+        /// >>> TriPatch([[[0, 0], [1, 0]], [[0, 1]]]).eval("1/5", "2/5")
+        /// [Fraction(1, 5), Fraction(2, 5)]
+        ///
+        /// ```
         #[pyo3(signature = (u, v, *, exact_from_float = false))]
         fn eval<'py>(
             &self,
@@ -639,7 +689,14 @@ fn patch_of(x: &Bound<'_, PyAny>) -> PyResult<Patch<BigRational>> {
 }
 
 /// Every curve and patch of JSON text: one object or an array (NURBS
-/// objects give their Bézier pieces), as `exact_bezier.read_patches` does.
+/// objects give their Bézier pieces), as [`read_patches`] reads them.
+///
+/// ```text
+/// >>> import exact_bezier as eb
+/// >>> [p.kind for p in eb.read_json('[{"kind": "curve", "points": [[0]]}, {"kind": "tri", "points": [[[0]]]}]')]
+/// ['curve', 'tri']
+///
+/// ```
 #[pyfunction]
 fn read_json(py: Python<'_>, text: &str) -> PyResult<Vec<Py<PyAny>>> {
     let patches = guarded(|| {
@@ -650,6 +707,13 @@ fn read_json(py: Python<'_>, text: &str) -> PyResult<Vec<Py<PyAny>>> {
 }
 
 /// The canonical key text (`eb1;…`) of a curve or rect patch.
+///
+/// ```text
+/// >>> import exact_bezier as eb
+/// >>> eb.key_text(eb.Curve([[0], [1]], weights=[1, "1/3"]))
+/// 'eb1;curve;1,0;P=0,1;1,1;I=+:1;+:1'
+///
+/// ```
 #[pyfunction]
 fn key_text(py: Python<'_>, patch: &Bound<'_, PyAny>) -> PyResult<String> {
     let p = patch_of(patch)?;
@@ -658,6 +722,13 @@ fn key_text(py: Python<'_>, patch: &Bound<'_, PyAny>) -> PyResult<String> {
 
 /// The canonical key (`eb1:` and 64 hex digits), as `exact-bezier key`
 /// prints it.
+///
+/// ```text
+/// >>> import exact_bezier as eb
+/// >>> eb.key(eb.Curve([[0], [1], [3]])) == eb.key(eb.Curve([[3], [1], [0]]))
+/// True
+///
+/// ```
 #[pyfunction]
 fn key(py: Python<'_>, patch: &Bound<'_, PyAny>) -> PyResult<String> {
     let p = patch_of(patch)?;

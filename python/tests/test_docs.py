@@ -22,6 +22,7 @@ def test_doc_example_runs(k):
     exec(compile(BLOCKS[k], f"{DOC.name}[block {k}]", "exec"), {})
 
 
-def test_docstring_examples():
-    failed, tried = doctest.testmod(exact_bezier, raise_on_error=False)
+@pytest.mark.parametrize("module", [exact_bezier, exact_bezier._native])
+def test_docstring_examples(module):
+    failed, tried = doctest.testmod(module, raise_on_error=False)
     assert tried >= 3 and failed == 0

@@ -74,6 +74,14 @@ def test_json_pickle_and_repr_round_trip(cls, strategy):
     check()
 
 
+@pytest.mark.parametrize("protocol", range(pickle.HIGHEST_PROTOCOL + 1))
+def test_pickling_with_every_protocol(protocol):
+    for p in [eb.Curve([[0], ["1/3"]]), eb.RectPatch([[[0]]], [["2/7"]]), eb.TriPatch([[[0, 1]]])]:
+        q = pickle.loads(pickle.dumps(p, protocol=protocol))
+        assert type(q) is type(p) and q == p
+        assert copy.copy(p) == p
+
+
 def test_equality_is_exact():
     a = eb.Curve([[0], [1]], ["1/3", 1])
     assert a == eb.Curve([[0], [1]], [Fraction(1, 3), 1])
