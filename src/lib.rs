@@ -112,7 +112,7 @@ pub mod strategy;
 pub mod tri;
 pub mod trig;
 
-pub use algebra::{ratio, Field, Ordered, Poly, Ring, Roots, Scalar, Tolerance};
+pub use algebra::{ratio, Field, MulAcc, Ordered, Poly, Ring, Roots, Scalar, Tolerance};
 pub use curve::RationalCurve;
 pub use error::{Error, MAX_DEGREE};
 pub use io::Patch;

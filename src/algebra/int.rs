@@ -236,13 +236,6 @@ impl crate::algebra::scalar::MulAcc for Int {
         let prev = std::mem::replace(acc, Int::Small(0));
         *acc = prev * a + &product(c, x);
     }
-
-    /// Blocks of `k` points with `a^k`, `b^k` below 2⁶³ (one machine word
-    /// each): parameters of `p` bits give `k = ⌊63/p⌋`.
-    fn horner_block(a: &Int, b: &Int) -> usize {
-        let bits = a.bits().max(b.bits()).max(1);
-        (63 / bits) as usize
-    }
 }
 
 impl Neg for Int {

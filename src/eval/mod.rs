@@ -20,8 +20,8 @@
 //! At `(a : b) = (1 − t : t)` the curve sum is `X(t)` in homogeneous form;
 //! at `(q − p : p)` for `t = p/q` it is `qⁿ` times it, with integer
 //! arithmetic throughout when the net is integral. That is how exact
-//! evaluation stays fraction-free: [`Field::eval_net`] is the per-type hook,
-//! and `BigRational` clears the denominators of the net once, runs the
+//! evaluation stays fraction-free: [`Evaluator::eval_batch`] recognises
+//! `BigRational` (by its type id), clears the denominators of the net once, runs the
 //! same kernel on the narrowest integer type that provably holds its
 //! values (`i128`, [`Wide`](crate::algebra::Wide) or
 //! [`Int`](crate::algebra::Int): no gcd, no allocation below 256 bits) and
@@ -46,7 +46,7 @@
 //! homogeneous form avoids its division by `1 − t`.
 
 mod blocks;
-pub(crate) mod fraction_free;
+mod fraction_free;
 mod jet;
 
 pub use jet::{Jet, Jets};
@@ -331,26 +331,50 @@ impl<T: MulAcc> Net<T> {
     /// **Panics if `hom` has the wrong length for the shape** (2, 4 or 3),
     /// or `out` is not `stride` long.
     pub fn eval_hom_into(&self, hom: &[T], out: &mut [T], ws: &mut Workspace<T>) {
+        self.eval_hom_blocked(hom, out, ws, |_, _| 1);
+    }
+
+    /// [`Net::eval_hom_into`] with each Horner sum at a homogeneous
+    /// parameter `(a : b)` taken in blocks of `block(a, b)` points
+    /// ([`horner`]): the same values, faster for big integers at
+    /// machine-word parameters (the fraction-free kernel's `Int` lane).
+    pub(crate) fn eval_hom_blocked(
+        &self,
+        hom: &[T],
+        out: &mut [T],
+        ws: &mut Workspace<T>,
+        block: impl Fn(&T, &T) -> usize + Copy,
+    ) {
         let s = self.stride;
+        let sum = |points: &[T], a: &T, b: &T, out: &mut [T], scratch: &mut Vec<T>| {
+            horner(points, s, a, b, block(a, b), out, scratch)
+        };
         match self.shape {
-            Shape::Curve(_) => horner(self.scaled(), s, &hom[0], &hom[1], out, &mut ws.block),
+            Shape::Curve(_) => sum(self.scaled(), &hom[0], &hom[1], out, &mut ws.block),
             Shape::Rect(_, n) => {
                 let row_len = (n + 1) * s;
-                for (row, sum) in self
+                for (row, out) in self
                     .scaled()
                     .chunks_exact(row_len)
                     .zip(ws.rows.chunks_mut(s))
                 {
-                    horner(row, s, &hom[2], &hom[3], sum, &mut ws.block);
+                    sum(row, &hom[2], &hom[3], out, &mut ws.block);
                 }
-                horner(&ws.rows, s, &hom[0], &hom[1], out, &mut ws.block);
+                sum(&ws.rows, &hom[0], &hom[1], out, &mut ws.block);
             }
-            Shape::Tri(n) => self.tri_into(n, hom, out, ws),
+            Shape::Tri(n) => self.tri_into(n, hom, out, ws, block),
         }
     }
 
     /// `Σ_j vʲ R_j` with `R_j = Σ_i uⁱ w^{n−j−i} G_ij`.
-    fn tri_into(&self, n: usize, hom: &[T], out: &mut [T], ws: &mut Workspace<T>) {
+    fn tri_into(
+        &self,
+        n: usize,
+        hom: &[T],
+        out: &mut [T],
+        ws: &mut Workspace<T>,
+        block: impl Fn(&T, &T) -> usize,
+    ) {
         let (u, v, w) = (&hom[0], &hom[1], &hom[2]);
         let s = self.stride;
         let mut start = 0;
@@ -362,6 +386,7 @@ impl<T: MulAcc> Net<T> {
                 s,
                 w,
                 u,
+                block(w, u),
                 &mut ws.rows,
                 &mut ws.block,
             );
@@ -384,9 +409,9 @@ impl<T: MulAcc> Net<T> {
 /// (already times their binomials) are the `stride`-long chunks of
 /// `points`.
 ///
-/// When `T` asks for blocks of `k > 1` points ([`MulAcc::horner_block`]:
-/// big integers at machine-word parameters), the sum goes block by block,
-/// `block` holding one block's sum:
+/// For blocks of `k > 1` points (big integers at machine-word parameters,
+/// see `fraction_free`), the sum goes block by block, `block` holding one
+/// block's sum:
 ///
 /// ```text
 /// C_j = Σ_{r<k_j} a^{k_j−1−r} bʳ G_{s_j+r}        (powers of a, b below k: machine words)
@@ -395,8 +420,15 @@ impl<T: MulAcc> Net<T> {
 ///
 /// so that a product of two big numbers (`b^{s_j}·C_j`) comes once per
 /// block instead of once per point.
-fn horner<T: MulAcc>(points: &[T], stride: usize, a: &T, b: &T, out: &mut [T], block: &mut Vec<T>) {
-    let k = T::horner_block(a, b);
+fn horner<T: MulAcc>(
+    points: &[T],
+    stride: usize,
+    a: &T,
+    b: &T,
+    k: usize,
+    out: &mut [T],
+    block: &mut Vec<T>,
+) {
     if k <= 1 {
         return horner_lanes::<T, 1>(points, stride, [a], [b], out);
     }
@@ -608,8 +640,9 @@ impl<T: Field> Evaluator<T> {
 
     /// The points at a batch of parameters: `params` holds one parameter
     /// (curve) or two (patch) per point, back to back; `out` receives `dim`
-    /// coordinates per point. Exact types take their fast path
-    /// ([`Field::eval_net`]: fraction-free for `BigRational`).
+    /// coordinates per point. `BigRational` takes the fraction-free path
+    /// of the module documentation, every other scalar the generic kernel
+    /// (the values are the same).
     ///
     /// # Errors
     ///
@@ -623,13 +656,14 @@ impl<T: Field> Evaluator<T> {
             self.net.dim(),
             out.len(),
         )?;
-        T::eval_net(self, params, out)
+        fraction_free::eval_batch(self, params, out)
+            .unwrap_or_else(|| self.eval_batch_generic(params, out))
     }
 
     /// The generic batch: [`Evaluator::eval_into`] point after point.
     /// Curves go [`LANES`] points at a time ([`horner_lanes`]); the rest,
     /// and patches, one at a time.
-    pub(crate) fn eval_batch_generic(&mut self, params: &[T], out: &mut [T]) -> Result<(), Error> {
+    fn eval_batch_generic(&mut self, params: &[T], out: &mut [T]) -> Result<(), Error> {
         let (k, d) = (self.net.shape.params(), self.net.dim());
         let mut done = 0;
         if let (Shape::Curve(_), true) = (self.net.shape, params.len() >= LANES) {
