@@ -429,8 +429,7 @@ mod tests {
                     crate::hpoint::HPoint { coords }
                 })
                 .collect();
-            let c = crate::RationalCurve::from_hom(pts).unwrap();
-            let mut ev = Evaluator::curve(&c);
+            let mut ev = Evaluator::new(Net::from_points(&pts, Shape::Curve(n)).unwrap());
             let mut fast = vec![ratio(0, 1); 2];
             let mut generic = fast.clone();
             let fast_result = ev.eval_batch(std::slice::from_ref(&t), &mut fast);

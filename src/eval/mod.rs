@@ -52,11 +52,8 @@ mod jet;
 pub use jet::{Jet, Jets};
 
 use crate::algebra::scalar::{pow, Field, MulAcc, Ring};
-use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::rect::RectPatch;
-use crate::tri::TriPatch;
 use std::sync::OnceLock;
 
 /// The shape of a [`Net`]: which Bernstein sum it evaluates.
@@ -68,7 +65,7 @@ pub enum Shape {
     /// (the u index) holding the `n + 1` points of index `(i, 0) … (i, n)`.
     Rect(usize, usize),
     /// A tri patch of degree `n`: rows `j = 0 … n` of `n − j + 1` points
-    /// `P_{i,j,k}`, `i = 0 … n − j` (the layout of [`TriPatch::rows`]).
+    /// `P_{i,j,k}`, `i = 0 … n − j` (the layout of [`TriPatch::rows`](crate::TriPatch::rows)).
     Tri(usize),
 }
 
@@ -153,43 +150,38 @@ impl<T: Ring> Net<T> {
         Ok(Net::with_coords(coords, stride, shape))
     }
 
-    /// The net of `shape` from homogeneous points, in the order of [`Shape`].
-    fn from_points<'a>(points: impl Iterator<Item = &'a HPoint<T>>, shape: Shape) -> Self
-    where
-        T: 'a,
-    {
+    /// The net of `shape` from homogeneous points `(w·P, w)`, in the order
+    /// of [`Shape`]. The nets of curves and patches are
+    /// [`Net::from_curve`], [`Net::from_rect`] and [`Net::from_tri`].
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Shape`] if the points differ in length, or are not
+    /// `shape.points()` points of at least 2 coordinates.
+    ///
+    /// ```
+    /// use exact_bezier::eval::{Net, Shape};
+    /// use exact_bezier::hpoint::HPoint;
+    /// let h = |x: f64, w: f64| HPoint { coords: vec![x * w, w] };
+    /// let net = Net::from_points(&[h(0.0, 1.0), h(1.0, 2.0)], Shape::Curve(1)).unwrap();
+    /// assert_eq!(net.coords(), &[0.0, 1.0, 2.0, 2.0]);
+    /// assert!(Net::from_points(&[h(0.0, 1.0)], Shape::Curve(1)).is_err());
+    /// ```
+    pub fn from_points<'a>(
+        points: impl IntoIterator<Item = &'a HPoint<T>>,
+        shape: Shape,
+    ) -> Result<Self, Error> {
         let mut coords = Vec::with_capacity(shape.points() * 4);
-        let mut stride = 0;
+        let mut stride = None;
         for p in points {
-            stride = p.coords.len();
+            if *stride.get_or_insert(p.coords.len()) != p.coords.len() {
+                return Err(Error::Shape(format!(
+                    "the points of a {shape:?} net differ in length"
+                )));
+            }
             coords.extend(p.coords.iter().cloned());
         }
-        Net::new(coords, stride, shape).expect("a validated curve or patch has a consistent net")
-    }
-
-    /// The net of a curve.
-    pub fn from_curve(c: &RationalCurve<T>) -> Self
-    where
-        T: crate::Scalar,
-    {
-        Self::from_points(c.ctrl().iter(), Shape::Curve(c.degree()))
-    }
-
-    /// The net of a rect patch.
-    pub fn from_rect(r: &RectPatch<T>) -> Self
-    where
-        T: crate::Scalar,
-    {
-        let (m, n) = r.degree();
-        Self::from_points(r.ctrl().iter().flatten(), Shape::Rect(m, n))
-    }
-
-    /// The net of a tri patch.
-    pub fn from_tri(t: &TriPatch<T>) -> Self
-    where
-        T: crate::Scalar,
-    {
-        Self::from_points(t.rows().iter().flatten(), Shape::Tri(t.degree()))
+        Net::new(coords, stride.unwrap_or(0), shape)
     }
 }
 
@@ -590,7 +582,8 @@ pub struct Evaluator<T> {
 const LANES: usize = 4;
 
 impl<T: Field> Evaluator<T> {
-    /// An evaluator of `net`.
+    /// An evaluator of `net` (of a curve or a patch:
+    /// [`Evaluator::curve`], [`Evaluator::rect`], [`Evaluator::tri`]).
     pub fn new(net: Net<T>) -> Self {
         let ws = net.workspace();
         let point = vec![T::zero(); net.stride];
@@ -601,21 +594,6 @@ impl<T: Field> Evaluator<T> {
             point,
             lanes: Vec::new(),
         }
-    }
-
-    /// An evaluator of a curve.
-    pub fn curve(c: &RationalCurve<T>) -> Self {
-        Self::new(Net::from_curve(c))
-    }
-
-    /// An evaluator of a rect patch.
-    pub fn rect(r: &RectPatch<T>) -> Self {
-        Self::new(Net::from_rect(r))
-    }
-
-    /// An evaluator of a tri patch.
-    pub fn tri(t: &TriPatch<T>) -> Self {
-        Self::new(Net::from_tri(t))
     }
 
     /// The net being evaluated.

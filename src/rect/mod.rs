@@ -20,6 +20,7 @@ pub use ops::Corner;
 use crate::algebra::scalar::{Field, Ordered, Scalar};
 use crate::curve::{elevate_once, mobius_factors, RationalCurve};
 use crate::error::Error;
+use crate::eval::{eval_points, Evaluator, Jets, Net, Shape};
 use crate::hpoint::{check_positive_weights, check_same_dimension, de_casteljau, hom_rows, HPoint};
 
 /// A rational tensor-product Bézier patch of bidegree (m, n).
@@ -396,7 +397,7 @@ impl<T: Field> RectPatch<T> {
     /// [`Error::PointAtInfinity`] if the weight function vanishes at a pair;
     /// [`Error::Shape`] if `uv` has odd length.
     pub fn eval_many(&self, uv: &[T]) -> Result<Vec<T>, Error> {
-        crate::eval::eval_points(crate::eval::Net::from_rect(self), uv)
+        eval_points(Net::from_rect(self), uv)
     }
 
     /// The Cartesian control points `P_{i,j}`.
@@ -421,6 +422,30 @@ impl<T: Ordered> RectPatch<T> {
     /// [`Error::Weight`] naming the first non-positive weight.
     pub fn check_positive_weights(&self) -> Result<(), Error> {
         check_positive_weights(&self.ctrl, |i, j| format!("{{{i},{j}}}"))
+    }
+}
+
+/// # Batch evaluation (the nets of [`crate::eval`])
+impl<T: Scalar> Net<T> {
+    /// The net of a rect patch.
+    pub fn from_rect(r: &RectPatch<T>) -> Self {
+        let (m, n) = r.degree();
+        Net::from_points(r.ctrl().iter().flatten(), Shape::Rect(m, n))
+            .expect("a validated patch has a consistent net")
+    }
+}
+
+impl<T: Field> Evaluator<T> {
+    /// An evaluator of a rect patch.
+    pub fn rect(r: &RectPatch<T>) -> Self {
+        Self::new(Net::from_rect(r))
+    }
+}
+
+impl<T: Scalar> Jets<T> {
+    /// The jets of a rect patch: `H`, `H_u`, `H_v`.
+    pub fn rect(r: &RectPatch<T>) -> Self {
+        Self::new(Net::from_rect(r))
     }
 }
 
