@@ -157,6 +157,8 @@ impl<T: KernelInt> Lane<T> {
 struct Kernels<'a> {
     rational: &'a Net<BigRational>,
     net: Net<Int>,
+    /// The common denominator of `net`, the lcm of all denominators.
+    den: BigInt,
     /// Bits of the largest integer coordinate of the net.
     net_bits: u64,
     word: Option<Lane<i128>>,
@@ -167,11 +169,15 @@ struct Kernels<'a> {
 
 impl<'a> Kernels<'a> {
     fn new(rational: &'a Net<BigRational>) -> Self {
-        let net = integral(rational);
+        // A projective rescaling: the points of the integer net are those
+        // of `rational`.
+        let (nums, den) = common_denominator(rational.coords());
+        let net = rational.map_coords(nums);
         Kernels {
             rational,
             net_bits: net.coords().iter().map(Int::bits).max().unwrap_or(0),
             net,
+            den,
             word: None,
             wide: None,
             big: None,
@@ -196,9 +202,9 @@ impl<'a> Kernels<'a> {
                 .get_or_insert_with(|| Lane::new(net))
                 .eval(hom, out);
         }
-        let rational = self.rational;
+        let (rational, den) = (self.rational, &self.den);
         let blocked = self.blocked.get_or_insert_with(|| {
-            BlockedCurve::new(rational).map(|b| (b, vec![BigInt::zero(); rational.stride()]))
+            BlockedCurve::new(rational, den).map(|b| (b, vec![BigInt::zero(); rational.stride()]))
         });
         if let Some((curve, point)) = blocked {
             if curve.eval(&hom[0], &hom[1], point) {
@@ -233,14 +239,6 @@ fn value_bits(shape: Shape, net_bits: u64, param_bits: u64) -> u64 {
         Shape::Rect(du, dv) => n + (du + dv) as u64 * (1 + p) + bits(du + 1) + bits(dv + 1),
         Shape::Tri(d) => n + d as u64 * (2 + p) + 2 * bits(d + 1),
     }
-}
-
-/// The integer net over one common denominator (a projective rescaling:
-/// the points it represents are unchanged).
-fn integral(net: &Net<BigRational>) -> Net<Int> {
-    let all: Vec<&BigRational> = net.coords().iter().collect();
-    let (nums, _) = common_denominator(&all);
-    net.map_coords(nums)
 }
 
 /// The integer homogeneous parameters of one parameter point (machine
@@ -282,11 +280,7 @@ pub(super) fn eval_batch<T: Field>(
 
 /// [`eval_batch`] on the net of a `BigRational` evaluator: the scalars
 /// `T` of `params` and `out` are `BigRational`.
-fn eval_rational<T: Any>(
-    net: &Net<BigRational>,
-    params: &[T],
-    out: &mut [T],
-) -> Result<(), Error> {
+fn eval_rational<T: Any>(net: &Net<BigRational>, params: &[T], out: &mut [T]) -> Result<(), Error> {
     let shape = net.shape();
     let mut kernels = Kernels::new(net);
     let (k, d) = (shape.params(), net.dim());
@@ -394,7 +388,12 @@ mod tests {
     /// The fast path is taken for `BigRational` and only for it.
     #[test]
     fn only_rationals_take_the_fast_path() {
-        let exact = Net::new(vec![ratio::<BigRational>(1, 2), ratio(1, 1)], 2, Shape::Curve(0)).unwrap();
+        let exact = Net::new(
+            vec![ratio::<BigRational>(1, 2), ratio(1, 1)],
+            2,
+            Shape::Curve(0),
+        )
+        .unwrap();
         let mut out = vec![ratio(0, 1)];
         let result = eval_batch(&Evaluator::new(exact), &[ratio(1, 3)], &mut out);
         assert_eq!((result, out), (Some(Ok(())), vec![ratio(1, 2)]));

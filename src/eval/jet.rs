@@ -67,9 +67,12 @@ impl<T: Scalar> Jets<T> {
     /// are [`Jets::curve`], [`Jets::rect`] and [`Jets::tri`].
     pub fn new(net: Net<T>) -> Self {
         let derivatives = match net.shape() {
-            Shape::Curve(n) => vec![difference_net(&net, Shape::Curve(n.saturating_sub(1)), n, |i, _| {
-                (n > 0).then(|| (i + 1, i))
-            })],
+            Shape::Curve(n) => vec![difference_net(
+                &net,
+                Shape::Curve(n.saturating_sub(1)),
+                n,
+                |i, _| (n > 0).then(|| (i + 1, i)),
+            )],
             Shape::Rect(m, n) => {
                 let at = |i: usize, j: usize| i * (n + 1) + j;
                 vec![
@@ -86,8 +89,12 @@ impl<T: Scalar> Jets<T> {
                 let at = |i: usize, j: usize| j * (n + 1) - j * j.saturating_sub(1) / 2 + i;
                 let lower = Shape::Tri(n.saturating_sub(1));
                 vec![
-                    difference_net(&net, lower, n, |i, j| (n > 0).then(|| (at(i + 1, j), at(i, j)))),
-                    difference_net(&net, lower, n, |i, j| (n > 0).then(|| (at(i, j + 1), at(i, j)))),
+                    difference_net(&net, lower, n, |i, j| {
+                        (n > 0).then(|| (at(i + 1, j), at(i, j)))
+                    }),
+                    difference_net(&net, lower, n, |i, j| {
+                        (n > 0).then(|| (at(i, j + 1), at(i, j)))
+                    }),
                 ]
             }
         };
