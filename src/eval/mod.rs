@@ -21,8 +21,8 @@
 //! at `(q − p : p)` for `t = p/q` it is `qⁿ` times it, with integer
 //! arithmetic throughout when the net is integral. That is how exact
 //! evaluation stays fraction-free: [`Evaluator::eval_batch`] recognises
-//! `BigRational` (by its type id), clears the denominators of the net once, runs the
-//! same kernel on the narrowest integer type that provably holds its
+//! `BigRational` (by its type id), clears the denominators of the net
+//! once, runs the same kernel on the narrowest integer type that provably holds its
 //! values (`i128`, [`Wide`](crate::algebra::Wide) or
 //! [`Int`](crate::algebra::Int): no gcd, no allocation below 256 bits) and
 //! divides once per coordinate (`fraction_free`). Curves of high degree
@@ -65,7 +65,8 @@ pub enum Shape {
     /// (the u index) holding the `n + 1` points of index `(i, 0) … (i, n)`.
     Rect(usize, usize),
     /// A tri patch of degree `n`: rows `j = 0 … n` of `n − j + 1` points
-    /// `P_{i,j,k}`, `i = 0 … n − j` (the layout of [`TriPatch::rows`](crate::TriPatch::rows)).
+    /// `P_{i,j,k}`, `i = 0 … n − j` (the layout of
+    /// [`TriPatch::rows`](crate::TriPatch::rows)).
     Tri(usize),
 }
 
