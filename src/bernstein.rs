@@ -1,9 +1,9 @@
 //! The Bernstein basis `B_{i,n}(t) = C(n, i) tⁱ (1 − t)^{n−i}`, generic over
-//! the scalar.
+//! the scalar, and the change to the power basis `1, t, …, tⁿ` and back.
 //!
 //! Reference: source 001 (lecture), "定义" and "伯恩斯坦多项式的性质".
 
-use crate::algebra::scalar::{binomial_scalar, Scalar};
+use crate::algebra::scalar::{binomial_scalar, Field, Scalar};
 
 /// `B_{i,n}(t) = C(n, i) tⁱ (1 − t)^{n−i}` (0 when `i > n`).
 ///
@@ -44,6 +44,75 @@ pub fn bernstein_all<T: Scalar>(n: usize, t: &T) -> Vec<T> {
         b = next;
     }
     b
+}
+
+/// The power-basis coefficients `a_0 … a_n` of `Σ_i b_i B_{i,n}(t)`
+/// (`n + 1 = b.len()`): `Σ_i b_i B_{i,n}(t) = Σ_k a_k tᵏ` with
+///
+/// ```text
+/// a_k = Σ_{i≤k} C(n, k) C(k, i) (−1)^{k−i} b_i
+/// ```
+///
+/// (expand `(1 − t)^{n−i}` in `B_{i,n}` and collect `tᵏ`; `C(n,i)·C(n−i,k−i)
+/// = C(n,k)·C(k,i)`). The inverse is [`power_to_bernstein`].
+///
+/// ```
+/// use exact_bezier::{bernstein::bernstein_to_power, ratio};
+/// use exact_bezier::BigRational;
+/// let q = |n: i64| ratio::<BigRational>(n, 1);
+/// // (1 − t)² + 2·2t(1 − t) + 4t² = 1 + 2t + t²:
+/// // a_0 = b_0 = 1, a_1 = 2(b_1 − b_0) = 2, a_2 = b_0 − 2b_1 + b_2 = 1.
+/// assert_eq!(bernstein_to_power(&[q(1), q(2), q(4)]), vec![q(1), q(2), q(1)]);
+/// ```
+pub fn bernstein_to_power<T: Scalar>(b: &[T]) -> Vec<T> {
+    let n = b.len().saturating_sub(1);
+    (0..b.len())
+        .map(|k| {
+            let sum = (0..=k).fold(T::zero(), |acc, i| {
+                let term = binomial_scalar::<T>(k, i) * &b[i];
+                if (k - i) % 2 == 0 {
+                    acc + term
+                } else {
+                    acc - term
+                }
+            });
+            binomial_scalar::<T>(n, k) * &sum
+        })
+        .collect()
+}
+
+/// The Bernstein coefficients `b_0 … b_n` of degree `n` of `Σ_k a_k tᵏ`
+/// (needs `a.len() ≤ n + 1`), the inverse of [`bernstein_to_power`]:
+///
+/// ```text
+/// b_i = Σ_{k≤i} C(i, k) / C(n, k) · a_k
+/// ```
+///
+/// (`tᵏ = Σ_{i≥k} C(i,k)/C(n,k) B_{i,n}(t)`). A degree `n` above the
+/// polynomial's gives its degree-elevated coefficients.
+///
+/// ```
+/// use exact_bezier::{bernstein::power_to_bernstein, ratio};
+/// use exact_bezier::BigRational;
+/// let q = |n: i64, d: i64| ratio::<BigRational>(n, d);
+/// // 1 + 2t + t²: b_0 = 1, b_1 = 1 + 2/2 = 2, b_2 = 1 + 2 + 1 = 4 in degree 2;
+/// assert_eq!(power_to_bernstein(&[q(1, 1), q(2, 1), q(1, 1)], 2), vec![q(1, 1), q(2, 1), q(4, 1)]);
+/// // in degree 3: b_1 = 1 + 2/3, b_2 = 1 + 2·2/3 + 1/3, b_3 = 4.
+/// assert_eq!(
+///     power_to_bernstein(&[q(1, 1), q(2, 1), q(1, 1)], 3),
+///     vec![q(1, 1), q(5, 3), q(8, 3), q(4, 1)]
+/// );
+/// ```
+pub fn power_to_bernstein<T: Field>(a: &[T], n: usize) -> Vec<T> {
+    (0..=n)
+        .map(|i| {
+            (0..=i.min(a.len().saturating_sub(1)))
+                .filter(|&k| k < a.len())
+                .fold(T::zero(), |acc, k| {
+                    acc + binomial_scalar::<T>(i, k) * &a[k] / &binomial_scalar::<T>(n, k)
+                })
+        })
+        .collect()
 }
 
 #[cfg(test)]

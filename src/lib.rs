@@ -161,7 +161,7 @@ pub mod trig;
 // and evaluation.
 pub mod blossom;
 
-pub use algebra::{ratio, Field, Ordered, Poly, Ring, Roots, Scalar, Tolerance};
+pub use algebra::{ratio, Field, MulAcc, Ordered, Poly, Ring, Roots, Scalar, Tolerance};
 pub use curve::RationalCurve;
 pub use error::{Error, MAX_DEGREE};
 pub use patch::Patch;

@@ -117,6 +117,13 @@ impl Clone for Int {
     }
 }
 
+impl From<BigInt> for Int {
+    /// [`Int::from_bigint`].
+    fn from(n: BigInt) -> Int {
+        Int::from_bigint(n)
+    }
+}
+
 impl From<i128> for Int {
     fn from(n: i128) -> Int {
         Int::Small(n)
@@ -236,13 +243,6 @@ impl crate::algebra::scalar::MulAcc for Int {
         let prev = std::mem::replace(acc, Int::Small(0));
         *acc = prev * a + &product(c, x);
     }
-
-    /// Blocks of `k` points with `a^k`, `b^k` below 2⁶³ (one machine word
-    /// each): parameters of `p` bits give `k = ⌊63/p⌋`.
-    fn horner_block(a: &Int, b: &Int) -> usize {
-        let bits = a.bits().max(b.bits()).max(1);
-        (63 / bits) as usize
-    }
 }
 
 impl Neg for Int {
@@ -272,15 +272,22 @@ impl One for Int {
     }
 }
 
-/// Integer numerators over one common denominator: `values[i] = nums[i]/den`
-/// with `den` the lcm of the denominators (`den > 0`).
-pub(crate) fn common_denominator(values: &[&BigRational]) -> (Vec<Int>, BigInt) {
-    let den = values.iter().fold(BigInt::one(), |l, q| {
+/// Integer numerators over one common denominator: `(nums, den)` with
+/// `den > 0` the lcm of the denominators of `values` and
+/// `nums[i] = den·values[i]`, as big integers or as [`Int`]s.
+///
+/// ```text
+/// den = lcm_i d_i,   nums[i] = n_i · (den / d_i)     (values[i] = n_i / d_i)
+/// ```
+pub(crate) fn common_denominator<'a, N: From<BigInt>>(
+    values: impl IntoIterator<Item = &'a BigRational> + Clone,
+) -> (Vec<N>, BigInt) {
+    let den = values.clone().into_iter().fold(BigInt::one(), |l, q| {
         crate::algebra::gcd::lcm(&l, q.denom())
     });
     let nums = values
-        .iter()
-        .map(|q| Int::from_bigint(q.numer() * (&den / q.denom())))
+        .into_iter()
+        .map(|q| N::from(q.numer() * (&den / q.denom())))
         .collect();
     (nums, den)
 }

@@ -1,5 +1,6 @@
 //! The scalar tower and the number types the algorithms run on: the
-//! [`Ring`] / [`Scalar`] / [`Field`] / [`Ordered`] traits, exact integers
+//! [`Ring`] / [`MulAcc`] / [`Scalar`] / [`Field`] / [`Ordered`] traits (public,
+//! so that a number type of your own can implement them), exact integers
 //! with a machine-word fast path ([`Int`]) and a 256-bit stack tier
 //! ([`Wide`]), multivariate polynomials over Q
 //! ([`Poly`], the symbolic scalar of the proofs), univariate and bivariate
@@ -25,8 +26,8 @@ pub use modp::Fp;
 pub use poly::Poly;
 pub use real_algebraic::{text::parse_algebraic, RealAlgebraic};
 pub use scalar::{
-    binomial, binomial_scalar, ratio, rational_root, rational_to_f64, recip_int, Field, Ordered,
-    Ring, Roots, Scalar, Tolerance,
+    binomial, binomial_scalar, ratio, rational_root, rational_to_f64, recip_int, Field, MulAcc,
+    Ordered, Ring, Roots, Scalar, Tolerance,
 };
 pub use sylvester::{linear_eliminant, resultant};
 pub use upoly::{BPoly, UPoly};

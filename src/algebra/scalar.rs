@@ -56,8 +56,15 @@ impl Default for Tolerance {
 /// paths, which contains no 1/2 and so is no `Scalar`. Algorithms that need
 /// only these operations (homogeneous de Casteljau with a homogeneous
 /// parameter) are bounded by `Ring`.
+///
+/// The trait is implemented for every type with these operations (and
+/// `'static`, so that the evaluation kernel can recognise the types it has
+/// a faster exact path for): a type outside this crate is a `Ring` by
+/// implementing the `std::ops` traits and num-traits' [`Zero`] and
+/// [`One`].
 pub trait Ring:
-    Clone
+    'static
+    + Clone
     + PartialEq
     + Debug
     + Send
@@ -75,7 +82,8 @@ pub trait Ring:
 }
 
 impl<T> Ring for T where
-    T: Clone
+    T: 'static
+        + Clone
         + PartialEq
         + Debug
         + Send
@@ -111,21 +119,16 @@ pub(crate) fn pow<T: Ring>(x: &T, e: u32) -> T {
 
 /// The multiply-accumulate step of the Horner–Bernstein kernel
 /// ([`crate::eval`]): `acc ← acc·a + c·x`. The default is those ring
-/// operations; a big-integer type overrides it to multiply `c·x` without
-/// copying an operand ([`Int`](crate::algebra::Int)).
+/// operations; a type may override it with a faster route to the same value
+/// (`f64` fuses the two products, the big-integer
+/// [`Int`](crate::algebra::Int) multiplies `c·x` without copying an
+/// operand). Every [`Scalar`] is a `MulAcc`; a scalar type of your own takes
+/// the default with an empty `impl MulAcc for MyScalar {}`.
 pub trait MulAcc: Ring {
     /// `*acc = acc·a + c·x`.
     fn mul_acc(acc: &mut Self, a: &Self, c: &Self, x: &Self) {
         let prev = std::mem::replace(acc, Self::zero());
         *acc = prev * a + &(c.clone() * x);
-    }
-
-    /// How many points the kernel sums at a time at the homogeneous
-    /// parameter `(a : b)` (see `eval::horner`): 1, unless products of
-    /// big numbers cost more than products by machine words.
-    fn horner_block(a: &Self, b: &Self) -> usize {
-        let _ = (a, b);
-        1
     }
 }
 
@@ -192,22 +195,6 @@ pub trait Field: Scalar + Div<Output = Self> + for<'a> Div<&'a Self, Output = Se
     fn recip(&self) -> Self {
         Self::one() / self
     }
-
-    /// The batch evaluation of [`Evaluator::eval_batch`](crate::eval::Evaluator::eval_batch):
-    /// the generic kernel point after point by default; an exact type may
-    /// take a faster route to the same values (`BigRational`: fraction-free
-    /// on machine integers, see [`crate::eval`]).
-    ///
-    /// # Errors
-    ///
-    /// [`Error::PointAtInfinity`](crate::Error::PointAtInfinity) where the weight vanishes.
-    fn eval_net(
-        ev: &mut crate::eval::Evaluator<Self>,
-        params: &[Self],
-        out: &mut [Self],
-    ) -> Result<(), crate::Error> {
-        ev.eval_batch_generic(params, out)
-    }
 }
 
 /// A [`Field`] with a sign and an `f64` approximation: exact rationals and
@@ -272,15 +259,7 @@ impl Scalar for BigRational {
         }
     }
 }
-impl Field for BigRational {
-    fn eval_net(
-        ev: &mut crate::eval::Evaluator<Self>,
-        params: &[Self],
-        out: &mut [Self],
-    ) -> Result<(), crate::Error> {
-        crate::eval::fraction_free::eval_batch(ev, params, out)
-    }
-}
+impl Field for BigRational {}
 impl Ordered for BigRational {
     fn to_f64(&self) -> f64 {
         rational_to_f64(self)

@@ -32,11 +32,11 @@
 //! subresultant is the gcd); Cohen, *A Course in Computational Algebraic
 //! Number Theory* (1993), §3.3.
 
+use crate::algebra::int::common_denominator;
 use crate::algebra::real_algebraic::polys::interpolate;
 use crate::algebra::scalar::Field;
 use crate::algebra::upoly::{BPoly, UPoly};
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
@@ -90,8 +90,7 @@ pub(crate) fn rational_determinant(m: Vec<Vec<BigRational>>) -> BigRational {
     let mut a: Vec<Vec<BigInt>> = m
         .iter()
         .map(|row| {
-            let l = row.iter().fold(BigInt::one(), |acc, x| acc.lcm(x.denom()));
-            let ints = row.iter().map(|x| x.numer() * (&l / x.denom())).collect();
+            let (ints, l) = common_denominator(row);
             scale *= l;
             ints
         })

@@ -208,12 +208,8 @@ impl IntNet {
     fn new(r: &RectPatch<Q>) -> Self {
         let n = r.degree().1;
         let cols: Vec<Vec<HPoint<Q>>> = (0..=n.min(2)).map(|j| r.column(j)).collect();
-        let all: Vec<&Q> = cols
-            .iter()
-            .flatten()
-            .flat_map(|p| p.coords.iter())
-            .collect();
-        let (nums, _) = common_denominator(&all);
+        let all = cols.iter().flatten().flat_map(|p| p.coords.iter());
+        let (nums, _) = common_denominator::<Int>(all);
         let len = cols[0][0].coords.len();
         let mut it = nums.into_iter();
         let cols = cols

@@ -14,7 +14,7 @@
 //! components are written back in the Bernstein basis of bidegree (m', n').
 //! A curve is the case n = 0.
 //!
-//! Conversions (exact): power coefficients from Bernstein ones
+//! Conversions (exact, [`crate::bernstein`]): power coefficients from Bernstein ones
 //! `a_k = C(m, k) Σ_{i≤k} C(k, i) (−1)^{k−i} b_i`, and back
 //! `b_i = Σ_{k≤i} C(i, k) / C(m', k) a_k`.
 //!
@@ -26,9 +26,10 @@
 //! only; the common-factor reduction is ours (issue 4).
 
 use crate::algebra::modp::Fp;
-use crate::algebra::scalar::{binomial_scalar, Field, Ordered, Scalar, Tolerance};
+use crate::algebra::scalar::{Field, Ordered, Scalar, Tolerance};
 use crate::algebra::upoly::{BPoly, UPoly};
 use crate::algebra::RealAlgebraic;
+use crate::bernstein::{bernstein_to_power, power_to_bernstein};
 use crate::coincide::coprime::coprime_by_intervals;
 use crate::curve::RationalCurve;
 use crate::error::Error;
@@ -43,56 +44,6 @@ pub(crate) type Net<T> = Vec<Vec<HPoint<T>>>;
 /// The net of a curve, as a (m, 0) patch.
 pub(crate) fn curve_net<T: Scalar>(c: &RationalCurve<T>) -> Net<T> {
     c.ctrl().iter().map(|p| vec![p.clone()]).collect()
-}
-
-/// Power-basis coefficients `a_0 … a_m` of `Σ b_i B_{i,m}(t)`:
-/// `a_k = C(m, k) Σ_{i≤k} C(k, i) (−1)^{k−i} b_i`.
-///
-/// ```
-/// use exact_bezier::{coincide::bernstein_to_power, ratio};
-/// use exact_bezier::BigRational;
-/// // Elevated constant: 1·B_{0,2} + 1·B_{1,2} + 1·B_{2,2} = 1.
-/// let one = ratio::<BigRational>(1, 1);
-/// let a = bernstein_to_power(&[one.clone(), one.clone(), one.clone()]);
-/// assert_eq!(a, vec![one, ratio(0, 1), ratio(0, 1)]);
-/// ```
-pub fn bernstein_to_power<T: Scalar>(b: &[T]) -> Vec<T> {
-    let m = b.len().saturating_sub(1);
-    (0..b.len())
-        .map(|k| {
-            let sum = (0..=k).fold(T::zero(), |acc, i| {
-                let term = binomial_scalar::<T>(k, i) * &b[i];
-                if (k - i) % 2 == 0 {
-                    acc + term
-                } else {
-                    acc - term
-                }
-            });
-            binomial_scalar::<T>(m, k) * &sum
-        })
-        .collect()
-}
-
-/// Bernstein coefficients of degree `m` of `Σ_k a_k t^k` (needs
-/// `a.len() ≤ m + 1`): `b_i = Σ_{k≤i} C(i, k) / C(m, k) a_k`.
-///
-/// ```
-/// use exact_bezier::{coincide::power_to_bernstein, ratio};
-/// use exact_bezier::BigRational;
-/// // t in degree 2: 0·B_0 + ½·B_1 + 1·B_2.
-/// let b = power_to_bernstein(&[ratio::<BigRational>(0, 1), ratio(1, 1)], 2);
-/// assert_eq!(b, vec![ratio(0, 1), ratio(1, 2), ratio(1, 1)]);
-/// ```
-pub fn power_to_bernstein<T: Field>(a: &[T], m: usize) -> Vec<T> {
-    (0..=m)
-        .map(|i| {
-            (0..=i.min(a.len().saturating_sub(1)))
-                .filter(|&k| k < a.len())
-                .fold(T::zero(), |acc, k| {
-                    acc + binomial_scalar::<T>(i, k) * &a[k] / &binomial_scalar::<T>(m, k)
-                })
-        })
-        .collect()
 }
 
 /// Apply `f` to every row and then to every column of a grid.

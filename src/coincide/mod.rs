@@ -35,10 +35,7 @@ pub mod minimal;
 pub use canonical::{canonical_key, dedup, CanonicalKey, Deduper};
 pub use canonical::{canonical_text, key_digest, Classes, KeyDigest, KEY_VERSION};
 pub use filter::{coincide_filtered, DecidedBy};
-pub use minimal::{
-    bernstein_to_power, minimal_curve, minimal_rect, multiply_components, power_to_bernstein,
-    Minimal, Reducible,
-};
+pub use minimal::{minimal_curve, minimal_rect, multiply_components, Minimal, Reducible};
 
 mod boundary;
 mod view;

@@ -21,12 +21,11 @@
 //! solved exactly for exact scalars. Reference: source 004 (circular arcs as
 //! rational cubics); the method is ours.
 
+use crate::algebra::int::common_denominator;
 use crate::algebra::scalar::{binomial_scalar, Field, Scalar, Tolerance};
 use crate::curve::RationalCurve;
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::One;
 use std::fmt;
 
 /// A circle: centre and squared radius (exact for exact scalars).
@@ -188,11 +187,7 @@ pub fn circle_of<T: Field>(
 /// assert_eq!(i.eval(&ratio(1, 5)).unwrap(), c.eval(&ratio(1, 5)).unwrap());
 /// ```
 pub fn integer_coords(curve: &RationalCurve<BigRational>) -> RationalCurve<BigRational> {
-    let lcm = curve
-        .ctrl()
-        .iter()
-        .flat_map(|h| h.coords.iter())
-        .fold(BigInt::one(), |acc, x| acc.lcm(x.denom()));
+    let (_, lcm) = common_denominator::<BigInt>(curve.ctrl().iter().flat_map(|h| h.coords.iter()));
     curve.scale_weights(&BigRational::from_integer(lcm))
 }
 

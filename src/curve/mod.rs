@@ -26,8 +26,9 @@ pub use geometry::{cross_norm_sq, ConicType, CurveEnd};
 pub use join::{g2_leading_points, join, Join};
 pub use reduction::Reduction;
 
-use crate::algebra::scalar::{ratio, Ordered, Scalar};
+use crate::algebra::scalar::{ratio, Field, Ordered, Scalar};
 use crate::error::Error;
+use crate::eval::{Evaluator, Jets, Net, Shape};
 use crate::hpoint::{check_positive_weights, HPoint};
 
 /// A rational Bézier curve `X(t) = Σ w_i P_i B_{i,n}(t) / Σ w_i B_{i,n}(t)`.
@@ -208,6 +209,40 @@ impl<T: Ordered> RationalCurve<T> {
     /// [`Error::Weight`] naming the first non-positive weight.
     pub fn check_positive_weights(&self) -> Result<(), Error> {
         check_positive_weights(std::slice::from_ref(&self.ctrl), |_, i| i.to_string())
+    }
+}
+
+/// # Batch evaluation (the nets of [`crate::eval`])
+impl<T: Scalar> Net<T> {
+    /// The net of a curve.
+    pub fn from_curve(c: &RationalCurve<T>) -> Self {
+        Net::from_points(c.ctrl(), Shape::Curve(c.degree()))
+            .expect("a validated curve has a consistent net")
+    }
+}
+
+impl<T: Field> Evaluator<T> {
+    /// An evaluator of a curve.
+    pub fn curve(c: &RationalCurve<T>) -> Self {
+        Self::new(Net::from_curve(c))
+    }
+}
+
+impl<T: Scalar> Jets<T> {
+    /// The jets of a curve: `H` and `H'`.
+    ///
+    /// ```
+    /// use exact_bezier::{eval::Jets, RationalCurve, ratio};
+    /// use exact_bezier::BigRational;
+    /// // The parabola X(t) = (t, t²): X'(t) = (1, 2t), weight 1 (w' = 0).
+    /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 2), ratio(y, 1)];
+    /// let c = RationalCurve::polynomial(vec![p(0, 0), p(1, 0), p(2, 1)]).unwrap();
+    /// let mut out = vec![ratio(0, 1); 6];
+    /// Jets::curve(&c).eval_batch(&[ratio(1, 3)], &mut out).unwrap();
+    /// assert_eq!(out[3..], [ratio(1, 1), ratio(2, 3), ratio(0, 1)]);
+    /// ```
+    pub fn curve(c: &RationalCurve<T>) -> Self {
+        Self::new(Net::from_curve(c))
     }
 }
 

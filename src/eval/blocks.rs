@@ -23,8 +23,7 @@
 //! the one-denominator kernel.
 
 use super::{horner_lanes, Net, Shape};
-use crate::algebra::gcd::lcm;
-use crate::algebra::int::Int;
+use crate::algebra::int::{common_denominator, Int};
 use crate::algebra::scalar::binomial;
 use crate::algebra::wide::Wide;
 use num_bigint::BigInt;
@@ -54,10 +53,10 @@ pub(crate) struct BlockedCurve {
 }
 
 impl BlockedCurve {
-    /// The blocks of a curve net of degree at least `2·BLOCK − 1`, or
-    /// `None` for a lower degree, another shape, or a block whose integers
-    /// exceed 255 bits.
-    pub(crate) fn new(net: &Net<BigRational>) -> Option<Self> {
+    /// The blocks of a curve net of degree at least `2·BLOCK − 1` whose
+    /// denominators have the lcm `global` (`L`), or `None` for a lower
+    /// degree, another shape, or a block whose integers exceed 255 bits.
+    pub(crate) fn new(net: &Net<BigRational>, global: &BigInt) -> Option<Self> {
         let Shape::Curve(n) = net.shape() else {
             return None;
         };
@@ -65,25 +64,19 @@ impl BlockedCurve {
             return None;
         }
         let stride = net.stride();
-        let chunks: Vec<&[BigRational]> = net.coords().chunks(BLOCK * stride).collect();
-        let local: Vec<BigInt> = chunks
-            .iter()
-            .map(|c| c.iter().fold(BigInt::one(), |l, q| lcm(&l, q.denom())))
-            .collect();
-        let global = local.iter().fold(BigInt::one(), |l, d| lcm(&l, d));
-        let mut blocks = Vec::with_capacity(chunks.len());
-        for (j, (chunk, den)) in chunks.iter().zip(&local).enumerate() {
-            let start = j * BLOCK;
+        let mut blocks = Vec::with_capacity((n + 1).div_ceil(BLOCK));
+        for (j, chunk) in net.coords().chunks(BLOCK * stride).enumerate() {
+            let (ints, den) = common_denominator::<BigInt>(chunk);
             let mut points = Vec::with_capacity(chunk.len());
-            for (r, point) in chunk.chunks_exact(stride).enumerate() {
-                let c = binomial(n, start + r);
-                for q in point {
-                    points.push(Wide::from_bigint(&(&c * q.numer() * (den / q.denom())))?);
+            for (r, point) in ints.chunks_exact(stride).enumerate() {
+                let c = binomial(n, j * BLOCK + r);
+                for x in point {
+                    points.push(Wide::from_bigint(&(&c * x))?);
                 }
             }
             let bits = points.iter().map(Wide::bits).max().unwrap_or(0);
             blocks.push(Block {
-                factor: &global / den,
+                factor: global / den,
                 points,
                 bits,
             });
@@ -168,9 +161,8 @@ mod tests {
     fn blocks_equal_the_one_denominator_kernel() {
         for n in [15, 16, 23, 40] {
             let rational = net(n);
-            let mut blocked = BlockedCurve::new(&rational).expect("degree ≥ 15 blocks");
-            let all: Vec<&BigRational> = rational.coords().iter().collect();
-            let (ints, _) = crate::algebra::int::common_denominator(&all);
+            let (ints, den) = common_denominator::<Int>(rational.coords());
+            let mut blocked = BlockedCurve::new(&rational, &den).expect("degree ≥ 15 blocks");
             let whole = rational.map_coords(ints);
             for (p, q) in [
                 (0i128, 1i128),
@@ -191,7 +183,7 @@ mod tests {
             assert!(!blocked.eval(&huge, &huge, &mut vec![BigInt::from(0); 3]));
         }
         assert!(
-            BlockedCurve::new(&net(14)).is_none(),
+            BlockedCurve::new(&net(14), &BigInt::one()).is_none(),
             "too few points for two blocks"
         );
     }

@@ -1,5 +1,5 @@
 //! Fraction-free exact evaluation, the `BigRational` fast path of
-//! [`Field::eval_net`](crate::Field::eval_net).
+//! [`Evaluator::eval_batch`].
 //!
 //! ```text
 //! net:    H_i = L·(w_i P_i, w_i) ∈ Zᵈ⁺¹        (L = lcm of all denominators, once)
@@ -32,12 +32,13 @@ use super::blocks::BlockedCurve;
 use super::{Evaluator, Net, Shape, Workspace};
 use crate::algebra::gcd::{fraction, gcd_u128};
 use crate::algebra::int::{common_denominator, Int};
-use crate::algebra::scalar::MulAcc;
+use crate::algebra::scalar::{Field, MulAcc};
 use crate::algebra::wide::Wide;
 use crate::error::Error;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::Zero;
+use std::any::Any;
 
 /// An integer type the kernel runs on.
 trait KernelInt: MulAcc {
@@ -49,6 +50,14 @@ trait KernelInt: MulAcc {
 
     /// `num / den` in lowest terms (`den ≠ 0`).
     fn fraction(num: &Self, den: &Self) -> BigRational;
+
+    /// How many points a Horner sum takes at a time at the homogeneous
+    /// parameter `(a : b)` (see `horner` in [`super`]): 1, unless products
+    /// of big numbers cost more than products by machine words.
+    fn horner_block(a: &Self, b: &Self) -> usize {
+        let _ = (a, b);
+        1
+    }
 }
 
 impl KernelInt for i128 {
@@ -95,6 +104,13 @@ impl KernelInt for Int {
     fn fraction(num: &Int, den: &Int) -> BigRational {
         fraction(num.to_bigint(), den.to_bigint())
     }
+
+    /// Blocks of `k` points with `a^k`, `b^k` below 2⁶³ (one machine word
+    /// each): parameters of `p` bits give `k = ⌊63/p⌋`.
+    fn horner_block(a: &Int, b: &Int) -> usize {
+        let bits = a.bits().max(b.bits()).max(1);
+        (63 / bits) as usize
+    }
 }
 
 /// The kernel on one integer type: the net converted once, its workspace
@@ -122,7 +138,7 @@ impl<T: KernelInt> Lane<T> {
         self.hom.clear();
         self.hom.extend(hom.iter().map(T::from_int));
         self.net
-            .eval_hom_into(&self.hom, &mut self.point, &mut self.ws);
+            .eval_hom_blocked(&self.hom, &mut self.point, &mut self.ws, T::horner_block);
         let (x, w) = self.point.split_at(self.point.len() - 1);
         if w[0].is_zero() {
             return Err(Error::PointAtInfinity);
@@ -141,6 +157,8 @@ impl<T: KernelInt> Lane<T> {
 struct Kernels<'a> {
     rational: &'a Net<BigRational>,
     net: Net<Int>,
+    /// The common denominator of `net`, the lcm of all denominators.
+    den: BigInt,
     /// Bits of the largest integer coordinate of the net.
     net_bits: u64,
     word: Option<Lane<i128>>,
@@ -151,11 +169,15 @@ struct Kernels<'a> {
 
 impl<'a> Kernels<'a> {
     fn new(rational: &'a Net<BigRational>) -> Self {
-        let net = integral(rational);
+        // A projective rescaling: the points of the integer net are those
+        // of `rational`.
+        let (nums, den) = common_denominator(rational.coords());
+        let net = rational.map_coords(nums);
         Kernels {
             rational,
             net_bits: net.coords().iter().map(Int::bits).max().unwrap_or(0),
             net,
+            den,
             word: None,
             wide: None,
             big: None,
@@ -180,9 +202,9 @@ impl<'a> Kernels<'a> {
                 .get_or_insert_with(|| Lane::new(net))
                 .eval(hom, out);
         }
-        let rational = self.rational;
+        let (rational, den) = (self.rational, &self.den);
         let blocked = self.blocked.get_or_insert_with(|| {
-            BlockedCurve::new(rational).map(|b| (b, vec![BigInt::zero(); rational.stride()]))
+            BlockedCurve::new(rational, den).map(|b| (b, vec![BigInt::zero(); rational.stride()]))
         });
         if let Some((curve, point)) = blocked {
             if curve.eval(&hom[0], &hom[1], point) {
@@ -219,29 +241,21 @@ fn value_bits(shape: Shape, net_bits: u64, param_bits: u64) -> u64 {
     }
 }
 
-/// The integer net over one common denominator (a projective rescaling:
-/// the points it represents are unchanged).
-fn integral(net: &Net<BigRational>) -> Net<Int> {
-    let all: Vec<&BigRational> = net.coords().iter().collect();
-    let (nums, _) = common_denominator(&all);
-    net.map_coords(nums)
-}
-
 /// The integer homogeneous parameters of one parameter point (machine
 /// words, no allocation, while its numbers fit).
-fn hom_params(shape: Shape, params: &[BigRational], hom: &mut Vec<Int>) {
+fn hom_params<'a>(shape: Shape, params: impl Iterator<Item = &'a BigRational>, hom: &mut Vec<Int>) {
     hom.clear();
-    let parts = |t: &BigRational| (Int::from_ref(t.numer()), Int::from_ref(t.denom()));
+    let mut parts = params.map(|t| (Int::from_ref(t.numer()), Int::from_ref(t.denom())));
     match shape {
         Shape::Curve(_) | Shape::Rect(..) => {
-            for t in params {
-                let (p, q) = parts(t);
+            for (p, q) in parts {
                 hom.push(q - &p);
                 hom.push(p);
             }
         }
         Shape::Tri(_) => {
-            let ((pu, qu), (pv, qv)) = (parts(&params[0]), parts(&params[1]));
+            let mut next = || parts.next().expect("a tri patch point has two parameters");
+            let ((pu, qu), (pv, qv)) = (next(), next());
             let g = qu.gcd(&qv);
             let (fu, fv) = (qv.div_exact(&g), qu.div_exact(&g));
             let q = qu * &fu;
@@ -252,21 +266,48 @@ fn hom_params(shape: Shape, params: &[BigRational], hom: &mut Vec<Int>) {
     }
 }
 
-/// The batch of [`Evaluator::eval_batch`] for `BigRational`, fraction-free.
-pub(crate) fn eval_batch(
-    ev: &Evaluator<BigRational>,
-    params: &[BigRational],
-    out: &mut [BigRational],
-) -> Result<(), Error> {
-    let shape = ev.net().shape();
-    let mut kernels = Kernels::new(ev.net());
-    let (k, d) = (shape.params(), ev.net().dim());
+/// The batch of [`Evaluator::eval_batch`], fraction-free, when `T` is
+/// `BigRational` (recognised by its type id); `None`, nothing done, for
+/// every other scalar.
+pub(super) fn eval_batch<T: Field>(
+    ev: &Evaluator<T>,
+    params: &[T],
+    out: &mut [T],
+) -> Option<Result<(), Error>> {
+    let net = (ev.net() as &dyn Any).downcast_ref::<Net<BigRational>>()?;
+    Some(eval_rational(net, params, out))
+}
+
+/// [`eval_batch`] on the net of a `BigRational` evaluator: the scalars
+/// `T` of `params` and `out` are `BigRational`.
+fn eval_rational<T: Any>(net: &Net<BigRational>, params: &[T], out: &mut [T]) -> Result<(), Error> {
+    let shape = net.shape();
+    let mut kernels = Kernels::new(net);
+    let (k, d) = (shape.params(), net.dim());
     let mut hom = Vec::with_capacity(4);
+    let mut point = vec![BigRational::zero(); d];
     for (p, o) in params.chunks(k).zip(out.chunks_mut(d)) {
-        hom_params(shape, p, &mut hom);
-        kernels.eval(&hom, o)?;
+        hom_params(shape, p.iter().map(rational), &mut hom);
+        kernels.eval(&hom, &mut point)?;
+        for (o, x) in o.iter_mut().zip(&mut point) {
+            std::mem::swap(rational_mut(o), x);
+        }
     }
     Ok(())
+}
+
+/// `x`, a `BigRational` as the type `T`, as a `BigRational`.
+fn rational<T: Any>(x: &T) -> &BigRational {
+    (x as &dyn Any)
+        .downcast_ref()
+        .expect("the scalar is BigRational")
+}
+
+/// [`rational`], mutable.
+fn rational_mut<T: Any>(x: &mut T) -> &mut BigRational {
+    (x as &mut dyn Any)
+        .downcast_mut()
+        .expect("the scalar is BigRational")
 }
 
 #[cfg(test)]
@@ -344,6 +385,22 @@ mod tests {
         }
     }
 
+    /// The fast path is taken for `BigRational` and only for it.
+    #[test]
+    fn only_rationals_take_the_fast_path() {
+        let exact = Net::new(
+            vec![ratio::<BigRational>(1, 2), ratio(1, 1)],
+            2,
+            Shape::Curve(0),
+        )
+        .unwrap();
+        let mut out = vec![ratio(0, 1)];
+        let result = eval_batch(&Evaluator::new(exact), &[ratio(1, 3)], &mut out);
+        assert_eq!((result, out), (Some(Ok(())), vec![ratio(1, 2)]));
+        let float = Evaluator::new(Net::new(vec![0.5, 1.0], 2, Shape::Curve(0)).unwrap());
+        assert_eq!(eval_batch(&float, &[0.25], &mut [0.0]), None);
+    }
+
     proptest! {
         // Degree-40 points on the generic path cost milliseconds each.
         #![proptest_config(ProptestConfig::with_cases(48))]
@@ -371,8 +428,7 @@ mod tests {
                     crate::hpoint::HPoint { coords }
                 })
                 .collect();
-            let c = crate::RationalCurve::from_hom(pts).unwrap();
-            let mut ev = Evaluator::curve(&c);
+            let mut ev = Evaluator::new(Net::from_points(&pts, Shape::Curve(n)).unwrap());
             let mut fast = vec![ratio(0, 1); 2];
             let mut generic = fast.clone();
             let fast_result = ev.eval_batch(std::slice::from_ref(&t), &mut fast);

@@ -21,11 +21,8 @@
 
 use super::{Net, Shape, Workspace};
 use crate::algebra::scalar::Scalar;
-use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::rect::RectPatch;
-use crate::tri::TriPatch;
 
 /// A homogeneous point and its first partial derivatives at one parameter
 /// point: `H(u, v)`, `∂H/∂u`, `∂H/∂v` (each `(w·P, w)`-shaped).
@@ -64,55 +61,45 @@ pub struct Jets<T> {
 }
 
 impl<T: Scalar> Jets<T> {
-    /// The jets of a curve: `H` and `H'`.
-    ///
-    /// ```
-    /// use exact_bezier::{eval::Jets, RationalCurve, ratio};
-    /// use exact_bezier::BigRational;
-    /// // The parabola X(t) = (t, t²): X'(t) = (1, 2t), weight 1 (w' = 0).
-    /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 2), ratio(y, 1)];
-    /// let c = RationalCurve::polynomial(vec![p(0, 0), p(1, 0), p(2, 1)]).unwrap();
-    /// let mut out = vec![ratio(0, 1); 6];
-    /// Jets::curve(&c).eval_batch(&[ratio(1, 3)], &mut out).unwrap();
-    /// assert_eq!(out[3..], [ratio(1, 1), ratio(2, 3), ratio(0, 1)]);
-    /// ```
-    pub fn curve(c: &RationalCurve<T>) -> Self {
-        let n = c.degree();
-        let ctrl = c.ctrl();
-        let dt = difference_net(Shape::Curve(n.saturating_sub(1)), n, c.dim(), |i, _| {
-            (n > 0).then(|| (&ctrl[i + 1], &ctrl[i]))
-        });
-        Self::from_nets(vec![Net::from_curve(c), dt])
-    }
-
-    /// The jets of a rect patch: `H`, `H_u`, `H_v`.
-    pub fn rect(r: &RectPatch<T>) -> Self {
-        let (m, n) = r.degree();
-        let ctrl = r.ctrl();
-        let du = difference_net(Shape::Rect(m.saturating_sub(1), n), m, r.dim(), |i, j| {
-            (m > 0).then(|| (&ctrl[i + 1][j], &ctrl[i][j]))
-        });
-        let dv = difference_net(Shape::Rect(m, n.saturating_sub(1)), n, r.dim(), |i, j| {
-            (n > 0).then(|| (&ctrl[i][j + 1], &ctrl[i][j]))
-        });
-        Self::from_nets(vec![Net::from_rect(r), du, dv])
-    }
-
-    /// The jets of a tri patch: `H`, `H_u`, `H_v` (`w = 1 − u − v`).
-    pub fn tri(t: &TriPatch<T>) -> Self {
-        let n = t.degree();
-        let rows = t.rows();
-        let lower = Shape::Tri(n.saturating_sub(1));
-        let du = difference_net(lower, n, t.dim(), |i, j| {
-            (n > 0).then(|| (&rows[j][i + 1], &rows[j][i]))
-        });
-        let dv = difference_net(lower, n, t.dim(), |i, j| {
-            (n > 0).then(|| (&rows[j + 1][i], &rows[j][i]))
-        });
-        Self::from_nets(vec![Net::from_tri(t), du, dv])
-    }
-
-    fn from_nets(nets: Vec<Net<T>>) -> Self {
+    /// The jets of a net: `H` and `H'` for a curve, `H`, `H_u`, `H_v` for
+    /// a patch (`w = 1 − u − v` for a tri patch), each derivative on a
+    /// difference net of `net` built here. The jets of curves and patches
+    /// are [`Jets::curve`], [`Jets::rect`] and [`Jets::tri`].
+    pub fn new(net: Net<T>) -> Self {
+        let derivatives = match net.shape() {
+            Shape::Curve(n) => vec![difference_net(
+                &net,
+                Shape::Curve(n.saturating_sub(1)),
+                n,
+                |i, _| (n > 0).then(|| (i + 1, i)),
+            )],
+            Shape::Rect(m, n) => {
+                let at = |i: usize, j: usize| i * (n + 1) + j;
+                vec![
+                    difference_net(&net, Shape::Rect(m.saturating_sub(1), n), m, |i, j| {
+                        (m > 0).then(|| (at(i + 1, j), at(i, j)))
+                    }),
+                    difference_net(&net, Shape::Rect(m, n.saturating_sub(1)), n, |i, j| {
+                        (n > 0).then(|| (at(i, j + 1), at(i, j)))
+                    }),
+                ]
+            }
+            Shape::Tri(n) => {
+                // Row j starts after the n + 1, n, …, n − j + 2 points of rows 0 … j − 1.
+                let at = |i: usize, j: usize| j * (n + 1) - j * j.saturating_sub(1) / 2 + i;
+                let lower = Shape::Tri(n.saturating_sub(1));
+                vec![
+                    difference_net(&net, lower, n, |i, j| {
+                        (n > 0).then(|| (at(i + 1, j), at(i, j)))
+                    }),
+                    difference_net(&net, lower, n, |i, j| {
+                        (n > 0).then(|| (at(i, j + 1), at(i, j)))
+                    }),
+                ]
+            }
+        };
+        let mut nets = vec![net];
+        nets.extend(derivatives);
         let workspaces = nets.iter().map(Net::workspace).collect();
         Jets {
             nets,
@@ -188,29 +175,31 @@ impl<T: Scalar> Jets<T> {
 
 /// The net of `shape` whose point `(i, j)` (row `i`, position `j` for a
 /// rect; row `j`, position `i` for a tri, as [`Shape`] orders them) is
-/// `k·(a − b)` for `pair(i, j) = Some((a, b))`, or the zero net when the
-/// degree `k` is 0.
-fn difference_net<'a, T: Scalar + 'a>(
+/// `k·(H_a − H_b)` for `pair(i, j) = Some((a, b))`, with `H_a` the point of
+/// index `a` of `net`, or the zero net when the degree `k` is 0.
+fn difference_net<T: Scalar>(
+    net: &Net<T>,
     shape: Shape,
     k: usize,
-    dim: usize,
-    pair: impl Fn(usize, usize) -> Option<(&'a HPoint<T>, &'a HPoint<T>)>,
+    pair: impl Fn(usize, usize) -> Option<(usize, usize)>,
 ) -> Net<T> {
     let factor = T::from_i64(k as i64);
-    let mut coords = Vec::with_capacity(shape.points() * (dim + 1));
+    let s = net.stride();
+    let point = |p: usize| &net.coords()[p * s..(p + 1) * s];
+    let mut coords = Vec::with_capacity(shape.points() * s);
     let mut push = |i: usize, j: usize| match pair(i, j) {
         Some((a, b)) => coords.extend(
-            a.coords
+            point(a)
                 .iter()
-                .zip(&b.coords)
+                .zip(point(b))
                 .map(|(x, y)| (x.clone() - y) * &factor),
         ),
-        None => coords.extend((0..=dim).map(|_| T::zero())),
+        None => coords.extend((0..s).map(|_| T::zero())),
     };
     match shape {
         Shape::Rect(m, n) => (0..=m).for_each(|i| (0..=n).for_each(|j| push(i, j))),
         Shape::Tri(n) => (0..=n).for_each(|j| (0..=n - j).for_each(|i| push(i, j))),
         Shape::Curve(n) => (0..=n).for_each(|i| push(i, 0)),
     }
-    Net::new(coords, dim + 1, shape).expect("a difference net has its shape")
+    Net::new(coords, s, shape).expect("a difference net has its shape")
 }

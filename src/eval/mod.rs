@@ -20,9 +20,9 @@
 //! At `(a : b) = (1 − t : t)` the curve sum is `X(t)` in homogeneous form;
 //! at `(q − p : p)` for `t = p/q` it is `qⁿ` times it, with integer
 //! arithmetic throughout when the net is integral. That is how exact
-//! evaluation stays fraction-free: [`Field::eval_net`] is the per-type hook,
-//! and `BigRational` clears the denominators of the net once, runs the
-//! same kernel on the narrowest integer type that provably holds its
+//! evaluation stays fraction-free: [`Evaluator::eval_batch`] recognises
+//! `BigRational` (by its type id), clears the denominators of the net
+//! once, runs the same kernel on the narrowest integer type that provably holds its
 //! values (`i128`, [`Wide`](crate::algebra::Wide) or
 //! [`Int`](crate::algebra::Int): no gcd, no allocation below 256 bits) and
 //! divides once per coordinate (`fraction_free`). Curves of high degree
@@ -46,17 +46,14 @@
 //! homogeneous form avoids its division by `1 − t`.
 
 mod blocks;
-pub(crate) mod fraction_free;
+mod fraction_free;
 mod jet;
 
 pub use jet::{Jet, Jets};
 
 use crate::algebra::scalar::{pow, Field, MulAcc, Ring};
-use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::rect::RectPatch;
-use crate::tri::TriPatch;
 use std::sync::OnceLock;
 
 /// The shape of a [`Net`]: which Bernstein sum it evaluates.
@@ -68,7 +65,8 @@ pub enum Shape {
     /// (the u index) holding the `n + 1` points of index `(i, 0) … (i, n)`.
     Rect(usize, usize),
     /// A tri patch of degree `n`: rows `j = 0 … n` of `n − j + 1` points
-    /// `P_{i,j,k}`, `i = 0 … n − j` (the layout of [`TriPatch::rows`]).
+    /// `P_{i,j,k}`, `i = 0 … n − j` (the layout of
+    /// [`TriPatch::rows`](crate::TriPatch::rows)).
     Tri(usize),
 }
 
@@ -153,43 +151,38 @@ impl<T: Ring> Net<T> {
         Ok(Net::with_coords(coords, stride, shape))
     }
 
-    /// The net of `shape` from homogeneous points, in the order of [`Shape`].
-    fn from_points<'a>(points: impl Iterator<Item = &'a HPoint<T>>, shape: Shape) -> Self
-    where
-        T: 'a,
-    {
+    /// The net of `shape` from homogeneous points `(w·P, w)`, in the order
+    /// of [`Shape`]. The nets of curves and patches are
+    /// [`Net::from_curve`], [`Net::from_rect`] and [`Net::from_tri`].
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Shape`] if the points differ in length, or are not
+    /// `shape.points()` points of at least 2 coordinates.
+    ///
+    /// ```
+    /// use exact_bezier::eval::{Net, Shape};
+    /// use exact_bezier::hpoint::HPoint;
+    /// let h = |x: f64, w: f64| HPoint { coords: vec![x * w, w] };
+    /// let net = Net::from_points(&[h(0.0, 1.0), h(1.0, 2.0)], Shape::Curve(1)).unwrap();
+    /// assert_eq!(net.coords(), &[0.0, 1.0, 2.0, 2.0]);
+    /// assert!(Net::from_points(&[h(0.0, 1.0)], Shape::Curve(1)).is_err());
+    /// ```
+    pub fn from_points<'a>(
+        points: impl IntoIterator<Item = &'a HPoint<T>>,
+        shape: Shape,
+    ) -> Result<Self, Error> {
         let mut coords = Vec::with_capacity(shape.points() * 4);
-        let mut stride = 0;
+        let mut stride = None;
         for p in points {
-            stride = p.coords.len();
+            if *stride.get_or_insert(p.coords.len()) != p.coords.len() {
+                return Err(Error::Shape(format!(
+                    "the points of a {shape:?} net differ in length"
+                )));
+            }
             coords.extend(p.coords.iter().cloned());
         }
-        Net::new(coords, stride, shape).expect("a validated curve or patch has a consistent net")
-    }
-
-    /// The net of a curve.
-    pub fn from_curve(c: &RationalCurve<T>) -> Self
-    where
-        T: crate::Scalar,
-    {
-        Self::from_points(c.ctrl().iter(), Shape::Curve(c.degree()))
-    }
-
-    /// The net of a rect patch.
-    pub fn from_rect(r: &RectPatch<T>) -> Self
-    where
-        T: crate::Scalar,
-    {
-        let (m, n) = r.degree();
-        Self::from_points(r.ctrl().iter().flatten(), Shape::Rect(m, n))
-    }
-
-    /// The net of a tri patch.
-    pub fn from_tri(t: &TriPatch<T>) -> Self
-    where
-        T: crate::Scalar,
-    {
-        Self::from_points(t.rows().iter().flatten(), Shape::Tri(t.degree()))
+        Net::new(coords, stride.unwrap_or(0), shape)
     }
 }
 
@@ -331,26 +324,50 @@ impl<T: MulAcc> Net<T> {
     /// **Panics if `hom` has the wrong length for the shape** (2, 4 or 3),
     /// or `out` is not `stride` long.
     pub fn eval_hom_into(&self, hom: &[T], out: &mut [T], ws: &mut Workspace<T>) {
+        self.eval_hom_blocked(hom, out, ws, |_, _| 1);
+    }
+
+    /// [`Net::eval_hom_into`] with each Horner sum at a homogeneous
+    /// parameter `(a : b)` taken in blocks of `block(a, b)` points
+    /// ([`horner`]): the same values, faster for big integers at
+    /// machine-word parameters (the fraction-free kernel's `Int` lane).
+    pub(crate) fn eval_hom_blocked(
+        &self,
+        hom: &[T],
+        out: &mut [T],
+        ws: &mut Workspace<T>,
+        block: impl Fn(&T, &T) -> usize + Copy,
+    ) {
         let s = self.stride;
+        let sum = |points: &[T], a: &T, b: &T, out: &mut [T], scratch: &mut Vec<T>| {
+            horner(points, s, a, b, block(a, b), out, scratch)
+        };
         match self.shape {
-            Shape::Curve(_) => horner(self.scaled(), s, &hom[0], &hom[1], out, &mut ws.block),
+            Shape::Curve(_) => sum(self.scaled(), &hom[0], &hom[1], out, &mut ws.block),
             Shape::Rect(_, n) => {
                 let row_len = (n + 1) * s;
-                for (row, sum) in self
+                for (row, out) in self
                     .scaled()
                     .chunks_exact(row_len)
                     .zip(ws.rows.chunks_mut(s))
                 {
-                    horner(row, s, &hom[2], &hom[3], sum, &mut ws.block);
+                    sum(row, &hom[2], &hom[3], out, &mut ws.block);
                 }
-                horner(&ws.rows, s, &hom[0], &hom[1], out, &mut ws.block);
+                sum(&ws.rows, &hom[0], &hom[1], out, &mut ws.block);
             }
-            Shape::Tri(n) => self.tri_into(n, hom, out, ws),
+            Shape::Tri(n) => self.tri_into(n, hom, out, ws, block),
         }
     }
 
     /// `Σ_j vʲ R_j` with `R_j = Σ_i uⁱ w^{n−j−i} G_ij`.
-    fn tri_into(&self, n: usize, hom: &[T], out: &mut [T], ws: &mut Workspace<T>) {
+    fn tri_into(
+        &self,
+        n: usize,
+        hom: &[T],
+        out: &mut [T],
+        ws: &mut Workspace<T>,
+        block: impl Fn(&T, &T) -> usize,
+    ) {
         let (u, v, w) = (&hom[0], &hom[1], &hom[2]);
         let s = self.stride;
         let mut start = 0;
@@ -362,6 +379,7 @@ impl<T: MulAcc> Net<T> {
                 s,
                 w,
                 u,
+                block(w, u),
                 &mut ws.rows,
                 &mut ws.block,
             );
@@ -384,9 +402,9 @@ impl<T: MulAcc> Net<T> {
 /// (already times their binomials) are the `stride`-long chunks of
 /// `points`.
 ///
-/// When `T` asks for blocks of `k > 1` points ([`MulAcc::horner_block`]:
-/// big integers at machine-word parameters), the sum goes block by block,
-/// `block` holding one block's sum:
+/// For blocks of `k > 1` points (big integers at machine-word parameters,
+/// see `fraction_free`), the sum goes block by block, `block` holding one
+/// block's sum:
 ///
 /// ```text
 /// C_j = Σ_{r<k_j} a^{k_j−1−r} bʳ G_{s_j+r}        (powers of a, b below k: machine words)
@@ -395,8 +413,15 @@ impl<T: MulAcc> Net<T> {
 ///
 /// so that a product of two big numbers (`b^{s_j}·C_j`) comes once per
 /// block instead of once per point.
-fn horner<T: MulAcc>(points: &[T], stride: usize, a: &T, b: &T, out: &mut [T], block: &mut Vec<T>) {
-    let k = T::horner_block(a, b);
+fn horner<T: MulAcc>(
+    points: &[T],
+    stride: usize,
+    a: &T,
+    b: &T,
+    k: usize,
+    out: &mut [T],
+    block: &mut Vec<T>,
+) {
     if k <= 1 {
         return horner_lanes::<T, 1>(points, stride, [a], [b], out);
     }
@@ -558,7 +583,8 @@ pub struct Evaluator<T> {
 const LANES: usize = 4;
 
 impl<T: Field> Evaluator<T> {
-    /// An evaluator of `net`.
+    /// An evaluator of `net` (of a curve or a patch:
+    /// [`Evaluator::curve`], [`Evaluator::rect`], [`Evaluator::tri`]).
     pub fn new(net: Net<T>) -> Self {
         let ws = net.workspace();
         let point = vec![T::zero(); net.stride];
@@ -569,21 +595,6 @@ impl<T: Field> Evaluator<T> {
             point,
             lanes: Vec::new(),
         }
-    }
-
-    /// An evaluator of a curve.
-    pub fn curve(c: &RationalCurve<T>) -> Self {
-        Self::new(Net::from_curve(c))
-    }
-
-    /// An evaluator of a rect patch.
-    pub fn rect(r: &RectPatch<T>) -> Self {
-        Self::new(Net::from_rect(r))
-    }
-
-    /// An evaluator of a tri patch.
-    pub fn tri(t: &TriPatch<T>) -> Self {
-        Self::new(Net::from_tri(t))
     }
 
     /// The net being evaluated.
@@ -608,8 +619,9 @@ impl<T: Field> Evaluator<T> {
 
     /// The points at a batch of parameters: `params` holds one parameter
     /// (curve) or two (patch) per point, back to back; `out` receives `dim`
-    /// coordinates per point. Exact types take their fast path
-    /// ([`Field::eval_net`]: fraction-free for `BigRational`).
+    /// coordinates per point. `BigRational` takes the fraction-free path
+    /// of the module documentation, every other scalar the generic kernel
+    /// (the values are the same).
     ///
     /// # Errors
     ///
@@ -623,13 +635,14 @@ impl<T: Field> Evaluator<T> {
             self.net.dim(),
             out.len(),
         )?;
-        T::eval_net(self, params, out)
+        fraction_free::eval_batch(self, params, out)
+            .unwrap_or_else(|| self.eval_batch_generic(params, out))
     }
 
     /// The generic batch: [`Evaluator::eval_into`] point after point.
     /// Curves go [`LANES`] points at a time ([`horner_lanes`]); the rest,
     /// and patches, one at a time.
-    pub(crate) fn eval_batch_generic(&mut self, params: &[T], out: &mut [T]) -> Result<(), Error> {
+    fn eval_batch_generic(&mut self, params: &[T], out: &mut [T]) -> Result<(), Error> {
         let (k, d) = (self.net.shape.params(), self.net.dim());
         let mut done = 0;
         if let (Shape::Curve(_), true) = (self.net.shape, params.len() >= LANES) {

@@ -1,7 +1,7 @@
 use super::*;
 use crate::algebra::scalar::ratio;
 use crate::hpoint::de_casteljau_hom;
-use crate::Poly;
+use crate::{Poly, RationalCurve, RectPatch, TriPatch};
 use num_rational::BigRational;
 use num_traits::Zero;
 

@@ -16,6 +16,7 @@
 //! parameters where `φ` is 0, 1 or infinite.
 
 use super::system::{PowerCurve, QPoly};
+use crate::algebra::int::common_denominator;
 use crate::algebra::sylvester::determinant;
 use crate::algebra::UPoly;
 use num_bigint::BigInt;
@@ -41,15 +42,7 @@ impl Mobius {
     /// The same map with coprime integer coefficients and `d > 0` (or
     /// `c > 0` when `d = 0`): the identity is `[1, 0, 0, 1]`.
     fn normalized(&self) -> Mobius {
-        let lcm = self
-            .coeffs
-            .iter()
-            .fold(BigInt::one(), |acc, x| acc.lcm(x.denom()));
-        let ints: Vec<BigInt> = self
-            .coeffs
-            .iter()
-            .map(|x| (x * BigRational::from_integer(lcm.clone())).to_integer())
-            .collect();
+        let (ints, _): (Vec<BigInt>, _) = common_denominator(&self.coeffs);
         let gcd = ints.iter().fold(BigInt::zero(), |g, x| g.gcd(x));
         let [_, _, c, d] = &self.coeffs;
         let negative = d.is_negative() || (d.is_zero() && c.is_negative());

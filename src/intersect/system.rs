@@ -27,7 +27,7 @@
 use crate::algebra::real_algebraic::polys;
 use crate::algebra::sylvester::{linear_eliminant_in_t, resultant_in_t};
 use crate::algebra::{BPoly, RealAlgebraic, Scalar, UPoly};
-use crate::coincide::bernstein_to_power;
+use crate::bernstein::bernstein_to_power;
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use num_rational::BigRational;

@@ -18,9 +18,10 @@ pub mod ops;
 pub use join::{g0_join, g1_join};
 pub use ops::Corner;
 
-use crate::algebra::scalar::{Ordered, Scalar};
+use crate::algebra::scalar::{Field, Ordered, Scalar};
 use crate::curve::{elevate_once, mobius_factors, RationalCurve};
 use crate::error::Error;
+use crate::eval::{Evaluator, Jets, Net, Shape};
 use crate::hpoint::{check_positive_weights, de_casteljau, HPoint};
 
 /// A rational tensor-product Bézier patch of bidegree (m, n).
@@ -290,6 +291,30 @@ impl<T: Ordered> RectPatch<T> {
     /// [`Error::Weight`] naming the first non-positive weight.
     pub fn check_positive_weights(&self) -> Result<(), Error> {
         check_positive_weights(&self.ctrl, |i, j| format!("{{{i},{j}}}"))
+    }
+}
+
+/// # Batch evaluation (the nets of [`crate::eval`])
+impl<T: Scalar> Net<T> {
+    /// The net of a rect patch.
+    pub fn from_rect(r: &RectPatch<T>) -> Self {
+        let (m, n) = r.degree();
+        Net::from_points(r.ctrl().iter().flatten(), Shape::Rect(m, n))
+            .expect("a validated patch has a consistent net")
+    }
+}
+
+impl<T: Field> Evaluator<T> {
+    /// An evaluator of a rect patch.
+    pub fn rect(r: &RectPatch<T>) -> Self {
+        Self::new(Net::from_rect(r))
+    }
+}
+
+impl<T: Scalar> Jets<T> {
+    /// The jets of a rect patch: `H`, `H_u`, `H_v`.
+    pub fn rect(r: &RectPatch<T>) -> Self {
+        Self::new(Net::from_rect(r))
     }
 }
 

@@ -15,8 +15,9 @@
 //!
 //! Reference: source 001 (lecture), "三角域Bézier曲面".
 
-use crate::algebra::scalar::{Ordered, Ring};
+use crate::algebra::scalar::{Field, Ordered, Ring, Scalar};
 use crate::error::Error;
+use crate::eval::{Evaluator, Jets, Net, Shape};
 use crate::hpoint::{check_positive_weights, HPoint};
 
 mod basics;
@@ -78,6 +79,29 @@ impl<T: Ordered> TriPatch<T> {
     /// [`Error::Weight`] naming the first non-positive weight.
     pub fn check_positive_weights(&self) -> Result<(), Error> {
         check_positive_weights(&self.rows, |j, i| format!("{{{i},{j},{}}}", self.n - i - j))
+    }
+}
+
+/// # Batch evaluation (the nets of [`crate::eval`])
+impl<T: Scalar> Net<T> {
+    /// The net of a tri patch.
+    pub fn from_tri(t: &TriPatch<T>) -> Self {
+        Net::from_points(t.rows().iter().flatten(), Shape::Tri(t.degree()))
+            .expect("a validated patch has a consistent net")
+    }
+}
+
+impl<T: Field> Evaluator<T> {
+    /// An evaluator of a tri patch.
+    pub fn tri(t: &TriPatch<T>) -> Self {
+        Self::new(Net::from_tri(t))
+    }
+}
+
+impl<T: Scalar> Jets<T> {
+    /// The jets of a tri patch: `H`, `H_u`, `H_v` (`w = 1 − u − v`).
+    pub fn tri(t: &TriPatch<T>) -> Self {
+        Self::new(Net::from_tri(t))
     }
 }
 

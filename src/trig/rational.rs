@@ -26,7 +26,7 @@
 //! Reference: source 002 eq. (1); the half-angle substitution is ours.
 
 use crate::algebra::scalar::{ratio, Scalar};
-use crate::coincide::minimal::power_to_bernstein;
+use crate::bernstein::power_to_bernstein;
 use crate::curve::RationalCurve;
 use crate::hpoint::HPoint;
 use crate::rect::RectPatch;

@@ -20,6 +20,7 @@
 //! §3.3 (resultants), §4.1–4.2 (Sturm, Cauchy bound); Yap, *Fundamental
 //! Problems of Algorithmic Algebra*, ch. 7.
 
+use crate::algebra::int::common_denominator;
 use crate::algebra::upoly::UPoly;
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -102,15 +103,7 @@ pub(crate) fn gcd(a: &QPoly, b: &QPoly) -> QPoly {
 /// `p` scaled to integer coefficients with gcd 1 and a positive leading
 /// coefficient.
 pub(crate) fn primitive_integer(p: &QPoly) -> Vec<BigInt> {
-    let den = p
-        .coeffs()
-        .iter()
-        .fold(BigInt::one(), |acc, c| acc.lcm(c.denom()));
-    let ints: Vec<BigInt> = p
-        .coeffs()
-        .iter()
-        .map(|c| (c * BigRational::from_integer(den.clone())).to_integer())
-        .collect();
+    let (ints, _): (Vec<BigInt>, _) = common_denominator(p.coeffs());
     let g = ints.iter().fold(BigInt::zero(), |acc, c| acc.gcd(c));
     let sign = if p.lead().is_some_and(|l| l.is_negative()) {
         -BigInt::one()
@@ -135,15 +128,7 @@ impl SignPoly {
     /// `p` times the positive lcm of its denominators, divided by the
     /// positive gcd of the resulting integers.
     pub(crate) fn new(p: &QPoly) -> Self {
-        let den = p
-            .coeffs()
-            .iter()
-            .fold(BigInt::one(), |acc, c| acc.lcm(c.denom()));
-        let ints: Vec<BigInt> = p
-            .coeffs()
-            .iter()
-            .map(|c| c.numer() * (&den / c.denom()))
-            .collect();
+        let (ints, _): (Vec<BigInt>, _) = common_denominator(p.coeffs());
         let g = ints.iter().fold(BigInt::zero(), |acc, c| acc.gcd(c));
         if g.is_zero() {
             return SignPoly(Vec::new());
@@ -382,13 +367,7 @@ pub(crate) fn interpolate(values: &[BigRational]) -> QPoly {
     let Some(deg) = values.len().checked_sub(1) else {
         return UPoly::zero();
     };
-    let l = values
-        .iter()
-        .fold(BigInt::one(), |acc, v| acc.lcm(v.denom()));
-    let mut diff: Vec<BigInt> = values
-        .iter()
-        .map(|v| v.numer() * (&l / v.denom()))
-        .collect();
+    let (mut diff, l): (Vec<BigInt>, _) = common_denominator(values);
     for level in 1..=deg {
         for k in (level..=deg).rev() {
             diff[k] = &diff[k] - &diff[k - 1];
