@@ -188,7 +188,9 @@ impl<'a> Kernels<'a> {
     /// The point at `hom` on the narrowest kernel its bound admits.
     fn eval(&mut self, hom: &[Int], out: &mut [BigRational]) -> Result<(), Error> {
         let param_bits = hom.iter().map(Int::bits).max().unwrap_or(0);
-        let bits = value_bits(self.net.shape(), self.net_bits, param_bits);
+        // The lane holds the parameters too: of degree 0, they enter no
+        // value of the kernel but must still fit its integers.
+        let bits = value_bits(self.net.shape(), self.net_bits, param_bits).max(param_bits);
         let net = &self.net;
         if bits <= <i128 as KernelInt>::BITS {
             return self
@@ -338,6 +340,20 @@ mod tests {
     /// value computed on `Int` has fewer than `E` bits, for every shape and
     /// degree up to 12, and the narrow kernels agree with `Int` whenever
     /// the bound admits them.
+    #[test]
+    fn degree_zero_takes_parameters_of_any_size() {
+        // A constant curve and patches at a 200-bit parameter: the
+        // parameters alone outgrow the word and wide tiers.
+        let t = BigRational::new(BigInt::from(1), BigInt::from(3) << 200);
+        let p = vec![ratio::<BigRational>(5, 7), ratio(-2, 1)];
+        let curve = crate::RationalCurve::new(vec![p.clone()], vec![ratio(3, 1)]).unwrap();
+        assert_eq!(curve.eval(&t).unwrap(), p);
+        let rect = crate::RectPatch::new(vec![vec![p.clone()]], vec![vec![ratio(3, 1)]]).unwrap();
+        assert_eq!(rect.eval(&t, &t).unwrap(), p);
+        let tri = crate::TriPatch::new(vec![vec![p.clone()]], vec![vec![ratio(3, 1)]]).unwrap();
+        assert_eq!(tri.eval(&t, &t).unwrap(), p);
+    }
+
     #[test]
     fn bound_holds_at_the_extremes() {
         for d in 0..=12usize {
