@@ -6,9 +6,9 @@
 use super::open_input;
 use exact_bezier::audit::{audit, read_model, Audit, Continuity, Model, PatchEdge};
 use exact_bezier::coincide::boundary_curve;
-use exact_bezier::Error;
 use exact_bezier::io::Patch;
 use exact_bezier::render::plot::{plot_colored_png, PlotOptions};
+use exact_bezier::Error;
 use num_rational::BigRational;
 use serde_json::{json, Value};
 

@@ -2,10 +2,10 @@
 //! of a chunk of records on all cores, the progress bar, the exit code.
 
 use super::{patch_op_cost, ExactScalar};
-use exact_bezier::algebra::Scalar;
 use exact_bezier::algebra::RealAlgebraic;
-use exact_bezier::Error;
+use exact_bezier::algebra::Scalar;
 use exact_bezier::io::{Patch, Record};
+use exact_bezier::Error;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle, TermLike};
 use num_rational::BigRational;
 use rayon::prelude::*;

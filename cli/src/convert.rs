@@ -11,10 +11,10 @@ use super::{
 use exact_bezier::algebra::{Field, Ordered, Scalar};
 use exact_bezier::audit::{piece_to_json, read_model};
 use exact_bezier::convert::{rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Split};
-use exact_bezier::Error;
 use exact_bezier::io::trig::{read_trig_patches, TrigPatch};
 use exact_bezier::io::{patch_to_json, JsonScalar, Patch};
 use exact_bezier::limits::{self, check_result_degree, Size};
+use exact_bezier::Error;
 use num_rational::BigRational;
 use serde_json::Value;
 

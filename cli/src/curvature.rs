@@ -10,9 +10,9 @@ use super::{
     charge_each, load_exact, on_exact, one_or_many, run_each, ExactScalar, PatchOp, ScalarKind,
 };
 use exact_bezier::algebra::{Ordered, Roots, Scalar};
-use exact_bezier::Error;
 use exact_bezier::io::{JsonScalar, Patch};
 use exact_bezier::limits::Size;
+use exact_bezier::Error;
 use serde_json::{json, Value};
 
 /// Arguments of `curvature`.

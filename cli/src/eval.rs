@@ -13,10 +13,10 @@ use super::{
     patch_op_cost, read_input, ExactPatches, ExactScalar, ScalarKind,
 };
 use exact_bezier::algebra::{Field, Scalar};
-use exact_bezier::Error;
 use exact_bezier::eval::Evaluator;
 use exact_bezier::io::{point_to_json, JsonScalar, Patch};
 use exact_bezier::limits::Size;
+use exact_bezier::Error;
 use num_rational::BigRational;
 use serde_json::{json, Value};
 

@@ -23,8 +23,8 @@
 use super::mesh as mesh_cmd;
 use super::plot::{self as plot_cmd, write_output};
 use super::read_input;
-use exact_bezier::Error;
 use clap::Parser;
+use exact_bezier::Error;
 use serde_json::{json, Value};
 use std::fmt::Write;
 use std::path::{Path, PathBuf};

@@ -17,13 +17,13 @@ use super::deriv::curve_of;
 use super::{load_one, patch_f64, ScalarKind};
 use exact_bezier::algebra::{Interval, Ordered, RealAlgebraic};
 use exact_bezier::curve::RationalCurve;
-use exact_bezier::Error;
 use exact_bezier::intersect::{
     certify_crossings, intersect, intersect_approx, self_intersect, ApproxIntersection,
     CertifiedCrossing, Contact, IntersectionPoint, Intersections, Overlap,
 };
 use exact_bezier::io::{JsonScalar, Patch};
 use exact_bezier::limits::{self, Size};
+use exact_bezier::Error;
 use num_rational::BigRational;
 use serde_json::{json, Value};
 

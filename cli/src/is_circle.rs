@@ -3,8 +3,8 @@
 use super::{charge_each, load, one_or_many, ScalarKind};
 use exact_bezier::algebra::Tolerance;
 use exact_bezier::curve::circle::{circle_of, integer_coords};
-use exact_bezier::Error;
 use exact_bezier::io::{point_to_json, JsonScalar, Patch};
+use exact_bezier::Error;
 use serde_json::{json, Value};
 
 /// Arguments of `is-circle`.

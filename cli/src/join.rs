@@ -7,8 +7,8 @@ use super::deriv::curve_of;
 use super::{charge_each, check_tol, load_one, patch_f64, ScalarKind};
 use exact_bezier::algebra::{Ordered, Tolerance};
 use exact_bezier::curve::join::join;
-use exact_bezier::Error;
 use exact_bezier::io::{JsonScalar, Patch};
+use exact_bezier::Error;
 use num_rational::BigRational;
 use serde_json::{json, Value};
 

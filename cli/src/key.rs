@@ -6,8 +6,8 @@
 
 use super::bulk::{check_record_cost, map_chunk, BulkArgs, Member, Out, Progress, CHUNK};
 use exact_bezier::coincide::canonical::{canonical_key, canonical_text, KeyDigest};
-use exact_bezier::Error;
 use exact_bezier::io::for_each_chunk;
+use exact_bezier::Error;
 use serde_json::json;
 
 /// Arguments of `key`.
@@ -47,7 +47,9 @@ fn member_text(p: &Member, max_work: u64) -> Result<String, Error> {
 
 /// The key text of a patch over the real algebraic numbers (see
 /// [`member_text`]).
-fn algebraic_text(p: &exact_bezier::io::Patch<exact_bezier::algebra::RealAlgebraic>) -> Result<String, Error> {
+fn algebraic_text(
+    p: &exact_bezier::io::Patch<exact_bezier::algebra::RealAlgebraic>,
+) -> Result<String, Error> {
     canonical_key(p)?
             .to_rational()
             .map(|k| k.text())

@@ -15,14 +15,14 @@
 //!
 //! Exact arithmetic is the default; `--scalar f64` selects floats.
 
+use clap::{Parser, Subcommand, ValueEnum};
 use exact_bezier::algebra::Ordered;
-use exact_bezier::algebra::{Roots, Scalar};
 use exact_bezier::algebra::RealAlgebraic;
-use exact_bezier::coincide::Reducible;
-use exact_bezier::Error;
+use exact_bezier::algebra::Scalar;
+use exact_bezier::coincide::{CoincideScalar, Reducible};
 use exact_bezier::io::{read_patches, read_patches_as, JsonScalar, Patch};
 use exact_bezier::limits::{self, Limits, Size};
-use clap::{Parser, Subcommand, ValueEnum};
+use exact_bezier::Error;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use serde_json::Value;
@@ -544,7 +544,7 @@ pub(crate) fn load_one(
 
 /// An exact scalar a command runs on, with what the cost model
 /// ([`exact_bezier::limits`]) needs to know of it.
-pub(crate) trait ExactScalar: JsonScalar + Reducible + Roots {
+pub(crate) trait ExactScalar: JsonScalar + Reducible + CoincideScalar {
     /// The size of one number in bits.
     fn bits(&self) -> u64;
     /// The work of one operation with this number, in units of a rational
@@ -724,7 +724,9 @@ pub(crate) fn parse_algebraic_list(text: &str) -> Result<Vec<RealAlgebraic>, Err
 
 /// Parse a comma-separated list of exact numbers (`1/3,0.25`).
 pub(crate) fn parse_list(text: &str) -> Result<Vec<BigRational>, Error> {
-    text.split(',').map(exact_bezier::io::parse_rational).collect()
+    text.split(',')
+        .map(exact_bezier::io::parse_rational)
+        .collect()
 }
 
 /// A command's computation on one patch with exact parameters, written once

@@ -1,10 +1,10 @@
 //! `mesh FILE... -o OUT.obj|OUT.stl|OUT.ply [--density N] [--scalar exact|f64]`.
 
 use super::{charge_each, load_all_exact, on_exact, patch_f64, ExactScalar, ScalarKind};
-use exact_bezier::Error;
 use exact_bezier::io::Patch;
 use exact_bezier::limits::MAX_MESH_VERTICES;
 use exact_bezier::render::mesh::Mesh;
+use exact_bezier::Error;
 use serde_json::{json, Value};
 
 /// Arguments of `mesh`.

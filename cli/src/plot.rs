@@ -3,10 +3,10 @@
 //! [--split diagonal|a,b,c,d,e,f] [--title T]`.
 
 use super::{charge_each, load_all_exact, on_exact, ExactScalar, ScalarKind};
-use exact_bezier::Error;
 use exact_bezier::io::Patch;
 use exact_bezier::limits::{MAX_PIXELS, MAX_PLOT_POINTS};
 use exact_bezier::render::plot::{plot_png, plot_svg, PlotOptions, Projection, Split};
+use exact_bezier::Error;
 
 use serde_json::{json, Value};
 

@@ -7,11 +7,11 @@
 
 use super::deriv::curve_of;
 use super::{charge_each, check_tol, load, one_or_many, patch_f64, ScalarKind};
+use clap::ValueEnum;
 use exact_bezier::algebra::{Ordered, Tolerance};
 use exact_bezier::curve::reduction::Reduction;
-use exact_bezier::Error;
 use exact_bezier::io::{patch_to_json, JsonScalar, Patch};
-use clap::ValueEnum;
+use exact_bezier::Error;
 use serde_json::{json, Value};
 
 /// The reduction method.

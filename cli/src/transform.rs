@@ -5,10 +5,10 @@ use super::{
     ExactPatches, ExactScalar, PatchOp, ScalarKind,
 };
 use exact_bezier::algebra::Ordered;
-use exact_bezier::Error;
 use exact_bezier::io::{patch_to_json, JsonScalar, Patch};
 use exact_bezier::limits::{check_result_degree, Size};
 use exact_bezier::reparam::Quadratic;
+use exact_bezier::Error;
 use serde_json::Value;
 
 /// Arguments of `reparam`.

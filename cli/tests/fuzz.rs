@@ -20,8 +20,8 @@
 //! [`READER_CASES`] + [`COMMAND_CASES`] + [`WRITER_CASES`] generated cases
 //! (see `docs/limits.md`).
 
-use exact_bezier_cli::{one_line, run_with, Outcome, Stdin, MAX_ERROR_CHARS};
 use exact_bezier::{algebra::RealAlgebraic, io::read_patches, io::read_patches_as};
+use exact_bezier_cli::{one_line, run_with, Outcome, Stdin, MAX_ERROR_CHARS};
 use proptest::prelude::*;
 use serde_json::Value;
 use std::alloc::{GlobalAlloc, Layout, System};

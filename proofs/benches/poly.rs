@@ -14,8 +14,8 @@
 //! `cargo bench --bench poly -- --warm-up-time 1 --measurement-time 2`
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use exact_bezier_proofs::yang_yong::mobius_uv_sides;
 use exact_bezier::{algebra::binomial_scalar, bernstein::bernstein, Poly};
+use exact_bezier_proofs::yang_yong::mobius_uv_sides;
 use num_traits::One;
 
 /// The bidegrees of the peer table.

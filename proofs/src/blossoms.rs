@@ -14,7 +14,9 @@ use super::{Claim, Verdict};
 use exact_bezier::algebra::Poly;
 use exact_bezier::algebra::{binomial, recip_int};
 use exact_bezier::bernstein::bernstein;
-use exact_bezier::blossom::{polar_bivariate, polar_tensor, polar_univariate, rect_blossom, ShiftOp};
+use exact_bezier::blossom::{
+    polar_bivariate, polar_tensor, polar_univariate, rect_blossom, ShiftOp,
+};
 use exact_bezier::curve::RationalCurve;
 use exact_bezier::hpoint::HPoint;
 use exact_bezier::rect::RectPatch;

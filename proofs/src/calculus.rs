@@ -3,8 +3,8 @@
 //! the definite integral over `[0, 1]` (`∫₀¹ tᵏ dt = 1/(k+1)`), computed
 //! coefficient by coefficient, independently of the Bézier code they check.
 
-use exact_bezier::algebra::Poly;
 use exact_bezier::algebra::ratio;
+use exact_bezier::algebra::Poly;
 use num_traits::Zero;
 
 /// The `k`-th derivative `dᵏ/d varᵏ` of `p`.

@@ -12,8 +12,8 @@
 use super::blossoms::symbolic_rect;
 use super::triangles::symbolic_tri;
 use super::{Claim, Verdict};
-use exact_bezier::algebra::Poly;
 use exact_bezier::algebra::ratio;
+use exact_bezier::algebra::Poly;
 use exact_bezier::convert::{
     bilinear, degree_raising_matrix, rect_to_tri, square_corners, tri_to_degenerate_rect,
     tri_to_rect_hu, tri_to_rect_on_quad, tri_to_rects, tri_to_rects_operators, Half, Split,

@@ -10,10 +10,10 @@
 //! `hang_li_tables` and `yang_yong_examples`.
 
 use super::{Claim, Verdict};
-use exact_bezier::algebra::{ratio, Scalar};
 use exact_bezier::algebra::RealAlgebraic;
-use exact_bezier::Error;
+use exact_bezier::algebra::{ratio, Scalar};
 use exact_bezier::io::parse_rational;
+use exact_bezier::Error;
 use num_rational::BigRational;
 
 /// The exact scalar of printed comparisons.

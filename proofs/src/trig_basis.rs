@@ -9,8 +9,8 @@
 //! independent, so that is general).
 
 use super::{Claim, Verdict};
-use exact_bezier::algebra::Poly;
 use exact_bezier::algebra::ratio;
+use exact_bezier::algebra::Poly;
 use exact_bezier::trig::basis::{circle_normal_form, TrigFn, TrigParam};
 use exact_bezier::trig::curve::TrigCurve;
 use exact_bezier::trig::surface::TrigRect;

@@ -9,12 +9,14 @@
 
 use super::trig_basis::{det4, int, nf, same, sym_param};
 use super::{Claim, Verdict};
-use exact_bezier::algebra::Poly;
 use exact_bezier::algebra::ratio;
+use exact_bezier::algebra::Poly;
 use exact_bezier::trig::basis::TrigParam;
 use exact_bezier::trig::bowl::trig_bowl;
 use exact_bezier::trig::curve::TrigCurve;
-use exact_bezier::trig::stitch::{cross, trig_g0, trig_g1_factor, trig_tangent_continuous, TrigJoin};
+use exact_bezier::trig::stitch::{
+    cross, trig_g0, trig_g1_factor, trig_tangent_continuous, TrigJoin,
+};
 use exact_bezier::trig::surface::TrigRect;
 use exact_bezier::Tolerance;
 use num_rational::BigRational;

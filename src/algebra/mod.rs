@@ -25,8 +25,8 @@ pub use modp::Fp;
 pub use poly::Poly;
 pub use real_algebraic::{text::parse_algebraic, RealAlgebraic};
 pub use scalar::{
-    binomial, binomial_scalar, ratio, rational_root, rational_to_f64, recip_int, Field, Ordered, Ring, Roots,
-    Scalar, Tolerance,
+    binomial, binomial_scalar, ratio, rational_root, rational_to_f64, recip_int, Field, Ordered,
+    Ring, Roots, Scalar, Tolerance,
 };
 pub use sylvester::{linear_eliminant, resultant};
 pub use upoly::{BPoly, UPoly};

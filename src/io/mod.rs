@@ -11,7 +11,10 @@
 //! strings (`"1/3"`, `"-2.5"`). `weights` is optional (all 1). Weights must be
 //! positive. Degrees are limited to [`MAX_DEGREE`].
 
+mod results;
 pub mod trig;
+
+pub use results::{coincidence_to_json, standard_to_json};
 
 pub use trig::{read_trig_patches, trig_patch_from_value, trig_patch_to_json, TrigPatch};
 

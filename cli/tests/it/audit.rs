@@ -16,7 +16,10 @@ use serde_json::Value;
 type Q = BigRational;
 
 fn fixture(name: &str) -> String {
-    format!("{}/tests/fixtures/{name}", concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+    format!(
+        "{}/tests/fixtures/{name}",
+        concat!(env!("CARGO_MANIFEST_DIR"), "/..")
+    )
 }
 
 fn model(name: &str) -> Model {

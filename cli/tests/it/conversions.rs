@@ -125,7 +125,10 @@ fn bad_splits_are_domain_errors() {
 }
 
 fn fixture(name: &str) -> Vec<Patch<Q>> {
-    let path = format!("{}/tests/fixtures/{name}", concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
+    let path = format!(
+        "{}/tests/fixtures/{name}",
+        concat!(env!("CARGO_MANIFEST_DIR"), "/..")
+    );
     read_patches(&std::fs::read_to_string(path).unwrap()).unwrap()
 }
 

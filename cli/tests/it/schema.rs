@@ -10,7 +10,11 @@ const SCHEMA: &str = "file:///exact-bezier.schema.json";
 
 /// The schema compiled at the definition `def` (e.g. `curve`, `evalOutput`).
 fn schema(def: &str) -> (Schemas, SchemaIndex) {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/..", "/docs/exact-bezier.schema.json");
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/..",
+        "/docs/exact-bezier.schema.json"
+    );
     let text = std::fs::read_to_string(path).expect("the schema file exists");
     let value: Value = serde_json::from_str(&text).expect("the schema is JSON");
     let mut compiler = Compiler::new();

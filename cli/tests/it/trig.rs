@@ -205,7 +205,10 @@ fn bowl_parameters() -> (Q, [Q; 4], [Q; 4]) {
 }
 
 fn fixture(name: &str) -> String {
-    format!("{}/tests/fixtures/{name}", concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+    format!(
+        "{}/tests/fixtures/{name}",
+        concat!(env!("CARGO_MANIFEST_DIR"), "/..")
+    )
 }
 
 /// The fixture file holds exactly these surfaces; `EXACT_BEZIER_BLESS=1`
