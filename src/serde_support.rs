@@ -20,11 +20,12 @@
 //! ```
 
 use crate::algebra::scalar::Field;
+use crate::algebra::ExactNumber;
 use crate::coincide::Coincidence;
 use crate::error::Error;
 use crate::io::{
     coincidence_to_json, patch_from_value_as, patch_to_json, read_patches_as, standard_to_json,
-    trig_patch_from_value, trig_patch_to_json, ExactNumber, JsonScalar, Patch, TrigPatch,
+    trig_patch_from_value, trig_patch_to_json, JsonScalar, Patch, TrigPatch,
 };
 use crate::nurbs::{nurbs_to_json, read_nurbs, Nurbs};
 use crate::reparam::Standard;

@@ -701,7 +701,7 @@ pub(crate) fn check_tol(tol: f64) -> Result<(), Error> {
 /// (`1/3,sqrt(2)/2,CRootOf(x**3 - x - 1, 0)`): commas inside parentheses
 /// belong to the number.
 pub(crate) fn parse_algebraic_list(text: &str) -> Result<Vec<RealAlgebraic>, Error> {
-    use exact_bezier::io::ExactNumber;
+    use exact_bezier::algebra::ExactNumber;
     let mut items = Vec::new();
     let (mut depth, mut start) = (0i32, 0);
     for (k, ch) in text.char_indices() {
@@ -725,7 +725,7 @@ pub(crate) fn parse_algebraic_list(text: &str) -> Result<Vec<RealAlgebraic>, Err
 /// Parse a comma-separated list of exact numbers (`1/3,0.25`).
 pub(crate) fn parse_list(text: &str) -> Result<Vec<BigRational>, Error> {
     text.split(',')
-        .map(exact_bezier::io::parse_rational)
+        .map(exact_bezier::algebra::parse_rational)
         .collect()
 }
 

@@ -21,9 +21,9 @@
 //! entity of a supported type that is malformed is reported with its id
 //! and skipped too (a model audit should see the rest of the file).
 
+use crate::algebra::parse_rational;
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::io::parse_rational;
 use crate::nurbs::json::Nurbs;
 use crate::nurbs::{Knots, NurbsCurve, NurbsSurface};
 use num_rational::BigRational;

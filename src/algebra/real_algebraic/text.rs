@@ -112,7 +112,7 @@ fn tokenize(text: &str) -> Result<Vec<Tok>, Error> {
                 i += 1;
             }
             let s: String = chars[start..i].iter().collect();
-            let q = crate::io::parse_rational(&s).map_err(|_| bad(text, "bad number"))?;
+            let q = crate::algebra::parse_rational(&s).map_err(|_| bad(text, "bad number"))?;
             out.push(Tok::Num(q));
         } else if c.is_ascii_alphabetic() {
             let start = i;
@@ -466,15 +466,4 @@ pub(crate) fn root_text(p: &QPoly, k: usize) -> String {
         out.push_str(&body);
     }
     format!("CRootOf({out}, {k})")
-}
-
-impl crate::io::JsonScalar for RealAlgebraic {
-    /// Rationals as [`BigRational`] writes them (integers as JSON numbers,
-    /// else `"p/q"`); irrational numbers as strings in the text grammar.
-    fn to_json(&self) -> serde_json::Value {
-        match self.as_rational() {
-            Some(q) => q.to_json(),
-            None => serde_json::Value::String(self.to_string()),
-        }
-    }
 }
