@@ -114,8 +114,9 @@ pub mod trig;
 
 pub use algebra::{ratio, Field, Ordered, Poly, Ring, Roots, Scalar, Tolerance};
 pub use curve::RationalCurve;
-pub use error::{Error, MAX_DEGREE};
+pub use error::Error;
 pub use io::Patch;
+pub use limits::MAX_DEGREE;
 pub use rect::RectPatch;
 pub use tri::TriPatch;
 

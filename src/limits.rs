@@ -8,7 +8,10 @@
 //! - **Input size**: bytes of one input ([`Limits::max_input_bytes`]),
 //!   decimal digits per number ([`Limits::max_digits`], exponents count as
 //!   digits: `1e400` has 401), dimension ([`MAX_DIMENSION`]), degree
-//!   ([`crate::MAX_DEGREE`], also for every patch a command writes).
+//!   ([`MAX_DEGREE`], also for every patch a command writes), and the
+//!   parsers' caps ([`MAX_STEP_STATEMENT`], [`MAX_STEP_DEPTH`],
+//!   [`MAX_ALGEBRAIC_TEXT`], [`MAX_ALGEBRAIC_DEPTH`],
+//!   [`MAX_ALGEBRAIC_EXPONENT`]).
 //! - **Exact work**: a cost model, [`exact_work`]: `ops × (2 + S/64)²` word
 //!   operations for `ops` rational operations on numbers of `S` bits (a
 //!   rational `+`/`×` reduces by a gcd, quadratic in the size). Each command
@@ -16,8 +19,9 @@
 //!   of its numbers and parameters, and [`charge`]s it against
 //!   [`Limits::max_work`] before computing.
 //! - **f64 work and output size**: sample and vertex counts of `plot` and
-//!   `mesh` ([`MAX_PLOT_POINTS`], [`MAX_PIXELS`], [`MAX_MESH_VERTICES`]),
-//!   charged by the same counter with `S = 0`.
+//!   `mesh` ([`MAX_PLOT_POINTS`], [`MAX_PIXELS`], [`MAX_MESH_VERTICES`],
+//!   [`MAX_DENSITY`], [`MAX_DOCUMENT_POINTS`]), charged by the same counter
+//!   with `S = 0`.
 //!
 //! The limits are per thread ([`with_limits`]): the command line sets them
 //! from `--max-digits`, `--max-input-bytes` and `--max-work`. No limit turns
@@ -29,8 +33,32 @@ use crate::io::Patch;
 use num_rational::BigRational;
 use std::cell::Cell;
 
+/// The largest degree (per parameter) accepted from input and written: 64.
+pub const MAX_DEGREE: usize = 64;
+
 /// The largest dimension (coordinates per point) accepted from input.
 pub const MAX_DIMENSION: usize = 64;
+
+/// The largest mesh density accepted: 1024 steps per parameter.
+pub const MAX_DENSITY: usize = 1024;
+
+/// The most points one `eval` document (without `--jsonl`) may hold.
+pub const MAX_DOCUMENT_POINTS: u64 = 1_000_000;
+
+/// The longest STEP statement accepted (bytes): a bound on hostile input.
+pub const MAX_STEP_STATEMENT: usize = 64 << 20;
+
+/// The deepest nesting of STEP parameter lists accepted.
+pub const MAX_STEP_DEPTH: usize = 64;
+
+/// The longest text of one algebraic number accepted (bytes).
+pub const MAX_ALGEBRAIC_TEXT: usize = 10_000;
+
+/// The deepest nesting of parentheses in an algebraic number's text.
+pub const MAX_ALGEBRAIC_DEPTH: usize = 64;
+
+/// The largest `|exponent|` of a power in an algebraic number's text.
+pub const MAX_ALGEBRAIC_EXPONENT: i64 = 64;
 
 /// The most sample points one `plot` may draw (all curves and iso-lines).
 pub const MAX_PLOT_POINTS: u64 = 1 << 20;
@@ -198,15 +226,19 @@ pub fn check_dimension(dim: usize) -> Result<(), Error> {
     Ok(())
 }
 
-/// Check the degree of a patch a command is about to write against
-/// [`crate::MAX_DEGREE`], before computing it (what we write, we read).
+/// Check a degree against [`MAX_DEGREE`]: of an input as it is read, of a
+/// patch a command is about to write before computing it (what we write,
+/// we read).
 ///
 /// # Errors
 ///
-/// [`Error::DegreeTooHigh`].
-pub fn check_result_degree(degree: usize) -> Result<(), Error> {
-    if degree > crate::MAX_DEGREE {
-        return Err(Error::DegreeTooHigh { degree });
+/// [`Error::DegreeTooHigh`] naming the degree and the limit.
+pub fn check_degree(degree: usize) -> Result<(), Error> {
+    if degree > MAX_DEGREE {
+        return Err(Error::DegreeTooHigh {
+            degree,
+            limit: MAX_DEGREE,
+        });
     }
     Ok(())
 }

@@ -13,7 +13,7 @@ use exact_bezier::audit::{piece_to_json, read_model};
 use exact_bezier::convert::{rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Split};
 use exact_bezier::io::trig::{read_trig_patches, TrigPatch};
 use exact_bezier::io::{patch_to_json, JsonScalar, Patch};
-use exact_bezier::limits::{self, check_result_degree, Size};
+use exact_bezier::limits::{self, check_degree, Size};
 use exact_bezier::Error;
 use num_rational::BigRational;
 use serde_json::Value;
@@ -115,7 +115,7 @@ fn convert_each<T: ExactScalar>(
     for p in patches {
         if let Patch::Rect(r) = p {
             let (m, n) = r.degree();
-            check_result_degree(m + n)?;
+            check_degree(m + n)?;
         }
     }
     charge_each("convert", patches, scalar, |s| convert_cost(s, split_bits))?;

@@ -15,16 +15,13 @@ use super::{
 use exact_bezier::algebra::{Field, Scalar};
 use exact_bezier::eval::Evaluator;
 use exact_bezier::io::{point_to_json, JsonScalar, Patch};
-use exact_bezier::limits::Size;
+use exact_bezier::limits::{Size, MAX_DOCUMENT_POINTS};
 use exact_bezier::Error;
 use num_rational::BigRational;
 use serde_json::{json, Value};
 
 /// Points evaluated per batch (bounds memory when streaming).
 const CHUNK: usize = 4096;
-
-/// Points a document (without `--jsonl`) may hold.
-const MAX_DOCUMENT_POINTS: u64 = 1_000_000;
 
 /// Arguments of `eval`.
 #[derive(clap::Args, Debug)]

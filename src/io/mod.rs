@@ -9,7 +9,7 @@
 //!
 //! Numbers may be JSON numbers (`0.885` is 885/1000, `1e-3` is 1/1000) or
 //! strings (`"1/3"`, `"-2.5"`). `weights` is optional (all 1). Weights must be
-//! positive. Degrees are limited to [`MAX_DEGREE`].
+//! positive. Degrees are limited to [`MAX_DEGREE`](crate::limits::MAX_DEGREE).
 
 mod results;
 pub mod trig;
@@ -23,7 +23,8 @@ use crate::algebra::poly::Poly;
 use crate::algebra::scalar::{Field, Ordered, Scalar};
 use crate::algebra::ExactNumber;
 use crate::curve::RationalCurve;
-use crate::error::{Error, MAX_DEGREE};
+use crate::error::Error;
+use crate::limits::check_degree;
 use crate::rect::RectPatch;
 use crate::tri::TriPatch;
 use num_rational::BigRational;
@@ -127,13 +128,6 @@ pub(crate) fn positive_weight<T: ExactNumber>(v: &Value, index: String) -> Resul
     Ok(w)
 }
 
-fn check_degree(d: usize) -> Result<(), Error> {
-    if d > MAX_DEGREE {
-        return Err(Error::DegreeTooHigh { degree: d });
-    }
-    Ok(())
-}
-
 fn declared_degree(obj: &Map<String, Value>) -> Option<&Value> {
     obj.get("degree")
 }
@@ -147,7 +141,7 @@ pub(crate) fn field_array<'a>(
 }
 
 /// The `points` of a curve or tri patch (`what`: "a curve") and its degree
-/// `n = points.len() − 1`, checked against [`MAX_DEGREE`] and against the
+/// `n = points.len() − 1`, checked against [`MAX_DEGREE`](crate::limits::MAX_DEGREE) and against the
 /// declared `degree`; `mismatch(d, len)` words the error for a declared
 /// `d + 1` (`"?"` if `d` is not a count) where `len` entries were given.
 fn points_of_degree<'a>(
@@ -515,7 +509,7 @@ fn weights_to_json<T: JsonScalar>(g: &[Vec<T>]) -> Value {
 /// # Errors
 ///
 /// [`Error::PointAtInfinity`] if a weight is zero;
-/// [`Error::DegreeTooHigh`] over [`MAX_DEGREE`].
+/// [`Error::DegreeTooHigh`] over [`MAX_DEGREE`](crate::limits::MAX_DEGREE).
 pub fn patch_to_json<T: JsonScalar + Field>(p: &Patch<T>) -> Result<Value, Error> {
     // What we write, we read: never a degree the reader refuses.
     match p {
@@ -621,7 +615,7 @@ mod tests {
             let err = read_patches(text).unwrap_err().to_string();
             assert!(err.contains(want), "{text}: {err}");
         }
-        let big: Vec<String> = (0..=MAX_DEGREE + 1).map(|i| format!("[{i}]")).collect();
+        let big: Vec<String> = (0..=crate::limits::MAX_DEGREE + 1).map(|i| format!("[{i}]")).collect();
         let text = format!(r#"{{"kind":"curve","points":[{}]}}"#, big.join(","));
         assert!(matches!(
             read_patches(&text),

@@ -37,12 +37,10 @@ use crate::error::Error;
 use crate::eval::Jets;
 use crate::hpoint::HPoint;
 use crate::io::Patch;
+use crate::limits::MAX_DENSITY;
 use crate::rect::RectPatch;
 use crate::tri::TriPatch;
 use std::fmt::Write;
-
-/// The largest mesh density accepted: 1024 steps per parameter.
-pub const MAX_DENSITY: usize = 1024;
 
 pub use crate::eval::Jet;
 

@@ -25,21 +25,21 @@
 //!
 //! Bounds on hostile input: at most 10 000 characters, nesting depth 64,
 //! root indices and exponents at most 64 in absolute value, `CRootOf`
-//! degree at most [`crate::MAX_DEGREE`].
+//! degree at most [`crate::limits::MAX_DEGREE`].
 
 use super::polys::{primitive_integer, QPoly};
 use super::radical::RadicalSum;
 use super::RealAlgebraic;
 use crate::algebra::scalar::{Field, Roots};
 use crate::algebra::upoly::UPoly;
-use crate::error::{Error, MAX_DEGREE};
+use crate::error::Error;
+use crate::limits::{
+    MAX_ALGEBRAIC_DEPTH as MAX_DEPTH, MAX_ALGEBRAIC_EXPONENT as MAX_EXPONENT,
+    MAX_ALGEBRAIC_TEXT as MAX_LEN, MAX_DEGREE,
+};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
-
-const MAX_LEN: usize = 10_000;
-const MAX_DEPTH: usize = 64;
-const MAX_EXPONENT: i64 = 64;
 
 /// A parsed expression.
 #[derive(Clone, Debug)]
