@@ -29,7 +29,6 @@
 //! refused, never rounded.
 
 use crate::error::Error;
-use crate::io::Patch;
 use num_rational::BigRational;
 use std::cell::Cell;
 
@@ -158,6 +157,41 @@ pub fn exact_work(ops: u64, bits: u64) -> u64 {
     ops.saturating_mul(words.saturating_mul(words))
 }
 
+/// Charge `what`'s estimated work on patches of `sizes` before computing:
+/// `cost` gives `(operations, bits)` per patch. `exact`: [`Size::exact_units`],
+/// times `16·d^{4N}` per operation instead when a map parameter is a general
+/// root of degree `d = param_degree > 1` (it enters raised to powers up to
+/// the total degree `N`, and the degrees of resultants multiply: a quadratic
+/// curve under a Möbius map with a degree-3 root takes 0.8 s; with a
+/// degree-7 root, or a cubic with a degree-3 root, many minutes). An `f64`
+/// run counts the operations only.
+///
+/// # Errors
+///
+/// [`Error::Limit`] as [`charge`].
+pub fn charge_sizes(
+    what: &str,
+    sizes: impl IntoIterator<Item = Size>,
+    exact: bool,
+    param_degree: u64,
+    cost: impl Fn(&Size) -> (u64, u64),
+) -> Result<(), Error> {
+    for size in sizes {
+        let (ops, bits) = cost(&size);
+        let units = if !exact {
+            ops
+        } else if param_degree > 1 {
+            let e = u32::try_from(4 * size.total_degree()).unwrap_or(u32::MAX);
+            let param_cost = 16u64.saturating_mul(param_degree.saturating_pow(e));
+            exact_work(ops, bits).saturating_mul(size.op_cost.max(param_cost))
+        } else {
+            size.exact_units(ops, bits)
+        };
+        charge(what, units)?;
+    }
+    Ok(())
+}
+
 /// Check the text of one number before it is parsed: at most
 /// [`Limits::max_digits`] digits, an exponent's magnitude counted as digits.
 ///
@@ -253,7 +287,21 @@ pub fn max_bits<'a>(xs: impl IntoIterator<Item = &'a BigRational>) -> u64 {
     xs.into_iter().map(bits).max().unwrap_or(0)
 }
 
-/// What the cost model needs to know of a patch.
+/// What the cost model needs to know of one number (implemented for the
+/// exact scalars in `algebra`).
+pub trait Cost {
+    /// The size of the number in bits.
+    fn bits(&self) -> u64;
+    /// The work of one operation with this number, in units of a rational
+    /// operation on numbers of the same size (1 for a rational).
+    fn op_cost(&self) -> u64;
+    /// The degree of the general root behind this number (`CRootOf`), 1
+    /// for rationals and radical sums.
+    fn root_degree(&self) -> u64;
+}
+
+/// What the cost model needs to know of a patch (built by the patch's
+/// `size` method).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Size {
     /// Degree: `(n, 0)` for a curve or tri patch, `(m, n)` for a rect.
@@ -264,32 +312,35 @@ pub struct Size {
     pub dim: usize,
     /// The most bits of a stored (homogeneous) number.
     pub bits: u64,
+    /// The largest [`Cost::op_cost`] of a stored number (at least 1).
+    pub op_cost: u64,
 }
 
 impl Size {
-    /// The size of `p`.
-    pub fn of<T: crate::Scalar>(p: &Patch<T>, bits_of: impl Fn(&T) -> u64) -> Size {
-        let most = Cell::new(0u64);
-        let _ = p.map(|x| {
-            most.set(most.get().max(bits_of(x)));
-            x.clone()
-        });
-        let (degree, tri, dim) = match p {
-            Patch::Curve(c) => ((c.degree(), 0), false, c.dim()),
-            Patch::Rect(r) => (r.degree(), false, r.dim()),
-            Patch::Tri(t) => ((t.degree(), 0), true, t.dim()),
-        };
+    /// The size of a patch of `degree` (`tri` for a tri patch) in dimension
+    /// `dim` whose stored numbers are `numbers`.
+    pub fn measure<'a, T: Cost + 'a>(
+        degree: (usize, usize),
+        tri: bool,
+        dim: usize,
+        numbers: impl IntoIterator<Item = &'a T>,
+    ) -> Size {
+        let (bits, op_cost) = numbers
+            .into_iter()
+            .fold((0, 1), |(b, c), x| (b.max(x.bits()), c.max(x.op_cost())));
         Size {
             degree,
             tri,
             dim,
-            bits: most.get(),
+            bits,
+            op_cost,
         }
     }
 
-    /// The size of an exact patch.
-    pub fn exact(p: &Patch<BigRational>) -> Size {
-        Size::of(p, bits)
+    /// Work units of `ops` operations on numbers of `bits` bits made of
+    /// this patch's numbers: [`exact_work`] times [`Size::op_cost`].
+    pub fn exact_units(&self, ops: u64, bits: u64) -> u64 {
+        exact_work(ops, bits).saturating_mul(self.op_cost)
     }
 
     /// The total degree `m + n` (`n` for a curve or tri patch).

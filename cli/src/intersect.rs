@@ -83,8 +83,8 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     let cb = a.b.as_deref().map(one_curve).transpose()?;
     let other = cb.as_ref().unwrap_or(&ca);
     let (sa, sb) = (
-        Size::exact(&Patch::Curve(ca.clone())),
-        Size::exact(&Patch::Curve(other.clone())),
+        Patch::Curve(ca.clone()).size(),
+        Patch::Curve(other.clone()).size(),
     );
     let (ops, bits) = intersect_cost(&sa, &sb);
     match a.scalar {

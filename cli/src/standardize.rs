@@ -7,7 +7,7 @@ use super::{load, one_or_many};
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::io::standard_to_json;
 use exact_bezier::io::Patch;
-use exact_bezier::limits::{self, Size};
+use exact_bezier::limits;
 use exact_bezier::reparam::{standardize, Options};
 use exact_bezier::Error;
 use exact_bezier::Scalar;
@@ -67,7 +67,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 /// default budget only when raised (about 5 s in a release build), and a
 /// bicubic with unrelated cube roots is refused before it runs for minutes.
 fn standardize_cost(p: &Patch<BigRational>) -> u64 {
-    let s = Size::exact(p);
+    let s = p.size();
     let (m, n) = (s.degree.0.max(1) as u64, s.degree.1.max(1) as u64);
     let quadratic = matches!(p, Patch::Rect(r) if !Options::default().linear(r));
     let big = if quadratic { m + n + 1 } else { m.max(n) + 1 };

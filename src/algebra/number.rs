@@ -1,10 +1,12 @@
 //! Exact numbers from text: decimal and `p/q` text as a [`BigRational`]
 //! ([`parse_rational`]), and the [`ExactNumber`] capability of the number
 //! types the readers produce (`BigRational`, [`RealAlgebraic`], which also
-//! reads the grammar of docs/algebraic_numbers.md).
+//! reads the grammar of docs/algebraic_numbers.md), and their [`Cost`] in
+//! the cost model of `limits`.
 
 use crate::algebra::{parse_algebraic, Ordered, RealAlgebraic, Scalar};
 use crate::error::Error;
+use crate::limits::Cost;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::Zero;
@@ -105,5 +107,36 @@ impl ExactNumber for RealAlgebraic {
             Ok(q) => Ok(RealAlgebraic::from_rational(&q)),
             Err(_) => parse_algebraic(text),
         }
+    }
+}
+
+/// Exact rationals: `bits` of numerator and denominator, unit cost.
+impl Cost for BigRational {
+    fn bits(&self) -> u64 {
+        crate::limits::bits(self)
+    }
+    fn op_cost(&self) -> u64 {
+        1
+    }
+    fn root_degree(&self) -> u64 {
+        1
+    }
+}
+
+/// A model: radical sums multiply term by term (16); a general root
+/// (`CRootOf` of degree `d`) goes through resultants, `16·d²` in a patch
+/// (a rect with a degree-9 root weight is keyed in 0.6 s). A map
+/// parameter that is a general root is charged by
+/// [`charge_sizes`](crate::limits::charge_sizes).
+impl Cost for RealAlgebraic {
+    /// ≈ 3.5 bits a character of the number's text.
+    fn bits(&self) -> u64 {
+        self.to_string().len() as u64 * 7 / 2
+    }
+    fn op_cost(&self) -> u64 {
+        16u64.saturating_mul(Cost::root_degree(self).saturating_pow(2))
+    }
+    fn root_degree(&self) -> u64 {
+        RealAlgebraic::root_degree(self).unwrap_or(1) as u64
     }
 }

@@ -12,6 +12,7 @@
 //! positive. Degrees are limited to [`MAX_DEGREE`](crate::limits::MAX_DEGREE).
 
 mod results;
+mod size;
 pub mod trig;
 
 pub use crate::algebra::parse_rational;
@@ -615,7 +616,9 @@ mod tests {
             let err = read_patches(text).unwrap_err().to_string();
             assert!(err.contains(want), "{text}: {err}");
         }
-        let big: Vec<String> = (0..=crate::limits::MAX_DEGREE + 1).map(|i| format!("[{i}]")).collect();
+        let big: Vec<String> = (0..=crate::limits::MAX_DEGREE + 1)
+            .map(|i| format!("[{i}]"))
+            .collect();
         let text = format!(r#"{{"kind":"curve","points":[{}]}}"#, big.join(","));
         assert!(matches!(
             read_patches(&text),
