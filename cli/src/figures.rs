@@ -59,7 +59,11 @@ struct Paths {
 
 impl Paths {
     fn new(a: &Args) -> Self {
-        let root = PathBuf::from(a.root.as_deref().unwrap_or(env!("CARGO_MANIFEST_DIR")));
+        // The repository's root: the workspace folder above this crate.
+        let root = match a.root.as_deref() {
+            Some(r) => PathBuf::from(r),
+            None => PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/..")),
+        };
         let (out_shown, out) = match &a.out {
             Some(o) => (o.clone(), o.clone()),
             None => (

@@ -7,7 +7,7 @@ use num_rational::BigRational;
 type A = RealAlgebraic;
 
 fn fixture(name: &str) -> RectPatch<BigRational> {
-    let text = std::fs::read_to_string(format!("tests/fixtures/{name}")).unwrap();
+    let text = crate::common::read_to_string(format!("tests/fixtures/{name}")).unwrap();
     match &read_patches(&text).unwrap()[0] {
         Patch::Rect(r) => r.clone(),
         _ => panic!("a rect patch"),
@@ -173,7 +173,7 @@ const QUARTER: &str = "tests/fixtures/quarter_circle.json";
 
 /// Read one patch over the real algebraic numbers.
 fn algebraic_fixture(path: &str) -> Patch<A> {
-    let text = std::fs::read_to_string(path).unwrap();
+    let text = crate::common::read_to_string(path).unwrap();
     read_patches_as::<A>(&text).unwrap().remove(0)
 }
 

@@ -24,7 +24,7 @@ fn fixture(name: &str) -> String {
 
 fn model(name: &str) -> Model {
     read_model(std::io::BufReader::new(
-        std::fs::File::open(fixture(name)).unwrap(),
+        crate::common::open(fixture(name)).unwrap(),
     ))
     .unwrap()
 }
@@ -216,7 +216,7 @@ fn split_at_an_inner_knot_the_halves_meet_g2_on_one_surface() {
 #[test]
 fn bowl_of_source_002_exact_rational_form() {
     let verdicts = |name: &str| {
-        let trig = read_trig_patches(&std::fs::read_to_string(fixture(name)).unwrap())
+        let trig = read_trig_patches(&crate::common::read_to_string(fixture(name)).unwrap())
             .unwrap()
             .unwrap();
         let pieces = trig

@@ -178,7 +178,7 @@ proptest! {
 }
 
 fn fixture(name: &str) -> Patch<Q> {
-    let text = std::fs::read_to_string(format!("tests/fixtures/{name}.json")).unwrap();
+    let text = crate::common::read_to_string(format!("tests/fixtures/{name}.json")).unwrap();
     read_patches(&text).unwrap().remove(0)
 }
 

@@ -2,13 +2,14 @@
 //! binary. Each test crate uses its own subset.
 #![allow(dead_code)]
 
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// The `exact-bezier` binary, run from the crate root (fixture paths in the
 /// tests are relative to it).
 pub fn bin() -> Command {
     let mut c = Command::new(env!("CARGO_BIN_EXE_exact-bezier"));
-    c.current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
+    c.current_dir(root());
     c
 }
 
@@ -31,4 +32,24 @@ pub fn cli_json(args: &[&str]) -> (i32, serde_json::Value) {
         code,
         serde_json::from_str(&out).unwrap_or(serde_json::Value::Null),
     )
+}
+
+/// The workspace root, where the fixture paths of the tests (and of the
+/// documented examples) are relative to.
+pub fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("the cli crate is inside the workspace")
+        .to_path_buf()
+}
+
+/// `std::fs::read_to_string` of a path relative to the workspace root (an
+/// absolute path is taken as it is).
+pub fn read_to_string(path: impl AsRef<Path>) -> std::io::Result<String> {
+    std::fs::read_to_string(root().join(path))
+}
+
+/// `std::fs::File::open` of a path relative to the workspace root.
+pub fn open(path: impl AsRef<Path>) -> std::io::Result<std::fs::File> {
+    std::fs::File::open(root().join(path))
 }

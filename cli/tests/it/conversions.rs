@@ -129,7 +129,7 @@ fn fixture(name: &str) -> Vec<Patch<Q>> {
         "{}/tests/fixtures/{name}",
         concat!(env!("CARGO_MANIFEST_DIR"), "/..")
     );
-    read_patches(&std::fs::read_to_string(path).unwrap()).unwrap()
+    read_patches(&crate::common::read_to_string(path).unwrap()).unwrap()
 }
 
 fn as_rect(p: &Patch<Q>) -> &RectPatch<Q> {

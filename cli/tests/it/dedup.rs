@@ -218,9 +218,9 @@ fn witnesses_map_each_representative_to_its_members() {
     let file = temp("witness.json");
     let text = format!(
         "[{}, {}, {}]",
-        std::fs::read_to_string(ex1).unwrap(),
-        std::fs::read_to_string(ex3).unwrap(),
-        std::fs::read_to_string(ex1).unwrap()
+        crate::common::read_to_string(ex1).unwrap(),
+        crate::common::read_to_string(ex3).unwrap(),
+        crate::common::read_to_string(ex1).unwrap()
     );
     std::fs::write(&file, text).unwrap();
     let (code, out, err) = cli(&["dedup", file.to_str().unwrap(), "--witness"]);

@@ -13,7 +13,7 @@ const EX1: &str = "tests/fixtures/yang_yong_example1.json";
 const TRI: &str = "tests/fixtures/zcf_4_2_tri.json";
 
 fn patch(path: &str) -> Patch<BigRational> {
-    let text = std::fs::read_to_string(path).unwrap();
+    let text = crate::common::read_to_string(path).unwrap();
     read_patches(&text).unwrap().swap_remove(0)
 }
 

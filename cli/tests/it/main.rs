@@ -1,7 +1,8 @@
 //! The integration tests, built as one binary: one link of the library
 //! instead of one per file. Each module is one former `tests/NAME.rs`.
 //! (`tests/fuzz.rs` stays a separate binary: it installs its own global
-//! allocator.)
+//! allocator; so does `tests/readme.rs`, which runs the documented shell
+//! examples from the workspace root.)
 
 mod algebraic;
 mod arcs;
@@ -15,7 +16,6 @@ mod eval_batch;
 mod intersect;
 mod mesh;
 mod plot;
-mod readme;
 mod schema;
 mod surfaces;
 mod trig;

@@ -223,7 +223,7 @@ fn obj_file_reads_back_onto_the_surface() {
         (report["vertices"].as_u64(), report["triangles"].as_u64()),
         (Some(49), Some(72))
     );
-    let mesh = read_obj(&std::fs::read_to_string(&obj).unwrap());
+    let mesh = read_obj(&crate::common::read_to_string(&obj).unwrap());
     let counts = (
         mesh.positions.len(),
         mesh.normals.len(),
@@ -237,14 +237,14 @@ fn obj_file_reads_back_onto_the_surface() {
     assert!(run_mesh(&stl, &["--density", "3", "--scalar", "exact"])
         .status
         .success());
-    let text = std::fs::read_to_string(&stl).unwrap();
+    let text = crate::common::read_to_string(&stl).unwrap();
     assert!(text.starts_with("solid ") && text.trim_end().ends_with("endsolid exact_bezier"));
     assert_eq!(text.matches("facet normal").count(), 18);
     assert_eq!(text.matches("vertex ").count(), 54);
 
     let ply = dir.join("e1.ply");
     assert!(run_mesh(&ply, &["--density", "3"]).status.success());
-    let text = std::fs::read_to_string(&ply).unwrap();
+    let text = crate::common::read_to_string(&ply).unwrap();
     let body: Vec<&str> = text.split("end_header\n").nth(1).unwrap().lines().collect();
     assert!(text.contains("element vertex 16\n") && text.contains("element face 18\n"));
     assert_eq!(body.len(), 16 + 18);

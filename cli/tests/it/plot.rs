@@ -292,7 +292,7 @@ fn cli_writes_svg_and_png_and_rejects_bad_requests() {
         let report: serde_json::Value = serde_json::from_slice(&st.stdout).unwrap();
         assert_eq!(report["patches"], 1);
     }
-    let s = Svg::parse(&std::fs::read_to_string(&svg).unwrap());
+    let s = Svg::parse(&crate::common::read_to_string(&svg).unwrap());
     assert_eq!(
         (s.width, s.height, s.count("polyline", "line")),
         (300.0, 200.0, 10)
@@ -335,14 +335,14 @@ fn gallery_regenerates_every_entry() {
     assert!(entries.len() >= 9);
     for e in entries {
         let name = e["name"].as_str().unwrap();
-        let svg = std::fs::read_to_string(d.join(format!("{name}.svg"))).unwrap();
+        let svg = crate::common::read_to_string(d.join(format!("{name}.svg"))).unwrap();
         assert!(Svg::parse(&svg).count("polyline", "line") >= 1, "{name}");
         let png = std::fs::read(d.join(format!("{name}.png"))).unwrap();
         assert!(pixels(&png, 800, 600, [0, 0, 0]).0 > 1000, "{name}");
         // Entries with "mesh" flags also give an OBJ: 25² vertices at density 24
         // for each rect, 25·26/2 for each tri (patches are not welded).
         if e.get("mesh").is_some() {
-            let obj = std::fs::read_to_string(d.join(format!("{name}.obj"))).unwrap();
+            let obj = crate::common::read_to_string(d.join(format!("{name}.obj"))).unwrap();
             let v = obj.lines().filter(|l| l.starts_with("v ")).count();
             assert!(
                 v > 0 && (v % 625 == 0 || v % 325 == 0),
@@ -351,8 +351,9 @@ fn gallery_regenerates_every_entry() {
         }
     }
     // The derived input of Fig. 3(b) is the reparameterized patch.
-    let derived = std::fs::read_to_string(d.join("inputs/000-fig3b-example1-mobius.json")).unwrap();
+    let derived =
+        crate::common::read_to_string(d.join("inputs/000-fig3b-example1-mobius.json")).unwrap();
     assert_eq!(read_patches(&derived).unwrap().len(), 1);
-    let readme = std::fs::read_to_string(d.join("README.md")).unwrap();
+    let readme = crate::common::read_to_string(d.join("README.md")).unwrap();
     assert!(readme.contains("reparam tests/fixtures/yang_yong_example1.json --mobius 0.3798,1/3"));
 }

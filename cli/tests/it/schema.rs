@@ -15,7 +15,7 @@ fn schema(def: &str) -> (Schemas, SchemaIndex) {
         "/..",
         "/docs/exact-bezier.schema.json"
     );
-    let text = std::fs::read_to_string(path).expect("the schema file exists");
+    let text = crate::common::read_to_string(path).expect("the schema file exists");
     let value: Value = serde_json::from_str(&text).expect("the schema is JSON");
     let mut compiler = Compiler::new();
     compiler.add_resource(SCHEMA, value).expect("a resource");
@@ -64,7 +64,7 @@ fn every_fixture_is_valid_input() {
     let files = fixtures();
     assert!(files.len() >= 8, "fixtures found: {files:?}");
     for f in files {
-        let text = std::fs::read_to_string(&f).expect("readable");
+        let text = crate::common::read_to_string(&f).expect("readable");
         let v: Value = serde_json::from_str(&text).expect("JSON");
         assert_valid("input", &f.display().to_string(), &v);
     }

@@ -223,7 +223,7 @@ fn check_fixture(name: &str, surfaces: &[TrigRect<Q>]) {
         )
         .unwrap();
     }
-    let text = std::fs::read_to_string(fixture(name)).unwrap();
+    let text = crate::common::read_to_string(fixture(name)).unwrap();
     assert_eq!(read_trig_patches(&text).unwrap().unwrap(), patches);
 }
 
@@ -355,7 +355,7 @@ fn cli_converts_the_bowl_to_rational_patches() {
     let (code, out, _) = cli(&["convert", &fixture("bowl.json"), "--to", "rational"]);
     assert_eq!(code, 0);
     let rational = exact_bezier::io::read_patches(&out).unwrap();
-    let trig = read_trig_patches(&std::fs::read_to_string(fixture("bowl.json")).unwrap())
+    let trig = read_trig_patches(&crate::common::read_to_string(fixture("bowl.json")).unwrap())
         .unwrap()
         .unwrap();
     assert_eq!(rational.len(), trig.len());
