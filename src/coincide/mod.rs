@@ -25,7 +25,9 @@
 //! (e.g. the quadratic one of eqs 9–17) are *not* coincident in this sense.
 //!
 //! Module layout: `view` (normalized nets under symmetries), this file (the
-//! decision and its witness), `boundary` (shared boundary curves).
+//! one entry point [`coincide`] with its [`Options`], the decision and its
+//! witness), `filter` (the interval filter), `boundary` (shared boundary
+//! curves).
 
 pub mod canonical;
 mod coprime;
