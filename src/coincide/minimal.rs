@@ -19,7 +19,7 @@
 //! `b_i = Σ_{k≤i} C(i, k) / C(m', k) a_k`.
 //!
 //! Fast path: a certificate modulo the prime `p = 2⁶¹ − 1` (see
-//! [`Fp`](crate::algebra::Fp)) that the patch is already minimal, so that the exact
+//! [`Fp`]) that the patch is already minimal, so that the exact
 //! bivariate gcd runs only when the certificate fails.
 //!
 //! Reference: source 000 §3 ("调整使得两个曲面同阶") asks for equal degrees
