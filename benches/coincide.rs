@@ -13,9 +13,9 @@
 
 use criterion::{black_box, criterion_group, criterion_main, BatchSize, Criterion};
 use exact_bezier::{
-    coincide::canonical_key, coincide::canonical_text, coincide::coincide, coincide::coincide_f64,
-    coincide::coincide_filtered, coincide::key_digest, coincide::Deduper, coincide::Symmetry,
-    io::parse_json, io::patch_from_value, io::patch_to_json, ratio, Patch, RectPatch, Tolerance,
+    coincide::canonical_key, coincide::canonical_text, coincide::coincide, coincide::key_digest,
+    coincide::Deduper, coincide::Options, coincide::Symmetry, io::parse_json, io::patch_from_value,
+    io::patch_to_json, ratio, Patch, RectPatch, Tolerance,
 };
 use num_rational::BigRational;
 
@@ -82,15 +82,24 @@ fn pairs(c: &mut Criterion) {
         let (fa, fb) = (pa.to_f64(), pb.to_f64());
         let mut group = c.benchmark_group(format!("coincide bicubic {name}"));
         group.bench_function("exact", |bch| {
-            bch.iter(|| coincide(black_box(&pa), black_box(&pb)).expect("valid"))
+            bch.iter(|| {
+                coincide(black_box(&pa), black_box(&pb), Options::default()).expect("valid")
+            })
         });
         group.bench_function("f64", |bch| {
             bch.iter(|| {
-                coincide_f64(black_box(&fa), black_box(&fb), Tolerance(1e-9)).expect("valid")
+                coincide(
+                    black_box(&fa),
+                    black_box(&fb),
+                    Options::within(Tolerance(1e-9)),
+                )
+                .expect("valid")
             })
         });
         group.bench_function("filtered", |bch| {
-            bch.iter(|| coincide_filtered(black_box(&pa), black_box(&pb)).expect("valid"))
+            bch.iter(|| {
+                coincide(black_box(&pa), black_box(&pb), Options::filtered()).expect("valid")
+            })
         });
         group.finish();
     }

@@ -7,7 +7,14 @@
 //! Run: `cargo bench --bench intersect -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use exact_bezier::intersect::{intersect, intersect_approx, intersect_filtered};
+use exact_bezier::intersect::{intersect, Filter, Options};
+use exact_bezier::Tolerance;
+
+/// The filtered exact path.
+const FILTERED: Options = Options {
+    filter: Filter::First,
+    tol: Tolerance(1e-9),
+};
 use exact_bezier::{ratio, Ordered, RationalCurve};
 use num_rational::BigRational;
 
@@ -27,18 +34,31 @@ fn bench(c: &mut Criterion) {
     let far = cubic([(200, 200), (230, 260), (260, 200), (290, 260)]);
     let (a64, b64) = (a.map(Ordered::to_f64), b.map(Ordered::to_f64));
     let mut g = c.benchmark_group("intersect cubic × cubic, 3 crossings");
-    g.bench_function("exact", |bn| bn.iter(|| intersect(black_box(&a), &b)));
+    g.bench_function("exact", |bn| {
+        bn.iter(|| intersect(black_box(&a), Some(&b), Options::default()))
+    });
     g.bench_function("filtered", |bn| {
-        bn.iter(|| intersect_filtered(black_box(&a), &b))
+        bn.iter(|| intersect(black_box(&a), Some(&b), FILTERED))
     });
     g.bench_function("f64 tol 1e-12", |bn| {
-        bn.iter(|| intersect_approx(black_box(&a64), &b64, 1e-12))
+        bn.iter(|| {
+            intersect(
+                black_box(&a64),
+                Some(&b64),
+                Options {
+                    tol: Tolerance(1e-12),
+                    ..Options::default()
+                },
+            )
+        })
     });
     g.finish();
     let mut g = c.benchmark_group("intersect cubic × cubic, apart");
-    g.bench_function("exact", |bn| bn.iter(|| intersect(black_box(&a), &far)));
+    g.bench_function("exact", |bn| {
+        bn.iter(|| intersect(black_box(&a), Some(&far), Options::default()))
+    });
     g.bench_function("filtered", |bn| {
-        bn.iter(|| intersect_filtered(black_box(&a), &far))
+        bn.iter(|| intersect(black_box(&a), Some(&far), FILTERED))
     });
     g.finish();
 }

@@ -9,7 +9,9 @@
 //!
 //! Run from the crate root: `cargo run --example dedup_patches`
 
-use exact_bezier::{coincide::coincide, coincide::dedup, io::read_patches, ratio, Patch};
+use exact_bezier::{
+    coincide::coincide, coincide::dedup, coincide::Options, io::read_patches, ratio, Patch,
+};
 use num_rational::BigRational;
 
 fn main() {
@@ -39,7 +41,7 @@ fn main() {
     let perturbed =
         Patch::Rect(exact_bezier::RectPatch::new(points, weights).expect("positive weights"));
 
-    let same = coincide(&original, &copy).expect("two rect patches");
+    let same = coincide(&original, &copy, Options::default()).expect("two rect patches");
     println!(
         "Möbius + reversed + elevated copy: coincident = {}",
         same.coincident
@@ -47,7 +49,7 @@ fn main() {
     if let Some(w) = &same.witness {
         println!("  witness symmetry: {}", w.symmetry);
     }
-    let differ = coincide(&original, &perturbed).expect("two rect patches");
+    let differ = coincide(&original, &perturbed, Options::default()).expect("two rect patches");
     println!(
         "one weight × (1 + 10⁻⁶): coincident = {} ({})",
         differ.coincident, differ.reason

@@ -24,10 +24,12 @@ pub enum Error {
         /// Its value as text.
         value: String,
     },
-    /// A degree beyond the documented limit [`MAX_DEGREE`].
+    /// A degree beyond the documented limit (`limits::MAX_DEGREE`).
     DegreeTooHigh {
         /// The degree asked for.
         degree: usize,
+        /// The limit it was checked against.
+        limit: usize,
     },
     /// A parameter outside the allowed domain (e.g. a Möbius α of 0 or 1).
     Domain(String),
@@ -44,9 +46,6 @@ pub enum Error {
     Io(String),
 }
 
-/// The largest degree (per parameter) accepted from input: 64.
-pub const MAX_DEGREE: usize = 64;
-
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -58,8 +57,8 @@ impl fmt::Display for Error {
                 f,
                 "weight {index} is {value}: weights must be positive (zero or negative weights are not allowed)"
             ),
-            Error::DegreeTooHigh { degree } => {
-                write!(f, "degree {degree} is over the limit of {MAX_DEGREE}")
+            Error::DegreeTooHigh { degree, limit } => {
+                write!(f, "degree {degree} is over the limit of {limit}")
             }
             Error::Domain(m) => write!(f, "parameter out of domain: {m}"),
             Error::PointAtInfinity => write!(f, "point at infinity: the weight is zero"),

@@ -163,7 +163,8 @@ pub mod blossom;
 
 pub use algebra::{ratio, Field, MulAcc, Ordered, Poly, Ring, Roots, Scalar, Tolerance};
 pub use curve::RationalCurve;
-pub use error::{Error, MAX_DEGREE};
+pub use error::Error;
+pub use limits::MAX_DEGREE;
 pub use patch::Patch;
 pub use rect::RectPatch;
 pub use tri::TriPatch;

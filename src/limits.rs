@@ -8,7 +8,10 @@
 //! - **Input size**: bytes of one input ([`Limits::max_input_bytes`]),
 //!   decimal digits per number ([`Limits::max_digits`], exponents count as
 //!   digits: `1e400` has 401), dimension ([`MAX_DIMENSION`]), degree
-//!   ([`crate::MAX_DEGREE`], also for every patch a command writes).
+//!   ([`MAX_DEGREE`], also for every patch a command writes), and the
+//!   parsers' caps ([`MAX_STEP_STATEMENT`], [`MAX_STEP_DEPTH`],
+//!   [`MAX_ALGEBRAIC_TEXT`], [`MAX_ALGEBRAIC_DEPTH`],
+//!   [`MAX_ALGEBRAIC_EXPONENT`]).
 //! - **Exact work**: a cost model, [`exact_work`]: `ops × (2 + S/64)²` word
 //!   operations for `ops` rational operations on numbers of `S` bits (a
 //!   rational `+`/`×` reduces by a gcd, quadratic in the size). Each command
@@ -16,8 +19,9 @@
 //!   of its numbers and parameters, and [`charge`]s it against
 //!   [`Limits::max_work`] before computing.
 //! - **f64 work and output size**: sample and vertex counts of `plot` and
-//!   `mesh` ([`MAX_PLOT_POINTS`], [`MAX_PIXELS`], [`MAX_MESH_VERTICES`]),
-//!   charged by the same counter with `S = 0`.
+//!   `mesh` ([`MAX_PLOT_POINTS`], [`MAX_PIXELS`], [`MAX_MESH_VERTICES`],
+//!   [`MAX_DENSITY`], [`MAX_DOCUMENT_POINTS`]), charged by the same counter
+//!   with `S = 0`.
 //!
 //! The limits are per thread ([`with_limits`]): the command line sets them
 //! from `--max-digits`, `--max-input-bytes` and `--max-work`. No limit turns
@@ -25,12 +29,35 @@
 //! refused, never rounded.
 
 use crate::error::Error;
-use crate::patch::Patch;
 use num_rational::BigRational;
 use std::cell::Cell;
 
+/// The largest degree (per parameter) accepted from input and written: 64.
+pub const MAX_DEGREE: usize = 64;
+
 /// The largest dimension (coordinates per point) accepted from input.
 pub const MAX_DIMENSION: usize = 64;
+
+/// The largest mesh density accepted: 1024 steps per parameter.
+pub const MAX_DENSITY: usize = 1024;
+
+/// The most points one `eval` document (without `--jsonl`) may hold.
+pub const MAX_DOCUMENT_POINTS: u64 = 1_000_000;
+
+/// The longest STEP statement accepted (bytes): a bound on hostile input.
+pub const MAX_STEP_STATEMENT: usize = 64 << 20;
+
+/// The deepest nesting of STEP parameter lists accepted.
+pub const MAX_STEP_DEPTH: usize = 64;
+
+/// The longest text of one algebraic number accepted (bytes).
+pub const MAX_ALGEBRAIC_TEXT: usize = 10_000;
+
+/// The deepest nesting of parentheses in an algebraic number's text.
+pub const MAX_ALGEBRAIC_DEPTH: usize = 64;
+
+/// The largest `|exponent|` of a power in an algebraic number's text.
+pub const MAX_ALGEBRAIC_EXPONENT: i64 = 64;
 
 /// The most sample points one `plot` may draw (all curves and iso-lines).
 pub const MAX_PLOT_POINTS: u64 = 1 << 20;
@@ -130,6 +157,41 @@ pub fn exact_work(ops: u64, bits: u64) -> u64 {
     ops.saturating_mul(words.saturating_mul(words))
 }
 
+/// Charge `what`'s estimated work on patches of `sizes` before computing:
+/// `cost` gives `(operations, bits)` per patch. `exact`: [`Size::exact_units`],
+/// times `16·d^{4N}` per operation instead when a map parameter is a general
+/// root of degree `d = param_degree > 1` (it enters raised to powers up to
+/// the total degree `N`, and the degrees of resultants multiply: a quadratic
+/// curve under a Möbius map with a degree-3 root takes 0.8 s; with a
+/// degree-7 root, or a cubic with a degree-3 root, many minutes). An `f64`
+/// run counts the operations only.
+///
+/// # Errors
+///
+/// [`Error::Limit`] as [`charge`].
+pub fn charge_sizes(
+    what: &str,
+    sizes: impl IntoIterator<Item = Size>,
+    exact: bool,
+    param_degree: u64,
+    cost: impl Fn(&Size) -> (u64, u64),
+) -> Result<(), Error> {
+    for size in sizes {
+        let (ops, bits) = cost(&size);
+        let units = if !exact {
+            ops
+        } else if param_degree > 1 {
+            let e = u32::try_from(4 * size.total_degree()).unwrap_or(u32::MAX);
+            let param_cost = 16u64.saturating_mul(param_degree.saturating_pow(e));
+            exact_work(ops, bits).saturating_mul(size.op_cost.max(param_cost))
+        } else {
+            size.exact_units(ops, bits)
+        };
+        charge(what, units)?;
+    }
+    Ok(())
+}
+
 /// Check the text of one number before it is parsed: at most
 /// [`Limits::max_digits`] digits, an exponent's magnitude counted as digits.
 ///
@@ -198,15 +260,19 @@ pub fn check_dimension(dim: usize) -> Result<(), Error> {
     Ok(())
 }
 
-/// Check the degree of a patch a command is about to write against
-/// [`crate::MAX_DEGREE`], before computing it (what we write, we read).
+/// Check a degree against [`MAX_DEGREE`]: of an input as it is read, of a
+/// patch a command is about to write before computing it (what we write,
+/// we read).
 ///
 /// # Errors
 ///
-/// [`Error::DegreeTooHigh`].
-pub fn check_result_degree(degree: usize) -> Result<(), Error> {
-    if degree > crate::MAX_DEGREE {
-        return Err(Error::DegreeTooHigh { degree });
+/// [`Error::DegreeTooHigh`] naming the degree and the limit.
+pub fn check_degree(degree: usize) -> Result<(), Error> {
+    if degree > MAX_DEGREE {
+        return Err(Error::DegreeTooHigh {
+            degree,
+            limit: MAX_DEGREE,
+        });
     }
     Ok(())
 }
@@ -221,7 +287,21 @@ pub fn max_bits<'a>(xs: impl IntoIterator<Item = &'a BigRational>) -> u64 {
     xs.into_iter().map(bits).max().unwrap_or(0)
 }
 
-/// What the cost model needs to know of a patch.
+/// What the cost model needs to know of one number (implemented for the
+/// exact scalars in `algebra`).
+pub trait Cost {
+    /// The size of the number in bits.
+    fn bits(&self) -> u64;
+    /// The work of one operation with this number, in units of a rational
+    /// operation on numbers of the same size (1 for a rational).
+    fn op_cost(&self) -> u64;
+    /// The degree of the general root behind this number (`CRootOf`), 1
+    /// for rationals and radical sums.
+    fn root_degree(&self) -> u64;
+}
+
+/// What the cost model needs to know of a patch (built by the patch's
+/// `size` method).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Size {
     /// Degree: `(n, 0)` for a curve or tri patch, `(m, n)` for a rect.
@@ -232,32 +312,35 @@ pub struct Size {
     pub dim: usize,
     /// The most bits of a stored (homogeneous) number.
     pub bits: u64,
+    /// The largest [`Cost::op_cost`] of a stored number (at least 1).
+    pub op_cost: u64,
 }
 
 impl Size {
-    /// The size of `p`.
-    pub fn of<T: crate::Scalar>(p: &Patch<T>, bits_of: impl Fn(&T) -> u64) -> Size {
-        let most = Cell::new(0u64);
-        let _ = p.map(|x| {
-            most.set(most.get().max(bits_of(x)));
-            x.clone()
-        });
-        let (degree, tri, dim) = match p {
-            Patch::Curve(c) => ((c.degree(), 0), false, c.dim()),
-            Patch::Rect(r) => (r.degree(), false, r.dim()),
-            Patch::Tri(t) => ((t.degree(), 0), true, t.dim()),
-        };
+    /// The size of a patch of `degree` (`tri` for a tri patch) in dimension
+    /// `dim` whose stored numbers are `numbers`.
+    pub fn measure<'a, T: Cost + 'a>(
+        degree: (usize, usize),
+        tri: bool,
+        dim: usize,
+        numbers: impl IntoIterator<Item = &'a T>,
+    ) -> Size {
+        let (bits, op_cost) = numbers
+            .into_iter()
+            .fold((0, 1), |(b, c), x| (b.max(x.bits()), c.max(x.op_cost())));
         Size {
             degree,
             tri,
             dim,
-            bits: most.get(),
+            bits,
+            op_cost,
         }
     }
 
-    /// The size of an exact patch.
-    pub fn exact(p: &Patch<BigRational>) -> Size {
-        Size::of(p, bits)
+    /// Work units of `ops` operations on numbers of `bits` bits made of
+    /// this patch's numbers: [`exact_work`] times [`Size::op_cost`].
+    pub fn exact_units(&self, ops: u64, bits: u64) -> u64 {
+        exact_work(ops, bits).saturating_mul(self.op_cost)
     }
 
     /// The total degree `m + n` (`n` for a curve or tri patch).

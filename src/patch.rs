@@ -5,6 +5,8 @@
 
 use crate::algebra::{Ordered, Scalar};
 use crate::curve::RationalCurve;
+use crate::hpoint::HPoint;
+use crate::limits::{Cost, Size};
 use crate::rect::RectPatch;
 use crate::tri::TriPatch;
 use num_rational::BigRational;
@@ -63,5 +65,31 @@ impl Patch<BigRational> {
     /// The patch with `f64` coordinates (nearest values).
     pub fn to_f64(&self) -> Patch<f64> {
         self.map(Ordered::to_f64)
+    }
+}
+
+impl<T: Scalar + Cost> Patch<T> {
+    /// The [`Size`] of this patch: degree, kind, dimension, the most bits
+    /// and the largest operation cost of its stored (homogeneous) numbers.
+    pub fn size(&self) -> Size {
+        let (degree, tri, dim, points): (_, _, _, Vec<&HPoint<T>>) = match self {
+            Patch::Curve(c) => ((c.degree(), 0), false, c.dim(), c.ctrl().iter().collect()),
+            Patch::Rect(r) => (
+                r.degree(),
+                false,
+                r.dim(),
+                r.ctrl().iter().flatten().collect(),
+            ),
+            Patch::Tri(t) => (
+                (t.degree(), 0),
+                true,
+                t.dim(),
+                t.rows().iter().flatten().collect(),
+            ),
+        };
+        let numbers = points
+            .into_iter()
+            .flat_map(|h| h.weighted().iter().chain([h.weight()]));
+        Size::measure(degree, tri, dim, numbers)
     }
 }

@@ -21,16 +21,17 @@
 //! ```
 
 use crate::algebra::scalar::Field;
+use crate::algebra::ExactNumber;
 use crate::coincide::Coincidence;
 use crate::error::Error;
-use crate::io::{nurbs_to_json, read_nurbs};
 use crate::io::{
-    patch_from_value_as, patch_to_json, read_patches_as, trig_patch_from_value, trig_patch_to_json,
-    ExactNumber, JsonScalar,
+    coincidence_to_json, patch_from_value_as, patch_to_json, read_patches_as, standard_to_json,
+    trig_patch_from_value, trig_patch_to_json, JsonScalar,
 };
+use crate::io::{nurbs_to_json, read_nurbs};
 use crate::nurbs::Nurbs;
 use crate::patch::Patch;
-use crate::reparam::standard::Standard;
+use crate::reparam::Standard;
 use crate::trig::TrigPatch;
 use crate::{RationalCurve, RectPatch, TriPatch};
 use num_rational::BigRational;
@@ -117,7 +118,7 @@ patch_kind_serde!(TriPatch, Tri, "tri");
 /// The `coincide` command's object: `coincident`, `reason`, `witness`.
 impl<T: JsonScalar> Serialize for Coincidence<T> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        self.to_json().serialize(s)
+        coincidence_to_json(self).serialize(s)
     }
 }
 
@@ -156,10 +157,12 @@ impl<'de> Deserialize<'de> for Nurbs {
     }
 }
 
-/// The `standardize` command's object ([`Standard::to_json`]).
+/// The `standardize` command's object ([`standard_to_json`]).
 impl<P: Clone + Into<Patch<T>>, T: JsonScalar + Field> Serialize for Standard<P, T> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        self.to_json().map_err(S::Error::custom)?.serialize(s)
+        standard_to_json(self)
+            .map_err(S::Error::custom)?
+            .serialize(s)
     }
 }
 
@@ -167,7 +170,8 @@ impl<P: Clone + Into<Patch<T>>, T: JsonScalar + Field> Serialize for Standard<P,
 mod tests {
     use super::*;
     use crate::algebra::RealAlgebraic;
-    use crate::reparam::standard::standardize_curve_algebraic;
+    use crate::reparam::{standardize, Options};
+    use crate::Scalar;
 
     fn round_trip<X: Serialize + for<'de> Deserialize<'de> + PartialEq + std::fmt::Debug>(x: &X) {
         let text = serde_json::to_string(x).unwrap();
@@ -220,9 +224,13 @@ mod tests {
             r#"{"kind": "curve", "points": [[0, 0], [1, 1], [2, 0]], "weights": [1, "1/2", 2]}"#
                 .parse()
                 .unwrap();
-        let s = standardize_curve_algebraic(&rational).unwrap();
+        let s = standardize(
+            &rational.map(RealAlgebraic::from_rational),
+            Options::default(),
+        )
+        .unwrap();
         let v = serde_json::to_value(&s).unwrap();
-        assert_eq!(v, s.to_json().unwrap());
+        assert_eq!(v, standard_to_json(&s).unwrap());
         assert_eq!(v["exact"], true);
         let w = &v["patch"]["weights"];
         assert_eq!(

@@ -14,8 +14,9 @@
 //! (`<name>_reference`) where one is written below: the yardstick of
 //! "within 2× of a fixed-size kernel".
 
+use exact_bezier::algebra::parse_rational;
 use exact_bezier::eval::Evaluator;
-use exact_bezier::io::{parse_rational, read_patches};
+use exact_bezier::io::read_patches;
 use exact_bezier::{Field, Ordered, Patch};
 use num_rational::BigRational;
 use serde_json::{Map, Value};

@@ -12,11 +12,9 @@
 //! Each pair is `{"a": curve, "b": curve}` in our JSON format.
 
 use exact_bezier::algebra::{Interval, RealAlgebraic};
-use exact_bezier::intersect::{
-    intersect, intersect_approx, intersect_filtered, Filtered, Intersections,
-};
+use exact_bezier::intersect::{intersect, Filter, Found, Intersections, Options};
 use exact_bezier::io::read_patches;
-use exact_bezier::{Ordered, Patch, RationalCurve};
+use exact_bezier::{Ordered, Patch, RationalCurve, Tolerance};
 use num_rational::BigRational;
 use serde_json::{json, Value};
 use std::time::Instant;
@@ -64,8 +62,8 @@ fn best_us(repeat: usize, mut f: impl FnMut()) -> f64 {
 
 /// Do the certified boxes hold the exact crossings, one each (or is the
 /// filtered answer the exact one)?
-fn filtered_agrees(exact: &Intersections, filtered: &Filtered) -> bool {
-    let Filtered::Certified(boxes) = filtered else {
+fn filtered_agrees(exact: &Intersections, filtered: &Found) -> bool {
+    let Found::Certified(boxes) = filtered else {
         return true;
     };
     let inside = |x: &RealAlgebraic, i: &Interval| {
@@ -92,27 +90,39 @@ fn run_pair(
     b: &RationalCurve<BigRational>,
     repeat: usize,
 ) -> Value {
-    let x = match intersect(a, b) {
+    let exact = || intersect(a, Some(b), Options::default()).map(|x| x.exact().expect("exact"));
+    let filtered = || {
+        let options = Options {
+            filter: Filter::First,
+            ..Options::default()
+        };
+        intersect(a, Some(b), options).expect("the filtered path runs")
+    };
+    let x = match exact() {
         Ok(x) => x,
         Err(e) => return json!({"error": e.to_string()}),
     };
     let (a64, b64) = (a.map(Ordered::to_f64), b.map(Ordered::to_f64));
-    let filtered = intersect_filtered(a, b).expect("the filtered path runs");
-    let decided_by = format!("{:?}", filtered.decided_by()).to_lowercase();
+    let found = filtered();
+    let decided_by = format!("{:?}", found.decided_by().expect("First decides")).to_lowercase();
     let t_filtered = best_us(repeat, || {
-        intersect_filtered(a, b).expect("the filtered path runs");
+        filtered();
     });
     let t_exact = best_us(repeat, || {
-        intersect(a, b).expect("the exact path runs");
+        exact().expect("the exact path runs");
     });
+    let approx = Options {
+        tol: Tolerance(1e-12),
+        ..Options::default()
+    };
     let t_f64 = best_us(repeat, || {
-        intersect_approx(&a64, &b64, 1e-12).expect("the f64 path runs");
+        intersect(&a64, Some(&b64), approx).expect("the f64 path runs");
     });
     json!({
         "points": x.points.iter().map(|p| [p.s.to_f64(), p.t.to_f64()]).collect::<Vec<_>>(),
         "overlaps": x.overlaps.len(),
         "decided_by": decided_by,
-        "filtered_agrees": filtered_agrees(&x, &filtered),
+        "filtered_agrees": filtered_agrees(&x, &found),
         "us": {"exact": t_exact, "filtered": t_filtered, "f64": t_f64},
     })
 }

@@ -2,10 +2,11 @@
 //! standard-form rational cubic of source 004 eq. (1) (eq. (2) for θ = π).
 
 use super::parse_algebraic_list;
+use exact_bezier::algebra::ExactNumber;
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::algebra::Tolerance;
 use exact_bezier::arc::QuadArc;
-use exact_bezier::io::{patch_to_json, ExactNumber, JsonScalar};
+use exact_bezier::io::{patch_to_json, JsonScalar};
 use exact_bezier::patch::Patch;
 use exact_bezier::Error;
 use num_traits::Zero;

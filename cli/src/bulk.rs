@@ -1,7 +1,6 @@
 //! What `key` and `dedup` share: the input as a counted byte stream, keys
 //! of a chunk of records on all cores, the progress bar, the exit code.
 
-use super::{patch_op_cost, ExactScalar};
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::algebra::Scalar;
 use exact_bezier::io::Record;
@@ -118,9 +117,9 @@ impl Member {
 ///
 /// [`Error::Limit`] naming the estimate and `--max-work`.
 pub(crate) fn check_record_cost(p: &Patch<RealAlgebraic>, max: u64) -> Result<(), Error> {
-    let (ops, bits) =
-        super::coincide::coincide_cost(&exact_bezier::limits::Size::of(p, ExactScalar::bits));
-    let units = exact_bezier::limits::exact_work(ops, bits).saturating_mul(patch_op_cost(p));
+    let size = p.size();
+    let (ops, bits) = super::coincide::coincide_cost(&size);
+    let units = size.exact_units(ops, bits);
     if units > max {
         return Err(Error::Limit(format!(
             "this record's algebraic numbers need an estimated {units:.2e} work units, over the budget of {max:.2e} (raise it with --max-work)"

@@ -4,7 +4,8 @@
 
 use super::{charge_each, load_exact, patch_f64, ExactPatches, ExactScalar, ScalarKind};
 use exact_bezier::algebra::Tolerance;
-use exact_bezier::coincide::filter::coincide_filtered;
+use exact_bezier::coincide::{coincide, Options};
+use exact_bezier::io::coincidence_to_json;
 use exact_bezier::limits::Size;
 use exact_bezier::patch::Patch;
 use exact_bezier::Error;
@@ -77,9 +78,9 @@ pub fn run(a: &Args) -> Result<Value, Error> {
                     a.scalar,
                     coincide_cost,
                 )?;
-                let (c, by) = coincide_filtered(&pa[0], &pb[0])?;
-                let mut v = c.to_json();
-                v["decided_by"] = format!("{by:?}").to_lowercase().into();
+                let c = coincide(&pa[0], &pb[0], Options::filtered())?;
+                let mut v = coincidence_to_json(&c);
+                v["decided_by"] = format!("{:?}", c.decided_by).to_lowercase().into();
                 return Ok(v);
             }
             decide(a, &pa[0], &pb[0])
@@ -111,15 +112,15 @@ fn decide<T: ExactScalar>(a: &Args, pa: &Patch<T>, pb: &Patch<T>) -> Result<Valu
                     "--tol {tol} must be a finite number ≥ 0"
                 )));
             }
-            let c = exact_bezier::coincide::coincide_f64(
+            let c = coincide(
                 &patch_f64(pa)?,
                 &patch_f64(pb)?,
-                Tolerance(tol),
+                Options::within(Tolerance(tol)),
             )?;
-            let mut v = c.to_json();
+            let mut v = coincidence_to_json(&c);
             v["tolerance"] = tol.into();
             Ok(v)
         }
-        ScalarKind::Exact => Ok(exact_bezier::coincide::coincide(pa, pb)?.to_json()),
+        ScalarKind::Exact => Ok(coincidence_to_json(&coincide(pa, pb, Options::default())?)),
     }
 }

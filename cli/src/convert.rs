@@ -11,9 +11,8 @@ use super::{
 use exact_bezier::algebra::{Field, Ordered, Scalar};
 use exact_bezier::convert::{rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Split};
 use exact_bezier::io::trig::read_trig_patches;
-use exact_bezier::io::{patch_to_json, JsonScalar};
-use exact_bezier::io::{piece_to_json, read_model};
-use exact_bezier::limits::{self, check_result_degree, Size};
+use exact_bezier::io::{patch_to_json, piece_to_json, read_model, JsonScalar};
+use exact_bezier::limits::{self, check_degree, Size};
 use exact_bezier::patch::Patch;
 use exact_bezier::trig::TrigPatch;
 use exact_bezier::Error;
@@ -117,7 +116,7 @@ fn convert_each<T: ExactScalar>(
     for p in patches {
         if let Patch::Rect(r) = p {
             let (m, n) = r.degree();
-            check_result_degree(m + n)?;
+            check_degree(m + n)?;
         }
     }
     charge_each("convert", patches, scalar, |s| convert_cost(s, split_bits))?;

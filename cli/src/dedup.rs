@@ -21,7 +21,8 @@ use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::coincide::canonical::{
     canonical_key, key_digest, CanonicalKey, Deduper, KeyDigest,
 };
-use exact_bezier::coincide::{coincide, Coincidence};
+use exact_bezier::coincide::{coincide, Coincidence, Options};
+use exact_bezier::io::coincidence_to_json;
 use exact_bezier::io::{for_each_chunk, JsonScalar, Record};
 use exact_bezier::Error;
 use rayon::prelude::*;
@@ -77,8 +78,14 @@ impl Witnesses {
                 }
                 let a = Member::read(&Record::Line(rep + 1, reps[id].to_string()))?;
                 let (coincident, reason, witness) = match (&a, p) {
-                    (Member::Rational(a), Member::Rational(p)) => summary(coincide(a, p)?),
-                    (a, p) => summary(coincide(&a.algebraic(), &p.algebraic())?),
+                    (Member::Rational(a), Member::Rational(p)) => {
+                        summary(coincide(a, p, Options::default())?)
+                    }
+                    (a, p) => summary(coincide(
+                        &a.algebraic(),
+                        &p.algebraic(),
+                        Options::default(),
+                    )?),
                 };
                 if !coincident {
                     return Err(Error::Format(format!(
@@ -98,7 +105,7 @@ impl Witnesses {
 
 /// Whether they coincide, why, and the witness's JSON text.
 fn summary<T: JsonScalar>(c: Coincidence<T>) -> (bool, String, String) {
-    let witness = c.to_json()["witness"].to_string();
+    let witness = coincidence_to_json(&c)["witness"].to_string();
     (c.coincident, c.reason, witness)
 }
 

@@ -10,12 +10,12 @@
 
 use super::{
     check_domain, check_finite, emit, json_text, on_exact, one_or_many, parse_list, patch_f64,
-    patch_op_cost, read_input, ExactPatches, ExactScalar, ScalarKind,
+    read_input, ExactPatches, ExactScalar, ScalarKind,
 };
 use exact_bezier::algebra::{Field, Scalar};
 use exact_bezier::eval::Evaluator;
 use exact_bezier::io::{point_to_json, JsonScalar};
-use exact_bezier::limits::Size;
+use exact_bezier::limits::MAX_DOCUMENT_POINTS;
 use exact_bezier::patch::Patch;
 use exact_bezier::Error;
 use num_rational::BigRational;
@@ -23,9 +23,6 @@ use serde_json::{json, Value};
 
 /// Points evaluated per batch (bounds memory when streaming).
 const CHUNK: usize = 4096;
-
-/// Points a document (without `--jsonl`) may hold.
-const MAX_DOCUMENT_POINTS: u64 = 1_000_000;
 
 /// Arguments of `eval`.
 #[derive(clap::Args, Debug)]
@@ -76,7 +73,7 @@ fn is_single(a: &Args) -> bool {
 }
 
 /// `eval` on patches of exact numbers `T`: exactly, or on their nearest
-/// `f64` patches. The work is charged first ([`ExactScalar::op_cost`]
+/// `f64` patches. The work is charged first ([`Size::op_cost`](exact_bezier::limits::Size::op_cost)
 /// times the exact model for one operation).
 fn run_patches<T: ExactScalar>(
     a: &Args,
@@ -99,7 +96,7 @@ fn run_patches<T: ExactScalar>(
             None => lists.clone(),
         };
         check_points(p, &at, a.extrapolate)?;
-        let size = Size::of(p, T::bits);
+        let size = p.size();
         let ops = size.eval_ops().saturating_mul(at.len() as u64);
         let units = match a.scalar {
             ScalarKind::Exact => {
@@ -107,7 +104,7 @@ fn run_patches<T: ExactScalar>(
                     size.total_degree(),
                     exact_bezier::limits::max_bits(at.iter().flatten()),
                 );
-                exact_bezier::limits::exact_work(ops, bits).saturating_mul(patch_op_cost(p))
+                size.exact_units(ops, bits)
             }
             ScalarKind::F64 => ops,
         };

@@ -10,9 +10,10 @@
 //! ```
 
 use super::{one_or_many, ScalarKind};
+use exact_bezier::algebra::parse_rational;
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::algebra::{Ordered, Roots, Scalar};
-use exact_bezier::io::{parse_rational, point_to_json, JsonScalar};
+use exact_bezier::io::{point_to_json, JsonScalar};
 use exact_bezier::trig::basis::TrigParam;
 use exact_bezier::trig::TrigPatch;
 use exact_bezier::Error;

@@ -18,13 +18,12 @@ use super::{load_one, patch_f64, ScalarKind};
 use exact_bezier::algebra::{Interval, Ordered, RealAlgebraic};
 use exact_bezier::curve::RationalCurve;
 use exact_bezier::intersect::{
-    certify_crossings, intersect, intersect_approx, self_intersect, ApproxIntersection,
-    CertifiedCrossing, Contact, IntersectionPoint, Intersections, Overlap,
+    intersect, ApproxIntersection, CertifiedCrossing, Contact, Filter, Found, IntersectionPoint,
+    Intersections, Options, Overlap,
 };
 use exact_bezier::io::JsonScalar;
 use exact_bezier::limits::{self, Size};
-use exact_bezier::patch::Patch;
-use exact_bezier::Error;
+use exact_bezier::{Error, Patch, Tolerance};
 use num_rational::BigRational;
 use serde_json::{json, Value};
 
@@ -84,8 +83,8 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     let cb = a.b.as_deref().map(one_curve).transpose()?;
     let other = cb.as_ref().unwrap_or(&ca);
     let (sa, sb) = (
-        Size::exact(&Patch::Curve(ca.clone())),
-        Size::exact(&Patch::Curve(other.clone())),
+        Patch::Curve(ca.clone()).size(),
+        Patch::Curve(other.clone()).size(),
     );
     let (ops, bits) = intersect_cost(&sa, &sb);
     match a.scalar {
@@ -104,21 +103,21 @@ pub fn run(a: &Args) -> Result<Value, Error> {
                     ));
                 };
                 limits::charge("intersect --filtered", filter_cost(&sa, &sb))?;
-                if let Some(found) = certify_crossings(&ca, b)? {
+                let only = Options {
+                    filter: Filter::Only,
+                    ..Options::default()
+                };
+                if let Found::Certified(found) = intersect(&ca, Some(b), only)? {
                     return Ok(certified_json(&found));
                 }
             }
             limits::charge("intersect", limits::exact_work(ops, bits))?;
-            match &cb {
-                None => Ok(to_json(&self_intersect(&ca)?)),
-                Some(b) => {
-                    let mut v = to_json(&intersect(&ca, b)?);
-                    if a.filtered {
-                        v["decided_by"] = "exact".into();
-                    }
-                    Ok(v)
-                }
+            let found = intersect(&ca, cb.as_ref(), Options::default())?;
+            let mut v = to_json(&found.exact().expect("the exact elimination decides"));
+            if a.filtered {
+                v["decided_by"] = "exact".into();
             }
+            Ok(v)
         }
     }
 }
@@ -145,7 +144,11 @@ fn run_f64(
         Patch::Curve(c) => Ok(c),
         _ => unreachable!("a curve maps to a curve"),
     };
-    let found = intersect_approx(&as_f64(ca)?, &as_f64(cb)?, tol)?;
+    let options = Options {
+        tol: Tolerance(tol),
+        ..Options::default()
+    };
+    let found = intersect(&as_f64(ca)?, Some(&as_f64(cb)?), options)?;
     let (overlaps, points): (Vec<&ApproxIntersection>, Vec<_>) =
         found.iter().partition(|x| x.overlap.is_some());
     Ok(json!({

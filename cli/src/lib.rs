@@ -18,10 +18,10 @@
 use clap::{Parser, Subcommand, ValueEnum};
 use exact_bezier::algebra::Ordered;
 use exact_bezier::algebra::RealAlgebraic;
-use exact_bezier::algebra::{Roots, Scalar};
-use exact_bezier::coincide::Reducible;
+use exact_bezier::algebra::Scalar;
+use exact_bezier::coincide::{CoincideScalar, Reducible};
 use exact_bezier::io::{read_patches, read_patches_as, JsonScalar};
-use exact_bezier::limits::{self, Limits, Size};
+use exact_bezier::limits::{self, Cost, Limits, Size};
 use exact_bezier::patch::Patch;
 use exact_bezier::Error;
 use num_rational::BigRational;
@@ -543,65 +543,24 @@ pub(crate) fn load_one(
     Ok(patches.swap_remove(0))
 }
 
-/// An exact scalar a command runs on, with what the cost model
-/// ([`exact_bezier::limits`]) needs to know of it.
-pub(crate) trait ExactScalar: JsonScalar + Reducible + Roots {
-    /// The size of one number in bits.
-    fn bits(&self) -> u64;
-    /// The work of one operation with this number, in units of a rational
-    /// operation on numbers of the same text size.
-    fn op_cost(&self) -> u64;
-    /// The degree of the general root behind this number (`CRootOf`), 1
-    /// for rationals and radical sums.
-    fn root_degree(&self) -> u64;
+/// An exact scalar a command runs on: written as JSON, decided by
+/// `coincide`, measured by the cost model ([`Cost`], implemented in
+/// `exact_bezier::algebra`), and lifted to the real algebraic numbers.
+pub(crate) trait ExactScalar: JsonScalar + Reducible + CoincideScalar + Cost {
     /// The same number as a real algebraic number.
     fn to_algebraic(&self) -> RealAlgebraic;
 }
 
 impl ExactScalar for BigRational {
-    fn bits(&self) -> u64 {
-        limits::bits(self)
-    }
-    fn op_cost(&self) -> u64 {
-        1
-    }
-    fn root_degree(&self) -> u64 {
-        1
-    }
     fn to_algebraic(&self) -> RealAlgebraic {
         RealAlgebraic::from_rational(self)
     }
 }
 
-/// A model: radical sums multiply term by term (16); a general root
-/// (`CRootOf` of degree `d`) goes through resultants, `16·d²` in a patch
-/// (a rect with a degree-9 root weight is keyed in 0.6 s). A map
-/// parameter that is a general root is charged by [`charge_with`].
 impl ExactScalar for RealAlgebraic {
-    /// ≈ 3.5 bits a character of the number's text.
-    fn bits(&self) -> u64 {
-        self.to_string().len() as u64 * 7 / 2
-    }
-    fn op_cost(&self) -> u64 {
-        let d = self.root_degree().unwrap_or(1) as u64;
-        16u64.saturating_mul(d.saturating_pow(2))
-    }
-    fn root_degree(&self) -> u64 {
-        RealAlgebraic::root_degree(self).unwrap_or(1) as u64
-    }
     fn to_algebraic(&self) -> RealAlgebraic {
         self.clone()
     }
-}
-
-/// The largest [`ExactScalar::op_cost`] of the numbers of `p` (at least 1).
-pub(crate) fn patch_op_cost<T: ExactScalar>(p: &Patch<T>) -> u64 {
-    let most = std::cell::Cell::new(1u64);
-    let _ = p.map(|x| {
-        most.set(most.get().max(x.op_cost()));
-        x.clone()
-    });
-    most.get()
 }
 
 /// Exact patches as read: over Q when every number of the file is
@@ -702,7 +661,7 @@ pub(crate) fn check_tol(tol: f64) -> Result<(), Error> {
 /// (`1/3,sqrt(2)/2,CRootOf(x**3 - x - 1, 0)`): commas inside parentheses
 /// belong to the number.
 pub(crate) fn parse_algebraic_list(text: &str) -> Result<Vec<RealAlgebraic>, Error> {
-    use exact_bezier::io::ExactNumber;
+    use exact_bezier::algebra::ExactNumber;
     let mut items = Vec::new();
     let (mut depth, mut start) = (0i32, 0);
     for (k, ch) in text.char_indices() {
@@ -726,7 +685,7 @@ pub(crate) fn parse_algebraic_list(text: &str) -> Result<Vec<RealAlgebraic>, Err
 /// Parse a comma-separated list of exact numbers (`1/3,0.25`).
 pub(crate) fn parse_list(text: &str) -> Result<Vec<BigRational>, Error> {
     text.split(',')
-        .map(exact_bezier::io::parse_rational)
+        .map(exact_bezier::algebra::parse_rational)
         .collect()
 }
 
@@ -747,49 +706,17 @@ pub(crate) trait PatchOp {
     }
 }
 
-/// Charge `what`'s estimated work on each patch before computing: `cost`
-/// gives `(operations, bits)` ([`limits::exact_work`]); an `f64` run counts
-/// the operations only.
+/// Charge `what`'s estimated work on each patch before computing
+/// ([`limits::charge_sizes`]: `cost` gives `(operations, bits)`; an `f64`
+/// run counts the operations only).
 pub(crate) fn charge_each<T: ExactScalar>(
     what: &str,
     patches: &[Patch<T>],
     scalar: ScalarKind,
     cost: impl Fn(&Size) -> (u64, u64),
 ) -> Result<(), Error> {
-    charge_with(what, patches, scalar, 1, cost)
-}
-
-/// [`charge_each`] for a map whose parameters include a general root of
-/// degree `param_degree` (1: none). Such a parameter enters raised to
-/// powers up to the patch's total degree `N`, and the degrees of resultants
-/// multiply, so an operation is charged `16·d^{4N}` (a quadratic curve
-/// under a Möbius map with a degree-3 root takes 0.8 s; with a degree-7
-/// root, or a cubic with a degree-3 root, many minutes).
-pub(crate) fn charge_with<T: ExactScalar>(
-    what: &str,
-    patches: &[Patch<T>],
-    scalar: ScalarKind,
-    param_degree: u64,
-    cost: impl Fn(&Size) -> (u64, u64),
-) -> Result<(), Error> {
-    for p in patches {
-        let size = Size::of(p, T::bits);
-        let (ops, bits) = cost(&size);
-        let param_cost = if param_degree > 1 {
-            let e = u32::try_from(4 * size.total_degree()).unwrap_or(u32::MAX);
-            16u64.saturating_mul(param_degree.saturating_pow(e))
-        } else {
-            1
-        };
-        let units = match scalar {
-            ScalarKind::Exact => {
-                limits::exact_work(ops, bits).saturating_mul(patch_op_cost(p).max(param_cost))
-            }
-            ScalarKind::F64 => ops,
-        };
-        limits::charge(what, units)?;
-    }
-    Ok(())
+    let sizes = patches.iter().map(Patch::size);
+    limits::charge_sizes(what, sizes, scalar == ScalarKind::Exact, 1, cost)
 }
 
 /// Convert an exact patch to `f64`, refusing numbers that overflow.
@@ -829,7 +756,9 @@ pub(crate) fn run_each<Op: PatchOp, T: ExactScalar>(
 ) -> Result<Value, Error> {
     let param_bits = params.iter().map(T::bits).max().unwrap_or(0);
     let param_degree = params.iter().map(T::root_degree).max().unwrap_or(1);
-    charge_with(Op::NAME, patches, scalar, param_degree, |s| {
+    let sizes = patches.iter().map(Patch::size);
+    let exact = scalar == ScalarKind::Exact;
+    limits::charge_sizes(Op::NAME, sizes, exact, param_degree, |s| {
         op.cost(s, param_bits)
     })?;
     let values = patches

@@ -4,13 +4,13 @@
 //! reparameterization with its parameters.
 
 use super::{load, one_or_many};
-use exact_bezier::limits::{self, Size};
+use exact_bezier::algebra::RealAlgebraic;
+use exact_bezier::io::standard_to_json;
+use exact_bezier::limits;
 use exact_bezier::patch::Patch;
-use exact_bezier::reparam::standard::{
-    standardize_curve_algebraic, standardize_rect_algebraic, theorem1_holds,
-};
+use exact_bezier::reparam::{standardize, Options};
 use exact_bezier::Error;
-use exact_bezier::Tolerance;
+use exact_bezier::Scalar;
 use num_rational::BigRational;
 use serde_json::Value;
 
@@ -34,11 +34,16 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     for p in &patches {
         limits::charge("standardize", standardize_cost(p))?;
     }
+    let options = Options {
+        compact: a.compact,
+        ..Options::default()
+    };
+    let lift = RealAlgebraic::from_rational;
     let out = patches
         .iter()
         .map(|p| match p {
-            Patch::Curve(c) => standardize_curve_algebraic(c)?.to_json(),
-            Patch::Rect(r) => standardize_rect_algebraic(r, a.compact)?.to_json(),
+            Patch::Curve(c) => standard_to_json(&standardize(&c.map(lift), options)?),
+            Patch::Rect(r) => standard_to_json(&standardize(&r.map(lift), options)?),
             Patch::Tri(_) => Err(Error::Shape(
                 "standardize applies to a curve or a rect patch, not a tri patch".into(),
             )),
@@ -62,9 +67,9 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 /// default budget only when raised (about 5 s in a release build), and a
 /// bicubic with unrelated cube roots is refused before it runs for minutes.
 fn standardize_cost(p: &Patch<BigRational>) -> u64 {
-    let s = Size::exact(p);
+    let s = p.size();
     let (m, n) = (s.degree.0.max(1) as u64, s.degree.1.max(1) as u64);
-    let quadratic = matches!(p, Patch::Rect(r) if !theorem1_holds(r, Tolerance::EXACT));
+    let quadratic = matches!(p, Patch::Rect(r) if !Options::default().linear(r));
     let big = if quadratic { m + n + 1 } else { m.max(n) + 1 };
     let ops = big * big * (m + 1) * (n + 1) * (s.dim as u64 + 1);
     let field = if quadratic { m * m * n } else { m * n };

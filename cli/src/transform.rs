@@ -6,7 +6,7 @@ use super::{
 };
 use exact_bezier::algebra::Ordered;
 use exact_bezier::io::{patch_to_json, JsonScalar};
-use exact_bezier::limits::{check_result_degree, Size};
+use exact_bezier::limits::{check_degree, Size};
 use exact_bezier::patch::Patch;
 use exact_bezier::reparam::Quadratic;
 use exact_bezier::Error;
@@ -83,7 +83,7 @@ impl Reparam {
             for p in patches {
                 if let Patch::Rect(r) = p {
                     let (m, n) = r.degree();
-                    check_result_degree(m + n)?;
+                    check_degree(m + n)?;
                 }
             }
         }
@@ -193,8 +193,8 @@ fn elevate_each<T: ExactScalar>(
             Patch::Rect(q) => q.degree(),
             Patch::Tri(t) => (t.degree(), 0),
         };
-        check_result_degree(m + by[0])?;
-        check_result_degree(n + by.get(1).copied().unwrap_or(0))?;
+        check_degree(m + by[0])?;
+        check_degree(n + by.get(1).copied().unwrap_or(0))?;
     }
     charge_each("elevate", patches, ScalarKind::Exact, |s| {
         let (r, t) = (by[0], by.get(1).copied().unwrap_or(0));

@@ -25,9 +25,8 @@
 use super::{Claim, Verdict};
 use exact_bezier::algebra::Poly;
 use exact_bezier::algebra::{binomial_scalar, ratio};
-use exact_bezier::coincide::filter::coincide_filtered;
 use exact_bezier::coincide::minimal::{minimal_rect, multiply_components};
-use exact_bezier::coincide::{coincide, invariant_parts};
+use exact_bezier::coincide::{coincide, invariant_parts, Options};
 use exact_bezier::curve::RationalCurve;
 use exact_bezier::hpoint::HPoint;
 use exact_bezier::io::read_patches;
@@ -216,8 +215,9 @@ fn fixture(text: &str) -> Patch<BigRational> {
 fn example3_vs_example1() -> Vec<Claim> {
     let ex1 = fixture(include_str!("../../tests/fixtures/yang_yong_example1.json"));
     let ex3 = fixture(include_str!("../../tests/fixtures/yang_yong_example3.json"));
-    let exact = coincide(&ex1, &ex3).expect("valid fixtures");
-    let (filtered, by) = coincide_filtered(&ex1, &ex3).expect("valid fixtures");
+    let exact = coincide(&ex1, &ex3, Options::default()).expect("valid fixtures");
+    let filtered = coincide(&ex1, &ex3, Options::filtered()).expect("valid fixtures");
+    let by = filtered.decided_by;
     let Patch::Rect(r3) = &ex3 else {
         unreachable!("fixture 3 is a rect patch")
     };

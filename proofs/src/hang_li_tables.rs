@@ -24,12 +24,12 @@
 
 use super::printed::{decimal, rounds_to, shown};
 use super::{Claim, Verdict};
+use exact_bezier::algebra::parse_rational;
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::algebra::{ratio, Field, Roots, Scalar, Tolerance};
 use exact_bezier::arc::{sigma_of_lambda, QuadArc};
 use exact_bezier::curve::circle::circle_of;
 use exact_bezier::curve::RationalCurve;
-use exact_bezier::io::parse_rational;
 use exact_bezier::Error;
 
 const SRC: &str = "004 Hang & Li";

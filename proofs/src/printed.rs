@@ -10,9 +10,9 @@
 //! `hang_li_tables` and `yang_yong_examples`.
 
 use super::{Claim, Verdict};
+use exact_bezier::algebra::parse_rational;
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::algebra::{ratio, Scalar};
-use exact_bezier::io::parse_rational;
 use exact_bezier::Error;
 use num_rational::BigRational;
 

@@ -4,7 +4,7 @@
 //! printed precision**, exactly (module `printed`: `v − h ≤ x ≤ v + h` on
 //! the real algebraic numbers, `h` half a unit of the last printed digit):
 //! `reproduced` if so, else `mismatch` with both values. Examples 1 and 3
-//! run the exact standardization ([`standardize_rect_algebraic`]); Example
+//! run the exact standardization ([`standardize`] on `RealAlgebraic`); Example
 //! 2's printed parameters come from the exact map of eq. (19)
 //! ([`standard_quadratic_map`]), its (6, 6) standard form in `f64` (claims
 //! `checked`).
@@ -17,9 +17,9 @@ use exact_bezier::curve::geometry::ConicType;
 use exact_bezier::io::read_patches;
 use exact_bezier::patch::Patch;
 use exact_bezier::rect::{RectPatch, Side};
-use exact_bezier::reparam::standard::{
-    corner_weights, standard_quadratic_map, standardize_quadratic, standardize_rect_algebraic,
-    theorem1_holds, Standard, StandardMap,
+use exact_bezier::reparam::{
+    corner_weights, standard_quadratic_map, standardize, theorem1_holds, Method, Options, Standard,
+    StandardMap,
 };
 use num_rational::BigRational;
 use Verdict::{Checked as C, Mismatch as M, Proved as P, Refuted as R, Reproduced as Y};
@@ -86,7 +86,8 @@ struct Linear {
 }
 
 fn linear_parts(p: &RectPatch<BigRational>) -> Linear {
-    let std = standardize_rect_algebraic(p, false).expect("positive weights");
+    let std = standardize(&p.map(RealAlgebraic::from_rational), Options::default())
+        .expect("positive weights");
     let StandardMap::Mobius {
         alpha,
         beta: Some(beta),
@@ -329,7 +330,14 @@ fn example2_claims() -> Vec<Claim> {
             ),
         ));
     }
-    let std = standardize_quadratic(&p.map(Ordered::to_f64)).expect("positive weights");
+    let std = standardize(
+        &p.map(Ordered::to_f64),
+        Options {
+            method: Method::Quadratic,
+            ..Options::default()
+        },
+    )
+    .expect("positive weights");
     out.extend(example2_carried(&p, &std));
     out
 }

@@ -23,7 +23,7 @@
 use exact_bezier::coincide::{canonical_text, KeyDigest};
 use exact_bezier::eval::Evaluator;
 use exact_bezier::io::{parse_rational, patch_from_value, patch_to_json, read_patches};
-use exact_bezier::limits::{self, Size};
+use exact_bezier::limits;
 use exact_bezier::{Error, Patch};
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -266,7 +266,7 @@ fn build(
 /// `param_bits` bits, charged against the work limit first (the model of
 /// `exact-bezier eval`, docs/limits.md).
 fn charge_eval(p: &Patch<BigRational>, count: u64, param_bits: u64) -> Result<(), Error> {
-    let size = Size::exact(p);
+    let size = p.size();
     let ops = size.eval_ops().saturating_mul(count);
     let bits = size.grown_bits(size.total_degree(), param_bits);
     limits::charge("eval", limits::exact_work(ops, bits))
@@ -745,13 +745,16 @@ fn key(py: Python<'_>, patch: &Bound<'_, PyAny>) -> PyResult<String> {
 /// `exact-bezier coincide`.
 fn decide(a: &Patch<BigRational>, b: &Patch<BigRational>) -> Result<Value, Error> {
     for p in [a, b] {
-        let s = Size::exact(p);
+        let s = p.size();
         let n1 = s.total_degree() + 1;
         let ops = n1.pow(4).saturating_mul(s.dim as u64 + 1);
         let bits = s.bits.max(8).saturating_mul(n1);
         limits::charge("coincide", limits::exact_work(ops, bits))?;
     }
-    Ok(exact_bezier::coincide::coincide(a, b)?.to_json())
+    let options = exact_bezier::coincide::Options::default();
+    Ok(exact_bezier::io::coincidence_to_json(
+        &exact_bezier::coincide::coincide(a, b, options)?,
+    ))
 }
 
 /// `decide` as JSON text; the package wraps it in a `Coincidence`.

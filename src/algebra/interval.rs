@@ -1,7 +1,7 @@
 //! [`Interval`]: closed interval arithmetic on `f64` with outward rounding
 //! (each result widened by one ulp on each side), so an interval always
 //! encloses the exact value of the rational expression it stands for.
-//! Used by the filtered predicates ([`coincide_filtered`](crate::coincide::coincide_filtered)).
+//! Used by the filtered predicates (`coincide::coincide` with `Options::filtered`).
 
 use crate::algebra::scalar::rational_to_f64;
 use num_rational::BigRational;

@@ -13,6 +13,7 @@ pub mod gcd;
 pub(crate) mod int;
 pub(crate) mod interval;
 pub(crate) mod modp;
+pub(crate) mod number;
 pub(crate) mod poly;
 pub mod real_algebraic;
 pub(crate) mod scalar;
@@ -23,6 +24,7 @@ pub(crate) mod wide;
 pub use int::Int;
 pub use interval::Interval;
 pub use modp::Fp;
+pub use number::{parse_rational, ExactNumber};
 pub use poly::Poly;
 pub use real_algebraic::{text::parse_algebraic, RealAlgebraic};
 pub use scalar::{

@@ -35,10 +35,10 @@
 //! the test is exact, and a failing sample is an exact witness.
 
 use crate::algebra::int::{common_denominator, Int};
-use crate::coincide::{boundary_curve, coincide_curves, Edge, MobiusParam};
+use crate::coincide::{boundary_curve, coincide, Edge, MobiusParam, Options};
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::{RationalCurve, RectPatch};
+use crate::{Patch, RationalCurve, RectPatch};
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
@@ -159,7 +159,11 @@ fn edge_map(
     if let Some(m) = direct_map(ca, cb) {
         return Ok(Ok(m));
     }
-    let c = coincide_curves(ca, cb)?;
+    let c = coincide(
+        &Patch::Curve(ca.clone()),
+        &Patch::Curve(cb.clone()),
+        Options::default(),
+    )?;
     let Some(w) = c.witness else {
         return Ok(Err(format!("the boundary curves differ: {}", c.reason)));
     };

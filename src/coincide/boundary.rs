@@ -3,11 +3,12 @@
 //! another, up to Möbius maps, reversal, elevation, common factors and
 //! weight scaling?
 
-use super::{coincide_curves, Coincidence};
+use super::{coincide, Coincidence, Options};
 use crate::algebra::scalar::Scalar;
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::rect::RectPatch;
+use crate::Patch;
 use num_rational::BigRational;
 use std::fmt;
 
@@ -88,7 +89,8 @@ pub fn shared_boundaries(
     let mut out = Vec::new();
     for ea in Edge::ALL {
         for eb in Edge::ALL {
-            let c = coincide_curves(&boundary_curve(a, ea), &boundary_curve(b, eb))?;
+            let (ca, cb) = (boundary_curve(a, ea), boundary_curve(b, eb));
+            let c = coincide(&Patch::Curve(ca), &Patch::Curve(cb), Options::default())?;
             if c.coincident {
                 out.push((ea, eb, c));
             }

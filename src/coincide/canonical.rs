@@ -27,7 +27,7 @@ use crate::algebra::RealAlgebraic;
 use crate::coincide::minimal::{certified_minimal, minimal_net, Reducible};
 use crate::coincide::{net_of, Prepared, Symmetry, View};
 use crate::error::Error;
-use crate::patch::Patch;
+use crate::Patch;
 use num_rational::BigRational;
 use rayon::prelude::*;
 use sha2::{Digest, Sha256};

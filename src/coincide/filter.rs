@@ -9,12 +9,12 @@
 //! conclusion. Equality can never be certified by intervals; it goes to the
 //! exact path.
 //!
-//! [`coincide_filtered`] stages:
+//! [`filtered`] stages:
 //! 1. corner points (intrinsic to the parametric map, so valid before any
 //!    reduction) under every symmetry;
 //! 2. if both nets are certified minimal modulo p (exact, cheap), control
 //!    points and weight invariants under every admissible symmetry;
-//! 3. otherwise, or when a symmetry survives, the exact [`coincide`](crate::coincide::coincide).
+//! 3. otherwise, or when a symmetry survives, the exact decision.
 //!
 //! Reference: the filtered-predicate design of CGAL (Brönnimann, Burnikel,
 //! Pion, "Interval arithmetic yields efficient dynamic filters for
@@ -22,10 +22,8 @@
 
 use crate::algebra::interval::Interval;
 use crate::coincide::minimal::{certified_minimal, Net};
-use crate::coincide::{coincide_nets, net_of, Coincidence, ReductionInfo, Symmetry};
-use crate::error::Error;
+use crate::coincide::{exact_nets, Coincidence, DecidedBy, ReductionInfo, Symmetry};
 use crate::hpoint::HPoint;
-use crate::patch::Patch;
 use num_rational::BigRational;
 
 /// Interval images of one row of a net: Cartesian points and weights.
@@ -144,21 +142,11 @@ fn net_differs(a: &Bounds, b: &Bounds, sym: Symmetry) -> Option<String> {
         .map(|(i, j)| format!("weight invariant I_{{{i},{j}}} differs"))
 }
 
-/// Which stage decided a [`coincide_filtered`] call.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum DecidedBy {
-    /// Interval bounds on the corner points.
-    Corners,
-    /// Interval bounds on the control points and weight invariants.
-    Intervals,
-    /// The exact path.
-    Exact,
-}
-
 fn not_coincident(
     reason: String,
     a: &Net<BigRational>,
     b: &Net<BigRational>,
+    decided_by: DecidedBy,
 ) -> Coincidence<BigRational> {
     let info = |n: &Net<BigRational>| ReductionInfo {
         from: (n.len() - 1, n[0].len() - 1),
@@ -170,37 +158,21 @@ fn not_coincident(
         reason,
         witness: None,
         reductions: [info(a), info(b)],
+        decided_by,
     }
 }
 
-/// The exact coincidence predicate of [`coincide`](crate::coincide::coincide), filtered:
+/// The exact coincidence decision for two nets of one kind, filtered:
 /// the same answer, decided by `f64` interval bounds when they can (only
 /// "not coincident" can be certified that way), by exact arithmetic
 /// otherwise. The reductions reported when an interval stage decides are
 /// those known at that point (none before stage 2).
-///
-/// ```
-/// use exact_bezier::{coincide::coincide_filtered, io::read_patches, coincide::DecidedBy};
-/// let read = |f: &str| read_patches(&std::fs::read_to_string(f).unwrap()).unwrap().remove(0);
-/// let ex1 = read("tests/fixtures/yang_yong_example1.json");
-/// let ex3 = read("tests/fixtures/yang_yong_example3.json");
-/// let (c, by) = coincide_filtered(&ex1, &ex3).unwrap();
-/// assert!(!c.coincident);
-/// assert_eq!(by, DecidedBy::Intervals);
-/// ```
-///
-/// # Errors
-///
-/// As [`coincide`](crate::coincide::coincide).
-pub fn coincide_filtered(
-    a: &Patch<BigRational>,
-    b: &Patch<BigRational>,
-) -> Result<(Coincidence<BigRational>, DecidedBy), Error> {
-    let ((na, curve), (nb, _)) = (net_of(a)?, net_of(b)?);
-    if a.kind() != b.kind() {
-        return Ok((crate::coincide::coincide(a, b)?, DecidedBy::Exact));
-    }
-    let (ba, bb) = (Bounds::new(&na), Bounds::new(&nb));
+pub(crate) fn filtered(
+    na: &Net<BigRational>,
+    nb: &Net<BigRational>,
+    curve: bool,
+) -> Coincidence<BigRational> {
+    let (ba, bb) = (Bounds::new(na), Bounds::new(nb));
     let syms: Vec<Symmetry> = Symmetry::all()
         .filter(|s| !curve || (!s.swap && !s.reverse_v))
         .collect();
@@ -209,9 +181,9 @@ pub fn coincide_filtered(
             "corner points differ under all {} symmetries (interval bounds)",
             syms.len()
         );
-        return Ok((not_coincident(reason, &na, &nb), DecidedBy::Corners));
+        return not_coincident(reason, na, nb, DecidedBy::Corners);
     }
-    if certified_minimal(&na) && certified_minimal(&nb) {
+    if certified_minimal(na) && certified_minimal(nb) {
         let admissible: Vec<Symmetry> = Symmetry::admissible(curve, ba.dims(), bb.dims()).collect();
         let reasons: Vec<Option<String>> = admissible
             .iter()
@@ -229,8 +201,8 @@ pub fn coincide_filtered(
                     bb.dims()
                 ),
             };
-            return Ok((not_coincident(reason, &na, &nb), DecidedBy::Intervals));
+            return not_coincident(reason, na, nb, DecidedBy::Intervals);
         }
     }
-    Ok((coincide_nets(&na, &nb, curve), DecidedBy::Exact))
+    exact_nets(na, nb, curve)
 }

@@ -25,16 +25,17 @@
 //! (e.g. the quadratic one of eqs 9–17) are *not* coincident in this sense.
 //!
 //! Module layout: `view` (normalized nets under symmetries), this file (the
-//! decision and its witness), `boundary` (shared boundary curves).
+//! one entry point [`coincide`] with its [`Options`], the decision and its
+//! witness), `filter` (the interval filter), `boundary` (shared boundary
+//! curves).
 
 pub mod canonical;
 mod coprime;
-pub mod filter;
+mod filter;
 pub mod minimal;
 
 pub use canonical::{canonical_key, dedup, CanonicalKey, Deduper};
 pub use canonical::{canonical_text, key_digest, Classes, KeyDigest, KEY_VERSION};
-pub use filter::{coincide_filtered, DecidedBy};
 pub use minimal::{minimal_curve, minimal_rect, multiply_components, Minimal, Reducible};
 
 mod boundary;
@@ -45,14 +46,13 @@ pub use view::invariant_parts;
 pub(crate) use view::{Prepared, View};
 
 use crate::algebra::scalar::{Ordered, Roots, Scalar, Tolerance};
+use crate::algebra::RealAlgebraic;
 use crate::coincide::minimal::{curve_net, drop_elevation, minimal_net, Net};
 use crate::curve::RationalCurve;
 use crate::error::Error;
-use crate::io::JsonScalar;
-use crate::patch::Patch;
 use crate::rect::RectPatch;
+use crate::Patch;
 use num_rational::BigRational;
-use serde_json::{json, Value};
 use std::fmt;
 
 /// One of the 8 symmetries of the parameter square: first swap u and v (if
@@ -214,38 +214,61 @@ pub struct Coincidence<T> {
     pub witness: Option<Witness<T>>,
     /// The reductions of a and b.
     pub reductions: [ReductionInfo; 2],
+    /// Which stage decided ([`DecidedBy::Exact`] unless [`Options::filtered`]
+    /// let an interval stage decide).
+    pub decided_by: DecidedBy,
 }
 
-/// `{"rho", "alpha"}` in u, `{"sigma", "beta"}` in v (the paper's names).
-fn param_json<T: JsonScalar>(p: &MobiusParam<T>, (ratio, param): (&str, &str)) -> Value {
-    match p {
-        MobiusParam::None => Value::Null,
-        MobiusParam::Value { rho, alpha } => json!({ratio: rho.to_json(), param: alpha.to_json()}),
-        MobiusParam::Power { exponent, power } => {
-            json!({format!("{ratio}_power"): {"exponent": exponent, "value": power.to_json()}})
+/// Which stage decided a [`coincide`] call.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DecidedBy {
+    /// Interval bounds on the corner points.
+    Corners,
+    /// Interval bounds on the control points and weight invariants.
+    Intervals,
+    /// The full decision (exact, or within the tolerance for `f64`).
+    Exact,
+}
+
+/// How [`coincide`] decides.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Options {
+    /// Decide with `f64` interval bounds first when they can (module
+    /// `filter`: only "not coincident" is certified that way), exactly
+    /// otherwise: the same answer. Over `BigRational` only; other scalars
+    /// take the full decision.
+    pub filtered: bool,
+    /// For `f64` only: points within `tol` (absolute), weight invariants
+    /// within `tol` relative to their size, power coefficients within `tol`
+    /// treated as zero when undoing elevation. Exact scalars ignore it.
+    pub tol: Tolerance,
+}
+
+impl Options {
+    /// The filtered exact decision ([`Options::filtered`]).
+    pub fn filtered() -> Options {
+        Options {
+            filtered: true,
+            ..Options::default()
+        }
+    }
+
+    /// The `f64` decision within `tol` ([`Options::tol`]).
+    pub fn within(tol: Tolerance) -> Options {
+        Options {
+            tol,
+            ..Options::default()
         }
     }
 }
 
-impl<T: JsonScalar> Coincidence<T> {
-    /// The CLI object `{"coincident", "reason", "witness", "reductions"}`.
-    pub fn to_json(&self) -> Value {
-        let red = |r: &ReductionInfo| json!({"from": [r.from.0, r.from.1], "to": [r.to.0, r.to.1], "common_factor": r.common_factor});
-        let witness = self.witness.as_ref().map_or(Value::Null, |w| {
-            json!({
-                "symmetry": w.symmetry.to_string(),
-                "u": param_json(&w.u, ("rho", "alpha")),
-                "v": param_json(&w.v, ("sigma", "beta")),
-                "k": w.k.as_ref().map_or(Value::Null, JsonScalar::to_json),
-                "corner_weight_ratio": w.corner_ratio.to_json(),
-            })
-        });
-        json!({
-            "coincident": self.coincident,
-            "reason": self.reason,
-            "witness": witness,
-            "reductions": [red(&self.reductions[0]), red(&self.reductions[1])],
-        })
+impl Default for Options {
+    /// Unfiltered; for `f64` the tolerance [`Tolerance::default`] (`1e-9`).
+    fn default() -> Self {
+        Options {
+            filtered: false,
+            tol: Tolerance::default(),
+        }
     }
 }
 
@@ -404,6 +427,7 @@ fn decide<T: Roots + fmt::Display>(
                     reason,
                     witness: Some(w),
                     reductions,
+                    decided_by: DecidedBy::Exact,
                 };
             }
             Err(e) => {
@@ -428,6 +452,7 @@ fn decide<T: Roots + fmt::Display>(
         reason,
         witness: None,
         reductions,
+        decided_by: DecidedBy::Exact,
     }
 }
 
@@ -470,15 +495,26 @@ fn kinds_differ<T: Scalar>(a: &Patch<T>, b: &Patch<T>) -> Option<Coincidence<T>>
             to: (0, 0),
             common_factor: "1".into(),
         }),
+        decided_by: DecidedBy::Exact,
     })
 }
 
-/// Exact coincidence of two curves or two rect patches (see the module
-/// docs): no tolerance. Over `BigRational` no roots either; over
-/// [`RealAlgebraic`](crate::algebra::RealAlgebraic) (patches with algebraic
-/// control points or weights, e.g. a standard form) the same decision runs
-/// on exact algebraic numbers, and the witness's `ρ = (λ_{a,0}/λ_{0,0})^{1/a}`
-/// is always a number (an exact root).
+/// Coincidence of two curves or two rect patches (see the module docs).
+///
+/// Over exact scalars no tolerance: over `BigRational` no roots either;
+/// over [`RealAlgebraic`] (patches with algebraic control points or
+/// weights, e.g. a standard form) the same decision runs on exact algebraic
+/// numbers, and the witness's `ρ = (λ_{a,0}/λ_{0,0})^{1/a}` is always a
+/// number (an exact root). [`Options::filtered`] decides over `BigRational`
+/// by `f64` interval bounds first where they can (same answer,
+/// [`Coincidence::decided_by`] says which stage decided; the reductions
+/// reported by an interval stage are those known at that point).
+///
+/// Over `f64` the decision is within [`Options::tol`]: points within `tol`
+/// (absolute), invariants within `tol` (relative to their size); degree
+/// elevation is undone with power coefficients within `tol` treated as
+/// zero; common factors of degree ≥ 1 are **not** removed (a floating-point
+/// gcd is not a decision: use an exact scalar).
 ///
 /// # Examples
 ///
@@ -486,30 +522,105 @@ fn kinds_differ<T: Scalar>(a: &Patch<T>, b: &Patch<T>) -> Option<Coincidence<T>>
 /// elevated copy of itself:
 ///
 /// ```
-/// use exact_bezier::{coincide::coincide, io::read_patches, Patch, ratio};
+/// use exact_bezier::{coincide::{coincide, Options}, io::read_patches, Patch, ratio};
 /// let text = std::fs::read_to_string("tests/fixtures/yang_yong_example1.json").unwrap();
 /// let a = read_patches(&text).unwrap().remove(0);
 /// let Patch::Rect(r) = &a else { unreachable!() };
 /// let b = Patch::Rect(r.mobius_u(&ratio(3, 5)).mobius_v(&ratio(7, 10)).reverse_v().elevate(1, 2));
-/// let c = coincide(&a, &b).unwrap();
+/// let c = coincide(&a, &b, Options::default()).unwrap();
 /// assert!(c.coincident);
 /// assert_eq!(c.witness.unwrap().symmetry.to_string(), "reverse v");
+/// ```
+///
+/// Examples 1 and 3: different exactly, decided by intervals when filtered,
+/// the same within a coarse `f64` tolerance:
+///
+/// ```
+/// use exact_bezier::{coincide::{coincide, DecidedBy, Options}, io::read_patches, Tolerance};
+/// let read = |f: &str| read_patches(&std::fs::read_to_string(f).unwrap()).unwrap().remove(0);
+/// let ex1 = read("tests/fixtures/yang_yong_example1.json");
+/// let ex3 = read("tests/fixtures/yang_yong_example3.json");
+/// let c = coincide(&ex1, &ex3, Options::filtered()).unwrap();
+/// assert!(!c.coincident);
+/// assert_eq!(c.decided_by, DecidedBy::Intervals);
+/// let (f1, f3) = (ex1.to_f64(), ex3.to_f64());
+/// assert!(!coincide(&f1, &f3, Options::within(Tolerance(1e-9))).unwrap().coincident);
+/// assert!(coincide(&f1, &f3, Options::within(Tolerance(0.05))).unwrap().coincident);
 /// ```
 ///
 /// # Errors
 ///
 /// [`Error::Shape`] for tri patches; [`Error::Weight`] for a non-positive
 /// weight.
-pub fn coincide<T: Reducible + Roots>(a: &Patch<T>, b: &Patch<T>) -> Result<Coincidence<T>, Error> {
+pub fn coincide<T: CoincideScalar>(
+    a: &Patch<T>,
+    b: &Patch<T>,
+    options: Options,
+) -> Result<Coincidence<T>, Error> {
     let ((na, curve), (nb, _)) = (net_of(a)?, net_of(b)?);
     if let Some(c) = kinds_differ(a, b) {
         return Ok(c);
     }
-    Ok(coincide_nets(&na, &nb, curve))
+    Ok(T::decide_nets(&na, &nb, curve, options))
+}
+
+/// A scalar [`coincide`] decides over: how two homogeneous nets of one kind
+/// are reduced and compared.
+pub trait CoincideScalar: Roots + fmt::Display {
+    /// The decision for the nets `na`, `nb` (curves when `curve`).
+    fn decide_nets(
+        na: &Net<Self>,
+        nb: &Net<Self>,
+        curve: bool,
+        options: Options,
+    ) -> Coincidence<Self>;
+}
+
+/// Exact; [`Options::filtered`] runs the interval filter first.
+impl CoincideScalar for BigRational {
+    fn decide_nets(
+        na: &Net<Self>,
+        nb: &Net<Self>,
+        curve: bool,
+        options: Options,
+    ) -> Coincidence<Self> {
+        if options.filtered {
+            filter::filtered(na, nb, curve)
+        } else {
+            exact_nets(na, nb, curve)
+        }
+    }
+}
+
+/// Exact, on real algebraic numbers.
+impl CoincideScalar for RealAlgebraic {
+    fn decide_nets(na: &Net<Self>, nb: &Net<Self>, curve: bool, _: Options) -> Coincidence<Self> {
+        exact_nets(na, nb, curve)
+    }
+}
+
+/// Within [`Options::tol`]; elevation undone, common factors kept.
+impl CoincideScalar for f64 {
+    fn decide_nets(
+        na: &Net<Self>,
+        nb: &Net<Self>,
+        curve: bool,
+        options: Options,
+    ) -> Coincidence<Self> {
+        let tol = options.tol;
+        let (ra, rb) = (drop_elevation(na, tol), drop_elevation(nb, tol));
+        let info = |from: &Net<f64>, to: &Net<f64>| ReductionInfo {
+            from: shape_of(from),
+            to: shape_of(to),
+            common_factor: "1".into(),
+        };
+        let reductions = [info(na, &ra), info(nb, &rb)];
+        decide(&ra, &rb, curve, tol, reductions)
+    }
 }
 
 /// The exact decision for two homogeneous nets of the same kind.
-pub(crate) fn coincide_nets<T: Reducible + Roots>(
+pub(crate) fn exact_nets<T: Reducible + Roots>(
     na: &Net<T>,
     nb: &Net<T>,
     curve: bool,
@@ -522,68 +633,6 @@ pub(crate) fn coincide_nets<T: Reducible + Roots>(
         Tolerance::EXACT,
         [info(&ra), info(&rb)],
     )
-}
-
-/// The same decision in `f64` with an explicit tolerance: points within
-/// `tol` (absolute), invariants within `tol` (relative to their size). Degree elevation
-/// is undone with power coefficients within `tol` treated as zero; common
-/// factors of degree ≥ 1 are **not** removed (a floating-point gcd is not a
-/// decision: use [`coincide`] or [`coincide_filtered`]).
-///
-/// ```
-/// use exact_bezier::{coincide::coincide_f64, io::read_patches, Tolerance};
-/// let text = std::fs::read_to_string("tests/fixtures/yang_yong_example1.json").unwrap();
-/// let ex1 = read_patches(&text).unwrap().remove(0).to_f64();
-/// let text = std::fs::read_to_string("tests/fixtures/yang_yong_example3.json").unwrap();
-/// let ex3 = read_patches(&text).unwrap().remove(0).to_f64();
-/// assert!(!coincide_f64(&ex1, &ex3, Tolerance(1e-9)).unwrap().coincident);
-/// assert!(coincide_f64(&ex1, &ex3, Tolerance(0.05)).unwrap().coincident);
-/// ```
-///
-/// # Errors
-///
-/// As [`coincide`].
-pub fn coincide_f64(
-    a: &Patch<f64>,
-    b: &Patch<f64>,
-    tol: Tolerance,
-) -> Result<Coincidence<f64>, Error> {
-    let ((na, curve), (nb, _)) = (net_of(a)?, net_of(b)?);
-    if let Some(c) = kinds_differ(a, b) {
-        return Ok(c);
-    }
-    let (ra, rb) = (drop_elevation(&na, tol), drop_elevation(&nb, tol));
-    let info = |from: &Net<f64>, to: &Net<f64>| ReductionInfo {
-        from: shape_of(from),
-        to: shape_of(to),
-        common_factor: "1".into(),
-    };
-    let reductions = [info(&na, &ra), info(&nb, &rb)];
-    Ok(decide(&ra, &rb, curve, tol, reductions))
-}
-
-/// Exact coincidence of two rect patches (see [`coincide`]).
-///
-/// # Errors
-///
-/// [`Error::Weight`] for a non-positive weight.
-pub fn coincide_rects(
-    a: &RectPatch<BigRational>,
-    b: &RectPatch<BigRational>,
-) -> Result<Coincidence<BigRational>, Error> {
-    coincide(&Patch::Rect(a.clone()), &Patch::Rect(b.clone()))
-}
-
-/// Exact coincidence of two curves (see [`coincide`]; symmetries: reversal).
-///
-/// # Errors
-///
-/// [`Error::Weight`] for a non-positive weight.
-pub fn coincide_curves(
-    a: &RationalCurve<BigRational>,
-    b: &RationalCurve<BigRational>,
-) -> Result<Coincidence<BigRational>, Error> {
-    coincide(&Patch::Curve(a.clone()), &Patch::Curve(b.clone()))
 }
 
 #[cfg(test)]
@@ -600,7 +649,7 @@ mod tests {
             .scale_weights(&ratio(5, 3))
             .reverse()
             .elevate(2);
-        let c = coincide_curves(&a, &b).unwrap();
+        let c = coincide(&Patch::Curve(a), &Patch::Curve(b), Options::default()).unwrap();
         assert!(c.coincident, "{}", c.reason);
         let w = c.witness.unwrap();
         assert!(w.symmetry.reverse_u);
@@ -623,7 +672,7 @@ mod tests {
         let mut w2 = w.clone();
         w2[2] = ratio(1, 2);
         let b = RationalCurve::new(pts, w2).unwrap();
-        let c = coincide_curves(&a, &b).unwrap();
+        let c = coincide(&Patch::Curve(a), &Patch::Curve(b), Options::default()).unwrap();
         assert!(!c.coincident);
         assert!(
             c.reason

@@ -17,22 +17,11 @@
 use super::certify::{
     contract, jacobian, krawczyk, point_and_velocity, velocity_hull, Krawczyk, PlanarBoxes,
 };
-use super::{intersect, Intersections};
 use crate::algebra::Interval;
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use num_rational::BigRational;
-
-/// Which stage decided an [`intersect_filtered`] call.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum DecidedBy {
-    /// Interval arithmetic: hulls of subdivided control polygons and the
-    /// Krawczyk test.
-    Intervals,
-    /// The exact elimination.
-    Exact,
-}
 
 /// A transversal crossing of two planar curves certified by interval
 /// arithmetic: exactly one intersection has its parameters in `s × t`.
@@ -44,27 +33,6 @@ pub struct CertifiedCrossing {
     pub t: Interval,
     /// A box holding the common point.
     pub point: Vec<Interval>,
-}
-
-/// The answer of [`intersect_filtered`].
-#[derive(Clone, Debug)]
-pub enum Filtered {
-    /// Decided by interval arithmetic: the curves meet exactly once in each
-    /// box, transversally, and nowhere else (no tangency, no overlap);
-    /// empty when they are separated.
-    Certified(Vec<CertifiedCrossing>),
-    /// Decided by the exact elimination ([`intersect`]).
-    Exact(Intersections),
-}
-
-impl Filtered {
-    /// Which stage decided.
-    pub fn decided_by(&self) -> DecidedBy {
-        match self {
-            Filtered::Certified(_) => DecidedBy::Intervals,
-            Filtered::Exact(_) => DecidedBy::Exact,
-        }
-    }
 }
 
 /// Depth of the interval subdivision: parameter boxes down to `2⁻¹⁶`.
@@ -260,67 +228,17 @@ fn crossing(a: &PlanarBoxes, b: &PlanarBoxes, x: [Interval; 2]) -> Option<Certif
     })
 }
 
-/// The intersections of two curves, decided by `f64` interval arithmetic
-/// where it can (curves separated by hulls of subdivided control
-/// polygons; in the plane, transversal crossings certified by the
-/// Krawczyk test, see module `certify`), by the exact elimination
-/// otherwise (tangencies, overlaps, intersections at curve ends or on a
-/// dyadic split line, curves in 3D that come close). The answer says which
-/// ([`Filtered::decided_by`]); [`intersect`] gives the exact parameters of
-/// certified crossings when they are wanted.
-///
-/// ```
-/// use exact_bezier::{intersect::{intersect_filtered, Filtered}, RationalCurve, ratio};
-/// use exact_bezier::BigRational;
-/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
-/// let a = RationalCurve::polynomial(vec![p(0, 0), p(1, 2), p(2, 0)]).unwrap();
-/// let b = RationalCurve::polynomial(vec![p(0, 3), p(1, 5), p(2, 3)]).unwrap();
-/// let Filtered::Certified(x) = intersect_filtered(&a, &b).unwrap() else { panic!() };
-/// assert!(x.is_empty()); // separated
-/// // The line y = 1/2 crosses the arch y = 2x(2 − x)/2 twice.
-/// let c = RationalCurve::polynomial(vec![
-///     vec![ratio(-1, 1), ratio(1, 2)],
-///     vec![ratio(3, 1), ratio(1, 2)],
-/// ]).unwrap();
-/// let Filtered::Certified(x) = intersect_filtered(&a, &c).unwrap() else { panic!() };
-/// assert_eq!(x.len(), 2);
-/// assert!(x.iter().all(|k| k.point[1].lo <= 0.5 && 0.5 <= k.point[1].hi));
-/// ```
-///
-/// # Errors
-///
-/// As [`intersect`].
-pub fn intersect_filtered(
-    a: &RationalCurve<BigRational>,
-    b: &RationalCurve<BigRational>,
-) -> Result<Filtered, Error> {
-    match certify_crossings(a, b)? {
-        Some(found) => Ok(Filtered::Certified(found)),
-        None => intersect(a, b).map(Filtered::Exact),
-    }
-}
-
-/// The interval stage of [`intersect_filtered`] alone: `Some(crossings)`
-/// when `f64` interval arithmetic decides the pair (empty when the curves
-/// are separated), `None` when the exact elimination is needed (or the
-/// curves are not of one dimension ≥ 2). Its cost is bounded whatever the
-/// degrees — at most 16 levels of 1024 piece pairs, each a de Casteljau
-/// split of interval nets — so a caller can
-/// run it before paying for the exact path (the CLI does).
-///
-/// ```
-/// use exact_bezier::{intersect::certify_crossings, RationalCurve, ratio};
-/// use exact_bezier::BigRational;
-/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
-/// let a = RationalCurve::polynomial(vec![p(0, 0), p(1, 2), p(2, 0)]).unwrap();
-/// let touching = RationalCurve::polynomial(vec![p(0, 1), p(2, 1)]).unwrap(); // tangent at (1, 1)
-/// assert!(certify_crossings(&a, &touching).unwrap().is_none());
-/// ```
-///
-/// # Errors
-///
-/// [`Error::Weight`] for a non-positive weight.
-pub fn certify_crossings(
+/// The interval stage of [`intersect`](super::intersect) (`Filter::First`,
+/// `Filter::Only`): `Some(crossings)` when `f64` interval arithmetic decides
+/// the pair — curves separated by hulls of subdivided control polygons
+/// (empty), or, in the plane, transversal crossings certified by the
+/// Krawczyk test (module `certify`) and no other common point — `None`
+/// when the exact elimination is needed (tangencies, overlaps,
+/// intersections at curve ends or on a dyadic split line, curves in 3D
+/// that come close, or curves not of one dimension ≥ 2). Its cost is
+/// bounded whatever the degrees: at most 16 levels of 1024 piece pairs,
+/// each a de Casteljau split of interval nets.
+pub(crate) fn certify_crossings(
     a: &RationalCurve<BigRational>,
     b: &RationalCurve<BigRational>,
 ) -> Result<Option<Vec<CertifiedCrossing>>, Error> {
@@ -332,7 +250,7 @@ pub fn certify_crossings(
     Ok(decide(a, b))
 }
 
-/// An approximate intersection from [`intersect_approx`].
+/// An approximate intersection: the `f64` answer of [`intersect`](super::intersect).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ApproxIntersection {
     /// Parameter on the first curve (for an overlap, its start).
@@ -450,22 +368,13 @@ const OVERLAP_LEAVES: usize = 64;
 /// than 64 piece pairs is reported as a suspected overlap with its
 /// parameter ranges (a heuristic: the exact path decides overlaps).
 ///
-/// ```
-/// use exact_bezier::{intersect::intersect_approx, RationalCurve};
-/// let a = RationalCurve::polynomial(vec![vec![0.0, 0.0], vec![2.0, 2.0]]).unwrap();
-/// let b = RationalCurve::polynomial(vec![vec![0.0, 2.0], vec![2.0, 0.0]]).unwrap();
-/// let x = intersect_approx(&a, &b, 1e-9).unwrap();
-/// assert_eq!(x.len(), 1);
-/// assert!((x[0].s - 0.5).abs() < 1e-9 && (x[0].t - 0.5).abs() < 1e-9);
-/// ```
-///
 /// # Errors
 ///
 /// [`Error::Domain`] for a tolerance that is not finite and positive,
 /// [`Error::Shape`] for different dimensions, [`Error::Weight`] for
 /// non-positive weights, [`Error::Limit`] when more than 100 000 piece
 /// pairs stay close.
-pub fn intersect_approx(
+pub(crate) fn intersect_approx(
     a: &RationalCurve<f64>,
     b: &RationalCurve<f64>,
     tol: f64,

@@ -30,11 +30,12 @@
 //! Common factors of the homogeneous components and degree elevation do not
 //! matter: both disappear in the power basis after dividing by the gcd.
 //!
-//! A filtered path ([`intersect_filtered`]) first tries to decide in `f64`
-//! interval arithmetic (rigorous: outward rounding, convex hull property,
-//! the Krawczyk test for transversal crossings in the plane) and falls back
-//! to the exact path where that fails; [`intersect_approx`] is the `f64`
-//! path with a tolerance the caller gives.
+//! One entry point, [`intersect`]: two curves or one with itself, exactly
+//! over `BigRational`; a [`Filter`] first tries to decide in `f64` interval
+//! arithmetic (rigorous: outward rounding, convex hull property, the
+//! Krawczyk test for transversal crossings in the plane) and falls back to
+//! the exact path where that fails; over `f64` an approximate path with the
+//! caller's tolerance ([`Options::tol`]).
 //!
 //! Reference: Sederberg & Parry, *Comparison of three curve intersection
 //! algorithms*, Computer-Aided Design 18 (1986) 58–63 (implicitization and
@@ -48,15 +49,13 @@ mod filter;
 mod overlap;
 mod system;
 
-pub use filter::{
-    certify_crossings, intersect_approx, intersect_filtered, ApproxIntersection, CertifiedCrossing,
-    DecidedBy, Filtered,
-};
+pub use filter::{ApproxIntersection, CertifiedCrossing};
 pub use overlap::Mobius;
 
-use crate::algebra::{BPoly, RealAlgebraic, Scalar};
+use crate::algebra::{BPoly, RealAlgebraic, Scalar, Tolerance};
 use crate::curve::RationalCurve;
 use crate::error::Error;
+use filter::{certify_crossings, intersect_approx};
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use system::{combine, solve, PointCache, PowerCurve, Solution, Unsolved};
@@ -230,17 +229,171 @@ fn strip_factor(p: &BPoly<BigRational>, d: &BPoly<BigRational>) -> BPoly<BigRati
     p
 }
 
-/// Every intersection of two rational curves over `[0, 1] × [0, 1]`,
-/// exactly: isolated points with their parameters, point, multiplicity and
-/// contact, and shared pieces with their Möbius map.
+/// How [`intersect`] uses `f64` interval arithmetic before the exact
+/// elimination (exact scalars only).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Filter {
+    /// The exact elimination only.
+    #[default]
+    Off,
+    /// The interval stage first, the exact elimination where it cannot
+    /// decide.
+    First,
+    /// The interval stage alone ([`Found::Undecided`] where it cannot
+    /// decide): its cost is bounded whatever the degrees, so a caller can
+    /// run it before paying for the exact path.
+    Only,
+}
+
+/// How [`intersect`] decides.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Options {
+    /// The interval filter of two exact curves (self-intersections are
+    /// never decided by it).
+    pub filter: Filter,
+    /// For `f64` only: the tolerance, absolute in model units (default
+    /// `1e-9`).
+    pub tol: Tolerance,
+}
+
+impl Default for Options {
+    /// No filter; for `f64` the tolerance [`Tolerance::default`] (`1e-9`).
+    fn default() -> Self {
+        Options {
+            filter: Filter::Off,
+            tol: Tolerance::default(),
+        }
+    }
+}
+
+/// Which stage decided an exact [`intersect`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DecidedBy {
+    /// Interval arithmetic: hulls of subdivided control polygons and the
+    /// Krawczyk test.
+    Intervals,
+    /// The exact elimination.
+    Exact,
+}
+
+/// The answer of [`intersect`] over `BigRational`.
+#[derive(Clone, Debug)]
+pub enum Found {
+    /// Decided by interval arithmetic: the curves meet exactly once in each
+    /// box, transversally, and nowhere else (no tangency, no overlap);
+    /// empty when they are separated.
+    Certified(Vec<CertifiedCrossing>),
+    /// Decided by the exact elimination.
+    Exact(Intersections),
+    /// [`Filter::Only`] and the interval stage could not decide.
+    Undecided,
+}
+
+impl Found {
+    /// Which stage decided (`None` when undecided).
+    pub fn decided_by(&self) -> Option<DecidedBy> {
+        match self {
+            Found::Certified(_) => Some(DecidedBy::Intervals),
+            Found::Exact(_) => Some(DecidedBy::Exact),
+            Found::Undecided => None,
+        }
+    }
+
+    /// The exact intersections, when the exact elimination decided (always
+    /// with [`Filter::Off`]).
+    pub fn exact(self) -> Option<Intersections> {
+        match self {
+            Found::Exact(x) => Some(x),
+            _ => None,
+        }
+    }
+}
+
+/// A scalar [`intersect`] computes with, and its answer.
+pub trait IntersectScalar: Scalar {
+    /// What [`intersect`] returns.
+    type Found;
+    /// [`intersect`] over this scalar.
+    ///
+    /// # Errors
+    ///
+    /// As [`intersect`].
+    fn intersect(
+        a: &RationalCurve<Self>,
+        b: Option<&RationalCurve<Self>>,
+        options: Options,
+    ) -> Result<Self::Found, Error>;
+}
+
+/// Exact, with the interval filter of [`Options::filter`].
+impl IntersectScalar for BigRational {
+    type Found = Found;
+
+    fn intersect(
+        a: &RationalCurve<Self>,
+        b: Option<&RationalCurve<Self>>,
+        options: Options,
+    ) -> Result<Found, Error> {
+        let Some(b) = b else {
+            return match options.filter {
+                Filter::Only => Ok(Found::Undecided),
+                _ => self_intersect(a).map(Found::Exact),
+            };
+        };
+        if options.filter != Filter::Off {
+            if let Some(found) = certify_crossings(a, b)? {
+                return Ok(Found::Certified(found));
+            }
+        }
+        match options.filter {
+            Filter::Only => Ok(Found::Undecided),
+            _ => two_curves(a, b).map(Found::Exact),
+        }
+    }
+}
+
+/// Approximate, within [`Options::tol`]; two curves only.
+impl IntersectScalar for f64 {
+    type Found = Vec<ApproxIntersection>;
+
+    fn intersect(
+        a: &RationalCurve<Self>,
+        b: Option<&RationalCurve<Self>>,
+        options: Options,
+    ) -> Result<Self::Found, Error> {
+        let b = b.ok_or_else(|| {
+            Error::Domain("self-intersections are exact only: use an exact scalar".into())
+        })?;
+        intersect_approx(a, b, options.tol.0)
+    }
+}
+
+/// Every intersection of two rational curves over `[0, 1] × [0, 1]` (`b`
+/// given), or of one curve with itself (`b = None`).
+///
+/// Over `BigRational`, exactly: isolated points with their parameters,
+/// point, multiplicity and contact, and shared pieces with their Möbius
+/// map; self-intersections are double points `A(s) = A(t)` with `s < t`
+/// (loops, and a closed curve's shared end) and cusps (`s = t`, zero
+/// velocity). [`Options::filter`] decides by `f64` interval arithmetic
+/// first where it can (module docs; [`Found::decided_by`] says which
+/// stage decided).
+///
+/// Over `f64`, within the tolerance `tol` (absolute, in model units):
+/// subdivision to pieces of size `L = max(tol, √(tol·D))` (`D` the
+/// diameter of both curves' boxes), Newton refinement from each cluster of
+/// touching piece pairs, kept when `|A(s) − B(t)| ≤ tol`; a cluster of more
+/// than 64 piece pairs is a suspected overlap with its parameter ranges (a
+/// heuristic: the exact path decides overlaps).
 ///
 /// # Examples
 ///
 /// The parabola `y = x²` (a quadratic Bézier curve through (−1, 1), (0, 0),
-/// (1, 1)) meets the line `y = 1/2` at `x = ±1/√2`:
+/// (1, 1)) meets the line `y = 1/2` at `x = ±1/√2`, which the filter
+/// certifies in boxes:
 ///
 /// ```
-/// use exact_bezier::{intersect::intersect, RationalCurve, ratio};
+/// use exact_bezier::{intersect::{intersect, Filter, Found, Options}, RationalCurve, ratio};
 /// use exact_bezier::BigRational;
 /// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
 /// let parabola = RationalCurve::polynomial(vec![p(-1, 1), p(0, -1), p(1, 1)]).unwrap();
@@ -248,18 +401,58 @@ fn strip_factor(p: &BPoly<BigRational>, d: &BPoly<BigRational>) -> BPoly<BigRati
 ///     vec![ratio(-1, 1), ratio(1, 2)],
 ///     vec![ratio(1, 1), ratio(1, 2)],
 /// ]).unwrap();
-/// let x = intersect(&parabola, &line).unwrap();
+/// let x = intersect(&parabola, Some(&line), Options::default()).unwrap().exact().unwrap();
 /// assert_eq!(x.points.len(), 2);
 /// assert_eq!(x.points[1].point[0].to_string(), "sqrt(2)/2");
+/// let filtered = Options { filter: Filter::First, ..Options::default() };
+/// let Found::Certified(boxes) = intersect(&parabola, Some(&line), filtered).unwrap() else { panic!() };
+/// assert!(boxes.iter().all(|k| k.point[1].lo <= 0.5 && 0.5 <= k.point[1].hi));
+/// ```
+///
+/// The cubic through (0, 0), (3, 3), (−1, 3), (2, 0) (control points) has a
+/// loop: its double point is reported once, with `s < t`.
+///
+/// ```
+/// use exact_bezier::{intersect::{intersect, Contact, Options}, RationalCurve, ratio};
+/// use exact_bezier::BigRational;
+/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
+/// let c = RationalCurve::polynomial(vec![p(0, 0), p(3, 3), p(-1, 3), p(2, 0)]).unwrap();
+/// let x = intersect(&c, None, Options::default()).unwrap().exact().unwrap();
+/// assert_eq!(x.points.len(), 1);
+/// assert!(x.points[0].s < x.points[0].t);
+/// assert_eq!(x.points[0].contact, Contact::Transversal);
+/// ```
+///
+/// In `f64`:
+///
+/// ```
+/// use exact_bezier::{intersect::{intersect, Options}, RationalCurve};
+/// let a = RationalCurve::polynomial(vec![vec![0.0, 0.0], vec![2.0, 2.0]]).unwrap();
+/// let b = RationalCurve::polynomial(vec![vec![0.0, 2.0], vec![2.0, 0.0]]).unwrap();
+/// let x = intersect(&a, Some(&b), Options::default()).unwrap();
+/// assert_eq!(x.len(), 1);
+/// assert!((x[0].s - 0.5).abs() < 1e-9 && (x[0].t - 0.5).abs() < 1e-9);
 /// ```
 ///
 /// # Errors
 ///
 /// [`Error::Weight`] for a non-positive weight, [`Error::Shape`] for
 /// dimensions that differ or are below 2, [`Error::Domain`] for a curve
-/// that is a single point or a configuration the method does not resolve
-/// (named in the message).
-pub fn intersect(
+/// that is a single point, a curve that covers a piece of itself twice (an
+/// improper parameterization) or a configuration the method does not
+/// resolve (named in the message); in `f64`, [`Error::Domain`] for a
+/// tolerance that is not finite and positive or a self-intersection,
+/// [`Error::Limit`] when more than 100 000 piece pairs stay close.
+pub fn intersect<T: IntersectScalar>(
+    a: &RationalCurve<T>,
+    b: Option<&RationalCurve<T>>,
+    options: Options,
+) -> Result<T::Found, Error> {
+    T::intersect(a, b, options)
+}
+
+/// The exact intersections of two curves (see [`intersect`]).
+fn two_curves(
     a: &RationalCurve<BigRational>,
     b: &RationalCurve<BigRational>,
 ) -> Result<Intersections, Error> {
@@ -412,31 +605,8 @@ fn finish(
     Ok(Intersections { points, overlaps })
 }
 
-/// The self-intersections of one curve: double points `A(s) = A(t)` with
-/// `s < t` (loops, and a closed curve's shared end), and cusps (`s = t`,
-/// zero velocity), exactly.
-///
-/// # Examples
-///
-/// The cubic through (0, 0), (3, 3), (−1, 3), (2, 0) (control points) has a
-/// loop: its double point is reported once, with `s < t`.
-///
-/// ```
-/// use exact_bezier::{intersect::{self_intersect, Contact}, RationalCurve, ratio};
-/// use exact_bezier::BigRational;
-/// let p = |x: i64, y: i64| vec![ratio::<BigRational>(x, 1), ratio(y, 1)];
-/// let c = RationalCurve::polynomial(vec![p(0, 0), p(3, 3), p(-1, 3), p(2, 0)]).unwrap();
-/// let x = self_intersect(&c).unwrap();
-/// assert_eq!(x.points.len(), 1);
-/// assert!(x.points[0].s < x.points[0].t);
-/// assert_eq!(x.points[0].contact, Contact::Transversal);
-/// ```
-///
-/// # Errors
-///
-/// As [`intersect`]; [`Error::Domain`] when the curve covers a piece of
-/// itself twice (an improper parameterization).
-pub fn self_intersect(a: &RationalCurve<BigRational>) -> Result<Intersections, Error> {
+/// The exact self-intersections of one curve (see [`intersect`]).
+fn self_intersect(a: &RationalCurve<BigRational>) -> Result<Intersections, Error> {
     let pa = prepared(a, "A")?;
     let diagonal = BPoly::new(vec![
         crate::algebra::UPoly::new(vec![

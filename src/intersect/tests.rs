@@ -50,7 +50,7 @@ fn two_parabolas_touch_at_a_rational_point() {
         ],
         &[1, 1, 1],
     );
-    let x = intersect(&f, &g).unwrap();
+    let x = two_curves(&f, &g).unwrap();
     assert_eq!(x.points.len(), 1);
     let p = &x.points[0];
     assert_eq!((p.s.clone(), p.t.clone()), (alg(&q(1, 2)), alg(&q(1, 2))));
@@ -76,7 +76,7 @@ fn rational_cubic() -> RationalCurve<Q> {
 fn a_mobius_reparameterized_subsegment_is_an_overlap() {
     let a = rational_cubic();
     let b = a.subsegment(&q(1, 4), &q(3, 4)).mobius(&q(1, 3));
-    let x = intersect(&a, &b).unwrap();
+    let x = two_curves(&a, &b).unwrap();
     assert!(x.points.is_empty(), "{:?}", x.points);
     assert_eq!(x.overlaps.len(), 1);
     let o = &x.overlaps[0];
@@ -92,7 +92,7 @@ fn a_mobius_reparameterized_subsegment_is_an_overlap() {
 #[test]
 fn a_degree_elevated_copy_overlaps_everywhere_by_the_identity() {
     let a = rational_cubic();
-    let x = intersect(&a, &a.elevate(2)).unwrap();
+    let x = two_curves(&a, &a.elevate(2)).unwrap();
     assert_eq!(x.overlaps.len(), 1);
     let o = &x.overlaps[0];
     assert_eq!(
@@ -106,7 +106,7 @@ fn a_degree_elevated_copy_overlaps_everywhere_by_the_identity() {
 fn pieces_of_one_curve_that_only_touch_meet_once() {
     let a = rational_cubic();
     let (left, right) = a.subdivide(&q(2, 5));
-    let x = intersect(&left, &right).unwrap();
+    let x = two_curves(&left, &right).unwrap();
     assert!(x.overlaps.is_empty());
     assert_eq!(x.points.len(), 1);
     assert_eq!(x.points[0].contact, Contact::Continuation);
@@ -134,7 +134,7 @@ fn a_shared_endpoint_is_reported_once() {
         ],
         &[1, 2, 1],
     );
-    let x = intersect(&a, &b).unwrap();
+    let x = two_curves(&a, &b).unwrap();
     assert_eq!(x.points.len(), 1);
     assert_eq!(
         (x.points[0].s.clone(), x.points[0].t.clone()),
@@ -218,7 +218,7 @@ fn crossing_3d(shift: Q) -> (RationalCurve<Q>, RationalCurve<Q>, Vec<Q>) {
 #[test]
 fn curves_in_3d_cross_at_the_constructed_point() {
     let (a, b, p) = crossing_3d(q(0, 1));
-    let x = intersect(&a, &b).unwrap();
+    let x = two_curves(&a, &b).unwrap();
     assert_eq!(x.points.len(), 1);
     assert_eq!(x.points[0].s, alg(&q(1, 3)));
     assert_eq!(x.points[0].t, alg(&q(1, 2)));
@@ -229,14 +229,21 @@ fn curves_in_3d_cross_at_the_constructed_point() {
 fn curves_in_3d_that_miss_by_1e_minus_30_do_not_meet() {
     let tiny = Q::new(1.into(), num_bigint::BigInt::from(10).pow(30));
     let (a, b, _) = crossing_3d(tiny);
-    assert!(intersect(&a, &b).unwrap().points.is_empty());
-    let x = intersect_filtered(&a, &b).unwrap();
+    assert!(two_curves(&a, &b).unwrap().points.is_empty());
+    let x = filtered(&a, &b);
     // f64 boxes cannot separate 10⁻³⁰: the exact path decided.
-    assert_eq!(x.decided_by(), DecidedBy::Exact);
-    let Filtered::Exact(x) = x else {
-        unreachable!()
-    };
+    assert_eq!(x.decided_by(), Some(DecidedBy::Exact));
+    let Found::Exact(x) = x else { unreachable!() };
     assert!(x.points.is_empty());
+}
+
+/// [`intersect`] with [`Filter::First`].
+fn filtered(a: &RationalCurve<Q>, b: &RationalCurve<Q>) -> Found {
+    let options = Options {
+        filter: Filter::First,
+        ..Options::default()
+    };
+    intersect(a, Some(b), options).unwrap()
 }
 
 /// Certified crossings hold the exact intersections, one each, and the
@@ -245,9 +252,9 @@ fn curves_in_3d_that_miss_by_1e_minus_30_do_not_meet() {
 fn certified_crossings_hold_the_exact_ones() {
     let a = rational_cubic();
     let b = curve(&[&[q(0, 1), q(3, 4)], &[q(3, 1), q(1, 4)]], &[1, 1]);
-    let exact = intersect(&a, &b).unwrap();
+    let exact = two_curves(&a, &b).unwrap();
     assert!(!exact.points.is_empty());
-    let Filtered::Certified(boxes) = intersect_filtered(&a, &b).unwrap() else {
+    let Found::Certified(boxes) = filtered(&a, &b) else {
         panic!("two transversal crossings in the plane are certified");
     };
     assert_eq!(boxes.len(), exact.points.len());
@@ -280,36 +287,30 @@ fn certified_crossings_hold_the_exact_ones() {
         ],
         &[1, 1, 1],
     );
-    assert_eq!(
-        intersect_filtered(&f, &g).unwrap().decided_by(),
-        DecidedBy::Exact
-    );
+    assert_eq!(filtered(&f, &g).decided_by(), Some(DecidedBy::Exact));
     // A curve against itself (an overlap).
-    assert_eq!(
-        intersect_filtered(&a, &a).unwrap().decided_by(),
-        DecidedBy::Exact
-    );
+    assert_eq!(filtered(&a, &a).decided_by(), Some(DecidedBy::Exact));
 }
 
 #[test]
 fn bad_input_gets_typed_errors() {
     let a = rational_cubic();
     let point = curve(&[&[q(1, 1), q(1, 1)], &[q(1, 1), q(1, 1)]], &[1, 2]);
-    assert!(matches!(intersect(&a, &point), Err(Error::Domain(_))));
+    assert!(matches!(two_curves(&a, &point), Err(Error::Domain(_))));
     let negative = curve(&[&[q(0, 1), q(0, 1)], &[q(1, 1), q(1, 1)]], &[1, -1]);
     assert!(matches!(
-        intersect(&a, &negative),
+        two_curves(&a, &negative),
         Err(Error::Weight { .. })
     ));
     let (_, b3, _) = crossing_3d(q(0, 1));
-    assert!(matches!(intersect(&a, &b3), Err(Error::Shape(_))));
+    assert!(matches!(two_curves(&a, &b3), Err(Error::Shape(_))));
 }
 
 #[test]
 fn the_f64_path_agrees_with_the_exact_one_on_the_loop() {
     let c = rational_cubic();
     let line = curve(&[&[q(0, 1), q(1, 1)], &[q(5, 1), q(0, 1)]], &[1, 1]);
-    let exact = intersect(&c, &line).unwrap();
+    let exact = two_curves(&c, &line).unwrap();
     let mut approx =
         intersect_approx(&c.map(Ordered::to_f64), &line.map(Ordered::to_f64), 1e-10).unwrap();
     approx.sort_by(|x, y| x.s.total_cmp(&y.s));
@@ -338,7 +339,7 @@ proptest! {
     ) {
         let l = RationalCurve::polynomial(line).unwrap();
         let c = RationalCurve::new(quad, w.iter().map(|&v| q(v, 1)).collect()).unwrap();
-        match intersect(&l, &c) {
+        match two_curves(&l, &c) {
             Ok(x) => {
                 for p in &x.points {
                     prop_assert_eq!(&on_curve(&l, &p.s), &p.point);

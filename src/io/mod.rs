@@ -9,21 +9,25 @@
 //!
 //! Numbers may be JSON numbers (`0.885` is 885/1000, `1e-3` is 1/1000) or
 //! strings (`"1/3"`, `"-2.5"`). `weights` is optional (all 1). Weights must be
-//! positive. Degrees are limited to [`MAX_DEGREE`].
+//! positive. Degrees are limited to [`MAX_DEGREE`](crate::limits::MAX_DEGREE).
 
+mod results;
 pub mod trig;
+
+pub use crate::algebra::parse_rational;
+pub use results::{coincidence_to_json, standard_to_json};
 
 pub use trig::{read_trig_patches, trig_patch_from_value, trig_patch_to_json};
 
 use crate::algebra::poly::Poly;
-use crate::algebra::scalar::{Field, Ordered, Scalar};
+use crate::algebra::scalar::{Field, Scalar};
+use crate::algebra::ExactNumber;
 use crate::curve::RationalCurve;
-use crate::error::{Error, MAX_DEGREE};
+use crate::error::Error;
+use crate::limits::check_degree;
 use crate::rect::RectPatch;
 use crate::tri::TriPatch;
-use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::Zero;
 use serde_json::{Map, Number, Value};
 
 mod duplicate_keys;
@@ -35,111 +39,6 @@ mod stream;
 pub use stream::{for_each_chunk, Record};
 
 use crate::patch::Patch;
-
-/// Read a rational exactly from decimal or fraction text: `"3"`, `"-0.885"`,
-/// `"1.5e-3"`, `"1/3"`, `"-2/4"`.
-///
-/// # Errors
-///
-/// [`Error::BadNumber`] for anything else (including `NaN`, `inf`, a zero
-/// denominator).
-///
-/// # Examples
-///
-/// ```
-/// use exact_bezier::{io::parse_rational, ratio};
-/// assert_eq!(parse_rational("0.885").unwrap(), ratio(885, 1000));
-/// assert_eq!(parse_rational("1/3").unwrap(), ratio(1, 3));
-/// assert_eq!(parse_rational("-2.5e-1").unwrap(), ratio(-1, 4));
-/// assert!(parse_rational("NaN").is_err());
-/// ```
-pub fn parse_rational(text: &str) -> Result<BigRational, Error> {
-    crate::limits::check_number_text(text)?;
-    parse_own_rational(text)
-}
-
-/// [`parse_rational`] without the input digit limit: for text this crate
-/// wrote itself (an exact result read back), whose size was already paid for.
-pub(crate) fn parse_own_rational(text: &str) -> Result<BigRational, Error> {
-    let t = text.trim();
-    let bad = || Error::BadNumber(format!("{text:?}"));
-    if let Some((n, d)) = t.split_once('/') {
-        let n = parse_decimal(n.trim()).ok_or_else(bad)?;
-        let d = parse_decimal(d.trim()).ok_or_else(bad)?;
-        if d.is_zero() {
-            return Err(Error::BadNumber(format!("{text:?} has a zero denominator")));
-        }
-        return Ok(n / d);
-    }
-    parse_decimal(t).ok_or_else(bad)
-}
-
-/// `[-+]digits[.digits][(e|E)[-+]digits]` as an exact rational.
-fn parse_decimal(t: &str) -> Option<BigRational> {
-    let (mantissa, exp) = match t.find(['e', 'E']) {
-        Some(k) => (&t[..k], t[k + 1..].parse::<i32>().ok()?),
-        None => (t, 0),
-    };
-    let (neg, digits) = match mantissa.strip_prefix('-') {
-        Some(rest) => (true, rest),
-        None => (false, mantissa.strip_prefix('+').unwrap_or(mantissa)),
-    };
-    let (int_part, frac_part) = digits.split_once('.').unwrap_or((digits, ""));
-    if int_part.is_empty() && frac_part.is_empty() {
-        return None;
-    }
-    if !int_part
-        .chars()
-        .chain(frac_part.chars())
-        .all(|c| c.is_ascii_digit())
-    {
-        return None;
-    }
-    if exp.unsigned_abs() > 10_000 {
-        return None;
-    }
-    let all: String = format!("{int_part}{frac_part}");
-    let n: BigInt = if all.is_empty() {
-        BigInt::zero()
-    } else {
-        all.parse().ok()?
-    };
-    let scale = exp - frac_part.len() as i32;
-    let ten = BigInt::from(10);
-    let q = if scale >= 0 {
-        BigRational::from_integer(n * num_traits::pow(ten, scale as usize))
-    } else {
-        BigRational::new(n, num_traits::pow(ten, (-scale) as usize))
-    };
-    Some(if neg { -q } else { q })
-}
-
-/// Exact number types the reader produces: `BigRational` from decimal and
-/// `p/q` text, and `RealAlgebraic`, which also reads the algebraic grammar
-/// of docs/algebraic_numbers.md (`"sqrt(6)/6"`).
-pub trait ExactNumber: Ordered + std::fmt::Display {
-    /// The number written as `text`.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::BadNumber`] for text that is not a number of this type.
-    fn from_text(text: &str) -> Result<Self, Error>;
-}
-
-impl ExactNumber for BigRational {
-    fn from_text(text: &str) -> Result<Self, Error> {
-        parse_rational(text)
-    }
-}
-
-impl ExactNumber for crate::algebra::RealAlgebraic {
-    fn from_text(text: &str) -> Result<Self, Error> {
-        match parse_rational(text) {
-            Ok(q) => Ok(crate::algebra::RealAlgebraic::from_rational(&q)),
-            Err(_) => crate::algebra::parse_algebraic(text),
-        }
-    }
-}
 
 /// `v` (a JSON number or a string) as an exact number; `what` names it in
 /// the error.
@@ -179,13 +78,6 @@ pub(crate) fn positive_weight<T: ExactNumber>(v: &Value, index: String) -> Resul
     Ok(w)
 }
 
-fn check_degree(d: usize) -> Result<(), Error> {
-    if d > MAX_DEGREE {
-        return Err(Error::DegreeTooHigh { degree: d });
-    }
-    Ok(())
-}
-
 fn declared_degree(obj: &Map<String, Value>) -> Option<&Value> {
     obj.get("degree")
 }
@@ -199,7 +91,7 @@ pub(crate) fn field_array<'a>(
 }
 
 /// The `points` of a curve or tri patch (`what`: "a curve") and its degree
-/// `n = points.len() − 1`, checked against [`MAX_DEGREE`] and against the
+/// `n = points.len() − 1`, checked against [`MAX_DEGREE`](crate::limits::MAX_DEGREE) and against the
 /// declared `degree`; `mismatch(d, len)` words the error for a declared
 /// `d + 1` (`"?"` if `d` is not a count) where `len` entries were given.
 fn points_of_degree<'a>(
@@ -533,6 +425,18 @@ impl JsonScalar for Poly {
     }
 }
 
+/// Kept here, not beside the type: JSON belongs to `io`, above `algebra`.
+impl JsonScalar for crate::algebra::RealAlgebraic {
+    /// Rationals as [`BigRational`] writes them (integers as JSON numbers,
+    /// else `"p/q"`); irrational numbers as strings in the text grammar.
+    fn to_json(&self) -> serde_json::Value {
+        match self.as_rational() {
+            Some(q) => q.to_json(),
+            None => serde_json::Value::String(self.to_string()),
+        }
+    }
+}
+
 /// A point as a JSON array.
 pub fn point_to_json<T: JsonScalar>(p: &[T]) -> Value {
     Value::Array(p.iter().map(JsonScalar::to_json).collect())
@@ -555,7 +459,7 @@ fn weights_to_json<T: JsonScalar>(g: &[Vec<T>]) -> Value {
 /// # Errors
 ///
 /// [`Error::PointAtInfinity`] if a weight is zero;
-/// [`Error::DegreeTooHigh`] over [`MAX_DEGREE`].
+/// [`Error::DegreeTooHigh`] over [`MAX_DEGREE`](crate::limits::MAX_DEGREE).
 pub fn patch_to_json<T: JsonScalar + Field>(p: &Patch<T>) -> Result<Value, Error> {
     // What we write, we read: never a degree the reader refuses.
     match p {
@@ -661,7 +565,9 @@ mod tests {
             let err = read_patches(text).unwrap_err().to_string();
             assert!(err.contains(want), "{text}: {err}");
         }
-        let big: Vec<String> = (0..=MAX_DEGREE + 1).map(|i| format!("[{i}]")).collect();
+        let big: Vec<String> = (0..=crate::limits::MAX_DEGREE + 1)
+            .map(|i| format!("[{i}]"))
+            .collect();
         let text = format!(r#"{{"kind":"curve","points":[{}]}}"#, big.join(","));
         assert!(matches!(
             read_patches(&text),

@@ -9,8 +9,9 @@
 //! read as a sequence of JSON values (parsed on one thread). Records are parsed to patches by the
 //! caller, in parallel, with [`patch_from_value`](crate::io::patch_from_value).
 
+use crate::algebra::ExactNumber;
 use crate::error::Error;
-use crate::io::{parse_json, patch_from_value, patch_from_value_as, ExactNumber};
+use crate::io::{parse_json, patch_from_value, patch_from_value_as};
 use crate::patch::Patch;
 use num_rational::BigRational;
 use serde::de::{DeserializeSeed, Error as _, SeqAccess, Visitor};

@@ -31,8 +31,9 @@
 
 pub use spanned::{Nurbs, SpannedPatch};
 
-use crate::error::{Error, MAX_DEGREE};
+use crate::error::Error;
 use crate::hpoint::HPoint;
+use crate::limits::check_degree;
 use crate::{RationalCurve, RectPatch, Scalar};
 use num_rational::BigRational;
 use num_traits::{One, Zero};
@@ -53,13 +54,11 @@ impl Knots {
     ///
     /// # Errors
     ///
-    /// [`Error::DegreeTooHigh`] over [`MAX_DEGREE`]; [`Error::Shape`] for a
+    /// [`Error::DegreeTooHigh`] over [`MAX_DEGREE`](crate::limits::MAX_DEGREE); [`Error::Shape`] for a
     /// degree of 0, a wrong knot count, fewer than `p + 1` control points,
     /// decreasing knots, or an empty domain `u_p = u_{n+1}`.
     pub fn new(degree: usize, knots: Vec<BigRational>, count: usize) -> Result<Self, Error> {
-        if degree > MAX_DEGREE {
-            return Err(Error::DegreeTooHigh { degree });
-        }
+        check_degree(degree)?;
         if degree == 0 {
             return Err(Error::Shape("a B-spline needs degree ≥ 1".into()));
         }

@@ -36,13 +36,11 @@ use crate::algebra::scalar::{ratio, Ordered, Scalar};
 use crate::error::Error;
 use crate::eval::Jets;
 use crate::hpoint::HPoint;
+use crate::limits::MAX_DENSITY;
 use crate::patch::Patch;
 use crate::rect::RectPatch;
 use crate::tri::TriPatch;
 use std::fmt::Write;
-
-/// The largest mesh density accepted: 1024 steps per parameter.
-pub const MAX_DENSITY: usize = 1024;
 
 pub use crate::eval::Jet;
 

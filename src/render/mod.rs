@@ -4,4 +4,4 @@
 pub mod mesh;
 pub mod plot;
 
-pub use mesh::{curve_jet, normal_direction, rect_jet, tri_jet, Jet, Mesh, MAX_DENSITY};
+pub use mesh::{curve_jet, normal_direction, rect_jet, tri_jet, Jet, Mesh};

@@ -45,10 +45,8 @@
 pub mod standard;
 
 pub use standard::{
-    corner_weights, standard_quadratic_map, standardize_curve, standardize_curve_algebraic,
-    standardize_curve_exact_or_f64, standardize_mobius, standardize_quadratic,
-    standardize_quadratic_compact, standardize_rect, standardize_rect_algebraic,
-    standardize_rect_exact_or_f64, theorem1_holds, Exactness, Standard, StandardMap,
+    corner_weights, standard_quadratic_map, standardize, theorem1_holds, Method, Options, Standard,
+    StandardMap, Standardize,
 };
 
 use crate::algebra::scalar::{binomial, binomial_scalar, recip_int, Field, Scalar};
@@ -207,7 +205,7 @@ impl<T: Scalar> RectPatch<T> {
     /// `l = k − j`. When `β1 = β2 = β`, [`RectPatch::quadratic_reparam`] is
     /// this map after [`RectPatch::mobius_v`]`(β)`, degree-elevated n times
     /// in s (proofs family `yang_yong`): the standard form of
-    /// [`crate::reparam::standardize_quadratic`] exists already in bidegree
+    /// [`crate::reparam::standardize`] (quadratic) exists already in bidegree
     /// `(m, m + n)`.
     ///
     /// # Examples

@@ -7,12 +7,12 @@
 //! uniform weight scaling (eq. 5), both proved to keep every point in the
 //! proofs family `yang_yong`.
 //!
-//! The formulas need m-th and n-th roots. Over Q they are exact when the
-//! roots are rational ([`rational_root`](crate::algebra::rational_root)); [`standardize_curve_algebraic`]
-//! and [`standardize_rect_algebraic`] run the same code on
-//! [`RealAlgebraic`] and are exact for every input. The older
-//! [`standardize_rect_exact_or_f64`] and [`standardize_curve_exact_or_f64`]
-//! fall back to `f64` instead.
+//! One entry point, [`standardize`], for curves and rect patches over any
+//! scalar with roots. The formulas need m-th and n-th roots: over Q they
+//! are exact when the roots are rational (else [`Error::NotRational`]); on
+//! [`RealAlgebraic`](crate::algebra::RealAlgebraic) (lift the input with
+//! `map(Scalar::from_rational)`) the same code is exact for every input;
+//! over `f64` it is approximate.
 //!
 //! ## Generalizing (18)(19) to bidegree (m, n)
 //!
@@ -42,19 +42,13 @@
 //! With β1 = β2 the result of the quadratic map, of bidegree (m + n, m + n)
 //! as the paper states, is the n-fold degree elevation in s of a patch of
 //! bidegree (m, m + n) (ours, proved in `yang_yong`):
-//! [`standardize_quadratic_compact`] returns that smaller form.
+//! [`Options::compact`] selects that smaller form.
 
-use crate::algebra::real_algebraic::RealAlgebraic;
-use crate::algebra::scalar::{ratio, Field, Ordered, Roots, Scalar, Tolerance};
+use crate::algebra::scalar::{ratio, Ordered, Roots, Scalar, Tolerance};
 use crate::curve::RationalCurve;
 use crate::error::Error;
-use crate::io::{patch_to_json, JsonScalar};
-use crate::patch::Patch;
 use crate::rect::RectPatch;
 use crate::reparam::Quadratic;
-use num_rational::BigRational;
-use num_traits::One;
-use serde_json::{json, Value};
 
 /// The reparameterization a standard form applied, with its parameters.
 #[derive(Clone, Debug, PartialEq)]
@@ -87,63 +81,114 @@ pub struct Standard<P, T> {
     pub map: StandardMap<T>,
 }
 
-impl<T: JsonScalar> StandardMap<T> {
-    /// The `reparameterization` object of `standardize`'s output:
-    /// `{"kind": "mobius", "alpha", "beta"?, "k"}` or `{"kind": "quadratic",
-    /// "alpha1", "alpha2", "beta1", "beta2", "k"}` (docs/FORMAT.md).
-    pub fn to_json(&self) -> Value {
-        let j = |x: &T| x.to_json();
-        match self {
-            StandardMap::Mobius { alpha, beta, k } => match beta {
-                Some(b) => json!({"kind": "mobius", "alpha": j(alpha), "beta": j(b), "k": j(k)}),
-                None => json!({"kind": "mobius", "alpha": j(alpha), "k": j(k)}),
-            },
-            StandardMap::Quadratic { map, k } => json!({
-                "kind": "quadratic",
-                "alpha1": j(&map.alpha1), "alpha2": j(&map.alpha2),
-                "beta1": j(&map.beta1), "beta2": j(&map.beta2), "k": j(k)
-            }),
+/// Which reparameterization [`standardize`] applies to a rect patch.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Method {
+    /// The linear (8) when Theorem 1 holds (bidegree kept), the quadratic
+    /// map otherwise.
+    #[default]
+    Auto,
+    /// The linear (8); [`Error::Domain`] when Theorem 1 fails.
+    Mobius,
+    /// The quadratic map of the generalized (19), even when Theorem 1 holds.
+    Quadratic,
+}
+
+/// How [`standardize`] works on a rect patch (a curve always takes the
+/// Möbius map of eq. 2).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Options {
+    /// The linear or the quadratic method.
+    pub method: Method,
+    /// The quadratic form in the compact bidegree `(m, m + n)` instead of
+    /// the paper's `(m + n, m + n)` (which is the compact one elevated n
+    /// times in s).
+    pub compact: bool,
+    /// Tolerance of Theorem 1's test for `f64` (default `1e-9`); exact
+    /// scalars test exactly.
+    pub tol: Tolerance,
+}
+
+impl Options {
+    /// Whether [`standardize`] takes the linear (8) for `p` (else the
+    /// quadratic map): Theorem 1 decides for [`Method::Auto`].
+    pub fn linear<T: Scalar>(&self, p: &RectPatch<T>) -> bool {
+        match self.method {
+            Method::Auto => theorem1_holds(p, self.tol),
+            Method::Mobius => true,
+            Method::Quadratic => false,
         }
     }
 }
 
-impl<P: Clone + Into<Patch<T>>, T: JsonScalar + Field> Standard<P, T> {
-    /// The `standardize` command's object: `{"exact": true,
-    /// "reparameterization": {...}, "patch": {...}}` (docs/FORMAT.md).
+/// A curve or rect patch [`standardize`] brings to standard form.
+pub trait Standardize: Sized {
+    /// The scalar of the control points and weights.
+    type Scalar: Roots;
+    /// The standard form of `self` under `options`.
     ///
     /// # Errors
     ///
-    /// As [`patch_to_json`] (a weight that is not positive).
-    pub fn to_json(&self) -> Result<Value, Error> {
-        Ok(json!({
-            "exact": true,
-            "reparameterization": self.map.to_json(),
-            "patch": patch_to_json(&self.patch.clone().into())?,
-        }))
-    }
+    /// As [`standardize`].
+    fn standardize(&self, options: Options) -> Result<Standard<Self, Self::Scalar>, Error>;
 }
 
-/// An exact result, or an `f64` one when an exact answer would need an
-/// irrational root.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Exactness<E, F> {
-    /// Computed over Q.
-    Exact(E),
-    /// Computed in `f64` (the reason is the `NotRational` message).
-    Approximate(F, String),
+/// The standard form of a curve (end weights 1) or a rect patch (corner
+/// weights 1), see the module docs: the curve by eqs (2)(4)(5); the rect by
+/// the linear (8) when Theorem 1 holds (or [`Method::Mobius`]), else by the
+/// quadratic map of the generalized (19) (bidegree `(m + n, m + n)`, or
+/// `(m, m + n)` with [`Options::compact`]), then `k = 1/ω̃_{0,0}`.
+///
+/// # Errors
+///
+/// [`Error::Weight`] for a non-positive weight; [`Error::Domain`] naming the
+/// violated condition for [`Method::Mobius`] when Theorem 1 fails (`|…| >
+/// tol` for `f64`); [`Error::NotRational`] when a root is irrational for
+/// `BigRational` (use `RealAlgebraic` for an exact answer to every input).
+///
+/// # Examples
+///
+/// ```
+/// use exact_bezier::{RationalCurve, reparam::{standardize, Options}, ratio, algebra::RealAlgebraic, Scalar};
+/// use exact_bezier::BigRational;
+/// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+/// let c = RationalCurve::new(vec![p(0), p(1), p(3)], vec![ratio(4, 1), ratio(1, 1), ratio(1, 1)]).unwrap();
+/// let s = standardize(&c, Options::default()).unwrap();
+/// // The standard middle weight is w₁/√(w₀w₂) = 1/√4.
+/// assert_eq!(s.patch.weights(), vec![ratio(1, 1), ratio(1, 2), ratio(1, 1)]);
+/// // With w₀ = 2 the root is irrational: exact over the algebraic numbers.
+/// let c = RationalCurve::new(vec![p(0), p(1), p(3)], vec![ratio(2, 1), ratio(1, 1), ratio(1, 1)]).unwrap();
+/// let s = standardize(&c.map(RealAlgebraic::from_rational), Options::default()).unwrap();
+/// assert_eq!(s.patch.weights()[1].to_string(), "sqrt(2)/2");
+/// ```
+///
+/// Source 000, Example 3 (Theorem 1 holds; exact: α = 3/5, β = 7/10), and
+/// a patch where it fails (quadratic, compact bidegree (1, 2)):
+///
+/// ```
+/// use exact_bezier::{io::read_patches, Patch, RectPatch, reparam::{standardize, corner_weights, Options, StandardMap}, ratio};
+/// use exact_bezier::BigRational;
+/// let text = std::fs::read_to_string("tests/fixtures/yang_yong_example3.json").unwrap();
+/// let Patch::Rect(r) = &read_patches(&text).unwrap()[0] else { panic!() };
+/// let s = standardize(r, Options::default()).unwrap();
+/// let StandardMap::Mobius { alpha, beta, .. } = &s.map else { panic!() };
+/// assert_eq!((alpha.clone(), beta.clone()), (ratio(3, 5), Some(ratio(7, 10))));
+///
+/// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+/// let w = vec![vec![ratio(1, 1), ratio(1, 1)], vec![ratio(4, 1), ratio(9, 1)]];
+/// let patch = RectPatch::new(vec![vec![p(0), p(1)], vec![p(2), p(3)]], w).unwrap();
+/// let full = standardize(&patch, Options::default()).unwrap();
+/// assert_eq!(corner_weights(&full.patch), [ratio(1, 1), ratio(1, 1), ratio(1, 1), ratio(1, 1)]);
+/// let compact = standardize(&patch, Options { compact: true, ..Options::default() }).unwrap();
+/// assert_eq!(compact.patch.degree(), (1, 2));
+/// assert_eq!(compact.patch.elevate(1, 0), full.patch);
+/// ```
+pub fn standardize<P: Standardize>(
+    p: &P,
+    options: Options,
+) -> Result<Standard<P, P::Scalar>, Error> {
+    p.standardize(options)
 }
-
-/// A curve's standard form over Q; or, when the root is irrational, the
-/// same curve exactly reparameterized by a rational α̃ near the true α (end
-/// weights 1 and 1 + O(n·2⁻⁵²)), see [`standardize_curve_exact_or_f64`].
-pub type CurveOutcome = Exactness<
-    Standard<RationalCurve<BigRational>, BigRational>,
-    Standard<RationalCurve<BigRational>, BigRational>,
->;
-
-/// A rect patch's standard form over Q, or in `f64`.
-pub type RectOutcome =
-    Exactness<Standard<RectPatch<BigRational>, BigRational>, Standard<RectPatch<f64>, f64>>;
 
 /// `1 / (1 + (num/den)^{1/n})`, the Möbius α that maps end weights
 /// `num, den` to equal ones (`1/2` when `n = 0`).
@@ -165,106 +210,43 @@ fn irrational<T: Ordered>(what: &str, n: usize, q: &T) -> Error {
     ))
 }
 
-/// The standard form of a curve (end weights 1): Möbius `α = 1/(1 + (w₀/w_n)^{1/n})`
-/// then `k = 1/(w₀ αⁿ)`. Exact when `w₀/w_n` is an n-th power in Q.
-///
-/// Reference: source 000 §0 (Farin's standard form), eqs (2)(4)(5), curve case.
-///
-/// # Errors
-///
-/// [`Error::Weight`] for a non-positive weight; [`Error::NotRational`] when
-/// the root is irrational for exact `T`.
-///
-/// # Examples
-///
-/// ```
-/// use exact_bezier::{RationalCurve, reparam::standardize_curve, ratio};
-/// use exact_bezier::BigRational;
-/// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
-/// let c = RationalCurve::new(vec![p(0), p(1), p(3)], vec![ratio(4, 1), ratio(1, 1), ratio(1, 1)]).unwrap();
-/// let s = standardize_curve(&c).unwrap();
-/// // The standard middle weight is w₁/√(w₀w₂) = 1/√4.
-/// assert_eq!(s.patch.weights(), vec![ratio(1, 1), ratio(1, 2), ratio(1, 1)]);
-/// ```
-pub fn standardize_curve<T: Roots>(
-    c: &RationalCurve<T>,
-) -> Result<Standard<RationalCurve<T>, T>, Error> {
-    c.check_positive_weights()?;
-    let w = c.weights();
-    let n = c.degree();
-    let alpha = alpha_for(&w[0], &w[n], n, "curve standard form α")?;
-    let moved = c.mobius(&alpha);
-    let k = moved.weights()[0].recip();
-    Ok(Standard {
-        patch: moved.scale_weights(&k),
-        map: StandardMap::Mobius {
-            alpha,
-            beta: None,
-            k,
-        },
-    })
-}
+/// The curve: Möbius `α = 1/(1 + (w₀/w_n)^{1/n})` then `k = 1/(w₀ αⁿ)`
+/// (source 000 §0, Farin's standard form, eqs (2)(4)(5), curve case);
+/// `options` do not apply.
+impl<T: Roots> Standardize for RationalCurve<T> {
+    type Scalar = T;
 
-/// [`standardize_curve`] exactly; when the root is irrational, the nearly
-/// standard form of `near_standard_curve`: exact numbers, so weights far
-/// outside the `f64` range (`1e-400`) neither underflow nor overflow.
-///
-/// # Errors
-///
-/// As [`standardize_curve`], except that `NotRational` becomes `Approximate`.
-pub fn standardize_curve_exact_or_f64(
-    c: &RationalCurve<BigRational>,
-) -> Result<CurveOutcome, Error> {
-    match standardize_curve(c) {
-        Ok(s) => Ok(Exactness::Exact(s)),
-        Err(Error::NotRational(why)) => Ok(Exactness::Approximate(near_standard_curve(c), why)),
-        Err(e) => Err(e),
+    fn standardize(&self, _: Options) -> Result<Standard<Self, T>, Error> {
+        self.check_positive_weights()?;
+        let w = self.weights();
+        let n = self.degree();
+        let alpha = alpha_for(&w[0], &w[n], n, "curve standard form α")?;
+        let moved = self.mobius(&alpha);
+        let k = moved.weights()[0].recip();
+        Ok(Standard {
+            patch: moved.scale_weights(&k),
+            map: StandardMap::Mobius {
+                alpha,
+                beta: None,
+                k,
+            },
+        })
     }
 }
 
-/// The nearly standard form when the root is irrational: α rounded to a
-/// rational α̃ computed in the log domain (no `f64` overflow or underflow
-/// however extreme the weights), then the Möbius map and the scale
-/// `k = 1/w̃₀` applied **exactly**: the same curve, end weights 1 and
-/// `1 + O(n·2⁻⁵²)`.
-fn near_standard_curve(
-    c: &RationalCurve<BigRational>,
-) -> Standard<RationalCurve<BigRational>, BigRational> {
-    let w = c.weights();
-    let n = c.degree();
-    let alpha = alpha_near(&(w[0].clone() / &w[n]), n);
-    let moved = c.mobius(&alpha);
-    let k = moved.weights()[0].recip();
-    let patch = moved.scale_weights(&k);
-    Standard {
-        patch,
-        map: StandardMap::Mobius {
-            alpha,
-            beta: None,
-            k,
-        },
-    }
-}
+/// The rect patch: the method of `options` (Theorem 1 decides for
+/// [`Method::Auto`]), see [`standardize`].
+impl<T: Roots> Standardize for RectPatch<T> {
+    type Scalar = T;
 
-/// A rational near `1 / (1 + q^{1/n})` for `q > 0`, from `log₂ q` (exact
-/// power-of-two part plus the `f64` logarithm of a mantissa in `[1/2, 2)`).
-fn alpha_near(q: &BigRational, n: usize) -> BigRational {
-    use num_bigint::BigInt;
-    let shift = q.numer().bits() as i64 - q.denom().bits() as i64;
-    let two_pow = |e: i64| -> BigRational {
-        let p = BigInt::from(1) << e.unsigned_abs();
-        if e >= 0 {
-            BigRational::from_integer(p)
+    fn standardize(&self, options: Options) -> Result<Standard<Self, T>, Error> {
+        self.check_positive_weights()?;
+        if options.linear(self) {
+            linear(self, options.tol)
         } else {
-            BigRational::new(BigInt::from(1), p)
+            quadratic(self, options.compact)
         }
-    };
-    let mantissa = (q / two_pow(shift)).to_f64();
-    let l = (mantissa.log2() + shift as f64) / n.max(1) as f64;
-    let whole = l.floor();
-    let frac = BigRational::from_float(2f64.powf(l - whole)).unwrap_or_else(BigRational::one);
-    let root = frac * two_pow(whole as i64);
-    (BigRational::one() + root).recip()
+    }
 }
 
 /// The corner weights `(ω_{0,0}, ω_{m,0}, ω_{0,n}, ω_{m,n})`.
@@ -294,46 +276,18 @@ pub fn theorem1_holds<T: Scalar>(p: &RectPatch<T>, tol: Tolerance) -> bool {
 
 /// The linear standardization (8): `α = 1/(1 + (ω_{0,0}/ω_{m,0})^{1/m})`,
 /// `β = 1/(1 + (ω_{0,0}/ω_{0,n})^{1/n})`, `k = 1/(ω_{0,0} α^m β^n)`; the
-/// result has bidegree (m, n) and corner weights 1.
-///
-/// # Errors
-///
-/// [`Error::Weight`] for a non-positive weight; [`Error::Domain`] naming the
-/// violated condition when Theorem 1 fails (`|…| > tol` for `f64`);
-/// [`Error::NotRational`] when a root is irrational for exact `T`.
-///
-/// # Examples
-///
-/// Source 000, Example 3 (exact: α = 3/5, β = 7/10):
-///
-/// ```
-/// use exact_bezier::{io::read_patches, Patch, reparam::standardize_mobius, reparam::StandardMap, ratio, Tolerance};
-/// let text = std::fs::read_to_string("tests/fixtures/yang_yong_example3.json").unwrap();
-/// let Patch::Rect(r) = &read_patches(&text).unwrap()[0] else { panic!() };
-/// let s = standardize_mobius(r, Tolerance::EXACT).unwrap();
-/// let StandardMap::Mobius { alpha, beta, .. } = &s.map else { panic!() };
-/// assert_eq!((alpha.clone(), beta.clone()), (ratio(3, 5), Some(ratio(7, 10))));
-/// ```
-pub fn standardize_mobius<T: Roots>(
-    p: &RectPatch<T>,
-    tol: Tolerance,
-) -> Result<Standard<RectPatch<T>, T>, Error> {
-    p.check_positive_weights()?;
+/// result has bidegree (m, n) and corner weights 1. [`Error::Domain`]
+/// naming the violated condition when Theorem 1 fails.
+fn linear<T: Roots>(p: &RectPatch<T>, tol: Tolerance) -> Result<Standard<RectPatch<T>, T>, Error> {
+    let [w00, wm0, w0n, wmn] = corner_weights(p);
+    let (m, n) = p.degree();
     if !theorem1_holds(p, tol) {
-        let [w00, wm0, w0n, wmn] = corner_weights(p);
-        let (m, n) = p.degree();
         return Err(Error::Domain(format!(
             "Theorem 1 fails: ω_{{{m},0}}·ω_{{0,{n}}} = {} ≠ ω_{{0,0}}·ω_{{{m},{n}}} = {}, so no linear Möbius map standardizes this patch (use the quadratic reparameterization)",
             (wm0 * &w0n).to_f64(),
             (w00 * &wmn).to_f64()
         )));
     }
-    mobius_unchecked(p)
-}
-
-fn mobius_unchecked<T: Roots>(p: &RectPatch<T>) -> Result<Standard<RectPatch<T>, T>, Error> {
-    let (m, n) = p.degree();
-    let [w00, wm0, w0n, _] = corner_weights(p);
     let alpha = alpha_for(&w00, &wm0, m, "eq. (8) α")?;
     let beta = alpha_for(&w00, &w0n, n, "eq. (8) β")?;
     let moved = p.mobius_u(&alpha).mobius_v(&beta);
@@ -349,60 +303,28 @@ fn mobius_unchecked<T: Roots>(p: &RectPatch<T>) -> Result<Standard<RectPatch<T>,
 }
 
 /// Standardization of any (m, n) patch by the quadratic map with β1 = β2
-/// (the generalized (19), see the module docs), then `k = 1/(α2^m β^n ω_{0,0})`.
-/// The result has bidegree (m + n, m + n) and corner weights 1.
-///
-/// # Errors
-///
-/// [`Error::Weight`] for a non-positive weight; [`Error::NotRational`] when
-/// a root is irrational for exact `T`.
-///
-/// # Examples
-///
-/// ```
-/// use exact_bezier::{RectPatch, reparam::standardize_quadratic, reparam::corner_weights, ratio};
-/// use exact_bezier::BigRational;
-/// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
-/// let w = vec![vec![ratio(1, 1), ratio(1, 1)], vec![ratio(4, 1), ratio(9, 1)]];
-/// let s = standardize_quadratic(&RectPatch::new(vec![vec![p(0), p(1)], vec![p(2), p(3)]], w).unwrap()).unwrap();
-/// assert_eq!(corner_weights(&s.patch), [ratio(1, 1), ratio(1, 1), ratio(1, 1), ratio(1, 1)]);
-/// ```
-pub fn standardize_quadratic<T: Roots>(
+/// (the generalized (19), see the module docs), then `k = 1/(α2^m β^n ω_{0,0})`:
+/// bidegree (m + n, m + n) and corner weights 1. `compact`: since β1 = β2,
+/// the map is a Möbius map in v followed by the quadratic map in u alone
+/// ([`RectPatch::quadratic_reparam_u`]), of bidegree `(m, m + n)`; the
+/// paper's patch is that one degree-elevated n times in s (proved in
+/// `yang_yong`).
+fn quadratic<T: Roots>(
     p: &RectPatch<T>,
+    compact: bool,
 ) -> Result<Standard<RectPatch<T>, T>, Error> {
     let map = standard_quadratic_map(p)?;
-    Ok(scaled(p.quadratic_reparam(&map), map))
-}
-
-/// [`standardize_quadratic`] in the compact bidegree `(m, m + n)`: since
-/// β1 = β2, the map is a Möbius map in v followed by the quadratic map in u
-/// alone ([`RectPatch::quadratic_reparam_u`]); the paper's `(m + n, m + n)`
-/// patch is this one degree-elevated n times in s (proved in `yang_yong`).
-///
-/// # Errors
-///
-/// As [`standardize_quadratic`].
-///
-/// # Examples
-///
-/// ```
-/// use exact_bezier::{RectPatch, reparam::standardize_quadratic, reparam::standardize_quadratic_compact, ratio};
-/// use exact_bezier::BigRational;
-/// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
-/// let w = vec![vec![ratio(1, 1), ratio(1, 1)], vec![ratio(4, 1), ratio(9, 1)]];
-/// let patch = RectPatch::new(vec![vec![p(0), p(1)], vec![p(2), p(3)]], w).unwrap();
-/// let compact = standardize_quadratic_compact(&patch).unwrap();
-/// assert_eq!(compact.patch.degree(), (1, 2));
-/// assert_eq!(compact.patch.elevate(1, 0), standardize_quadratic(&patch).unwrap().patch);
-/// ```
-pub fn standardize_quadratic_compact<T: Roots>(
-    p: &RectPatch<T>,
-) -> Result<Standard<RectPatch<T>, T>, Error> {
-    let map = standard_quadratic_map(p)?;
-    let moved = p
-        .mobius_v(&map.beta1)
-        .quadratic_reparam_u(&map.alpha1, &map.alpha2);
-    Ok(scaled(moved, map))
+    let moved = if compact {
+        p.mobius_v(&map.beta1)
+            .quadratic_reparam_u(&map.alpha1, &map.alpha2)
+    } else {
+        p.quadratic_reparam(&map)
+    };
+    let k = moved.ctrl()[0][0].weight().recip();
+    Ok(Standard {
+        patch: moved.scale_weights(&k),
+        map: StandardMap::Quadratic { map, k },
+    })
 }
 
 /// The map of the quadratic standardization alone: the generalized eq.
@@ -476,117 +398,4 @@ fn beta_root<T: Roots>(
     q.nth_root(n as u32)
         .map(Some)
         .ok_or_else(|| irrational("eq. (19) β1 = β2", n, &q))
-}
-
-/// Scale the weights so that `ω_{0,0}` becomes 1.
-fn scaled<T: Roots>(moved: RectPatch<T>, map: Quadratic<T>) -> Standard<RectPatch<T>, T> {
-    let k = moved.ctrl()[0][0].weight().recip();
-    Standard {
-        patch: moved.scale_weights(&k),
-        map: StandardMap::Quadratic { map, k },
-    }
-}
-
-/// The standard form of a rect patch: linear (8) when Theorem 1 holds
-/// (bidegree kept), quadratic otherwise (bidegree (m + n, m + n)).
-///
-/// # Errors
-///
-/// As [`standardize_mobius`] and [`standardize_quadratic`].
-pub fn standardize_rect<T: Roots>(
-    p: &RectPatch<T>,
-    tol: Tolerance,
-) -> Result<Standard<RectPatch<T>, T>, Error> {
-    if theorem1_holds(p, tol) {
-        standardize_mobius(p, tol)
-    } else {
-        standardize_quadratic(p)
-    }
-}
-
-/// The standard form of a curve over the real algebraic numbers: exact for
-/// every curve with positive weights ([`standardize_curve`] run on
-/// [`RealAlgebraic`]; the roots are radicals of the end weights).
-///
-/// # Errors
-///
-/// [`Error::Weight`] for a non-positive weight.
-///
-/// ```
-/// use exact_bezier::{RationalCurve, reparam::standardize_curve_algebraic, ratio};
-/// use exact_bezier::BigRational;
-/// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
-/// let c = RationalCurve::new(vec![p(0), p(1), p(3)], vec![ratio(2, 1), ratio(1, 1), ratio(1, 1)]).unwrap();
-/// let s = standardize_curve_algebraic(&c).unwrap();
-/// // The standard middle weight is w₁/√(w₀w₂) = 1/√2.
-/// assert_eq!(s.patch.weights()[1].to_string(), "sqrt(2)/2");
-/// ```
-pub fn standardize_curve_algebraic(
-    c: &RationalCurve<BigRational>,
-) -> Result<Standard<RationalCurve<RealAlgebraic>, RealAlgebraic>, Error> {
-    standardize_curve(&c.map(Scalar::from_rational))
-}
-
-/// [`standardize_rect`] over the real algebraic numbers: exact for every
-/// patch with positive weights. The linear (8) or quadratic method is chosen
-/// exactly (Theorem 1 on the exact input); `compact` selects
-/// [`standardize_quadratic_compact`].
-///
-/// # Errors
-///
-/// [`Error::Weight`] for a non-positive weight.
-pub fn standardize_rect_algebraic(
-    p: &RectPatch<BigRational>,
-    compact: bool,
-) -> Result<Standard<RectPatch<RealAlgebraic>, RealAlgebraic>, Error> {
-    let a = p.map(Scalar::from_rational);
-    if theorem1_holds(p, Tolerance::EXACT) {
-        mobius_unchecked(&a)
-    } else if compact {
-        standardize_quadratic_compact(&a)
-    } else {
-        standardize_quadratic(&a)
-    }
-}
-
-/// [`standardize_rect`] exactly, or in `f64` when a root is irrational. The
-/// choice between the linear and the quadratic method is made exactly on the
-/// exact input. `compact` selects [`standardize_quadratic_compact`]
-/// (bidegree (m, m + n)) over the paper's (m + n, m + n) form.
-///
-/// # Errors
-///
-/// As [`standardize_rect`], except that `NotRational` becomes `Approximate`.
-pub fn standardize_rect_exact_or_f64(
-    p: &RectPatch<BigRational>,
-    compact: bool,
-) -> Result<RectOutcome, Error> {
-    let linear = theorem1_holds(p, Tolerance::EXACT);
-    let quadratic = |p: &RectPatch<BigRational>| {
-        if compact {
-            standardize_quadratic_compact(p)
-        } else {
-            standardize_quadratic(p)
-        }
-    };
-    let exact = if linear {
-        standardize_mobius(p, Tolerance::EXACT)
-    } else {
-        quadratic(p)
-    };
-    match exact {
-        Ok(s) => Ok(Exactness::Exact(s)),
-        Err(Error::NotRational(why)) => {
-            let f = p.map(Ordered::to_f64);
-            let approx = if linear {
-                mobius_unchecked(&f)?
-            } else if compact {
-                standardize_quadratic_compact(&f)?
-            } else {
-                standardize_quadratic(&f)?
-            };
-            Ok(Exactness::Approximate(approx, why))
-        }
-        Err(e) => Err(e),
-    }
 }

@@ -21,11 +21,10 @@
 //! entity of a supported type that is malformed is reported with its id
 //! and skipped too (a model audit should see the rest of the file).
 
+use crate::algebra::parse_rational;
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::io::parse_rational;
-use crate::nurbs::Nurbs;
-use crate::nurbs::{Knots, NurbsCurve, NurbsSurface};
+use crate::nurbs::{Knots, Nurbs, NurbsCurve, NurbsSurface};
 use num_rational::BigRational;
 use num_traits::{One, Signed};
 use std::collections::{BTreeMap, HashMap};

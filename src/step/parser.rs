@@ -14,12 +14,8 @@
 //! ISO 10303-21:2016 §6–§11 (the exchange structure's grammar).
 
 use crate::error::Error;
+use crate::limits::{MAX_STEP_DEPTH as MAX_DEPTH, MAX_STEP_STATEMENT as MAX_STATEMENT};
 use std::io::BufRead;
-
-/// The longest statement accepted (bytes): a bound on hostile input.
-pub const MAX_STATEMENT: usize = 64 << 20;
-/// The deepest nesting of lists accepted.
-pub const MAX_DEPTH: usize = 64;
 
 /// One parameter of an entity instance.
 #[derive(Clone, Debug, PartialEq)]

@@ -21,7 +21,7 @@ fn a(s: &str) -> A {
 #[test]
 fn example1_standard_weights_are_radicals() {
     let p = fixture("yang_yong_example1.json");
-    let s = standardize_rect_algebraic(&p, false).unwrap();
+    let s = standardize(&p.map(RealAlgebraic::from_rational), Options::default()).unwrap();
     // By hand: a Möbius map multiplies ω_ij by λ^i μ^j up to a common factor,
     // with λ² = ω00/ω20 = 8/3 and μ² = ω00/ω02 = 4, so the standard weights
     // are λ^i μ^j ω_ij / ω00 (ω10 = √(8/3)·2/8 = √6/6, the source's 1/√6).
@@ -51,7 +51,14 @@ fn example1_standard_weights_are_radicals() {
 #[test]
 fn example2_compact_standard_form_is_exact() {
     let p = fixture("yang_yong_example2.json");
-    let s = standardize_rect_algebraic(&p, true).unwrap();
+    let s = standardize(
+        &p.map(RealAlgebraic::from_rational),
+        Options {
+            compact: true,
+            ..Options::default()
+        },
+    )
+    .unwrap();
     let one = A::from_i64(1);
     assert_eq!(
         corner_weights(&s.patch),
@@ -81,7 +88,7 @@ fn example2_compact_standard_form_is_exact() {
 #[test]
 fn eval_reads_algebraic_patches() {
     let p = fixture("yang_yong_example1.json");
-    let s = standardize_rect_algebraic(&p, false).unwrap();
+    let s = standardize(&p.map(RealAlgebraic::from_rational), Options::default()).unwrap();
     let StandardMap::Mobius { alpha, beta, .. } = &s.map else {
         panic!("linear")
     };
@@ -119,9 +126,14 @@ fn eval_reads_algebraic_patches() {
 #[test]
 fn example1_coincides_with_its_exact_standard_form() {
     let p = fixture("yang_yong_example1.json");
-    let s = standardize_rect_algebraic(&p, false).unwrap();
+    let s = standardize(&p.map(RealAlgebraic::from_rational), Options::default()).unwrap();
     let ex1 = Patch::Rect(p.map(A::from_rational));
-    let c = coincide::coincide(&ex1, &Patch::Rect(s.patch.clone())).unwrap();
+    let c = coincide::coincide(
+        &ex1,
+        &Patch::Rect(s.patch.clone()),
+        coincide::Options::default(),
+    )
+    .unwrap();
     assert!(c.coincident, "{}", c.reason);
     let w = c.witness.unwrap();
     assert_eq!(w.symmetry.to_string(), "identity");
@@ -139,11 +151,18 @@ fn example1_coincides_with_its_exact_standard_form() {
 #[test]
 fn a_weight_moved_by_1e_minus_40_is_not_coincident() {
     let p = fixture("yang_yong_example1.json");
-    let s = standardize_rect_algebraic(&p, false).unwrap().patch;
+    let s = standardize(&p.map(RealAlgebraic::from_rational), Options::default())
+        .unwrap()
+        .patch;
     let mut w = s.weights();
     w[1][1] = w[1][1].clone() * &a("1 + 1/10**40");
     let moved = RectPatch::new(s.points().unwrap(), w).unwrap();
-    let c = coincide::coincide(&Patch::Rect(s), &Patch::Rect(moved)).unwrap();
+    let c = coincide::coincide(
+        &Patch::Rect(s),
+        &Patch::Rect(moved),
+        coincide::Options::default(),
+    )
+    .unwrap();
     assert!(!c.coincident);
     assert!(c.reason.contains("I_{1,1}"), "{}", c.reason);
 }
@@ -183,7 +202,11 @@ fn jsonl(name: &str, patches: &[Patch<A>]) -> std::path::PathBuf {
 /// tests below read the numbers the hand-checked test above verified).
 #[test]
 fn the_standard_form_fixture_is_the_librarys() {
-    let s = standardize_rect_algebraic(&fixture("yang_yong_example1.json"), false).unwrap();
+    let s = standardize(
+        &fixture("yang_yong_example1.json").map(RealAlgebraic::from_rational),
+        Options::default(),
+    )
+    .unwrap();
     assert_eq!(algebraic_fixture(EX1_STANDARD), Patch::Rect(s.patch));
 }
 
@@ -336,7 +359,7 @@ proptest::proptest! {
         let alpha = (A::from_i64(1) + &sqrt_k).recip();
         let lifted = r.map(A::from_rational);
         let copy = Patch::Rect(lifted.mobius_u(&alpha).mobius_v(&A::from_rational(&beta)));
-        let c = coincide::coincide(&Patch::Rect(lifted), &copy).unwrap();
+        let c = coincide::coincide(&Patch::Rect(lifted), &copy, coincide::Options::default()).unwrap();
         proptest::prop_assert!(c.coincident, "{}", c.reason);
         let w = c.witness.unwrap();
         if w.symmetry.to_string() == "identity" {
@@ -377,19 +400,32 @@ fn algebraic_bicubics_over_a_degree_16_field() {
         .collect();
     let r = RectPatch::new(pts.clone(), w.clone()).unwrap();
     let moved = r.mobius_u(&a("sqrt(2)/2")).mobius_v(&a("1/3"));
-    let c = coincide::coincide(&Patch::Rect(r.clone()), &Patch::Rect(moved)).unwrap();
+    let c = coincide::coincide(
+        &Patch::Rect(r.clone()),
+        &Patch::Rect(moved),
+        coincide::Options::default(),
+    )
+    .unwrap();
     assert!(c.coincident, "{}", c.reason);
-    let raised =
-        coincide::coincide(&Patch::Rect(r.clone()), &Patch::Rect(r.elevate(1, 2))).unwrap();
+    let raised = coincide::coincide(
+        &Patch::Rect(r.clone()),
+        &Patch::Rect(r.elevate(1, 2)),
+        coincide::Options::default(),
+    )
+    .unwrap();
     assert!(raised.coincident, "{}", raised.reason);
     assert_eq!(raised.reductions[1].to, (3, 3));
     let mut bent = pts;
     bent[2][1][2] = A::from_i64(9);
     let other = RectPatch::new(bent, w).unwrap();
     assert!(
-        !coincide::coincide(&Patch::Rect(r), &Patch::Rect(other))
-            .unwrap()
-            .coincident
+        !coincide::coincide(
+            &Patch::Rect(r),
+            &Patch::Rect(other),
+            coincide::Options::default()
+        )
+        .unwrap()
+        .coincident
     );
 }
 

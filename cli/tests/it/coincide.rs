@@ -5,11 +5,10 @@
 use crate::common::cli_json as cli;
 use exact_bezier::strategy::*;
 use exact_bezier::{
-    coincide::canonical_key, coincide::coincide, coincide::coincide_f64,
-    coincide::coincide_filtered, coincide::dedup, coincide::minimal_curve, coincide::minimal_rect,
-    coincide::multiply_components, coincide::shared_boundaries, coincide::Edge,
-    coincide::MobiusParam, coincide::Symmetry, io::read_patches, ratio, Patch, RationalCurve,
-    RectPatch, Tolerance,
+    coincide::canonical_key, coincide::coincide, coincide::dedup, coincide::minimal_curve,
+    coincide::minimal_rect, coincide::multiply_components, coincide::shared_boundaries,
+    coincide::Edge, coincide::MobiusParam, coincide::Options, coincide::Symmetry, io::read_patches,
+    ratio, Patch, RationalCurve, RectPatch, Tolerance,
 };
 use num_rational::BigRational;
 use proptest::prelude::*;
@@ -90,7 +89,7 @@ proptest! {
         // have their own test with fewer cases.
         let b = apply(&a, &Maps { factor: None, ..t });
         let (pa, pb) = (Patch::Rect(a.clone()), Patch::Rect(b.clone()));
-        let c = coincide(&pa, &pb).unwrap();
+        let c = coincide(&pa, &pb, Options::default()).unwrap();
         prop_assert!(c.coincident, "{}", c.reason);
         let w = c.witness.unwrap();
         let (ra, rb) = (minimal_rect(&a).unwrap().patch, minimal_rect(&b).unwrap().patch);
@@ -103,14 +102,14 @@ proptest! {
             .scale_weights(w.k.as_ref().unwrap());
         prop_assert_eq!(rebuilt, rb);
         prop_assert_eq!(canonical_key(&pa).unwrap(), canonical_key(&pb).unwrap());
-        prop_assert!(coincide_filtered(&pa, &pb).unwrap().0.coincident);
+        prop_assert!(coincide(&pa, &pb, Options::filtered()).unwrap().coincident);
     }
 
     #[test]
     fn mixed_common_factors_are_removed(a in rect(2, 1, 2), t in maps(), f in proptest::collection::vec(1i64..=5, 4)) {
         let f = vec![vec![ratio(f[0], 1), ratio(f[1], 1)], vec![ratio(f[2], 1), ratio(f[3], 1)]];
         let b = apply(&a, &Maps { factor: Some(f), elevate: (0, 0), ..t });
-        let c = coincide(&Patch::Rect(a.clone()), &Patch::Rect(b.clone())).unwrap();
+        let c = coincide(&Patch::Rect(a.clone()), &Patch::Rect(b.clone()), Options::default()).unwrap();
         prop_assert!(c.coincident, "{}", c.reason);
         let ((m, n), to) = (a.degree(), c.reductions[1].to);
         prop_assert!(to == (m, n) || to == (n, m), "{:?}", to);
@@ -132,11 +131,11 @@ proptest! {
         let bent = RectPatch::new(pts, ws).unwrap();
         let t = Maps { factor: None, ..t };
         let (pa, pb) = (Patch::Rect(a), Patch::Rect(apply(&bent, &t)));
-        let c = coincide(&pa, &pb).unwrap();
+        let c = coincide(&pa, &pb, Options::default()).unwrap();
         prop_assert!(!c.coincident);
         prop_assert!(c.reason.contains("differs") || c.reason.contains("invariant"), "{}", c.reason);
         prop_assert_ne!(canonical_key(&pa).unwrap(), canonical_key(&pb).unwrap());
-        prop_assert!(!coincide_filtered(&pa, &pb).unwrap().0.coincident);
+        prop_assert!(!coincide(&pa, &pb, Options::filtered()).unwrap().coincident);
     }
 
     #[test]
@@ -149,14 +148,14 @@ proptest! {
         };
         let b = moved(&a);
         let (fa, fb) = (Patch::Rect(a.clone()).to_f64(), Patch::Rect(b).to_f64());
-        let c = coincide_f64(&fa, &fb, Tolerance(1e-6)).unwrap();
+        let c = coincide(&fa, &fb, Options::within(Tolerance(1e-6))).unwrap();
         prop_assert!(c.coincident, "{}", c.reason);
         let mut ws = a.weights();
         ws[0][0] = ws[0][0].clone() * ratio::<Q>(3, 2);
         let bent = RectPatch::new(a.points().unwrap(), ws).unwrap();
         let (qa, qbent) = (Patch::Rect(a.clone()), Patch::Rect(moved(&bent)));
-        let exact = coincide(&qa, &qbent).unwrap();
-        let float = coincide_f64(&fa, &qbent.to_f64(), Tolerance(1e-6)).unwrap();
+        let exact = coincide(&qa, &qbent, Options::default()).unwrap();
+        let float = coincide(&fa, &qbent.to_f64(), Options::within(Tolerance(1e-6))).unwrap();
         prop_assert_eq!(float.coincident, exact.coincident, "{} / {}", float.reason, exact.reason);
     }
 
@@ -172,7 +171,7 @@ proptest! {
         prop_assert_eq!(red.degree_after, (3, 0));
         // α = 1/2 is the identity map up to scaling: then there is no factor.
         prop_assert_eq!(red.common_factor == "1", alpha == ratio(1, 2));
-        let res = exact_bezier::coincide::coincide_curves(&c, &b).unwrap();
+        let res = coincide(&Patch::Curve(c), &Patch::Curve(b), Options::default()).unwrap();
         prop_assert!(res.coincident, "{}", res.reason);
         prop_assert_eq!(res.witness.unwrap().symmetry.reverse_u, rev);
     }
@@ -186,7 +185,7 @@ fn fixture(name: &str) -> Patch<Q> {
 #[test]
 fn example3_is_not_example1() {
     let (ex1, ex3) = (fixture("yang_yong_example1"), fixture("yang_yong_example3"));
-    let c = coincide(&ex1, &ex3).unwrap();
+    let c = coincide(&ex1, &ex3, Options::default()).unwrap();
     assert!(!c.coincident);
     // By hand: I_{0,2} = ω02·ω00/ω01² = 2·8/25 = 16/25 for Example 1, and
     // 7.84·1.44/4.22² = 112896/178084 = 28224/44521 for Example 3.
@@ -208,7 +207,7 @@ fn example1_against_a_standardizing_map_of_itself() {
             .mobius_v(&ratio(7, 10))
             .scale_weights(&ratio(4, 1)),
     );
-    let c = coincide(&ex1, &moved).unwrap();
+    let c = coincide(&ex1, &moved, Options::default()).unwrap();
     assert!(c.coincident);
     let w = c.witness.unwrap();
     assert_eq!(w.symmetry, Symmetry::IDENTITY);
@@ -313,11 +312,16 @@ fn degree_zero_direction_and_curve_patch_mismatch_are_handled() {
     let p = |x: i64| vec![ratio::<Q>(x, 1)];
     let c = RationalCurve::polynomial(vec![p(0), p(1)]).unwrap();
     let r = RectPatch::polynomial(vec![vec![p(0), p(1)]]).unwrap();
-    let res = coincide(&Patch::Curve(c), &Patch::Rect(r.clone())).unwrap();
+    let res = coincide(
+        &Patch::Curve(c),
+        &Patch::Rect(r.clone()),
+        Options::default(),
+    )
+    .unwrap();
     assert!(!res.coincident);
     let copy = r.mobius_v(&ratio(2, 9)).swap_uv();
     assert!(
-        coincide(&Patch::Rect(r), &Patch::Rect(copy))
+        coincide(&Patch::Rect(r), &Patch::Rect(copy), Options::default())
             .unwrap()
             .coincident
     );
@@ -374,7 +378,7 @@ proptest! {
         let pa = Patch::Rect(a.clone());
         for b in [apply(&a, &t), apply(&bent, &t), other] {
             let pb = Patch::Rect(b);
-            let same = coincide(&pa, &pb).unwrap().coincident;
+            let same = coincide(&pa, &pb, Options::default()).unwrap().coincident;
             prop_assert_eq!(key_digest(&pa).unwrap() == key_digest(&pb).unwrap(), same);
         }
     }
@@ -394,7 +398,7 @@ proptest! {
         let pa = Patch::Curve(c.clone());
         for (b, expected) in [(moved(&c), true), (moved(&bent), false)] {
             let pb = Patch::Curve(b);
-            prop_assert_eq!(coincide(&pa, &pb).unwrap().coincident, expected);
+            prop_assert_eq!(coincide(&pa, &pb, Options::default()).unwrap().coincident, expected);
             prop_assert_eq!(key_digest(&pa).unwrap() == key_digest(&pb).unwrap(), expected);
         }
     }

@@ -4,7 +4,9 @@
 
 use crate::common::{bin, cli};
 use exact_bezier::strategy::{curve, rect};
-use exact_bezier::{coincide::Symmetry, io::patch_to_json, ratio, Patch};
+use exact_bezier::{
+    coincide::Options, coincide::Symmetry, io::coincidence_to_json, io::patch_to_json, ratio, Patch,
+};
 use num_rational::BigRational;
 use proptest::strategy::{Strategy, ValueTree};
 
@@ -258,8 +260,10 @@ fn witnesses_of_moved_copies_are_those_of_coincide() {
         {
             let m = m.as_u64().unwrap() as usize;
             assert_eq!(class[m], class[rep]);
-            let c = exact_bezier::coincide::coincide(&patches[rep], &patches[m]).unwrap();
-            assert_eq!(*w, c.to_json()["witness"]);
+            let c =
+                exact_bezier::coincide::coincide(&patches[rep], &patches[m], Options::default())
+                    .unwrap();
+            assert_eq!(*w, coincidence_to_json(&c)["witness"]);
         }
     }
 }

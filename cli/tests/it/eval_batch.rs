@@ -3,7 +3,8 @@
 //! library side; the grids have the documented points; limits and errors.
 
 use crate::common::{cli, cli_json};
-use exact_bezier::io::{parse_rational, read_patches};
+use exact_bezier::algebra::parse_rational;
+use exact_bezier::io::read_patches;
 use exact_bezier::{ratio, Patch};
 use num_rational::BigRational;
 use serde_json::Value;

@@ -134,7 +134,7 @@ proptest! {
         }
         let base = RectPatch::new(p.points().unwrap(), w).unwrap();
         let moved = base.mobius_u(&a).mobius_v(&b).scale_weights(&k);
-        let st = standardize_mobius(&moved, Tolerance::EXACT).unwrap();
+        let st = standardize(&moved, Options { method: Method::Mobius, ..Options::default() }).unwrap();
         prop_assert_eq!(corner_weights(&st.patch), [one(), one(), one(), one()]);
         let StandardMap::Mobius { alpha, beta: Some(beta), .. } = st.map else { panic!("linear") };
         let u = RationalCurve::mobius_param(&alpha, &s).unwrap();
@@ -163,9 +163,7 @@ proptest! {
         }
         let patch = RectPatch::new(pts, w).unwrap();
         prop_assume!(!theorem1_holds(&patch, Tolerance::EXACT));
-        let Exactness::Exact(st) = standardize_rect_exact_or_f64(&patch, false).unwrap() else {
-            panic!("all roots are rational by construction")
-        };
+        let st = standardize(&patch, Options::default()).expect("all roots are rational by construction");
         prop_assert_eq!(corner_weights(&st.patch), [one(), one(), one(), one()]);
         let StandardMap::Quadratic { map, .. } = st.map else { panic!("quadratic") };
         prop_assert_eq!((&map.alpha1, &map.alpha2, &map.beta1), (&a1, &a2, &b));
@@ -173,16 +171,20 @@ proptest! {
         prop_assert_eq!(st.patch.eval(&s, &t).unwrap(), patch.eval(&u, &v).unwrap());
     }
 
-    /// Any positive weights: exact or f64, the corners come out 1.
+    /// Any positive weights: exact, or (an irrational root) in f64 by the
+    /// method the exact input selects, the corners come out 1.
     #[test]
     fn standardization_gives_unit_corners(p in any_rect()) {
-        match standardize_rect_exact_or_f64(&p, false).unwrap() {
-            Exactness::Exact(st) => prop_assert_eq!(corner_weights(&st.patch), [one(), one(), one(), one()]),
-            Exactness::Approximate(st, _) => {
+        match standardize(&p, Options::default()) {
+            Ok(st) => prop_assert_eq!(corner_weights(&st.patch), [one(), one(), one(), one()]),
+            Err(Error::NotRational(_)) => {
+                let method = if Options::default().linear(&p) { Method::Mobius } else { Method::Quadratic };
+                let st = standardize(&p.map(Ordered::to_f64), Options { method, ..Options::default() }).unwrap();
                 for w in corner_weights(&st.patch) {
                     prop_assert!((w - 1.0).abs() < 1e-9);
                 }
             }
+            Err(e) => panic!("{e}"),
         }
     }
 
@@ -191,14 +193,14 @@ proptest! {
                                          a in open_unit_parameter(), k in positive_weight()) {
         // Exact when built from a standard form by a rational Möbius map.
         let n = c.degree();
-        if let Ok(st) = standardize_curve(&c) {
+        if let Ok(st) = standardize(&c, Options::default()) {
             let w = st.patch.weights();
             prop_assert_eq!((&w[0], &w[n]), (&one(), &one()));
-            let again = standardize_curve(&st.patch.mobius(&a).scale_weights(&k)).unwrap();
+            let again = standardize(&st.patch.mobius(&a).scale_weights(&k), Options::default()).unwrap();
             prop_assert_eq!(again.patch, st.patch);
         } else {
-            let Exactness::Approximate(st, _) = standardize_curve_exact_or_f64(&c).unwrap() else { panic!("inexact") };
-            let w: Vec<f64> = st.patch.weights().iter().map(Ordered::to_f64).collect();
+            let st = standardize(&c.map(Ordered::to_f64), Options::default()).unwrap();
+            let w = st.patch.weights();
             prop_assert!((w[0] - 1.0).abs() < 1e-9 && (w[n] - 1.0).abs() < 1e-9);
         }
     }
@@ -268,7 +270,14 @@ fn theorem1_failure_names_the_condition() {
     let p = |x: i64| vec![q(x, 1)];
     let w = vec![vec![q(1, 1), q(2, 1)], vec![q(3, 1), q(5, 1)]];
     let patch = RectPatch::new(vec![vec![p(0), p(1)], vec![p(2), p(3)]], w).unwrap();
-    let err = standardize_mobius(&patch, Tolerance::EXACT).unwrap_err();
+    let err = standardize(
+        &patch,
+        Options {
+            method: Method::Mobius,
+            ..Options::default()
+        },
+    )
+    .unwrap_err();
     assert!(err.to_string().contains("Theorem 1 fails"), "{err}");
     let neg = RectPatch::new(
         vec![vec![p(0), p(1)], vec![p(2), p(3)]],
@@ -276,7 +285,7 @@ fn theorem1_failure_names_the_condition() {
     )
     .unwrap();
     assert!(matches!(
-        standardize_rect(&neg, Tolerance::EXACT),
+        standardize(&neg, Options::default()),
         Err(Error::Weight { .. })
     ));
 }

@@ -25,21 +25,21 @@
 //!
 //! Bounds on hostile input: at most 10 000 characters, nesting depth 64,
 //! root indices and exponents at most 64 in absolute value, `CRootOf`
-//! degree at most [`crate::MAX_DEGREE`].
+//! degree at most [`crate::limits::MAX_DEGREE`].
 
 use super::polys::{primitive_integer, QPoly};
 use super::radical::RadicalSum;
 use super::RealAlgebraic;
 use crate::algebra::scalar::{Field, Roots};
 use crate::algebra::upoly::UPoly;
-use crate::error::{Error, MAX_DEGREE};
+use crate::error::Error;
+use crate::limits::{
+    MAX_ALGEBRAIC_DEPTH as MAX_DEPTH, MAX_ALGEBRAIC_EXPONENT as MAX_EXPONENT,
+    MAX_ALGEBRAIC_TEXT as MAX_LEN, MAX_DEGREE,
+};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
-
-const MAX_LEN: usize = 10_000;
-const MAX_DEPTH: usize = 64;
-const MAX_EXPONENT: i64 = 64;
 
 /// A parsed expression.
 #[derive(Clone, Debug)]
@@ -112,7 +112,7 @@ fn tokenize(text: &str) -> Result<Vec<Tok>, Error> {
                 i += 1;
             }
             let s: String = chars[start..i].iter().collect();
-            let q = crate::io::parse_rational(&s).map_err(|_| bad(text, "bad number"))?;
+            let q = crate::algebra::parse_rational(&s).map_err(|_| bad(text, "bad number"))?;
             out.push(Tok::Num(q));
         } else if c.is_ascii_alphabetic() {
             let start = i;
@@ -466,15 +466,4 @@ pub(crate) fn root_text(p: &QPoly, k: usize) -> String {
         out.push_str(&body);
     }
     format!("CRootOf({out}, {k})")
-}
-
-impl crate::io::JsonScalar for RealAlgebraic {
-    /// Rationals as [`BigRational`] writes them (integers as JSON numbers,
-    /// else `"p/q"`); irrational numbers as strings in the text grammar.
-    fn to_json(&self) -> serde_json::Value {
-        match self.as_rational() {
-            Some(q) => q.to_json(),
-            None => serde_json::Value::String(self.to_string()),
-        }
-    }
 }

@@ -81,7 +81,7 @@ impl Split {
         }
         let q = text
             .split(',')
-            .map(crate::io::parse_rational)
+            .map(crate::algebra::parse_rational)
             .collect::<Result<Vec<_>, _>>()?;
         let f: Vec<f64> = q.iter().map(Ordered::to_f64).collect();
         let unit = |x: f64| (0.0..=1.0).contains(&x);

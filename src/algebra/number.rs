@@ -1,0 +1,142 @@
+//! Exact numbers from text: decimal and `p/q` text as a [`BigRational`]
+//! ([`parse_rational`]), and the [`ExactNumber`] capability of the number
+//! types the readers produce (`BigRational`, [`RealAlgebraic`], which also
+//! reads the grammar of docs/algebraic_numbers.md), and their [`Cost`] in
+//! the cost model of `limits`.
+
+use crate::algebra::{parse_algebraic, Ordered, RealAlgebraic, Scalar};
+use crate::error::Error;
+use crate::limits::Cost;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::Zero;
+
+/// Read a rational exactly from decimal or fraction text: `"3"`, `"-0.885"`,
+/// `"1.5e-3"`, `"1/3"`, `"-2/4"`.
+///
+/// # Errors
+///
+/// [`Error::BadNumber`] for anything else (including `NaN`, `inf`, a zero
+/// denominator).
+///
+/// # Examples
+///
+/// ```
+/// use exact_bezier::{algebra::parse_rational, ratio};
+/// assert_eq!(parse_rational("0.885").unwrap(), ratio(885, 1000));
+/// assert_eq!(parse_rational("1/3").unwrap(), ratio(1, 3));
+/// assert_eq!(parse_rational("-2.5e-1").unwrap(), ratio(-1, 4));
+/// assert!(parse_rational("NaN").is_err());
+/// ```
+pub fn parse_rational(text: &str) -> Result<BigRational, Error> {
+    crate::limits::check_number_text(text)?;
+    let t = text.trim();
+    let bad = || Error::BadNumber(format!("{text:?}"));
+    if let Some((n, d)) = t.split_once('/') {
+        let n = parse_decimal(n.trim()).ok_or_else(bad)?;
+        let d = parse_decimal(d.trim()).ok_or_else(bad)?;
+        if d.is_zero() {
+            return Err(Error::BadNumber(format!("{text:?} has a zero denominator")));
+        }
+        return Ok(n / d);
+    }
+    parse_decimal(t).ok_or_else(bad)
+}
+
+/// `[-+]digits[.digits][(e|E)[-+]digits]` as an exact rational.
+fn parse_decimal(t: &str) -> Option<BigRational> {
+    let (mantissa, exp) = match t.find(['e', 'E']) {
+        Some(k) => (&t[..k], t[k + 1..].parse::<i32>().ok()?),
+        None => (t, 0),
+    };
+    let (neg, digits) = match mantissa.strip_prefix('-') {
+        Some(rest) => (true, rest),
+        None => (false, mantissa.strip_prefix('+').unwrap_or(mantissa)),
+    };
+    let (int_part, frac_part) = digits.split_once('.').unwrap_or((digits, ""));
+    if int_part.is_empty() && frac_part.is_empty() {
+        return None;
+    }
+    if !int_part
+        .chars()
+        .chain(frac_part.chars())
+        .all(|c| c.is_ascii_digit())
+    {
+        return None;
+    }
+    if exp.unsigned_abs() > 10_000 {
+        return None;
+    }
+    let all: String = format!("{int_part}{frac_part}");
+    let n: BigInt = if all.is_empty() {
+        BigInt::zero()
+    } else {
+        all.parse().ok()?
+    };
+    let scale = exp - frac_part.len() as i32;
+    let ten = BigInt::from(10);
+    let q = if scale >= 0 {
+        BigRational::from_integer(n * num_traits::pow(ten, scale as usize))
+    } else {
+        BigRational::new(n, num_traits::pow(ten, (-scale) as usize))
+    };
+    Some(if neg { -q } else { q })
+}
+
+/// Exact number types the reader produces: `BigRational` from decimal and
+/// `p/q` text, and `RealAlgebraic`, which also reads the algebraic grammar
+/// of docs/algebraic_numbers.md (`"sqrt(6)/6"`).
+pub trait ExactNumber: Ordered + std::fmt::Display {
+    /// The number written as `text`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::BadNumber`] for text that is not a number of this type.
+    fn from_text(text: &str) -> Result<Self, Error>;
+}
+
+impl ExactNumber for BigRational {
+    fn from_text(text: &str) -> Result<Self, Error> {
+        parse_rational(text)
+    }
+}
+
+impl ExactNumber for RealAlgebraic {
+    fn from_text(text: &str) -> Result<Self, Error> {
+        match parse_rational(text) {
+            Ok(q) => Ok(RealAlgebraic::from_rational(&q)),
+            Err(_) => parse_algebraic(text),
+        }
+    }
+}
+
+/// Exact rationals: `bits` of numerator and denominator, unit cost.
+impl Cost for BigRational {
+    fn bits(&self) -> u64 {
+        crate::limits::bits(self)
+    }
+    fn op_cost(&self) -> u64 {
+        1
+    }
+    fn root_degree(&self) -> u64 {
+        1
+    }
+}
+
+/// A model: radical sums multiply term by term (16); a general root
+/// (`CRootOf` of degree `d`) goes through resultants, `16·d²` in a patch
+/// (a rect with a degree-9 root weight is keyed in 0.6 s). A map
+/// parameter that is a general root is charged by
+/// [`charge_sizes`](crate::limits::charge_sizes).
+impl Cost for RealAlgebraic {
+    /// ≈ 3.5 bits a character of the number's text.
+    fn bits(&self) -> u64 {
+        self.to_string().len() as u64 * 7 / 2
+    }
+    fn op_cost(&self) -> u64 {
+        16u64.saturating_mul(Cost::root_degree(self).saturating_pow(2))
+    }
+    fn root_degree(&self) -> u64 {
+        RealAlgebraic::root_degree(self).unwrap_or(1) as u64
+    }
+}
