@@ -599,6 +599,23 @@ patch_class!(
     }
 );
 
+/// The exact point of a rect or tri patch at `(u, v)` as `Fraction`s: the
+/// body of both classes' `eval`.
+fn eval_at_uv<'py>(
+    py: Python<'py>,
+    patch: &Patch<BigRational>,
+    u: &Bound<'py, PyAny>,
+    v: &Bound<'py, PyAny>,
+    exact_from_float: bool,
+) -> PyResult<Bound<'py, PyList>> {
+    let uv = [
+        exact_param(u, exact_from_float)?,
+        exact_param(v, exact_from_float)?,
+    ];
+    let x = detached(py, || eval_exact(patch, &uv))?;
+    fractions(py, &x)
+}
+
 patch_class!(
     RectPatch,
     "rect",
@@ -620,12 +637,7 @@ patch_class!(
             v: &Bound<'py, PyAny>,
             exact_from_float: bool,
         ) -> PyResult<Bound<'py, PyList>> {
-            let uv = [
-                exact_param(u, exact_from_float)?,
-                exact_param(v, exact_from_float)?,
-            ];
-            let x = detached(py, || eval_exact(&self.patch, &uv))?;
-            fractions(py, &x)
+            eval_at_uv(py, &self.patch, u, v, exact_from_float)
         }
     }
 );
@@ -652,12 +664,7 @@ patch_class!(
             v: &Bound<'py, PyAny>,
             exact_from_float: bool,
         ) -> PyResult<Bound<'py, PyList>> {
-            let uv = [
-                exact_param(u, exact_from_float)?,
-                exact_param(v, exact_from_float)?,
-            ];
-            let x = detached(py, || eval_exact(&self.patch, &uv))?;
-            fractions(py, &x)
+            eval_at_uv(py, &self.patch, u, v, exact_from_float)
         }
     }
 );
