@@ -27,9 +27,11 @@
 //! [`MAX_FIELD_DEGREE`](crate::limits::MAX_FIELD_DEGREE) nothing is built
 //! and the caller falls back to the resultant path.
 //!
-//! Fields are registered by `(p, index of θ)`, and every embedding found
-//! (`K₁ → A`, `K₂ → A`, `K → K(y)`) is cached, so the numbers of one input
-//! end in one field and a pair of fields is combined once.
+//! Fields are registered by `(p, index of θ)`; every field records the
+//! fields it was built from (`K₁ → A`, `K₂ → A`, `K → K(y)`, and their own
+//! ancestors, transitively), and the compositum of a pair is cached, so an
+//! element of `K₁` meets one of `A ⊇ K₁` in `A`, the numbers of one input
+//! end in one field, and a pair of fields is combined once.
 //!
 //! Reference: Della Dora, Dicrescenzo & Duval, *About a new method for
 //! computing in algebraic number fields*, EUROCAL 1985 (dynamic evaluation:
@@ -56,6 +58,9 @@ pub(crate) struct NumberField {
     p: QPoly,
     theta: RootNum,
     key: Key,
+    /// The fields this one was built from, directly or not, with the image
+    /// of their generator: `K' → K`, `θ' ↦ image(θ)`.
+    ancestors: Mutex<HashMap<Key, QPoly>>,
 }
 
 /// An element `a(θ)` of a field, `deg a < deg p`.
@@ -103,7 +108,12 @@ impl NumberField {
         if fields.len() >= CACHE_SIZE {
             fields.clear();
         }
-        let f = Arc::new(NumberField { p, theta, key });
+        let f = Arc::new(NumberField {
+            p,
+            theta,
+            key,
+            ancestors: Mutex::new(HashMap::new()),
+        });
         fields.insert(f.key.clone(), f.clone());
         f
     }
@@ -111,6 +121,33 @@ impl NumberField {
     /// The defining polynomial `p`.
     pub(crate) fn poly(&self) -> &QPoly {
         &self.p
+    }
+
+    /// Record that `parent` embeds here by `θ_parent ↦ image(θ)`, and so
+    /// do `parent`'s own ancestors (their images composed with `image`).
+    fn adopt(&self, parent: &NumberField, image: &QPoly) {
+        let inherited: Vec<(Key, QPoly)> = parent
+            .ancestors
+            .lock()
+            .expect("not poisoned")
+            .iter()
+            .map(|(k, g)| (k.clone(), g.clone()))
+            .collect();
+        let composed: Vec<(Key, QPoly)> = inherited
+            .into_iter()
+            .map(|(k, g)| (k, self.compose(&g, image)))
+            .collect();
+        let mut mine = self.ancestors.lock().expect("not poisoned");
+        mine.insert(parent.key.clone(), image.clone());
+        for (k, g) in composed {
+            mine.entry(k).or_insert(g);
+        }
+    }
+
+    /// The image of `ancestor`'s generator here, if it is one.
+    fn image_of(&self, ancestor: &NumberField) -> Option<QPoly> {
+        let mine = self.ancestors.lock().expect("not poisoned");
+        mine.get(&ancestor.key).cloned()
     }
 
     /// `deg p`.
@@ -187,10 +224,7 @@ impl NumberField {
 impl FieldNum {
     /// The generator `θ` of `field`.
     pub(crate) fn generator(field: Arc<NumberField>) -> Self {
-        FieldNum {
-            field,
-            a: x_poly(),
-        }
+        FieldNum { field, a: x_poly() }
     }
 
     /// `c(θ)` for a polynomial `c` (reduced mod p); `None` when `c(θ) = 0`.
@@ -250,7 +284,7 @@ impl FieldNum {
         let mut f = vec![QPoly::zero(); n as usize];
         f[0] = k.unit(&self.a).scale(&q(-1));
         let emb = primitive_element(k, &f, enclose);
-        register(&k.key, &emb.target.key, &emb.target, emb.first.clone(), x_poly());
+        emb.target.adopt(k, &emb.first);
         Some(FieldNum {
             field: emb.target,
             a: emb.second,
@@ -264,6 +298,12 @@ pub(crate) fn unify(a: &FieldNum, b: &FieldNum) -> Option<(Arc<NumberField>, QPo
     let (ka, kb) = (&a.field, &b.field);
     if ka.key == kb.key {
         return Some((ka.clone(), a.a.clone(), b.a.clone()));
+    }
+    if let Some(image) = kb.image_of(ka) {
+        return Some((kb.clone(), kb.compose(&a.a, &image), b.a.clone()));
+    }
+    if let Some(image) = ka.image_of(kb) {
+        return Some((ka.clone(), a.a.clone(), ka.compose(&b.a, &image)));
     }
     let emb = embedding(ka, kb)?;
     let k = &emb.target;
@@ -297,24 +337,14 @@ fn embedding(k1: &Arc<NumberField>, k2: &Arc<NumberField>) -> Option<Embedding> 
         .map(|c| UPoly::constant(c.clone()))
         .collect();
     let emb = primitive_element(k1, &f, |prec| k2.theta.enclosure(prec));
-    let k = &emb.target;
-    register(&k1.key, &k2.key, k, emb.first.clone(), emb.second.clone());
-    register(&k1.key, &k.key, k, emb.first.clone(), x_poly());
-    register(&k2.key, &k.key, k, emb.second.clone(), x_poly());
-    Some(emb)
-}
-
-fn register(k1: &Key, k2: &Key, target: &Arc<NumberField>, first: QPoly, second: QPoly) {
+    emb.target.adopt(k1, &emb.first);
+    emb.target.adopt(k2, &emb.second);
     let mut cache = EMBEDDINGS.lock().expect("not poisoned");
     if cache.len() >= CACHE_SIZE {
         cache.clear();
     }
-    let e = Embedding {
-        target: target.clone(),
-        first,
-        second,
-    };
-    cache.insert((k1.clone(), k2.clone()), e);
+    cache.insert((k1.key.clone(), k2.key.clone()), emb.clone());
+    Some(emb)
 }
 
 /// An element of `A = K[y]/(f(y))` (`f` monic of degree `n` with
@@ -366,7 +396,11 @@ fn primitive_element(
     unit_x[0] = x_poly();
     let (ex, ey) = (flatten(&unit_x, d), flatten(&unit_y, d));
     for step in 1i64.. {
-        let c = q(if step % 2 == 1 { step.div_euclid(2) + 1 } else { -step / 2 });
+        let c = q(if step % 2 == 1 {
+            step.div_euclid(2) + 1
+        } else {
+            -step / 2
+        });
         let mut power: Tower = vec![QPoly::zero(); n];
         power[0] = UPoly::constant(q(1));
         let mut columns = Vec::with_capacity(size + 1);
@@ -435,7 +469,10 @@ pub(crate) fn isolate_value(
 /// The solutions `z` of `M z = b` for each right-hand side `b`, where
 /// `columns` are the columns of the square matrix `M`; `None` when `M` is
 /// singular (Gauss–Jordan elimination over Q).
-fn solve(columns: Vec<Vec<BigRational>>, rhs: &[Vec<BigRational>]) -> Option<Vec<Vec<BigRational>>> {
+fn solve(
+    columns: Vec<Vec<BigRational>>,
+    rhs: &[Vec<BigRational>],
+) -> Option<Vec<Vec<BigRational>>> {
     let size = columns.len();
     let width = size + rhs.len();
     let mut rows: Vec<Vec<BigRational>> = (0..size)

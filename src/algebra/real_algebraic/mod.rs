@@ -44,10 +44,10 @@ pub mod text;
 use crate::algebra::scalar::{Field, Ordered, Roots, Scalar};
 use crate::algebra::upoly::UPoly;
 use crate::error::Error;
+use field::{FieldNum, NumberField};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
-use field::{FieldNum, NumberField};
 use polys::QPoly;
 use radical::RadicalSum;
 use root::RootNum;
@@ -124,8 +124,17 @@ impl RealAlgebraic {
 
     /// This number as a field element (`Err` with the value when it is
     /// rational): a radical sum or an isolated root generates its own field
-    /// (minimal or defining polynomial, isolating interval).
+    /// (minimal or defining polynomial, isolating interval); a negative one
+    /// is `−θ` for the positive `θ = −x`, so that `x` and `−x` share a field.
     fn field_parts(&self) -> Result<FieldNum, BigRational> {
+        if let Repr::Radical(s) = &self.0 {
+            if let Some(q) = s.as_rational() {
+                return Err(q);
+            }
+        }
+        if !matches!(self.0, Repr::Field(_)) && self.signum() < 0 {
+            return (-self.clone()).field_parts().map(|x| x.neg());
+        }
         match &self.0 {
             Repr::Radical(s) => {
                 if let Some(q) = s.as_rational() {
@@ -138,7 +147,11 @@ impl RealAlgebraic {
             }
             Repr::Root(r) => {
                 let (lo, hi) = r.interval();
-                Ok(FieldNum::generator(NumberField::new(r.poly().clone(), lo, hi)))
+                Ok(FieldNum::generator(NumberField::new(
+                    r.poly().clone(),
+                    lo,
+                    hi,
+                )))
             }
             Repr::Field(v) => Ok(v.num.clone()),
         }
@@ -155,16 +168,6 @@ impl RealAlgebraic {
             (Err(q), Ok(b)) => Some((b.field, constant(q), b.a)),
             (Err(_), Err(_)) => None,
         }
-    }
-
-    /// Field arithmetic applies when an operand is a field element, or
-    /// when neither is rational and one is not a radical sum (a rational
-    /// operand of an isolated root shifts or scales its polynomial instead).
-    fn in_field(&self, other: &Self) -> bool {
-        let rational = |x: &Self| matches!(&x.0, Repr::Radical(s) if s.as_rational().is_some());
-        matches!(self.0, Repr::Field(_))
-            || matches!(other.0, Repr::Field(_))
-            || !(rational(self) || rational(other))
     }
 
     /// The isolated-root (or radical) form of a field element, computed
@@ -850,7 +853,7 @@ impl std::ops::Add<&RealAlgebraic> for RealAlgebraic {
     fn add(self, other: &Self) -> Self {
         match (&self.0, &other.0) {
             (Repr::Radical(a), Repr::Radical(b)) => Self::radical(a.add(b)),
-            _ => match self.in_field(other).then(|| self.common(other)).flatten() {
+            _ => match self.common(other) {
                 Some((k, a, b)) => Self::from_field(k, &a.add(&b)),
                 None => self.add_general(other),
             },
@@ -861,7 +864,13 @@ impl std::ops::Add<&RealAlgebraic> for RealAlgebraic {
 impl std::ops::Sub<&RealAlgebraic> for RealAlgebraic {
     type Output = Self;
     fn sub(self, other: &Self) -> Self {
-        self + &(-other.clone())
+        match (&self.0, &other.0) {
+            (Repr::Radical(a), Repr::Radical(b)) => Self::radical(a.add(&b.neg())),
+            _ => match self.common(other) {
+                Some((k, a, b)) => Self::from_field(k, &a.sub(&b)),
+                None => self + &(-other.clone()),
+            },
+        }
     }
 }
 
@@ -871,7 +880,7 @@ impl std::ops::Mul<&RealAlgebraic> for RealAlgebraic {
         match (&self.0, &other.0) {
             (Repr::Radical(a), Repr::Radical(b)) => Self::radical(a.mul(b)),
             _ if self.is_zero() || other.is_zero() => Self::zero(),
-            _ => match self.in_field(other).then(|| self.common(other)).flatten() {
+            _ => match self.common(other) {
                 Some((k, a, b)) => Self::from_field(k, &a.mul(&b)),
                 None => self.mul_general(other),
             },
