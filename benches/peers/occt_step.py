@@ -18,7 +18,9 @@ For each file, in Open CASCADE's floating point and its default units
 * ``shells`` (closed/open) and ``solids``;
 * ``check``: BRepCheck_Analyzer validity and its time;
 * ``edge_uses``: edges used by two faces (shared), as a seam of one face,
-  by one face (open) or by more than two;
+  by one face (open) or by more than two, and degenerated edges (a cone's
+  apex, a sphere's pole: BRep_Tool::Degenerated) and free edges (in no
+  face: wireframe or supplemental geometry the file also holds) apart;
 * ``tolerances``: per edge its OCCT tolerance (BRep_Tool::Tolerance),
   ShapeAnalysis_Edge::CheckSameParameter's maximal deviation between the 3D
   curve and the p-curves (23 samples), and BRep_Tool::Continuity between
@@ -140,7 +142,11 @@ def edge_records(shape):
         for face in faces:
             distinct.Add(face)
         seam = distinct.Extent() == 1 and BRep_Tool.IsClosed_s(edge, faces[0])
-        if distinct.Extent() == 2:
+        if BRep_Tool.Degenerated_s(edge):
+            use = "degenerate"
+        elif distinct.Extent() == 0:
+            use = "free"
+        elif distinct.Extent() == 2:
             use = "shared"
         elif seam:
             use = "seam"
