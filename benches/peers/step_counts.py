@@ -6,6 +6,7 @@ exact-bezier crate, so that the crate's STEP reader can be checked against
 it.  Pure Python 3 standard library.
 
     python3 benches/peers/step_counts.py FILE... > counts.json
+    python3 benches/peers/step_counts.py --self-test
 
 For every file it prints (one JSON object keyed by file name):
 
@@ -537,6 +538,69 @@ def summarize(path):
     }
 
 
+SELF_TEST = r"""ISO-10303-21;
+HEADER; /* a comment; with a semicolon */
+FILE_DESCRIPTION(('x'),'2;1');
+FILE_NAME('it''s; here','2020',('a'),('b'),'pre','SYS \X2\00E9\X0\ \S\a','');
+FILE_SCHEMA(('AUTOMOTIVE_DESIGN'));
+ENDSEC;
+DATA;
+#1=( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) );
+#2=(NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.));
+#3=UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-07),#1,'dist','');
+#4=(GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((#3))
+ GLOBAL_UNIT_ASSIGNED_CONTEXT((#1,#2)) REPRESENTATION_CONTEXT('',''));
+#5=PLANE('a ''quoted''; name',#6);
+#7=(BOUNDED_SURFACE() B_SPLINE_SURFACE(1,1,((#8,#8),(#8,#8)),.UNSPECIFIED.,.F.,.F.,.F.)
+ B_SPLINE_SURFACE_WITH_KNOTS((2,2),(2,2),(0.,1.),(0.,1.),.UNSPECIFIED.)
+ GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_SURFACE(((1.,1.),(1.,1.)))
+ REPRESENTATION_ITEM('') SURFACE());
+#9=ADVANCED_FACE('',(#11),#5,.T.);
+#10=ADVANCED_FACE('',(#12),#7,.F.);
+#11=FACE_OUTER_BOUND('',#13,.T.);
+#12=FACE_BOUND('',#14,.T.);
+#13=EDGE_LOOP('',(#15,#16,#17));
+#14=EDGE_LOOP('',(#18));
+#15=ORIENTED_EDGE('',*,*,#20,.T.);
+#16=ORIENTED_EDGE('',*,*,#21,.T.);
+#17=ORIENTED_EDGE('',*,*,#21,.F.);
+#18=ORIENTED_EDGE('',*,*,#20,.F.);
+#20=EDGE_CURVE('',#30,#31,#22,.T.);
+#21=EDGE_CURVE('',#31,#31,#23,.T.);
+#22=SURFACE_CURVE('',#24,(#5,#7),.CURVE_3D.);
+#23=SEAM_CURVE('',#25,(#5,#5),.CURVE_3D.);
+#24=LINE('',#8,#8);
+#25=CIRCLE('',#8,1.5);
+ENDSEC;
+END-ISO-10303-21;
+"""
+
+
+def self_test():
+    """Check the parser on a file that exercises its syntax, with known answers."""
+    import os
+    import tempfile
+
+    with tempfile.NamedTemporaryFile("w", suffix=".stp", delete=False) as f:
+        f.write(SELF_TEST)
+    try:
+        r = summarize(f.name)
+    finally:
+        os.unlink(f.name)
+    assert r["header"]["originating_system"] == "SYS \u00e9 \u00e1", r["header"]
+    assert r["header"]["description"] == ["x"]
+    assert r["faces"]["by_surface"] == {"PLANE": 1, "RATIONAL_B_SPLINE_SURFACE": 1}, r["faces"]
+    assert r["edges"]["by_curve"] == {"SEAM_CURVE": 1, "SURFACE_CURVE": 1}, r["edges"]
+    assert r["edges"]["by_curve_3d"] == {"CIRCLE": 1, "LINE": 1}, r["edges"]
+    uses = r["edge_uses"]
+    assert (uses["shared"], uses["seam"], uses["oriented_edge_uses"]) == (1, 1, 4), uses
+    ctx = r["contexts"][0]
+    assert (ctx["length_unit"]["prefix"], ctx["length_unit"]["si"]) == ("MILLI", "METRE"), ctx
+    assert ctx["uncertainty"][0]["value"] == "1.E-07", ctx
+    assert r["text"]["instances"] == 22 and not r["text"]["malformed"], r["text"]
+    print("self-test passed")
+
+
 def main(paths):
     out = {}
     for path in paths:
@@ -546,6 +610,9 @@ def main(paths):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) < 2:
-        sys.exit("usage: step_counts.py FILE...")
-    main(sys.argv[1:])
+    if sys.argv[1:] == ["--self-test"]:
+        self_test()
+    elif len(sys.argv) < 2:
+        sys.exit("usage: step_counts.py FILE... | --self-test")
+    else:
+        main(sys.argv[1:])
