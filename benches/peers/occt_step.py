@@ -26,9 +26,9 @@ For each file, in Open CASCADE's floating point and its default units
   curve and the p-curves (23 samples), and BRep_Tool::Continuity between
   its faces after BRepLib::EncodeRegularity (angular tolerance 1e-10 rad),
   ``same_parameter_flagged`` is what CheckSameParameter returns: true when
-  it finds a deviation over the edge's tolerance (its implementation
-  returns its DONE status; on every edge of the corpus whose deviation is
-  under the tolerance it returns false); ``same_parameter_dev`` repeats its
+  it finds the edge not same-parameter within its tolerance (its
+  implementation returns its DONE status; the header's comment says the
+  opposite); ``same_parameter_dev`` repeats its
   23-sample deviation, since the binding takes the output by value and
   cannot return it; ``same_parameter_dev_dense`` samples the same distance
   at 1001 parameters where the 23-sample value is over 1e-9 mm, to show
@@ -99,10 +99,12 @@ def unique_count(items):
 
 
 def enum_name(value):
+    """``GeomAbs_Plane`` from the binding's ``GeomAbs_SurfaceType.GeomAbs_Plane``."""
     return str(value).split(".")[-1].split(":")[0]
 
 
 def by_type(items, adaptor, cast):
+    """Counts of the items by their adaptor's GetType()."""
     counts = {}
     for item in items:
         name = enum_name(adaptor(cast(item)).GetType())
@@ -118,7 +120,8 @@ def same_parameter_deviation(edge, faces, samples=23):
     cannot return it; this repeats its sampling (3D curve at t against the
     face's surface at the p-curve's point at t) through BRepAdaptor_Curve.
     Returns (deviation, fraction of the edge's parameter range where it
-    is attained).
+    is attained). On a seam only the p-curve BRepAdaptor_Curve picks for
+    the edge's orientation is measured.
     """
     curve = BRepAdaptor_Curve(edge)
     first, last = curve.FirstParameter(), curve.LastParameter()
@@ -134,12 +137,39 @@ def same_parameter_deviation(edge, faces, samples=23):
 
 
 def point(vertex):
+    """A vertex's coordinates (mm)."""
     p = BRep_Tool.Pnt_s(vertex)
     return [p.X(), p.Y(), p.Z()]
 
 
 def distinct_faces(face_map):
+    """The faces of an indexed map, as faces."""
     return [TopoDS.Face(face_map.FindKey(i)) for i in range(1, face_map.Extent() + 1)]
+
+
+def classify_use(edge, faces):
+    """How the faces use the edge: shared, seam, open, non_manifold, degenerate or free.
+
+    ``faces`` are the distinct faces the edge bounds (a seam's face once).
+    """
+    if BRep_Tool.Degenerated_s(edge):
+        return "degenerate"
+    if not faces:
+        return "free"
+    if len(faces) == 2:
+        return "shared"
+    if len(faces) == 1:
+        return "seam" if BRep_Tool.IsClosed_s(edge, faces[0]) else "open"
+    return "non_manifold"
+
+
+def continuity(edge, faces, use):
+    """BRep_Tool::Continuity across a shared edge or a seam, else None."""
+    if use == "shared":
+        return enum_name(BRep_Tool.Continuity_s(edge, faces[0], faces[1]))
+    if use == "seam":
+        return enum_name(BRep_Tool.Continuity_s(edge, faces[0], faces[0]))
+    return None
 
 
 def edge_records(shape):
@@ -151,33 +181,14 @@ def edge_records(shape):
     records = []
     for i in range(1, ancestors.Extent() + 1):
         edge = TopoDS.Edge(ancestors.FindKey(i))
-        faces = [TopoDS.Face(f) for f in ancestors.FindFromIndex(i)]
         distinct = ShapeMap()
-        for face in faces:
+        for face in ancestors.FindFromIndex(i):
             distinct.Add(face)
-        seam = distinct.Extent() == 1 and BRep_Tool.IsClosed_s(edge, faces[0])
-        if BRep_Tool.Degenerated_s(edge):
-            use = "degenerate"
-        elif distinct.Extent() == 0:
-            use = "free"
-        elif distinct.Extent() == 2:
-            use = "shared"
-        elif seam:
-            use = "seam"
-        elif distinct.Extent() == 1:
-            use = "open"
-        else:
-            use = "non_manifold"
+        faces = distinct_faces(distinct)
+        use = classify_use(edge, faces)
         same_parameter = analysis.CheckSameParameter(edge, 0.0)
-        face_list = distinct_faces(distinct)
-        deviation, _ = same_parameter_deviation(edge, face_list)
-        dense, dense_at = same_parameter_deviation(edge, face_list, DENSE_SAMPLES) if deviation > DENSE_FROM else (None, None)
-        continuity = None
-        if distinct.Extent() == 2:
-            f1, f2 = TopoDS.Face(distinct.FindKey(1)), TopoDS.Face(distinct.FindKey(2))
-            continuity = enum_name(BRep_Tool.Continuity_s(edge, f1, f2))
-        elif seam:
-            continuity = enum_name(BRep_Tool.Continuity_s(edge, faces[0], faces[0]))
+        deviation, _ = same_parameter_deviation(edge, faces)
+        dense, dense_at = same_parameter_deviation(edge, faces, DENSE_SAMPLES) if deviation > DENSE_FROM else (None, None)
         records.append(
             {
                 "curve": enum_name(BRepAdaptor_Curve(edge).GetType()),
@@ -188,13 +199,14 @@ def edge_records(shape):
                 "same_parameter_dev_dense": dense,
                 "same_parameter_dense_at": dense_at,
                 "ends": [point(TopExp.FirstVertex_s(edge)), point(TopExp.LastVertex_s(edge))],
-                "continuity": continuity,
+                "continuity": continuity(edge, faces, use),
             }
         )
     return records
 
 
 def summarize_edges(records):
+    """Per-file totals of the edge records."""
     uses, cont = {}, {}
     for r in records:
         uses[r["use"]] = uses.get(r["use"], 0) + 1
@@ -222,6 +234,7 @@ def check(shape):
 
 
 def shells(shape):
+    """Shells, closed (every edge bounds two of its faces) or open."""
     items = sub_shapes(shape, TopAbs_SHELL)
     closed = sum(1 for s in items if BRep_Tool.IsClosed_s(s))
     return {"closed": closed, "open": len(items) - closed, "unique": unique_count(items)}
