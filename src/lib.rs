@@ -72,7 +72,9 @@
 //!    their sum;
 //! 6. operations: [`blossom`], [`convert`], [`reparam`], [`arc`], [`trig`];
 //! 7. predicates: [`coincide`], [`intersect`];
-//! 8. formats: [`nurbs`], [`step`], [`io`] (all JSON reading and writing);
+//! 8. formats: [`nurbs`], [`analytic`] (the analytic curves and surfaces of
+//!    STEP as exact rational pieces), [`step`], [`io`] (all JSON reading and
+//!    writing);
 //! 9. applications: [`audit`], `render`, [`coords`], `strategy`, the
 //!    [`prelude`].
 //!
@@ -126,6 +128,7 @@
 
 pub mod algebra;
 pub mod arc;
+pub mod analytic;
 pub mod audit;
 pub mod bernstein;
 pub mod coincide;
