@@ -127,8 +127,8 @@
 #![warn(missing_docs)]
 
 pub mod algebra;
-pub mod arc;
 pub mod analytic;
+pub mod arc;
 pub mod audit;
 pub mod bernstein;
 pub mod coincide;

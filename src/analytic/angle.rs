@@ -94,14 +94,20 @@ fn bad(text: &str) -> Error {
 /// assert!(!t.exact);
 /// assert!(t.error < exact_bezier::ratio(1, 1i64 << 60));
 /// ```
-pub fn cone_slope<T: Field + Ordered + Roots>(text: &str, unit: AngleUnit) -> Result<Slope<T>, Error> {
+pub fn cone_slope<T: Field + Ordered + Roots>(
+    text: &str,
+    unit: AngleUnit,
+) -> Result<Slope<T>, Error> {
     let d = parse_rational(text)?;
     let half = half_ulp(text)?;
     let (pi_lo, pi_hi) = pi_enclosure();
     // α in radians is in [lo, hi].
     let (lo, hi) = match unit {
         AngleUnit::Radian => (d.clone(), d.clone()),
-        AngleUnit::Degree => (d.clone() * &pi_lo / q(180, 1), d.clone() * &pi_hi / q(180, 1)),
+        AngleUnit::Degree => (
+            d.clone() * &pi_lo / q(180, 1),
+            d.clone() * &pi_hi / q(180, 1),
+        ),
     };
     if !lo.is_positive() || hi >= pi_lo.clone() / q(2, 1) {
         return Err(Error::Domain(format!(
@@ -146,7 +152,11 @@ fn tan_15<T: Field + Roots>(k: i64) -> Option<T> {
 fn bracket(x: &BigRational, odd: bool) -> (BigRational, BigRational) {
     let eps = BigRational::new(BigInt::one(), BigInt::one() << 80);
     let x2 = x.clone() * x;
-    let (mut term, mut n) = if odd { (x.clone(), 1i64) } else { (BigRational::one(), 0i64) };
+    let (mut term, mut n) = if odd {
+        (x.clone(), 1i64)
+    } else {
+        (BigRational::one(), 0i64)
+    };
     let mut sum = term.clone();
     loop {
         term = -term * &x2 / q((n + 1) * (n + 2), 1);

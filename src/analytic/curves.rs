@@ -59,7 +59,10 @@ pub fn ellipse<T: Scalar>(frame: &Frame<T>, a: &T, b: &T) -> Vec<RationalCurve<T
             let ctrl = arc
                 .iter()
                 .map(|([c, s], w)| {
-                    HPoint::from_point(&frame.point(&(a.clone() * c), &(b.clone() * s), &T::zero()), w)
+                    HPoint::from_point(
+                        &frame.point(&(a.clone() * c), &(b.clone() * s), &T::zero()),
+                        w,
+                    )
                 })
                 .collect();
             RationalCurve::from_ctrl(ctrl)

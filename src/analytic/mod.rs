@@ -49,7 +49,7 @@ pub use curves::{circle, ellipse, line_segment, polyline, quarter_arcs};
 pub use frame::{Frame, Frame2};
 pub use range::{covering_range, Unbounded};
 pub use surfaces::{cone, cylinder, extrusion, plane, revolution, sphere, torus};
-pub use trim::{trim_between, Trimmed};
+pub use trim::{locate_vertex, split_between, trim_between, Trimmed};
 
 use crate::algebra::scalar::Scalar;
 

@@ -67,7 +67,10 @@ fn turn<T: Scalar>() -> Vec<Piece<T>> {
 
 /// The one linear piece from `a` to `b`.
 fn segment<T: Scalar>(a: &T, b: &T) -> Vec<Piece<T>> {
-    vec![vec![(vec![a.clone()], T::one()), (vec![b.clone()], T::one())]]
+    vec![vec![
+        (vec![a.clone()], T::one()),
+        (vec![b.clone()], T::one()),
+    ]]
 }
 
 /// The pieces of a rational curve as parameter pieces (its control points).
@@ -117,7 +120,11 @@ pub fn cone<T: Scalar>(frame: &Frame<T>, radius: &T, slope: &T, v: [&T; 2]) -> V
 pub fn sphere<T: Scalar>(frame: &Frame<T>, radius: &T) -> Vec<RectPatch<T>> {
     let s = |a: &[T], b: &[T]| {
         let r = radius.clone() * &b[0];
-        frame.point(&(r.clone() * &a[0]), &(r * &a[1]), &(radius.clone() * &b[1]))
+        frame.point(
+            &(r.clone() * &a[0]),
+            &(r * &a[1]),
+            &(radius.clone() * &b[1]),
+        )
     };
     let mut arcs = turn();
     let latitude = vec![arcs.swap_remove(3), arcs.swap_remove(0)];

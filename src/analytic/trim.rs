@@ -90,44 +90,13 @@ pub fn trim_between<T: Field + Ordered>(
     } else {
         pieces.iter().rev().map(RationalCurve::reverse).collect()
     };
-    let (ks, ts) = locate(&work, start, snap);
+    let (ks, ts) = locate_vertex(&work, start, snap);
     let (ke, te) = if start == end {
         (ks, ts.clone())
     } else {
-        locate(&work, end, snap)
+        locate_vertex(&work, end, snap)
     };
-    let forward = start != end && (ks < ke || (ks == ke && ts <= te));
-    let n = work.len();
-    let mut spans: Vec<(usize, T, T)> = Vec::new();
-    if forward && ks == ke {
-        spans.push((ks, ts.clone(), te.clone()));
-    } else {
-        if !forward && !is_closed(&work) {
-            return Err(Error::Domain(
-                "the end vertex comes before the start vertex on an open curve".into(),
-            ));
-        }
-        let (zero, one) = (T::zero(), T::one());
-        spans.push((ks, ts.clone(), one.clone()));
-        let middle: Vec<usize> = if forward {
-            (ks + 1..ke).collect()
-        } else {
-            (ks + 1..n).chain(0..ke).collect()
-        };
-        spans.extend(middle.into_iter().map(|k| (k, zero.clone(), one.clone())));
-        spans.push((ke, zero, te.clone()));
-    }
-    let out: Vec<RationalCurve<T>> = spans
-        .into_iter()
-        .filter(|(_, a, b)| a != b)
-        .map(|(k, a, b)| {
-            if a.is_zero() && b == T::one() {
-                work[k].clone()
-            } else {
-                work[k].subsegment(&a, &b)
-            }
-        })
-        .collect();
+    let out = split_between(&work, (ks, &ts), (ke, &te), start == end)?;
     let start_pt = work[ks].eval(&ts)?;
     let end_pt = work[ke].eval(&te)?;
     Ok(Trimmed {
@@ -146,16 +115,83 @@ fn dist_sq<T: Field>(a: &[T], b: &[T]) -> T {
     dot(&d, &d)
 }
 
+/// The exact sub-pieces of `pieces` from the position `from = (piece, t)`
+/// to `to`, following the pieces' order; when `to` comes before `from`, or
+/// `whole` (a closed edge from a vertex back to it), the path wraps through
+/// the end of the last piece to the start of the first. Each sub-piece is
+/// [`RationalCurve::subsegment`] (exact, the blossom at rational
+/// parameters); zero-length spans are dropped.
+///
+/// # Errors
+///
+/// [`Error::Domain`] when the path must wrap but the curve is not closed
+/// (its last point is not exactly its first), or a position is out of range.
+pub fn split_between<T: Field + Ordered>(
+    pieces: &[RationalCurve<T>],
+    from: (usize, &T),
+    to: (usize, &T),
+    whole: bool,
+) -> Result<Vec<RationalCurve<T>>, Error> {
+    let ((ks, ts), (ke, te)) = (from, to);
+    let n = pieces.len();
+    let (zero, one) = (T::zero(), T::one());
+    let inside = |t: &T| *t >= zero && *t <= one;
+    if ks >= n || ke >= n || !inside(ts) || !inside(te) {
+        return Err(Error::Domain(format!(
+            "a position outside the {n} pieces and [0, 1]"
+        )));
+    }
+    let forward = !whole && (ks < ke || (ks == ke && ts <= te));
+    let mut spans: Vec<(usize, T, T)> = Vec::new();
+    if forward && ks == ke {
+        spans.push((ks, ts.clone(), te.clone()));
+    } else {
+        if !forward && !is_closed(pieces) {
+            return Err(Error::Domain(
+                "the end comes before the start on an open curve".into(),
+            ));
+        }
+        spans.push((ks, ts.clone(), one.clone()));
+        let middle: Vec<usize> = if forward {
+            (ks + 1..ke).collect()
+        } else {
+            (ks + 1..n).chain(0..ke).collect()
+        };
+        spans.extend(middle.into_iter().map(|k| (k, zero.clone(), one.clone())));
+        spans.push((ke, zero.clone(), te.clone()));
+    }
+    Ok(spans
+        .into_iter()
+        .filter(|(_, a, b)| a != b)
+        .map(|(k, a, b)| {
+            if a == zero && b == one {
+                pieces[k].clone()
+            } else {
+                pieces[k].subsegment(&a, &b)
+            }
+        })
+        .collect())
+}
+
 /// Does the last piece end exactly where the first begins?
 fn is_closed<T: Field>(pieces: &[RationalCurve<T>]) -> bool {
     let first: &HPoint<T> = &pieces[0].ctrl()[0];
-    let last = pieces[pieces.len() - 1].ctrl().last().expect("a piece has points");
+    let last = pieces[pieces.len() - 1]
+        .ctrl()
+        .last()
+        .expect("a piece has points");
     first.same_projective_point(last, Tolerance::EXACT)
 }
 
-/// `(piece, t)` of the point of `pieces` nearest `p` by an `f64` search,
-/// with `t` a dyadic rational `m/2⁴⁰` (or a piece end, see `snap`).
-fn locate<T: Field + Ordered>(pieces: &[RationalCurve<T>], p: &[T], snap: f64) -> (usize, T) {
+/// `(piece, t)` of the point of `pieces` nearest `p` by an `f64` search
+/// (a heuristic: 33 samples per piece, then a halving local search), with
+/// `t` the dyadic rational `m/2⁴⁰` nearest the parameter found; a piece end
+/// within `snap` of the best point found is preferred (no sliver pieces).
+pub fn locate_vertex<T: Field + Ordered>(
+    pieces: &[RationalCurve<T>],
+    p: &[T],
+    snap: f64,
+) -> (usize, T) {
     let pf: Vec<f64> = p.iter().map(Ordered::to_f64).collect();
     let mut best = (0, 0.0, f64::INFINITY);
     let mut ends = Vec::new();
@@ -205,7 +241,7 @@ fn dist2(a: &[f64], b: &[f64]) -> f64 {
 }
 
 /// The dyadic rational `round(t·2⁴⁰)/2⁴⁰` (t in [0, 1]).
-fn dyadic(t: f64) -> BigRational {
+pub(crate) fn dyadic(t: f64) -> BigRational {
     let scale = (1u64 << 40) as f64;
     let m = (t.clamp(0.0, 1.0) * scale).round() as i64;
     BigRational::new(BigInt::from(m), BigInt::one() << 40)
