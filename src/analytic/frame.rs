@@ -130,7 +130,9 @@ fn normalize<T: Field + Roots>(v: &[T], vv: &T) -> Result<Vec<T>, Error> {
     let len = vv
         .nth_root(2)
         .ok_or_else(|| Error::NotRational(format!("√{vv:?} is not in this scalar type")))?;
-    Ok(v.iter().map(|c| c.clone() / &len).collect())
+    // 1/√vv = √vv/vv: a division by the rational-valued vv, not by a root.
+    let inv = len / vv;
+    Ok(v.iter().map(|c| c.clone() * &inv).collect())
 }
 
 /// A 2D orthonormal frame: an `axis2_placement_2d(location, ref_direction)`

@@ -272,7 +272,9 @@ pub fn vector<T: Field + Ordered + Roots>(table: &Table, id: u64) -> Result<Vec<
     let len = dd
         .nth_root(2)
         .ok_or_else(|| Error::NotRational(format!("#{id} VECTOR: |d| is irrational")))?;
-    Ok(d.into_iter().map(|x| x * &m / &len).collect())
+    // m/|d| = m·√dd/dd: a division by the rational-valued dd, not by a root.
+    let k = m * &len / &dd;
+    Ok(d.into_iter().map(|x| x * &k).collect())
 }
 
 /// The frame of an `AXIS2_PLACEMENT_3D` or (embedded, with `z = 0` of
