@@ -31,7 +31,7 @@
 //! - Scalars: construction from an orthonormal [`Frame`] needs ring
 //!   operations only ([`Scalar`], so the symbolic ring proves the implicit
 //!   equations in `proofs/`); turning STEP's decimal directions into an
-//!   orthonormal frame needs square roots ([`Roots`]: exact radicals with
+//!   orthonormal frame needs square roots ([`Roots`](crate::Roots): exact radicals with
 //!   [`RealAlgebraic`](crate::algebra::RealAlgebraic)).
 //!
 //! Reference: ISO 10303-42 §4.4 (geometry schema: placements, conics,
@@ -83,3 +83,6 @@ pub(crate) fn cross<T: Scalar>(a: &[T], b: &[T]) -> Vec<T> {
         a[0].clone() * &b[1] - &(a[1].clone() * &b[0]),
     ]
 }
+
+#[cfg(test)]
+mod tests;
