@@ -30,6 +30,7 @@ use num_traits::{One, Signed};
 use std::collections::{BTreeMap, HashMap};
 use std::io::BufRead;
 
+pub mod geometry;
 pub mod parser;
 
 use parser::{Instance, Param, Reader, Record};
