@@ -149,7 +149,9 @@ impl Algebraic {
     /// form); SymPy is imported on the first call.
     fn to_sympy<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let sympy = py.import("sympy").map_err(|e| {
-            PyImportError::new_err(format!("Algebraic.to_sympy needs SymPy (pip install sympy): {e}"))
+            PyImportError::new_err(format!(
+                "Algebraic.to_sympy needs SymPy (pip install sympy): {e}"
+            ))
         })?;
         sympy.call_method1("sympify", (self.value.to_string(),))
     }
@@ -168,7 +170,10 @@ impl Algebraic {
             return Ok(py.NotImplemented());
         };
         let r = op.matches(ord);
-        Ok(pyo3::types::PyBool::new(py, r).to_owned().into_any().unbind())
+        Ok(pyo3::types::PyBool::new(py, r)
+            .to_owned()
+            .into_any()
+            .unbind())
     }
 
     /// Equal numbers hash equal; a rational one as its `Fraction`.
@@ -222,6 +227,9 @@ impl Algebraic {
 
     /// Pickled as its text form.
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (String,))> {
-        Ok((py.get_type::<Algebraic>().into_any(), (self.value.to_string(),)))
+        Ok((
+            py.get_type::<Algebraic>().into_any(),
+            (self.value.to_string(),),
+        ))
     }
 }

@@ -35,9 +35,7 @@ use pyo3::create_exception;
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
-use pyo3::types::{
-    PyBool, PyFloat, PyInt, PyList, PyString, PyTuple, PyType,
-};
+use pyo3::types::{PyBool, PyFloat, PyInt, PyList, PyString, PyTuple, PyType};
 use serde_json::{Map, Value};
 use std::hash::{DefaultHasher, Hash, Hasher};
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -224,7 +222,9 @@ fn exact_param(x: &Bound<'_, PyAny>, from_float: bool) -> PyResult<BigRational> 
 fn unit_param(x: &Bound<'_, PyAny>, from_float: bool) -> PyResult<BigRational> {
     let t = exact_param(x, from_float)?;
     if t < BigRational::from_integer(0.into()) || t > BigRational::from_integer(1.into()) {
-        return Err(to_py_err(Error::Domain(format!("t = {t} is outside [0, 1]"))));
+        return Err(to_py_err(Error::Domain(format!(
+            "t = {t} is outside [0, 1]"
+        ))));
     }
     Ok(t)
 }

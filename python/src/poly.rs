@@ -176,7 +176,10 @@ impl Poly {
             CompareOp::Ne => self.poly != o,
             _ => return Ok(py.NotImplemented()),
         };
-        Ok(pyo3::types::PyBool::new(py, r).to_owned().into_any().unbind())
+        Ok(pyo3::types::PyBool::new(py, r)
+            .to_owned()
+            .into_any()
+            .unbind())
     }
 
     fn __neg__(&self) -> Self {
@@ -213,7 +216,11 @@ impl Poly {
             )));
         }
         Ok(Poly {
-            poly: if e == 0 { KPoly::one() } else { self.poly.pow(e) },
+            poly: if e == 0 {
+                KPoly::one()
+            } else {
+                self.poly.pow(e)
+            },
         })
     }
 
@@ -233,14 +240,15 @@ impl Poly {
         }
     }
 
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyList>,))> {
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyList>,))> {
         let rebuild = py.get_type::<Poly>().getattr("from_terms")?;
         let terms = self
             .poly
             .terms()
-            .map(|(m, c)| {
-                PyTuple::new(py, [m.into_pyobject(py)?.into_any(), fraction(py, &c)?])
-            })
+            .map(|(m, c)| PyTuple::new(py, [m.into_pyobject(py)?.into_any(), fraction(py, &c)?]))
             .collect::<PyResult<Vec<_>>>()?;
         Ok((rebuild, (PyList::new(py, terms)?,)))
     }
