@@ -22,6 +22,7 @@ import os
 import random
 import shutil
 import subprocess
+import sys
 import tempfile
 import time
 from fractions import Fraction
@@ -89,6 +90,8 @@ def main():
         with open(os.path.join(work, f"shard-{s:03}.jsonl"), "w") as f:
             f.writelines(line + "\n" for line in lines[s * per:(s + 1) * per])
 
+    # The executors run this interpreter, which has exact_bezier installed.
+    os.environ["PYSPARK_PYTHON"] = sys.executable
     spark_home = os.path.dirname(pyspark.__file__)
     master, worker = start_cluster(spark_home, a.cores, work)
     try:
@@ -96,6 +99,7 @@ def main():
                  .appName("exact-bezier dedup")
                  .config("spark.driver.host", "127.0.0.1")
                  .config("spark.executor.cores", str(a.cores))
+                 .config("spark.pyspark.python", sys.executable)
                  .getOrCreate())
         sc = spark.sparkContext
         # wholeTextFiles keeps each shard whole and in order: global index =
