@@ -27,7 +27,7 @@ from fractions import Fraction
 from typing import Any, Dict, Iterable, Iterator, List, Optional, Sequence, Tuple, Union
 
 from ._bridge import Patchlike, as_fractions, exact_text, json_input, run_json
-from ._native import Curve, key
+from ._native import Curve, TriPatch, key
 
 Number = Union[int, Fraction, str]
 
@@ -329,3 +329,46 @@ class _temp_json:
 
     def __exit__(self, *exc: Any) -> None:
         os.unlink(self.path)
+
+
+def mesh(patch: Patchlike, n: int) -> Tuple[Any, Any]:
+    """A triangle mesh of a patch on the float path: ``(vertices, faces)``
+    as NumPy arrays, the vertices (shape ``(V, dim)``) at the parameters
+    ``(i/n, j/n)`` — all ``i, j ≤ n`` for a rect (``2n²`` faces), ``i + j ≤ n``
+    for a tri (``n²`` faces) — and the faces as ``int64`` vertex indices,
+    shape ``(F, 3)``, counter-clockwise in ``(u, v)``. A curve gives its
+    polyline: vertices at ``t = i/n`` and segments of shape ``(n, 2)``.
+
+    >>> import exact_bezier as eb
+    >>> v, f = eb.mesh(eb.TriPatch([[[0, 0], [1, 0]], [[0, 1]]]), 2)
+    >>> v.shape, f.shape
+    ((6, 2), (4, 3))
+    """
+    import numpy as np
+
+    n = int(n)
+    if n < 1:
+        raise ValueError(f"mesh needs n ≥ 1, not {n}")
+    k = np.arange(n + 1)
+    if isinstance(patch, Curve):
+        segments = np.column_stack([k[:-1], k[1:]])
+        return patch.eval_many(k / n), segments
+    if isinstance(patch, TriPatch):
+        i, j = np.concatenate([k[: n + 1 - jj] for jj in k]), np.repeat(k, n + 1 - k)
+        row_start = np.concatenate([[0], np.cumsum(n + 1 - k)[:-1]])
+
+        def idx(ii: Any, jj: Any) -> Any:
+            return row_start[jj] + ii
+
+        lower_j = np.repeat(k[:-1], n - k[:-1])
+        lower_i = np.concatenate([k[: n - jj] for jj in k[:-1]])
+        up = np.column_stack([idx(lower_i, lower_j), idx(lower_i + 1, lower_j), idx(lower_i, lower_j + 1)])
+        inner = lower_i < n - lower_j - 1
+        ii, jj = lower_i[inner], lower_j[inner]
+        down = np.column_stack([idx(ii + 1, jj), idx(ii + 1, jj + 1), idx(ii, jj + 1)])
+        return patch.eval_many(np.column_stack([i, j]) / n), np.concatenate([up, down]).astype(np.int64)
+    u, v = np.meshgrid(k, k, indexing="ij")
+    a = (u[:-1, :-1] * (n + 1) + v[:-1, :-1]).ravel()
+    b, c, d = a + n + 1, a + 1, a + n + 2
+    faces = np.concatenate([np.column_stack([a, b, d]), np.column_stack([a, d, c])]).astype(np.int64)
+    return patch.eval_many(np.column_stack([u.ravel(), v.ravel()]) / n), faces

@@ -175,3 +175,21 @@ def test_numpy_parameter_shapes():
     assert r.eval_many(np.full((7, 2), 0.5)).shape == (7, 1)
     with pytest.raises(eb.ExactBezierError, match="shape"):
         r.eval_many(np.zeros(3))
+
+
+def test_meshes_cover_the_domain_with_consistent_faces():
+    tri = eb.TriPatch([[[0, 0], [1, 0]], [[0, 1]]])  # the identity on the triangle
+    for n in (1, 2, 5):
+        v, f = eb.mesh(tri, n)
+        assert v.shape == ((n + 1) * (n + 2) // 2, 2) and f.shape == (n * n, 3)
+        # Counter-clockwise triangles of area 1/(2n²) tile the triangle.
+        p, q, r = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
+        area = ((q - p)[:, 0] * (r - p)[:, 1] - (q - p)[:, 1] * (r - p)[:, 0]) / 2
+        assert np.allclose(area, 1 / (2 * n * n))
+    rect = eb.RectPatch([[[0, 0], [0, 1]], [[1, 0], [1, 1]]])  # the identity on the square
+    v, f = eb.mesh(rect, 3)
+    p, q, r = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
+    area = ((q - p)[:, 0] * (r - p)[:, 1] - (q - p)[:, 1] * (r - p)[:, 0]) / 2
+    assert v.shape == (16, 2) and f.shape == (18, 3) and np.allclose(area, 1 / 18)
+    v, s = eb.mesh(eb.Curve([[0], [2]]), 4)
+    assert v.ravel().tolist() == [0, 0.5, 1, 1.5, 2] and s.tolist()[-1] == [3, 4]
