@@ -289,3 +289,88 @@ fn same_surface(model: &Model) -> Vec<Value> {
         })
         .collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{ratio, RationalCurve, RectPatch, TriPatch};
+    use proptest::collection::vec;
+    use proptest::prelude::*;
+
+    fn q() -> impl Strategy<Value = BigRational> {
+        (-20i64..20, 1i64..7).prop_map(|(n, d)| ratio(n, d))
+    }
+
+    fn w() -> impl Strategy<Value = BigRational> {
+        (1i64..20, 1i64..7).prop_map(|(n, d)| ratio(n, d))
+    }
+
+    /// A curve, rect or tri of small degree in 3D with positive weights.
+    fn patch() -> impl Strategy<Value = Patch<BigRational>> {
+        let pts = |n: usize| vec(vec(q(), 3), n);
+        prop_oneof![
+            (1usize..4).prop_flat_map(move |n| (pts(n + 1), vec(w(), n + 1)).prop_map(|(p, w)| {
+                Patch::Curve(RationalCurve::new(p, w).unwrap())
+            })),
+            (1usize..3, 1usize..3).prop_flat_map(move |(m, n)| (
+                vec(pts(n + 1), m + 1),
+                vec(vec(w(), n + 1), m + 1)
+            )
+                .prop_map(|(p, w)| Patch::Rect(RectPatch::new(p, w).unwrap()))),
+            (1usize..3).prop_flat_map(move |n| {
+                let rows: Vec<usize> = (0..=n).map(|j| n - j + 1).collect();
+                let p: Vec<_> = rows.iter().map(|&l| pts(l)).collect();
+                let ws: Vec<_> = rows.iter().map(|&l| vec(w(), l)).collect();
+                (p, ws).prop_map(|(p, w)| Patch::Tri(TriPatch::new(p, w).unwrap()))
+            }),
+        ]
+    }
+
+    /// An origin as STEP or JSON inputs give them.
+    fn origin() -> impl Strategy<Value = Origin> {
+        let span = (q(), q()).prop_map(|(a, b)| [a, b]);
+        (
+            proptest::option::of(0usize..9),
+            proptest::option::of(1u64..1000),
+            vec(1u64..1000, 0..3),
+            proptest::option::of(span.clone()),
+            proptest::option::of(span),
+        )
+            .prop_map(|(element, entity, faces, u, v)| Origin {
+                element,
+                faces: if entity.is_some() { faces } else { Vec::new() },
+                entity,
+                u,
+                v,
+            })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        /// What `convert --to bezier` writes, every reader reads: the model
+        /// reader gets the piece and its origin back, the patch reader the
+        /// patch.
+        #[test]
+        fn written_pieces_read_back(pieces in vec((patch(), origin()), 0..4)) {
+            let json: Vec<Value> = pieces.iter().map(|(p, o)| piece_to_json(p, o).unwrap()).collect();
+            let text = Value::Array(json).to_string();
+            let model = read_model(text.as_bytes()).unwrap();
+            let back: Vec<(Patch<BigRational>, Origin)> =
+                model.pieces.into_iter().map(|p| (p.patch, p.origin)).collect();
+            prop_assert_eq!(&back, &pieces);
+            let patches = crate::io::read_patches(&text).unwrap();
+            let want: Vec<Patch<BigRational>> = pieces.into_iter().map(|(p, _)| p).collect();
+            prop_assert_eq!(patches, want);
+        }
+    }
+
+    #[test]
+    fn geomdl_data_get_their_own_element() {
+        let datum = r#"{"degree": 1, "knotvector": [0, 0, 1, 1], "control_points": {"points": [[0, 0], [1, 1]]}}"#;
+        let text = format!(r#"{{"shape": {{"type": "curve", "data": [{datum}, {datum}, {datum}]}}}}"#);
+        let m = read_model(text.as_bytes()).unwrap();
+        let elements: Vec<Option<usize>> = m.pieces.iter().map(|p| p.origin.element).collect();
+        assert_eq!(elements, [Some(0), Some(1), Some(2)]);
+        assert!(read_model(&b"[]"[..]).unwrap().pieces.is_empty());
+    }
+}
