@@ -309,9 +309,8 @@ mod tests {
     fn patch() -> impl Strategy<Value = Patch<BigRational>> {
         let pts = |n: usize| vec(vec(q(), 3), n);
         prop_oneof![
-            (1usize..4).prop_flat_map(move |n| (pts(n + 1), vec(w(), n + 1)).prop_map(|(p, w)| {
-                Patch::Curve(RationalCurve::new(p, w).unwrap())
-            })),
+            (1usize..4).prop_flat_map(move |n| (pts(n + 1), vec(w(), n + 1))
+                .prop_map(|(p, w)| { Patch::Curve(RationalCurve::new(p, w).unwrap()) })),
             (1usize..3, 1usize..3).prop_flat_map(move |(m, n)| (
                 vec(pts(n + 1), m + 1),
                 vec(vec(w(), n + 1), m + 1)
@@ -367,7 +366,8 @@ mod tests {
     #[test]
     fn geomdl_data_get_their_own_element() {
         let datum = r#"{"degree": 1, "knotvector": [0, 0, 1, 1], "control_points": {"points": [[0, 0], [1, 1]]}}"#;
-        let text = format!(r#"{{"shape": {{"type": "curve", "data": [{datum}, {datum}, {datum}]}}}}"#);
+        let text =
+            format!(r#"{{"shape": {{"type": "curve", "data": [{datum}, {datum}, {datum}]}}}}"#);
         let m = read_model(text.as_bytes()).unwrap();
         let elements: Vec<Option<usize>> = m.pieces.iter().map(|p| p.origin.element).collect();
         assert_eq!(elements, [Some(0), Some(1), Some(2)]);

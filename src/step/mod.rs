@@ -20,6 +20,9 @@
 //! Other entities are skipped and counted by name, never an error; an
 //! entity of a supported type that is malformed is reported with its id
 //! and skipped too (a model audit should see the rest of the file).
+//!
+//! The topology (solids, shells, faces, loops, edges, vertices), the units
+//! and the tolerance are read by [`read_brep`] ([`brep`]).
 
 use crate::algebra::parse_rational;
 use crate::error::Error;
