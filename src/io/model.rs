@@ -326,14 +326,17 @@ mod tests {
     }
 
     /// An origin as STEP or JSON inputs give them.
+    fn span() -> impl Strategy<Value = [BigRational; 2]> {
+        (q(), q()).prop_map(|(a, b)| [a, b])
+    }
+
     fn origin() -> impl Strategy<Value = Origin> {
-        let span = (q(), q()).prop_map(|(a, b)| [a, b]);
         (
             proptest::option::of(0usize..9),
             proptest::option::of(1u64..1000),
             vec(1u64..1000, 0..3),
-            proptest::option::of(span.clone()),
-            proptest::option::of(span),
+            proptest::option::of(span()),
+            proptest::option::of(span()),
         )
             .prop_map(|(element, entity, faces, u, v)| Origin {
                 element,
