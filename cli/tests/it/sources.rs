@@ -126,9 +126,8 @@ fn gallery_inputs_run_under_the_default_limits() {
 fn what_commands_write_the_reader_takes() {
     use exact_bezier::algebra::{ExactNumber, RealAlgebraic};
     let seventh = (0..7).fold("2".to_string(), |acc, _| format!("sqrt({acc})"));
-    let line = format!(
-        r#"{{"kind": "curve", "points": [["{seventh}", 0], [1, 1]], "weights": [1, 1]}}"#
-    );
+    let line =
+        format!(r#"{{"kind": "curve", "points": [["{seventh}", 0], [1, 1]], "weights": [1, 1]}}"#);
     let dir = std::env::temp_dir().join(format!("eb-sources-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let root_curve = dir.join("root128.json");

@@ -529,6 +529,7 @@ pub(crate) fn root_text(p: &QPoly, k: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::algebra::scalar::Scalar;
 
     /// `sqrt` nested 7 times around 2 is `2^(1/128)`: written with indices
     /// of at most 64, and read back as the same number (issue 32).
@@ -540,7 +541,6 @@ mod tests {
         assert_eq!(written, "root(sqrt(2), 64)");
         assert_eq!(parse(&written).unwrap(), x);
         // 2^(1/128) raised to 128 is 2 (an independent check of the value).
-        use crate::algebra::scalar::Scalar;
         assert_eq!(x.pow_u32(128), RealAlgebraic::from_i64(2));
     }
 
