@@ -27,7 +27,10 @@ fn normal(f: &Foot, sign: &Interval) -> (IVec, IVec) {
     let n = scale(&cross(&j.xu, &j.xv), sign);
     let nu = add(&cross(&j.xuu, &j.xv), &cross(&j.xu, &j.xuv));
     let nv = add(&cross(&j.xuv, &j.xv), &cross(&j.xu, &j.xvv));
-    let dn = scale(&add(&scale(&nu, &f.dsigma[0]), &scale(&nv, &f.dsigma[1])), sign);
+    let dn = scale(
+        &add(&scale(&nu, &f.dsigma[0]), &scale(&nv, &f.dsigma[1])),
+        sign,
+    );
     (n, dn)
 }
 
@@ -35,13 +38,24 @@ fn normal(f: &Foot, sign: &Interval) -> (IVec, IVec) {
 pub fn polar_angle(y: &Interval, x: &Interval) -> Interval {
     let y0 = y.lo.max(0.0);
     if y0 == 0.0 && x.lo <= 0.0 && x.hi >= 0.0 {
-        return Interval { lo: 0.0, hi: std::f64::consts::PI * (1.0 + 1e-12) };
+        return Interval {
+            lo: 0.0,
+            hi: std::f64::consts::PI * (1.0 + 1e-12),
+        };
     }
-    let corners = [y0.atan2(x.lo), y0.atan2(x.hi), y.hi.atan2(x.lo), y.hi.atan2(x.hi)];
+    let corners = [
+        y0.atan2(x.lo),
+        y0.atan2(x.hi),
+        y.hi.atan2(x.lo),
+        y.hi.atan2(x.hi),
+    ];
     let lo = corners.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = corners.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let slack = |a: f64| a.abs() * 2f64.powi(-40) + f64::MIN_POSITIVE;
-    Interval { lo: (lo - slack(lo)).max(0.0), hi: hi + slack(hi) }
+    Interval {
+        lo: (lo - slack(lo)).max(0.0),
+        hi: hi + slack(hi),
+    }
 }
 
 /// The angle between the faces on one piece.

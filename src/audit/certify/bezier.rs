@@ -41,7 +41,10 @@ fn piece(c: &[Interval], a: f64, b: f64) -> Vec<Interval> {
             for level in 0..n {
                 let t = Interval::point(if level < k { b } else { a });
                 let s = one.sub(&t);
-                v = v.windows(2).map(|w| w[0].mul(&s).add(&w[1].mul(&t))).collect();
+                v = v
+                    .windows(2)
+                    .map(|w| w[0].mul(&s).add(&w[1].mul(&t)))
+                    .collect();
             }
             v[0]
         })
@@ -71,9 +74,11 @@ fn net_range(net: &Net, u: Interval, v: Interval) -> IVec {
                 .iter()
                 .map(|row| piece(&row.iter().map(|p| p[d]).collect::<Vec<_>>(), v.lo, v.hi))
                 .collect();
-            hull((0..rows[0].len()).flat_map(|j| {
-                piece(&rows.iter().map(|r| r[j]).collect::<Vec<_>>(), u.lo, u.hi)
-            }))
+            hull(
+                (0..rows[0].len()).flat_map(|j| {
+                    piece(&rows.iter().map(|r| r[j]).collect::<Vec<_>>(), u.lo, u.hi)
+                }),
+            )
         })
         .collect()
 }
@@ -149,7 +154,10 @@ impl ICurve {
     /// weight whose enclosure is not positive.
     pub fn new<T: Scalar + Enclose>(c: &RationalCurve<T>) -> Result<ICurve, Error> {
         if c.dim() != 3 {
-            return Err(Error::Shape(format!("an edge curve in {}D, not 3D", c.dim())));
+            return Err(Error::Shape(format!(
+                "an edge curve in {}D, not 3D",
+                c.dim()
+            )));
         }
         let dh = c.hodograph(1);
         let h: Vec<IVec> = c.ctrl().iter().map(enclose_hpoint).collect();
@@ -220,7 +228,10 @@ impl IPatch {
     /// weight whose enclosure is not positive.
     pub fn new<T: Scalar + Enclose>(r: &RectPatch<T>) -> Result<IPatch, Error> {
         if r.dim() != 3 {
-            return Err(Error::Shape(format!("a face patch in {}D, not 3D", r.dim())));
+            return Err(Error::Shape(format!(
+                "a face patch in {}D, not 3D",
+                r.dim()
+            )));
         }
         let net = |(a, b): (usize, usize)| -> Net {
             match r.derivative_patch(a, b) {
@@ -255,6 +266,13 @@ impl IPatch {
         let xuu = quotient(puu, &[(wu.mul(&two), &xu), (wuu, &x)], &w);
         let xuv = quotient(puv, &[(wu, &xv), (wv, &xu), (wuv, &x)], &w);
         let xvv = quotient(pvv, &[(wv.mul(&two), &xv), (wvv, &x)], &w);
-        Ok(PatchJet { x, xu, xv, xuu, xuv, xvv })
+        Ok(PatchJet {
+            x,
+            xu,
+            xv,
+            xuu,
+            xuv,
+            xvv,
+        })
     }
 }

@@ -39,10 +39,18 @@ pub struct Foot {
 fn newton(patch: &IPatch, c: &[Interval], start: [f64; 2]) -> Option<[f64; 2]> {
     let mut g = start;
     for _ in 0..40 {
-        let (f, j) = system(&patch.jet(Interval::point(g[0]), Interval::point(g[1])).ok()?, c);
+        let (f, j) = system(
+            &patch
+                .jet(Interval::point(g[0]), Interval::point(g[1]))
+                .ok()?,
+            c,
+        );
         let y = mid_inverse(&j)?;
         let f = f.map(|x| x.mid());
-        let step = [y[0][0] * f[0] + y[0][1] * f[1], y[1][0] * f[0] + y[1][1] * f[1]];
+        let step = [
+            y[0][0] * f[0] + y[0][1] * f[1],
+            y[1][0] * f[0] + y[1][1] * f[1],
+        ];
         g = [g[0] - step[0], g[1] - step[1]];
         if !(g[0].is_finite() && g[1].is_finite()) || g[0].abs() > 4.0 || g[1].abs() > 4.0 {
             return None;
@@ -61,8 +69,15 @@ fn grid_start(patch: &IPatch, c: &[Interval]) -> Option<[f64; 2]> {
     for i in 0..=8 {
         for j in 0..=8 {
             let g = [f64::from(i) / 8.0, f64::from(j) / 8.0];
-            let x = patch.jet(Interval::point(g[0]), Interval::point(g[1])).ok()?.x;
-            let d: f64 = x.iter().zip(c).map(|(a, b)| (a.mid() - b.mid()).powi(2)).sum();
+            let x = patch
+                .jet(Interval::point(g[0]), Interval::point(g[1]))
+                .ok()?
+                .x;
+            let d: f64 = x
+                .iter()
+                .zip(c)
+                .map(|(a, b)| (a.mid() - b.mid()).powi(2))
+                .sum();
             if best.is_none_or(|(bd, _)| d < bd) {
                 best = Some((d, g));
             }
@@ -72,7 +87,8 @@ fn grid_start(patch: &IPatch, c: &[Interval]) -> Option<[f64; 2]> {
 }
 
 fn inside(b: &[Interval; 2]) -> bool {
-    b.iter().all(|x| x.lo >= -DOMAIN_MARGIN && x.hi <= 1.0 + DOMAIN_MARGIN)
+    b.iter()
+        .all(|x| x.lo >= -DOMAIN_MARGIN && x.hi <= 1.0 + DOMAIN_MARGIN)
 }
 
 /// `−J⁻¹ F_t` by Cramer's rule, `None` when `det J`'s enclosure holds 0.
@@ -90,7 +106,12 @@ fn derivative(j: &IMat, ft: [Interval; 2]) -> Option<[Interval; 2]> {
 /// # Errors
 ///
 /// Those of [`ICurve::jet`].
-pub fn foot(curve: &ICurve, patch: &IPatch, t: Interval, guess: Option<[f64; 2]>) -> Result<Option<Foot>, Error> {
+pub fn foot(
+    curve: &ICurve,
+    patch: &IPatch,
+    t: Interval,
+    guess: Option<[f64; 2]>,
+) -> Result<Option<Foot>, Error> {
     let cj = curve.jet(t)?;
     let cm = curve.jet(Interval::point(t.mid()))?.x;
     let g = guess
@@ -99,7 +120,10 @@ pub fn foot(curve: &ICurve, patch: &IPatch, t: Interval, guess: Option<[f64; 2]>
     let Some(g) = g else { return Ok(None) };
     let mut r = 4.0 * t.width() + 1e-13;
     for _ in 0..10 {
-        let b = g.map(|x| Interval { lo: x - r, hi: x + r });
+        let b = g.map(|x| Interval {
+            lo: x - r,
+            hi: x + r,
+        });
         if let Ok(Some(k)) = krawczyk(patch, b, &cj.x) {
             if b[0].interior_contains(&k[0]) && b[1].interior_contains(&k[1]) {
                 return finish(patch, &cj, k);
@@ -112,7 +136,11 @@ pub fn foot(curve: &ICurve, patch: &IPatch, t: Interval, guess: Option<[f64; 2]>
 
 /// Shrink a verified box by two Krawczyk steps, check the domain, and
 /// add the jet and `σ'`.
-fn finish(patch: &IPatch, cj: &super::bezier::CurveJet, mut b: [Interval; 2]) -> Result<Option<Foot>, Error> {
+fn finish(
+    patch: &IPatch,
+    cj: &super::bezier::CurveJet,
+    mut b: [Interval; 2],
+) -> Result<Option<Foot>, Error> {
     for _ in 0..2 {
         if let Some(k) = krawczyk(patch, b, &cj.x)? {
             match (b[0].intersect(&k[0]), b[1].intersect(&k[1])) {

@@ -48,7 +48,10 @@ pub fn edge_face(l: &Local, k: usize) -> Bound {
 
 /// `S_u σ_u' + S_v σ_v'`: the velocity of the foot point.
 fn foot_velocity(f: &Foot) -> Vec<Interval> {
-    add(&scale(&f.jet.xu, &f.dsigma[0]), &scale(&f.jet.xv, &f.dsigma[1]))
+    add(
+        &scale(&f.jet.xu, &f.dsigma[0]),
+        &scale(&f.jet.xv, &f.dsigma[1]),
+    )
 }
 
 /// The gap between the two faces' foot points on one piece.

@@ -50,7 +50,11 @@ pub fn mid_inverse(j: &IMat) -> Option<[[f64; 2]; 2]> {
 /// # Errors
 ///
 /// Those of [`IPatch::jet`].
-pub fn krawczyk(patch: &IPatch, b: [Interval; 2], c: &[Interval]) -> Result<Option<[Interval; 2]>, Error> {
+pub fn krawczyk(
+    patch: &IPatch,
+    b: [Interval; 2],
+    c: &[Interval],
+) -> Result<Option<[Interval; 2]>, Error> {
     let m = b.map(|x| Interval::point(x.mid()));
     let (fm, _) = system(&patch.jet(m[0], m[1])?, c);
     let (_, jb) = system(&patch.jet(b[0], b[1])?, c);

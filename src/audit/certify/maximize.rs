@@ -102,7 +102,7 @@ pub fn maximize(
             pieces.push(Piece { upper, t });
         }
         let Piece { upper, t } = pieces.pop().expect("at least one piece");
-        let done = upper - lower <= target.rel * upper + target.abs;
+        let done = upper.is_finite() && upper - lower <= target.rel * upper + target.abs;
         if done || t.width() < MIN_PIECE {
             let at = pieces
                 .iter()

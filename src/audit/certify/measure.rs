@@ -15,11 +15,15 @@ use crate::error::Error;
 pub struct Precision {
     /// Relative width, default `10⁻³`.
     pub rel: f64,
-    /// Absolute width of gaps, in model length units, default `10⁻¹⁰`.
+    /// Absolute width of gaps, in model length units, default `10⁻⁸` (a
+    /// hundredth of the default length tolerance).
     pub length: f64,
-    /// Absolute width of angles, in radians, default `10⁻¹⁰`.
+    /// Absolute width of angles, in radians, default `10⁻⁸` (a hundredth of
+    /// the default angle tolerance).
     pub angle: f64,
-    /// Absolute width of curvature differences, per length unit, default `10⁻⁶`.
+    /// Absolute width of curvature differences, per length unit, default
+    /// `10⁻⁴` (a tenth of the default tolerance: the enclosure of a
+    /// curvature narrows only linearly with the piece's length).
     pub curvature: f64,
 }
 
@@ -27,9 +31,9 @@ impl Default for Precision {
     fn default() -> Self {
         Precision {
             rel: 1e-3,
-            length: 1e-10,
-            angle: 1e-10,
-            curvature: 1e-6,
+            length: 1e-8,
+            angle: 1e-8,
+            curvature: 1e-4,
         }
     }
 }
@@ -45,7 +49,7 @@ pub struct EdgeMeasures {
     pub face_gap: Enclosure,
     /// The largest angle between the faces' oriented normals, in radians.
     pub angle: Enclosure,
-    /// The largest difference of the faces' normal curvatures along the
+    /// The largest difference of the faces' normal curvatures across the
     /// edge, per length unit.
     pub curvature: Enclosure,
 }
@@ -95,7 +99,11 @@ fn along_edge(
 /// [`crate::Error::Limit`] when the work budget runs out (see
 /// [`crate::limits`]); [`Error::Domain`] when a foot point cannot be
 /// proved (the edge leaves a face, or a face is singular there).
-pub fn measure_edge(edge: &[ICurve], faces: &[Face; 2], p: &Precision) -> Result<EdgeReport, Error> {
+pub fn measure_edge(
+    edge: &[ICurve],
+    faces: &[Face; 2],
+    p: &Precision,
+) -> Result<EdgeReport, Error> {
     let gap0 = along_edge(edge, faces, p.length, p.rel, |l| Some(edge_face(l, 0)))?;
     let gap1 = along_edge(edge, faces, p.length, p.rel, |l| Some(edge_face(l, 1)))?;
     let face_gap = along_edge(edge, faces, p.length, p.rel, |l| Some(face_face(l)))?;
