@@ -66,17 +66,49 @@ pub fn bernstein_all<T: Scalar>(n: usize, t: &T) -> Vec<T> {
 /// ```
 pub fn bernstein_to_power<T: Scalar>(b: &[T]) -> Vec<T> {
     let n = b.len().saturating_sub(1);
+    let c = binomial_rows::<T>(n);
     (0..b.len())
         .map(|k| {
             let sum = (0..=k).fold(T::zero(), |acc, i| {
-                let term = binomial_scalar::<T>(k, i) * &b[i];
+                let term = c[k][i].clone() * &b[i];
                 if (k - i) % 2 == 0 {
                     acc + term
                 } else {
                     acc - term
                 }
             });
-            binomial_scalar::<T>(n, k) * &sum
+            c[n][k].clone() * &sum
+        })
+        .collect()
+}
+
+/// Pascal's triangle `C(k, i)` for `k ≤ n` as scalars: `O(n²)` integer
+/// additions (`C(k, i) = C(k−1, i−1) + C(k−1, i)`) for a whole change of
+/// basis, instead of a product and a division per coefficient. The values
+/// are those of [`binomial_scalar`] (exact integers, each converted once).
+fn binomial_rows<T: Scalar>(n: usize) -> Vec<Vec<T>> {
+    let mut ints: Vec<Vec<Option<u128>>> = vec![vec![Some(1)]];
+    for k in 1..=n {
+        let prev = &ints[k - 1];
+        let row = (0..=k)
+            .map(|i| {
+                let left = i.checked_sub(1).map_or(Some(0), |j| prev[j]);
+                let right = prev.get(i).copied().unwrap_or(Some(0));
+                left?.checked_add(right?)
+            })
+            .collect();
+        ints.push(row);
+    }
+    ints.iter()
+        .enumerate()
+        .map(|(k, row)| {
+            row.iter()
+                .enumerate()
+                .map(|(i, c)| match c.and_then(|c| i64::try_from(c).ok()) {
+                    Some(c) => T::from_i64(c),
+                    None => binomial_scalar(k, i),
+                })
+                .collect()
         })
         .collect()
 }
@@ -104,15 +136,63 @@ pub fn bernstein_to_power<T: Scalar>(b: &[T]) -> Vec<T> {
 /// );
 /// ```
 pub fn power_to_bernstein<T: Field>(a: &[T], n: usize) -> Vec<T> {
+    let c = binomial_rows::<T>(n);
     (0..=n)
         .map(|i| {
             (0..=i.min(a.len().saturating_sub(1)))
                 .filter(|&k| k < a.len())
-                .fold(T::zero(), |acc, k| {
-                    acc + binomial_scalar::<T>(i, k) * &a[k] / &binomial_scalar::<T>(n, k)
-                })
+                .fold(T::zero(), |acc, k| acc + c[i][k].clone() * &a[k] / &c[n][k])
         })
         .collect()
+}
+
+/// The coefficients `p_0 … p_k` of degree `k` whose degree elevation to
+/// `n = b.len() − 1` is `b`, or `None` if `b` is not such an elevation: the
+/// exact inverse of elevation, in one pass of `O(n·k)` operations.
+///
+/// Elevation from `k` to `n` multiplies `Σ_j p_j B_{j,k}(t)` by
+/// `1 = ((1 − t) + t)^{n−k}`, so
+///
+/// ```text
+/// C(n, i) b_i = Σ_j C(k, j) C(n − k, i − j) p_j      (i = 0 … n)
+/// ```
+///
+/// The equations `i = 0 … k` are triangular with diagonal `C(k, i) ≠ 0`:
+/// `p_i = (C(n, i) b_i − Σ_{j<i} C(k, j) C(n−k, i−j) p_j) / C(k, i)`. The
+/// others, `i = k+1 … n`, are then checked exactly; the first that fails
+/// ends the check.
+///
+/// ```
+/// use exact_bezier::{bernstein::{power_to_bernstein, reduce_elevated}, ratio};
+/// use exact_bezier::BigRational;
+/// let q = |n: i64| ratio::<BigRational>(n, 1);
+/// // 1 + 2t + t² written in degree 5, then reduced back to degree 2:
+/// let b5 = power_to_bernstein(&[q(1), q(2), q(1)], 5);
+/// assert_eq!(reduce_elevated(&b5, 2), Some(vec![q(1), q(2), q(4)]));
+/// assert_eq!(reduce_elevated(&b5, 1), None);
+/// ```
+pub fn reduce_elevated<T: Field>(b: &[T], k: usize) -> Option<Vec<T>> {
+    let n = b.len().checked_sub(1)?;
+    if k > n {
+        return None;
+    }
+    let c = binomial_rows::<T>(n);
+    let elevated_sum = |p: &[T], i: usize, upto: usize| {
+        (i.saturating_sub(n - k)..=i.min(upto)).fold(T::zero(), |acc, j| {
+            acc + c[k][j].clone() * &c[n - k][i - j] * &p[j]
+        })
+    };
+    let mut p: Vec<T> = Vec::with_capacity(k + 1);
+    for i in 0..=k {
+        let below = if i == 0 {
+            T::zero()
+        } else {
+            elevated_sum(&p, i, i - 1)
+        };
+        p.push((c[n][i].clone() * &b[i] - below) / &c[k][i]);
+    }
+    let matches = (k + 1..=n).all(|i| elevated_sum(&p, i, k) == c[n][i].clone() * &b[i]);
+    matches.then_some(p)
 }
 
 #[cfg(test)]
@@ -120,6 +200,33 @@ mod tests {
     use super::*;
     use crate::algebra::scalar::ratio;
     use num_rational::BigRational;
+
+    #[test]
+    fn pascal_rows_are_binomials() {
+        let rows = binomial_rows::<BigRational>(70);
+        for (k, row) in rows.iter().enumerate() {
+            for (i, c) in row.iter().enumerate() {
+                assert_eq!(*c, binomial_scalar::<BigRational>(k, i));
+            }
+        }
+    }
+
+    /// Elevation by `(1 − t + t)^r` and its exact inverse, against the
+    /// power basis (a second route): reducing the degree-`n` form of a
+    /// degree-`k` polynomial gives back its degree-`k` coefficients, and no
+    /// lower degree works.
+    #[test]
+    fn reduce_elevated_inverts_elevation() {
+        let q = |a: i64, b: i64| ratio::<BigRational>(a, b);
+        let power = [q(3, 2), q(-1, 1), q(0, 1), q(5, 7)];
+        let own = power_to_bernstein(&power, 3);
+        for n in 3..20 {
+            let high = power_to_bernstein(&power, n);
+            assert_eq!(reduce_elevated(&high, 3), Some(own.clone()));
+            assert_eq!(reduce_elevated(&high, 2), None);
+            assert_eq!(reduce_elevated(&high, n), Some(high.clone()));
+        }
+    }
 
     #[test]
     fn recursion_matches_closed_form() {

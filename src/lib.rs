@@ -72,7 +72,9 @@
 //!    their sum;
 //! 6. operations: [`blossom`], [`convert`], [`reparam`], [`arc`], [`trig`];
 //! 7. predicates: [`coincide`], [`intersect`];
-//! 8. formats: [`nurbs`], [`step`], [`io`] (all JSON reading and writing);
+//! 8. formats: [`nurbs`], [`analytic`] (the analytic curves and surfaces of
+//!    STEP as exact rational pieces), [`step`], [`io`] (all JSON reading and
+//!    writing);
 //! 9. applications: [`audit`], `render`, [`coords`], `strategy`, the
 //!    [`prelude`].
 //!
@@ -125,6 +127,7 @@
 #![warn(missing_docs)]
 
 pub mod algebra;
+pub mod analytic;
 pub mod arc;
 pub mod audit;
 pub mod bernstein;

@@ -50,10 +50,15 @@ pub const MAX_STEP_STATEMENT: usize = 64 << 20;
 /// The deepest nesting of STEP parameter lists accepted.
 pub const MAX_STEP_DEPTH: usize = 64;
 
-/// The longest text of one algebraic number accepted (bytes).
+/// The longest text of one algebraic number accepted, per decimal digit of
+/// [`Limits::max_digits`] (bytes): [`max_algebraic_text`].
+pub const ALGEBRAIC_TEXT_PER_DIGIT: u64 = 64;
+
+/// The least bound of [`max_algebraic_text`] (bytes), whatever the digits.
 pub const MAX_ALGEBRAIC_TEXT: usize = 10_000;
 
-/// The deepest nesting of parentheses in an algebraic number's text.
+/// The deepest nesting of an algebraic number's text: brackets, function
+/// calls and power exponents each count one level.
 pub const MAX_ALGEBRAIC_DEPTH: usize = 64;
 
 /// The largest `|exponent|` of a power in an algebraic number's text.
@@ -237,6 +242,75 @@ pub fn check_number_text(text: &str) -> Result<(), Error> {
         )));
     }
     Ok(())
+}
+
+/// The longest text of one algebraic number the reader takes under the
+/// current limits: `max(10 000, 64 × max_digits)` bytes (64 000 by
+/// default), so that raising `--max-digits` raises it too. What a command
+/// writes is checked against the same bound ([`check_written_number`]).
+pub fn max_algebraic_text() -> usize {
+    let per_digit = current()
+        .max_digits
+        .saturating_mul(ALGEBRAIC_TEXT_PER_DIGIT);
+    usize::try_from(per_digit)
+        .unwrap_or(usize::MAX)
+        .max(MAX_ALGEBRAIC_TEXT)
+}
+
+/// Check that a number a command is about to write will be read back under
+/// the same limits (what we write, we read): an integer or `p/q` within
+/// [`Limits::max_digits`] (both sides counted), and the text of an
+/// algebraic number within [`max_algebraic_text`] with every integer in it
+/// within the digit limit. Text outside the number grammar's alphabet
+/// (digits, `+ - * / ( ) , .`, spaces and the words `sqrt`, `cbrt`, `root`,
+/// `Rational`, `CRootOf`, `x`) is not a number and passes.
+///
+/// # Errors
+///
+/// [`Error::Limit`] naming the size and `--max-digits`.
+pub fn check_written_number(text: &str) -> Result<(), Error> {
+    if !is_number_text(text) {
+        return Ok(());
+    }
+    let over = |what: String| {
+        Error::Limit(format!(
+            "the result has {what}, more than the reader takes under the same limits (raise them with --max-digits)"
+        ))
+    };
+    if !text.contains(|c: char| c.is_ascii_alphabetic()) {
+        return check_number_text(text)
+            .map_err(|_| over(format!("a number of {} characters", text.len())));
+    }
+    if text.len() > max_algebraic_text() {
+        return Err(over(format!(
+            "an algebraic number of {} characters (at most {})",
+            text.len(),
+            max_algebraic_text()
+        )));
+    }
+    let max = current().max_digits as usize;
+    match text
+        .split(|c: char| !c.is_ascii_digit())
+        .map(str::len)
+        .max()
+    {
+        Some(longest) if longest > max => Err(over(format!(
+            "an algebraic number with an integer of {longest} digits"
+        ))),
+        _ => Ok(()),
+    }
+}
+
+/// Is `text` in the alphabet of the number grammars, with a digit?
+fn is_number_text(text: &str) -> bool {
+    const WORDS: [&str; 6] = ["sqrt", "cbrt", "root", "Rational", "CRootOf", "x"];
+    text.contains(|c: char| c.is_ascii_digit())
+        && text
+            .split(|c: char| !c.is_ascii_alphabetic())
+            .all(|w| w.is_empty() || WORDS.contains(&w))
+        && text
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || " +-*/(),.".contains(c))
 }
 
 /// Check the size of one input before it is read or parsed.

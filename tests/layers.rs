@@ -32,6 +32,7 @@ const LAYERS: &[&str] = &[
     "coincide",
     "intersect",
     "nurbs",
+    "analytic",
     "step",
     "audit",
     "io",

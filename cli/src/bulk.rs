@@ -3,12 +3,15 @@
 
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::algebra::Scalar;
+use exact_bezier::coincide::canonical::{key_plan, KeyDigest, KeyPlan};
 use exact_bezier::io::Record;
+use exact_bezier::limits::{self, Size};
 use exact_bezier::patch::Patch;
 use exact_bezier::Error;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle, TermLike};
 use num_rational::BigRational;
 use rayon::prelude::*;
+use std::collections::{HashMap, HashSet};
 use std::io::{BufRead, BufReader, IsTerminal, Read, Write};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
@@ -107,39 +110,123 @@ impl Member {
     }
 }
 
-/// Refuse a record over the real algebraic numbers whose canonical key
-/// would cost more than the work budget `max` (the model of `coincide`,
-/// times the operation cost of its numbers: general roots make every
-/// operation a resultant). Records over Q are not charged: their cost is
-/// bounded by their size.
+/// SHA-256 of a record's text: byte-identical records are keyed once.
+type RecordHash = [u8; 32];
+
+/// The keys already computed, by record text ([`key_chunk`]): 32 bytes and
+/// one key per distinct record.
+pub(crate) type KeyCache<K> = HashMap<RecordHash, K>;
+
+/// The estimated work of one record's canonical key (docs/limits.md),
+/// before it is computed. Over Q it follows the record's [`KeyPlan`], read
+/// modulo p: a certified minimal net costs a change of basis modulo p and
+/// the normalized points and invariants (numbers of `bits·(N+1)` bits); an
+/// elevated copy adds one exact pass that undoes the elevation
+/// (`O(size · degree)`) and is then charged as a patch of the lower degree;
+/// anything else is charged the model of `coincide`. Over the real
+/// algebraic numbers: the model of `coincide` times the operation cost of
+/// the numbers (general roots make every operation a resultant).
 ///
 /// # Errors
 ///
-/// [`Error::Limit`] naming the estimate and `--max-work`.
-pub(crate) fn check_record_cost(p: &Patch<RealAlgebraic>, max: u64) -> Result<(), Error> {
-    let size = p.size();
-    let (ops, bits) = super::coincide::coincide_cost(&size);
-    let units = size.exact_units(ops, bits);
-    if units > max {
-        return Err(Error::Limit(format!(
-            "this record's algebraic numbers need an estimated {units:.2e} work units, over the budget of {max:.2e} (raise it with --max-work)"
-        )));
-    }
-    Ok(())
+/// As [`key_plan`] (a tri patch, a weight ≤ 0).
+pub(crate) fn key_work(p: &Member) -> Result<u64, Error> {
+    let coincide = |s: &Size| {
+        let (ops, bits) = super::coincide::coincide_cost(s);
+        s.exact_units(ops, bits)
+    };
+    Ok(match p {
+        Member::Algebraic(p) => coincide(&p.size()),
+        Member::Rational(q) => {
+            let size = q.size();
+            match key_plan(q)? {
+                KeyPlan::Minimal => minimal_key_work(&size),
+                KeyPlan::General => coincide(&size),
+                KeyPlan::Elevated(to) => {
+                    let lower = Size { degree: to, ..size };
+                    let undo = (size.degree.0 as u64 + 1)
+                        * (size.degree.1 as u64 + 1)
+                        * (lower.total_degree() + 2)
+                        * (size.dim as u64 + 1);
+                    modp_work(&size)
+                        .saturating_add(limits::exact_work(undo, size.bits))
+                        .saturating_add(coincide(&lower))
+                }
+            }
+        }
+    })
 }
 
-/// `f` on the patch of every record of a chunk, in parallel, results in
-/// input order. The error reported is that of the first failing record in
-/// input order, whatever the thread count; errors of `f` are located too.
-pub(crate) fn map_chunk<T: Send>(
+/// The change of basis modulo p that certifies a net of size `s`:
+/// `(m+1)(n+1)(m+n+2)(d+1)` word operations.
+fn modp_work(s: &Size) -> u64 {
+    let (m1, n1) = (s.degree.0 as u64 + 1, s.degree.1 as u64 + 1);
+    m1 * n1 * (m1 + n1) * (s.dim as u64 + 1)
+}
+
+/// The work of the key of a certified minimal net of size `s`: the change
+/// of basis modulo p ([`modp_work`]) and the points and invariants of up to
+/// 8 symmetries (`8(m+1)(n+1)(d+1)` exact operations on numbers of
+/// `bits·(N+1)` bits).
+fn minimal_key_work(s: &Size) -> u64 {
+    let (m1, n1) = (s.degree.0 as u64 + 1, s.degree.1 as u64 + 1);
+    let exact = limits::exact_work(
+        8 * m1 * n1 * (s.dim as u64 + 1),
+        s.bits.max(8).saturating_mul(s.total_degree() + 1),
+    );
+    modp_work(s).saturating_add(exact)
+}
+
+/// `key` on every record of a chunk, results in input order: each distinct
+/// record text is keyed once (`cache` keeps the keys across chunks), and
+/// each record keyed is first charged its [`key_work`] against the work
+/// budget as `what`, in input order on this thread (so `--max-work` refuses
+/// at the same record whatever the thread count; the refusal names the
+/// 0-based index of that record, `first` being the chunk's first). The records are read and
+/// keyed on all cores. The error reported is that of the first failing
+/// record in input order, located.
+pub(crate) fn key_chunk<K: Clone + Send + Sync>(
+    what: &str,
+    first: usize,
     records: &[Record],
-    f: impl Fn(Member) -> Result<T, Error> + Sync,
-) -> Result<Vec<T>, Error> {
-    let done: Vec<Result<T, Error>> = records
+    cache: &mut KeyCache<K>,
+    key: impl Fn(Member) -> Result<K, Error> + Sync,
+) -> Result<Vec<K>, Error> {
+    let hashes: Vec<RecordHash> = records
         .par_iter()
-        .map(|r| f(Member::read(r)?).map_err(|e| r.locate(e)))
+        .map(|r| KeyDigest::of_text(&r.text()).0)
         .collect();
-    done.into_iter().collect()
+    let mut fresh = Vec::new();
+    let mut in_chunk = HashSet::new();
+    for (k, h) in hashes.iter().enumerate() {
+        if !cache.contains_key(h) && in_chunk.insert(*h) {
+            fresh.push(k);
+        }
+    }
+    let read: Vec<Result<(Member, u64), Error>> = fresh
+        .par_iter()
+        .map(|&k| {
+            let r = &records[k];
+            let p = Member::read(r)?;
+            let work = key_work(&p).map_err(|e| r.locate(e))?;
+            Ok((p, work))
+        })
+        .collect();
+    let mut members = Vec::with_capacity(read.len());
+    for (&k, done) in fresh.iter().zip(read) {
+        let (p, work) = done?;
+        limits::charge(&format!("{what} (through record {})", first + k), work)?;
+        members.push(p);
+    }
+    let keyed: Vec<Result<K, Error>> = members
+        .into_par_iter()
+        .zip(&fresh)
+        .map(|(p, &k)| key(p).map_err(|e| records[k].locate(e)))
+        .collect();
+    for (&k, done) in fresh.iter().zip(keyed) {
+        cache.insert(hashes[k], done?);
+    }
+    Ok(hashes.iter().map(|h| cache[h].clone()).collect())
 }
 
 /// A progress bar on standard error: bytes read against the input size

@@ -8,12 +8,17 @@ use super::{
     charge_each, load_exact, on_exact, open_input, parse_list, patch_f64, read_input, ExactScalar,
     ScalarKind,
 };
+use crate::session::{emit, json_text};
 use exact_bezier::algebra::{Field, Ordered, Scalar};
+use exact_bezier::audit::Origin;
 use exact_bezier::convert::{rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Split};
 use exact_bezier::io::trig::read_trig_patches;
-use exact_bezier::io::{patch_to_json, piece_to_json, read_model, JsonScalar};
+use exact_bezier::io::{
+    brep_to_json, brep_to_lines, is_step, patch_to_json, piece_to_json, read_model, JsonScalar,
+};
 use exact_bezier::limits::{self, check_degree, Size};
 use exact_bezier::patch::Patch;
+use exact_bezier::step::{read_brep, BrepModel};
 use exact_bezier::trig::TrigPatch;
 use exact_bezier::Error;
 use num_rational::BigRational;
@@ -29,8 +34,10 @@ pub enum Target {
     /// trig-curve → rational quartic, trig-rect → rational (4, 4) rect, exactly,
     /// in τ = tan(t/2) (source 002 patches for every rational-Bézier command).
     Rational,
-    /// NURBS (JSON, geomdl or STEP) → its rational Bézier pieces, each with
-    /// `"origin"`: entity id, faces, knot spans (see docs/nurbs_step.md).
+    /// NURBS (JSON, geomdl) → its rational Bézier pieces, each with
+    /// `"origin"`: element, knot spans; STEP → its B-rep: faces with surface
+    /// pieces and bounds, edges with curve pieces, vertices, units,
+    /// tolerance and a summary (see docs/nurbs_step.md, docs/FORMAT.md).
     Bezier,
 }
 
@@ -57,6 +64,10 @@ pub struct Args {
     /// Scalar to compute with.
     #[arg(long, value_enum, default_value_t)]
     scalar: ScalarKind,
+    /// With --to bezier on STEP: JSON Lines, one face, edge or vertex a
+    /// line, then the model (bodies, units, tolerance, summary) last.
+    #[arg(long)]
+    jsonl: bool,
 }
 
 /// The options that shape each conversion.
@@ -73,6 +84,11 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     }
     if a.to == Target::Bezier {
         return nurbs_to_bezier(a);
+    }
+    if a.jsonl {
+        return Err(Error::Format(
+            "--jsonl applies to --to bezier on STEP input".into(),
+        ));
     }
     if a.to == Target::Tri && (a.split.is_some() || a.degenerate) {
         return Err(Error::Format(
@@ -208,23 +224,48 @@ fn nurbs_to_bezier(a: &Args) -> Result<Value, Error> {
             "--split and --degenerate apply to --to rect only".into(),
         ));
     }
-    let model = read_model(open_input(&a.file)?)?;
+    let mut input = open_input(&a.file)?;
+    if is_step(&mut input)? {
+        return step_to_bezier(read_brep(input)?, a);
+    }
+    if a.jsonl {
+        return Err(Error::Format("--jsonl applies to STEP input".into()));
+    }
+    let model = read_model(input)?;
     let out = model
         .pieces
         .iter()
-        .map(|p| {
-            let patch = if a.normalize {
-                normalized(&p.patch)?
-            } else {
-                p.patch.clone()
-            };
-            match a.scalar {
-                ScalarKind::Exact => piece_to_json(&patch, &p.origin),
-                ScalarKind::F64 => piece_to_json(&patch.to_f64(), &p.origin),
-            }
-        })
+        .map(|p| write_piece(&p.patch, &p.origin, a))
         .collect::<Result<Vec<_>, _>>()?;
     Ok(Value::Array(out))
+}
+
+/// A piece with its origin, normalized and over the scalar of `a`.
+fn write_piece(p: &Patch<BigRational>, origin: &Origin, a: &Args) -> Result<Value, Error> {
+    let patch = if a.normalize {
+        normalized(p)?
+    } else {
+        p.clone()
+    };
+    match a.scalar {
+        ScalarKind::Exact => piece_to_json(&patch, origin),
+        ScalarKind::F64 => piece_to_json(&patch.to_f64(), origin),
+    }
+}
+
+/// A STEP B-rep: one document, or JSON Lines (every line but the last
+/// emitted here, the model line returned).
+fn step_to_bezier(m: BrepModel, a: &Args) -> Result<Value, Error> {
+    let write = |p: &Patch<BigRational>, o: &Origin| write_piece(p, o, a);
+    if !a.jsonl {
+        return brep_to_json(&m, &write);
+    }
+    let mut lines = brep_to_lines(&m, &write)?;
+    let last = lines.pop().unwrap_or(Value::Null);
+    for line in &lines {
+        emit(&json_text(line, false));
+    }
+    Ok(last)
 }
 
 /// The patch with weights scaled to sum 1.

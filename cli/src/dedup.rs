@@ -16,7 +16,7 @@
 //! which re-checks every grouping exactly; it keeps each representative's
 //! text and each witness until the end.
 
-use super::bulk::{check_record_cost, map_chunk, BulkArgs, Member, Out, Progress, CHUNK};
+use super::bulk::{key_chunk, BulkArgs, KeyCache, Member, Out, Progress, CHUNK};
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::coincide::canonical::{
     canonical_key, key_digest, CanonicalKey, Deduper, KeyDigest,
@@ -24,6 +24,7 @@ use exact_bezier::coincide::canonical::{
 use exact_bezier::coincide::{coincide, Coincidence, Options};
 use exact_bezier::io::coincidence_to_json;
 use exact_bezier::io::{for_each_chunk, JsonScalar, Record};
+use exact_bezier::limits;
 use exact_bezier::Error;
 use rayon::prelude::*;
 use serde_json::json;
@@ -52,19 +53,37 @@ struct Witnesses {
 }
 
 impl Witnesses {
-    /// The witnesses of one keyed chunk whose class ids are `ids`.
+    /// The witnesses of one keyed chunk whose class ids are `ids`; each
+    /// member that is not a representative is charged the work of
+    /// `coincide` first.
     fn add_chunk(
         &mut self,
         d: &Deduper,
         first: usize,
         records: &[Record],
-        patches: Vec<Member>,
         ids: &[usize],
     ) -> Result<(), Error> {
         for (k, (r, &id)) in records.iter().zip(ids).enumerate() {
             if d.representative(id) == first + k {
                 self.reps.push(r.text().into_boxed_str());
             }
+        }
+        let read: Vec<Result<Member, Error>> = records.par_iter().map(Member::read).collect();
+        let mut patches = Vec::with_capacity(read.len());
+        for (k, (p, &id)) in read.into_iter().zip(ids).enumerate() {
+            let p = p?;
+            if d.representative(id) != first + k {
+                let s = match &p {
+                    Member::Rational(q) => q.size(),
+                    Member::Algebraic(q) => q.size(),
+                };
+                let (ops, bits) = super::coincide::coincide_cost(&s);
+                limits::charge(
+                    &format!("dedup --witness (through record {})", first + k),
+                    s.exact_units(ops, bits),
+                )?;
+            }
+            patches.push(p);
         }
         let reps = &self.reps;
         let done: Vec<Result<Option<Box<str>>, Error>> = patches
@@ -110,6 +129,7 @@ fn summary<T: JsonScalar>(c: Coincidence<T>) -> (bool, String, String) {
 }
 
 /// A record's key: a digest, or (over the real algebraic numbers) the key.
+#[derive(Clone)]
 enum Keyed {
     Digest(KeyDigest),
     Algebraic(CanonicalKey<RealAlgebraic>),
@@ -120,29 +140,23 @@ fn dedup(a: &Args) -> Result<(), Error> {
     let progress = Progress::new(&a.bulk, &input);
     let mut d = Deduper::default();
     let mut witnesses = a.witness.then(Witnesses::default);
-    let max_work = exact_bezier::limits::current().max_work;
+    let mut cache = KeyCache::default();
     for_each_chunk(reader, CHUNK, |first, records| {
-        let keyed = map_chunk(&records, |p| {
-            let key = match &p {
+        let keyed = key_chunk("dedup", first, &records, &mut cache, |p| {
+            Ok(match &p {
                 Member::Rational(q) => Keyed::Digest(key_digest(q)?),
-                Member::Algebraic(q) => {
-                    check_record_cost(q, max_work)?;
-                    Keyed::Algebraic(canonical_key(q)?)
-                }
-            };
-            Ok((key, a.witness.then_some(p)))
+                Member::Algebraic(q) => Keyed::Algebraic(canonical_key(q)?),
+            })
         })?;
         let mut ids = Vec::with_capacity(keyed.len());
-        let mut patches = Vec::new();
-        for (key, p) in keyed {
+        for key in keyed {
             ids.push(match key {
                 Keyed::Digest(k) => d.insert_digest(k)?,
                 Keyed::Algebraic(k) => d.insert_algebraic(k)?,
             });
-            patches.extend(p);
         }
         if let Some(w) = &mut witnesses {
-            w.add_chunk(&d, first, &records, patches, &ids)?;
+            w.add_chunk(&d, first, &records, &ids)?;
         }
         progress.update(&input, d.len());
         Ok(())

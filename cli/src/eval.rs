@@ -79,12 +79,6 @@ fn run_patches<T: ExactScalar>(
     a: &Args,
     patches: &[Patch<T>],
 ) -> Result<Result<Value, i32>, Error> {
-    if patches.is_empty() {
-        return Err(Error::Shape(format!(
-            "{:?} holds an empty array: no curve or patch to evaluate",
-            a.file
-        )));
-    }
     let lists: Vec<Vec<BigRational>> =
         a.at.iter()
             .map(|s| parse_list(s))

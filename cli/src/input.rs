@@ -47,23 +47,11 @@ pub(crate) fn open_input(path: &str) -> Result<Box<dyn std::io::BufRead>, Error>
     Ok(Box::new(std::io::BufReader::with_capacity(1 << 16, f)))
 }
 
-/// Read the patches of `path`.
-///
-/// An empty array is refused (docs/limits.md, policies): every command
-/// needs at least one patch.
+/// Read the patches of `path`. An empty array is an empty model
+/// (docs/limits.md, policies): commands that work patch by patch answer
+/// with an empty list.
 pub(crate) fn load(path: &str) -> Result<Vec<Patch<BigRational>>, Error> {
-    let patches = read_patches(&read_input(path)?)?;
-    if patches.is_empty() {
-        return Err(empty_input(path));
-    }
-    Ok(patches)
-}
-
-/// The error for a file that holds an empty array.
-fn empty_input(path: &str) -> Error {
-    Error::Shape(format!(
-        "{path:?} holds an empty array: no curve or patch to work on"
-    ))
+    read_patches(&read_input(path)?)
 }
 
 /// The single curve or patch of `path`; `count_error(n)` words the error
@@ -170,13 +158,9 @@ pub(crate) fn load_all_exact(paths: &[String]) -> Result<ExactPatches, Error> {
 }
 
 /// Read the exact patches of `path` (see [`ExactPatches::parse`]); an empty
-/// array is refused as by [`load`].
+/// array is an empty model, as for [`load`].
 pub(crate) fn load_exact(path: &str) -> Result<ExactPatches, Error> {
-    let patches = ExactPatches::parse(&read_input(path)?)?;
-    if patches.len() == 0 {
-        return Err(empty_input(path));
-    }
-    Ok(patches)
+    ExactPatches::parse(&read_input(path)?)
 }
 
 /// Check the `--tol` of an f64 comparison: finite and ≥ 0.

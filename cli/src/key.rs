@@ -4,7 +4,7 @@
 //! DuckDB, Spark, `sort`) gives the classes of `dedup`; see
 //! `docs/bulk_dedup.md`.
 
-use super::bulk::{check_record_cost, map_chunk, BulkArgs, Member, Out, Progress, CHUNK};
+use super::bulk::{key_chunk, BulkArgs, KeyCache, Member, Out, Progress, CHUNK};
 use exact_bezier::coincide::canonical::{canonical_key, canonical_text, KeyDigest};
 use exact_bezier::io::for_each_chunk;
 use exact_bezier::Error;
@@ -35,13 +35,10 @@ pub fn run(a: &Args) -> Result<(), Error> {
 ///
 /// [`Error::Domain`] for an irrational key (no canonical text: use
 /// `dedup`, which compares such keys exactly).
-fn member_text(p: &Member, max_work: u64) -> Result<String, Error> {
+fn member_text(p: &Member) -> Result<String, Error> {
     match p {
         Member::Rational(p) => canonical_text(p),
-        Member::Algebraic(p) => {
-            check_record_cost(p, max_work)?;
-            algebraic_text(p)
-        }
+        Member::Algebraic(p) => algebraic_text(p),
     }
 }
 
@@ -65,10 +62,10 @@ fn keys(a: &Args) -> Result<(), Error> {
     let progress = Progress::new(&a.bulk, &input);
     let mut out = Out::new();
     let mut done = 0;
-    let max_work = exact_bezier::limits::current().max_work;
+    let mut cache = KeyCache::default();
     let n = for_each_chunk(reader, CHUNK, |first, records| {
-        let lines = map_chunk(&records, |p| {
-            let text = member_text(&p, max_work)?;
+        let lines = key_chunk("key", first, &records, &mut cache, |p| {
+            let text = member_text(&p)?;
             let digest = KeyDigest::of_text(&text).to_string();
             Ok((digest, a.text.then_some(text)))
         })?;

@@ -193,11 +193,24 @@ pub fn one_line(message: &str) -> String {
 /// Refuse output with a non-finite number: an `f64` result that overflowed
 /// is written as the text `inf`, `-inf` or `NaN` by
 /// [`JsonScalar`](exact_bezier::io::JsonScalar), and caught here for every command.
+/// Refuse too an exact number the reader would not take back under the
+/// same limits ([`limits::check_written_number`]: what we write, we read).
 pub(crate) fn check_finite(v: &Value) -> Result<(), Error> {
     match v {
         Value::String(s) if matches!(s.as_str(), "inf" | "-inf" | "NaN") => Err(Error::NotFinite(
             "an f64 result overflowed (inf or NaN); use --scalar exact or smaller numbers".into(),
         )),
+        Value::String(s) => limits::check_written_number(s),
+        // Exact integers are written as JSON numbers; f64 results (with a
+        // point or an exponent) are not exact input and are not checked.
+        Value::Number(n) => {
+            let text = n.to_string();
+            if text.contains(['.', 'e', 'E']) {
+                Ok(())
+            } else {
+                limits::check_written_number(&text)
+            }
+        }
         Value::Array(items) => items.iter().try_for_each(check_finite),
         Value::Object(map) => map.values().try_for_each(check_finite),
         _ => Ok(()),

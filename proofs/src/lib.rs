@@ -28,6 +28,7 @@ use std::cell::Cell;
 use std::fmt;
 use std::time::{Duration, Instant};
 
+pub mod analytic;
 pub mod bernstein;
 pub mod blossoms;
 pub mod calculus;
@@ -343,6 +344,7 @@ pub const FAMILIES: &[Family] = &[
     Family { name: "conversions", run: conversions::claims },
     Family { name: "coincide", run: coincide::claims },
     Family { name: "nurbs", run: nurbs::claims },
+    Family { name: "analytic", run: analytic::claims },
 ];
 
 /// Run one family, timing each claim.

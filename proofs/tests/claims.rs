@@ -87,4 +87,5 @@ families!(
     nurbs,
     conversions,
     coincide,
+    analytic,
 );

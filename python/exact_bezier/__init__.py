@@ -10,6 +10,15 @@ Curves and patches hold exact rationals; evaluation returns
 >>> x * x + y * y == 1
 True
 
+Beyond the objects: every command of the command line as a function
+(:mod:`exact_bezier.operations`: ``evaluate``, ``derivative``,
+``curvature``, ``reparameterize``, ``standardize``, ``elevate``,
+``reduce``, ``convert``, ``intersect``, ``audit``, ``read_step``, ``arc``,
+``prove`` …), ``key``/``keys``/``dedup`` for bulk work, exact algebraic
+numbers (``Algebraic``), symbolic polynomials (``Poly``, with SymPy in
+and out and ``prove_identity``), trigonometric and NURBS objects, and
+resource limits (``limits``).
+
 See docs/python.md for a tour.
 """
 
@@ -20,11 +29,16 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, Dict, List, Optional, Union
 
+from ._bridge import current_limits, limits
 from ._native import (
     KEY_VERSION,
+    Algebraic,
     Curve,
+    DomainError,
     ExactBezierError,
     LimitError,
+    ParseError,
+    Poly,
     RectPatch,
     TriPatch,
     coincide_json as _coincide_json,
@@ -32,19 +46,82 @@ from ._native import (
     key_text,
     read_json,
 )
+from .objects import NurbsCurve, NurbsSurface, TrigPatch
+from .operations import (
+    DedupClass,
+    arc,
+    audit,
+    convert,
+    curvature,
+    dedup,
+    derivative,
+    elevate,
+    evaluate,
+    evaluate_grid,
+    intersect,
+    is_circle,
+    join,
+    keys,
+    mesh,
+    prove,
+    read_nurbs,
+    read_step,
+    reduce,
+    reparameterize,
+    standardize,
+)
+from .symbolic import Identity, poly_from_sympy, poly_to_sympy, prove_identity
+
+#: The same class as :class:`LimitError` (the name of the issue's hierarchy).
+LimitExceeded = LimitError
 
 __all__ = [
     "KEY_VERSION",
+    "Algebraic",
     "Coincidence",
     "Curve",
+    "DedupClass",
+    "DomainError",
     "ExactBezierError",
+    "Identity",
     "LimitError",
+    "LimitExceeded",
+    "NurbsCurve",
+    "NurbsSurface",
+    "ParseError",
+    "Poly",
     "RectPatch",
     "TriPatch",
+    "TrigPatch",
+    "arc",
+    "audit",
     "coincide",
+    "convert",
+    "current_limits",
+    "curvature",
+    "dedup",
+    "derivative",
+    "elevate",
+    "evaluate",
+    "evaluate_grid",
+    "intersect",
+    "is_circle",
+    "join",
     "key",
     "key_text",
+    "keys",
+    "limits",
+    "mesh",
+    "poly_from_sympy",
+    "poly_to_sympy",
+    "prove",
+    "prove_identity",
     "read_json",
+    "read_nurbs",
+    "read_step",
+    "reduce",
+    "reparameterize",
+    "standardize",
 ]
 
 AnyPatch = Union[Curve, RectPatch, TriPatch]

@@ -20,8 +20,12 @@
 
 #![warn(missing_docs)]
 
+mod algebraic;
+mod batch;
+mod poly;
+mod run;
+
 use exact_bezier::coincide::{canonical_text, KeyDigest};
-use exact_bezier::eval::Evaluator;
 use exact_bezier::io::{parse_rational, patch_from_value, patch_to_json, read_patches};
 use exact_bezier::limits;
 use exact_bezier::{Error, Patch};
@@ -31,9 +35,7 @@ use pyo3::create_exception;
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
-use pyo3::types::{
-    PyBool, PyByteArray, PyBytes, PyFloat, PyInt, PyList, PyString, PyTuple, PyType,
-};
+use pyo3::types::{PyBool, PyFloat, PyInt, PyList, PyString, PyTuple, PyType};
 use serde_json::{Map, Value};
 use std::hash::{DefaultHasher, Hash, Hasher};
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -47,19 +49,36 @@ create_exception!(
 );
 create_exception!(
     exact_bezier,
+    ParseError,
+    ExactBezierError,
+    "Text that is not the documented format: malformed JSON or STEP, a number that is not exact text."
+);
+create_exception!(
+    exact_bezier,
+    DomainError,
+    ExactBezierError,
+    "A parameter outside the domain, or a point at infinity (a zero weight where it is evaluated)."
+);
+create_exception!(
+    exact_bezier,
     LimitError,
     ExactBezierError,
     "An input or computation over a documented resource limit (docs/limits.md): digits, dimension, degree, work."
 );
 
 /// The Python exception for a library error: [`LimitError`] for a limit
-/// (including the degree limit), [`ExactBezierError`] for the rest; the
-/// message is the error's `Display`, as `exact-bezier` prints it after
-/// `error: `.
+/// (including the degree limit), [`ParseError`] for malformed text,
+/// [`DomainError`] for a parameter out of the domain or a point at
+/// infinity, [`ExactBezierError`] for the rest; the message is the error's
+/// `Display`, as `exact-bezier` prints it after `error: `.
 fn to_py_err(e: Error) -> PyErr {
     let message = e.to_string();
     match e {
         Error::Limit(_) | Error::DegreeTooHigh { .. } => LimitError::new_err(message),
+        Error::Format(_) | Error::BadNumber(_) | Error::NotFinite(_) => {
+            ParseError::new_err(message)
+        }
+        Error::Domain(_) | Error::PointAtInfinity => DomainError::new_err(message),
         _ => ExactBezierError::new_err(message),
     }
 }
@@ -94,12 +113,10 @@ impl From<Failure> for PyErr {
     }
 }
 
-/// Run `f` with a fresh work counter under the limits in force (the
-/// library's defaults, docs/limits.md), catching panics.
+/// Run `f` with a fresh work counter under this thread's limits
+/// ([`run::current`], set by `exact_bezier.limits`), catching panics.
 fn guarded<T>(f: impl FnOnce() -> Result<T, Error>) -> Result<T, Failure> {
-    match catch_unwind(AssertUnwindSafe(|| {
-        limits::with_limits(limits::current(), f)
-    })) {
+    match catch_unwind(AssertUnwindSafe(|| limits::with_limits(run::current(), f))) {
         Ok(r) => r.map_err(Failure::Lib),
         Err(p) => Err(Failure::Panic(panic_text(p.as_ref()))),
     }
@@ -201,6 +218,17 @@ fn exact_param(x: &Bound<'_, PyAny>, from_float: bool) -> PyResult<BigRational> 
     Ok(guarded(|| parse_rational(&text))?)
 }
 
+/// An exact parameter in `[0, 1]` ([`Error::Domain`] outside).
+fn unit_param(x: &Bound<'_, PyAny>, from_float: bool) -> PyResult<BigRational> {
+    let t = exact_param(x, from_float)?;
+    if t < BigRational::from_integer(0.into()) || t > BigRational::from_integer(1.into()) {
+        return Err(to_py_err(Error::Domain(format!(
+            "t = {t} is outside [0, 1]"
+        ))));
+    }
+    Ok(t)
+}
+
 /// A rational as a `fractions.Fraction`.
 fn fraction<'py>(py: Python<'py>, q: &BigRational) -> PyResult<Bound<'py, PyAny>> {
     FRACTION
@@ -287,63 +315,6 @@ fn eval_exact(p: &Patch<BigRational>, params: &[BigRational]) -> Result<Vec<BigR
             params.len()
         ))),
     }
-}
-
-/// Points of the `f64` copy of a patch at a batch of parameters (one or two
-/// per point, back to back), by the library's batch [`Evaluator`].
-fn eval_f64(p: &Patch<f64>, params: &[f64]) -> Result<Vec<f64>, Error> {
-    let mut ev = match p {
-        Patch::Curve(c) => Evaluator::curve(c),
-        Patch::Rect(r) => Evaluator::rect(r),
-        Patch::Tri(t) => Evaluator::tri(t),
-    };
-    let k = ev.net().shape().params();
-    let mut out = vec![0.0; params.len() / k * ev.net().dim()];
-    ev.eval_batch(params, &mut out)?;
-    Ok(out)
-}
-
-/// `eval_many`: parameters from anything NumPy reads as float64 (shape
-/// `(N,)` or `(N, 1)` for a curve, `(N, 2)` for a patch), the points as a
-/// float64 array of shape `(N, dim)`, computed without the GIL.
-fn eval_many_py<'py>(
-    py: Python<'py>,
-    p: &Patch<f64>,
-    params: &Bound<'py, PyAny>,
-) -> PyResult<Bound<'py, PyAny>> {
-    let np = py.import("numpy")?;
-    let arr = np.call_method1("ascontiguousarray", (params, "float64"))?;
-    let shape: Vec<usize> = arr.getattr("shape")?.extract()?;
-    let k = if matches!(p, Patch::Curve(_)) { 1 } else { 2 };
-    let ok = match shape.as_slice() {
-        [_] => k == 1,
-        [_, c] => *c == k,
-        _ => false,
-    };
-    if !ok {
-        let want = if k == 1 { "(N,) or (N, 1)" } else { "(N, 2)" };
-        return Err(to_py_err(Error::Shape(format!(
-            "a {} takes parameters of shape {want}, not {shape:?}",
-            p.kind()
-        ))));
-    }
-    let n = shape[0];
-    let bytes = arr.call_method0("tobytes")?;
-    let raw = bytes.cast::<PyBytes>()?.as_bytes();
-    let values: Vec<f64> = raw
-        .chunks_exact(8)
-        .map(|b| f64::from_ne_bytes(b.try_into().expect("8 bytes")))
-        .collect();
-    let dim = match p {
-        Patch::Curve(c) => c.dim(),
-        Patch::Rect(r) => r.dim(),
-        Patch::Tri(t) => t.dim(),
-    };
-    let out = detached(py, || eval_f64(p, &values))?;
-    let out_bytes: Vec<u8> = out.iter().flat_map(|x| x.to_ne_bytes()).collect();
-    let buffer = PyByteArray::new(py, &out_bytes);
-    np.call_method1("frombuffer", (buffer, "float64"))?
-        .call_method1("reshape", ((n, dim),))
 }
 
 /// The control points as nested lists of `Fraction`s.
@@ -534,7 +505,26 @@ macro_rules! patch_class {
                 py: Python<'py>,
                 params: &Bound<'py, PyAny>,
             ) -> PyResult<Bound<'py, PyAny>> {
-                eval_many_py(py, self.nearest(), params)
+                batch::eval_many(py, self.nearest(), params)
+            }
+
+            /// Points and first derivatives at many parameters in
+            /// `float64`: `(X, dX)` for a curve, `(X, X_u, X_v)` for a patch,
+            /// each of shape `(N, dim)` (the GIL is released meanwhile).
+            ///
+            /// ```text
+            /// >>> from exact_bezier import Curve
+            /// >>> x, dx = Curve([[0, 0], [2, 4], [4, 0]]).derivatives_many([0.5])
+            /// >>> dx.tolist()
+            /// [[4.0, 0.0]]
+            ///
+            /// ```
+            fn derivatives_many<'py>(
+                &self,
+                py: Python<'py>,
+                params: &Bound<'py, PyAny>,
+            ) -> PyResult<Bound<'py, PyTuple>> {
+                batch::derivatives_many(py, self.nearest(), params)
             }
 
             fn __repr__(&self) -> PyResult<String> {
@@ -596,6 +586,24 @@ patch_class!(
             let x = detached(py, || eval_exact(&self.patch, &[t]))?;
             fractions(py, &x)
         }
+
+        /// The pieces over `[0, t]` and `[t, 1]`, each reparameterized to
+        /// `[0, 1]` (de Casteljau), exactly; `0 ≤ t ≤ 1`.
+        ///
+        /// ```text
+        /// >>> from exact_bezier import Curve
+        /// >>> left, right = Curve([[0], [2], [4]]).subdivide("1/2")
+        /// >>> left.points, right.points
+        /// ([[Fraction(0, 1)], [Fraction(1, 1)], [Fraction(2, 1)]], [[Fraction(2, 1)], [Fraction(3, 1)], [Fraction(4, 1)]])
+        ///
+        /// ```
+        #[pyo3(signature = (t, *, exact_from_float = false))]
+        fn subdivide(&self, t: &Bound<'_, PyAny>, exact_from_float: bool) -> PyResult<(Curve, Curve)> {
+            let t = unit_param(t, exact_from_float)?;
+            let Patch::Curve(c) = &self.patch else { unreachable!("a Curve holds a curve") };
+            let (a, b) = guarded(|| Ok(c.subdivide(&t)))?;
+            Ok((Curve::wrap(Patch::Curve(a)), Curve::wrap(Patch::Curve(b))))
+        }
     }
 );
 
@@ -638,6 +646,38 @@ patch_class!(
             exact_from_float: bool,
         ) -> PyResult<Bound<'py, PyList>> {
             eval_at_uv(py, &self.patch, u, v, exact_from_float)
+        }
+
+        /// The two pieces of the patch split at `u = t` (`direction="u"`)
+        /// or `v = t` (`direction="v"`), each reparameterized to `[0, 1]²`,
+        /// exactly; `0 ≤ t ≤ 1`.
+        ///
+        /// ```text
+        /// >>> from exact_bezier import RectPatch
+        /// >>> a, b = RectPatch([[[0], [1]], [[2], [4]]]).subdivide("1/2", "v")
+        /// >>> a.eval(1, 1)
+        /// [Fraction(3, 1)]
+        ///
+        /// ```
+        #[pyo3(signature = (t, direction = "u", *, exact_from_float = false))]
+        fn subdivide(
+            &self,
+            t: &Bound<'_, PyAny>,
+            direction: &str,
+            exact_from_float: bool,
+        ) -> PyResult<(RectPatch, RectPatch)> {
+            let t = unit_param(t, exact_from_float)?;
+            let Patch::Rect(r) = &self.patch else { unreachable!("a RectPatch holds a rect") };
+            let (a, b) = match direction {
+                "u" => guarded(|| Ok(r.subdivide_u(&t)))?,
+                "v" => guarded(|| Ok(r.subdivide_v(&t)))?,
+                _ => {
+                    return Err(to_py_err(Error::Shape(format!(
+                        "direction is \"u\" or \"v\", not {direction:?}"
+                    ))))
+                }
+            };
+            Ok((RectPatch::wrap(Patch::Rect(a)), RectPatch::wrap(Patch::Rect(b))))
         }
     }
 );
@@ -787,6 +827,13 @@ fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<TriPatch>()?;
     m.add("ExactBezierError", py.get_type::<ExactBezierError>())?;
     m.add("LimitError", py.get_type::<LimitError>())?;
+    m.add("ParseError", py.get_type::<ParseError>())?;
+    m.add("DomainError", py.get_type::<DomainError>())?;
+    m.add_class::<algebraic::Algebraic>()?;
+    m.add_class::<poly::Poly>()?;
+    m.add_function(wrap_pyfunction!(run::run, m)?)?;
+    m.add_function(wrap_pyfunction!(run::set_limits, m)?)?;
+    m.add_function(wrap_pyfunction!(run::get_limits, m)?)?;
     m.add_function(wrap_pyfunction!(read_json, m)?)?;
     m.add_function(wrap_pyfunction!(key, m)?)?;
     m.add_function(wrap_pyfunction!(key_text, m)?)?;

@@ -316,6 +316,48 @@ pub fn canonical_text(p: &Patch<BigRational>) -> Result<String, Error> {
     canonical_key(p).map(|k| k.text())
 }
 
+/// How [`canonical_text`] reduces a patch to minimal degree, read modulo
+/// `p = 2⁶¹ − 1` before any exact work, so that a caller can charge the
+/// work first ([`key_plan`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum KeyPlan {
+    /// Certified minimal: the key is read off the net (work proportional to
+    /// its size, numbers growing with the degree through the invariants).
+    Minimal,
+    /// The net looks like an elevation of one of this lower bidegree
+    /// (`(m, 0)` for a curve): one exact pass undoes it, then the key of the
+    /// lower net (a common factor of the lower net costs a gcd of its degree).
+    Elevated((usize, usize)),
+    /// Neither: the exact bivariate gcd of the whole net may run.
+    General,
+}
+
+/// The [`KeyPlan`] of a curve or rect patch over Q.
+///
+/// ```
+/// use exact_bezier::{coincide::canonical::{key_plan, KeyPlan}, Patch, RationalCurve, ratio};
+/// use exact_bezier::BigRational;
+/// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
+/// let c = RationalCurve::new(vec![p(0), p(1), p(3)], vec![ratio(1, 1), ratio(2, 1), ratio(1, 1)]).unwrap();
+/// assert_eq!(key_plan(&Patch::Curve(c.clone())).unwrap(), KeyPlan::Minimal);
+/// assert_eq!(key_plan(&Patch::Curve(c.elevate(5))).unwrap(), KeyPlan::Elevated((2, 0)));
+/// ```
+///
+/// # Errors
+///
+/// As [`canonical_key`].
+pub fn key_plan(p: &Patch<BigRational>) -> Result<KeyPlan, Error> {
+    let (net, _) = net_of(p)?;
+    if certified_minimal(&net) {
+        return Ok(KeyPlan::Minimal);
+    }
+    let shape = (net.len() - 1, net[0].len() - 1);
+    Ok(match BigRational::degree_lower_bound(&net) {
+        Some(d) if d != shape => KeyPlan::Elevated(d),
+        _ => KeyPlan::General,
+    })
+}
+
 /// A fixed-size canonical key: SHA-256 of [`CanonicalKey::text`]. Equal for
 /// coincident patches; distinct for others unless SHA-256 collides.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]

@@ -29,7 +29,7 @@ use crate::algebra::modp::Fp;
 use crate::algebra::scalar::{Field, Ordered, Scalar, Tolerance};
 use crate::algebra::upoly::{BPoly, UPoly};
 use crate::algebra::RealAlgebraic;
-use crate::bernstein::{bernstein_to_power, power_to_bernstein};
+use crate::bernstein::{bernstein_to_power, power_to_bernstein, reduce_elevated};
 use crate::coincide::coprime::coprime_by_intervals;
 use crate::curve::RationalCurve;
 use crate::error::Error;
@@ -231,6 +231,9 @@ pub trait Reducible: Ordered + std::fmt::Display {
     fn certified_coprime(polys: &[BPoly<Self>]) -> bool;
     /// `g(u, v)` as a formula.
     fn factor_text(g: &BPoly<Self>) -> String;
+    /// A lower bound of the actual bidegree of `net`, found cheaply, or
+    /// `None`: it is where [`minimal_net`] first tries to undo an elevation.
+    fn degree_lower_bound(net: &Net<Self>) -> Option<(usize, usize)>;
 }
 
 impl Reducible for BigRational {
@@ -244,6 +247,13 @@ impl Reducible for BigRational {
 
     fn factor_text(g: &BPoly<Self>) -> String {
         g.to_poly("u", "v").to_string()
+    }
+
+    /// The bidegree of the power-basis components modulo `p = 2⁶¹ − 1`: a
+    /// coefficient that is zero over Q is zero modulo p, so this degree is
+    /// at most the actual one.
+    fn degree_lower_bound(net: &Net<Self>) -> Option<(usize, usize)> {
+        power_components_mod_p(net).map(|comps| actual_degree(&comps, |a, _| a.is_zero()))
     }
 }
 
@@ -261,6 +271,11 @@ impl Reducible for RealAlgebraic {
         let n = polys.iter().filter_map(BPoly::deg_v).max().unwrap_or(0);
         let grids: Vec<Vec<Vec<Self>>> = polys.iter().map(|p| p.to_grid(m, n)).collect();
         coprime_by_intervals(&grids, (m, n))
+    }
+
+    /// None: no cheap image (the exact zero tests of `drop_elevation` run).
+    fn degree_lower_bound(_: &Net<Self>) -> Option<(usize, usize)> {
+        None
     }
 
     /// The rational formula when every coefficient is rational, else
@@ -308,6 +323,19 @@ pub(crate) fn minimal_net<T: Reducible>(net: &Net<T>) -> Minimal<Net<T>, T> {
     if T::certified_minimal(net) {
         return certified(net.clone());
     }
+    // A cheap lower bound of the degree: undo the elevation to it in one
+    // exact pass, checked (an elevated copy costs O(size · degree), not a
+    // change of basis of the whole net).
+    let shape = before;
+    let fast = T::degree_lower_bound(net)
+        .filter(|&d| d != shape)
+        .and_then(|d| undo_elevation(net, d));
+    if let Some(lowered) = &fast {
+        if T::certified_minimal(lowered) {
+            return certified(lowered.clone());
+        }
+    }
+    let net = fast.as_ref().unwrap_or(net);
     // An elevated net without a common factor: undo the elevation (exact
     // zero tests in the power basis), then certify, before any gcd.
     let lowered = drop_elevation(net, Tolerance::EXACT);
@@ -353,21 +381,64 @@ const PROBE_V: u64 = 0x1B87_3593_9E37_79B9 % crate::algebra::modp::MODULUS;
 /// gcd of 1 over F_p excludes such `g`. (3) The same with `u = u₀` excludes a
 /// factor with `deg_v g ≥ 1`; what is left is a constant.
 pub(crate) fn certified_minimal(net: &Net<BigRational>) -> bool {
-    let mut image: Net<Fp> = Vec::with_capacity(net.len());
-    for row in net {
-        let mut r = Vec::with_capacity(row.len());
-        for h in row {
-            let coords: Option<Vec<Fp>> = h.coords.iter().map(Fp::from_rational_checked).collect();
-            match coords {
-                Some(coords) => r.push(HPoint { coords }),
-                None => return false,
-            }
-        }
-        image.push(r);
-    }
-    let comps = power_components(&image);
+    let Some(comps) = power_components_mod_p(net) else {
+        return false;
+    };
     let (m, n) = (net.len() - 1, net[0].len() - 1);
     actual_degree(&comps, |a, _| a.is_zero()) == (m, n) && coprime_fp(&comps, (m, n))
+}
+
+/// The power-basis grids of the components of `net` modulo `p`; `None`
+/// when a denominator is divisible by `p`.
+fn power_components_mod_p(net: &Net<BigRational>) -> Option<Vec<Vec<Vec<Fp>>>> {
+    let image: Option<Net<Fp>> = net
+        .iter()
+        .map(|row| {
+            row.iter()
+                .map(|h| {
+                    let coords: Option<Vec<Fp>> =
+                        h.coords.iter().map(Fp::from_rational_checked).collect();
+                    coords.map(|coords| HPoint { coords })
+                })
+                .collect()
+        })
+        .collect();
+    image.map(|image| power_components(&image))
+}
+
+/// The net of bidegree `(k, l)` whose degree elevation is `net`, or `None`
+/// if there is none: [`reduce_elevated`] on every row (to degree `l`), then
+/// on every column of the result (to degree `k`). Exact, `O(m·n·(k + l))`
+/// operations per coordinate for a net of bidegree `(m, n)`.
+fn undo_elevation<T: Field>(net: &Net<T>, (k, l): (usize, usize)) -> Option<Net<T>> {
+    let len = net[0][0].coords.len();
+    let reduce_points = |points: &[&HPoint<T>], to: usize| -> Option<Vec<HPoint<T>>> {
+        let coords: Vec<Vec<T>> = (0..len)
+            .map(|c| {
+                let line: Vec<T> = points.iter().map(|h| h.coords[c].clone()).collect();
+                reduce_elevated(&line, to)
+            })
+            .collect::<Option<_>>()?;
+        Some(
+            (0..=to)
+                .map(|i| HPoint {
+                    coords: coords.iter().map(|c| c[i].clone()).collect(),
+                })
+                .collect(),
+        )
+    };
+    let rows: Vec<Vec<HPoint<T>>> = net
+        .iter()
+        .map(|row| reduce_points(&row.iter().collect::<Vec<_>>(), l))
+        .collect::<Option<_>>()?;
+    let cols: Vec<Vec<HPoint<T>>> = (0..=l)
+        .map(|j| reduce_points(&rows.iter().map(|r| &r[j]).collect::<Vec<_>>(), k))
+        .collect::<Option<_>>()?;
+    Some(
+        (0..=k)
+            .map(|i| cols.iter().map(|c| c[i].clone()).collect())
+            .collect(),
+    )
 }
 
 /// Both coprimality checks of [`certified_minimal`] on power grids over

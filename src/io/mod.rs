@@ -30,10 +30,16 @@ use crate::tri::TriPatch;
 use num_rational::BigRational;
 use serde_json::{Map, Number, Value};
 
+mod brep;
 mod duplicate_keys;
 mod model;
 mod nurbs;
-pub use model::{audit_to_json, origin_to_json, piece_to_json, read_model};
+pub use brep::{
+    brep_model_json, brep_to_json, brep_to_lines, edge_to_json, face_to_json, PieceWriter,
+};
+pub use model::{
+    audit_to_json, is_step, origin_from_json, origin_to_json, piece_to_json, read_model,
+};
 pub use nurbs::{is_nurbs, nurbs_to_json, read_nurbs};
 mod stream;
 pub use stream::{for_each_chunk, Record};
@@ -256,10 +262,12 @@ pub(crate) fn missing(field: &str) -> Error {
     Error::Format(format!("missing field \"{field}\""))
 }
 
-/// The fields of a patch object, and the annotations `arc` writes beside
-/// them (read and ignored); any other field is refused (docs/limits.md).
-const PATCH_FIELDS: [&str; 7] = [
-    "kind", "degree", "points", "weights", "exact", "cos_half", "lambda",
+/// The fields of a patch object, the annotations `arc` writes beside them
+/// and the `"origin"` `convert --to bezier` writes (read and ignored here;
+/// [`read_model`] keeps the origin); any other field is refused
+/// (docs/limits.md).
+const PATCH_FIELDS: [&str; 8] = [
+    "kind", "degree", "points", "weights", "exact", "cos_half", "lambda", "origin",
 ];
 
 /// Read one patch from a JSON object.
@@ -290,7 +298,7 @@ pub fn patch_from_value_as<T: ExactNumber>(v: &Value) -> Result<Patch<T>, Error>
     if let Some(key) = obj.keys().find(|k| !PATCH_FIELDS.contains(&k.as_str())) {
         if matches!(kind, "curve" | "rect" | "tri") {
             return Err(Error::Format(format!(
-                "unknown field {key:?} (a {kind} has only \"kind\", \"degree\", \"points\", \"weights\")"
+                "unknown field {key:?} (a {kind} has only \"kind\", \"degree\", \"points\", \"weights\", \"origin\")"
             )));
         }
     }

@@ -3,13 +3,15 @@
 //! from; [`piece_to_json`] and [`audit_to_json`] write them.
 
 use super::{
-    is_nurbs, parse_json, patch_from_value, patch_to_json, point_to_json, read_nurbs, JsonScalar,
+    is_nurbs, number, parse_json, patch_from_value, patch_to_json, point_to_json, read_nurbs,
+    JsonScalar,
 };
 use crate::algebra::Field;
 use crate::audit::{nurbs_pieces, Audit, Model, Origin, PatchEdge, Piece};
 use crate::error::Error;
 use crate::patch::Patch;
 use crate::step::read_step;
+use num_rational::BigRational;
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
 use std::io::BufRead;
@@ -35,37 +37,141 @@ pub fn origin_to_json(origin: &Origin) -> Value {
     Value::Object(o)
 }
 
-fn json_pieces(v: &Value, element: Option<usize>) -> Result<Vec<Piece>, Error> {
-    let base = Origin {
-        element,
-        ..Origin::default()
+/// Read an origin written by [`origin_to_json`]: every field optional,
+/// ids as `"#n"`, spans as two exact numbers.
+///
+/// # Errors
+///
+/// [`Error::Format`] for a mistyped field or an unknown one.
+///
+/// ```
+/// use exact_bezier::io::{origin_from_json, origin_to_json, parse_json};
+/// let v = parse_json(r##"{"entity": "#20", "faces": ["#30"], "span_u": [0, "1/2"]}"##).unwrap();
+/// assert_eq!(origin_to_json(&origin_from_json(&v).unwrap()), v);
+/// ```
+pub fn origin_from_json(v: &Value) -> Result<Origin, Error> {
+    let obj = v
+        .as_object()
+        .ok_or_else(|| Error::Format(format!("\"origin\" should be an object, found {v}")))?;
+    let step_id = |x: &Value| {
+        x.as_str()
+            .and_then(|t| t.strip_prefix('#'))
+            .and_then(|t| t.parse::<u64>().ok())
+            .ok_or_else(|| Error::Format(format!("an origin id should be \"#n\", found {x}")))
     };
+    let span = |x: &Value| -> Result<[BigRational; 2], Error> {
+        match x.as_array().map(Vec::as_slice) {
+            Some([a, b]) => Ok([number(a, "a span")?, number(b, "a span")?]),
+            _ => Err(Error::Format(format!("a span should be [a, b], found {x}"))),
+        }
+    };
+    let mut o = Origin::default();
+    for (key, x) in obj {
+        match key.as_str() {
+            "element" => {
+                o.element = Some(
+                    x.as_u64()
+                        .and_then(|e| usize::try_from(e).ok())
+                        .ok_or_else(|| Error::Format(format!("origin element {x}")))?,
+                );
+            }
+            "entity" => o.entity = Some(step_id(x)?),
+            "faces" => {
+                o.faces = x
+                    .as_array()
+                    .ok_or_else(|| Error::Format("origin faces should be a list".into()))?
+                    .iter()
+                    .map(step_id)
+                    .collect::<Result<_, _>>()?;
+            }
+            "span_u" => o.u = Some(span(x)?),
+            "span_v" => o.v = Some(span(x)?),
+            other => return Err(Error::Format(format!("unknown origin field {other:?}"))),
+        }
+    }
+    Ok(o)
+}
+
+/// The pieces of one JSON object; `element(d)` is the origin element of
+/// its `d`-th NURBS (a geomdl file holds several).
+fn json_pieces(v: &Value, element: &dyn Fn(usize) -> usize) -> Result<Vec<Piece>, Error> {
     if is_nurbs(v) {
         let nurbs = read_nurbs(v)?;
         return Ok(nurbs
             .iter()
-            .flat_map(|n| nurbs_pieces(n, base.clone()))
+            .enumerate()
+            .flat_map(|(d, n)| {
+                let base = Origin {
+                    element: Some(element(d)),
+                    ..Origin::default()
+                };
+                nurbs_pieces(n, base)
+            })
             .collect());
     }
+    let origin = match v.get("origin") {
+        Some(o) => origin_from_json(o)?,
+        None => Origin {
+            element: Some(element(0)),
+            ..Origin::default()
+        },
+    };
     Ok(vec![Piece {
         patch: patch_from_value(v)?,
-        origin: base,
+        origin,
     }])
 }
 
+/// Does the stream begin with `ISO-10303-21` (a STEP file)? Looks at the
+/// buffered head only.
+///
+/// # Errors
+///
+/// [`Error::Io`] when the stream cannot be read.
+pub fn is_step(input: &mut impl BufRead) -> Result<bool, Error> {
+    let head = input
+        .fill_buf()
+        .map_err(|e| Error::Io(format!("cannot read the input: {e}")))?;
+    let text_start = String::from_utf8_lossy(&head[..head.len().min(64)]).into_owned();
+    Ok(text_start.trim_start().starts_with("ISO-10303-21"))
+}
+
+/// The surface pieces of a B-rep document or face object written by
+/// `convert --to bezier` (docs/FORMAT.md, "B-rep"), `None` for other JSON.
+fn brep_pieces(v: &Value) -> Option<Vec<&Value>> {
+    fn surface_pieces(g: &Value) -> Vec<&Value> {
+        g.get("pieces")
+            .and_then(Value::as_array)
+            .map(|p| p.iter().collect())
+            .unwrap_or_default()
+    }
+    match v.get("kind").and_then(Value::as_str)? {
+        "face" => Some(surface_pieces(v.get("surface")?)),
+        "brep" => {
+            let faces = v.get("faces").and_then(Value::as_array);
+            let loose = v.get("unattached").and_then(Value::as_array);
+            let faces = faces.into_iter().flatten().filter_map(|f| f.get("surface"));
+            Some(
+                faces
+                    .chain(loose.into_iter().flatten())
+                    .flat_map(surface_pieces)
+                    .collect(),
+            )
+        }
+        _ => None,
+    }
+}
+
 /// Read a model from a stream: STEP if it begins with `ISO-10303-21`,
-/// otherwise JSON (one object or an array). STEP is read statement by
+/// otherwise JSON (one object or an array, or a B-rep document or face
+/// that `convert --to bezier` writes: its surface pieces). STEP is read statement by
 /// statement; JSON is read whole.
 ///
 /// # Errors
 ///
 /// The readers' errors (JSON: the failing element's index is named).
 pub fn read_model(mut input: impl BufRead) -> Result<Model, Error> {
-    let head = input
-        .fill_buf()
-        .map_err(|e| Error::Io(format!("cannot read the input: {e}")))?;
-    let text_start = String::from_utf8_lossy(&head[..head.len().min(64)]).into_owned();
-    if text_start.trim_start().starts_with("ISO-10303-21") {
+    if is_step(&mut input)? {
         return Ok(Model::from_step(read_step(input)?));
     }
     let mut text = String::new();
@@ -73,18 +179,31 @@ pub fn read_model(mut input: impl BufRead) -> Result<Model, Error> {
         .read_to_string(&mut text)
         .map_err(|e| Error::Io(format!("cannot read the input: {e}")))?;
     let v = parse_json(&text)?;
+    if let Some(pieces) = brep_pieces(&v) {
+        let pieces = pieces
+            .into_iter()
+            .enumerate()
+            .map(|(k, p)| {
+                json_pieces(p, &|_| k).map_err(|e| Error::Format(format!("piece {k}: {e}")))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        return Ok(Model {
+            pieces: pieces.into_iter().flatten().collect(),
+            ..Model::default()
+        });
+    }
     let pieces = match &v {
         Value::Array(items) => {
             let mut out = Vec::new();
             for (k, item) in items.iter().enumerate() {
                 out.extend(
-                    json_pieces(item, Some(k))
+                    json_pieces(item, &|_| k)
                         .map_err(|e| Error::Format(format!("element {k}: {e}")))?,
                 );
             }
             out
         }
-        _ => json_pieces(&v, Some(0))?,
+        _ => json_pieces(&v, &|d| d)?,
     };
     Ok(Model {
         pieces,
@@ -169,4 +288,92 @@ fn same_surface(model: &Model) -> Vec<Value> {
             })
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{ratio, RationalCurve, RectPatch, TriPatch};
+    use proptest::collection::vec;
+    use proptest::prelude::*;
+
+    fn q() -> impl Strategy<Value = BigRational> {
+        (-20i64..20, 1i64..7).prop_map(|(n, d)| ratio(n, d))
+    }
+
+    fn w() -> impl Strategy<Value = BigRational> {
+        (1i64..20, 1i64..7).prop_map(|(n, d)| ratio(n, d))
+    }
+
+    /// A curve, rect or tri of small degree in 3D with positive weights.
+    fn patch() -> impl Strategy<Value = Patch<BigRational>> {
+        let pts = |n: usize| vec(vec(q(), 3), n);
+        prop_oneof![
+            (1usize..4).prop_flat_map(move |n| (pts(n + 1), vec(w(), n + 1))
+                .prop_map(|(p, w)| { Patch::Curve(RationalCurve::new(p, w).unwrap()) })),
+            (1usize..3, 1usize..3).prop_flat_map(move |(m, n)| (
+                vec(pts(n + 1), m + 1),
+                vec(vec(w(), n + 1), m + 1)
+            )
+                .prop_map(|(p, w)| Patch::Rect(RectPatch::new(p, w).unwrap()))),
+            (1usize..3).prop_flat_map(move |n| {
+                let rows: Vec<usize> = (0..=n).map(|j| n - j + 1).collect();
+                let p: Vec<_> = rows.iter().map(|&l| pts(l)).collect();
+                let ws: Vec<_> = rows.iter().map(|&l| vec(w(), l)).collect();
+                (p, ws).prop_map(|(p, w)| Patch::Tri(TriPatch::new(p, w).unwrap()))
+            }),
+        ]
+    }
+
+    /// An origin as STEP or JSON inputs give them.
+    fn span() -> impl Strategy<Value = [BigRational; 2]> {
+        (q(), q()).prop_map(|(a, b)| [a, b])
+    }
+
+    fn origin() -> impl Strategy<Value = Origin> {
+        (
+            proptest::option::of(0usize..9),
+            proptest::option::of(1u64..1000),
+            vec(1u64..1000, 0..3),
+            proptest::option::of(span()),
+            proptest::option::of(span()),
+        )
+            .prop_map(|(element, entity, faces, u, v)| Origin {
+                element,
+                faces: if entity.is_some() { faces } else { Vec::new() },
+                entity,
+                u,
+                v,
+            })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        /// What `convert --to bezier` writes, every reader reads: the model
+        /// reader gets the piece and its origin back, the patch reader the
+        /// patch.
+        #[test]
+        fn written_pieces_read_back(pieces in vec((patch(), origin()), 0..4)) {
+            let json: Vec<Value> = pieces.iter().map(|(p, o)| piece_to_json(p, o).unwrap()).collect();
+            let text = Value::Array(json).to_string();
+            let model = read_model(text.as_bytes()).unwrap();
+            let back: Vec<(Patch<BigRational>, Origin)> =
+                model.pieces.into_iter().map(|p| (p.patch, p.origin)).collect();
+            prop_assert_eq!(&back, &pieces);
+            let patches = crate::io::read_patches(&text).unwrap();
+            let want: Vec<Patch<BigRational>> = pieces.into_iter().map(|(p, _)| p).collect();
+            prop_assert_eq!(patches, want);
+        }
+    }
+
+    #[test]
+    fn geomdl_data_get_their_own_element() {
+        let datum = r#"{"degree": 1, "knotvector": [0, 0, 1, 1], "control_points": {"points": [[0, 0], [1, 1]]}}"#;
+        let text =
+            format!(r#"{{"shape": {{"type": "curve", "data": [{datum}, {datum}, {datum}]}}}}"#);
+        let m = read_model(text.as_bytes()).unwrap();
+        let elements: Vec<Option<usize>> = m.pieces.iter().map(|p| p.origin.element).collect();
+        assert_eq!(elements, [Some(0), Some(1), Some(2)]);
+        assert!(read_model(&b"[]"[..]).unwrap().pieces.is_empty());
+    }
 }

@@ -20,6 +20,9 @@
 //! Other entities are skipped and counted by name, never an error; an
 //! entity of a supported type that is malformed is reported with its id
 //! and skipped too (a model audit should see the rest of the file).
+//!
+//! The topology (solids, shells, faces, loops, edges, vertices), the units
+//! and the tolerance are read by [`read_brep`] ([`brep`]).
 
 use crate::algebra::parse_rational;
 use crate::error::Error;
@@ -30,7 +33,11 @@ use num_traits::{One, Signed};
 use std::collections::{BTreeMap, HashMap};
 use std::io::BufRead;
 
+pub mod brep;
+pub mod geometry;
 pub mod parser;
+
+pub use brep::{read_brep, BrepModel};
 
 use parser::{Instance, Param, Reader, Record};
 
@@ -70,6 +77,24 @@ struct Pending {
 const SURFACE: &str = "B_SPLINE_SURFACE";
 const CURVE: &str = "B_SPLINE_CURVE";
 
+/// The part of a complex B-spline instance that says where its knots come
+/// from (`…_WITH_KNOTS`, `UNIFORM_…`, `QUASI_UNIFORM_…`, `BEZIER_…`),
+/// whatever the order of the parts; `base` is `B_SPLINE_SURFACE` or
+/// `B_SPLINE_CURVE`.
+fn knot_part<'a>(base: &str, names: impl Iterator<Item = &'a str>) -> Option<&'a str> {
+    let kind = &base["B_SPLINE_".len()..];
+    let names: Vec<&str> = names.collect();
+    let wanted = [
+        format!("{base}_WITH_KNOTS"),
+        format!("QUASI_UNIFORM_{kind}"),
+        format!("UNIFORM_{kind}"),
+        format!("BEZIER_{kind}"),
+    ];
+    wanted
+        .iter()
+        .find_map(|w| names.iter().copied().find(|n| n == w))
+}
+
 /// Split a simple instance into the parts of its supertype chain, as a
 /// complex instance would list them: `NAME(name, base…, own…)` becomes
 /// `B_SPLINE_X(base…)` and `NAME(own…)`.
@@ -82,18 +107,7 @@ fn parts_of(inst: &Instance) -> Option<(String, BTreeMap<String, Vec<Param>>)> {
         let base = [SURFACE, CURVE]
             .into_iter()
             .find(|b| parts.contains_key(*b))?;
-        let leaf = inst
-            .records
-            .iter()
-            .map(|r| r.name.as_str())
-            .find(|n| n.starts_with(base) && *n != base)
-            .or_else(|| {
-                inst.records
-                    .iter()
-                    .map(|r| r.name.as_str())
-                    .find(|n| n.starts_with("BEZIER"))
-            })
-            .unwrap_or(base);
+        let leaf = knot_part(base, parts.keys().map(String::as_str)).unwrap_or(base);
         return Some((leaf.to_owned(), parts));
     }
     let Record { name, params } = &inst.records[0];
@@ -317,29 +331,44 @@ fn cartesian(r: &Record) -> Result<Vec<BigRational>, Error> {
 /// or malformed entities are not errors: see [`StepModel`].
 pub fn read_step(input: impl BufRead) -> Result<StepModel, Error> {
     let mut reader = Reader::new(input);
-    let mut model = StepModel::default();
-    let mut points: Points = HashMap::new();
-    let mut pending: BTreeMap<u64, Pending> = BTreeMap::new();
-    let mut faces: Vec<(u64, u64)> = Vec::new();
+    let mut collector = Collector::default();
     while let Some(inst) = reader.next_instance()? {
+        collector.add(&inst);
+    }
+    Ok(collector.finish())
+}
+
+/// Gathers the points, B-spline entities and faces of a stream of
+/// instances, then converts the B-splines.
+#[derive(Default)]
+struct Collector {
+    model: StepModel,
+    points: Points,
+    pending: BTreeMap<u64, Pending>,
+    faces: Vec<(u64, u64)>,
+}
+
+impl Collector {
+    fn add(&mut self, inst: &Instance) {
         let first = &inst.records[0];
+        let model = &mut self.model;
         if !inst.complex && first.name == "CARTESIAN_POINT" {
             match cartesian(first) {
                 Ok(x) => {
-                    points.insert(inst.id, x);
+                    self.points.insert(inst.id, x);
                 }
                 Err(e) => model.invalid.push((inst.id, e.to_string())),
             }
         } else if !inst.complex && (first.name == "ADVANCED_FACE" || first.name == "FACE_SURFACE") {
             match first.params.get(2) {
-                Some(Param::Ref(s)) => faces.push((inst.id, *s)),
+                Some(Param::Ref(s)) => self.faces.push((inst.id, *s)),
                 _ => model.invalid.push((
                     inst.id,
                     format!("{} without a surface reference", first.name),
                 )),
             }
-        } else if let Some((name, parts)) = parts_of(&inst) {
-            pending.insert(inst.id, Pending { name, parts });
+        } else if let Some((name, parts)) = parts_of(inst) {
+            self.pending.insert(inst.id, Pending { name, parts });
         } else {
             let name = if inst.complex {
                 format!(
@@ -356,26 +385,30 @@ pub fn read_step(input: impl BufRead) -> Result<StepModel, Error> {
             *model.skipped.entry(name).or_default() += 1;
         }
     }
-    let mut face_of: HashMap<u64, Vec<u64>> = HashMap::new();
-    for (f, s) in faces {
-        if pending.contains_key(&s) {
-            face_of.entry(s).or_default().push(f);
-        } else {
-            model.other_faces.push((f, s));
+
+    fn finish(self) -> StepModel {
+        let mut model = self.model;
+        let mut face_of: HashMap<u64, Vec<u64>> = HashMap::new();
+        for (f, s) in self.faces {
+            if self.pending.contains_key(&s) {
+                face_of.entry(s).or_default().push(f);
+            } else {
+                model.other_faces.push((f, s));
+            }
         }
-    }
-    for (id, p) in pending {
-        match build(&p, &points) {
-            Ok(nurbs) => model.entities.push(StepEntity {
-                id,
-                name: p.name,
-                nurbs,
-                faces: face_of.remove(&id).unwrap_or_default(),
-            }),
-            Err(e) => model.invalid.push((id, format!("{}: {e}", p.name))),
+        for (id, p) in self.pending {
+            match build(&p, &self.points) {
+                Ok(nurbs) => model.entities.push(StepEntity {
+                    id,
+                    name: p.name,
+                    nurbs,
+                    faces: face_of.remove(&id).unwrap_or_default(),
+                }),
+                Err(e) => model.invalid.push((id, format!("{}: {e}", p.name))),
+            }
         }
+        model
     }
-    Ok(model)
 }
 
 #[cfg(test)]

@@ -8,10 +8,15 @@
 //! ```
 //!
 //! Parameters: numbers (kept as their text, read exactly on demand),
-//! strings `'…'` (`''` is a quote), enumerations `.T.`, references `#7`,
-//! `$` (unset), `*` (derived), lists `( … )` and typed values `NAME( … )`.
-//! Comments `/* … */` are skipped anywhere outside strings. Reference:
-//! ISO 10303-21:2016 §6–§11 (the exchange structure's grammar).
+//! strings `'…'` (decoded by [`decode_string`]), enumerations `.T.`,
+//! references `#7`, `$` (unset), `*` (derived), lists `( … )` and typed
+//! values `NAME( … )`. Comments `/* … */` are skipped anywhere outside
+//! strings. Reference: ISO 10303-21:2016 §6–§11 (the exchange structure's
+//! grammar), §6.4.3 (strings).
+//!
+//! Bytes outside ASCII are tolerated inside strings (CAD systems write raw
+//! Latin-1 or UTF-8 in author names; strings are never geometry); outside a
+//! string they are an error naming the line of the byte.
 
 use crate::error::Error;
 use crate::limits::{MAX_STEP_DEPTH as MAX_DEPTH, MAX_STEP_STATEMENT as MAX_STATEMENT};
@@ -22,7 +27,7 @@ use std::io::BufRead;
 pub enum Param {
     /// An integer or real, as written (`2`, `-1.5E-3`, `0.`).
     Number(String),
-    /// A string (quotes removed, `''` unescaped).
+    /// A string, decoded ([`decode_string`]).
     Str(String),
     /// An enumeration `.NAME.` (dots removed).
     Enum(String),
@@ -78,9 +83,9 @@ impl<R: BufRead> Reader<R> {
         }
     }
 
-    /// The next statement's text (comments removed, strings kept), or
+    /// The next statement's bytes (comments removed, strings kept), or
     /// `None` at the end of input.
-    fn statement(&mut self) -> Result<Option<String>, Error> {
+    fn statement(&mut self) -> Result<Option<Vec<u8>>, Error> {
         let mut out: Vec<u8> = Vec::new();
         let mut in_str = false;
         let mut comment = false;
@@ -106,6 +111,9 @@ impl<R: BufRead> Reader<R> {
                     self.line += 1;
                 }
                 if comment {
+                    if b == b'\n' {
+                        out.push(b);
+                    }
                     if prev == b'*' && b == b'/' {
                         comment = false;
                         prev = 0;
@@ -123,6 +131,12 @@ impl<R: BufRead> Reader<R> {
                 if b == b'\'' {
                     in_str = !in_str;
                 }
+                if !in_str && !b.is_ascii() {
+                    self.input.consume(used);
+                    return Err(self.err(&format!(
+                        "the byte 0x{b:02X} outside a string (only ASCII is allowed there)"
+                    )));
+                }
                 if !in_str && b == b';' {
                     finished = true;
                     break;
@@ -135,9 +149,7 @@ impl<R: BufRead> Reader<R> {
                 return Err(self.err(&format!("a statement longer than {MAX_STATEMENT} bytes")));
             }
             if finished {
-                return String::from_utf8(out)
-                    .map(Some)
-                    .map_err(|_| self.err("a statement is not UTF-8 text"));
+                return Ok(Some(out));
             }
         }
     }
@@ -153,25 +165,30 @@ impl<R: BufRead> Reader<R> {
     /// [`Error::Format`] with the line number for malformed syntax.
     pub fn next_instance(&mut self) -> Result<Option<Instance>, Error> {
         while !self.done {
-            let Some(text) = self.statement()? else {
+            let Some(bytes) = self.statement()? else {
                 self.done = true;
                 break;
             };
-            let t = text.trim();
+            let t = bytes.trim_ascii();
             if !self.in_data {
-                if t == "DATA" || t.starts_with("DATA(") || t.starts_with("DATA (") {
+                if t == b"DATA" || t.starts_with(b"DATA(") || t.starts_with(b"DATA (") {
                     self.in_data = true;
                 }
                 continue;
             }
-            if t == "ENDSEC" {
+            if t == b"ENDSEC" {
                 self.in_data = false;
                 continue;
             }
-            if t.starts_with('#') {
-                return parse_instance(t).map(Some).map_err(|e| self.err(&e));
+            if t.starts_with(b"#") {
+                let end_line = self.line;
+                return parse_instance(t).map(Some).map_err(|(pos, e)| {
+                    let after = t[pos.min(t.len())..].iter().filter(|&&b| b == b'\n');
+                    let line = end_line - after.count();
+                    Error::Format(format!("STEP line {line}: {e}"))
+                });
             }
-            if t.starts_with("END-ISO-10303-21") {
+            if t.starts_with(b"END-ISO-10303-21") {
                 self.done = true;
             }
         }
@@ -292,33 +309,124 @@ impl Cursor<'_> {
 
     fn string(&mut self) -> Result<Param, String> {
         self.pos += 1;
-        let mut out = Vec::new();
+        let start = self.pos;
         loop {
             match self.s.get(self.pos) {
                 None => return Err("unterminated string".into()),
-                Some(b'\'') if self.s.get(self.pos + 1) == Some(&b'\'') => {
-                    out.push(b'\'');
-                    self.pos += 2;
-                }
+                Some(b'\'') if self.s.get(self.pos + 1) == Some(&b'\'') => self.pos += 2,
                 Some(b'\'') => {
                     self.pos += 1;
-                    return Ok(Param::Str(String::from_utf8_lossy(&out).into_owned()));
+                    return decode_string(&self.s[start..self.pos - 1]).map(Param::Str);
                 }
-                Some(&b) => {
-                    out.push(b);
-                    self.pos += 1;
-                }
+                Some(_) => self.pos += 1,
             }
         }
     }
 }
 
-/// Parse `#id = NAME(…)` or `#id = (NAME(…) NAME(…) …)`.
-fn parse_instance(text: &str) -> Result<Instance, String> {
-    let mut c = Cursor {
-        s: text.as_bytes(),
-        pos: 0,
-    };
+/// Decode the body of a string (between its quotes) per ISO 10303-21
+/// §6.4.3: `''` is a quote, `\\` a backslash, `\S\c` the character
+/// `c` + 128 of the current ISO 8859 page (`\PA\` … `\PI\` choose it;
+/// only part 1, Latin-1, is mapped, other pages give U+FFFD), `\X\hh` the
+/// Latin-1 character `hh`, `\X2\hhhh…\X0\` UTF-16 code units and
+/// `\X4\hhhhhhhh…\X0\` UCS-4 characters. Raw bytes outside ASCII are
+/// kept as UTF-8 where they form it, else read as Latin-1.
+///
+/// # Errors
+///
+/// A malformed escape (bad hex digits, a missing `\X0\`), described.
+///
+/// ```
+/// use exact_bezier::step::parser::decode_string;
+/// assert_eq!(decode_string(br"K\X\F6ln \X2\00E9\X0\t\S\) it''s").unwrap(), "Köln ét© it's");
+/// ```
+pub fn decode_string(raw: &[u8]) -> Result<String, String> {
+    let mut out = String::with_capacity(raw.len());
+    let mut page = b'A';
+    let mut i = 0;
+    while i < raw.len() {
+        let rest = &raw[i..];
+        if rest.starts_with(b"''") {
+            out.push('\'');
+            i += 2;
+        } else if rest.starts_with(b"\\\\") {
+            out.push('\\');
+            i += 2;
+        } else if rest.starts_with(b"\\S\\") && rest.len() > 3 {
+            let c = u32::from(rest[3]) + 128;
+            out.push(if page == b'A' {
+                char::from_u32(c).unwrap_or(char::REPLACEMENT_CHARACTER)
+            } else {
+                char::REPLACEMENT_CHARACTER
+            });
+            i += 4;
+        } else if rest.starts_with(b"\\P") && rest.len() > 3 && rest.get(3) == Some(&b'\\') {
+            page = rest[2];
+            i += 4;
+        } else if rest.starts_with(b"\\X\\") {
+            out.push(char::from(hex(rest.get(3..5), "\\X\\")? as u8));
+            i += 5;
+        } else if rest.starts_with(b"\\X2\\") || rest.starts_with(b"\\X4\\") {
+            i += 4 + wide(&rest[4..], rest[2] == b'4', &mut out)?;
+        } else if rest[0].is_ascii() {
+            out.push(char::from(rest[0]));
+            i += 1;
+        } else {
+            let n = rest.iter().take_while(|b| !b.is_ascii()).count();
+            match std::str::from_utf8(&rest[..n]) {
+                Ok(t) => out.push_str(t),
+                Err(_) => out.extend(rest[..n].iter().map(|&b| char::from(b))),
+            }
+            i += n;
+        }
+    }
+    Ok(out)
+}
+
+/// The value of the hex digits `digits`.
+fn hex(digits: Option<&[u8]>, what: &str) -> Result<u32, String> {
+    digits
+        .and_then(|d| std::str::from_utf8(d).ok())
+        .and_then(|d| u32::from_str_radix(d, 16).ok())
+        .ok_or_else(|| format!("a malformed {what} escape in a string"))
+}
+
+/// Decode the characters of a `\X2\` (UTF-16, `ucs4` false) or `\X4\`
+/// (UCS-4) escape up to its `\X0\`; returns the bytes used.
+fn wide(s: &[u8], ucs4: bool, out: &mut String) -> Result<usize, String> {
+    let what = if ucs4 { "\\X4\\" } else { "\\X2\\" };
+    let end = s
+        .windows(4)
+        .position(|w| w == b"\\X0\\")
+        .ok_or_else(|| format!("a {what} escape without its \\X0\\ in a string"))?;
+    let width = if ucs4 { 8 } else { 4 };
+    if end % width != 0 {
+        return Err(format!("a malformed {what} escape in a string"));
+    }
+    let units = (0..end / width)
+        .map(|k| hex(s.get(k * width..(k + 1) * width), what))
+        .collect::<Result<Vec<u32>, _>>()?;
+    if ucs4 {
+        out.extend(
+            units
+                .iter()
+                .map(|&u| char::from_u32(u).unwrap_or(char::REPLACEMENT_CHARACTER)),
+        );
+    } else {
+        let units16 = units.iter().map(|&u| u as u16);
+        out.extend(char::decode_utf16(units16).map(|c| c.unwrap_or(char::REPLACEMENT_CHARACTER)));
+    }
+    Ok(end + 4)
+}
+
+/// Parse `#id = NAME(…)` or `#id = (NAME(…) NAME(…) …)`; an error comes
+/// with the byte position where it was found.
+fn parse_instance(text: &[u8]) -> Result<Instance, (usize, String)> {
+    let mut c = Cursor { s: text, pos: 0 };
+    instance(&mut c).map_err(|e| (c.pos, e))
+}
+
+fn instance(c: &mut Cursor) -> Result<Instance, String> {
     let id = c.id()?;
     c.expect(b'=')?;
     let complex = c.peek() == Some(b'(');
@@ -339,6 +447,9 @@ fn parse_instance(text: &str) -> Result<Instance, String> {
             name,
             params: c.params(1)?,
         });
+    }
+    if records.is_empty() {
+        return Err(format!("instance #{id} has no record"));
     }
     if c.peek().is_some() {
         return Err(format!("trailing text after instance #{id}"));
@@ -412,5 +523,52 @@ mod tests {
         assert!(e.to_string().contains("missing ';'"), "{e}");
         let deep = format!("DATA;\n#1 = FOO({}1{});", "(".repeat(100), ")".repeat(100));
         assert!(all(&deep).unwrap_err().to_string().contains("nested"));
+    }
+
+    #[test]
+    fn strings_are_decoded_per_part_21() {
+        let cases: [(&[u8], &str); 7] = [
+            (br"it''s", "it's"),
+            (br"a\\b", r"a\b"),
+            (br"\X\E9t\X\E9", "été"),
+            (br"\X2\03B103B2\X0\!", "αβ!"),
+            (br"\X4\0001F600\X0\", "😀"),
+            (br"\PA\\S\i", "é"),
+            (b"Jos\xe9 M\xc3\xbcller", "José Müller"),
+        ];
+        for (raw, want) in cases {
+            assert_eq!(decode_string(raw).unwrap(), want, "{raw:?}");
+        }
+        // U+1F600 as a UTF-16 surrogate pair.
+        assert_eq!(decode_string(br"\X2\D83DDE00\X0\").unwrap(), "😀");
+        assert!(decode_string(br"\X2\00E9").unwrap_err().contains(r"\X0\"));
+        assert!(decode_string(br"\X\G1").is_err());
+    }
+
+    #[test]
+    fn raw_bytes_in_strings_are_read_and_outside_strings_name_their_line() {
+        // A SolidWorks-style header and data string with Latin-1 bytes.
+        let mut text = b"ISO-10303-21;\nHEADER;\nFILE_NAME('x','',('Ren\xe9'),(''),'','','');\nENDSEC;\nDATA;\n".to_vec();
+        text.extend_from_slice(
+            b"#1=PERSON('M\xfcller',\n'x',$,$,$,$);\n#2=CARTESIAN_POINT('',(1.,2.,3.));\nENDSEC;\n",
+        );
+        let mut r = Reader::new(&text[..]);
+        let p = r.next_instance().unwrap().unwrap();
+        assert_eq!(p.records[0].params[0], Param::Str("Müller".into()));
+        assert_eq!(r.next_instance().unwrap().unwrap().id, 2);
+        let bad = b"DATA;\n#1=FOO(1,\n2\xe9,\n3);\n";
+        let e = Reader::new(&bad[..]).next_instance().unwrap_err();
+        assert!(e.to_string().contains("STEP line 3"), "{e}");
+        assert!(e.to_string().contains("0xE9"), "{e}");
+    }
+
+    #[test]
+    fn a_syntax_error_names_the_line_where_it_is() {
+        let e = all("DATA;\n#1 = FOO(1,\n2,\n3 4,\n5);\n").unwrap_err();
+        assert!(e.to_string().contains("STEP line 4"), "{e}");
+        assert!(all("DATA;\n#1 = ();\n")
+            .unwrap_err()
+            .to_string()
+            .contains("no record"));
     }
 }

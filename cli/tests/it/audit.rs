@@ -291,8 +291,9 @@ fn step_file_convert_and_audit() {
     assert_eq!(v["skipped_entities"]["AXIS2_PLACEMENT_3D"], 1);
     let (code, v) = cli_json(&["convert", p, "--to", "bezier"]);
     assert_eq!(code, 0);
-    assert_eq!(v[1]["origin"]["entity"], "#11");
-    assert_eq!(v[1]["points"][1][1], serde_json::json!([2, 0, "1/2"]));
+    let piece = &v["faces"][1]["surface"]["pieces"][0];
+    assert_eq!(piece["origin"]["entity"], "#11");
+    assert_eq!(piece["points"][1][1], serde_json::json!([2, 0, "1/2"]));
     std::fs::remove_file(&path).unwrap();
     let _: Value = v;
 }

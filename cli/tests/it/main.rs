@@ -17,5 +17,6 @@ mod intersect;
 mod mesh;
 mod plot;
 mod schema;
+mod sources;
 mod surfaces;
 mod trig;

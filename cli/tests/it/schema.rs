@@ -203,12 +203,7 @@ fn command_outputs_match_the_schema() {
     assert_valid(
         "patches",
         "convert --to bezier",
-        &strip_origins(output(&[
-            "convert",
-            "tests/fixtures/cylinder.json",
-            "--to",
-            "bezier",
-        ])),
+        &output(&["convert", "tests/fixtures/cylinder.json", "--to", "bezier"]),
     );
     let curves = "docs/examples/three_curves.jsonl";
     for (cmd, def) in [("dedup", "dedupLine"), ("key", "keyLine")] {
@@ -250,14 +245,30 @@ fn algebraic_outputs_match_the_schema() {
     }
 }
 
-/// The pieces of `convert --to bezier` without their `origin` field (the
-/// one field beyond the patch format).
-fn strip_origins(mut v: Value) -> Value {
-    for piece in v.as_array_mut().expect("an array of pieces") {
-        piece
-            .as_object_mut()
-            .expect("a piece object")
-            .remove("origin");
+#[test]
+fn the_step_brep_output_matches_the_schema_and_reads_back() {
+    let stp = "tests/fixtures/step/nist_ftc_06_asme1_rd.stp";
+    assert_valid(
+        "brep",
+        "convert STEP --to bezier",
+        &output(&["convert", stp, "--to", "bezier"]),
+    );
+    let (code, out, err) = cli(&["convert", stp, "--to", "bezier", "--jsonl"]);
+    assert_eq!(code, 0, "{err}");
+    let lines: Vec<Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).expect("one JSON value a line"))
+        .collect();
+    // 144 faces, 310 edges and 227 vertices (counted in the text), then the model.
+    assert_eq!(lines.len(), 144 + 310 + 227 + 1);
+    for line in &lines[..144] {
+        assert_valid("brepFace", "a face line", line);
     }
-    v
+    assert_valid("brepEdge", "an edge line", &lines[144]);
+    assert_valid("brepVertex", "a vertex line", &lines[454]);
+    assert_valid("brepModel", "the model line", &lines[681]);
+    // A piece with its origin is a patch every reader takes.
+    let piece = r##"[{"kind":"curve","points":[[0,0],[1,1]],"origin":{"entity":"#4","faces":["#5"],"span_u":[0,"1/2"]}}]"##;
+    assert_valid("input", "a piece", &serde_json::from_str(piece).unwrap());
+    assert!(exact_bezier::io::read_patches(piece).is_ok());
 }

@@ -23,9 +23,14 @@
 //! `CRootOf(<primitive integer polynomial in x>, k)` with `k` the index of
 //! the real root in increasing order.
 //!
-//! Bounds on hostile input: at most 10 000 characters, nesting depth 64,
-//! root indices and exponents at most 64 in absolute value, `CRootOf`
-//! degree at most [`crate::limits::MAX_DEGREE`].
+//! Bounds on hostile input: at most [`crate::limits::max_algebraic_text`]
+//! characters (64 per digit of `--max-digits`, at least 10 000), nesting
+//! depth 64 (brackets, calls and power exponents each count a level), root
+//! indices and exponents at most 64 in absolute value, `CRootOf` degree at
+//! most [`crate::limits::MAX_DEGREE`]. The writer stays inside them: a
+//! radical of index over 64 is written as nested roots (`root(sqrt(2), 64)`
+//! for `2^(1/128)`), and a command checks every number it writes
+//! ([`crate::limits::check_written_number`]).
 
 use super::polys::{primitive_integer, QPoly};
 use super::radical::RadicalSum;
@@ -34,8 +39,7 @@ use crate::algebra::scalar::{Field, Roots};
 use crate::algebra::upoly::UPoly;
 use crate::error::Error;
 use crate::limits::{
-    MAX_ALGEBRAIC_DEPTH as MAX_DEPTH, MAX_ALGEBRAIC_EXPONENT as MAX_EXPONENT,
-    MAX_ALGEBRAIC_TEXT as MAX_LEN, MAX_DEGREE,
+    MAX_ALGEBRAIC_DEPTH as MAX_DEPTH, MAX_ALGEBRAIC_EXPONENT as MAX_EXPONENT, MAX_DEGREE,
 };
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -47,7 +51,9 @@ enum Ast {
     Num(BigRational),
     X,
     Neg(Box<Ast>),
-    Bin(char, Box<Ast>, Box<Ast>),
+    /// `a op b op c …` of one precedence level, kept flat (a long sum is
+    /// one node, not a deep tree): the first operand and `(op, operand)`s.
+    Chain(Box<Ast>, Vec<(char, Ast)>),
     Pow(Box<Ast>, Box<Ast>),
     Call(String, Vec<Ast>),
 }
@@ -70,8 +76,12 @@ pub fn parse_algebraic(text: &str) -> Result<RealAlgebraic, Error> {
 }
 
 pub(crate) fn parse(text: &str) -> Result<RealAlgebraic, Error> {
-    if text.len() > MAX_LEN {
-        return Err(bad(text, "longer than 10000 characters"));
+    let max_len = crate::limits::max_algebraic_text();
+    if text.len() > max_len {
+        return Err(bad(
+            text,
+            &format!("longer than {max_len} characters (the bound grows with --max-digits)"),
+        ));
     }
     let tokens = tokenize(text)?;
     let mut p = Parser {
@@ -164,53 +174,73 @@ impl Parser<'_> {
         }
     }
 
-    fn expr(&mut self) -> Result<Ast, Error> {
+    /// One more level of nesting (a bracket, a call's arguments or a
+    /// power's exponent), refused past [`MAX_DEPTH`]; [`Parser::leave`]
+    /// ends it.
+    fn enter(&mut self) -> Result<(), Error> {
         self.depth += 1;
         if self.depth > MAX_DEPTH {
-            return Err(bad(self.text, "nested more than 64 deep"));
+            return Err(bad(
+                self.text,
+                &format!("nested more than {MAX_DEPTH} deep"),
+            ));
         }
-        let mut acc = self.term()?;
-        while let Some(op) = ["+", "-"].into_iter().find(|o| self.peek_op(o)) {
-            self.pos += 1;
-            let rhs = self.term()?;
-            acc = Ast::Bin(op.chars().next().expect("op"), Box::new(acc), Box::new(rhs));
-        }
+        Ok(())
+    }
+
+    fn leave(&mut self) {
         self.depth -= 1;
-        Ok(acc)
+    }
+
+    /// `first (op next)*` for the operators `ops`, as one flat node.
+    fn chain(
+        &mut self,
+        ops: [&'static str; 2],
+        next: fn(&mut Self) -> Result<Ast, Error>,
+    ) -> Result<Ast, Error> {
+        let first = next(self)?;
+        let mut rest = Vec::new();
+        while let Some(op) = ops.into_iter().find(|o| self.peek_op(o)) {
+            self.pos += 1;
+            rest.push((op.chars().next().expect("op"), next(self)?));
+        }
+        Ok(if rest.is_empty() {
+            first
+        } else {
+            Ast::Chain(Box::new(first), rest)
+        })
+    }
+
+    fn expr(&mut self) -> Result<Ast, Error> {
+        self.chain(["+", "-"], Self::term)
     }
 
     fn term(&mut self) -> Result<Ast, Error> {
-        let mut acc = self.unary()?;
-        while let Some(op) = ["*", "/"].into_iter().find(|o| self.peek_op(o)) {
-            self.pos += 1;
-            let rhs = self.unary()?;
-            acc = Ast::Bin(op.chars().next().expect("op"), Box::new(acc), Box::new(rhs));
-        }
-        Ok(acc)
+        self.chain(["*", "/"], Self::unary)
     }
 
+    /// Signs (any number, read in a loop), then a power.
     fn unary(&mut self) -> Result<Ast, Error> {
-        self.depth += 1;
-        if self.depth > MAX_DEPTH {
-            return Err(bad(self.text, "nested more than 64 deep"));
+        let mut negative = false;
+        while let Some(op) = ["-", "+"].into_iter().find(|o| self.peek_op(o)) {
+            self.pos += 1;
+            negative ^= op == "-";
         }
-        let out = if self.peek_op("-") {
+        let base = self.atom()?;
+        let power = if self.peek_op("**") {
             self.pos += 1;
-            Ast::Neg(Box::new(self.unary()?))
-        } else if self.peek_op("+") {
-            self.pos += 1;
-            self.unary()?
+            self.enter()?;
+            let e = self.unary()?;
+            self.leave();
+            Ast::Pow(Box::new(base), Box::new(e))
         } else {
-            let base = self.atom()?;
-            if self.peek_op("**") {
-                self.pos += 1;
-                Ast::Pow(Box::new(base), Box::new(self.unary()?))
-            } else {
-                base
-            }
+            base
         };
-        self.depth -= 1;
-        Ok(out)
+        Ok(if negative {
+            Ast::Neg(Box::new(power))
+        } else {
+            power
+        })
     }
 
     fn atom(&mut self) -> Result<Ast, Error> {
@@ -221,8 +251,10 @@ impl Parser<'_> {
             }
             Some(Tok::Op("(")) => {
                 self.pos += 1;
+                self.enter()?;
                 let e = self.expr()?;
                 self.expect(")")?;
+                self.leave();
                 Ok(e)
             }
             Some(Tok::Ident(name)) => {
@@ -231,12 +263,14 @@ impl Parser<'_> {
                     return Ok(Ast::X);
                 }
                 self.expect("(")?;
+                self.enter()?;
                 let mut args = vec![self.expr()?];
                 while self.peek_op(",") {
                     self.pos += 1;
                     args.push(self.expr()?);
                 }
                 self.expect(")")?;
+                self.leave();
                 Ok(Ast::Call(name, args))
             }
             _ => Err(bad(self.text, "expected a number, a bracket or a function")),
@@ -267,15 +301,19 @@ fn eval(ast: &Ast, text: &str) -> Result<RealAlgebraic, Error> {
         Ast::Num(q) => RealAlgebraic::rat(q.clone()),
         Ast::X => return Err(bad(text, "x may appear only inside CRootOf")),
         Ast::Neg(a) => -eval(a, text)?,
-        Ast::Bin(op, a, b) => {
-            let (a, b) = (eval(a, text)?, eval(b, text)?);
-            match op {
-                '+' => a + b,
-                '-' => a - b,
-                '*' => a * b,
-                _ if b.is_zero() => return Err(bad(text, "division by zero")),
-                _ => a / b,
+        Ast::Chain(first, rest) => {
+            let mut acc = eval(first, text)?;
+            for (op, b) in rest {
+                let b = eval(b, text)?;
+                acc = match op {
+                    '+' => acc + b,
+                    '-' => acc - b,
+                    '*' => acc * b,
+                    _ if b.is_zero() => return Err(bad(text, "division by zero")),
+                    _ => acc / b,
+                };
             }
+            acc
         }
         Ast::Pow(base, e) => {
             let e = rat(e)?;
@@ -356,22 +394,26 @@ fn eval_poly(ast: &Ast, text: &str) -> Result<QPoly, Error> {
     Ok(match ast {
         Ast::X => UPoly::new(vec![BigRational::zero(), BigRational::one()]),
         Ast::Neg(a) => eval_poly(a, text)?.scale(&-BigRational::one()),
-        Ast::Bin(op, a, b) => {
-            let (a, b) = (eval_poly(a, text)?, eval_poly(b, text)?);
-            match op {
-                '+' => a.add(&b),
-                '-' => a.sub(&b),
-                '*' => a.mul(&b),
-                _ => match b.degree() {
-                    Some(0) => a.scale(&b.coeffs()[0].recip()),
-                    _ => {
-                        return Err(bad(
-                            text,
-                            "a polynomial may be divided only by a non-zero number",
-                        ))
-                    }
-                },
+        Ast::Chain(first, rest) => {
+            let mut acc = eval_poly(first, text)?;
+            for (op, b) in rest {
+                let b = eval_poly(b, text)?;
+                acc = match op {
+                    '+' => acc.add(&b),
+                    '-' => acc.sub(&b),
+                    '*' => acc.mul(&b),
+                    _ => match b.degree() {
+                        Some(0) => acc.scale(&b.coeffs()[0].recip()),
+                        _ => {
+                            return Err(bad(
+                                text,
+                                "a polynomial may be divided only by a non-zero number",
+                            ))
+                        }
+                    },
+                };
             }
+            acc
         }
         Ast::Pow(base, e) => {
             let base = eval_poly(base, text)?;
@@ -393,12 +435,28 @@ fn eval_poly(ast: &Ast, text: &str) -> Result<QPoly, Error> {
     })
 }
 
-/// `sqrt(R)`, `cbrt(R)` or `root(R, n)`.
+/// `sqrt(R)`, `cbrt(R)` or `root(R, n)`; an index over the reader's
+/// bound [`MAX_EXPONENT`] is written as nested roots whose indices are at
+/// most that bound and multiply to `n` (`root(2, 128)` is
+/// `root(sqrt(2), 64)`), so that the reader takes back what is written. The
+/// index of a radical has no prime factor over 64: every index comes from
+/// a root index or exponent the reader took (≤ 64) or divides the degree of
+/// a field built from numbers of degree ≤ 64.
 fn root_word(n: u32, r: &BigInt) -> String {
-    match n {
-        2 => format!("sqrt({r})"),
-        3 => format!("cbrt({r})"),
-        _ => format!("root({r}, {n})"),
+    let bound = MAX_EXPONENT as u32;
+    let outer = (2..=bound.min(n))
+        .rev()
+        .find(|f| n % f == 0 && n / f <= bound)
+        .or_else(|| (2..=bound.min(n)).rev().find(|f| n % f == 0))
+        .filter(|_| n > bound);
+    let (index, inner) = match outer {
+        Some(f) => (f, root_word(n / f, r)),
+        None => (n, r.to_string()),
+    };
+    match index {
+        2 => format!("sqrt({inner})"),
+        3 => format!("cbrt({inner})"),
+        _ => format!("root({inner}, {index})"),
     }
 }
 
@@ -466,4 +524,54 @@ pub(crate) fn root_text(p: &QPoly, k: usize) -> String {
         out.push_str(&body);
     }
     format!("CRootOf({out}, {k})")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::scalar::Scalar;
+
+    /// `sqrt` nested 7 times around 2 is `2^(1/128)`: written with indices
+    /// of at most 64, and read back as the same number (issue 32).
+    #[test]
+    fn a_root_of_index_over_64_is_written_readably() {
+        let text = (0..7).fold("2".to_string(), |acc, _| format!("sqrt({acc})"));
+        let x = parse(&text).unwrap();
+        let written = x.to_string();
+        assert_eq!(written, "root(sqrt(2), 64)");
+        assert_eq!(parse(&written).unwrap(), x);
+        // 2^(1/128) raised to 128 is 2 (an independent check of the value).
+        assert_eq!(x.pow_u32(128), RealAlgebraic::from_i64(2));
+    }
+
+    /// The documented nesting depth is 64 brackets: 64 nested calls are
+    /// read, 65 are refused with the bound named.
+    #[test]
+    fn nesting_depth_is_64_brackets() {
+        let nest = |k: usize| (0..k).fold("1".to_string(), |acc, _| format!("({acc})"));
+        assert_eq!(parse(&nest(64)).unwrap(), RealAlgebraic::from_i64(1));
+        let err = parse(&nest(65)).unwrap_err().to_string();
+        assert!(err.contains("nested more than 64 deep"), "{err}");
+        let calls = (0..64).fold("4".to_string(), |acc, _| format!("Rational({acc}, 1)"));
+        assert_eq!(parse(&calls).unwrap(), RealAlgebraic::from_i64(4));
+        // Signs are not nesting: a long run of them is read in a loop.
+        assert_eq!(
+            parse(&format!("{}1", "-".repeat(1001))).unwrap(),
+            RealAlgebraic::from_i64(-1)
+        );
+    }
+
+    /// A long sum is one flat node: 20 000 terms (over 10 000 characters,
+    /// within the default 64 000) are read without deep recursion.
+    #[test]
+    fn long_sums_are_flat() {
+        let text = vec!["1"; 20_000].join("+");
+        assert!(text.len() > 10_000);
+        assert_eq!(parse(&text).unwrap(), RealAlgebraic::from_i64(20_000));
+        let over = vec!["1"; 40_000].join("+");
+        assert!(parse(&over)
+            .unwrap_err()
+            .to_string()
+            .contains("longer than 64000"));
+    }
 }

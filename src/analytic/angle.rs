@@ -1,0 +1,195 @@
+//! Plane angles of STEP ([`AngleUnit`]) and the slope `tan α` of a cone's
+//! `semi_angle` ([`cone_slope`]), exact where it can be.
+//!
+//! `tan α` of a decimal angle is transcendental in general. The rule:
+//!
+//! 1. **Exact** when the decimal is the rounding, to its printed digits, of
+//!    a multiple `k·15°` (`k = 1…5`; `kπ/12` in radians): then `α` is taken
+//!    as that multiple and `tan α ∈ Q(√3)` exactly (`2 − √3, √3/3, 1, √3,
+//!    2 + √3`). "Is the rounding" is decided rigorously: `|d − k·15°| ≤ ½`
+//!    unit of the last printed digit, with π enclosed in
+//!    `[3.14159…841971, +10⁻⁴⁰]` (40 correct decimals), and the match is
+//!    accepted only if the whole enclosure is within the half unit.
+//! 2. **Approximate** otherwise (or when `T` has no `√3`, e.g.
+//!    `BigRational`): `tan α` is enclosed rigorously (alternating Taylor
+//!    partial sums bracket `sin` and `cos` for `0 < α < π/2`), and the slope
+//!    is the dyadic rational with 64 fractional bits nearest the middle; the
+//!    result carries an exact bound `error ≥ |slope − tan α|` and
+//!    `exact = false`. Nothing is approximated silently.
+
+use crate::algebra::parse_rational;
+use crate::algebra::scalar::{Field, Ordered, Roots, Scalar};
+use crate::error::Error;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
+
+/// The plane angle unit of a STEP representation context.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AngleUnit {
+    /// `SI_UNIT($, .RADIAN.)`.
+    Radian,
+    /// A degree (`CONVERSION_BASED_UNIT('DEGREE', …)`): π/180 rad.
+    Degree,
+}
+
+/// The slope `tan α` of a cone, with how it was obtained.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Slope<T> {
+    /// `tan α`, exact when `exact`, else within `error` of it.
+    pub tan: T,
+    /// Was `α` recognised as a multiple of 15° (see the module docs)?
+    pub exact: bool,
+    /// An exact upper bound of `|tan − tan α|` (0 when `exact`).
+    pub error: BigRational,
+}
+
+fn q(n: i64, d: i64) -> BigRational {
+    BigRational::new(BigInt::from(n), BigInt::from(d))
+}
+
+/// π ∈ [lo, hi], from its first 40 decimals.
+fn pi_enclosure() -> (BigRational, BigRational) {
+    let lo = parse_rational("3.1415926535897932384626433832795028841971").expect("a decimal");
+    let hi = lo.clone() + BigRational::new(BigInt::one(), BigInt::from(10).pow(40));
+    (lo, hi)
+}
+
+/// Half a unit of the last printed digit of a decimal `[-]m[.f][E e]`.
+fn half_ulp(text: &str) -> Result<BigRational, Error> {
+    let t = text.trim().trim_start_matches(['+', '-']);
+    let (mantissa, exp) = match t.find(['e', 'E']) {
+        Some(k) => (&t[..k], t[k + 1..].parse::<i32>().map_err(|_| bad(text))?),
+        None => (t, 0),
+    };
+    let frac = mantissa.split_once('.').map_or(0, |(_, f)| f.len()) as i32;
+    let p = exp - frac;
+    let ten = BigRational::from_integer(BigInt::from(10));
+    let ulp = if p >= 0 {
+        ten.pow(p)
+    } else {
+        ten.pow(-p).recip()
+    };
+    Ok(ulp / BigRational::from_integer(BigInt::from(2)))
+}
+
+fn bad(text: &str) -> Error {
+    Error::BadNumber(format!("{text:?} is not a decimal angle"))
+}
+
+/// The slope `tan α` of the cone `semi_angle` written as `text` in `unit`
+/// (see the module docs for the exact/approximate rule).
+///
+/// # Errors
+///
+/// [`Error::BadNumber`] if `text` is not a decimal; [`Error::Domain`]
+/// unless `0 < α < 90°`.
+///
+/// ```
+/// use exact_bezier::{analytic::{cone_slope, AngleUnit}, algebra::RealAlgebraic, Scalar};
+/// let s = cone_slope::<RealAlgebraic>("0.523598775598299", AngleUnit::Radian).unwrap();
+/// assert!(s.exact); // π/6 to 15 decimals: tan = √3/3
+/// assert_eq!(s.tan.clone() * &s.tan, RealAlgebraic::from_i64(1) / RealAlgebraic::from_i64(3));
+/// let t = cone_slope::<RealAlgebraic>("59.", AngleUnit::Degree).unwrap();
+/// assert!(!t.exact);
+/// assert!(t.error < exact_bezier::ratio(1, 1i64 << 60));
+/// ```
+pub fn cone_slope<T: Field + Ordered + Roots>(
+    text: &str,
+    unit: AngleUnit,
+) -> Result<Slope<T>, Error> {
+    let d = parse_rational(text)?;
+    let half = half_ulp(text)?;
+    let (pi_lo, pi_hi) = pi_enclosure();
+    // α in radians is in [lo, hi].
+    let (lo, hi) = match unit {
+        AngleUnit::Radian => (d.clone(), d.clone()),
+        AngleUnit::Degree => (
+            d.clone() * &pi_lo / q(180, 1),
+            d.clone() * &pi_hi / q(180, 1),
+        ),
+    };
+    if !lo.is_positive() || hi >= pi_lo.clone() / q(2, 1) {
+        return Err(Error::Domain(format!(
+            "a cone's semi_angle must lie strictly between 0 and 90°, not {text}"
+        )));
+    }
+    for k in 1..=5i64 {
+        let (a, b) = match unit {
+            AngleUnit::Degree => (q(15 * k, 1), q(15 * k, 1)),
+            AngleUnit::Radian => (pi_lo.clone() * q(k, 12), pi_hi.clone() * q(k, 12)),
+        };
+        if (a - &d).abs() <= half && (b - &d).abs() <= half {
+            if let Some(tan) = tan_15::<T>(k) {
+                return Ok(Slope {
+                    tan,
+                    exact: true,
+                    error: BigRational::zero(),
+                });
+            }
+        }
+    }
+    approximate(&lo, &hi)
+}
+
+/// `tan(k·15°)` for `k = 1…5`, or `None` without `√3` in `T`.
+fn tan_15<T: Field + Roots>(k: i64) -> Option<T> {
+    if k == 3 {
+        return Some(T::one());
+    }
+    let r3 = T::from_i64(3).nth_root(2)?;
+    let two = T::from_i64(2);
+    Some(match k {
+        1 => two - &r3,
+        2 => r3 / &T::from_i64(3),
+        4 => r3,
+        _ => two + &r3,
+    })
+}
+
+/// `sin x` and `cos x` bracketed by consecutive alternating partial sums
+/// (valid for `0 < x < √6`, where the terms decrease).
+fn bracket(x: &BigRational, odd: bool) -> (BigRational, BigRational) {
+    let eps = BigRational::new(BigInt::one(), BigInt::one() << 80);
+    let x2 = x.clone() * x;
+    let (mut term, mut n) = if odd {
+        (x.clone(), 1i64)
+    } else {
+        (BigRational::one(), 0i64)
+    };
+    let mut sum = term.clone();
+    loop {
+        term = -term * &x2 / q((n + 1) * (n + 2), 1);
+        n += 2;
+        let next = sum.clone() + &term;
+        if term.abs() < eps {
+            return if sum < next { (sum, next) } else { (next, sum) };
+        }
+        sum = next;
+    }
+}
+
+/// The 64-bit dyadic slope nearest the middle of a rigorous enclosure of
+/// `tan α` for `α ∈ [lo, hi] ⊂ (0, π/2)`, with its error bound.
+fn approximate<T: Scalar>(lo: &BigRational, hi: &BigRational) -> Result<Slope<T>, Error> {
+    let (s_lo, _) = bracket(lo, true);
+    let (_, c_hi) = bracket(lo, false);
+    let (_, s_hi) = bracket(hi, true);
+    let (c_lo, _) = bracket(hi, false);
+    if !s_lo.is_positive() || !c_lo.is_positive() {
+        return Err(Error::Domain(
+            "a cone's semi_angle too close to 0 or 90° to bound its tangent".into(),
+        ));
+    }
+    // tan is increasing on (0, π/2).
+    let (t_lo, t_hi) = (s_lo / c_hi, s_hi / c_lo);
+    let scale = BigRational::from_integer(BigInt::one() << 64);
+    let mid = (t_lo.clone() + &t_hi) / q(2, 1);
+    let tan = (mid * &scale).round() / &scale;
+    let error = (tan.clone() - t_lo).max(t_hi - &tan);
+    Ok(Slope {
+        tan: T::from_rational(&tan),
+        exact: false,
+        error,
+    })
+}

@@ -1,0 +1,120 @@
+//! Unit tests of the analytic module: placement defaults and errors,
+//! polylines, extrusion ranges, trimming errors.
+
+use super::*;
+use crate::algebra::RealAlgebraic;
+use crate::error::Error;
+use crate::ratio;
+use num_rational::BigRational;
+
+type Q = BigRational;
+
+fn q(n: i64) -> Q {
+    ratio(n, 1)
+}
+
+#[test]
+fn placement_defaults_follow_iso() {
+    let o = [q(0), q(0), q(0)];
+    // No axis: z = (0, 0, 1); no ref_direction: x = (1, 0, 0).
+    let f = Frame::from_placement(&o, None, None).unwrap();
+    assert_eq!(
+        (f.x.clone(), f.z.clone()),
+        (vec![q(1), q(0), q(0)], vec![q(0), q(0), q(1)])
+    );
+    // An axis along x: the default ref_direction is (0, 1, 0).
+    let f = Frame::from_placement(&o, Some(&[q(-2), q(0), q(0)]), None).unwrap();
+    assert_eq!(f.x, vec![q(0), q(1), q(0)]);
+    assert_eq!(f.z, vec![q(-1), q(0), q(0)]);
+    assert_eq!(f.y, vec![q(0), q(0), q(-1)]);
+}
+
+#[test]
+fn bad_placements_are_typed_errors() {
+    let o = [q(0), q(0), q(0)];
+    let z = [q(0), q(0), q(3)];
+    assert!(matches!(
+        Frame::from_placement(&o, Some(&z), Some(&[q(0), q(0), q(-1)])),
+        Err(Error::Domain(_))
+    ));
+    assert!(matches!(
+        Frame::from_placement(&o, Some(&[q(0), q(0), q(0)]), None),
+        Err(Error::Domain(_))
+    ));
+    assert!(matches!(
+        Frame::from_placement(&o, Some(&[q(1), q(1), q(0)]), None),
+        Err(Error::NotRational(_))
+    ));
+    assert!(matches!(
+        Frame::from_placement(&o[..2], None, None),
+        Err(Error::Shape(_))
+    ));
+    // The same irrational axis is exact over the real algebraic numbers.
+    let r = |n: i64| RealAlgebraic::from_i64(n);
+    let f = Frame::from_placement(&[r(0), r(0), r(0)], Some(&[r(1), r(1), r(0)]), None).unwrap();
+    assert_eq!(f.z[0].clone() * &f.z[0], RealAlgebraic::from_i64(1) / r(2));
+}
+
+#[test]
+fn polyline_piece_k_at_t_is_u_k_plus_t() {
+    let pts = vec![vec![q(0), q(0)], vec![q(2), q(0)], vec![q(2), q(4)]];
+    let c = polyline(&pts);
+    assert_eq!(c.len(), 2);
+    assert_eq!(c[1].eval(&ratio(1, 4)).unwrap(), vec![q(2), q(1)]);
+    assert!(polyline(&pts[..1]).is_empty());
+}
+
+#[test]
+fn extrusion_range_covers_offset_points() {
+    // The segment (0,0,0)–(1,0,0) extruded along V = (0, 0, 2): a point at
+    // height 5 is at v = 5/2, whatever its x.
+    let seg = vec![line_segment(
+        &[q(0), q(0), q(0)],
+        &[q(1), q(0), q(0)],
+        &q(0),
+        &q(1),
+    )];
+    let v = [q(0), q(0), q(2)];
+    let pts = vec![vec![ratio(1, 2), q(0), q(5)], vec![q(1), q(0), q(-1)]];
+    let r = covering_range(
+        &Unbounded::Extrusion {
+            curve: &seg,
+            vector: &v,
+        },
+        &pts,
+    )
+    .unwrap();
+    assert_eq!(r, vec![[ratio(-1, 2), ratio(5, 2)]]);
+    let s = extrusion(&seg, &v, [&r[0][0], &r[0][1]]).unwrap();
+    assert_eq!(s[0].eval(&ratio(1, 2), &q(1)).unwrap(), pts[0]);
+}
+
+#[test]
+fn trimming_an_open_curve_backwards_is_refused() {
+    let pts = vec![vec![q(0), q(0)], vec![q(2), q(0)], vec![q(2), q(4)]];
+    let c = polyline(&pts);
+    let e = trim_between(&c, &pts[2], &pts[0], true, 0.0);
+    assert!(matches!(e, Err(Error::Domain(_))));
+    // Against the curve's sense it is the polyline reversed.
+    let t = trim_between(&c, &pts[2], &pts[0], false, 0.0).unwrap();
+    assert_eq!(t.pieces, vec![c[1].reverse(), c[0].reverse()]);
+    assert!(matches!(
+        trim_between::<Q>(&[], &pts[0], &pts[1], true, 0.0),
+        Err(Error::Shape(_))
+    ));
+}
+
+#[test]
+fn degree_decimals_in_exponent_form_are_recognised() {
+    let s = cone_slope::<RealAlgebraic>("4.5E1", AngleUnit::Degree).unwrap();
+    assert!(s.exact);
+    // 59° is no multiple of 15°.
+    assert!(
+        !cone_slope::<RealAlgebraic>("59.", AngleUnit::Degree)
+            .unwrap()
+            .exact
+    );
+    // Over Q there is no √3: 30° is approximate there, and says so.
+    let s = cone_slope::<Q>("30.", AngleUnit::Degree).unwrap();
+    assert!(!s.exact && s.error > q(0));
+}

@@ -1,0 +1,476 @@
+use super::*;
+use crate::patch::Patch;
+use crate::ratio;
+use std::collections::BTreeMap;
+
+type Q = BigRational;
+
+fn q(n: i64, d: i64) -> Q {
+    ratio(n, d)
+}
+
+fn read(data: &str) -> BrepModel {
+    let text =
+        format!("ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n{data}ENDSEC;\nEND-ISO-10303-21;\n");
+    read_brep(text.as_bytes()).unwrap()
+}
+
+/// A unit square face z = 0 with four LINE edges, an open shell.
+const SQUARE: &str = "\
+#1=CARTESIAN_POINT('',(0.,0.,0.));#2=CARTESIAN_POINT('',(1.,0.,0.));\n\
+#3=CARTESIAN_POINT('',(1.,1.,0.));#4=CARTESIAN_POINT('',(0.,1.,0.));\n\
+#11=VERTEX_POINT('',#1);#12=VERTEX_POINT('',#2);#13=VERTEX_POINT('',#3);#14=VERTEX_POINT('',#4);\n\
+#21=EDGE_CURVE('',#11,#12,#31,.T.);#22=EDGE_CURVE('',#12,#13,#32,.T.);\n\
+#23=EDGE_CURVE('',#13,#14,#33,.T.);#24=EDGE_CURVE('',#14,#11,#34,.T.);\n\
+#31=LINE('',#1,#9);#32=LINE('',#2,#9);#33=LINE('',#3,#9);#34=LINE('',#4,#9);\n\
+#41=ORIENTED_EDGE('',*,*,#21,.T.);#42=ORIENTED_EDGE('',*,*,#22,.T.);\n\
+#43=ORIENTED_EDGE('',*,*,#23,.T.);#44=ORIENTED_EDGE('',*,*,#24,.T.);\n\
+#50=EDGE_LOOP('',(#41,#42,#43,#44));#51=FACE_OUTER_BOUND('',#50,.T.);\n\
+#52=PLANE('',#9);#53=ADVANCED_FACE('',(#51),#52,.T.);\n\
+#60=OPEN_SHELL('',(#53));#61=SHELL_BASED_SURFACE_MODEL('',(#60));\n\
+#62=MANIFOLD_SURFACE_SHAPE_REPRESENTATION('square',(#61),#70);\n";
+
+/// A context in millimetres, degrees, tolerance 1/100 mm.
+const MM_DEG: &str = "\
+#70=(GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((#74))\n\
+ GLOBAL_UNIT_ASSIGNED_CONTEXT((#71,#73)) REPRESENTATION_CONTEXT('',''));\n\
+#71=(LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.));\n\
+#72=(NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.));\n\
+#75=PLANE_ANGLE_MEASURE_WITH_UNIT(PLANE_ANGLE_MEASURE(0.0174532925),#72);\n\
+#73=(CONVERSION_BASED_UNIT('DEGREE',#75) NAMED_UNIT(#76) PLANE_ANGLE_UNIT());\n\
+#76=DIMENSIONAL_EXPONENTS(0.,0.,0.,0.,0.,0.,0.);\n\
+#74=UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-02),#71,'distance_accuracy_value','');\n";
+
+#[test]
+fn an_open_shell_its_edges_vertices_units_and_tolerance() {
+    let m = read(&format!("{SQUARE}{MM_DEG}"));
+    assert_eq!(m.bodies.len(), 1);
+    assert_eq!(m.bodies[0].name, "square");
+    assert_eq!(m.bodies[0].solids, [61]);
+    let solid = &m.solids[&61];
+    assert_eq!(solid.kind, "SHELL_BASED_SURFACE_MODEL");
+    assert!(!solid.shells[0].closed);
+    let face = &m.faces[&53];
+    assert_eq!(face.surface.kind, "PLANE");
+    assert!(matches!(face.surface.geometry, Geometry::NotConverted));
+    let Loop::Edges(es) = &face.bounds[0].edges else {
+        panic!("an edge loop")
+    };
+    let edges: Vec<u64> = es.iter().map(|e| e.edge).collect();
+    assert_eq!(edges, [21, 22, 23, 24]);
+    // Every edge of a lone face is open.
+    assert_eq!(m.summary.edge_uses, BTreeMap::from([(EdgeUse::Open, 4)]));
+    assert_eq!(m.vertices[&13], vec![q(1, 1), q(1, 1), q(0, 1)]);
+    assert_eq!(m.edges[&23].start, 13);
+    assert_eq!(m.summary.edges_by_curve["LINE"], 4);
+    assert_eq!(m.summary.not_converted["LINE"], 4);
+    assert_eq!(m.summary.not_converted["PLANE"], 1);
+    let c = &m.contexts[&70];
+    assert_eq!(c.length.as_ref().unwrap().metres, q(1, 1000));
+    assert_eq!(c.angle, Some(AngleUnit::Degree));
+    assert_eq!(c.tolerance, Some(q(1, 100)));
+    assert!(m.summary.invalid.is_empty(), "{:?}", m.summary.invalid);
+}
+
+#[test]
+fn inch_and_metre_units_exactly() {
+    let inch =
+        "#70=(GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((#74))\n\
+ GLOBAL_UNIT_ASSIGNED_CONTEXT((#71)) REPRESENTATION_CONTEXT('',''));\n\
+#77=(LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.));\n\
+#78=LENGTH_MEASURE_WITH_UNIT(LENGTH_MEASURE(25.4),#77);\n\
+#71=(CONVERSION_BASED_UNIT('INCH',#78) LENGTH_UNIT() NAMED_UNIT(#76));\n\
+#76=DIMENSIONAL_EXPONENTS(1.,0.,0.,0.,0.,0.,0.);\n\
+#74=UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(0.0508),#77,'distance_accuracy_value','');\n";
+    let m = read(&format!("{SQUARE}{inch}"));
+    let c = &m.contexts[&70];
+    let l = c.length.as_ref().unwrap();
+    // 1 in = 25.4 mm = 127/5000 m; 0.0508 mm = 1/500 in.
+    assert_eq!((l.name.as_str(), l.metres.clone()), ("INCH", q(127, 5000)));
+    assert_eq!(c.tolerance, Some(q(1, 500)));
+    let metre = "#70=(GEOMETRIC_REPRESENTATION_CONTEXT(3)\n\
+ GLOBAL_UNIT_ASSIGNED_CONTEXT((#71,#72)) REPRESENTATION_CONTEXT('',''));\n\
+#71=(LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT($,.METRE.));\n\
+#72=(NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.));\n";
+    let m = read(&format!("{SQUARE}{metre}"));
+    let c = &m.contexts[&70];
+    assert_eq!(c.length.as_ref().unwrap().metres, q(1, 1));
+    assert_eq!(c.angle, Some(AngleUnit::Radian(q(1, 1))));
+    assert_eq!(c.tolerance, None);
+}
+
+/// A cube [0,1]³ of 6 planar faces sharing 12 edges, as a closed shell;
+/// `extra` follows (e.g. a void).
+fn cube(base: u64) -> String {
+    let id = |k: u64| base + k;
+    let mut s = String::new();
+    for (k, (x, y, z)) in (0..8)
+        .map(|k| (k & 1, (k >> 1) & 1, (k >> 2) & 1))
+        .enumerate()
+    {
+        let k = k as u64;
+        s += &format!(
+            "#{}=CARTESIAN_POINT('',({x}.,{y}.,{z}.));#{}=VERTEX_POINT('',#{});\n",
+            id(k),
+            id(10 + k),
+            id(k)
+        );
+    }
+    // Edges between vertices differing in one bit.
+    let mut edges = Vec::new();
+    for a in 0..8u64 {
+        for bit in [1, 2, 4] {
+            if a & bit == 0 {
+                edges.push((a, a | bit));
+            }
+        }
+    }
+    for (k, (a, b)) in edges.iter().enumerate() {
+        let k = k as u64;
+        s += &format!(
+            "#{}=EDGE_CURVE('',#{},#{},#{},.T.);#{}=LINE('',#{},#{});\n",
+            id(20 + k),
+            id(10 + a),
+            id(10 + b),
+            id(40 + k),
+            id(40 + k),
+            id(*a),
+            id(99)
+        );
+    }
+    // Faces: fix one bit to 0 or 1; the loop visits the 4 vertices in order.
+    let mut faces = Vec::new();
+    for (f, (bit, val)) in [1u64, 2, 4]
+        .iter()
+        .flat_map(|&b| [(b, 0u64), (b, 1)])
+        .enumerate()
+    {
+        let others: Vec<u64> = [1u64, 2, 4].into_iter().filter(|&o| o != bit).collect();
+        let corner = |i: u64| {
+            let g = [0, 1, 3, 2][i as usize];
+            val * bit + (g & 1) * others[0] + (g >> 1) * others[1]
+        };
+        let mut oes = Vec::new();
+        for i in 0..4u64 {
+            let (a, b) = (corner(i), corner((i + 1) % 4));
+            let (lo, hi) = (a.min(b), a.max(b));
+            let e = edges.iter().position(|&x| x == (lo, hi)).unwrap() as u64;
+            let oe = id(100 + 10 * f as u64 + i);
+            s += &format!(
+                "#{oe}=ORIENTED_EDGE('',*,*,#{},.{}.);\n",
+                id(20 + e),
+                if a < b { "T" } else { "F" }
+            );
+            oes.push(format!("#{oe}"));
+        }
+        let (lp, bd, fc) = (id(200 + f as u64), id(210 + f as u64), id(220 + f as u64));
+        s += &format!(
+            "#{lp}=EDGE_LOOP('',({}));#{bd}=FACE_OUTER_BOUND('',#{lp},.T.);#{fc}=ADVANCED_FACE('',(#{bd}),#{},.T.);\n",
+            oes.join(","),
+            id(98)
+        );
+        faces.push(format!("#{fc}"));
+    }
+    s += &format!(
+        "#{}=PLANE('',#1);#{}=CLOSED_SHELL('',({}));\n",
+        id(98),
+        id(230),
+        faces.join(",")
+    );
+    s
+}
+
+#[test]
+fn brep_with_voids_closed_shells_use_every_edge_twice() {
+    let data = format!(
+        "{}{}#900=ORIENTED_CLOSED_SHELL('',*,#2230,.F.);\n\
+         #901=BREP_WITH_VOIDS('',#1230,(#900));\n\
+         #902=ADVANCED_BREP_SHAPE_REPRESENTATION('',(#901),#903);\n\
+         #903=(GEOMETRIC_REPRESENTATION_CONTEXT(3) REPRESENTATION_CONTEXT('',''));\n",
+        cube(1000),
+        cube(2000)
+    );
+    let m = read(&data);
+    let solid = &m.solids[&901];
+    assert_eq!(solid.kind, "BREP_WITH_VOIDS");
+    assert_eq!(solid.shells.len(), 2);
+    assert!(solid.shells[0].orientation);
+    assert!(!solid.shells[1].orientation);
+    for shell in &solid.shells {
+        assert!(shell.closed);
+        let uses = shell.edge_uses(&m);
+        assert_eq!(uses.len(), 12);
+        assert!(uses.values().all(|&u| u == 2), "{uses:?}");
+    }
+    assert_eq!(m.faces.len(), 12);
+    assert_eq!(m.summary.edge_uses, BTreeMap::from([(EdgeUse::Shared, 24)]));
+    assert!(m.summary.invalid.is_empty(), "{:?}", m.summary.invalid);
+}
+
+/// A cylinder's lateral face: one seam edge used twice by the face, with a
+/// 2D line pcurve per side, two circle edges.
+#[test]
+fn a_seam_edge_is_used_twice_by_one_face_with_its_pcurves() {
+    let data = "\
+#1=CARTESIAN_POINT('',(1.,0.,0.));#2=CARTESIAN_POINT('',(1.,0.,1.));\n\
+#11=VERTEX_POINT('',#1);#12=VERTEX_POINT('',#2);\n\
+#20=EDGE_CURVE('',#11,#12,#21,.T.);#21=SEAM_CURVE('',#22,(#23,#24),.PCURVE_S1.);\n\
+#22=LINE('',#1,#9);#23=PCURVE('',#30,#25);#24=PCURVE('',#30,#26);\n\
+#25=DEFINITIONAL_REPRESENTATION('',(#27),#8);#26=DEFINITIONAL_REPRESENTATION('',(#28),#8);\n\
+#27=LINE('',#3,#9);#28=LINE('',#4,#9);\n\
+#40=EDGE_CURVE('',#11,#11,#41,.T.);#41=CIRCLE('',#9,1.);\n\
+#42=EDGE_CURVE('',#12,#12,#43,.T.);#43=CIRCLE('',#9,1.);\n\
+#51=ORIENTED_EDGE('',*,*,#40,.T.);#52=ORIENTED_EDGE('',*,*,#20,.T.);\n\
+#53=ORIENTED_EDGE('',*,*,#42,.F.);#54=ORIENTED_EDGE('',*,*,#20,.F.);\n\
+#55=EDGE_LOOP('',(#51,#52,#53,#54));#56=FACE_OUTER_BOUND('',#55,.T.);\n\
+#30=CYLINDRICAL_SURFACE('',#9,1.);#57=ADVANCED_FACE('',(#56),#30,.T.);\n\
+#58=OPEN_SHELL('',(#57));\n";
+    let m = read(data);
+    let seam = &m.edges[&20];
+    assert_eq!(seam.usage(), EdgeUse::Seam);
+    assert_eq!(seam.via.as_deref(), Some("SEAM_CURVE"));
+    assert_eq!(seam.curve.entity, 22);
+    let pc: Vec<(u64, u64, u64)> = seam
+        .pcurves
+        .iter()
+        .map(|p| (p.id, p.surface, p.curve.entity))
+        .collect();
+    assert_eq!(pc, [(23, 30, 27), (24, 30, 28)]);
+    assert_eq!(m.edges[&40].usage(), EdgeUse::Open);
+    assert_eq!(m.loose_shells.len(), 1);
+    assert_eq!(m.summary.faces_by_surface["CYLINDRICAL_SURFACE"], 1);
+}
+
+/// A rational quasi-uniform B-spline curve edge written as a complex
+/// instance with its parts in an unusual order (was: "has no knots").
+#[test]
+fn complex_parts_in_any_order_and_a_bspline_edge() {
+    let data = "\
+#1=CARTESIAN_POINT('',(1.,0.,0.));#2=CARTESIAN_POINT('',(1.,1.,0.));#3=CARTESIAN_POINT('',(0.,1.,0.));\n\
+#11=VERTEX_POINT('',#1);#12=VERTEX_POINT('',#3);\n\
+#20=(RATIONAL_B_SPLINE_CURVE((1.,0.5,1.)) REPRESENTATION_ITEM('') QUASI_UNIFORM_CURVE()\n\
+ B_SPLINE_CURVE(2,(#1,#2,#3),.UNSPECIFIED.,.F.,.F.) BOUNDED_CURVE() CURVE() GEOMETRIC_REPRESENTATION_ITEM());\n\
+#21=EDGE_CURVE('',#11,#12,#20,.T.);#22=ORIENTED_EDGE('',*,*,#21,.T.);\n\
+#23=EDGE_LOOP('',(#22));#24=FACE_BOUND('',#23,.F.);#25=PLANE('',#9);\n\
+#26=FACE_SURFACE('',(#24),#25,.F.);\n";
+    let m = read(data);
+    assert!(m.summary.invalid.is_empty(), "{:?}", m.summary.invalid);
+    let e = &m.edges[&21];
+    assert_eq!(e.curve.kind, "QUASI_UNIFORM_CURVE");
+    let Geometry::Pieces(p) = &e.curve.geometry else {
+        panic!("{:?}", e.curve.geometry)
+    };
+    assert_eq!(p.len(), 1);
+    let Patch::Curve(c) = &p[0].patch else {
+        panic!("a curve")
+    };
+    // By hand at t = 1/2 (Bernstein 1/4, 1/2, 1/4; weights 1, 1/2, 1):
+    // (1/4·(1,0) + 1/4·(1,1) + 1/4·(0,1)) / (3/4) = (2/3, 2/3).
+    let x = c.eval(&q(1, 2)).unwrap();
+    assert_eq!(x, vec![q(2, 3), q(2, 3), q(0, 1)]);
+    let f = &m.faces[&26];
+    assert!(!f.same_sense);
+    assert!(!f.bounds[0].outer && !f.bounds[0].orientation);
+}
+
+/// Faces by surface type and edges by curve type, counted from the text
+/// without the reader: statements split at `;`, the reference before the
+/// final `.T.`/`.F.` of each face/edge, and the type name of its target.
+fn independent_counts(text: &str) -> (BTreeMap<String, usize>, BTreeMap<String, usize>) {
+    let mut kinds: HashMap<u64, (String, String)> = HashMap::new();
+    for st in text.split(';') {
+        let st: String = st.chars().filter(|c| !c.is_whitespace()).collect();
+        let Some(rest) = st.strip_prefix('#') else {
+            continue;
+        };
+        let Some((id, body)) = rest.split_once('=') else {
+            continue;
+        };
+        let Ok(id) = id.parse::<u64>() else { continue };
+        let name = if body.starts_with('(') {
+            if body.contains("B_SPLINE_SURFACE(") {
+                "B_SPLINE_SURFACE".to_owned()
+            } else {
+                "complex".to_owned()
+            }
+        } else {
+            body.split('(').next().unwrap_or("").to_owned()
+        };
+        kinds.insert(id, (name, body.to_owned()));
+    }
+    let last_ref = |body: &str| -> u64 {
+        let head = &body[..body.rfind(",.").unwrap()];
+        head[head.rfind('#').unwrap() + 1..].parse().unwrap()
+    };
+    let first_ref = |body: &str| -> u64 {
+        let t = &body[body.find('#').unwrap() + 1..];
+        t[..t.find(|c: char| !c.is_ascii_digit()).unwrap()]
+            .parse()
+            .unwrap()
+    };
+    let simplify = |n: &str| {
+        if n.starts_with("B_SPLINE") {
+            "B_SPLINE_SURFACE".to_owned()
+        } else {
+            n.to_owned()
+        }
+    };
+    let mut faces = BTreeMap::new();
+    let mut edges = BTreeMap::new();
+    let mut used = std::collections::BTreeSet::new();
+    for (name, body) in kinds.values() {
+        if name == "ADVANCED_FACE" {
+            let s = &kinds[&last_ref(body)].0;
+            *faces.entry(simplify(s)).or_insert(0) += 1;
+        }
+        if name == "ORIENTED_EDGE" {
+            used.insert(last_ref(body));
+        }
+    }
+    for e in used {
+        let (_, body) = &kinds[&e];
+        let mut c = last_ref(body);
+        if matches!(kinds[&c].0.as_str(), "SURFACE_CURVE" | "SEAM_CURVE") {
+            c = first_ref(&kinds[&c].1);
+        }
+        *edges.entry(kinds[&c].0.clone()).or_insert(0) += 1;
+    }
+    (faces, edges)
+}
+
+fn fixture(name: &str) -> String {
+    let path = format!("{}/tests/fixtures/step/{name}", env!("CARGO_MANIFEST_DIR"));
+    String::from_utf8_lossy(&std::fs::read(path).unwrap()).into_owned()
+}
+
+/// The reader's counts with every B-spline surface leaf type as one.
+fn reader_counts(m: &BrepModel) -> (BTreeMap<String, usize>, BTreeMap<String, usize>) {
+    let mut faces = BTreeMap::new();
+    for (k, n) in &m.summary.faces_by_surface {
+        let k = if k.contains("_SURFACE_WITH_KNOTS") || k.starts_with("BEZIER") {
+            "B_SPLINE_SURFACE".to_owned()
+        } else {
+            k.clone()
+        };
+        *faces.entry(k).or_insert(0) += n;
+    }
+    (faces, m.summary.edges_by_curve.clone())
+}
+
+/// The distance² between a vertex and the end of a B-spline edge curve
+/// (start when `at_start`), exactly: a Bézier piece's ends are its end
+/// control points.
+fn end_gap(m: &BrepModel, e: &Edge) -> Option<Q> {
+    let Geometry::Pieces(p) = &e.curve.geometry else {
+        return None;
+    };
+    let end = |k: usize, t: Q| match &p[k].patch {
+        Patch::Curve(c) => c.eval(&t).unwrap(),
+        _ => unreachable!("a curve's pieces are curves"),
+    };
+    let (first, last) = (end(0, q(0, 1)), end(p.len() - 1, q(1, 1)));
+    let (a, b) = if e.same_sense {
+        (first, last)
+    } else {
+        (last, first)
+    };
+    let d2 = |x: &[Q], y: &[Q]| {
+        x.iter()
+            .zip(y)
+            .map(|(s, t)| (s - t) * (s - t))
+            .fold(q(0, 1), |acc, v| acc + v)
+    };
+    Some(std::cmp::max(
+        d2(&a, &m.vertices[&e.start]),
+        d2(&b, &m.vertices[&e.end]),
+    ))
+}
+
+fn check_nist(name: &str, faces: &[(&str, usize)]) -> BrepModel {
+    let text = fixture(name);
+    let m = read_brep(text.as_bytes()).unwrap();
+    let (scan_faces, scan_edges) = independent_counts(&text);
+    let want: BTreeMap<String, usize> = faces.iter().map(|(k, n)| ((*k).to_owned(), *n)).collect();
+    // The hand-checked numbers of the README, the text scan and the reader.
+    assert_eq!(scan_faces, want, "{name}: scan");
+    assert_eq!(reader_counts(&m), (want, scan_edges), "{name}: reader");
+    assert!(m.summary.invalid.is_empty(), "{:?}", m.summary.invalid);
+    let shells: Vec<&Shell> = m
+        .solids
+        .values()
+        .flat_map(|s| &s.shells)
+        .chain(&m.loose_shells)
+        .collect();
+    assert!(!shells.is_empty());
+    for shell in shells.iter().filter(|s| s.closed) {
+        assert!(
+            shell.edge_uses(&m).values().all(|&u| u == 2),
+            "{name}: shell #{}",
+            shell.id
+        );
+    }
+    let tol = m
+        .contexts
+        .values()
+        .find_map(|c| c.tolerance.clone())
+        .unwrap();
+    for e in m.edges.values() {
+        if let Some(gap2) = end_gap(&m, e) {
+            assert!(gap2 <= tol.clone() * &tol, "{name}: edge #{}", e.id);
+        }
+    }
+    m
+}
+
+#[test]
+fn nist_ctc_01_faces_edges_shells_and_vertices() {
+    let m = check_nist(
+        "nist_ctc_01_asme1_ap242.stp",
+        &[
+            ("PLANE", 56),
+            ("CYLINDRICAL_SURFACE", 57),
+            ("CONICAL_SURFACE", 4),
+        ],
+    );
+    assert_eq!(m.faces.len(), 117);
+}
+
+#[test]
+fn nist_ctc_02_faces_edges_shells_and_vertices() {
+    let m = check_nist(
+        "nist_ctc_02_asme1_ap203.stp",
+        &[
+            ("PLANE", 129),
+            ("CYLINDRICAL_SURFACE", 224),
+            ("CONICAL_SURFACE", 82),
+            ("SPHERICAL_SURFACE", 24),
+            ("B_SPLINE_SURFACE", 28),
+        ],
+    );
+    assert_eq!(m.faces.len(), 487);
+    let converted = m
+        .faces
+        .values()
+        .filter(|f| matches!(f.surface.geometry, Geometry::Pieces(_)))
+        .count();
+    assert_eq!(converted, 28);
+    let c = m.contexts.values().next().unwrap();
+    assert_eq!(c.length.as_ref().unwrap().metres, q(1, 1000));
+    assert_eq!(c.angle, Some(AngleUnit::Degree));
+    assert_eq!(c.tolerance, Some(q(127, 2500)));
+}
+
+#[test]
+fn nist_ftc_06_faces_edges_shells_and_vertices() {
+    let m = check_nist(
+        "nist_ftc_06_asme1_rd.stp",
+        &[
+            ("PLANE", 71),
+            ("CYLINDRICAL_SURFACE", 58),
+            ("CONICAL_SURFACE", 4),
+            ("SPHERICAL_SURFACE", 5),
+            ("TOROIDAL_SURFACE", 6),
+        ],
+    );
+    assert_eq!(m.faces.len(), 144);
+}
