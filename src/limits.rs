@@ -64,6 +64,13 @@ pub const MAX_ALGEBRAIC_DEPTH: usize = 64;
 /// The largest `|exponent|` of a power in an algebraic number's text.
 pub const MAX_ALGEBRAIC_EXPONENT: i64 = 64;
 
+/// The largest degree over Q of a number field that exact algebraic
+/// arithmetic builds (`src/algebra/real_algebraic/field.rs`): combining two
+/// fields of degrees `d₁`, `d₂` needs `d₁·d₂`, an `n`-th root `n·d`, known
+/// before the work. Above it the arithmetic falls back to resultants
+/// (no refusal yet: that path's cost is bounded only by the other limits).
+pub const MAX_FIELD_DEGREE: usize = 64;
+
 /// The most sample points one `plot` may draw (all curves and iso-lines).
 pub const MAX_PLOT_POINTS: u64 = 1 << 20;
 

@@ -35,6 +35,7 @@
 //! (2000), ch. 7; Mordell, *On the linear independence of algebraic
 //! numbers*, Pacific J. Math. 3 (1953) 625–630.
 
+pub(crate) mod field;
 pub(crate) mod polys;
 pub(crate) mod radical;
 pub(crate) mod root;
@@ -43,6 +44,7 @@ pub mod text;
 use crate::algebra::scalar::{Field, Ordered, Roots, Scalar};
 use crate::algebra::upoly::UPoly;
 use crate::error::Error;
+use field::{FieldNum, NumberField};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
@@ -77,6 +79,15 @@ pub struct RealAlgebraic(Repr);
 enum Repr {
     Radical(RadicalSum),
     Root(Arc<RootNum>),
+    Field(Arc<FieldValue>),
+}
+
+/// A non-zero, non-rational element of a number field ([`field`]), with its
+/// isolated-root form computed once when asked for (text, defining
+/// polynomial, rationality).
+struct FieldValue {
+    num: FieldNum,
+    plain: std::sync::OnceLock<RealAlgebraic>,
 }
 
 impl RealAlgebraic {
@@ -94,6 +105,86 @@ impl RealAlgebraic {
         match &self.0 {
             Repr::Radical(s) => s.as_rational(),
             Repr::Root(_) => None,
+            Repr::Field(_) => self.plain().as_rational(),
+        }
+    }
+
+    /// The element `c(θ)` of field `k`: a rational when `c` reduces to a
+    /// constant (zero when `c(θ) = 0`).
+    fn from_field(k: Arc<NumberField>, c: &QPoly) -> Self {
+        match FieldNum::new(k, c) {
+            None => Self::zero(),
+            Some(n) if n.a.degree() == Some(0) => Self::rat(n.a.coeffs()[0].clone()),
+            Some(num) => RealAlgebraic(Repr::Field(Arc::new(FieldValue {
+                num,
+                plain: std::sync::OnceLock::new(),
+            }))),
+        }
+    }
+
+    /// This number as a field element (`Err` with the value when it is
+    /// rational): a radical sum or an isolated root generates its own field
+    /// (minimal or defining polynomial, isolating interval); a negative one
+    /// is `−θ` for the positive `θ = −x`, so that `x` and `−x` share a field.
+    fn field_parts(&self) -> Result<FieldNum, BigRational> {
+        if let Repr::Radical(s) = &self.0 {
+            if let Some(q) = s.as_rational() {
+                return Err(q);
+            }
+        }
+        if !matches!(self.0, Repr::Field(_)) && self.signum() < 0 {
+            return (-self.clone()).field_parts().map(|x| x.neg());
+        }
+        match &self.0 {
+            Repr::Radical(s) => {
+                if let Some(q) = s.as_rational() {
+                    return Err(q);
+                }
+                let p = s.minimal_polynomial().monic();
+                let (lo, hi) =
+                    field::isolate_value(&polys::sturm_sequence(&p), |prec| s.enclosure(prec));
+                Ok(FieldNum::generator(NumberField::new(p, lo, hi)))
+            }
+            Repr::Root(r) => {
+                let (lo, hi) = r.interval();
+                Ok(FieldNum::generator(NumberField::new(
+                    r.poly().clone(),
+                    lo,
+                    hi,
+                )))
+            }
+            Repr::Field(v) => Ok(v.num.clone()),
+        }
+    }
+
+    /// Both numbers in one field, `(K, a, b)` with `self = a(θ)`,
+    /// `other = b(θ)`; `None` when that field would be over
+    /// [`crate::limits::MAX_FIELD_DEGREE`].
+    fn common(&self, other: &Self) -> Option<(Arc<NumberField>, QPoly, QPoly)> {
+        let constant = |q: BigRational| UPoly::constant(q);
+        match (self.field_parts(), other.field_parts()) {
+            (Ok(a), Ok(b)) => field::unify(&a, &b),
+            (Ok(a), Err(q)) => Some((a.field, a.a, constant(q))),
+            (Err(q), Ok(b)) => Some((b.field, constant(q), b.a)),
+            (Err(_), Err(_)) => None,
+        }
+    }
+
+    /// The isolated-root (or radical) form of a field element, computed
+    /// once: the characteristic polynomial `Res_y(p(y), x − a(y))` of
+    /// `a(θ)`, whose root is isolated from `a(θ)`'s enclosures and then
+    /// simplified (rationals and `x^n − c` become radical sums).
+    fn plain(&self) -> Self {
+        match &self.0 {
+            Repr::Field(v) => v
+                .plain
+                .get_or_init(|| {
+                    let one = UPoly::constant(BigRational::one());
+                    let known = Self::value_polynomial(v.num.field.poly(), &v.num.a, &one);
+                    Self::isolate_enclosed(&known, |prec| v.num.enclosure(prec))
+                })
+                .clone(),
+            _ => self.clone(),
         }
     }
 
@@ -215,6 +306,7 @@ impl RealAlgebraic {
         match &self.0 {
             Repr::Radical(_) => None,
             Repr::Root(r) => r.poly().degree(),
+            Repr::Field(v) => Some(v.num.field.degree()),
         }
     }
 
@@ -225,6 +317,7 @@ impl RealAlgebraic {
         match &self.0 {
             Repr::Radical(s) => s.minimal_polynomial(),
             Repr::Root(r) => r.poly().clone(),
+            Repr::Field(_) => self.plain().defining_polynomial(),
         }
     }
 
@@ -241,6 +334,7 @@ impl RealAlgebraic {
         match &self.0 {
             Repr::Radical(s) => s.enclosure(prec),
             Repr::Root(r) => r.enclosure(prec),
+            Repr::Field(v) => v.num.enclosure(prec),
         }
     }
 
@@ -249,6 +343,7 @@ impl RealAlgebraic {
         match &self.0 {
             Repr::Radical(s) => s.signum(),
             Repr::Root(r) => r.signum(),
+            Repr::Field(v) => v.num.signum(),
         }
     }
 
@@ -280,6 +375,7 @@ impl RealAlgebraic {
                     hi + q,
                 ))
             }
+            Repr::Field(_) => self.plain().shifted(q),
         }
     }
 
@@ -299,6 +395,7 @@ impl RealAlgebraic {
                     hi,
                 ))
             }
+            Repr::Field(_) => self.plain().scaled(q),
         }
     }
 
@@ -336,6 +433,7 @@ impl RealAlgebraic {
     fn recip_exact(&self) -> Self {
         match &self.0 {
             Repr::Radical(s) => Self::radical(s.recip()),
+            Repr::Field(v) => Self::from_field(v.num.field.clone(), &v.num.recip().a),
             Repr::Root(r) => {
                 r.signum(); // refines until 0 ∉ [lo, hi]
                 let (lo, hi) = r.interval();
@@ -480,6 +578,19 @@ impl RealAlgebraic {
                 return Some(Self::radical(r));
             }
         }
+        let enclose = |prec: u32| {
+            let (lo, hi) = self.enclosure(prec * n);
+            (
+                root_floor(&lo, n, prec),
+                root_floor(&hi, n, prec)
+                    + BigRational::new(1.into(), BigInt::one() << prec as usize),
+            )
+        };
+        if let Ok(x) = self.field_parts() {
+            if let Some(y) = x.root(n, enclose) {
+                return Some(Self::from_field(y.field, &y.a));
+            }
+        }
         let p = polys::compose_power(&self.defining_polynomial(), n);
         Some(Self::from_enclosures(&p, |prec| {
             let (lo, hi) = self.enclosure(prec * n);
@@ -550,6 +661,10 @@ impl RealAlgebraic {
     fn same_value(&self, other: &Self) -> bool {
         match (&self.0, &other.0) {
             (Repr::Radical(a), Repr::Radical(b)) => a.add(&b.neg()).is_zero(),
+            (Repr::Field(_), _) | (_, Repr::Field(_)) => match self.common(other) {
+                Some((k, a, b)) => FieldNum::new(k, &a.sub(&b)).is_none(),
+                None => self.plain().same_value(&other.plain()),
+            },
             (Repr::Root(r), _) => other.is_isolated_root_of(r),
             (_, Repr::Root(r)) => self.is_isolated_root_of(r),
         }
@@ -582,6 +697,7 @@ impl RealAlgebraic {
                     && lo < hi
                     && polys::count_roots(&polys::sturm_sequence(&g), &lo, &hi) == 1
             }
+            Repr::Field(_) => self.plain().is_isolated_root_of(r),
         }
     }
 
@@ -727,6 +843,7 @@ impl std::ops::Neg for RealAlgebraic {
                 let (lo, hi) = r.interval();
                 Self::irrational(RootNum::new(polys::reflect(r.poly()).monic(), -hi, -lo))
             }
+            Repr::Field(v) => Self::from_field(v.num.field.clone(), &v.num.neg().a),
         }
     }
 }
@@ -736,7 +853,10 @@ impl std::ops::Add<&RealAlgebraic> for RealAlgebraic {
     fn add(self, other: &Self) -> Self {
         match (&self.0, &other.0) {
             (Repr::Radical(a), Repr::Radical(b)) => Self::radical(a.add(b)),
-            _ => self.add_general(other),
+            _ => match self.common(other) {
+                Some((k, a, b)) => Self::from_field(k, &a.add(&b)),
+                None => self.add_general(other),
+            },
         }
     }
 }
@@ -744,7 +864,13 @@ impl std::ops::Add<&RealAlgebraic> for RealAlgebraic {
 impl std::ops::Sub<&RealAlgebraic> for RealAlgebraic {
     type Output = Self;
     fn sub(self, other: &Self) -> Self {
-        self + &(-other.clone())
+        match (&self.0, &other.0) {
+            (Repr::Radical(a), Repr::Radical(b)) => Self::radical(a.add(&b.neg())),
+            _ => match self.common(other) {
+                Some((k, a, b)) => Self::from_field(k, &a.sub(&b)),
+                None => self + &(-other.clone()),
+            },
+        }
     }
 }
 
@@ -754,7 +880,10 @@ impl std::ops::Mul<&RealAlgebraic> for RealAlgebraic {
         match (&self.0, &other.0) {
             (Repr::Radical(a), Repr::Radical(b)) => Self::radical(a.mul(b)),
             _ if self.is_zero() || other.is_zero() => Self::zero(),
-            _ => self.mul_general(other),
+            _ => match self.common(other) {
+                Some((k, a, b)) => Self::from_field(k, &a.mul(&b)),
+                None => self.mul_general(other),
+            },
         }
     }
 }
@@ -821,6 +950,7 @@ impl std::fmt::Display for RealAlgebraic {
         match &self.0 {
             Repr::Radical(s) => write!(f, "{}", text::radical_text(s)),
             Repr::Root(r) => write!(f, "{}", text::root_text(r.poly(), r.index())),
+            Repr::Field(_) => write!(f, "{}", self.plain()),
         }
     }
 }

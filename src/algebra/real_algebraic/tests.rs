@@ -175,3 +175,74 @@ proptest! {
         prop_assert_eq!(y.pow_u32(n), x);
     }
 }
+
+fn alpha() -> RealAlgebraic {
+    parse("CRootOf(x**3 - x - 1, 0)")
+}
+
+#[test]
+fn identities_across_fields() {
+    // (α + √2)² − 2α√2 − α² = 2, with α the real root of x³ − x − 1.
+    let (a, s2) = (alpha(), sqrt(&r(2)));
+    let sum = a.clone() + &s2;
+    let x = sum.clone() * &sum - &(r(2) * &a * &s2) - &(a.clone() * &a);
+    assert_eq!(x.as_rational(), Some(ratio(2, 1)));
+    assert_eq!(x, r(2));
+    // α³ = α + 1 and 1/α = α² − 1 (from α(α² − 1) = 1).
+    assert_eq!(a.clone() * &a * &a, a.clone() + &r(1));
+    assert_eq!(a.recip(), a.clone() * &a - &r(1));
+    // √(α² + √2)² − √2 = α².
+    let y = sqrt(&(a.clone() * &a + &s2));
+    assert_eq!(y.clone() * &y - &s2, a.clone() * &a);
+    assert!(y.root_degree().unwrap() <= 12, "{:?}", y.root_degree());
+}
+
+#[test]
+fn chains_stay_in_one_field() {
+    // A rational quadratic with weights (6, α, 13/5) evaluated, differentiated
+    // and squared: every number stays in Q(α), degree 3 (the resultant path
+    // multiplied the degrees at every step).
+    let a = alpha();
+    let w = [r(6), a.clone(), q(13, 5)];
+    let pts = [q(7, 2), q(-17, 2), a.clone()];
+    let t = q(1, 2);
+    let s = r(1) - &t;
+    let basis = [s.clone() * &s, r(2) * &s * &t, t.clone() * &t];
+    let num = (0..3).fold(r(0), |acc, i| acc + &(basis[i].clone() * &w[i] * &pts[i]));
+    let den = (0..3).fold(r(0), |acc, i| acc + &(basis[i].clone() * &w[i]));
+    let y = num.clone() / &den;
+    let y4 = y.clone() * &y * &y * &y;
+    let z = (y4.clone() - &a).recip() + &(y.clone() * &a);
+    for v in [&y, &y4, &z] {
+        assert_eq!(v.root_degree(), Some(3));
+    }
+    // Independent check: y at the value of α by rational enclosures.
+    let (lo, hi) = y.enclosure(64);
+    let (al, ah) = a.enclosure(200);
+    let f = |x: &BigRational| {
+        let sq = BigRational::new(1.into(), 4.into());
+        let w1 = x;
+        let n = sq.clone() * ratio::<BigRational>(6, 1) * ratio::<BigRational>(7, 2)
+            + BigRational::new(1.into(), 2.into()) * w1 * ratio::<BigRational>(-17, 2)
+            + sq.clone() * ratio::<BigRational>(13, 5) * x;
+        let d = sq.clone() * ratio::<BigRational>(6, 1)
+            + BigRational::new(1.into(), 2.into()) * w1
+            + sq * ratio::<BigRational>(13, 5);
+        n / d
+    };
+    let (fa, fb) = (f(&al), f(&ah));
+    let (flo, fhi) = if fa < fb { (fa, fb) } else { (fb, fa) };
+    assert!(
+        lo <= fhi && flo <= hi,
+        "{} {} {} {}",
+        y.to_decimal(12),
+        num.to_decimal(12),
+        den.to_decimal(12),
+        a.to_decimal(12)
+    );
+    // α with √2 and ∛3: the compositum has degree 3·2·3 = 18.
+    let m = a.clone() * &sqrt(&r(2)) + &r(3).nth_root(3).unwrap();
+    let m2 = m.clone() * &m - &a;
+    assert_eq!(m2.root_degree(), Some(18));
+    assert_eq!((m2.clone() + &a) / &m, m);
+}
