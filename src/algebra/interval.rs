@@ -103,6 +103,81 @@ impl Interval {
         (0..e).fold(Interval { lo: 1.0, hi: 1.0 }, |acc, _| acc.mul(self))
     }
 
+    /// The degenerate interval `[x, x]` (an `f64` is an exact rational).
+    pub fn point(x: f64) -> Interval {
+        Interval { lo: x, hi: x }
+    }
+
+    /// The smallest interval containing both.
+    pub fn hull(&self, o: &Interval) -> Interval {
+        Interval {
+            lo: self.lo.min(o.lo),
+            hi: self.hi.max(o.hi),
+        }
+    }
+
+    /// `−self` (exact: negation does not round).
+    pub fn neg(&self) -> Interval {
+        Interval {
+            lo: -self.hi,
+            hi: -self.lo,
+        }
+    }
+
+    /// `self²`: `[0, max²]` when `self` contains 0, tighter than `self · self`.
+    pub fn sqr(&self) -> Interval {
+        let (a, b) = (self.lo.abs(), self.hi.abs());
+        if self.lo <= 0.0 && self.hi >= 0.0 {
+            return Interval {
+                lo: 0.0,
+                hi: next_up(a.max(b) * a.max(b)),
+            };
+        }
+        Interval::rounded(a.min(b) * a.min(b), a.max(b) * a.max(b))
+    }
+
+    /// `√self` over the non-negative part of `self` (IEEE `sqrt` is
+    /// correctly rounded, so one ulp outward encloses it); `None` when
+    /// `self` is entirely negative.
+    pub fn sqrt(&self) -> Option<Interval> {
+        if self.hi < 0.0 {
+            return None;
+        }
+        let lo = next_down(self.lo.max(0.0).sqrt()).max(0.0);
+        Some(Interval {
+            lo,
+            hi: next_up(self.hi.sqrt()),
+        })
+    }
+
+    /// `max(|x|)` over the interval.
+    pub fn mag(&self) -> f64 {
+        self.lo.abs().max(self.hi.abs())
+    }
+
+    /// `hi − lo`, rounded up.
+    pub fn width(&self) -> f64 {
+        next_up(self.hi - self.lo)
+    }
+
+    /// The midpoint (an `f64` inside the interval).
+    pub fn mid(&self) -> f64 {
+        (0.5 * self.lo + 0.5 * self.hi).clamp(self.lo, self.hi)
+    }
+
+    /// Is `o` inside the interior of `self`?
+    pub fn interior_contains(&self, o: &Interval) -> bool {
+        self.lo < o.lo && o.hi < self.hi
+    }
+
+    /// The common part, `None` when disjoint.
+    pub fn intersect(&self, o: &Interval) -> Option<Interval> {
+        (!self.disjoint(o)).then(|| Interval {
+            lo: self.lo.max(o.lo),
+            hi: self.hi.min(o.hi),
+        })
+    }
+
     /// Do the intervals have no point in common (so the exact values differ)?
     pub fn disjoint(&self, o: &Interval) -> bool {
         self.hi < o.lo || o.hi < self.lo

@@ -1,0 +1,278 @@
+//! Rational Bézier curves and tensor-product patches with interval control
+//! points, and proved enclosures of their values and derivatives over
+//! parameter boxes.
+//!
+//! **Enclosure over a box.** The Bernstein coefficients of the piece of a
+//! polynomial `p` of degree `n` over `[a, b]` are its blossom values
+//! `p[a^{n−k}, b^k]`, `k = 0..n` (Farin, *Curves and Surfaces for CAGD*,
+//! ch. 4), computed by de Casteljau steps at `b` (k times) and `a`
+//! (n − k times); every value of `p` on `[a, b]` lies between their least
+//! and greatest (convex hull property). Tensor-product patches take the
+//! piece in `u`, then in `v`. Run in outward-rounded interval arithmetic
+//! from enclosures of the exact control points, the hull contains the
+//! exact range. The width shrinks like the box squared around a value
+//! (the control polygon of a small piece is nearly its chord), so a
+//! constant or linear coordinate gets an enclosure as wide as the rounding.
+//!
+//! The homogeneous derivatives `∂^{a+b}H/∂u^a∂v^b` are formed exactly
+//! (forward differences) before the control points are enclosed; the
+//! Cartesian derivatives follow from `X = P/w` by the quotient rule:
+//!
+//! ```text
+//! X_u  = (P_u − w_u X) / w
+//! X_uv = (P_uv − w_u X_v − w_v X_u − w_uv X) / w
+//! ```
+
+use super::ivec::IVec;
+use super::Enclose;
+use crate::algebra::{Interval, Scalar};
+use crate::error::Error;
+use crate::hpoint::HPoint;
+use crate::{RationalCurve, RectPatch};
+
+/// The coefficients of the piece over `[a, b]` of the Bernstein polynomial
+/// with coefficients `c` (blossom values `c[a^{n−k}, b^k]`).
+fn piece(c: &[Interval], a: f64, b: f64) -> Vec<Interval> {
+    let n = c.len() - 1;
+    let one = Interval::point(1.0);
+    (0..=n)
+        .map(|k| {
+            let mut v = c.to_vec();
+            for level in 0..n {
+                let t = Interval::point(if level < k { b } else { a });
+                let s = one.sub(&t);
+                v = v
+                    .windows(2)
+                    .map(|w| w[0].mul(&s).add(&w[1].mul(&t)))
+                    .collect();
+            }
+            v[0]
+        })
+        .collect()
+}
+
+fn hull(values: impl IntoIterator<Item = Interval>) -> Interval {
+    values
+        .into_iter()
+        .reduce(|a, b| a.hull(&b))
+        .expect("a Bézier net is never empty")
+}
+
+fn enclose_hpoint<T: Enclose>(p: &HPoint<T>) -> IVec {
+    p.coords.iter().map(Enclose::enclose).collect()
+}
+
+/// Homogeneous control nets, `net[i][j][coord]`.
+type Net = Vec<Vec<IVec>>;
+
+/// Range of a net over `[u0, u1] × [v0, v1]`, per homogeneous coordinate.
+fn net_range(net: &Net, u: Interval, v: Interval) -> IVec {
+    let dims = net[0][0].len();
+    (0..dims)
+        .map(|d| {
+            let rows: Vec<Vec<Interval>> = net
+                .iter()
+                .map(|row| piece(&row.iter().map(|p| p[d]).collect::<Vec<_>>(), v.lo, v.hi))
+                .collect();
+            hull(
+                (0..rows[0].len()).flat_map(|j| {
+                    piece(&rows.iter().map(|r| r[j]).collect::<Vec<_>>(), u.lo, u.hi)
+                }),
+            )
+        })
+        .collect()
+}
+
+/// Split the homogeneous `h` into `(P, w)`.
+fn split(h: &IVec) -> (&[Interval], Interval) {
+    (&h[..h.len() - 1], h[h.len() - 1])
+}
+
+/// Refuse a box where the weight's enclosure reaches 0 (possible only
+/// outside `[0, 1]`, the weights being checked positive).
+fn positive(w: &Interval) -> Result<(), Error> {
+    if w.lo > 0.0 {
+        Ok(())
+    } else {
+        Err(Error::Domain(format!(
+            "the weight's enclosure [{:e}, {:e}] over a parameter box is not positive",
+            w.lo, w.hi
+        )))
+    }
+}
+
+/// Refuse non-positive weights (their enclosures must be positive).
+fn check_weights<'a>(weights: impl IntoIterator<Item = &'a IVec>) -> Result<(), Error> {
+    for (k, h) in weights.into_iter().enumerate() {
+        let w = h[h.len() - 1];
+        if w.lo <= 0.0 {
+            return Err(Error::Weight {
+                index: format!("w_{k}"),
+                value: format!("enclosed by [{:e}, {:e}]", w.lo, w.hi),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// `(P − Σ wᵢ Yᵢ) / w`: the quotient rule's common step.
+fn quotient(p: &[Interval], terms: &[(Interval, &[Interval])], w: &Interval) -> IVec {
+    p.iter()
+        .enumerate()
+        .map(|(k, pk)| {
+            let num = terms
+                .iter()
+                .fold(*pk, |acc, (wi, y)| acc.sub(&wi.mul(&y[k])));
+            num.div(w).expect("the weight enclosure is positive")
+        })
+        .collect()
+}
+
+/// A rational Bézier curve with enclosed control points of `H` and `H'`.
+#[derive(Clone, Debug)]
+pub struct ICurve {
+    h: Vec<IVec>,
+    dh: Vec<IVec>,
+}
+
+/// A curve's point and tangent enclosed over a parameter interval.
+#[derive(Clone, Debug)]
+pub struct CurveJet {
+    /// `C(t)`.
+    pub x: IVec,
+    /// `C'(t)`.
+    pub dx: IVec,
+}
+
+impl ICurve {
+    /// Enclose `c` (dimension 3, positive weights): its homogeneous control
+    /// points and those of its hodograph, formed exactly then enclosed.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Shape`] unless the curve is in 3D; [`Error::Weight`] for a
+    /// weight whose enclosure is not positive.
+    pub fn new<T: Scalar + Enclose>(c: &RationalCurve<T>) -> Result<ICurve, Error> {
+        if c.dim() != 3 {
+            return Err(Error::Shape(format!(
+                "an edge curve in {}D, not 3D",
+                c.dim()
+            )));
+        }
+        let dh = c.hodograph(1);
+        let h: Vec<IVec> = c.ctrl().iter().map(enclose_hpoint).collect();
+        check_weights(&h)?;
+        Ok(ICurve {
+            h,
+            dh: if dh.is_empty() {
+                vec![vec![Interval::point(0.0); 4]]
+            } else {
+                dh.iter().map(enclose_hpoint).collect()
+            },
+        })
+    }
+
+    /// `C` and `C'` over all parameters in `t` (enclosures).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Domain`] when the weight's enclosure reaches 0 there.
+    pub fn jet(&self, t: Interval) -> Result<CurveJet, Error> {
+        let range = |net: &[IVec]| {
+            let column: Net = net.iter().map(|p| vec![p.clone()]).collect();
+            net_range(&column, t, Interval::point(0.0))
+        };
+        let (h, dh) = (range(&self.h), range(&self.dh));
+        let ((p, w), (dp, dw)) = (split(&h), split(&dh));
+        positive(&w)?;
+        let x = quotient(p, &[], &w);
+        let dx = quotient(dp, &[(dw, &x)], &w);
+        Ok(CurveJet { x, dx })
+    }
+}
+
+/// A rational patch with enclosed control nets of `H` and its partial
+/// derivatives up to order 2.
+#[derive(Clone, Debug)]
+pub struct IPatch {
+    /// Nets of `H`, `H_u`, `H_v`, `H_uu`, `H_uv`, `H_vv`.
+    nets: [Net; 6],
+}
+
+/// A patch's point and derivatives up to order 2, enclosed over a box.
+#[derive(Clone, Debug)]
+pub struct PatchJet {
+    /// `S`.
+    pub x: IVec,
+    /// `S_u`.
+    pub xu: IVec,
+    /// `S_v`.
+    pub xv: IVec,
+    /// `S_uu`.
+    pub xuu: IVec,
+    /// `S_uv`.
+    pub xuv: IVec,
+    /// `S_vv`.
+    pub xvv: IVec,
+}
+
+const ORDERS: [(usize, usize); 6] = [(0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2)];
+
+impl IPatch {
+    /// Enclose `r` (dimension 3): its homogeneous net and its derivative
+    /// nets, formed exactly then enclosed.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Shape`] unless the patch is in 3D; [`Error::Weight`] for a
+    /// weight whose enclosure is not positive.
+    pub fn new<T: Scalar + Enclose>(r: &RectPatch<T>) -> Result<IPatch, Error> {
+        if r.dim() != 3 {
+            return Err(Error::Shape(format!(
+                "a face patch in {}D, not 3D",
+                r.dim()
+            )));
+        }
+        let net = |(a, b): (usize, usize)| -> Net {
+            match r.derivative_patch(a, b) {
+                Some(d) => d
+                    .ctrl()
+                    .iter()
+                    .map(|row| row.iter().map(enclose_hpoint).collect())
+                    .collect(),
+                None => vec![vec![vec![Interval::point(0.0); 4]]],
+            }
+        };
+        let nets = ORDERS.map(net);
+        check_weights(nets[0].iter().flatten())?;
+        Ok(IPatch { nets })
+    }
+
+    /// `S` and its derivatives over all `(u, v)` in the box `u × v`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Domain`] when the weight's enclosure reaches 0 there.
+    pub fn jet(&self, u: Interval, v: Interval) -> Result<PatchJet, Error> {
+        let [h, hu, hv, huu, huv, hvv] = self.nets.each_ref().map(|n| net_range(n, u, v));
+        let (p, w) = split(&h);
+        positive(&w)?;
+        let [(pu, wu), (pv, wv), (puu, wuu), (puv, wuv), (pvv, wvv)] =
+            [&hu, &hv, &huu, &huv, &hvv].map(split);
+        let x = quotient(p, &[], &w);
+        let xu = quotient(pu, &[(wu, &x)], &w);
+        let xv = quotient(pv, &[(wv, &x)], &w);
+        let two = Interval::point(2.0);
+        let xuu = quotient(puu, &[(wu.mul(&two), &xu), (wuu, &x)], &w);
+        let xuv = quotient(puv, &[(wu, &xv), (wv, &xu), (wuv, &x)], &w);
+        let xvv = quotient(pvv, &[(wv.mul(&two), &xv), (wvv, &x)], &w);
+        Ok(PatchJet {
+            x,
+            xu,
+            xv,
+            xuu,
+            xuv,
+            xvv,
+        })
+    }
+}

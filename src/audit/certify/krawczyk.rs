@@ -1,0 +1,74 @@
+//! The Krawczyk operator for the foot-point system of a point and a patch.
+//!
+//! The foot point `(u, v)` of a point `c` on a patch `S` makes `S − c`
+//! normal to the surface:
+//!
+//! ```text
+//! F(u, v) = ((S − c)·S_u, (S − c)·S_v) = 0,
+//! J = [[S_u·S_u + (S − c)·S_uu, S_u·S_v + (S − c)·S_uv],
+//!      [S_u·S_v + (S − c)·S_uv, S_v·S_v + (S − c)·S_vv]].
+//! ```
+//!
+//! With `m` the centre of a box `B`, `Y` any real matrix (an approximate
+//! inverse of `J(m)`), the Krawczyk operator is
+//! `K(B) = m − Y F(m) + (I − Y J(B)) (B − m)`. If `K(B)` lies in the
+//! interior of `B`, `F` has exactly one zero in `B`, and it lies in `K(B)`
+//! (Moore, Kearfott & Cloud, *Introduction to Interval Analysis*, SIAM
+//! 2009, §8.2; Krawczyk 1969). With `c` an enclosure of a whole piece of
+//! the edge, the conclusion holds for each of its points at once.
+
+use super::bezier::{IPatch, PatchJet};
+use super::ivec::{dot, sub};
+use crate::algebra::Interval;
+use crate::error::Error;
+
+/// A 2 × 2 interval matrix.
+pub type IMat = [[Interval; 2]; 2];
+
+/// `F` and `J` of the foot-point system over a patch jet and point box `c`.
+pub fn system(s: &PatchJet, c: &[Interval]) -> ([Interval; 2], IMat) {
+    let r = sub(&s.x, c);
+    let f = [dot(&r, &s.xu), dot(&r, &s.xv)];
+    let cross = dot(&s.xu, &s.xv).add(&dot(&r, &s.xuv));
+    let j = [
+        [dot(&s.xu, &s.xu).add(&dot(&r, &s.xuu)), cross],
+        [cross, dot(&s.xv, &s.xv).add(&dot(&r, &s.xvv))],
+    ];
+    (f, j)
+}
+
+/// The inverse of the real 2 × 2 matrix of midpoints of `j`, if regular.
+pub fn mid_inverse(j: &IMat) -> Option<[[f64; 2]; 2]> {
+    let [[a, b], [c, d]] = j.map(|r| r.map(|x| x.mid()));
+    let det = a * d - b * c;
+    (det.is_finite() && det != 0.0).then(|| [[d / det, -b / det], [-c / det, a / det]])
+}
+
+/// `K(B)` for the box `b` and point enclosure `c`; `None` when the
+/// Jacobian's midpoint is singular.
+///
+/// # Errors
+///
+/// Those of [`IPatch::jet`].
+pub fn krawczyk(
+    patch: &IPatch,
+    b: [Interval; 2],
+    c: &[Interval],
+) -> Result<Option<[Interval; 2]>, Error> {
+    let m = b.map(|x| Interval::point(x.mid()));
+    let (fm, _) = system(&patch.jet(m[0], m[1])?, c);
+    let (_, jb) = system(&patch.jet(b[0], b[1])?, c);
+    let Some(y) = mid_inverse(&jb) else {
+        return Ok(None);
+    };
+    let y = y.map(|r| r.map(Interval::point));
+    let k = |i: usize| {
+        let newton = (0..2).fold(m[i], |acc, j| acc.sub(&y[i][j].mul(&fm[j])));
+        (0..2).fold(newton, |acc, k| {
+            let ident = Interval::point(if i == k { 1.0 } else { 0.0 });
+            let yj = (0..2).fold(ident, |e, j| e.sub(&y[i][j].mul(&jb[j][k])));
+            acc.add(&yj.mul(&b[k].sub(&m[k])))
+        })
+    };
+    Ok(Some([k(0), k(1)]))
+}

@@ -1,0 +1,149 @@
+//! Branch and bound for the maximum of a quantity along an edge.
+//!
+//! The edge's parameter interval is split into pieces `T`. For each piece
+//! the caller proves an upper bound of the quantity on all of `T` and a
+//! lower bound of its value at one point of `T` (see [`Bound`]). The piece
+//! with the greatest upper bound `U` is split in two until
+//! `U − L ≤ rel · U + abs`, `L` the greatest lower bound found: then the
+//! maximum lies in `[L, U]`, attained in the hull of the pieces whose upper
+//! bound reaches `L`. Every piece examined is charged to the work budget
+//! ([`crate::limits::charge`]).
+
+use crate::algebra::Interval;
+use crate::error::Error;
+use crate::limits;
+use std::cmp::Ordering;
+use std::collections::BinaryHeap;
+
+/// The tightness asked of an enclosure `[lo, hi]`: `hi − lo ≤ rel·hi + abs`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Target {
+    /// Relative width.
+    pub rel: f64,
+    /// Absolute width (in the quantity's unit).
+    pub abs: f64,
+}
+
+/// What the caller proves on one piece `T` of the edge.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bound {
+    /// At least the quantity at every parameter of `T`.
+    pub upper: f64,
+    /// At most the quantity at some parameter of `T`.
+    pub lower: f64,
+}
+
+/// A proved enclosure of a maximum along an edge.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Enclosure {
+    /// The true maximum is at least this.
+    pub lo: f64,
+    /// The true maximum is at most this.
+    pub hi: f64,
+    /// The edge parameters where the maximum may be attained (it is
+    /// attained somewhere in this interval).
+    pub at: Interval,
+    /// Whether the target width was reached (else the pieces became too
+    /// short to split: `[lo, hi]` is still proved, only wider).
+    pub tight: bool,
+}
+
+impl Enclosure {
+    /// The greater of two maxima (over two parts of an edge).
+    pub fn max(self, o: Enclosure) -> Enclosure {
+        let at = if o.hi > self.hi { o.at } else { self.at };
+        Enclosure {
+            lo: self.lo.max(o.lo),
+            hi: self.hi.max(o.hi),
+            at,
+            tight: self.tight && o.tight,
+        }
+    }
+}
+
+/// Pieces shorter than this are not split.
+const MIN_PIECE: f64 = 1e-12;
+
+/// Work units charged per piece examined (calibrated: a piece costs about
+/// as much as a few hundred small exact operations).
+pub const WORK_PER_PIECE: u64 = 2_000;
+
+/// The maximum over `t ∈ range` of a quantity bounded piecewise by `bound`
+/// (`Ok(None)`: not proved on this piece; it is split).
+///
+/// # Errors
+///
+/// [`Error::Limit`] when the work budget runs out; [`Error::Domain`] when
+/// a piece too short to split is still not proved; the errors of `bound`.
+pub fn maximize(
+    range: Interval,
+    target: Target,
+    mut bound: impl FnMut(Interval) -> Result<Option<Bound>, Error>,
+) -> Result<Enclosure, Error> {
+    let mut pieces: BinaryHeap<Piece> = BinaryHeap::new();
+    let mut lower = f64::NEG_INFINITY;
+    let mut todo = vec![range];
+    loop {
+        for t in todo.drain(..) {
+            limits::charge("a certified measure along an edge", WORK_PER_PIECE)?;
+            let upper = match bound(t)? {
+                Some(b) => {
+                    lower = lower.max(b.lower);
+                    b.upper
+                }
+                None if t.width() < MIN_PIECE => {
+                    return Err(Error::Domain(format!(
+                        "the foot points near edge parameter {:e} cannot be proved (the edge leaves the face or meets it at a singular point)",
+                        t.mid()
+                    )))
+                }
+                None => f64::INFINITY,
+            };
+            pieces.push(Piece { upper, t });
+        }
+        let Piece { upper, t } = pieces.pop().expect("at least one piece");
+        let done = upper.is_finite() && upper - lower <= target.rel * upper + target.abs;
+        if done || t.width() < MIN_PIECE {
+            let at = pieces
+                .iter()
+                .filter(|p| p.upper >= lower)
+                .fold(t, |a, p| a.hull(&p.t));
+            return Ok(Enclosure {
+                lo: lower.max(0.0),
+                hi: upper,
+                at,
+                tight: done,
+            });
+        }
+        let m = t.mid();
+        todo.push(Interval { lo: t.lo, hi: m });
+        todo.push(Interval { lo: m, hi: t.hi });
+    }
+}
+
+/// A piece of the edge ordered by its upper bound (greatest first).
+#[derive(Clone, Copy, Debug)]
+struct Piece {
+    upper: f64,
+    t: Interval,
+}
+
+impl PartialEq for Piece {
+    fn eq(&self, o: &Piece) -> bool {
+        self.cmp(o) == Ordering::Equal
+    }
+}
+
+impl Eq for Piece {}
+
+impl PartialOrd for Piece {
+    fn partial_cmp(&self, o: &Piece) -> Option<Ordering> {
+        Some(self.cmp(o))
+    }
+}
+
+impl Ord for Piece {
+    fn cmp(&self, o: &Piece) -> Ordering {
+        self.upper.total_cmp(&o.upper)
+    }
+}
