@@ -850,12 +850,13 @@ const NOT_APPLIED: [&str; 3] = [
 ///
 /// ```
 /// let step = "ISO-10303-21;\nDATA;\n#1=CARTESIAN_POINT('',(0.,0.,0.));\n\
-///             #2=VERTEX_POINT('',#1);\n#3=VERTEX_LOOP('',#2);\n#4=PLANE('',#9);\n\
+///             #2=VERTEX_POINT('',#1);\n#3=VERTEX_LOOP('',#2);\n#4=OFFSET_SURFACE('',#9,1.,.F.);\n\
 ///             #5=FACE_OUTER_BOUND('',#3,.T.);\n#6=ADVANCED_FACE('',(#5),#4,.T.);\n\
 ///             #7=OPEN_SHELL('',(#6));\nENDSEC;\nEND-ISO-10303-21;\n";
 /// let m = exact_bezier::step::read_brep(step.as_bytes()).unwrap();
-/// assert_eq!(m.summary.faces_by_surface["PLANE"], 1);
-/// assert_eq!(m.summary.not_converted["PLANE"], 1);
+/// assert_eq!(m.summary.faces_by_surface["OFFSET_SURFACE"], 1);
+/// // Not rational: kept, named and counted, never dropped.
+/// assert_eq!(m.summary.not_converted["OFFSET_SURFACE"], 1);
 /// ```
 pub fn read_brep(input: impl BufRead) -> Result<BrepModel, Error> {
     read_brep_with(input, BrepOptions::default())
