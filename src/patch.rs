@@ -9,7 +9,6 @@ use crate::hpoint::HPoint;
 use crate::limits::{Cost, Size};
 use crate::rect::RectPatch;
 use crate::tri::TriPatch;
-use num_rational::BigRational;
 
 /// A curve, rectangular patch or triangular patch (the `"kind"` of the
 /// JSON format: `"curve"`, `"rect"`, `"tri"`).
@@ -61,7 +60,7 @@ impl<T: Scalar> Patch<T> {
     }
 }
 
-impl Patch<BigRational> {
+impl<T: Ordered> Patch<T> {
     /// The patch with `f64` coordinates (nearest values).
     pub fn to_f64(&self) -> Patch<f64> {
         self.map(Ordered::to_f64)

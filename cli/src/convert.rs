@@ -9,7 +9,7 @@ use super::{
     ScalarKind,
 };
 use crate::session::{emit, json_text};
-use exact_bezier::algebra::{Field, Ordered, Scalar};
+use exact_bezier::algebra::{Field, Ordered, RealAlgebraic, Scalar};
 use exact_bezier::audit::Origin;
 use exact_bezier::convert::{rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Split};
 use exact_bezier::io::trig::read_trig_patches;
@@ -241,7 +241,7 @@ fn nurbs_to_bezier(a: &Args) -> Result<Value, Error> {
 }
 
 /// A piece with its origin, normalized and over the scalar of `a`.
-fn write_piece(p: &Patch<BigRational>, origin: &Origin, a: &Args) -> Result<Value, Error> {
+fn write_piece<T: JsonScalar + Ordered>(p: &Patch<T>, origin: &Origin, a: &Args) -> Result<Value, Error> {
     let patch = if a.normalize {
         normalized(p)?
     } else {
@@ -256,7 +256,7 @@ fn write_piece(p: &Patch<BigRational>, origin: &Origin, a: &Args) -> Result<Valu
 /// A STEP B-rep: one document, or JSON Lines (every line but the last
 /// emitted here, the model line returned).
 fn step_to_bezier(m: BrepModel, a: &Args) -> Result<Value, Error> {
-    let write = |p: &Patch<BigRational>, o: &Origin| write_piece(p, o, a);
+    let write = |p: &Patch<RealAlgebraic>, o: &Origin| write_piece(p, o, a);
     if !a.jsonl {
         return brep_to_json(&m, &write);
     }

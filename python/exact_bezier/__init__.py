@@ -46,7 +46,7 @@ from ._native import (
     key_text,
     read_json,
 )
-from .objects import NurbsCurve, NurbsSurface, TrigPatch
+from .objects import BrepModel, NurbsCurve, NurbsSurface, TrigPatch
 from .operations import (
     DedupClass,
     arc,
@@ -88,6 +88,7 @@ __all__ = [
     "LimitExceeded",
     "NurbsCurve",
     "NurbsSurface",
+    "BrepModel",
     "ParseError",
     "Poly",
     "RectPatch",

@@ -191,3 +191,73 @@ class NurbsSurface(_JsonObject):
 
 
 __all__ = ["NurbsCurve", "NurbsSurface", "TrigPatch", "to_python", "run_json"]
+
+
+class BrepModel:
+    """A STEP file's B-rep, read exactly (``exact-bezier convert FILE
+    --to bezier``, layout in docs/FORMAT.md "B-rep"): faces with their
+    surface pieces and bounds, edges with their curve pieces (trimmed
+    between their vertices), vertices, units, tolerance and a summary.
+
+    Numbers are ``Fraction`` or ``Algebraic``; pieces with rational numbers
+    are ``Curve``/``RectPatch`` objects, pieces with radicals dicts. The
+    JSON text is kept: ``to_json()`` gives it back, so the model can be
+    given to ``audit`` (which reads its surface pieces) and pickled.
+    """
+
+    def __init__(self, text: str) -> None:
+        self._text = text
+        self._doc = to_python(json.loads(text))
+        if not isinstance(self._doc, dict) or self._doc.get("kind") != "brep":
+            raise ParseError("malformed input: expected a B-rep document (kind \"brep\")")
+
+    @classmethod
+    def from_json(cls, text: str) -> "BrepModel":
+        """Read a B-rep document written by ``convert --to bezier``."""
+        try:
+            return cls(text)
+        except json.JSONDecodeError as e:
+            raise ParseError(f"malformed input: {e}") from None
+
+    def to_json(self) -> str:
+        """The B-rep document's JSON text."""
+        return self._text
+
+    @property
+    def faces(self) -> List[Dict[str, Any]]:
+        """The faces: ``id``, ``same_sense``, ``surface`` (entity, type,
+        status, pieces), ``bounds``."""
+        return self._doc["faces"]
+
+    @property
+    def edges(self) -> List[Dict[str, Any]]:
+        """The edges: ``id``, ``curve``, ``start``, ``end``, ``use``,
+        ``faces``, ``pcurves``."""
+        return self._doc["edges"]
+
+    @property
+    def vertices(self) -> List[Dict[str, Any]]:
+        """The vertices: ``id`` and exact ``point``."""
+        return self._doc["vertices"]
+
+    @property
+    def summary(self) -> Dict[str, Any]:
+        """Faces by surface type, edges by curve type, edge uses, what was
+        not converted or only approximated, invalid entities."""
+        return self._doc["summary"]
+
+    @property
+    def contexts(self) -> List[Dict[str, Any]]:
+        """Units and declared tolerance of each representation context."""
+        return self._doc["contexts"]
+
+    def surface_pieces(self) -> List[Any]:
+        """Every converted face's surface pieces, face by face."""
+        return [p for f in self.faces for p in f["surface"].get("pieces", [])]
+
+    def __repr__(self) -> str:
+        s = self.summary
+        return f"<BrepModel: {s['faces']} faces, {s['edges']} edges, {s['vertices']} vertices>"
+
+    def __reduce__(self) -> Any:
+        return (BrepModel.from_json, (self._text,))

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, Dict, Iterable, Iterator, List, Optional, Sequence, Tuple, Union
 
-from ._bridge import Patchlike, as_fractions, exact_text, json_input, run_json
+from ._bridge import Patchlike, as_fractions, exact_text, json_input, run_json, run_text
 from ._native import Curve, TriPatch, key
 
 Number = Union[int, Fraction, str]
@@ -236,11 +236,13 @@ def audit(model: Any, *, summary: bool = False) -> Dict[str, Any]:
     return run_json(args, json_input(model))
 
 
-def read_step(text: Union[str, bytes, os.PathLike]) -> List[Patchlike]:
-    """The rational Bézier pieces of the B-spline surfaces and curves of a
-    STEP file (its text, or a path), as ``convert --to bezier`` gives
-    them."""
-    return convert(_read_if_path(text), "bezier")
+def read_step(text: Union[str, bytes, os.PathLike]) -> "BrepModel":
+    """The B-rep of a STEP file (its text, or a path) as a
+    :class:`BrepModel`: every face and edge with its exact pieces, as
+    ``convert --to bezier`` gives them."""
+    from .objects import BrepModel
+
+    return BrepModel(run_text(["convert", "-", "--to=bezier"], _read_if_path(text)))
 
 
 def read_nurbs(text: Union[str, bytes, os.PathLike]) -> List[Patchlike]:

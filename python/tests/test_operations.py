@@ -1,6 +1,7 @@
 """The command line's capabilities as functions, against the Fraction
 oracle (oracle.py) and values derived by hand."""
 
+import pickle
 import pathlib
 from fractions import Fraction
 
@@ -154,7 +155,9 @@ def test_arc_with_an_algebraic_cosine():
 
 
 def test_read_step_gives_the_bezier_pieces():
-    pieces = eb.read_step(ROOT / "docs" / "examples" / "two_faces.stp")
+    model = eb.read_step(ROOT / "docs" / "examples" / "two_faces.stp")
+    assert model.summary["faces"] == 2
+    pieces = model.surface_pieces()
     assert [p.kind for p in pieces] == ["rect", "rect"]
     # The second face ends at (2, y, 1/2) in the file.
     assert pieces[1].eval(1, 0)[0] == 2 and pieces[1].eval(1, 0)[2] == Fraction(1, 2)
@@ -187,3 +190,16 @@ def test_dedup_matches_the_command_line():
     cli = run_json(["dedup", "-"], json_input(cs))
     assert [c["members"] for c in cli] == [m for m, _ in ours]
     assert list(eb.keys(cs)) == [eb.key(c) for c in cs]
+
+
+def test_a_step_b_rep_read_whole_exactly():
+    # The screw of tests/fixtures/step (EUCLID, LGPL): 10 faces (4 planes,
+    # 3 tori, 2 cones, 1 cylinder) and 22 edges, every one converted; each
+    # edge used twice (3 seams), as counted by hand in its README.
+    model = eb.read_step(ROOT / "tests" / "fixtures" / "step" / "screw.step")
+    s = model.summary
+    assert s["faces_by_surface"] == {"PLANE": 4, "TOROIDAL_SURFACE": 3, "CONICAL_SURFACE": 2, "CYLINDRICAL_SURFACE": 1}
+    assert s["edges"] == 22 and s["edge_uses"] == {"shared": 19, "seam": 3}
+    assert all(f["surface"]["status"] == "converted" for f in model.faces)
+    assert all(e["curve"]["status"] == "converted" for e in model.edges)
+    assert pickle.loads(pickle.dumps(model)).summary == s

@@ -6,18 +6,21 @@
 
 use super::{point_to_json, JsonScalar};
 use crate::audit::Origin;
+use crate::algebra::RealAlgebraic;
+use crate::algebra::Scalar;
 use crate::error::Error;
 use crate::patch::Patch;
 use crate::step::brep::{
     AngleUnit, Bound, Edge, EdgeUse, Face, Geometry, GeometryRef, Loop, Shell,
 };
 use crate::step::BrepModel;
-use num_rational::BigRational;
 use serde_json::{json, Map, Value};
 use std::collections::BTreeSet;
 
-/// Writes one piece with its origin (exactly, or as floats).
-pub type PieceWriter<'a> = &'a dyn Fn(&Patch<BigRational>, &Origin) -> Result<Value, Error>;
+/// Writes one piece with its origin (exactly, or as floats). B-spline
+/// pieces are rational and analytic ones may hold radicals: both come
+/// over the real algebraic numbers.
+pub type PieceWriter<'a> = &'a dyn Fn(&Patch<RealAlgebraic>, &Origin) -> Result<Value, Error>;
 
 fn id(n: u64) -> Value {
     json!(format!("#{n}"))
@@ -46,10 +49,32 @@ fn geometry_json(g: &GeometryRef, faces: &[u64], write: PieceWriter) -> Result<V
                         v: p.v.clone(),
                         element: None,
                     };
-                    write(&p.patch, &origin)
+                    write(&p.patch.map(RealAlgebraic::from_rational), &origin)
                 })
                 .collect::<Result<Vec<_>, _>>()?;
             o.insert("pieces".into(), Value::Array(written));
+        }
+        Geometry::Analytic(a) => {
+            o.insert("status".into(), json!("converted"));
+            let origin = Origin {
+                entity: Some(g.entity),
+                faces: faces.to_vec(),
+                u: None,
+                v: None,
+                element: None,
+            };
+            let written = a
+                .pieces
+                .iter()
+                .map(|p| write(p, &origin))
+                .collect::<Result<Vec<_>, _>>()?;
+            o.insert("pieces".into(), Value::Array(written));
+            if let Some(why) = &a.approximate {
+                o.insert("approximate".into(), json!(why));
+            }
+            if let Some(d) = &a.vertex_distance_sq {
+                o.insert("vertex_distance_sq".into(), point_to_json(d));
+            }
         }
         Geometry::NotConverted => {
             o.insert("status".into(), json!("not converted"));
@@ -164,7 +189,12 @@ fn message(m: &BrepModel) -> Option<String> {
     let converted = m
         .faces
         .values()
-        .filter(|f| matches!(f.surface.geometry, Geometry::Pieces(_)))
+        .filter(|f| {
+            matches!(
+                f.surface.geometry,
+                Geometry::Pieces(_) | Geometry::Analytic(_)
+            )
+        })
         .count();
     if m.faces.is_empty() {
         return Some(format!(
@@ -253,6 +283,8 @@ pub fn brep_model_json(m: &BrepModel, write: PieceWriter) -> Result<Value, Error
             "faces_by_surface": s.faces_by_surface,
             "edges_by_curve": s.edges_by_curve,
             "not_converted": s.not_converted,
+            "pcurves_not_converted": s.pcurves_not_converted,
+            "approximate": s.approximate,
             "edge_uses": uses,
             "not_applied": s.not_applied,
             "invalid_entities": s.invalid.iter().chain(&m.geometry.invalid).map(|(e, r)| json!({"entity": id(*e), "reason": r})).collect::<Vec<_>>(),

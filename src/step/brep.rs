@@ -26,9 +26,10 @@
 
 use super::parser::{Instance, Param, Reader, Record};
 use super::{cartesian, Collector, StepModel};
-use crate::algebra::parse_rational;
+use crate::algebra::{parse_rational, RealAlgebraic};
 use crate::error::Error;
 use crate::nurbs::{Nurbs, SpannedPatch};
+use crate::patch::Patch;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use std::collections::{BTreeMap, HashMap};
@@ -39,10 +40,31 @@ use std::io::BufRead;
 pub enum Geometry {
     /// Exact rational Bézier pieces with their parameter spans.
     Pieces(Vec<SpannedPatch>),
-    /// A type this reader does not convert yet: kept with its name.
+    /// Exact pieces of an analytic curve or surface, over the real
+    /// algebraic numbers (see [`AnalyticPieces`]).
+    Analytic(AnalyticPieces),
+    /// A type this reader does not convert: kept with its name.
     NotConverted,
     /// The entity could not be read: why.
     Invalid(String),
+}
+
+/// The exact pieces of an analytic face surface or edge curve
+/// ([`crate::analytic`], read by [`super::geometry`]): a face's surface
+/// covers the face (its bounding edges' control points), an edge's curve
+/// runs from the edge's start vertex to its end vertex.
+#[derive(Clone, Debug)]
+pub struct AnalyticPieces {
+    /// The pieces (curves for edges, rect patches for faces). Coordinates
+    /// are rational where the frame's unit vectors are, else radicals.
+    pub pieces: Vec<Patch<RealAlgebraic>>,
+    /// Why the pieces are not exactly the entity, when they are not (a
+    /// cone's slope that is not a multiple of 15°, an angle trim).
+    pub approximate: Option<String>,
+    /// For an edge: `|start vertex − first point|²` and `|end vertex −
+    /// last point|²`, exact (the vertices are rounded decimals; the pieces
+    /// end exactly on the curve at rational parameters nearest to them).
+    pub vertex_distance_sq: Option<[RealAlgebraic; 2]>,
 }
 
 /// A referenced geometric entity: its id, type name and geometry.
@@ -249,9 +271,15 @@ pub struct Summary {
     pub faces_by_surface: BTreeMap<String, usize>,
     /// Edges by (3D) curve type.
     pub edges_by_curve: BTreeMap<String, usize>,
-    /// Surfaces and curves of faces, edges and pcurves whose type is not
-    /// converted (yet), by type.
+    /// Surfaces of faces and curves of edges whose type is not converted
+    /// (not rational, e.g. `OFFSET_SURFACE`), by type.
     pub not_converted: BTreeMap<String, usize>,
+    /// Pcurves whose 2D curve is not converted (analytic pcurves: see
+    /// [`analytic`]), by type.
+    pub pcurves_not_converted: BTreeMap<String, usize>,
+    /// Faces and edges whose pieces are not exactly their entity (see
+    /// [`AnalyticPieces::approximate`]), by type.
+    pub approximate: BTreeMap<String, usize>,
     /// Edges by use.
     pub edge_uses: BTreeMap<EdgeUse, usize>,
     /// Entities read but not applied (assembly placements), by type.
@@ -393,6 +421,10 @@ struct Builder<'a> {
     store: &'a Store,
     conv: Converted<'a>,
     model: BrepModel,
+    /// Convert analytic faces and edges ([`BrepOptions::analytic`])?
+    analytic: bool,
+    /// The units of the body being read ([`analytic::Units`]).
+    units: analytic::Units,
 }
 
 impl Builder<'_> {
@@ -466,7 +498,7 @@ impl Builder<'_> {
             }
             curve = reference(sc.params.get(1), "curve_3d")?;
         }
-        let curve = self.geometry(curve, false);
+        let curve = self.edge_curve(curve, (start, end), same_sense);
         self.model.edges.insert(
             id,
             Edge {
@@ -517,7 +549,7 @@ impl Builder<'_> {
             return Ok(());
         }
         let r = one_of(self.store, id, &["ADVANCED_FACE", "FACE_SURFACE"])?;
-        let surface = self.geometry(reference(r.params.get(2), "face_geometry")?, true);
+        let surface_id = reference(r.params.get(2), "face_geometry")?;
         let same_sense = boolean(r.params.get(3), "same_sense")?;
         let mut bounds = Vec::new();
         for b in references(r.params.get(1), "bounds")? {
@@ -531,6 +563,7 @@ impl Builder<'_> {
                 edges: self.edge_loop(loop_id, id)?,
             });
         }
+        let surface = self.face_surface(surface_id, &bounds);
         self.model.faces.insert(
             id,
             Face {
@@ -624,14 +657,15 @@ impl Builder<'_> {
                 if solids.is_empty() {
                     continue;
                 }
+                let context = reference(Some(ctx), "context").ok();
+                if let Some(c) = context {
+                    self.context(c);
+                }
+                self.units = analytic::Units::of(context.and_then(|c| self.model.contexts.get(&c)));
                 for &s in &solids {
                     if let Err(e) = self.solid(s) {
                         self.invalid(s, e);
                     }
-                }
-                let context = reference(Some(ctx), "context").ok();
-                if let Some(c) = context {
-                    self.context(c);
                 }
                 self.model.bodies.push(Body {
                     id,
@@ -816,14 +850,39 @@ const NOT_APPLIED: [&str; 3] = [
 ///
 /// ```
 /// let step = "ISO-10303-21;\nDATA;\n#1=CARTESIAN_POINT('',(0.,0.,0.));\n\
-///             #2=VERTEX_POINT('',#1);\n#3=VERTEX_LOOP('',#2);\n#4=PLANE('',#9);\n\
+///             #2=VERTEX_POINT('',#1);\n#3=VERTEX_LOOP('',#2);\n#4=OFFSET_SURFACE('',#9,1.,.F.);\n\
 ///             #5=FACE_OUTER_BOUND('',#3,.T.);\n#6=ADVANCED_FACE('',(#5),#4,.T.);\n\
 ///             #7=OPEN_SHELL('',(#6));\nENDSEC;\nEND-ISO-10303-21;\n";
 /// let m = exact_bezier::step::read_brep(step.as_bytes()).unwrap();
-/// assert_eq!(m.summary.faces_by_surface["PLANE"], 1);
-/// assert_eq!(m.summary.not_converted["PLANE"], 1);
+/// assert_eq!(m.summary.faces_by_surface["OFFSET_SURFACE"], 1);
+/// // Not rational: kept, named and counted, never dropped.
+/// assert_eq!(m.summary.not_converted["OFFSET_SURFACE"], 1);
 /// ```
 pub fn read_brep(input: impl BufRead) -> Result<BrepModel, Error> {
+    read_brep_with(input, BrepOptions::default())
+}
+
+/// What [`read_brep_with`] converts.
+#[derive(Clone, Copy, Debug)]
+pub struct BrepOptions {
+    /// Convert analytic surfaces and curves to exact pieces (the default);
+    /// `false` reads the topology and the B-spline geometry only, much
+    /// faster (analytic geometry is then "not converted").
+    pub analytic: bool,
+}
+
+impl Default for BrepOptions {
+    fn default() -> Self {
+        BrepOptions { analytic: true }
+    }
+}
+
+/// [`read_brep`] with [`BrepOptions`].
+///
+/// # Errors
+///
+/// As [`read_brep`].
+pub fn read_brep_with(input: impl BufRead, options: BrepOptions) -> Result<BrepModel, Error> {
     let mut reader = Reader::new(input);
     let mut collector = Collector::default();
     let mut store = Store::new();
@@ -846,6 +905,8 @@ pub fn read_brep(input: impl BufRead) -> Result<BrepModel, Error> {
         store: &store,
         conv,
         model: BrepModel::default(),
+        analytic: options.analytic,
+        units: analytic::Units::of(None),
     };
     b.bodies(&order);
     let mut summary_extra = BTreeMap::new();
@@ -888,18 +949,27 @@ pub fn read_brep(input: impl BufRead) -> Result<BrepModel, Error> {
 /// Fill the counts of the summary from the model.
 fn summarize(m: &mut BrepModel) {
     let s = &mut m.summary;
-    let mut not_converted = |g: &GeometryRef| {
-        if matches!(g.geometry, Geometry::NotConverted) {
-            *s.not_converted.entry(g.kind.clone()).or_insert(0) += 1;
+    let mut not_converted = |g: &GeometryRef, pcurve: bool| {
+        let missing = if pcurve {
+            &mut s.pcurves_not_converted
+        } else {
+            &mut s.not_converted
+        };
+        match &g.geometry {
+            Geometry::NotConverted => *missing.entry(g.kind.clone()).or_insert(0) += 1,
+            Geometry::Analytic(a) if a.approximate.is_some() => {
+                *s.approximate.entry(g.kind.clone()).or_insert(0) += 1;
+            }
+            _ => {}
         }
     };
     for f in m.faces.values() {
-        not_converted(&f.surface);
+        not_converted(&f.surface, false);
     }
     for e in m.edges.values() {
-        not_converted(&e.curve);
+        not_converted(&e.curve, false);
         for p in &e.pcurves {
-            not_converted(&p.curve);
+            not_converted(&p.curve, true);
         }
     }
     for f in m.faces.values() {
@@ -931,5 +1001,6 @@ impl Shell {
     }
 }
 
+mod analytic;
 #[cfg(test)]
 mod tests;

@@ -37,7 +37,7 @@ pub mod brep;
 pub mod geometry;
 pub mod parser;
 
-pub use brep::{read_brep, BrepModel};
+pub use brep::{read_brep, read_brep_with, BrepModel, BrepOptions};
 
 use parser::{Instance, Param, Reader, Record};
 

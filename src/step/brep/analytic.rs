@@ -1,0 +1,217 @@
+//! The analytic geometry of a B-rep's faces and edges: every face surface
+//! and edge curve that is not a B-spline becomes exact pieces through
+//! [`crate::step::geometry`] (placements, conics and quadrics of
+//! [`crate::analytic`]), over the real algebraic numbers.
+//!
+//! - An **edge** curve is trimmed to the edge ([`trim_between`]): from the
+//!   start vertex to the end vertex, along the curve when the edge's
+//!   `same_sense` is true and against it otherwise, so the pieces always
+//!   run from `edge_start` to `edge_end`. The vertices are rounded decimals
+//!   that lie on the curve only within the model's tolerance: each is
+//!   located at the nearest dyadic parameter, the pieces end exactly on the
+//!   curve there, and the exact squared distances are kept
+//!   ([`AnalyticPieces::vertex_distance_sq`]). Unbounded curves (`LINE`)
+//!   are first cut to cover both vertices.
+//! - A **face** surface is cut to cover the face in its unbounded
+//!   directions (plane, cylinder, cone, extrusion): the range spanned by the
+//!   control points of its bounding edges' pieces, the vertices of vertex
+//!   loops and the points of poly loops ([`covering_range`](crate::analytic::covering_range)).
+//!   Closed directions (angles) are whole turns.
+//! - `PCURVE`s (curves in a surface's parameter plane) are converted when
+//!   they are B-splines; analytic pcurves are named, not converted (their
+//!   range on the edge needs the vertices' surface parameters).
+
+use super::{
+    curve_geometry, surface_geometry, type_name, AnalyticPieces, AngleUnit, Bound, Builder,
+    Context, Geometry, GeometryRef, Loop,
+};
+use crate::algebra::RealAlgebraic;
+use crate::algebra::Scalar;
+use crate::analytic::{trim_between, AngleUnit as PlaneAngle};
+use crate::curve::RationalCurve;
+use crate::error::Error;
+use crate::nurbs::Nurbs;
+use crate::patch::Patch;
+use crate::step::geometry::{curve_pieces, surface_pieces, Context as Readers, Curve, Surface};
+use num_rational::BigRational;
+
+/// The units the geometry readers need, from a representation context.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Units {
+    /// The plane angle unit (cone semi-angles, angle trims).
+    angle: PlaneAngle,
+    /// How near (an `f64` distance in the model's length unit) a vertex
+    /// must be to a piece's end to be taken there: the declared tolerance,
+    /// or 10⁻⁷ without one. A search heuristic only: the trimmed pieces
+    /// and the distances kept are exact.
+    snap: f64,
+}
+
+impl Units {
+    /// The units of `context` (radians and a 10⁻⁷ snap when absent; an
+    /// angle unit other than the degree is taken as the radian).
+    pub(super) fn of(context: Option<&Context>) -> Self {
+        let angle = match context.and_then(|c| c.angle.as_ref()) {
+            Some(AngleUnit::Degree) => PlaneAngle::Degree,
+            _ => PlaneAngle::Radian,
+        };
+        let snap = context
+            .and_then(|c| c.tolerance.as_ref())
+            .map_or(1e-7, |t| crate::algebra::scalar::Ordered::to_f64(t));
+        Units { angle, snap }
+    }
+}
+
+fn lift(p: &[BigRational]) -> Vec<RealAlgebraic> {
+    p.iter().map(RealAlgebraic::from_rational).collect()
+}
+
+/// The Bézier curve pieces of a B-spline curve entity, lifted.
+fn bspline_pieces(nurbs: &Nurbs) -> Vec<RationalCurve<RealAlgebraic>> {
+    nurbs
+        .pieces()
+        .into_iter()
+        .filter_map(|p| match p.patch {
+            Patch::Curve(c) => Some(c.map(RealAlgebraic::from_rational)),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The Cartesian control points of pieces (positive weights: their hull
+/// contains the pieces).
+fn control_points(pieces: &[Patch<RealAlgebraic>]) -> Vec<Vec<RealAlgebraic>> {
+    pieces
+        .iter()
+        .flat_map(|p| match p {
+            Patch::Curve(c) => c.ctrl().to_vec(),
+            Patch::Rect(r) => r.ctrl().iter().flatten().cloned().collect(),
+            Patch::Tri(t) => t.rows().iter().flatten().cloned().collect(),
+        })
+        .filter_map(|h| h.project().ok())
+        .collect()
+}
+
+impl Builder<'_> {
+    /// The geometry readers over this file, in the current body's units.
+    fn with_readers<R>(&self, f: impl FnOnce(&Readers<'_, RealAlgebraic>) -> R) -> R {
+        let bspline = |id: u64| -> Result<Vec<RationalCurve<RealAlgebraic>>, Error> {
+            match self.conv.nurbs.get(&id) {
+                Some(n) => Ok(bspline_pieces(n)),
+                None => Err(Error::Format(format!("#{id} is not a B-spline curve read"))),
+            }
+        };
+        f(&Readers {
+            table: self.store,
+            angle_unit: self.units.angle,
+            bspline_curve: Some(&bspline),
+        })
+    }
+
+    /// The curve of an edge, trimmed from its start to its end vertex.
+    pub(super) fn edge_curve(
+        &self,
+        id: u64,
+        (start, end): (u64, u64),
+        same_sense: bool,
+    ) -> GeometryRef {
+        let kind = type_name(self.store, id);
+        let geometry = match curve_geometry(&kind, id, &self.conv) {
+            Geometry::NotConverted if self.analytic => {
+                let a = lift(&self.model.vertices[&start]);
+                let b = lift(&self.model.vertices[&end]);
+                self.trimmed_curve(id, &a, &b, same_sense)
+                    .unwrap_or_else(|e| Geometry::Invalid(e.to_string()))
+            }
+            g => g,
+        };
+        GeometryRef {
+            entity: id,
+            kind,
+            geometry,
+        }
+    }
+
+    fn trimmed_curve(
+        &self,
+        id: u64,
+        start: &[RealAlgebraic],
+        end: &[RealAlgebraic],
+        same_sense: bool,
+    ) -> Result<Geometry, Error> {
+        let cover = [start.to_vec(), end.to_vec()];
+        let curve = self.with_readers(|r| curve_pieces(r, id, &cover))?;
+        let Curve::Pieces(c) = curve else {
+            return Ok(Geometry::NotConverted);
+        };
+        let t = trim_between(&c.pieces, start, end, same_sense, self.units.snap)?;
+        Ok(Geometry::Analytic(AnalyticPieces {
+            pieces: t.pieces.into_iter().map(Patch::Curve).collect(),
+            approximate: c.approximate,
+            vertex_distance_sq: Some([t.start_distance_sq, t.end_distance_sq]),
+        }))
+    }
+
+    /// The surface of a face, covering its bounds.
+    pub(super) fn face_surface(&self, id: u64, bounds: &[Bound]) -> GeometryRef {
+        let kind = type_name(self.store, id);
+        let geometry = match surface_geometry(&kind, id, &self.conv) {
+            Geometry::NotConverted if self.analytic => {
+                let (boundary, unconverted) = self.boundary_points(bounds);
+                match self.with_readers(|r| surface_pieces(r, id, &boundary)) {
+                    Ok(Surface::Pieces(s)) => Geometry::Analytic(AnalyticPieces {
+                        pieces: s.patches.into_iter().map(Patch::Rect).collect(),
+                        approximate: s.approximate.or(unconverted.map(|e| {
+                            format!("the pieces cover the vertices of edge #{e}, whose curve is not converted, not the curve")
+                        })),
+                        vertex_distance_sq: None,
+                    }),
+                    Ok(Surface::BSpline(_) | Surface::Unsupported { .. }) => Geometry::NotConverted,
+                    Err(e) => Geometry::Invalid(e.to_string()),
+                }
+            }
+            g => g,
+        };
+        GeometryRef {
+            entity: id,
+            kind,
+            geometry,
+        }
+    }
+
+    /// Points whose convex hull contains a face's bounds: its edges'
+    /// control points, its loop vertices and polygon points; and an edge
+    /// whose curve is not converted (only its vertices are taken), if any.
+    fn boundary_points(&self, bounds: &[Bound]) -> (Vec<Vec<RealAlgebraic>>, Option<u64>) {
+        let mut points = Vec::new();
+        let mut unconverted = None;
+        for b in bounds {
+            match &b.edges {
+                Loop::Edges(es) => {
+                    for e in es {
+                        let Some(edge) = self.model.edges.get(&e.edge) else {
+                            continue;
+                        };
+                        match &edge.curve.geometry {
+                            Geometry::Analytic(a) => points.extend(control_points(&a.pieces)),
+                            Geometry::Pieces(ps) => points.extend(control_points(
+                                &ps.iter()
+                                    .map(|p| p.patch.map(RealAlgebraic::from_rational))
+                                    .collect::<Vec<_>>(),
+                            )),
+                            Geometry::NotConverted | Geometry::Invalid(_) => {
+                                unconverted = unconverted.or(Some(edge.id));
+                                for v in [edge.start, edge.end] {
+                                    points.extend(self.model.vertices.get(&v).map(|p| lift(p)));
+                                }
+                            }
+                        }
+                    }
+                }
+                Loop::Vertex(v) => points.extend(self.model.vertices.get(v).map(|p| lift(p))),
+                Loop::Poly(ps) => points.extend(ps.iter().map(|p| lift(p))),
+            }
+        }
+        (points, unconverted)
+    }
+}
