@@ -57,11 +57,23 @@ fn every_corpus_file_counts_as_the_independent_counter() {
     assert!(files.len() >= 19, "{} files", files.len());
     for (name, want) in files {
         let m = read(name, false);
-        assert!(m.summary.invalid.is_empty(), "{name}: {:?}", m.summary.invalid);
+        assert!(
+            m.summary.invalid.is_empty(),
+            "{name}: {:?}",
+            m.summary.invalid
+        );
         let faces = classes(m.summary.faces_by_surface.iter().map(|(k, n)| (k, *n)));
-        assert_eq!(faces, json_counts(&want["faces"]["by_surface"]), "{name}: faces");
+        assert_eq!(
+            faces,
+            json_counts(&want["faces"]["by_surface"]),
+            "{name}: faces"
+        );
         let edges = classes(m.summary.edges_by_curve.iter().map(|(k, n)| (k, *n)));
-        assert_eq!(edges, json_counts(&want["edges"]["by_curve_3d"]), "{name}: edges");
+        assert_eq!(
+            edges,
+            json_counts(&want["edges"]["by_curve_3d"]),
+            "{name}: edges"
+        );
         let uses = &want["edge_uses"];
         for (u, key) in [
             (EdgeUse::Shared, "shared"),
@@ -98,10 +110,17 @@ fn analytic_models_are_converted_whole_and_edges_meet_their_vertices() {
     for name in WHOLE {
         let m = read(name, true);
         let tol2 = RealAlgebraic::from_rational(&tolerance_sq(&m));
-        assert!(m.summary.not_converted.is_empty(), "{name}: {:?}", m.summary.not_converted);
+        assert!(
+            m.summary.not_converted.is_empty(),
+            "{name}: {:?}",
+            m.summary.not_converted
+        );
         for f in m.faces.values() {
             assert!(
-                matches!(f.surface.geometry, Geometry::Analytic(_) | Geometry::Pieces(_)),
+                matches!(
+                    f.surface.geometry,
+                    Geometry::Analytic(_) | Geometry::Pieces(_)
+                ),
                 "{name}: face #{} {:?}",
                 f.id,
                 f.surface.geometry
@@ -125,7 +144,9 @@ fn analytic_models_are_converted_whole_and_edges_meet_their_vertices() {
     }
 }
 
-fn curve_ends(p: &exact_bezier::patch::Patch<RealAlgebraic>) -> (Vec<RealAlgebraic>, Vec<RealAlgebraic>) {
+fn curve_ends(
+    p: &exact_bezier::patch::Patch<RealAlgebraic>,
+) -> (Vec<RealAlgebraic>, Vec<RealAlgebraic>) {
     match p {
         exact_bezier::patch::Patch::Curve(c) => {
             let pts = c.points().unwrap();

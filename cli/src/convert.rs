@@ -241,7 +241,11 @@ fn nurbs_to_bezier(a: &Args) -> Result<Value, Error> {
 }
 
 /// A piece with its origin, normalized and over the scalar of `a`.
-fn write_piece<T: JsonScalar + Ordered>(p: &Patch<T>, origin: &Origin, a: &Args) -> Result<Value, Error> {
+fn write_piece<T: JsonScalar + Ordered>(
+    p: &Patch<T>,
+    origin: &Origin,
+    a: &Args,
+) -> Result<Value, Error> {
     let patch = if a.normalize {
         normalized(p)?
     } else {

@@ -5,9 +5,9 @@
 //! layout is in docs/FORMAT.md ("B-rep").
 
 use super::{point_to_json, JsonScalar};
-use crate::audit::Origin;
 use crate::algebra::RealAlgebraic;
 use crate::algebra::Scalar;
+use crate::audit::Origin;
 use crate::error::Error;
 use crate::patch::Patch;
 use crate::step::brep::{
