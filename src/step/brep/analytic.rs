@@ -57,7 +57,7 @@ impl Units {
         };
         let snap = context
             .and_then(|c| c.tolerance.as_ref())
-            .map_or(1e-7, |t| crate::algebra::scalar::Ordered::to_f64(t));
+            .map_or(1e-7, crate::algebra::scalar::Ordered::to_f64);
         Units { angle, snap }
     }
 }

@@ -80,7 +80,7 @@ fn an_open_shell_its_edges_vertices_units_and_tolerance() {
         let Geometry::Analytic(a) = &edge.curve.geometry else {
             panic!("a converted line")
         };
-        let zero = crate::algebra::RealAlgebraic::from_i64(0);
+        let zero = <crate::algebra::RealAlgebraic as crate::algebra::Scalar>::from_i64(0);
         assert_eq!(a.vertex_distance_sq, Some([zero.clone(), zero]));
     }
     let Loop::Edges(es) = &face.bounds[0].edges else {
@@ -93,8 +93,7 @@ fn an_open_shell_its_edges_vertices_units_and_tolerance() {
     assert_eq!(m.vertices[&13], vec![q(1, 1), q(1, 1), q(0, 1)]);
     assert_eq!(m.edges[&23].start, 13);
     assert_eq!(m.summary.edges_by_curve["LINE"], 4);
-    assert_eq!(m.summary.not_converted["LINE"], 4);
-    assert_eq!(m.summary.not_converted["PLANE"], 1);
+    assert!(m.summary.not_converted.is_empty());
     let c = &m.contexts[&70];
     assert_eq!(c.length.as_ref().unwrap().metres, q(1, 1000));
     assert_eq!(c.angle, Some(AngleUnit::Degree));
