@@ -48,6 +48,7 @@
 mod blocks;
 mod fraction_free;
 mod jet;
+mod lanes;
 
 pub use jet::{Jet, Jets};
 
@@ -577,6 +578,9 @@ pub struct Evaluator<T> {
     /// [`LANES`] homogeneous points of a curve batch (sized by the first
     /// batch of at least [`LANES`] points).
     lanes: Vec<T>,
+    /// The rows of a rect patch for the `f64` kernels of `lanes` (sized on
+    /// first use).
+    lane_rows: Vec<lanes::Lane>,
 }
 
 /// Curve points evaluated together in a batch ([`horner_lanes`]).
@@ -594,6 +598,7 @@ impl<T: Field> Evaluator<T> {
             hom: [T::zero(), T::zero(), T::zero(), T::zero()],
             point,
             lanes: Vec::new(),
+            lane_rows: Vec::new(),
         }
     }
 
@@ -620,8 +625,10 @@ impl<T: Field> Evaluator<T> {
     /// The points at a batch of parameters: `params` holds one parameter
     /// (curve) or two (patch) per point, back to back; `out` receives `dim`
     /// coordinates per point. `BigRational` takes the fraction-free path
-    /// of the module documentation, every other scalar the generic kernel
-    /// (the values are the same).
+    /// of the module documentation, `f64` nets of stride 3 or 4 the
+    /// lane-major kernels of `lanes` (several points at once in vector
+    /// registers, the same values bit for bit), every other scalar the
+    /// generic kernel (the values are the same).
     ///
     /// # Errors
     ///
@@ -636,6 +643,7 @@ impl<T: Field> Evaluator<T> {
             out.len(),
         )?;
         fraction_free::eval_batch(self, params, out)
+            .or_else(|| lanes::eval_batch(&self.net, params, out, &mut self.lane_rows))
             .unwrap_or_else(|| self.eval_batch_generic(params, out))
     }
 
