@@ -167,6 +167,7 @@ const L: usize = 8;
 type Lane = [f64; L];
 
 /// `Σ C(3,i) (1−t)^{3−i} tⁱ H_i` by Horner, fixed size, in every lane.
+#[inline(always)]
 fn cubic<const S: usize>(h: &[[Lane; S]; 4], t: &Lane) -> [Lane; S] {
     let s = lane(|l| 1.0 - t[l]);
     let (c1, c2, c3) = (
