@@ -32,6 +32,11 @@
 //! [`Jets`] evaluate the first derivatives (`H'`, or `H_u`, `H_v`) the same
 //! way, on difference nets, in batch.
 //!
+//! `f64` batches of nets of stride 3 or 4 run the kernel lane-major
+//! (`lanes`): eight points at once, each value an array of eight `f64`
+//! that the compiler vectorises, with the scalar kernel's operations in its
+//! order, so the values are the same bit for bit.
+//!
 //! For `f64` the scheme is the one of dhermes/bezier's `evaluate_multi`;
 //! its rounding differs from de Casteljau's by a few ulps times the size of
 //! the binomial-weighted terms (tests compare the two within `1e-12`
