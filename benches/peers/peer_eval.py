@@ -25,7 +25,11 @@ Cases (per point, so batch sizes differ between cases):
   random p/q with p in 10000..20000 and q in 600..700 (like 12345/678),
   parameters k/100 or k/457).
 
-The last line printed is the JSON object of ratios ours/peer.
+The last line printed is the JSON object of ratios ours/peer, and of
+ours / the fixed-size kernel that peer_eval.rs keeps as the yardstick of
+the SIMD lane kernels (`f64_curve3_vs_fixed_kernel`,
+`f64_bicubic_vs_fixed_kernel`; 8 points at a time, vectorised by the
+compiler).
 """
 
 import argparse
@@ -238,6 +242,9 @@ def main():
         ref = f"{med(ours_runs, name + '_reference'):.1f}" if name + "_reference" in ours_runs[0] else ""
         ratios[key] = round(o / t, 4)
         print(f"| {name} | {o:.1f} | {ref} | {peer} | {t:.1f} | {o / t:.3g} |")
+    # The lane kernels against the vectorised fixed-size kernel of the same scheme.
+    for name in ("f64_curve3", "f64_bicubic"):
+        ratios[f"{name}_vs_fixed_kernel"] = round(med(ours_runs, name) / med(ours_runs, name + "_reference"), 4)
     print()
     print(json.dumps(ratios))
 

@@ -10,9 +10,11 @@
 //! Each case is `{"name", "patch" (our JSON format), "params": [...],
 //! "exact": bool}`; `params` holds one value per point for a curve and
 //! two for a patch, read exactly from their text. The `f64` cases also run
-//! a hand-written fixed-size kernel of the same Horner–Bernstein scheme
-//! (`<name>_reference`) where one is written below: the yardstick of
-//! "within 2× of a fixed-size kernel".
+//! a hand-written fixed-size kernel of the same Horner–Bernstein scheme,
+//! eight parameters at a time in fixed-size arrays that the compiler
+//! vectorises (`<name>_reference`), where one is written below: the
+//! yardstick of the library's lane kernels (`src/eval/lanes.rs`). Batches
+//! are multiples of eight points.
 
 use exact_bezier::algebra::parse_rational;
 use exact_bezier::eval::Evaluator;
@@ -101,7 +103,9 @@ fn best_of(repeat: usize, points: usize, mut f: impl FnMut()) -> f64 {
 }
 
 /// The fixed-size reference kernels: the cubic planar curve and the
-/// rational bicubic in space.
+/// rational bicubic in space, [`L`] parameters at a time in arrays of
+/// fixed size (the lane-major form the compiler vectorises), the yardstick
+/// of the library's lane kernels.
 fn reference(name: &str, p: &Patch<f64>, params: &[f64], repeat: usize) -> Option<f64> {
     let net: Vec<f64> = match p {
         Patch::Curve(c) => c.ctrl().iter().flat_map(|h| h.coords.clone()).collect(),
@@ -115,26 +119,39 @@ fn reference(name: &str, p: &Patch<f64>, params: &[f64], repeat: usize) -> Optio
     };
     match name {
         "f64_curve3" => {
-            let h: [[f64; 3]; 4] = std::array::from_fn(|i| std::array::from_fn(|k| net[3 * i + k]));
+            let h: [[Lane; 3]; 4] =
+                std::array::from_fn(|i| std::array::from_fn(|k| [net[3 * i + k]; L]));
             let mut out = vec![0.0; params.len() * 2];
             Some(best_of(repeat, params.len(), || {
-                for (t, o) in params.iter().zip(out.chunks_mut(2)) {
-                    let x = cubic(&h, *t);
-                    o.copy_from_slice(&[x[0] / x[2], x[1] / x[2]]);
+                for (t, o) in params.chunks_exact(L).zip(out.chunks_exact_mut(2 * L)) {
+                    let x = cubic(&h, t.try_into().expect("L values"));
+                    for (l, o) in o.chunks_exact_mut(2).enumerate() {
+                        o.copy_from_slice(&[x[0][l] / x[2][l], x[1][l] / x[2][l]]);
+                    }
                 }
                 std::hint::black_box(&out);
             }))
         }
         "f64_bicubic" => {
-            let h: [[[f64; 4]; 4]; 4] = std::array::from_fn(|i| {
-                std::array::from_fn(|j| std::array::from_fn(|k| net[16 * i + 4 * j + k]))
+            let h: [[[Lane; 4]; 4]; 4] = std::array::from_fn(|i| {
+                std::array::from_fn(|j| std::array::from_fn(|k| [net[16 * i + 4 * j + k]; L]))
             });
             let mut out = vec![0.0; params.len() / 2 * 3];
             Some(best_of(repeat, params.len() / 2, || {
-                for (uv, o) in params.chunks(2).zip(out.chunks_mut(3)) {
-                    let rows: [[f64; 4]; 4] = std::array::from_fn(|i| cubic(&h[i], uv[1]));
-                    let x = cubic(&rows, uv[0]);
-                    o.copy_from_slice(&[x[0] / x[3], x[1] / x[3], x[2] / x[3]]);
+                for (uv, o) in params.chunks_exact(2 * L).zip(out.chunks_exact_mut(3 * L)) {
+                    let (u, v): (Lane, Lane) = (
+                        std::array::from_fn(|l| uv[2 * l]),
+                        std::array::from_fn(|l| uv[2 * l + 1]),
+                    );
+                    let rows: [[Lane; 4]; 4] = std::array::from_fn(|i| cubic(&h[i], &v));
+                    let x = cubic(&rows, &u);
+                    for (l, o) in o.chunks_exact_mut(3).enumerate() {
+                        o.copy_from_slice(&[
+                            x[0][l] / x[3][l],
+                            x[1][l] / x[3][l],
+                            x[2][l] / x[3][l],
+                        ]);
+                    }
                 }
                 std::hint::black_box(&out);
             }))
@@ -143,9 +160,31 @@ fn reference(name: &str, p: &Patch<f64>, params: &[f64], repeat: usize) -> Optio
     }
 }
 
-/// `Σ C(3,i) (1−t)^{3−i} tⁱ H_i` by Horner, fixed size.
-fn cubic<const S: usize>(h: &[[f64; S]; 4], t: f64) -> [f64; S] {
-    let s = 1.0 - t;
-    let (c1, c2, c3) = (3.0 * t, 3.0 * t * t, t * t * t);
-    std::array::from_fn(|k| ((h[0][k] * s + c1 * h[1][k]) * s + c2 * h[2][k]) * s + c3 * h[3][k])
+/// Parameters per group of the reference kernels.
+const L: usize = 8;
+
+/// One value per parameter of a group.
+type Lane = [f64; L];
+
+/// `Σ C(3,i) (1−t)^{3−i} tⁱ H_i` by Horner, fixed size, in every lane.
+#[inline(always)]
+fn cubic<const S: usize>(h: &[[Lane; S]; 4], t: &Lane) -> [Lane; S] {
+    let s = lane(|l| 1.0 - t[l]);
+    let (c1, c2, c3) = (
+        lane(|l| 3.0 * t[l]),
+        lane(|l| 3.0 * t[l] * t[l]),
+        lane(|l| t[l] * t[l] * t[l]),
+    );
+    std::array::from_fn(|k| {
+        lane(|l| {
+            ((h[0][k][l] * s[l] + c1[l] * h[1][k][l]) * s[l] + c2[l] * h[2][k][l]) * s[l]
+                + c3[l] * h[3][k][l]
+        })
+    })
+}
+
+/// The lane of values `f(l)`.
+#[inline(always)]
+fn lane(f: impl Fn(usize) -> f64) -> Lane {
+    std::array::from_fn(f)
 }

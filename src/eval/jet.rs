@@ -58,6 +58,8 @@ pub struct Jets<T> {
     workspaces: Vec<Workspace<T>>,
     /// The homogeneous parameters of the point being evaluated.
     hom: [T; 4],
+    /// Scratch rows of the `f64` lane kernels (`super::lanes`).
+    lane_rows: Vec<super::lanes::Lane>,
 }
 
 impl<T: Scalar> Jets<T> {
@@ -105,6 +107,7 @@ impl<T: Scalar> Jets<T> {
             nets,
             workspaces,
             hom: std::array::from_fn(|_| T::zero()),
+            lane_rows: Vec::new(),
         }
     }
 
@@ -139,8 +142,9 @@ impl<T: Scalar> Jets<T> {
     /// [`Jets::eval_into`] at a batch of parameter points (`params` holds
     /// one value per point for a curve, two for a patch, back to back):
     /// `out` receives `2·stride` (curve) or `3·stride` (patch) scalars per
-    /// point. In steady state an `f64` batch allocates nothing
-    /// (tests/alloc.rs).
+    /// point. `f64` nets of stride 3 or 4 take the lane-major kernels of
+    /// `lanes` (the same values bit for bit). In steady state an `f64`
+    /// batch allocates nothing (tests/alloc.rs).
     ///
     /// # Errors
     ///
@@ -148,6 +152,9 @@ impl<T: Scalar> Jets<T> {
     pub fn eval_batch(&mut self, params: &[T], out: &mut [T]) -> Result<(), Error> {
         let (k, per_point) = (self.params(), self.nets.len() * self.stride());
         super::check_batch(params.len(), k, per_point, out.len())?;
+        if super::lanes::jets_batch(&self.nets, params, out, &mut self.lane_rows).is_some() {
+            return Ok(());
+        }
         for (p, o) in params.chunks_exact(k).zip(out.chunks_exact_mut(per_point)) {
             self.eval_into(p, o);
         }

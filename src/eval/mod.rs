@@ -32,6 +32,11 @@
 //! [`Jets`] evaluate the first derivatives (`H'`, or `H_u`, `H_v`) the same
 //! way, on difference nets, in batch.
 //!
+//! `f64` batches of nets of stride 3 or 4 run the kernel lane-major
+//! (`lanes`): eight points at once, each value an array of eight `f64`
+//! that the compiler vectorises, with the scalar kernel's operations in its
+//! order, so the values are the same bit for bit.
+//!
 //! For `f64` the scheme is the one of dhermes/bezier's `evaluate_multi`;
 //! its rounding differs from de Casteljau's by a few ulps times the size of
 //! the binomial-weighted terms (tests compare the two within `1e-12`
@@ -48,6 +53,7 @@
 mod blocks;
 mod fraction_free;
 mod jet;
+mod lanes;
 
 pub use jet::{Jet, Jets};
 
@@ -577,6 +583,9 @@ pub struct Evaluator<T> {
     /// [`LANES`] homogeneous points of a curve batch (sized by the first
     /// batch of at least [`LANES`] points).
     lanes: Vec<T>,
+    /// The rows of a rect patch for the `f64` kernels of `lanes` (sized on
+    /// first use).
+    lane_rows: Vec<lanes::Lane>,
 }
 
 /// Curve points evaluated together in a batch ([`horner_lanes`]).
@@ -594,6 +603,7 @@ impl<T: Field> Evaluator<T> {
             hom: [T::zero(), T::zero(), T::zero(), T::zero()],
             point,
             lanes: Vec::new(),
+            lane_rows: Vec::new(),
         }
     }
 
@@ -620,8 +630,10 @@ impl<T: Field> Evaluator<T> {
     /// The points at a batch of parameters: `params` holds one parameter
     /// (curve) or two (patch) per point, back to back; `out` receives `dim`
     /// coordinates per point. `BigRational` takes the fraction-free path
-    /// of the module documentation, every other scalar the generic kernel
-    /// (the values are the same).
+    /// of the module documentation, `f64` nets of stride 3 or 4 the
+    /// lane-major kernels of `lanes` (several points at once in vector
+    /// registers, the same values bit for bit), every other scalar the
+    /// generic kernel (the values are the same).
     ///
     /// # Errors
     ///
@@ -636,6 +648,7 @@ impl<T: Field> Evaluator<T> {
             out.len(),
         )?;
         fraction_free::eval_batch(self, params, out)
+            .or_else(|| lanes::eval_batch(&self.net, params, out, &mut self.lane_rows))
             .unwrap_or_else(|| self.eval_batch_generic(params, out))
     }
 

@@ -137,9 +137,9 @@ fn f64_kernel_agrees_with_de_casteljau() {
     }
 }
 
-/// A curve batch (four lanes at a time, then single points) gives, bit for
-/// bit, the values of one point at a time: the lanes run the same
-/// operations in the same order.
+/// A curve batch (the lane kernels of `lanes`, eight points at a time, the
+/// last group padded) gives, bit for bit, the values of one point at a
+/// time: the lanes run the same operations in the same order.
 #[test]
 fn f64_lanes_equal_single_points() {
     let c = wavy_curve(10).map(crate::Ordered::to_f64);
