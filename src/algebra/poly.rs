@@ -18,6 +18,9 @@
 //! merge of sorted streams (no map, no sort), and the integer arithmetic of a
 //! typical identity never allocates and never runs a gcd per term (the
 //! denominator is reduced once per operation, and only when it is not 1).
+//! Products of operands with three or more terms, and powers, run on
+//! exponent vectors packed into one `u64` per monomial for the operation
+//! (`packed`): the order is integer order, a monomial product one addition.
 //! The representation is canonical, so `==` is exact equality of
 //! polynomials.
 //!
@@ -772,8 +775,10 @@ mod tests {
             fn packed_product_matches_the_merge_kernel(a in poly(), b in poly(), k in 0u32..40) {
                 // The packed heap against the heap on unpacked monomials,
                 // with coefficients scaled by 7^k (past i128 for large k).
+                // Squares (up to 21 terms) take the heap, the others the scan.
                 let big = a.clone() * &Poly::from_int(7).pow(k);
-                for (x, y) in [(&a, &b), (&big, &b), (&big, &big)] {
+                let (a2, b2) = (big.pow(2), b.pow(2) + &a);
+                for (x, y) in [(&a, &b), (&big, &b), (&big, &big), (&a2, &b2)] {
                     let merged = Poly::normalized(
                         terms::mul_terms(&x.terms, &y.terms),
                         mul(&x.den, &y.den),

@@ -45,11 +45,12 @@ fn width(n: u64) -> u32 {
 
 impl Packing {
     /// A packing for results whose exponent of `vars[i]` is at most
-    /// `max[i]`; `None` if the fields do not fit one word.
+    /// `max[i]`; `None` if the fields do not fit 63 bits (so `u64::MAX`
+    /// is never a key: the merge kernel uses it as "stream exhausted").
     pub(crate) fn new(vars: Vec<u32>, max: &[u64]) -> Option<Packing> {
         let widths: Vec<u32> = max.iter().map(|&m| width(m)).collect();
         let total: u32 = widths.iter().sum();
-        if total > 64 {
+        if total > 63 {
             return None;
         }
         let mut shift = total;
@@ -164,7 +165,7 @@ impl Packed {
                         })
                         .collect()
                 };
-                let (keys, coeffs) = heap_product(
+                let (keys, coeffs) = product(
                     (&a.keys, &small(&a.coeffs)),
                     (&b.keys, &small(&b.coeffs)),
                     |x, y| x * y,
@@ -177,7 +178,7 @@ impl Packed {
                 }
             }
             _ => {
-                let (keys, coeffs) = heap_product(
+                let (keys, coeffs) = product(
                     (&a.keys, &a.coeffs),
                     (&b.keys, &b.coeffs),
                     |x, y| x.clone() * y,
@@ -196,6 +197,67 @@ fn small_bound(p: &Packed) -> Option<u32> {
         Int::Small(x) => Some(acc.max(128 - x.unsigned_abs().leading_zeros())),
         Int::Big(_) => None,
     })
+}
+
+/// The product of two sorted packed lists (`b` the shorter, not empty):
+/// by [`scan_product`] when `b` has at most [`SCAN_MAX`] terms, else by
+/// [`heap_product`].
+fn product<C>(
+    a: (&[u64], &[C]),
+    b: (&[u64], &[C]),
+    mul: impl Fn(&C, &C) -> C,
+    add: impl Fn(&mut C, C),
+    is_zero: impl Fn(&C) -> bool,
+) -> (Vec<u64>, Vec<C>) {
+    if b.0.len() <= SCAN_MAX {
+        scan_product(a, b, mul, add, is_zero)
+    } else {
+        heap_product(a, b, mul, add, is_zero)
+    }
+}
+
+/// Up to this many streams a linear scan of their heads beats a heap.
+const SCAN_MAX: usize = 8;
+
+/// The product as a merge of the few streams `a·b_j` by scanning their
+/// heads: each step takes the least head key and sums the products of every
+/// stream at that key at once (in a dense product, every stream), with no
+/// heap to maintain. An exhausted stream's head is `u64::MAX`, never a key.
+fn scan_product<C>(
+    (ak, ac): (&[u64], &[C]),
+    (bk, bc): (&[u64], &[C]),
+    mul: impl Fn(&C, &C) -> C,
+    add: impl Fn(&mut C, C),
+    is_zero: impl Fn(&C) -> bool,
+) -> (Vec<u64>, Vec<C>) {
+    let mut keys: Vec<u64> = Vec::with_capacity(ak.len() + bk.len());
+    let mut coeffs: Vec<C> = Vec::with_capacity(ak.len() + bk.len());
+    let mut head: Vec<u64> = bk.iter().map(|&kb| ak[0] + kb).collect();
+    let mut next = vec![0usize; bk.len()];
+    loop {
+        let key = head.iter().copied().min().unwrap_or(u64::MAX);
+        if key == u64::MAX {
+            break;
+        }
+        let mut sum: Option<C> = None;
+        for j in 0..bk.len() {
+            if head[j] == key {
+                let i = next[j];
+                let c = mul(&ac[i], &bc[j]);
+                match &mut sum {
+                    Some(acc) => add(acc, c),
+                    None => sum = Some(c),
+                }
+                next[j] = i + 1;
+                head[j] = ak.get(i + 1).map_or(u64::MAX, |&k| k + bk[j]);
+            }
+        }
+        if let Some(c) = sum.filter(|c| !is_zero(c)) {
+            keys.push(key);
+            coeffs.push(c);
+        }
+    }
+    (keys, coeffs)
 }
 
 /// Johnson's heap product of two sorted packed lists (`b` the shorter):
@@ -292,6 +354,8 @@ mod tests {
         ];
         assert_eq!(packing.unpack(packing.pack(&t)), t);
         // 5 variables of 2^13 need 70 bits: no packing.
+        assert!(Packing::new(vec![0, 1, 2], &[(1 << 21) - 1; 3]).is_some());
+        assert!(Packing::new(vec![0, 1, 2], &[(1 << 21) - 1, (1 << 21) - 1, 1 << 21]).is_none());
         assert!(Packing::new(vec![0, 1, 2, 3, 4], &[8191; 5]).is_none());
     }
 }
