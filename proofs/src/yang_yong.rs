@@ -401,12 +401,14 @@ fn weight_net(m: usize, n: usize) -> RectPatch<Poly> {
     RectPatch::from_hom(ctrl).expect("a symbolic net")
 }
 
-/// `Σ_k c_k·x_k` with rational `c_k`.
+/// `Σ_k c_k·x_k` with rational `c_k`, summed pairwise by `Poly`'s balanced
+/// `Sum` (a left fold re-merges the growing accumulator at every step).
 fn combination(x: &[Poly], c: &[BigRational]) -> Poly {
     x.iter()
         .zip(c)
         .filter(|(p, k)| !p.is_zero() && !k.is_zero())
-        .fold(Poly::zero(), |acc, (p, k)| acc + p.scale(k))
+        .map(|(p, k)| p.scale(k))
+        .sum()
 }
 
 /// The corner weights printed before (18) (bicubic), generalized:

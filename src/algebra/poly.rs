@@ -18,6 +18,9 @@
 //! merge of sorted streams (no map, no sort), and the integer arithmetic of a
 //! typical identity never allocates and never runs a gcd per term (the
 //! denominator is reduced once per operation, and only when it is not 1).
+//! Products of operands with three or more terms, and powers, run on
+//! exponent vectors packed into one `u64` per monomial for the operation
+//! (`packed`): the order is integer order, a monomial product one addition.
 //! The representation is canonical, so `==` is exact equality of
 //! polynomials.
 //!
@@ -43,9 +46,11 @@ use std::ops::{Add, Mul, Neg, Sub};
 use std::sync::{Mutex, OnceLock};
 
 mod monomial;
+mod packed;
 mod terms;
 
 use monomial::Monomial;
+use packed::Packing;
 use terms::{content_with, divide, is_negative, is_one, mul, Terms};
 
 /// The process-wide table of variable names; a variable's id is its index.
@@ -153,8 +158,29 @@ impl Poly {
     }
 
     /// `self^e`.
+    ///
+    /// With two or more terms, by repeated multiplication with `self` on
+    /// packed monomials (see `packed`): `Σ_k #(self^k)·#self` term products
+    /// and no squaring of a large intermediate, which on sparse operands
+    /// costs far more (Monagan & Pearce, *Sparse polynomial powering using
+    /// heaps*, 2012). The integer part needs no normalization: by Gauss's
+    /// lemma the content of `P^e` is `content(P)^e`, coprime to `den^e`.
     pub fn pow(&self, e: u32) -> Poly {
-        self.pow_u32(e)
+        if e < 2 || self.terms.len() < 2 {
+            return crate::algebra::scalar::pow(self, e);
+        }
+        let Some(packing) = Packing::for_product(&[&self.terms], u64::from(e)) else {
+            return crate::algebra::scalar::pow(self, e);
+        };
+        let base = packing.pack(&self.terms);
+        let mut acc = base.mul(&base);
+        for _ in 2..e {
+            acc = acc.mul(&base);
+        }
+        Poly {
+            terms: packing.unpack(acc),
+            den: crate::algebra::scalar::pow(&self.den, e),
+        }
     }
 
     /// Number of non-zero terms.
@@ -390,8 +416,20 @@ impl Poly {
         Poly::normalized(t, mul(&self.den, &fa))
     }
 
+    /// The product: on packed monomials when both operands have three or
+    /// more terms and the result's exponents fit one word, else by the
+    /// merge of `terms` (one or two streams, or wide exponents).
     fn mul_ref(&self, other: &Poly) -> Poly {
-        let t = terms::mul_terms(&self.terms, &other.terms);
+        let (a, b) = (&self.terms, &other.terms);
+        let packing = if a.len().min(b.len()) >= 3 {
+            Packing::for_product(&[a, b], 1)
+        } else {
+            None
+        };
+        let t = match packing {
+            Some(p) => p.unpack(p.pack(a).mul(&p.pack(b))),
+            None => terms::mul_terms(a, b),
+        };
         Poly::normalized(t, mul(&self.den, &other.den))
     }
 }
@@ -523,6 +561,9 @@ impl Scalar for Poly {
     }
     fn from_rational(q: &BigRational) -> Self {
         Poly::constant(q.clone())
+    }
+    fn pow_u32(&self, e: u32) -> Self {
+        self.pow(e)
     }
 }
 
@@ -728,6 +769,31 @@ mod tests {
                 // Leibniz rule.
                 let d = |p: &Poly| p.derivative("y");
                 prop_assert_eq!(d(&(a.clone() * &b)), d(&a) * &b + a.clone() * &d(&b));
+            }
+
+            #[test]
+            fn packed_product_matches_the_merge_kernel(a in poly(), b in poly(), k in 0u32..40) {
+                // The packed heap against the heap on unpacked monomials,
+                // with coefficients scaled by 7^k (past i128 for large k).
+                // Squares (up to 21 terms) take the heap, the others the scan.
+                let big = a.clone() * &Poly::from_int(7).pow(k);
+                let (a2, b2) = (big.pow(2), b.pow(2) + &a);
+                for (x, y) in [(&a, &b), (&big, &b), (&big, &big), (&a2, &b2)] {
+                    let merged = Poly::normalized(
+                        terms::mul_terms(&x.terms, &y.terms),
+                        mul(&x.den, &y.den),
+                    );
+                    prop_assert_eq!(x.clone() * y, merged);
+                }
+            }
+
+            #[test]
+            fn pow_is_repeated_multiplication(a in poly(), e in 0u32..7) {
+                // By the merge kernel, one factor at a time.
+                let by_merge = (0..e).fold(Poly::one(), |acc, _| {
+                    Poly::normalized(terms::mul_terms(&acc.terms, &a.terms), mul(&acc.den, &a.den))
+                });
+                prop_assert_eq!(a.pow(e), by_merge);
             }
 
             #[test]

@@ -44,6 +44,12 @@ impl Monomial {
         m
     }
 
+    /// The monomial of the factors `(variable id, exponent > 0)` given by
+    /// increasing id.
+    pub(crate) fn from_factors(f: impl Iterator<Item = (u32, u32)>) -> Monomial {
+        Monomial(f.map(|(v, e)| word(v, e)).collect())
+    }
+
     /// Is this the monomial `1`?
     pub(crate) fn is_one(&self) -> bool {
         self.0.is_empty()

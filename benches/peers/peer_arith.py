@@ -1,0 +1,120 @@
+"""The arithmetic peer benchmark of issue 30 (run by benches/peers/arith).
+
+Writes the polynomial cases, runs our side (the `peer_arith` bench target,
+``--ours``) and FLINT's ``fmpq_mpoly`` (python-flint) on the same inputs,
+``--rounds`` times interleaved, checks that every result is identical term
+by term, and prints a table of medians and a final JSON line::
+
+    {"symbolic_vs_flint": worst ours/FLINT, "prove_seconds": s, ...}
+
+``--prove EXE`` times ``EXE prove`` (the release CLI) once per round.
+"""
+
+import argparse
+import json
+import random
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from fractions import Fraction
+
+import flint
+
+
+def random_poly(rng, nvars, nterms, max_exp):
+    """`nterms` distinct monomials with small rational coefficients."""
+    terms = {}
+    while len(terms) < nterms:
+        e = tuple(rng.randint(0, max_exp) for _ in range(nvars))
+        c = Fraction(rng.choice([-1, 1]) * rng.randint(1, 9), rng.randint(1, 7))
+        terms[e] = c
+    return terms
+
+
+def cases():
+    rng = random.Random(30)
+    dense = {(0, 0, 0, 0): Fraction(1)}
+    for i in range(4):
+        e = [0, 0, 0, 0]
+        e[i] = 1
+        dense[tuple(e)] = Fraction(1)
+    return [
+        ("(p)^6, 5 terms", random_poly(rng, 4, 5, 3), 6),
+        ("(p)^8, 10 terms", random_poly(rng, 4, 10, 3), 8),
+        ("(1+x0+x1+x2+x3)^20", dense, 20),
+    ]
+
+
+def to_json(terms):
+    return [[list(e), str(c)] for e, c in terms.items()]
+
+
+def flint_power(terms, k, repeat):
+    ctx = flint.fmpq_mpoly_ctx.get(("x", 4), "lex")
+    p = ctx.from_dict({e: flint.fmpq(c.numerator, c.denominator) for e, c in terms.items()})
+    times = []
+    for _ in range(repeat):
+        start = time.perf_counter_ns()
+        r = p**k
+        times.append(time.perf_counter_ns() - start)
+    result = {tuple(e): Fraction(str(c)) for e, c in r.to_dict().items()}
+    return statistics.median(times), result
+
+
+def ours(exe, path, repeat):
+    out = subprocess.run([exe, path, "--repeat", str(repeat)], check=True,
+                         capture_output=True, text=True).stdout
+    data = json.loads(out)
+    return {name: (v["ns"], {tuple(e): Fraction(c) for e, c in v["terms"]})
+            for name, v in data.items()}
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--ours", required=True)
+    ap.add_argument("--prove", help="the release exact-bezier executable")
+    ap.add_argument("--rounds", type=int, default=5)
+    ap.add_argument("--repeat", type=int, default=9)
+    args = ap.parse_args()
+    cs = cases()
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        json.dump([{"name": n, "vars": 4, "terms": to_json(t), "power": k}
+                   for n, t, k in cs], f)
+        path = f.name
+    t_ours = {n: [] for n, _, _ in cs}
+    t_flint = {n: [] for n, _, _ in cs}
+    sizes = {}
+    prove = []
+    for _ in range(args.rounds):
+        mine = ours(args.ours, path, args.repeat)
+        for n, t, k in cs:
+            ns, theirs = flint_power(t, k, args.repeat)
+            ns_ours, result = mine[n]
+            if result != theirs:
+                sys.exit(f"{n}: results differ ({len(result)} terms against {len(theirs)})")
+            sizes[n] = len(result)
+            t_ours[n].append(ns_ours)
+            t_flint[n].append(ns)
+        if args.prove:
+            start = time.perf_counter()
+            subprocess.run([args.prove, "prove"], check=True, capture_output=True)
+            prove.append(time.perf_counter() - start)
+    print(f"{'case':<22} {'terms':>7} {'ours ms':>9} {'FLINT ms':>9} {'ours/FLINT':>10}")
+    worst = 0.0
+    ratios = {}
+    for n, _, _ in cs:
+        a, b = statistics.median(t_ours[n]) / 1e6, statistics.median(t_flint[n]) / 1e6
+        ratios[n] = round(a / b, 3)
+        worst = max(worst, a / b)
+        print(f"{n:<22} {sizes[n]:>7} {a:>9.3f} {b:>9.3f} {a / b:>10.2f}")
+    line = {"symbolic_vs_flint": round(worst, 3), "ratios": ratios}
+    if prove:
+        line["prove_seconds"] = round(statistics.median(prove), 3)
+        print(f"exact-bezier prove: {line['prove_seconds']} s (median of {len(prove)})")
+    print(json.dumps(line))
+
+
+if __name__ == "__main__":
+    main()
