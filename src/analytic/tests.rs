@@ -106,15 +106,15 @@ fn trimming_an_open_curve_backwards_is_refused() {
 
 #[test]
 fn degree_decimals_in_exponent_form_are_recognised() {
-    let s = cone_slope::<RealAlgebraic>("4.5E1", AngleUnit::Degree).unwrap();
+    let s = cone_slope::<RealAlgebraic>("4.5E1", &AngleUnit::Degree).unwrap();
     assert!(s.exact);
     // 59° is no multiple of 15°.
     assert!(
-        !cone_slope::<RealAlgebraic>("59.", AngleUnit::Degree)
+        !cone_slope::<RealAlgebraic>("59.", &AngleUnit::Degree)
             .unwrap()
             .exact
     );
     // Over Q there is no √3: 30° is approximate there, and says so.
-    let s = cone_slope::<Q>("30.", AngleUnit::Degree).unwrap();
+    let s = cone_slope::<Q>("30.", &AngleUnit::Degree).unwrap();
     assert!(!s.exact && s.error > q(0));
 }
