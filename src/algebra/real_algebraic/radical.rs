@@ -388,8 +388,14 @@ impl RadicalSum {
         }
     }
 
-    /// `self · other`.
+    /// `self · other` (a rational factor scales the other's coefficients).
     pub(crate) fn mul(&self, other: &Self) -> Self {
+        if let Some(q) = other.as_rational() {
+            return self.scale(&q);
+        }
+        if let Some(q) = self.as_rational() {
+            return other.scale(&q);
+        }
         let (a, b) = self.unify(other);
         a.mul_same_basis(&b)
     }
