@@ -42,7 +42,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let angle_unit = if text.contains("CONVERSION_BASED_UNIT('DEGREE'") {
             AngleUnit::Degree
         } else {
-            AngleUnit::Radian
+            AngleUnit::radian()
         };
         let ctx = Context::<RealAlgebraic> {
             table: &table,

@@ -225,22 +225,22 @@ fn covering_range_is_the_exact_extent() {
 
 #[test]
 fn cone_slopes_exact_at_multiples_of_15_degrees_and_bounded_otherwise() {
-    let s = cone_slope::<R>("45.", AngleUnit::Degree).unwrap();
+    let s = cone_slope::<R>("45.", &AngleUnit::Degree).unwrap();
     assert!(s.exact && s.tan == R::one());
-    let s = cone_slope::<R>("0.261799387799149", AngleUnit::Radian).unwrap();
+    let s = cone_slope::<R>("0.261799387799149", &AngleUnit::radian()).unwrap();
     // π/12 to 15 decimals: tan = 2 − √3.
     assert!(s.exact);
     assert_eq!(s.tan, R::from_i64(2) - &R::from_i64(3).nth_root(2).unwrap());
     // One unit off in the last digit is not π/12 any more.
-    let s = cone_slope::<R>("0.261799387799140", AngleUnit::Radian).unwrap();
+    let s = cone_slope::<R>("0.261799387799140", &AngleUnit::radian()).unwrap();
     assert!(!s.exact);
-    let s = cone_slope::<R>("9.46232220802597", AngleUnit::Degree).unwrap();
+    let s = cone_slope::<R>("9.46232220802597", &AngleUnit::Degree).unwrap();
     assert!(!s.exact);
     let f64_tan = 9.46232220802597f64.to_radians().tan();
     assert!((s.tan.to_f64() - f64_tan).abs() < 1e-14);
     assert!(s.error < ratio::<BigRational>(1, 1 << 62));
-    assert!(cone_slope::<R>("90.", AngleUnit::Degree).is_err());
-    assert!(cone_slope::<R>("0.", AngleUnit::Radian).is_err());
+    assert!(cone_slope::<R>("90.", &AngleUnit::Degree).is_err());
+    assert!(cone_slope::<R>("0.", &AngleUnit::radian()).is_err());
 }
 
 fn table_of(text: &str) -> Table {
@@ -384,7 +384,7 @@ fn entities_are_read_or_refused_by_name() {
     let table = table_of(SMALL);
     let ctx = Context::<R> {
         table: &table,
-        angle_unit: AngleUnit::Radian,
+        angle_unit: AngleUnit::radian(),
         bspline_curve: None,
     };
     assert!(matches!(

@@ -24,13 +24,43 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
-/// The plane angle unit of a STEP representation context.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// The plane angle unit of a STEP representation context (one type for
+/// the B-rep's contexts and the geometry readers).
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum AngleUnit {
-    /// `SI_UNIT($, .RADIAN.)`.
-    Radian,
-    /// A degree (`CONVERSION_BASED_UNIT('DEGREE', …)`): π/180 rad.
+    /// `SI_UNIT(prefix, .RADIAN.)`: the radian times its SI prefix factor
+    /// (1 unprefixed).
+    Radian(BigRational),
+    /// A conversion-based unit named degree: exactly π/180 radian (the
+    /// file's decimal factor approximates it and is not used).
     Degree,
+    /// Another conversion-based unit: its name and written factor in
+    /// radians.
+    Other(String, BigRational),
+}
+
+impl AngleUnit {
+    /// The unprefixed radian.
+    pub fn radian() -> Self {
+        AngleUnit::Radian(BigRational::one())
+    }
+
+    /// The factor of a unit written as a number of radians (`None` for the
+    /// degree, whose factor π/180 is not rational).
+    pub fn radians(&self) -> Option<&BigRational> {
+        match self {
+            AngleUnit::Radian(f) | AngleUnit::Other(_, f) => Some(f),
+            AngleUnit::Degree => None,
+        }
+    }
+
+    /// An angle written `a` in this unit, in radians, as an `f64`.
+    pub fn to_radians_f64(&self, a: f64) -> f64 {
+        match self.radians() {
+            Some(f) => a * num_traits::ToPrimitive::to_f64(f).unwrap_or(f64::NAN),
+            None => a.to_radians(),
+        }
+    }
 }
 
 /// The slope `tan α` of a cone, with how it was obtained.
@@ -87,27 +117,33 @@ fn bad(text: &str) -> Error {
 ///
 /// ```
 /// use exact_bezier::{analytic::{cone_slope, AngleUnit}, algebra::RealAlgebraic, Scalar};
-/// let s = cone_slope::<RealAlgebraic>("0.523598775598299", AngleUnit::Radian).unwrap();
+/// let s = cone_slope::<RealAlgebraic>("0.523598775598299", &AngleUnit::radian()).unwrap();
 /// assert!(s.exact); // π/6 to 15 decimals: tan = √3/3
 /// assert_eq!(s.tan.clone() * &s.tan, RealAlgebraic::from_i64(1) / RealAlgebraic::from_i64(3));
-/// let t = cone_slope::<RealAlgebraic>("59.", AngleUnit::Degree).unwrap();
+/// let t = cone_slope::<RealAlgebraic>("59.", &AngleUnit::Degree).unwrap();
 /// assert!(!t.exact);
 /// assert!(t.error < exact_bezier::ratio(1, 1i64 << 60));
 /// ```
 pub fn cone_slope<T: Field + Ordered + Roots>(
     text: &str,
-    unit: AngleUnit,
+    unit: &AngleUnit,
 ) -> Result<Slope<T>, Error> {
     let d = parse_rational(text)?;
     let half = half_ulp(text)?;
     let (pi_lo, pi_hi) = pi_enclosure();
-    // α in radians is in [lo, hi].
-    let (lo, hi) = match unit {
-        AngleUnit::Radian => (d.clone(), d.clone()),
-        AngleUnit::Degree => (
+    // α in radians is in [lo, hi] (a radian factor f scales the decimal
+    // and its half unit alike).
+    let (lo, hi, half) = match unit.radians() {
+        Some(f) => (d.clone() * f, d.clone() * f, half * f),
+        None => (
             d.clone() * &pi_lo / q(180, 1),
             d.clone() * &pi_hi / q(180, 1),
+            half,
         ),
+    };
+    let d = match unit.radians() {
+        Some(f) => d * f,
+        None => d,
     };
     if !lo.is_positive() || hi >= pi_lo.clone() / q(2, 1) {
         return Err(Error::Domain(format!(
@@ -117,7 +153,7 @@ pub fn cone_slope<T: Field + Ordered + Roots>(
     for k in 1..=5i64 {
         let (a, b) = match unit {
             AngleUnit::Degree => (q(15 * k, 1), q(15 * k, 1)),
-            AngleUnit::Radian => (pi_lo.clone() * q(k, 12), pi_hi.clone() * q(k, 12)),
+            _ => (pi_lo.clone() * q(k, 12), pi_hi.clone() * q(k, 12)),
         };
         if (a - &d).abs() <= half && (b - &d).abs() <= half {
             if let Some(tan) = tan_15::<T>(k) {
@@ -172,6 +208,12 @@ fn bracket(x: &BigRational, odd: bool) -> (BigRational, BigRational) {
 /// The 64-bit dyadic slope nearest the middle of a rigorous enclosure of
 /// `tan α` for `α ∈ [lo, hi] ⊂ (0, π/2)`, with its error bound.
 fn approximate<T: Scalar>(lo: &BigRational, hi: &BigRational) -> Result<Slope<T>, Error> {
+    // Widen [lo, hi] outward to 96-bit dyadics: the enclosure stays
+    // rigorous, and the Taylor terms stay short (the 40-digit π of a degree
+    // angle would otherwise make every power of x a long fraction).
+    let grid = BigRational::from_integer(BigInt::one() << 96);
+    let lo = &((lo.clone() * &grid).floor() / &grid);
+    let hi = &((hi.clone() * &grid).ceil() / &grid);
     let (s_lo, _) = bracket(lo, true);
     let (_, c_hi) = bracket(lo, false);
     let (_, s_hi) = bracket(hi, true);

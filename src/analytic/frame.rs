@@ -43,10 +43,12 @@ impl<T: Scalar> Frame<T> {
         Frame { origin, x, y, z }
     }
 
-    /// The point `C + a·x̂ + b·ŷ + c·ẑ`.
+    /// The point `C + a·x̂ + b·ŷ + c·ẑ` (zero coordinates skipped).
     pub fn point(&self, a: &T, b: &T, c: &T) -> Vec<T> {
-        let p = add(&self.origin, &scale(&self.x, a));
-        add(&add(&p, &scale(&self.y, b)), &scale(&self.z, c))
+        [(a, &self.x), (b, &self.y), (c, &self.z)]
+            .into_iter()
+            .filter(|(k, _)| !k.is_zero())
+            .fold(self.origin.clone(), |p, (k, axis)| add(&p, &scale(axis, k)))
     }
 
     /// The frame coordinates `((P − C)·x̂, (P − C)·ŷ, (P − C)·ẑ)` of `p`.
@@ -109,8 +111,10 @@ impl<T: Field + Ordered + Roots> Frame<T> {
         if zz.is_zero() {
             return Err(Error::Domain("an axis of length zero".into()));
         }
-        // x⊥ = x − ((x·z)/|z|²) z: rational for rational input.
-        let x_perp = sub(&x, &scale(&z, &(dot(&x, &z) / &zz)));
+        // |z|² x⊥ = |z|² x − (x·z) z, x⊥ = x − ((x·z)/|z|²) z: the positive
+        // multiple normalises to the same x̂, and stays integral for integral
+        // input (no denominator |z|² to carry into the root).
+        let x_perp = sub(&scale(&x, &zz), &scale(&z, &dot(&x, &z)));
         let xx = dot(&x_perp, &x_perp);
         if xx.is_zero() {
             return Err(Error::Domain(

@@ -106,15 +106,33 @@ fn trimming_an_open_curve_backwards_is_refused() {
 
 #[test]
 fn degree_decimals_in_exponent_form_are_recognised() {
-    let s = cone_slope::<RealAlgebraic>("4.5E1", AngleUnit::Degree).unwrap();
+    let s = cone_slope::<RealAlgebraic>("4.5E1", &AngleUnit::Degree).unwrap();
     assert!(s.exact);
     // 59° is no multiple of 15°.
     assert!(
-        !cone_slope::<RealAlgebraic>("59.", AngleUnit::Degree)
+        !cone_slope::<RealAlgebraic>("59.", &AngleUnit::Degree)
             .unwrap()
             .exact
     );
     // Over Q there is no √3: 30° is approximate there, and says so.
-    let s = cone_slope::<Q>("30.", AngleUnit::Degree).unwrap();
+    let s = cone_slope::<Q>("30.", &AngleUnit::Degree).unwrap();
     assert!(!s.exact && s.error > q(0));
+}
+
+#[test]
+fn a_prefixed_radian_scales_the_semi_angle_and_its_rounding() {
+    // 523.598775598299 mrad is π/6 to the printed digits: tan = √3/3.
+    let milli = AngleUnit::Radian(q(1) / q(1000));
+    let s = cone_slope::<RealAlgebraic>("523.598775598299", &milli).unwrap();
+    assert!(s.exact);
+    let three = RealAlgebraic::from_i64(3);
+    assert_eq!(s.tan.clone() * &s.tan * &three, RealAlgebraic::from_i64(1));
+    // 0.5000 rad is not π/6 to its digits (|π/6 − 0.5| > 5·10⁻⁵): taken
+    // as written, enclosed, approximate.
+    let s = cone_slope::<RealAlgebraic>("0.5000", &AngleUnit::radian()).unwrap();
+    assert!(!s.exact);
+    // A unit of 2 rad (Other): 0.25 units are 0.5 rad; tan 0.5 = 0.5463…
+    let s = cone_slope::<Q>("0.25", &AngleUnit::Other("HALF_TURNISH".into(), q(2))).unwrap();
+    assert!(!s.exact);
+    assert!((crate::Ordered::to_f64(&s.tan) - 0.5f64.tan()).abs() < 1e-15);
 }

@@ -223,17 +223,8 @@ pub struct LengthUnit {
     pub metres: BigRational,
 }
 
-/// A plane angle unit.
-#[derive(Clone, Debug, PartialEq)]
-pub enum AngleUnit {
-    /// The radian (with its SI prefix factor, 1 unprefixed).
-    Radian(BigRational),
-    /// A conversion-based unit named degree: exactly π/180 radian (the
-    /// file's decimal factor approximates it and is not used).
-    Degree,
-    /// Another conversion-based unit: its name and written factor in radians.
-    Other(String, BigRational),
-}
+/// A plane angle unit (the geometry readers' type).
+pub use crate::analytic::AngleUnit;
 
 /// The units and tolerance of a representation context.
 #[derive(Clone, Debug, PartialEq, Default)]
@@ -335,10 +326,7 @@ fn type_name(store: &Store, id: u64) -> String {
         .into_iter()
         .find(|b| names().any(|n| n == *b))
         .and_then(|b| super::knot_part(b, names()))
-        .map_or_else(
-            || format!("({})", names().collect::<Vec<_>>().join(" ")),
-            str::to_owned,
-        )
+        .map_or_else(|| format!("({})", inst.record_names()), str::to_owned)
 }
 
 fn reference(p: Option<&Param>, what: &str) -> Result<u64, String> {

@@ -45,6 +45,10 @@ use crate::analytic::{
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::rect::RectPatch;
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, Zero};
 use std::collections::HashMap;
 
 /// The DATA section's instances by id.
@@ -54,7 +58,7 @@ pub type Table = HashMap<u64, Instance>;
 pub type BSplineCurves<'a, T> = &'a dyn Fn(u64) -> Result<Vec<RationalCurve<T>>, Error>;
 
 /// What the readers need besides an entity id.
-#[derive(Clone, Copy)]
+#[derive(Clone)]
 pub struct Context<'a, T> {
     /// The instances.
     pub table: &'a Table,
@@ -222,14 +226,19 @@ fn is_bspline(inst: &Instance) -> bool {
 }
 
 fn coordinates<T: Field>(table: &Table, id: u64, name: &str) -> Result<Vec<T>, Error> {
+    Ok(rationals(table, id, name)?
+        .iter()
+        .map(T::from_rational)
+        .collect())
+}
+
+fn rationals(table: &Table, id: u64, name: &str) -> Result<Vec<BigRational>, Error> {
     let e = expect(table, id, &[name])?;
     match e.param(1)? {
         Param::List(xs) if !xs.is_empty() => xs
             .iter()
             .map(|x| match x {
-                Param::Number(t) => parse_rational(t)
-                    .map(|q| T::from_rational(&q))
-                    .map_err(|err| e.err(err)),
+                Param::Number(t) => parse_rational(t).map_err(|err| e.err(err)),
                 p => Err(e.err(format!("a coordinate should be a number, not {p:?}"))),
             })
             .collect(),
@@ -246,13 +255,26 @@ pub fn point<T: Field>(table: &Table, id: u64) -> Result<Vec<T>, Error> {
     coordinates(table, id, "CARTESIAN_POINT")
 }
 
-/// A `DIRECTION`'s ratios, exactly (not normalised).
+/// A `DIRECTION`'s ratios, exactly, scaled by a positive rational to
+/// coprime integers (`(0.6, 0.8, 0)` ↦ `(3, 4, 0)`): the same direction,
+/// not normalised, with the smallest numbers for the square roots of the
+/// frames built on it.
 ///
 /// # Errors
 ///
 /// As [`point`].
 pub fn direction<T: Field>(table: &Table, id: u64) -> Result<Vec<T>, Error> {
-    coordinates(table, id, "DIRECTION")
+    let d = rationals(table, id, "DIRECTION")?;
+    let lcm = d.iter().fold(BigInt::one(), |l, x| l.lcm(x.denom()));
+    let ints: Vec<BigInt> = d.iter().map(|x| (x * &lcm).to_integer()).collect();
+    let gcd = ints.iter().fold(BigInt::zero(), |g, x| g.gcd(x));
+    Ok(ints
+        .into_iter()
+        .map(|x| {
+            let x = if gcd.is_zero() { x } else { x / &gcd };
+            T::from_rational(&BigRational::from_integer(x))
+        })
+        .collect())
 }
 
 /// A `VECTOR(orientation, magnitude)` as `magnitude · d/|d|`, exact with
@@ -446,12 +468,7 @@ fn basis<T: Field + Ordered + Roots>(
 fn bspline_or_unsupported<T: Field>(ctx: &Context<'_, T>, id: u64) -> Result<Read<T>, Error> {
     let inst = &ctx.table[&id];
     if !is_bspline(inst) {
-        let name = inst
-            .records
-            .iter()
-            .map(|r| r.name.as_str())
-            .collect::<Vec<_>>()
-            .join(" ");
+        let name = inst.record_names();
         return Ok(Err(Curve::Unsupported { id, name }));
     }
     match ctx.bspline_curve {
@@ -622,7 +639,7 @@ fn trimmed<T: Field + Ordered + Roots>(
             positions.push((k, s));
         } else {
             let text = t.param.as_deref().expect("a parameter trim");
-            let (pos, why) = param_position(ctx.angle_unit, &b, e, text)?;
+            let (pos, why) = param_position(&ctx.angle_unit, &b, e, text)?;
             approximate = approximate.or(why);
             distances.push(T::zero());
             positions.push(pos);
@@ -659,7 +676,7 @@ fn trimmed<T: Field + Ordered + Roots>(
 /// The piece position of the ISO parameter `text` on a basis curve, and why
 /// it is approximate if it is.
 fn param_position<T: Field + Ordered>(
-    unit: AngleUnit,
+    unit: &AngleUnit,
     b: &Basis<T>,
     e: &Ent<'_>,
     text: &str,
@@ -682,11 +699,7 @@ fn param_position<T: Field + Ordered>(
         }
         Kind::Conic => {
             let quarter = std::f64::consts::FRAC_PI_2;
-            let phi = match unit {
-                AngleUnit::Radian => u.to_f64(),
-                AngleUnit::Degree => u.to_f64().to_radians(),
-            }
-            .rem_euclid(4.0 * quarter);
+            let phi = unit.to_radians_f64(u.to_f64()).rem_euclid(4.0 * quarter);
             let k = ((phi / quarter).floor() as usize).min(3);
             let t = ((phi - k as f64 * quarter) / 2.0).tan();
             let why = format!(
@@ -752,7 +765,7 @@ pub fn surface_pieces<T: Field + Ordered + Roots>(
                 return pieces(crate::analytic::cylinder(&f, &e.number(2)?, v), None);
             }
             let text = e.text(3)?;
-            let s = cone_slope::<T>(text, ctx.angle_unit).map_err(|x| e.err(x))?;
+            let s = cone_slope::<T>(text, &ctx.angle_unit).map_err(|x| e.err(x))?;
             let why = (!s.exact).then(|| {
                 format!(
                     "#{id} CONICAL_SURFACE: tan of the semi_angle {text} is a rational within {} of it",
@@ -836,11 +849,6 @@ fn unsupported_surface<T>(table: &Table, id: u64) -> Surface<T> {
     if is_bspline(inst) {
         return Surface::BSpline(id);
     }
-    let name = inst
-        .records
-        .iter()
-        .map(|r| r.name.as_str())
-        .collect::<Vec<_>>()
-        .join(" ");
+    let name = inst.record_names();
     Surface::Unsupported { id, name }
 }

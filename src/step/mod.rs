@@ -371,14 +371,7 @@ impl Collector {
             self.pending.insert(inst.id, Pending { name, parts });
         } else {
             let name = if inst.complex {
-                format!(
-                    "({})",
-                    inst.records
-                        .iter()
-                        .map(|r| r.name.as_str())
-                        .collect::<Vec<_>>()
-                        .join(" ")
-                )
+                format!("({})", inst.record_names())
             } else {
                 first.name.clone()
             };

@@ -63,6 +63,16 @@ pub struct Instance {
     pub complex: bool,
 }
 
+impl Instance {
+    /// Its record names joined by spaces, in the order written
+    /// (`"BOUNDED_CURVE B_SPLINE_CURVE …"`; the one name of a simple
+    /// instance).
+    pub fn record_names(&self) -> String {
+        let names: Vec<&str> = self.records.iter().map(|r| r.name.as_str()).collect();
+        names.join(" ")
+    }
+}
+
 /// Reads statements from a byte stream and yields the DATA section's
 /// instances in order.
 pub struct Reader<R> {

@@ -353,17 +353,18 @@ impl RadicalSum {
     /// the union of their bases is already pairwise coprime).
     fn unify(&self, other: &Self) -> (Self, Self) {
         let (a, b) = (self.bases(), other.bases());
-        let mut all = a.clone();
-        all.extend(b.iter().cloned());
-        all.sort();
-        all.dedup();
-        let coprime = all
+        // Each sum's own bases are pairwise coprime (the invariant), so only
+        // a base of one that the other lacks needs a gcd with the other's.
+        let coprime = a
             .iter()
-            .enumerate()
-            .all(|(i, x)| all[i + 1..].iter().all(|y| x.gcd(y).is_one()));
+            .all(|x| b.binary_search(x).is_ok() || b.iter().all(|y| x.gcd(y).is_one()));
         if coprime {
             return (self.clone(), other.clone());
         }
+        let mut all = a;
+        all.extend(b);
+        all.sort();
+        all.dedup();
         let basis = coprime_basis(all);
         (self.rewrite(&basis), other.rewrite(&basis))
     }
@@ -387,8 +388,14 @@ impl RadicalSum {
         }
     }
 
-    /// `self · other`.
+    /// `self · other` (a rational factor scales the other's coefficients).
     pub(crate) fn mul(&self, other: &Self) -> Self {
+        if let Some(q) = other.as_rational() {
+            return self.scale(&q);
+        }
+        if let Some(q) = self.as_rational() {
+            return other.scale(&q);
+        }
         let (a, b) = self.unify(other);
         a.mul_same_basis(&b)
     }

@@ -27,7 +27,7 @@ use super::{
 };
 use crate::algebra::RealAlgebraic;
 use crate::algebra::Scalar;
-use crate::analytic::{trim_between, AngleUnit as PlaneAngle};
+use crate::analytic::trim_between;
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::nurbs::Nurbs;
@@ -36,10 +36,10 @@ use crate::step::geometry::{curve_pieces, surface_pieces, Context as Readers, Cu
 use num_rational::BigRational;
 
 /// The units the geometry readers need, from a representation context.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub(super) struct Units {
     /// The plane angle unit (cone semi-angles, angle trims).
-    angle: PlaneAngle,
+    angle: AngleUnit,
     /// How near (an `f64` distance in the model's length unit) a vertex
     /// must be to a piece's end to be taken there: the declared tolerance,
     /// or 10⁻⁷ without one. A search heuristic only: the trimmed pieces
@@ -48,13 +48,11 @@ pub(super) struct Units {
 }
 
 impl Units {
-    /// The units of `context` (radians and a 10⁻⁷ snap when absent; an
-    /// angle unit other than the degree is taken as the radian).
+    /// The units of `context` (radians and a 10⁻⁷ snap when absent).
     pub(super) fn of(context: Option<&Context>) -> Self {
-        let angle = match context.and_then(|c| c.angle.as_ref()) {
-            Some(AngleUnit::Degree) => PlaneAngle::Degree,
-            _ => PlaneAngle::Radian,
-        };
+        let angle = context
+            .and_then(|c| c.angle.clone())
+            .unwrap_or_else(AngleUnit::radian);
         let snap = context
             .and_then(|c| c.tolerance.as_ref())
             .map_or(1e-7, crate::algebra::scalar::Ordered::to_f64);
@@ -103,7 +101,7 @@ impl Builder<'_> {
         };
         f(&Readers {
             table: self.store,
-            angle_unit: self.units.angle,
+            angle_unit: self.units.angle.clone(),
             bspline_curve: Some(&bspline),
         })
     }
