@@ -42,6 +42,11 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         .split(';')
         .map(parse_algebraic_list)
         .collect::<Result<Vec<_>, _>>()?;
+    let all: Vec<RealAlgebraic> = [c.clone(), lambda.clone()]
+        .into_iter()
+        .chain(pts.iter().flatten().cloned())
+        .collect();
+    crate::input::check_numbers(&all, "the arc's numbers")?;
     let arc = match (pts.as_slice(), &a.direction) {
         ([b0, b1, b2], None) => QuadArc::from_control(b0, b1, b2, &c, Tolerance::EXACT)?,
         ([b0, b2], Some(d)) if c.is_zero() => {

@@ -111,12 +111,18 @@ pub(crate) use on_exact;
 
 impl ExactPatches {
     /// The patches of `text`: rational if they all are, else algebraic; a
-    /// text neither reader accepts gets the rational reader's error.
+    /// text neither reader accepts gets the rational reader's error, unless
+    /// the algebraic reader stopped at a limit (that error, naming it).
     pub(crate) fn parse(text: &str) -> Result<Self, Error> {
         match read_patches(text) {
             Ok(p) => Ok(ExactPatches::Rational(p)),
             Err(rational) => match read_patches_as::<RealAlgebraic>(text) {
-                Ok(p) => Ok(ExactPatches::Algebraic(p)),
+                Ok(p) => {
+                    check_field_degree(&p)?;
+                    Ok(ExactPatches::Algebraic(p))
+                }
+                // A limit the algebraic reader met is the reason to give.
+                Err(e @ Error::Limit(_)) => Err(e),
                 Err(_) => Err(rational),
             },
         }
@@ -137,6 +143,29 @@ impl ExactPatches {
     pub(crate) fn len(&self) -> usize {
         on_exact!(self, p => p.len())
     }
+}
+
+/// Refuse patches whose numbers span a number field over the limit
+/// ([`limits::check_field_degree`]) before any work on them.
+fn check_field_degree(patches: &[Patch<RealAlgebraic>]) -> Result<(), Error> {
+    let numbers = std::cell::RefCell::new(Vec::new());
+    for p in patches {
+        p.map(|x| {
+            numbers.borrow_mut().push(x.clone());
+            0.0
+        });
+    }
+    check_numbers(&numbers.into_inner(), "reading the input")
+}
+
+/// Refuse numbers that span a number field over the limit
+/// ([`RealAlgebraic::span_degree`]); radicals alone need no field.
+pub(crate) fn check_numbers(numbers: &[RealAlgebraic], what: &str) -> Result<(), Error> {
+    let (degree, radical) = RealAlgebraic::span_degree(numbers);
+    if radical {
+        return Ok(());
+    }
+    limits::check_field_degree(degree, false, what)
 }
 
 /// The patches of every file of `paths`, in order: rational if they all
@@ -196,10 +225,12 @@ pub(crate) fn parse_algebraic_list(text: &str) -> Result<Vec<RealAlgebraic>, Err
         }
     }
     items.push(&text[start..]);
-    items
+    let numbers = items
         .into_iter()
         .map(|t| RealAlgebraic::from_text(t.trim()))
-        .collect()
+        .collect::<Result<Vec<_>, _>>()?;
+    check_numbers(&numbers, &format!("reading {text:?}"))?;
+    Ok(numbers)
 }
 
 /// Parse a comma-separated list of exact numbers (`1/3,0.25`).

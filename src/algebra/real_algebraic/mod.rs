@@ -171,16 +171,15 @@ impl RealAlgebraic {
     }
 
     /// The isolated-root (or radical) form of a field element, computed
-    /// once: the characteristic polynomial `Res_y(p(y), x − a(y))` of
-    /// `a(θ)`, whose root is isolated from `a(θ)`'s enclosures and then
-    /// simplified (rationals and `x^n − c` become radical sums).
+    /// once: the minimal polynomial of `a(θ)` ([`FieldNum::minimal_polynomial`]),
+    /// whose root is isolated from `a(θ)`'s enclosures and then simplified
+    /// (rationals and `x^n − c` become radical sums).
     fn plain(&self) -> Self {
         match &self.0 {
             Repr::Field(v) => v
                 .plain
                 .get_or_init(|| {
-                    let one = UPoly::constant(BigRational::one());
-                    let known = Self::value_polynomial(v.num.field.poly(), &v.num.a, &one);
+                    let known = polys::Isolator::new(&v.num.minimal_polynomial());
                     Self::isolate_enclosed(&known, |prec| v.num.enclosure(prec))
                 })
                 .clone(),
@@ -273,21 +272,9 @@ impl RealAlgebraic {
         known: &polys::Isolator,
         enclose: impl Fn(u32) -> (BigRational, BigRational),
     ) -> Self {
-        let seq = &known.seq;
-        let mut prec = 16;
-        loop {
-            let (lo, hi) = enclose(prec);
-            if lo < hi
-                && seq[0].sign_at(&lo) != 0
-                && seq[0].sign_at(&hi) != 0
-                && polys::count_roots(seq, &lo, &hi) == 1
-            {
-                return Self::isolated(known.sf.clone(), seq.clone(), lo, hi);
-            }
-            if lo == hi {
-                return Self::rat(lo);
-            }
-            prec *= 2;
+        match polys::isolate_by_enclosures(&known.seq, enclose) {
+            Ok((lo, hi)) => Self::isolated(known.sf.clone(), known.seq.clone(), lo, hi),
+            Err(q) => Self::rat(q),
         }
     }
 
@@ -308,6 +295,75 @@ impl RealAlgebraic {
             Repr::Root(r) => r.poly().degree(),
             Repr::Field(v) => Some(v.num.field.degree()),
         }
+    }
+
+    /// The degree over Q of the field that the numbers `xs` span, as the
+    /// exact arithmetic represents it, and whether they are all sums of
+    /// radicals (whose arithmetic needs no field: their degree only bounds
+    /// root indices). Radical sums count the degree of the radicals they
+    /// use ([`RadicalSum::span_degree`]); every other number (an isolated
+    /// root, a field element) the degree of its field, distinct fields
+    /// multiplying, as their compositum needs (`deg K₁K₂ ≤ deg K₁·deg K₂`).
+    /// Saturates at `u64::MAX`. Cost: a gcd-free basis of the radicals'
+    /// bases; no arithmetic on the numbers.
+    ///
+    /// ```
+    /// use exact_bezier::algebra::RealAlgebraic;
+    /// let x = |t: &str| t.parse::<RealAlgebraic>().unwrap();
+    /// // √2, √3, √6 span Q(√2, √3), of degree 4.
+    /// assert_eq!(RealAlgebraic::span_degree(&[x("sqrt(2)"), x("sqrt(3) + 1"), x("sqrt(6)")]), (4, true));
+    /// // A root of x³ − x − 1 and √2: 3 · 2.
+    /// assert_eq!(RealAlgebraic::span_degree(&[x("CRootOf(x**3 - x - 1, 0)"), x("sqrt(2)/2")]), (6, false));
+    /// ```
+    pub fn span_degree<'a>(xs: impl IntoIterator<Item = &'a RealAlgebraic>) -> (u64, bool) {
+        let mut radicals = Vec::new();
+        let mut fields: Vec<(Vec<BigRational>, usize, u64)> = Vec::new();
+        for x in xs {
+            let key = match &x.0 {
+                Repr::Radical(s) => {
+                    radicals.extend(s.root_indices());
+                    continue;
+                }
+                Repr::Root(r) => (r.poly().coeffs().to_vec(), r.index(), r.poly().degree()),
+                Repr::Field(v) => {
+                    let (p, k) = v.num.field.key();
+                    (p, k, v.num.field.poly().degree())
+                }
+            };
+            let (p, k, d) = (key.0, key.1, key.2.unwrap_or(1) as u64);
+            if !fields.iter().any(|f| f.0 == p && f.1 == k) {
+                fields.push((p, k, d));
+            }
+        }
+        radicals.sort();
+        radicals.dedup();
+        let degree = fields
+            .iter()
+            .fold(RadicalSum::span_degree(&radicals), |acc, f| {
+                acc.saturating_mul(f.2)
+            });
+        (degree, fields.is_empty())
+    }
+
+    /// Refuse (before computing it) an `n`-th root of `self` whose field
+    /// would be over [`crate::limits::MAX_FIELD_DEGREE`], or, for a radical
+    /// `c·∏b^e`, whose root index would be over
+    /// [`crate::limits::MAX_RADICAL_INDEX`]. `what` names the number.
+    pub(crate) fn check_root_degree(&self, n: u32, what: &str) -> Result<(), Error> {
+        let (d, radical) = Self::span_degree([self]);
+        let single = matches!(&self.0, Repr::Radical(s) if s.single_term().is_some());
+        crate::limits::check_field_degree(d.saturating_mul(n.into()), radical && single, what)
+    }
+
+    /// Refuse (before computing it) an arithmetic operation on `self` and
+    /// `other` whose field would be over [`crate::limits::MAX_FIELD_DEGREE`]
+    /// (two radical sums need no field). `what` names the numbers.
+    pub(crate) fn check_pair_degree(&self, other: &Self, what: &str) -> Result<(), Error> {
+        let (d, radical) = Self::span_degree([self, other]);
+        if radical {
+            return Ok(());
+        }
+        crate::limits::check_field_degree(d, false, what)
     }
 
     /// A polynomial over Q with this number as a root: the minimal

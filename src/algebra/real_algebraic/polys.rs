@@ -487,6 +487,51 @@ pub(crate) fn compose_power(p: &QPoly, n: u32) -> QPoly {
     UPoly::new(c)
 }
 
+/// The sign of a non-zero number from enclosures `enclose(prec)` that
+/// shrink to it: `prec` doubles from `start` until the enclosure excludes
+/// 0 (it must, the value being non-zero).
+pub(crate) fn sign_by_refinement(
+    start: u32,
+    enclose: impl Fn(u32) -> (BigRational, BigRational),
+) -> i32 {
+    let mut prec = start;
+    loop {
+        let (lo, hi) = enclose(prec);
+        if lo.is_positive() {
+            return 1;
+        }
+        if hi.is_negative() {
+            return -1;
+        }
+        prec *= 2;
+    }
+}
+
+/// The root of the square-free polynomial with Sturm sequence `seq` that
+/// the enclosures `enclose(prec)` shrink to: `prec` doubles from 16 until
+/// an enclosure holds exactly one root (endpoints not roots), `Ok(lo, hi)`;
+/// `Err(q)` when an enclosure collapses to the rational point `q`.
+pub(crate) fn isolate_by_enclosures(
+    seq: &[SignPoly],
+    enclose: impl Fn(u32) -> (BigRational, BigRational),
+) -> Result<(BigRational, BigRational), BigRational> {
+    let mut prec = 16;
+    loop {
+        let (lo, hi) = enclose(prec);
+        if lo == hi {
+            return Err(lo);
+        }
+        if lo < hi
+            && seq[0].sign_at(&lo) != 0
+            && seq[0].sign_at(&hi) != 0
+            && count_roots(seq, &lo, &hi) == 1
+        {
+            return Ok((lo, hi));
+        }
+        prec *= 2;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

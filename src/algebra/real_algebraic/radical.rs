@@ -25,6 +25,7 @@
 //! doubled in precision until they exclude 0, which always happens because a
 //! non-empty sum is non-zero.
 
+use super::polys;
 use crate::algebra::upoly::UPoly;
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -107,15 +108,59 @@ impl Monomial {
         (n as u32, r)
     }
 
-    /// Rational bounds `lo ≤ value ≤ hi` with `hi − lo ≤ 2^{−prec}`.
+    /// Rational bounds `lo ≤ value ≤ hi` with `hi − lo ≤ 2^{−prec}`: the
+    /// product of the factors' enclosures ([`power_enclosure`]) at `prec`
+    /// plus guard bits for the product's growth (each factor is below its
+    /// base `b`, so an error `ε` in one factor moves the product by at most
+    /// `ε ∏ b`; `G = Σ bits(b) + bits(#factors) + 3` guard bits cover the
+    /// `5·#factors·∏ b` units of widening).
     fn enclosure(&self, prec: u32) -> (BigRational, BigRational) {
-        let (n, r) = self.as_single_root();
-        let scale = BigInt::one() << prec as usize;
-        let floor = (r << (prec as usize * n as usize)).nth_root(n);
-        let lo = BigRational::new(floor.clone(), scale.clone());
-        let hi = BigRational::new(floor + 1, scale);
-        (lo, hi)
+        let guard: u64 = self.0.iter().map(|(b, _)| b.bits()).sum::<u64>()
+            + u64::from(usize::BITS - self.0.len().leading_zeros())
+            + 3;
+        let work = prec as usize + guard as usize;
+        let (mut lo, mut hi) = (BigInt::one() << work, BigInt::one() << work);
+        for (b, e) in &self.0 {
+            let (l, h) = power_enclosure(b, e, work);
+            lo = (lo * l) >> work;
+            hi = ((hi * h) >> work) + 1;
+        }
+        let scale = BigInt::one() << work;
+        (
+            BigRational::new(lo, scale.clone()),
+            BigRational::new(hi, scale),
+        )
     }
+}
+
+/// Fixed-point bounds `(L, H)` on `b^e · 2^w` for an integer `b > 1` and
+/// an exponent `e = a/n ∈ (0, 1)`: `L ≤ b^e · 2^w ≤ H`, `H − L ≤ 4`.
+///
+/// The `n`-th root of `r = b^a` is taken one prime factor `k` of `n` at a
+/// time, `X ↦ ⌊(X · 2^{w(k−1)})^{1/k}⌋` (and `+1` for the upper bound), so
+/// that the integer roots have word-sized indices `k` even when `n` is
+/// `2^15` (an index-32768 root of a 32768·w-bit integer costs minutes;
+/// fifteen square roots of shrinking integers, microseconds). Every value
+/// is at least 1 (`r ≥ 1`), where `x ↦ x^{1/k}` has slope at most `1/k ≤
+/// 1/2`: a width `W` (in units of `2^{−w}`) becomes at most `W/2 + 2`,
+/// which stays at most 4.
+fn power_enclosure(b: &BigInt, e: &Exp, w: usize) -> (BigInt, BigInt) {
+    let a = usize::try_from(*e.numer()).expect("exponents are in (0, 1)");
+    let mut n = *e.denom();
+    let r = num_traits::pow(b.clone(), a) << w;
+    let (mut lo, mut hi) = (r.clone(), r);
+    let mut k = 2;
+    while n > 1 {
+        while n % k != 0 {
+            k += 1;
+        }
+        n /= k;
+        let shift = w * (k as usize - 1);
+        let index = u32::try_from(k).expect("a prime factor of a root index");
+        lo = (lo << shift).nth_root(index);
+        hi = (hi << shift).nth_root(index) + 1;
+    }
+    (lo, hi)
 }
 
 /// Append `b^e` (exponent `e ≥ 0`) to a product, moving its integer part
@@ -472,22 +517,42 @@ impl RadicalSum {
         (lo, hi)
     }
 
+    /// The root index of each base: `(b, n)` with `n` the lcm of the
+    /// denominators of `b`'s exponents over all terms.
+    pub(crate) fn root_indices(&self) -> Vec<(BigInt, u64)> {
+        self.bases()
+            .into_iter()
+            .map(|b| {
+                let n = self.exponent_lcm(&b).unsigned_abs();
+                (b, n)
+            })
+            .collect()
+    }
+
+    /// The degree over Q of the field of real radicals that sums with the
+    /// bases and indices `gens` span: the bases are refined to a coprime
+    /// basis `c_j` (each `b` a product of powers of them, so `b^{1/n}` lies
+    /// in `Q(c_j^{1/n} : c_j | b)`), and the degree is at most
+    /// `∏_j lcm{n : c_j | b}`, with equality for coprime non-power bases
+    /// (Mordell 1953; real radicals, so no roots of unity intervene).
+    /// Saturates at `u64::MAX`.
+    pub(crate) fn span_degree(gens: &[(BigInt, u64)]) -> u64 {
+        let basis = coprime_basis(gens.iter().map(|(b, _)| b.clone()).collect());
+        basis.iter().fold(1u64, |acc, c| {
+            let index = gens
+                .iter()
+                .filter(|(b, _)| b.gcd(c) > BigInt::one())
+                .fold(1u64, |l, (_, n)| l.lcm(n));
+            acc.saturating_mul(index)
+        })
+    }
+
     /// The exact sign: `−1`, `0` or `1`.
     pub(crate) fn signum(&self) -> i32 {
         if let Some(q) = self.as_rational() {
             return q.signum().to_i32().unwrap_or(0);
         }
-        let mut prec = 32;
-        loop {
-            let (lo, hi) = self.enclosure(prec);
-            if lo.is_positive() {
-                return 1;
-            }
-            if hi.is_negative() {
-                return -1;
-            }
-            prec *= 2;
-        }
+        polys::sign_by_refinement(32, |prec| self.enclosure(prec))
     }
 
     /// The minimal polynomial over Q (monic): the first linear dependence
@@ -657,6 +722,46 @@ mod tests {
         );
         let one = x.mul(&x.recip());
         assert_eq!(one.as_rational(), Some(q(1)));
+    }
+
+    /// `L ≤ b^{a/n}·2^w ≤ H` checked exactly as `Lⁿ ≤ bᵃ·2^{wn} ≤ Hⁿ`,
+    /// with `H − L ≤ 4`, for indices with large powers of 2 and mixed
+    /// prime factors (the index-32768 root took minutes as one integer
+    /// root).
+    #[test]
+    fn power_enclosures_bound_the_value_tightly() {
+        for (b, a, n) in [
+            (3u32, 1i64, 1i64 << 15),
+            (2, 5, 7 * 8 * 9),
+            (5, 1, 61),
+            (7, 63, 64),
+        ] {
+            let w = 64;
+            let (lo, hi) = power_enclosure(&BigInt::from(b), &Exp::new(a, n), w);
+            let exact = num_traits::pow(BigInt::from(b), a as usize) << (w * n as usize);
+            assert!(
+                num_traits::pow(lo.clone(), n as usize) <= exact,
+                "{b}^({a}/{n})"
+            );
+            assert!(
+                num_traits::pow(hi.clone(), n as usize) >= exact,
+                "{b}^({a}/{n})"
+            );
+            assert!(&hi - &lo <= BigInt::from(4), "{b}^({a}/{n})");
+        }
+    }
+
+    /// `√2 + ∛2` and `√6` span `Q(√2, √3, ∛2)`, of degree 2·3·2 = 12
+    /// (the bases 2 and 6 refine to 2 and 3; 2 carries indices 2 and 3).
+    #[test]
+    fn span_degree_over_a_refined_basis() {
+        let gens = [
+            (BigInt::from(2), 2),
+            (BigInt::from(2), 3),
+            (BigInt::from(6), 2),
+        ];
+        assert_eq!(RadicalSum::span_degree(&gens), 12);
+        assert_eq!(RadicalSum::span_degree(&[]), 1);
     }
 
     #[test]

@@ -305,6 +305,7 @@ fn eval(ast: &Ast, text: &str) -> Result<RealAlgebraic, Error> {
             let mut acc = eval(first, text)?;
             for (op, b) in rest {
                 let b = eval(b, text)?;
+                acc.check_pair_degree(&b, &format!("the number {text:?}"))?;
                 acc = match op {
                     '+' => acc + b,
                     '-' => acc - b,
@@ -372,6 +373,7 @@ fn real_root(x: &RealAlgebraic, n: u32, text: &str) -> Result<RealAlgebraic, Err
     if n == 1 {
         return Ok(x.clone());
     }
+    x.check_root_degree(n, &format!("the number {text:?}"))?;
     if x.signum() < 0 {
         return Err(bad(
             text,
@@ -542,6 +544,43 @@ mod tests {
         assert_eq!(parse(&written).unwrap(), x);
         // 2^(1/128) raised to 128 is 2 (an independent check of the value).
         assert_eq!(x.pow_u32(128), RealAlgebraic::from_i64(2));
+    }
+
+    /// `sqrt` nested 30 times around 3 is `3^{1/2³⁰}` and answers at once
+    /// (the index-2³⁰ root is taken as thirty square roots): its value is
+    /// `exp(ln 3 / 2³⁰) = 1 + 1.02316…·10⁻⁹` (ln 3 = 1.0986122886…, the
+    /// second-order term is 5·10⁻¹⁹). Nested 31 times its index is over
+    /// the radical index limit, refused with the limit named.
+    #[test]
+    fn deeply_nested_square_roots_answer_or_are_refused_at_once() {
+        let nest = |k: usize| (0..k).fold("3".to_string(), |acc, _| format!("sqrt({acc})"));
+        let x = parse(&nest(30)).unwrap();
+        let (lo, hi) = x.enclosure(64);
+        let near =
+            |num: i64| BigRational::one() + BigRational::new(num.into(), 10i64.pow(14).into());
+        assert!(lo > near(102_315) && hi < near(102_317), "{lo} {hi}");
+        let err = parse(&nest(31)).unwrap_err();
+        assert!(
+            matches!(&err, Error::Limit(m) if m.contains("radical index limit")),
+            "{err}"
+        );
+    }
+
+    /// `√(1 + √(1 + …))` nested `k` times around 2 lives in a field of
+    /// degree `2^k` (each root of a sum extends the field): degree 16 is
+    /// read, 64 is refused before the root is built, naming the field
+    /// degree limit (degree 32 is read too, in about a minute of a debug
+    /// build: not run here).
+    #[test]
+    fn towers_of_roots_of_sums_stop_at_the_field_degree_limit() {
+        let nest = |k: usize| (0..k).fold("2".to_string(), |acc, _| format!("sqrt(1 + {acc})"));
+        let x = parse(&nest(4)).unwrap();
+        assert_eq!(x.defining_polynomial().degree(), Some(16));
+        let err = parse(&nest(6)).unwrap_err();
+        assert!(
+            matches!(&err, Error::Limit(m) if m.contains("field degree limit of 32")),
+            "{err}"
+        );
     }
 
     /// The documented nesting depth is 64 brackets: 64 nested calls are
