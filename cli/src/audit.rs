@@ -4,13 +4,12 @@
 //! See `docs/audit.md`.
 
 use super::open_input;
-use exact_bezier::audit::{audit, Audit, Continuity, Model, PatchEdge};
+use exact_bezier::audit::{audit, Audit, Continuity, ExactModel, Model, PatchEdge, SeamScalar};
 use exact_bezier::coincide::boundary_curve;
-use exact_bezier::io::{audit_to_json, read_model};
+use exact_bezier::io::{audit_to_json, read_exact_model, JsonScalar};
 use exact_bezier::patch::Patch;
 use exact_bezier::render::plot::{plot_colored_png, PlotOptions};
 use exact_bezier::Error;
-use num_rational::BigRational;
 use serde_json::{json, Value};
 
 /// Arguments of `audit`.
@@ -28,10 +27,17 @@ pub struct Args {
 }
 
 pub fn run(a: &Args) -> Result<Value, Error> {
-    let model = read_model(open_input(&a.file)?)?;
-    let report = audit(&model)?;
+    match read_exact_model(open_input(&a.file)?)? {
+        ExactModel::Rational(m) => run_on(&m, a),
+        ExactModel::Algebraic(m) => run_on(&m, a),
+    }
+}
+
+/// The audit of a model over either exact scalar.
+fn run_on<T: SeamScalar + JsonScalar>(model: &Model<T>, a: &Args) -> Result<Value, Error> {
+    let report = audit(model)?;
     if let Some(out) = &a.plot {
-        plot(&model, &report, out)?;
+        plot(model, &report, out)?;
     }
     if a.summary {
         let [g0, g1, g2, u] = report.counts();
@@ -39,7 +45,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
             json!({"summary": report.summary(), "counts": {"G0": g0, "G1": g1, "G2": g2, "undecided": u}}),
         );
     }
-    Ok(audit_to_json(&report, &model))
+    Ok(audit_to_json(&report, model))
 }
 
 /// Palette indices (see [`plot_colored_png`]).
@@ -56,19 +62,19 @@ fn verdict_colour(c: Option<Continuity>) -> usize {
 }
 
 /// The model's patches (3 iso-lines each) and its seams and open edges.
-fn plot(model: &Model, report: &Audit, out: &str) -> Result<(), Error> {
+fn plot<T: SeamScalar>(model: &Model<T>, report: &Audit<T>, out: &str) -> Result<(), Error> {
     if !out.ends_with(".png") {
         return Err(Error::Format(format!(
             "--plot writes PNG: {out} should end in .png"
         )));
     }
-    let edge = |e: &PatchEdge| -> Patch<BigRational> {
+    let edge = |e: &PatchEdge| -> Patch<T> {
         match &model.pieces[e.patch].patch {
             Patch::Rect(r) => Patch::Curve(boundary_curve(r, e.edge)),
             other => other.clone(),
         }
     };
-    let mut items: Vec<(Patch<BigRational>, usize)> = model
+    let mut items: Vec<(Patch<T>, usize)> = model
         .pieces
         .iter()
         .filter(|p| matches!(p.patch, Patch::Rect(_)))
