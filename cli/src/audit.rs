@@ -1,15 +1,21 @@
-//! `audit FILE [--summary]`: the exact audit of a patch model (JSON patches,
-//! NURBS JSON, geomdl JSON or STEP): shared edges with their G0/G1/G2
-//! verdicts, open and degenerate edges, duplicates, pieces of one surface.
-//! See `docs/audit.md`.
+//! `audit FILE [--summary]`: the audit of a STEP B-rep from its topology
+//! (edges classified shared / seam / open / non-manifold / degenerate,
+//! faces by surface type, tolerances), or the exact audit of a patch model
+//! without topology (JSON patches, NURBS JSON, geomdl JSON, STEP surfaces
+//! without edges): shared edges with their G0/G1/G2 verdicts, open and
+//! degenerate edges, duplicates, pieces of one surface. See `docs/audit.md`.
 
 use super::open_input;
+use exact_bezier::algebra::parse_rational;
+use exact_bezier::audit::brep::{audit_brep, default_angle_tolerance};
 use exact_bezier::audit::{audit, Audit, Continuity, ExactModel, Model, PatchEdge, SeamScalar};
 use exact_bezier::coincide::boundary_curve;
-use exact_bezier::io::{audit_to_json, read_exact_model, JsonScalar};
+use exact_bezier::io::{audit_to_json, brep_audit_to_json, is_step, read_exact_model, JsonScalar};
 use exact_bezier::patch::Patch;
 use exact_bezier::render::plot::{plot_colored_png, PlotOptions};
+use exact_bezier::step::read_brep;
 use exact_bezier::Error;
+use num_rational::BigRational;
 use serde_json::{json, Value};
 
 /// Arguments of `audit`.
@@ -24,10 +30,59 @@ pub struct Args {
     /// G1 blue, G0 red, undecided orange, open edges purple; patches brown.
     #[arg(long)]
     plot: Option<String>,
+    /// Length tolerance for a STEP B-rep, an exact number in the model's
+    /// length unit (default: the model's UNCERTAINTY_MEASURE_WITH_UNIT).
+    #[arg(long)]
+    tol: Option<String>,
+    /// Angular tolerance for a STEP B-rep, in radians (default 1e-6).
+    #[arg(long = "angle-tol")]
+    angle_tol: Option<String>,
+}
+
+/// A tolerance option: an exact non-negative number.
+fn tolerance(text: &str, what: &str) -> Result<BigRational, Error> {
+    let t = parse_rational(text)?;
+    if t < BigRational::from_integer(0.into()) {
+        return Err(Error::Format(format!(
+            "{what} must not be negative, found {text}"
+        )));
+    }
+    Ok(t)
 }
 
 pub fn run(a: &Args) -> Result<Value, Error> {
-    match read_exact_model(open_input(&a.file)?)? {
+    let mut input = open_input(&a.file)?;
+    if is_step(&mut input)? {
+        let brep = read_brep(input)?;
+        if !brep.edges.is_empty() {
+            if a.plot.is_some() {
+                return Err(Error::Format(
+                    "--plot draws patch models; a STEP B-rep is not drawn yet".into(),
+                ));
+            }
+            let tol = a
+                .tol
+                .as_deref()
+                .map(|t| tolerance(t, "--tol"))
+                .transpose()?;
+            let angle = match &a.angle_tol {
+                Some(t) => tolerance(t, "--angle-tol")?,
+                None => default_angle_tolerance(),
+            };
+            return Ok(brep_audit_to_json(
+                &audit_brep(&brep, tol, angle),
+                !a.summary,
+            ));
+        }
+        return run_on(&Model::from_step(brep.geometry), a);
+    }
+    if a.tol.is_some() || a.angle_tol.is_some() {
+        return Err(Error::Format(
+            "--tol and --angle-tol apply to STEP B-rep input; patch models are audited exactly"
+                .into(),
+        ));
+    }
+    match read_exact_model(input)? {
         ExactModel::Rational(m) => run_on(&m, a),
         ExactModel::Algebraic(m) => run_on(&m, a),
     }

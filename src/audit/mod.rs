@@ -20,6 +20,7 @@ use crate::{RectPatch, Tolerance};
 use num_rational::BigRational;
 use std::cmp::Ordering;
 
+pub mod brep;
 pub mod certify;
 pub mod model;
 pub mod seam;

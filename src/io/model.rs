@@ -7,6 +7,7 @@ use super::{
     JsonScalar,
 };
 use crate::algebra::{ExactNumber, Field, RealAlgebraic};
+use crate::audit::brep::{BrepAudit, EdgeClass, ToleranceSource};
 use crate::audit::{nurbs_pieces, Audit, ExactModel, Model, Origin, PatchEdge, Piece};
 use crate::error::Error;
 use crate::patch::Patch;
@@ -307,6 +308,49 @@ pub fn audit_to_json<T: JsonScalar>(audit: &Audit<T>, model: &Model<T>) -> Value
         "invalid_entities": model.invalid.iter().map(|(id, r)| json!({"entity": format!("#{id}"), "reason": r})).collect::<Vec<_>>(),
         "faces_on_other_surfaces": model.other_faces.len(),
     })
+}
+
+/// The B-rep audit as JSON: `summary`, `faces`, `edges` (counts by
+/// class), `continuity`, `tolerance`; with `full`, also `edge_list` (every
+/// edge with its curve type, faces and class) and what was not converted.
+pub fn brep_audit_to_json(a: &BrepAudit, full: bool) -> Value {
+    let mut edges = serde_json::Map::new();
+    edges.insert("total".into(), json!(a.edges.len()));
+    for c in EdgeClass::ALL {
+        edges.insert(c.name().into(), json!(a.count(c)));
+    }
+    let t = &a.tolerance;
+    let source = match t.source {
+        ToleranceSource::Given => "--tol",
+        ToleranceSource::Declared => "UNCERTAINTY_MEASURE_WITH_UNIT",
+        ToleranceSource::None => "none",
+    };
+    let mut v = json!({
+        "summary": a.summary(),
+        "faces": {"total": a.faces(), "by_surface": a.faces_by_surface},
+        "edges": edges,
+        "continuity": {"G2": 0, "G1": 0, "G0": 0, "fails": 0, "undecided": 0, "exact": 0,
+                       "not_measured": a.count(EdgeClass::Shared)},
+        "tolerance": {"length": t.length.as_ref().map(BigRational::to_json), "unit": t.unit,
+                      "angle": t.angle.to_json(), "source": source},
+    });
+    if full {
+        v["edge_list"] = a
+            .edges
+            .iter()
+            .map(|e| {
+                json!({
+                    "id": format!("#{}", e.id),
+                    "curve": e.curve,
+                    "faces": e.faces.iter().map(|f| format!("#{f}")).collect::<Vec<_>>(),
+                    "class": e.class.name(),
+                })
+            })
+            .collect();
+        v["not_converted"] = json!(a.not_converted);
+        v["invalid_entities"] = json!(a.invalid);
+    }
+    v
 }
 
 /// Pieces that come from one source surface (one STEP entity or one NURBS
