@@ -499,3 +499,63 @@ fn analytic_pieces_satisfy_the_closed_forms_of_their_entities() {
     assert!(faces_checked > 1000, "{faces_checked} face points");
     assert!(edges_checked > 1000, "{edges_checked} edge points");
 }
+
+/// The B-rep audit classifies every edge of every corpus model as the
+/// independent counter does (shared / seam / open / non-manifold from the
+/// loops), finds no open edge in a model whose shells are all closed, and
+/// takes a declared `UNCERTAINTY_MEASURE_WITH_UNIT` as its length
+/// tolerance (one of the counter's values, parsed here).
+#[test]
+fn brep_audit_classifies_edges_as_the_independent_counter() {
+    use exact_bezier::audit::brep::ToleranceSource;
+    use exact_bezier::audit::brep::{audit_brep, default_angle_tolerance, EdgeClass};
+    let text = std::fs::read_to_string(format!("{}/counts.json", dir())).unwrap();
+    let counts: Value = serde_json::from_str(&text).unwrap();
+    for (name, want) in counts.as_object().unwrap() {
+        let m = read(name, false);
+        let a = audit_brep(&m, None, default_angle_tolerance());
+        let uses = &want["edge_uses"];
+        for c in [
+            EdgeClass::Shared,
+            EdgeClass::Seam,
+            EdgeClass::Open,
+            EdgeClass::NonManifold,
+        ] {
+            assert_eq!(
+                Some(a.count(c) as u64),
+                uses[c.name()].as_u64(),
+                "{name}: {} edges",
+                c.name()
+            );
+        }
+        let shells = m
+            .solids
+            .values()
+            .flat_map(|s| &s.shells)
+            .chain(&m.loose_shells);
+        if shells.clone().count() > 0 && shells.clone().all(|s| s.closed) {
+            assert_eq!(a.count(EdgeClass::Open), 0, "{name}: a closed model");
+        }
+        let declared = want["contexts"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .flat_map(|c| c["uncertainty"].as_array().cloned().unwrap_or_default())
+            .filter(|u| u["measure"] == "LENGTH_MEASURE")
+            .map(|u| exact_bezier::algebra::parse_rational(u["value"].as_str().unwrap()).unwrap())
+            .collect::<Vec<_>>();
+        // The counter lists every context of the file; ours are the
+        // bodies' contexts: our tolerance is one of the declared values.
+        match &a.tolerance.length {
+            Some(t) => assert!(declared.contains(t), "{name}: tolerance {t}"),
+            None => assert!(declared.is_empty(), "{name}: tolerance"),
+        }
+        let source = if !declared.is_empty() {
+            ToleranceSource::Declared
+        } else {
+            ToleranceSource::None
+        };
+        assert_eq!(a.tolerance.source, source, "{name}");
+        assert_eq!(a.faces(), m.faces.len(), "{name}: faces");
+    }
+}

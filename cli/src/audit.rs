@@ -1,14 +1,19 @@
-//! `audit FILE [--summary]`: the exact audit of a patch model (JSON patches,
-//! NURBS JSON, geomdl JSON or STEP): shared edges with their G0/G1/G2
-//! verdicts, open and degenerate edges, duplicates, pieces of one surface.
-//! See `docs/audit.md`.
+//! `audit FILE [--summary]`: the audit of a STEP B-rep from its topology
+//! (edges classified shared / seam / open / non-manifold / degenerate,
+//! faces by surface type, tolerances), or the exact audit of a patch model
+//! without topology (JSON patches, NURBS JSON, geomdl JSON, STEP surfaces
+//! without edges): shared edges with their G0/G1/G2 verdicts, open and
+//! degenerate edges, duplicates, pieces of one surface. See `docs/audit.md`.
 
 use super::open_input;
-use exact_bezier::audit::{audit, Audit, Continuity, Model, PatchEdge};
+use exact_bezier::algebra::parse_rational;
+use exact_bezier::audit::brep::{audit_brep, default_angle_tolerance};
+use exact_bezier::audit::{audit, Audit, Continuity, ExactModel, Model, PatchEdge, SeamScalar};
 use exact_bezier::coincide::boundary_curve;
-use exact_bezier::io::{audit_to_json, read_model};
+use exact_bezier::io::{audit_to_json, brep_audit_to_json, is_step, read_exact_model, JsonScalar};
 use exact_bezier::patch::Patch;
 use exact_bezier::render::plot::{plot_colored_png, PlotOptions};
+use exact_bezier::step::read_brep;
 use exact_bezier::Error;
 use num_rational::BigRational;
 use serde_json::{json, Value};
@@ -25,13 +30,69 @@ pub struct Args {
     /// G1 blue, G0 red, undecided orange, open edges purple; patches brown.
     #[arg(long)]
     plot: Option<String>,
+    /// Length tolerance for a STEP B-rep, an exact number in the model's
+    /// length unit (default: the model's UNCERTAINTY_MEASURE_WITH_UNIT).
+    #[arg(long)]
+    tol: Option<String>,
+    /// Angular tolerance for a STEP B-rep, in radians (default 1e-6).
+    #[arg(long = "angle-tol")]
+    angle_tol: Option<String>,
+}
+
+/// A tolerance option: an exact non-negative number.
+fn tolerance(text: &str, what: &str) -> Result<BigRational, Error> {
+    let t = parse_rational(text)?;
+    if t < BigRational::from_integer(0.into()) {
+        return Err(Error::Format(format!(
+            "{what} must not be negative, found {text}"
+        )));
+    }
+    Ok(t)
 }
 
 pub fn run(a: &Args) -> Result<Value, Error> {
-    let model = read_model(open_input(&a.file)?)?;
-    let report = audit(&model)?;
+    let mut input = open_input(&a.file)?;
+    if is_step(&mut input)? {
+        let brep = read_brep(input)?;
+        if !brep.edges.is_empty() {
+            if a.plot.is_some() {
+                return Err(Error::Format(
+                    "--plot draws patch models; a STEP B-rep is not drawn yet".into(),
+                ));
+            }
+            let tol = a
+                .tol
+                .as_deref()
+                .map(|t| tolerance(t, "--tol"))
+                .transpose()?;
+            let angle = match &a.angle_tol {
+                Some(t) => tolerance(t, "--angle-tol")?,
+                None => default_angle_tolerance(),
+            };
+            return Ok(brep_audit_to_json(
+                &audit_brep(&brep, tol, angle),
+                !a.summary,
+            ));
+        }
+        return run_on(&Model::from_step(brep.geometry), a);
+    }
+    if a.tol.is_some() || a.angle_tol.is_some() {
+        return Err(Error::Format(
+            "--tol and --angle-tol apply to STEP B-rep input; patch models are audited exactly"
+                .into(),
+        ));
+    }
+    match read_exact_model(input)? {
+        ExactModel::Rational(m) => run_on(&m, a),
+        ExactModel::Algebraic(m) => run_on(&m, a),
+    }
+}
+
+/// The audit of a model over either exact scalar.
+fn run_on<T: SeamScalar + JsonScalar>(model: &Model<T>, a: &Args) -> Result<Value, Error> {
+    let report = audit(model)?;
     if let Some(out) = &a.plot {
-        plot(&model, &report, out)?;
+        plot(model, &report, out)?;
     }
     if a.summary {
         let [g0, g1, g2, u] = report.counts();
@@ -39,7 +100,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
             json!({"summary": report.summary(), "counts": {"G0": g0, "G1": g1, "G2": g2, "undecided": u}}),
         );
     }
-    Ok(audit_to_json(&report, &model))
+    Ok(audit_to_json(&report, model))
 }
 
 /// Palette indices (see [`plot_colored_png`]).
@@ -56,19 +117,19 @@ fn verdict_colour(c: Option<Continuity>) -> usize {
 }
 
 /// The model's patches (3 iso-lines each) and its seams and open edges.
-fn plot(model: &Model, report: &Audit, out: &str) -> Result<(), Error> {
+fn plot<T: SeamScalar>(model: &Model<T>, report: &Audit<T>, out: &str) -> Result<(), Error> {
     if !out.ends_with(".png") {
         return Err(Error::Format(format!(
             "--plot writes PNG: {out} should end in .png"
         )));
     }
-    let edge = |e: &PatchEdge| -> Patch<BigRational> {
+    let edge = |e: &PatchEdge| -> Patch<T> {
         match &model.pieces[e.patch].patch {
             Patch::Rect(r) => Patch::Curve(boundary_curve(r, e.edge)),
             other => other.clone(),
         }
     };
-    let mut items: Vec<(Patch<BigRational>, usize)> = model
+    let mut items: Vec<(Patch<T>, usize)> = model
         .pieces
         .iter()
         .filter(|p| matches!(p.patch, Patch::Rect(_)))

@@ -10,11 +10,12 @@ use super::{
 };
 use crate::session::{emit, json_text};
 use exact_bezier::algebra::{Field, Ordered, RealAlgebraic, Scalar};
-use exact_bezier::audit::Origin;
+use exact_bezier::audit::{ExactModel, Model, Origin};
 use exact_bezier::convert::{rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Split};
 use exact_bezier::io::trig::read_trig_patches;
 use exact_bezier::io::{
-    brep_to_json, brep_to_lines, is_step, patch_to_json, piece_to_json, read_model, JsonScalar,
+    brep_to_json, brep_to_lines, is_step, patch_to_json, piece_to_json, read_exact_model,
+    JsonScalar,
 };
 use exact_bezier::limits::{self, check_degree, Size};
 use exact_bezier::patch::Patch;
@@ -231,13 +232,19 @@ fn nurbs_to_bezier(a: &Args) -> Result<Value, Error> {
     if a.jsonl {
         return Err(Error::Format("--jsonl applies to STEP input".into()));
     }
-    let model = read_model(input)?;
-    let out = model
-        .pieces
+    let out = match read_exact_model(input)? {
+        ExactModel::Rational(m) => write_pieces(&m, a)?,
+        ExactModel::Algebraic(m) => write_pieces(&m, a)?,
+    };
+    Ok(Value::Array(out))
+}
+
+/// Every piece of a model with its origin (see [`write_piece`]).
+fn write_pieces<T: JsonScalar + Ordered>(m: &Model<T>, a: &Args) -> Result<Vec<Value>, Error> {
+    m.pieces
         .iter()
         .map(|p| write_piece(&p.patch, &p.origin, a))
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(Value::Array(out))
+        .collect()
 }
 
 /// A piece with its origin, normalized and over the scalar of `a`.

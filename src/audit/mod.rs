@@ -18,14 +18,15 @@ use crate::error::Error;
 use crate::patch::Patch;
 use crate::{RectPatch, Tolerance};
 use num_rational::BigRational;
-use std::collections::HashMap;
+use std::cmp::Ordering;
 
+pub mod brep;
 pub mod certify;
 pub mod model;
 pub mod seam;
 
-pub use model::{nurbs_pieces, Model, Origin, Piece};
-pub use seam::{seam_continuity, Continuity, SeamVerdict};
+pub use model::{nurbs_pieces, ExactModel, Model, Origin, Piece};
+pub use seam::{seam_continuity, Continuity, SeamScalar, SeamVerdict};
 
 type Q = BigRational;
 
@@ -51,9 +52,9 @@ pub struct Seam {
     pub non_manifold: bool,
 }
 
-/// The audit's findings.
-#[derive(Clone, Debug, Default)]
-pub struct Audit {
+/// The audit's findings (points over the model's scalar `T`).
+#[derive(Clone, Debug)]
+pub struct Audit<T = Q> {
     /// Pieces audited (rect patches).
     pub patches: usize,
     /// Pieces not audited (curves, tri patches), with their indices.
@@ -63,13 +64,26 @@ pub struct Audit {
     /// Edges no other patch shares.
     pub open_edges: Vec<PatchEdge>,
     /// Collapsed edges and the point they collapse to.
-    pub degenerate_edges: Vec<(PatchEdge, Vec<Q>)>,
+    pub degenerate_edges: Vec<(PatchEdge, Vec<T>)>,
     /// Classes of coincident patches (same surface piece up to
     /// reparameterization), two or more each.
     pub duplicates: Vec<Vec<usize>>,
 }
 
-fn rects(model: &Model) -> (Vec<(usize, &RectPatch<Q>)>, Vec<usize>) {
+impl<T> Default for Audit<T> {
+    fn default() -> Self {
+        Audit {
+            patches: 0,
+            not_rect: Vec::new(),
+            seams: Vec::new(),
+            open_edges: Vec::new(),
+            degenerate_edges: Vec::new(),
+            duplicates: Vec::new(),
+        }
+    }
+}
+
+fn rects<T: SeamScalar>(model: &Model<T>) -> (Vec<(usize, &RectPatch<T>)>, Vec<usize>) {
     let mut out = Vec::new();
     let mut other = Vec::new();
     for (k, p) in model.pieces.iter().enumerate() {
@@ -83,7 +97,7 @@ fn rects(model: &Model) -> (Vec<(usize, &RectPatch<Q>)>, Vec<usize>) {
 
 /// The collapse point of a boundary curve whose control points all project
 /// to one point, if it is one.
-fn collapsed(r: &RectPatch<Q>, e: Edge) -> Option<Vec<Q>> {
+fn collapsed<T: SeamScalar>(r: &RectPatch<T>, e: Edge) -> Option<Vec<T>> {
     let c = boundary_curve(r, e);
     let first = &c.ctrl()[0];
     c.ctrl()
@@ -111,7 +125,26 @@ fn par_map<I: Sync, O: Send>(items: &[I], f: impl Fn(&I) -> O + Sync) -> Vec<O> 
 }
 
 /// The edges' canonical keys (or collapse points).
-type EdgeKey = Result<Result<CanonicalKey, Vec<Q>>, Error>;
+type EdgeKey<T> = Result<Result<CanonicalKey<T>, Vec<T>>, Error>;
+
+/// The classes of equal keys, each with its items in input order, the
+/// classes in key order: one sort (keys over the real algebraic numbers
+/// are ordered exactly but not hashable).
+fn classes_of<K: PartialOrd, I>(mut keyed: Vec<(K, I)>) -> Vec<Vec<I>> {
+    keyed.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(Ordering::Equal));
+    let mut out: Vec<Vec<I>> = Vec::new();
+    let mut last: Option<K> = None;
+    for (k, item) in keyed {
+        match &last {
+            Some(l) if *l == k => out.last_mut().expect("a class is open").push(item),
+            _ => {
+                out.push(vec![item]);
+                last = Some(k);
+            }
+        }
+    }
+    out
+}
 
 /// Audit the rect patches of `model`.
 ///
@@ -119,13 +152,13 @@ type EdgeKey = Result<Result<CanonicalKey, Vec<Q>>, Error>;
 ///
 /// [`Error::Weight`] for a non-positive weight; [`Error::Shape`] for
 /// patches of dimension other than 2 or 3 that share an edge.
-pub fn audit(model: &Model) -> Result<Audit, Error> {
+pub fn audit<T: SeamScalar>(model: &Model<T>) -> Result<Audit<T>, Error> {
     let (rects, not_rect) = rects(model);
-    let edges: Vec<(PatchEdge, &RectPatch<Q>)> = rects
+    let edges: Vec<(PatchEdge, &RectPatch<T>)> = rects
         .iter()
         .flat_map(|&(k, r)| Edge::ALL.map(|edge| (PatchEdge { patch: k, edge }, r)))
         .collect();
-    let keys: Vec<EdgeKey> = par_map(&edges, |(pe, r)| match collapsed(r, pe.edge) {
+    let keys: Vec<EdgeKey<T>> = par_map(&edges, |(pe, r)| match collapsed(r, pe.edge) {
         Some(point) => Ok(Err(point)),
         None => canonical_key(&Patch::Curve(boundary_curve(r, pe.edge))).map(Ok),
     });
@@ -134,14 +167,14 @@ pub fn audit(model: &Model) -> Result<Audit, Error> {
         not_rect,
         ..Audit::default()
     };
-    let mut groups: HashMap<CanonicalKey, Vec<PatchEdge>> = HashMap::new();
+    let mut keyed = Vec::new();
     for ((pe, _), key) in edges.iter().zip(keys) {
         match key? {
             Err(point) => out.degenerate_edges.push((*pe, point)),
-            Ok(k) => groups.entry(k).or_default().push(*pe),
+            Ok(k) => keyed.push((k, *pe)),
         }
     }
-    let mut groups: Vec<Vec<PatchEdge>> = groups.into_values().collect();
+    let mut groups = classes_of(keyed);
     groups.sort();
     let mut pairs = Vec::new();
     for g in &groups {
@@ -171,16 +204,19 @@ pub fn audit(model: &Model) -> Result<Audit, Error> {
         });
     }
     let patch_keys = par_map(&rects, |(_, r)| canonical_key(&Patch::Rect((*r).clone())));
-    let mut classes: HashMap<CanonicalKey, Vec<usize>> = HashMap::new();
+    let mut keyed = Vec::new();
     for ((k, _), key) in rects.iter().zip(patch_keys) {
-        classes.entry(key?).or_default().push(*k);
+        keyed.push((key?, *k));
     }
-    out.duplicates = classes.into_values().filter(|c| c.len() > 1).collect();
+    out.duplicates = classes_of(keyed)
+        .into_iter()
+        .filter(|c| c.len() > 1)
+        .collect();
     out.duplicates.sort();
     Ok(out)
 }
 
-impl Audit {
+impl<T> Audit<T> {
     /// Seams by verdict: `(G0, G1, G2, undecided)`.
     pub fn counts(&self) -> [usize; 4] {
         let mut c = [0; 4];

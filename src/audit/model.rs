@@ -2,6 +2,7 @@
 //! [`crate::io::read_model`] from our JSON — patches, `nurbs-*` objects,
 //! geomdl — or from STEP).
 
+use crate::algebra::RealAlgebraic;
 use crate::nurbs::Nurbs;
 use crate::patch::Patch;
 use crate::step::StepModel;
@@ -30,26 +31,48 @@ impl Origin {
     }
 }
 
-/// One Bézier piece of a model.
+/// One Bézier piece of a model, over the exact scalar `T` (rational, or
+/// real algebraic where a coordinate or weight is a radical).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Piece {
+pub struct Piece<T = BigRational> {
     /// The piece.
-    pub patch: Patch<BigRational>,
+    pub patch: Patch<T>,
     /// Where it came from.
     pub origin: Origin,
 }
 
 /// The pieces of a file, and what was skipped reading it.
-#[derive(Clone, Debug, Default)]
-pub struct Model {
+#[derive(Clone, Debug)]
+pub struct Model<T = BigRational> {
     /// Every piece, in file order.
-    pub pieces: Vec<Piece>,
+    pub pieces: Vec<Piece<T>>,
     /// STEP entity types skipped, with counts.
     pub skipped: BTreeMap<String, usize>,
     /// STEP entities of a supported type that could not be read.
     pub invalid: Vec<(u64, String)>,
     /// STEP faces on surfaces that are not B-splines: `(face, surface)`.
     pub other_faces: Vec<(u64, u64)>,
+}
+
+impl<T> Default for Model<T> {
+    fn default() -> Self {
+        Model {
+            pieces: Vec::new(),
+            skipped: BTreeMap::new(),
+            invalid: Vec::new(),
+            other_faces: Vec::new(),
+        }
+    }
+}
+
+/// A model as read: over Q when every number is rational, else over the
+/// real algebraic numbers ([`crate::io::read_exact_model`]).
+#[derive(Clone, Debug)]
+pub enum ExactModel {
+    /// Every number rational (every STEP and NURBS input).
+    Rational(Model),
+    /// Some number algebraic and irrational.
+    Algebraic(Model<RealAlgebraic>),
 }
 
 /// The Bézier pieces of `n`, each with `base` and its knot spans as origin.

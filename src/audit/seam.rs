@@ -35,14 +35,78 @@
 //! the test is exact, and a failing sample is an exact witness.
 
 use crate::algebra::int::{common_denominator, Int};
-use crate::coincide::{boundary_curve, coincide, Edge, MobiusParam, Options};
+use crate::algebra::{RealAlgebraic, Ring};
+use crate::coincide::minimal::Reducible;
+use crate::coincide::{boundary_curve, coincide, CoincideScalar, Edge, MobiusParam, Options};
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::{Patch, RationalCurve, RectPatch};
 use num_rational::BigRational;
 use num_traits::{One, Zero};
+use std::cmp::Ordering;
 
 type Q = BigRational;
+
+/// An exact scalar whose seams [`seam_continuity`] decides, and how: the
+/// identities are checked in a ring [`SeamScalar::Jet`] — the integers for
+/// rationals (each net over one common denominator, which scales every
+/// identity by a positive factor), the numbers themselves for real
+/// algebraic ones.
+pub trait SeamScalar: CoincideScalar + Reducible {
+    /// The ring the jets are computed in.
+    type Jet: Ring;
+    /// The coordinates, all scaled by one positive number, in the ring.
+    fn scaled<'a>(coords: impl Iterator<Item = &'a Self> + Clone) -> Vec<Self::Jet>;
+    /// The homogeneous parameter `(1 − t : t)`, scaled by a positive number.
+    fn hom(t: &Self) -> (Self::Jet, Self::Jet);
+    /// A small integer in the ring.
+    fn small(k: i128) -> Self::Jet;
+    /// The sign of a ring element.
+    fn sign(x: &Self::Jet) -> Ordering;
+    /// The quotient `num / den` (`den ≠ 0`) as text.
+    fn ratio_text(num: &Self::Jet, den: &Self::Jet) -> String;
+}
+
+impl SeamScalar for Q {
+    type Jet = Int;
+    fn scaled<'a>(coords: impl Iterator<Item = &'a Self> + Clone) -> Vec<Int> {
+        common_denominator::<Int>(coords).0
+    }
+    fn hom(t: &Q) -> (Int, Int) {
+        (
+            Int::from_bigint(t.denom() - t.numer()),
+            Int::from_bigint(t.numer().clone()),
+        )
+    }
+    fn small(k: i128) -> Int {
+        Int::from(k)
+    }
+    fn sign(x: &Int) -> Ordering {
+        x.to_bigint().sign().cmp(&num_bigint::Sign::NoSign)
+    }
+    fn ratio_text(num: &Int, den: &Int) -> String {
+        Q::new(num.to_bigint(), den.to_bigint()).to_string()
+    }
+}
+
+impl SeamScalar for RealAlgebraic {
+    type Jet = RealAlgebraic;
+    fn scaled<'a>(coords: impl Iterator<Item = &'a Self> + Clone) -> Vec<Self> {
+        coords.cloned().collect()
+    }
+    fn hom(t: &Self) -> (Self, Self) {
+        (Self::one() - t, t.clone())
+    }
+    fn small(k: i128) -> Self {
+        <Self as crate::algebra::Scalar>::from_rational(&Q::from_integer(k.into()))
+    }
+    fn sign(x: &Self) -> Ordering {
+        x.partial_cmp(&Self::zero()).unwrap_or(Ordering::Equal)
+    }
+    fn ratio_text(num: &Self, den: &Self) -> String {
+        (num.clone() / den).to_string()
+    }
+}
 
 /// The continuity verdict of a seam.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -80,7 +144,7 @@ pub struct SeamVerdict {
 
 /// `r` turned so that `edge` is `v = 0`, run by `u` in the direction of
 /// [`boundary_curve`], `v` pointing inward.
-pub fn turn_to_v0(r: &RectPatch<Q>, edge: Edge) -> RectPatch<Q> {
+pub fn turn_to_v0<T: SeamScalar>(r: &RectPatch<T>, edge: Edge) -> RectPatch<T> {
     match edge {
         Edge::V0 => r.clone(),
         Edge::V1 => r.reverse_v(),
@@ -90,8 +154,8 @@ pub fn turn_to_v0(r: &RectPatch<Q>, edge: Edge) -> RectPatch<Q> {
 }
 
 /// The `(u, v)` of a patch's edge point at edge parameter `t`.
-pub fn edge_point(edge: Edge, t: &Q) -> [Q; 2] {
-    let (z, o) = (Q::zero(), Q::one());
+pub fn edge_point<T: SeamScalar>(edge: Edge, t: &T) -> [T; 2] {
+    let (z, o) = (T::zero(), T::one());
     match edge {
         Edge::U0 => [z, t.clone()],
         Edge::U1 => [o, t.clone()],
@@ -102,37 +166,37 @@ pub fn edge_point(edge: Edge, t: &Q) -> [Q; 2] {
 
 /// The edge map `s = φ(t)` from a's boundary parameter to b's.
 #[derive(Clone, Debug)]
-struct EdgeMap {
-    alpha: Option<Q>,
+struct EdgeMap<T> {
+    alpha: Option<T>,
     reversed: bool,
 }
 
-impl EdgeMap {
-    fn apply(&self, t: &Q) -> Result<Q, Error> {
+impl<T: SeamScalar> EdgeMap<T> {
+    fn apply(&self, t: &T) -> Result<T, Error> {
         let s = match &self.alpha {
             Some(a) => RationalCurve::mobius_param(a, t)?,
             None => t.clone(),
         };
-        Ok(if self.reversed { Q::one() - s } else { s })
+        Ok(if self.reversed { T::one() - s } else { s })
     }
 }
 
 /// Do the edges have proportional homogeneous control points, in order or
 /// reversed (the same parameterization up to reversal — the usual case)?
 /// Then `φ` is the identity or `t ↦ 1 − t`, without a coincidence test.
-fn direct_map(ca: &RationalCurve<Q>, cb: &RationalCurve<Q>) -> Option<EdgeMap> {
+fn direct_map<T: SeamScalar>(ca: &RationalCurve<T>, cb: &RationalCurve<T>) -> Option<EdgeMap<T>> {
     let (a, b) = (ca.ctrl(), cb.ctrl());
     if a.len() != b.len() {
         return None;
     }
-    let proportional = |b: &mut dyn Iterator<Item = &HPoint<Q>>| {
+    let proportional = |b: &mut dyn Iterator<Item = &HPoint<T>>| {
         let (wa, mut wb) = (a[0].weight(), None);
         a.iter().zip(b).all(|(p, q)| {
             let wb0 = wb.get_or_insert_with(|| q.weight().clone());
             p.coords
                 .iter()
                 .zip(&q.coords)
-                .all(|(x, y)| x * &*wb0 == y * wa)
+                .all(|(x, y)| x.clone() * &*wb0 == y.clone() * wa)
         })
     };
     if proportional(&mut b.iter()) {
@@ -152,10 +216,10 @@ fn direct_map(ca: &RationalCurve<Q>, cb: &RationalCurve<Q>) -> Option<EdgeMap> {
 
 /// The edge map: [`direct_map`], else the candidates the coincidence
 /// witness allows, checked on the curves.
-fn edge_map(
-    ca: &RationalCurve<Q>,
-    cb: &RationalCurve<Q>,
-) -> Result<Result<EdgeMap, String>, Error> {
+fn edge_map<T: SeamScalar>(
+    ca: &RationalCurve<T>,
+    cb: &RationalCurve<T>,
+) -> Result<Result<EdgeMap<T>, String>, Error> {
     if let Some(m) = direct_map(ca, cb) {
         return Ok(Ok(m));
     }
@@ -167,16 +231,19 @@ fn edge_map(
     let Some(w) = c.witness else {
         return Ok(Err(format!("the boundary curves differ: {}", c.reason)));
     };
-    let alphas: Vec<Option<Q>> = match &w.u {
+    let alphas: Vec<Option<T>> = match &w.u {
         MobiusParam::None => vec![None],
-        MobiusParam::Value { alpha, .. } => vec![None, Some(alpha.clone()), Some(Q::one() - alpha)],
+        MobiusParam::Value { alpha, .. } => vec![None, Some(alpha.clone()), Some(T::one() - alpha)],
         MobiusParam::Power { exponent, power } => {
             return Ok(Err(format!(
                 "the edge parameterizations differ by an irrational Möbius map (ρ^{exponent} = {power}); continuity not decided"
             )))
         }
     };
-    let probes = [Q::new(1.into(), 3.into()), Q::new(3.into(), 7.into())];
+    let probes = [
+        T::from_rational(&Q::new(1.into(), 3.into())),
+        T::from_rational(&Q::new(3.into(), 7.into())),
+    ];
     for alpha in alphas {
         for reversed in [w.symmetry.reverse_u, !w.symmetry.reverse_u] {
             let m = EdgeMap {
@@ -200,49 +267,50 @@ fn edge_map(
 }
 
 /// A turned patch's first three columns (`v`-rows `j = 0, 1, 2` of the net,
-/// each a curve in `u`) over one common denominator: integer homogeneous
-/// points. Scaling a whole net by a constant changes no verdict (every
-/// identity below is homogeneous in each patch).
-struct IntNet {
-    cols: Vec<Vec<Vec<Int>>>,
+/// each a curve in `u`) as homogeneous points of the jet ring, all scaled
+/// by one positive number ([`SeamScalar::scaled`]). Scaling a whole net by
+/// a positive constant changes no verdict (every identity below is
+/// homogeneous in each patch).
+struct JetNet<R> {
+    cols: Vec<Vec<Vec<R>>>,
     n: usize,
 }
 
-impl IntNet {
-    fn new(r: &RectPatch<Q>) -> Self {
+impl<R: Ring> JetNet<R> {
+    fn new<T: SeamScalar<Jet = R>>(r: &RectPatch<T>) -> Self {
         let n = r.degree().1;
-        let cols: Vec<Vec<HPoint<Q>>> = (0..=n.min(2)).map(|j| r.column(j)).collect();
+        let cols: Vec<Vec<HPoint<T>>> = (0..=n.min(2)).map(|j| r.column(j)).collect();
         let all = cols.iter().flatten().flat_map(|p| p.coords.iter());
-        let (nums, _) = common_denominator::<Int>(all);
+        let nums = T::scaled(all);
         let len = cols[0][0].coords.len();
         let mut it = nums.into_iter();
         let cols = cols
             .iter()
             .map(|c| c.iter().map(|_| it.by_ref().take(len).collect()).collect())
             .collect();
-        IntNet { cols, n }
+        JetNet { cols, n }
     }
 }
 
 /// `Σ k_i v_i` for small integer `k_i`.
-fn lin(terms: &[(&[Int], i128)]) -> Vec<Int> {
+fn lin<T: SeamScalar>(terms: &[(&[T::Jet], i128)]) -> Vec<T::Jet> {
     let len = terms[0].0.len();
     (0..len)
         .map(|c| {
-            terms.iter().fold(Int::zero(), |acc, (v, k)| {
-                acc + &(v[c].clone() * &Int::from(*k))
+            terms.iter().fold(T::Jet::zero(), |acc, (v, k)| {
+                acc + &(v[c].clone() * &T::small(*k))
             })
         })
         .collect()
 }
 
-/// Value and first two derivatives of an integer Bézier row at the
-/// homogeneous parameter `(a : b)` (`t = b/(a + b)`), each scaled by
+/// Value and first two derivatives of a Bézier row at the homogeneous
+/// parameter `(a : b)` (`t = b/(a + b)`), each scaled by
 /// `(a + b)^{level}`: de Casteljau with the step `a·x + b·y`, keeping the
 /// levels of 3 and 2 points (`C' = n Δb^{n−1}_0`, `C'' = n(n−1) Δ²b^{n−2}_0`).
-fn curve_jet(pts: &[Vec<Int>], a: &Int, b: &Int) -> [Vec<Int>; 3] {
+fn curve_jet<T: SeamScalar>(pts: &[Vec<T::Jet>], a: &T::Jet, b: &T::Jet) -> [Vec<T::Jet>; 3] {
     let n = pts.len() - 1;
-    let mut row: Vec<Vec<Int>> = pts.to_vec();
+    let mut row: Vec<Vec<T::Jet>> = pts.to_vec();
     let mut three = (n == 2).then(|| row.clone());
     let mut two = (n == 1).then(|| row.clone());
     for k in (1..=n).rev() {
@@ -260,11 +328,11 @@ fn curve_jet(pts: &[Vec<Int>], a: &Int, b: &Int) -> [Vec<Int>; 3] {
             two = Some(row[..2].to_vec());
         }
     }
-    let zero = vec![Int::zero(); pts[0].len()];
+    let zero = vec![T::Jet::zero(); pts[0].len()];
     let n = n as i128;
-    let d1 = two.map_or(zero.clone(), |l| lin(&[(&l[1], n), (&l[0], -n)]));
+    let d1 = two.map_or(zero.clone(), |l| lin::<T>(&[(&l[1], n), (&l[0], -n)]));
     let d2 = three.map_or(zero, |l| {
-        lin(&[
+        lin::<T>(&[
             (&l[2], n * (n - 1)),
             (&l[1], -2 * n * (n - 1)),
             (&l[0], n * (n - 1)),
@@ -277,21 +345,21 @@ fn curve_jet(pts: &[Vec<Int>], a: &Int, b: &Int) -> [Vec<Int>; 3] {
 /// 4-vectors (2D points padded with z = 0), each scaled by a positive power
 /// of `a + b` that depends only on its order of u-differentiation (so every
 /// identity checked is scaled by one positive factor per sample).
-fn patch_jet(net: &IntNet, a: &Int, b: &Int) -> [Vec<Int>; 6] {
-    let rows: Vec<[Vec<Int>; 3]> = net.cols.iter().map(|c| curve_jet(c, a, b)).collect();
-    let zero = vec![Int::zero(); rows[0][0].len()];
+fn patch_jet<T: SeamScalar>(net: &JetNet<T::Jet>, a: &T::Jet, b: &T::Jet) -> [Vec<T::Jet>; 6] {
+    let rows: Vec<[Vec<T::Jet>; 3]> = net.cols.iter().map(|c| curve_jet::<T>(c, a, b)).collect();
+    let zero = vec![T::Jet::zero(); rows[0][0].len()];
     let n = net.n as i128;
     let (hv, huv) = if n >= 1 {
         (
-            lin(&[(&rows[1][0], n), (&rows[0][0], -n)]),
-            lin(&[(&rows[1][1], n), (&rows[0][1], -n)]),
+            lin::<T>(&[(&rows[1][0], n), (&rows[0][0], -n)]),
+            lin::<T>(&[(&rows[1][1], n), (&rows[0][1], -n)]),
         )
     } else {
         (zero.clone(), zero.clone())
     };
     let hvv = if n >= 2 {
         let k = n * (n - 1);
-        lin(&[(&rows[2][0], k), (&rows[1][0], -2 * k), (&rows[0][0], k)])
+        lin::<T>(&[(&rows[2][0], k), (&rows[1][0], -2 * k), (&rows[0][0], k)])
     } else {
         zero
     };
@@ -300,30 +368,30 @@ fn patch_jet(net: &IntNet, a: &Int, b: &Int) -> [Vec<Int>; 6] {
 }
 
 /// `(x, y, w)` → `(x, y, 0, w)`; 3D points unchanged.
-fn pad(mut v: Vec<Int>) -> Vec<Int> {
+fn pad<R: Ring>(mut v: Vec<R>) -> Vec<R> {
     if v.len() == 3 {
-        v.insert(2, Int::zero());
+        v.insert(2, R::zero());
     }
     v
 }
 
-fn det3(a: [&Int; 3], b: [&Int; 3], c: [&Int; 3]) -> Int {
-    let m = |x: &Int, y: &Int| x.clone() * y;
+fn det3<R: Ring>(a: [&R; 3], b: [&R; 3], c: [&R; 3]) -> R {
+    let m = |x: &R, y: &R| x.clone() * y;
     m(a[0], &(m(b[1], c[2]) - m(b[2], c[1]))) - m(a[1], &(m(b[0], c[2]) - m(b[2], c[0])))
         + m(a[2], &(m(b[0], c[1]) - m(b[1], c[0])))
 }
 
-fn pick<'a>(v: &'a [Int], rows: &[usize]) -> [&'a Int; 3] {
+fn pick<'a, R>(v: &'a [R], rows: &[usize]) -> [&'a R; 3] {
     [&v[rows[0]], &v[rows[1]], &v[rows[2]]]
 }
 
 /// The covector `y ↦ det(a, b, c, y)` of three 4-vectors (cofactors).
-fn covector(a: &[Int], b: &[Int], c: &[Int]) -> Vec<Int> {
+fn covector<R: Ring>(a: &[R], b: &[R], c: &[R]) -> Vec<R> {
     (0..4).map(|k| det_unit(a, b, c, k)).collect()
 }
 
 /// `det(a, b, c, e_k)`: the `k`-th cofactor alone.
-fn det_unit(a: &[Int], b: &[Int], c: &[Int], k: usize) -> Int {
+fn det_unit<R: Ring>(a: &[R], b: &[R], c: &[R], k: usize) -> R {
     let rows: Vec<usize> = (0..4).filter(|&r| r != k).collect();
     let minor = det3(pick(a, &rows), pick(b, &rows), pick(c, &rows));
     if k % 2 == 1 {
@@ -333,37 +401,25 @@ fn det_unit(a: &[Int], b: &[Int], c: &[Int], k: usize) -> Int {
     }
 }
 
-fn dot(a: &[Int], b: &[Int]) -> Int {
+fn dot<R: Ring>(a: &[R], b: &[R]) -> R {
     a.iter()
         .zip(b)
-        .fold(Int::zero(), |s, (x, y)| s + &(x.clone() * y))
-}
-
-fn sign(x: &Int) -> std::cmp::Ordering {
-    x.to_bigint().sign().cmp(&num_bigint::Sign::NoSign)
-}
-
-/// The homogeneous parameter `(1 − t : t)` of a rational `t`, in integers.
-fn hom(t: &Q) -> (Int, Int) {
-    (
-        Int::from_bigint(t.denom() - t.numer()),
-        Int::from_bigint(t.numer().clone()),
-    )
+        .fold(R::zero(), |s, (x, y)| s + &(x.clone() * y))
 }
 
 /// One sample: a's and b's jets at `t` and `s = φ(t)`, and a's tangent covector.
-struct Sample {
-    t: Q,
-    s: Q,
-    ja: [Vec<Int>; 6],
-    jb: [Vec<Int>; 6],
-    nu: Vec<Int>,
+struct Sample<T: SeamScalar> {
+    t: T,
+    s: T,
+    ja: [Vec<T::Jet>; 6],
+    jb: [Vec<T::Jet>; 6],
+    nu: Vec<T::Jet>,
 }
 
-impl Sample {
-    fn new(a: &IntNet, b: &IntNet, t: Q, s: Q) -> Self {
-        let ((p, q), (r, u)) = (hom(&t), hom(&s));
-        let (ja, jb) = (patch_jet(a, &p, &q), patch_jet(b, &r, &u));
+impl<T: SeamScalar> Sample<T> {
+    fn new(a: &JetNet<T::Jet>, b: &JetNet<T::Jet>, t: T, s: T) -> Self {
+        let ((p, q), (r, u)) = (T::hom(&t), T::hom(&s));
+        let (ja, jb) = (patch_jet::<T>(a, &p, &q), patch_jet::<T>(b, &r, &u));
         let nu = covector(&ja[0], &ja[1], &ja[2]);
         Sample { t, s, ja, jb, nu }
     }
@@ -375,10 +431,10 @@ impl Sample {
 ///
 /// [`Error::Weight`] for non-positive weights; [`Error::Shape`] for points
 /// of dimension other than 2 or 3.
-pub fn seam_continuity(
-    a: &RectPatch<Q>,
+pub fn seam_continuity<T: SeamScalar>(
+    a: &RectPatch<T>,
     ea: Edge,
-    b: &RectPatch<Q>,
+    b: &RectPatch<T>,
     eb: Edge,
 ) -> Result<SeamVerdict, Error> {
     if !(2..=3).contains(&a.dim()) || a.dim() != b.dim() {
@@ -402,7 +458,7 @@ pub fn seam_continuity(
     };
     let (ta, tb) = (turn_to_v0(a, ea), turn_to_v0(b, eb));
     let (ma, mb) = (ta.degree().0, tb.degree().0);
-    let (na, nb) = (IntNet::new(&ta), IntNet::new(&tb));
+    let (na, nb) = (JetNet::new(&ta), JetNet::new(&tb));
     let verdict = |continuity, reason| SeamVerdict {
         continuity,
         reason,
@@ -411,12 +467,12 @@ pub fn seam_continuity(
     };
     let g1_samples = 3 * ma + mb + 1;
     let g2_samples = 9 * ma + 2 * mb + 1;
-    let sample_at = |k: usize| -> Result<Sample, Error> {
-        let t = Q::new((k as i64).into(), ((g2_samples + 1) as i64).into());
+    let sample_at = |k: usize| -> Result<Sample<T>, Error> {
+        let t = T::from_rational(&Q::new((k as i64).into(), ((g2_samples + 1) as i64).into()));
         let s = map.apply(&t)?;
         Ok(Sample::new(&na, &nb, t, s))
     };
-    let where_ = |x: &Sample| {
+    let where_ = |x: &Sample<T>| {
         let [u, v] = edge_point(ea, &x.t);
         let [p, q] = edge_point(eb, &x.s);
         format!("a at (u, v) = ({u}, {v}), b at ({p}, {q})")
@@ -436,7 +492,7 @@ pub fn seam_continuity(
             .any(|c| !c.is_zero());
         if let Some(kk) = x.nu.iter().position(|c| !c.is_zero()).filter(|_| regular_b) {
             let beta = det_unit(&x.ja[0], &x.ja[1], &x.jb[2], kk) * &x.nu[kk];
-            if sign(&beta).is_gt() {
+            if T::sign(&beta).is_gt() {
                 return Ok(verdict(
                     Some(Continuity::G0),
                     format!(
@@ -466,7 +522,7 @@ pub fn seam_continuity(
         let lhs = jb[0][3].clone() * &dot(nu, &jb[5]) * d * d;
         let rhs = ja[0][3].clone()
             * &(beta.clone() * &beta * &dot(nu, &ja[5])
-                + &(Int::from(2) * &beta * &gamma * &dot(nu, &ja[4]))
+                + &(T::small(2) * &beta * &gamma * &dot(nu, &ja[4]))
                 + &(gamma.clone() * &gamma * &dot(nu, &ja[3])));
         if lhs != rhs {
             let jump = if rhs.is_zero() {
@@ -474,7 +530,7 @@ pub fn seam_continuity(
             } else {
                 format!(
                     "b's normal curvature across the seam is {} times a's",
-                    Q::new(lhs.to_bigint(), rhs.to_bigint())
+                    T::ratio_text(&lhs, &rhs)
                 )
             };
             return Ok(verdict(

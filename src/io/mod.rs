@@ -38,7 +38,8 @@ pub use brep::{
     brep_model_json, brep_to_json, brep_to_lines, edge_to_json, face_to_json, PieceWriter,
 };
 pub use model::{
-    audit_to_json, is_step, origin_from_json, origin_to_json, piece_to_json, read_model,
+    audit_to_json, brep_audit_to_json, is_step, origin_from_json, origin_to_json, piece_to_json,
+    read_exact_model, read_model,
 };
 pub use nurbs::{is_nurbs, nurbs_to_json, read_nurbs};
 mod stream;

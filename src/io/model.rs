@@ -3,11 +3,12 @@
 //! from; [`piece_to_json`] and [`audit_to_json`] write them.
 
 use super::{
-    is_nurbs, number, parse_json, patch_from_value, patch_to_json, point_to_json, read_nurbs,
+    is_nurbs, number, parse_json, patch_from_value_as, patch_to_json, point_to_json, read_nurbs,
     JsonScalar,
 };
-use crate::algebra::Field;
-use crate::audit::{nurbs_pieces, Audit, Model, Origin, PatchEdge, Piece};
+use crate::algebra::{ExactNumber, Field, RealAlgebraic};
+use crate::audit::brep::{BrepAudit, EdgeClass, ToleranceSource};
+use crate::audit::{nurbs_pieces, Audit, ExactModel, Model, Origin, PatchEdge, Piece};
 use crate::error::Error;
 use crate::patch::Patch;
 use crate::step::read_step;
@@ -94,7 +95,10 @@ pub fn origin_from_json(v: &Value) -> Result<Origin, Error> {
 
 /// The pieces of one JSON object; `element(d)` is the origin element of
 /// its `d`-th NURBS (a geomdl file holds several).
-fn json_pieces(v: &Value, element: &dyn Fn(usize) -> usize) -> Result<Vec<Piece>, Error> {
+fn json_pieces<T: ExactNumber>(
+    v: &Value,
+    element: &dyn Fn(usize) -> usize,
+) -> Result<Vec<Piece<T>>, Error> {
     if is_nurbs(v) {
         let nurbs = read_nurbs(v)?;
         return Ok(nurbs
@@ -107,6 +111,10 @@ fn json_pieces(v: &Value, element: &dyn Fn(usize) -> usize) -> Result<Vec<Piece>
                 };
                 nurbs_pieces(n, base)
             })
+            .map(|p| Piece {
+                patch: p.patch.map(T::from_rational),
+                origin: p.origin,
+            })
             .collect());
     }
     let origin = match v.get("origin") {
@@ -117,7 +125,7 @@ fn json_pieces(v: &Value, element: &dyn Fn(usize) -> usize) -> Result<Vec<Piece>
         },
     };
     Ok(vec![Piece {
-        patch: patch_from_value(v)?,
+        patch: patch_from_value_as(v)?,
         origin,
     }])
 }
@@ -165,7 +173,8 @@ fn brep_pieces(v: &Value) -> Option<Vec<&Value>> {
 /// Read a model from a stream: STEP if it begins with `ISO-10303-21`,
 /// otherwise JSON (one object or an array, or a B-rep document or face
 /// that `convert --to bezier` writes: its surface pieces). STEP is read statement by
-/// statement; JSON is read whole.
+/// statement; JSON is read whole. Every number must be rational; see
+/// [`read_exact_model`] for pieces with algebraic numbers.
 ///
 /// # Errors
 ///
@@ -174,12 +183,49 @@ pub fn read_model(mut input: impl BufRead) -> Result<Model, Error> {
     if is_step(&mut input)? {
         return Ok(Model::from_step(read_step(input)?));
     }
+    json_model(&parse_json(&read_text(input)?)?)
+}
+
+/// [`read_model`], with pieces over the real algebraic numbers when some
+/// number of a JSON input is not rational (`"sqrt(2)/2"`, the grammar of
+/// docs/algebraic_numbers.md, as `convert --to bezier` writes analytic
+/// faces): what we write, we read.
+///
+/// # Errors
+///
+/// As [`read_model`]; a text neither reader accepts gets the rational
+/// reader's error.
+///
+/// ```
+/// use exact_bezier::{audit::ExactModel, io::read_exact_model};
+/// let text = r#"[{"kind": "curve", "points": [[0, 0], [1, "sqrt(2)"]]}]"#;
+/// let m = read_exact_model(text.as_bytes()).unwrap();
+/// assert!(matches!(m, ExactModel::Algebraic(m) if m.pieces.len() == 1));
+/// ```
+pub fn read_exact_model(mut input: impl BufRead) -> Result<ExactModel, Error> {
+    if is_step(&mut input)? {
+        return Ok(ExactModel::Rational(Model::from_step(read_step(input)?)));
+    }
+    let v = parse_json(&read_text(input)?)?;
+    match json_model(&v) {
+        Ok(m) => Ok(ExactModel::Rational(m)),
+        Err(rational) => json_model::<RealAlgebraic>(&v)
+            .map(ExactModel::Algebraic)
+            .map_err(|_| rational),
+    }
+}
+
+fn read_text(mut input: impl BufRead) -> Result<String, Error> {
     let mut text = String::new();
     input
         .read_to_string(&mut text)
         .map_err(|e| Error::Io(format!("cannot read the input: {e}")))?;
-    let v = parse_json(&text)?;
-    if let Some(pieces) = brep_pieces(&v) {
+    Ok(text)
+}
+
+/// The model of a JSON value (see [`read_model`]).
+fn json_model<T: ExactNumber>(v: &Value) -> Result<Model<T>, Error> {
+    if let Some(pieces) = brep_pieces(v) {
         let pieces = pieces
             .into_iter()
             .enumerate()
@@ -192,7 +238,7 @@ pub fn read_model(mut input: impl BufRead) -> Result<Model, Error> {
             ..Model::default()
         });
     }
-    let pieces = match &v {
+    let pieces = match v {
         Value::Array(items) => {
             let mut out = Vec::new();
             for (k, item) in items.iter().enumerate() {
@@ -203,7 +249,7 @@ pub fn read_model(mut input: impl BufRead) -> Result<Model, Error> {
             }
             out
         }
-        _ => json_pieces(&v, &|d| d)?,
+        _ => json_pieces(v, &|d| d)?,
     };
     Ok(Model {
         pieces,
@@ -226,7 +272,7 @@ pub fn piece_to_json<T: JsonScalar + Field>(p: &Patch<T>, origin: &Origin) -> Re
 }
 
 /// The audit as JSON, with each patch's origin from `model`.
-pub fn audit_to_json(audit: &Audit, model: &Model) -> Value {
+pub fn audit_to_json<T: JsonScalar>(audit: &Audit<T>, model: &Model<T>) -> Value {
     let pe = |e: &PatchEdge| json!({"patch": e.patch, "edge": e.edge.to_string(), "origin": origin_to_json(&model.pieces[e.patch].origin)});
     let seams: Vec<Value> = audit
         .seams
@@ -264,9 +310,52 @@ pub fn audit_to_json(audit: &Audit, model: &Model) -> Value {
     })
 }
 
+/// The B-rep audit as JSON: `summary`, `faces`, `edges` (counts by
+/// class), `continuity`, `tolerance`; with `full`, also `edge_list` (every
+/// edge with its curve type, faces and class) and what was not converted.
+pub fn brep_audit_to_json(a: &BrepAudit, full: bool) -> Value {
+    let mut edges = serde_json::Map::new();
+    edges.insert("total".into(), json!(a.edges.len()));
+    for c in EdgeClass::ALL {
+        edges.insert(c.name().into(), json!(a.count(c)));
+    }
+    let t = &a.tolerance;
+    let source = match t.source {
+        ToleranceSource::Given => "--tol",
+        ToleranceSource::Declared => "UNCERTAINTY_MEASURE_WITH_UNIT",
+        ToleranceSource::None => "none",
+    };
+    let mut v = json!({
+        "summary": a.summary(),
+        "faces": {"total": a.faces(), "by_surface": a.faces_by_surface},
+        "edges": edges,
+        "continuity": {"G2": 0, "G1": 0, "G0": 0, "fails": 0, "undecided": 0, "exact": 0,
+                       "not_measured": a.count(EdgeClass::Shared)},
+        "tolerance": {"length": t.length.as_ref().map(BigRational::to_json), "unit": t.unit,
+                      "angle": t.angle.to_json(), "source": source},
+    });
+    if full {
+        v["edge_list"] = a
+            .edges
+            .iter()
+            .map(|e| {
+                json!({
+                    "id": format!("#{}", e.id),
+                    "curve": e.curve,
+                    "faces": e.faces.iter().map(|f| format!("#{f}")).collect::<Vec<_>>(),
+                    "class": e.class.name(),
+                })
+            })
+            .collect();
+        v["not_converted"] = json!(a.not_converted);
+        v["invalid_entities"] = json!(a.invalid);
+    }
+    v
+}
+
 /// Pieces that come from one source surface (one STEP entity or one NURBS
 /// object), and STEP faces that share one surface entity.
-fn same_surface(model: &Model) -> Vec<Value> {
+fn same_surface<T>(model: &Model<T>) -> Vec<Value> {
     let mut by_source: BTreeMap<(Option<u64>, Option<usize>), Vec<usize>> = BTreeMap::new();
     for (k, p) in model.pieces.iter().enumerate() {
         let src = p.origin.source();
@@ -293,6 +382,7 @@ fn same_surface(model: &Model) -> Vec<Value> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::algebra::Scalar;
     use crate::{ratio, RationalCurve, RectPatch, TriPatch};
     use proptest::collection::vec;
     use proptest::prelude::*;
@@ -363,6 +453,32 @@ mod tests {
             let patches = crate::io::read_patches(&text).unwrap();
             let want: Vec<Patch<BigRational>> = pieces.into_iter().map(|(p, _)| p).collect();
             prop_assert_eq!(patches, want);
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(16))]
+        /// Pieces with algebraic numbers (every homogeneous coordinate `x`
+        /// of a rational piece made `x + √2·x²`, so weights stay positive
+        /// and are irrational) are read back exactly, as an algebraic model.
+        #[test]
+        fn written_algebraic_pieces_read_back(pieces in vec((patch(), origin()), 1..3)) {
+            let r2: RealAlgebraic = "sqrt(2)".parse().unwrap();
+            let lift = |x: &BigRational| {
+                let a = RealAlgebraic::from_rational(x);
+                a.clone() + &(r2.clone() * &a * &a)
+            };
+            let pieces: Vec<(Patch<RealAlgebraic>, Origin)> =
+                pieces.iter().map(|(p, o)| (p.map(lift), o.clone())).collect();
+            let json: Vec<Value> = pieces.iter().map(|(p, o)| piece_to_json(p, o).unwrap()).collect();
+            let text = Value::Array(json).to_string();
+            prop_assert!(read_model(text.as_bytes()).is_err());
+            let ExactModel::Algebraic(model) = read_exact_model(text.as_bytes()).unwrap() else {
+                panic!("an irrational weight read as rational");
+            };
+            let back: Vec<(Patch<RealAlgebraic>, Origin)> =
+                model.pieces.into_iter().map(|p| (p.patch, p.origin)).collect();
+            prop_assert_eq!(&back, &pieces);
         }
     }
 

@@ -201,6 +201,11 @@ fn command_outputs_match_the_schema() {
         &output(&["audit", teapot, "--summary"]),
     );
     assert_valid(
+        "brepAuditSummary",
+        "audit STEP B-rep",
+        &output(&["audit", "tests/fixtures/step/screw.step", "--summary"]),
+    );
+    assert_valid(
         "patches",
         "convert --to bezier",
         &output(&["convert", "tests/fixtures/cylinder.json", "--to", "bezier"]),
