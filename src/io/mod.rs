@@ -41,7 +41,9 @@ pub use model::{
     audit_to_json, is_step, origin_from_json, origin_to_json, piece_to_json, read_model,
 };
 pub use nurbs::{is_nurbs, nurbs_to_json, read_nurbs};
+mod fast;
 mod stream;
+pub use fast::read_small_patch;
 pub use stream::{for_each_chunk, Record};
 
 use crate::patch::Patch;
