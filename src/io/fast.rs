@@ -217,7 +217,7 @@ impl Cursor<'_> {
         let start = self.at;
         let digits = self.digits();
         let text = &self.bytes[start..self.at];
-        let canonical = digits >= 1 && digits <= 6 && (digits == 1 || text[0] != b'0');
+        let canonical = (1..=6).contains(&digits) && (digits == 1 || text[0] != b'0');
         canonical.then(|| text.iter().fold(0, |n, d| 10 * n + usize::from(d - b'0')))
     }
 
@@ -297,7 +297,10 @@ impl Cursor<'_> {
         } else {
             (p, q)
         };
-        let digits = self.bytes[start..self.at].iter().filter(|b| b.is_ascii_digit()).count();
+        let digits = self.bytes[start..self.at]
+            .iter()
+            .filter(|b| b.is_ascii_digit())
+            .count();
         if digits as u64 > self.max_digits {
             return None;
         }
@@ -333,10 +336,217 @@ impl Cursor<'_> {
             }
         }
         let mut mantissa: i128 = 0;
-        for &d in self.bytes[start..self.at].iter().filter(|b| b.is_ascii_digit()) {
-            mantissa = mantissa.checked_mul(10)?.checked_add(i128::from(d - b'0'))?;
+        for &d in self.bytes[start..self.at]
+            .iter()
+            .filter(|b| b.is_ascii_digit())
+        {
+            mantissa = mantissa
+                .checked_mul(10)?
+                .checked_add(i128::from(d - b'0'))?;
         }
         let scale = 10i128.checked_pow(u32::try_from(frac).ok()?)?;
         Some((if negative { -mantissa } else { mantissa }, scale))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::coincide::canonical::canonical_text;
+    use crate::io::{parse_json, patch_from_value};
+    use crate::limits::{with_limits, Limits};
+    use proptest::prelude::*;
+
+    /// The general reader's patch of `line`.
+    fn general(line: &str) -> Result<crate::Patch<num_rational::BigRational>, crate::Error> {
+        parse_json(line).and_then(|v| patch_from_value(&v))
+    }
+
+    /// Whatever the fast reader accepts, the general reader reads as the
+    /// same patch, and the fast key text is the general one.
+    fn agrees(line: &str) -> bool {
+        let Some(mut fast) = read_small_patch(line) else {
+            return false;
+        };
+        let want = general(line).unwrap_or_else(|e| panic!("{line}: fast accepts, general: {e}"));
+        assert_eq!(fast.to_patch().unwrap(), want, "{line}");
+        fast.certify();
+        assert_eq!(
+            fast.key_text().unwrap(),
+            canonical_text(&want).unwrap(),
+            "{line}"
+        );
+        true
+    }
+
+    /// A number written in form `form` from `a`, `b` (`b ≥ 1`); whether
+    /// the fast reader should take it.
+    fn number(form: u8, a: i64, b: i64) -> (String, bool) {
+        match form % 8 {
+            0 => (a.to_string(), true),
+            1 => (format!("\"{a}/{b}\""), true),
+            2 => (format!("{a}.{:03}", b % 1000), true),
+            3 => (format!("\"{a}.{b}\""), true),
+            4 => (format!("\"{a}.5/{b}.25\""), true),
+            5 => (format!("\"{}\"", b), true),
+            6 => (format!("{a}e2"), false),
+            _ => (format!("\"{a}{:040}\"", b), false),
+        }
+    }
+
+    /// A curve or rect record with numbers in the given forms, fields in
+    /// a rotated order, with or without degree and weights.
+    fn record(
+        rect: bool,
+        (m, n, dim): (usize, usize, usize),
+        forms: &[(u8, i64, i64)],
+        rotate: usize,
+        with_degree: bool,
+        with_weights: bool,
+    ) -> (String, bool) {
+        let mut it = forms.iter().cycle();
+        // Whether the points, and the weights, are all of plain forms.
+        let mut plain = [true, true];
+        let mut num = |weight: bool| {
+            let &(f, a, b) = it.next().unwrap();
+            let a = if weight { a.abs() + 1 } else { a };
+            let (text, ok) = number(f, a, b);
+            plain[usize::from(weight)] &= ok;
+            text
+        };
+        let point = |num: &mut dyn FnMut(bool) -> String| {
+            format!(
+                "[{}]",
+                (0..dim).map(|_| num(false)).collect::<Vec<_>>().join(", ")
+            )
+        };
+        let list = |items: Vec<String>| format!("[{}]", items.join(","));
+        let (points, weights, degree) = if rect {
+            let pts = (0..=m)
+                .map(|_| list((0..=n).map(|_| point(&mut num)).collect()))
+                .collect();
+            let ws = (0..=m)
+                .map(|_| list((0..=n).map(|_| num(true)).collect()))
+                .collect();
+            (list(pts), list(ws), format!("[{m}, {n}]"))
+        } else {
+            let pts = (0..=m).map(|_| point(&mut num)).collect();
+            let ws = (0..=m).map(|_| num(true)).collect();
+            (list(pts), list(ws), m.to_string())
+        };
+        let plain = plain[0] && (plain[1] || !with_weights);
+        let kind = if rect { "rect" } else { "curve" };
+        let mut fields = vec![
+            format!("\"kind\": \"{kind}\""),
+            format!("\"points\":{points}"),
+        ];
+        if with_degree {
+            fields.push(format!("\"degree\" : {degree}"));
+        }
+        if with_weights {
+            fields.push(format!("\"weights\": {weights}"));
+        }
+        let k = rotate % fields.len();
+        fields.rotate_left(k);
+        (format!(" {{{}}}\n", fields.join(", ")), plain)
+    }
+
+    fn records() -> impl Strategy<Value = (String, bool)> {
+        (
+            any::<bool>(),
+            (0usize..4, 0usize..4, 1usize..4),
+            prop::collection::vec((0u8..8, -60i64..60, 1i64..40), 1..12),
+            0usize..4,
+            any::<bool>(),
+            any::<bool>(),
+        )
+            .prop_map(|(rect, shape, forms, rotate, d, w)| {
+                let shape = if rect { shape } else { (shape.0, 0, shape.2) };
+                record(rect, shape, &forms, rotate, d, w)
+            })
+    }
+
+    proptest! {
+        #[test]
+        fn plain_records_are_read_as_the_general_reader_reads_them((line, plain) in records()) {
+            prop_assert_eq!(agrees(&line), plain, "{}", line);
+        }
+
+        #[test]
+        fn a_damaged_record_is_refused_or_read_as_the_general_reader_reads_it(
+            (line, _) in records(),
+            at in any::<prop::sample::Index>(),
+            edit in 0usize..20,
+        ) {
+            const BYTES: &[u8] = b"[]{},:\"-./0159e x\\";
+            let mut bytes = line.into_bytes();
+            let k = at.index(bytes.len());
+            match BYTES.get(edit) {
+                Some(&b) => bytes[k] = b,
+                None => {
+                    bytes.remove(k);
+                }
+            }
+            if let Ok(line) = String::from_utf8(bytes) {
+                agrees(&line);
+            }
+        }
+    }
+
+    #[test]
+    fn the_corpus_patches_are_keyed_as_by_the_general_path() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures");
+        let mut fast = 0;
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().is_none_or(|e| e != "json") {
+                continue;
+            }
+            let v: serde_json::Value =
+                serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+            let items = match v {
+                serde_json::Value::Array(items) => items,
+                v => vec![v],
+            };
+            for item in items {
+                let line = item.to_string();
+                if general(&line).is_ok() && agrees(&line) {
+                    fast += 1;
+                }
+            }
+        }
+        // The teapot's 32 patches alone are of the plain shape.
+        assert!(fast >= 32, "{fast}");
+    }
+
+    #[test]
+    fn unusual_records_go_to_the_general_reader() {
+        let ok = r#"{"kind": "curve", "points": [[0], [1]]}"#;
+        assert!(agrees(ok));
+        for line in [
+            r#"{"kind": "curve", "points": [[0], [1]], "origin": {}}"#,
+            r#"{"kind": "curve", "points": [[0], [1]], "kind": "curve"}"#,
+            r#"{"kind": "cur\u0076e", "points": [[0], [1]]}"#,
+            r#"{"kind": "tri", "points": [[[0], [1]], [[2]]]}"#,
+            r#"{"kind": "curve", "points": [[0], [1e0]]}"#,
+            r#"{"kind": "curve", "points": [[0], ["+1"]]}"#,
+            r#"{"kind": "curve", "points": [[0], [" 1"]]}"#,
+            r#"{"kind": "curve", "points": [[0], ["1/-3"]]}"#,
+            r#"{"kind": "curve", "points": [[0], [01]]}"#,
+            r#"{"kind": "curve", "points": [[0], [1]], "weights": [1, 0]}"#,
+            r#"{"kind": "curve", "points": [[0], [1]], "degree": 1.0}"#,
+            r#"{"kind": "curve", "points": [[0], [1, 2]]}"#,
+            r#"{"kind": "curve", "points": [[0], [1]]} x"#,
+            r#"{"kind": "curve", "points": [[0], [170141183460469231731687303715884105728]]}"#,
+        ] {
+            assert!(read_small_patch(line).is_none(), "{line}");
+        }
+        let few_digits = Limits {
+            max_digits: 3,
+            ..Limits::default()
+        };
+        let long = r#"{"kind": "curve", "points": [[0], ["1/1000"]]}"#;
+        assert!(read_small_patch(long).is_some());
+        assert!(with_limits(few_digits, || read_small_patch(long)).is_none());
     }
 }
