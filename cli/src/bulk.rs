@@ -3,7 +3,7 @@
 
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::algebra::Scalar;
-use exact_bezier::coincide::canonical::{key_plan, KeyDigest, KeyPlan};
+use exact_bezier::coincide::canonical::{key_plan, KeyDigest, KeyPlan, SmallPatch};
 use exact_bezier::io::Record;
 use exact_bezier::limits::{self, Size};
 use exact_bezier::patch::Patch;
@@ -85,6 +85,10 @@ impl BulkArgs {
 /// The patch of one record: over Q when its numbers are all rational (and
 /// for NURBS objects), else over the real algebraic numbers.
 pub(crate) enum Member {
+    /// A line of the plain shape read by the fast reader, its net
+    /// certified minimal ([`SmallPatch::certify`]): keyed in machine
+    /// integers.
+    Small(SmallPatch),
     /// Every number rational.
     Rational(Patch<BigRational>),
     /// Some number algebraic and irrational (`"sqrt(6)/6"`).
@@ -102,11 +106,22 @@ impl Member {
     }
 
     /// The patch over the real algebraic numbers (a rational one lifted).
-    pub(crate) fn algebraic(&self) -> Patch<RealAlgebraic> {
-        match self {
+    pub(crate) fn algebraic(&self) -> Result<Patch<RealAlgebraic>, Error> {
+        Ok(match self {
+            Member::Small(s) => s.to_patch()?.map(RealAlgebraic::from_rational),
             Member::Rational(p) => p.map(RealAlgebraic::from_rational),
             Member::Algebraic(p) => p.clone(),
-        }
+        })
+    }
+
+    /// The patch and key work of `r` by the fast reader when it is a line
+    /// of the plain shape whose net is certified minimal (then the work is
+    /// that [`key_work`] charges the same patch read by [`Member::read`]).
+    fn read_fast(r: &Record) -> Option<(Member, u64)> {
+        let mut s = r.small_patch()?;
+        let size = s.size()?;
+        s.certify()
+            .then(|| (Member::Small(s), minimal_key_work(&size)))
     }
 }
 
@@ -136,6 +151,7 @@ pub(crate) fn key_work(p: &Member) -> Result<u64, Error> {
         s.exact_units(ops, bits)
     };
     Ok(match p {
+        Member::Small(s) => key_work(&Member::Rational(s.to_patch()?))?,
         Member::Algebraic(p) => coincide(&p.size()),
         Member::Rational(q) => {
             let size = q.size();
@@ -207,6 +223,9 @@ pub(crate) fn key_chunk<K: Clone + Send + Sync>(
         .par_iter()
         .map(|&k| {
             let r = &records[k];
+            if let Some(fast) = Member::read_fast(r) {
+                return Ok(fast);
+            }
             let p = Member::read(r)?;
             let work = key_work(&p).map_err(|e| r.locate(e))?;
             Ok((p, work))

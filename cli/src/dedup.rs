@@ -74,6 +74,7 @@ impl Witnesses {
             let p = p?;
             if d.representative(id) != first + k {
                 let s = match &p {
+                    Member::Small(q) => q.to_patch()?.size(),
                     Member::Rational(q) => q.size(),
                     Member::Algebraic(q) => q.size(),
                 };
@@ -101,8 +102,8 @@ impl Witnesses {
                         summary(coincide(a, p, Options::default())?)
                     }
                     (a, p) => summary(coincide(
-                        &a.algebraic(),
-                        &p.algebraic(),
+                        &a.algebraic()?,
+                        &p.algebraic()?,
                         Options::default(),
                     )?),
                 };
@@ -144,6 +145,7 @@ fn dedup(a: &Args) -> Result<(), Error> {
     for_each_chunk(reader, CHUNK, |first, records| {
         let keyed = key_chunk("dedup", first, &records, &mut cache, |p| {
             Ok(match &p {
+                Member::Small(s) => Keyed::Digest(KeyDigest::of_text(&s.key_text()?)),
                 Member::Rational(q) => Keyed::Digest(key_digest(q)?),
                 Member::Algebraic(q) => Keyed::Algebraic(canonical_key(q)?),
             })

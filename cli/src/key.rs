@@ -37,6 +37,7 @@ pub fn run(a: &Args) -> Result<(), Error> {
 /// `dedup`, which compares such keys exactly).
 fn member_text(p: &Member) -> Result<String, Error> {
     match p {
+        Member::Small(s) => s.key_text(),
         Member::Rational(p) => canonical_text(p),
         Member::Algebraic(p) => algebraic_text(p),
     }

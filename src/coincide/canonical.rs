@@ -37,6 +37,7 @@ use std::fmt::{self, Write as _};
 use std::hash::{BuildHasherDefault, Hasher};
 
 mod small;
+pub use small::SmallPatch;
 
 /// The canonical key of a curve's or rect patch's coincidence class.
 ///

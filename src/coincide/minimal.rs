@@ -253,7 +253,7 @@ impl Reducible for BigRational {
     /// coefficient that is zero over Q is zero modulo p, so this degree is
     /// at most the actual one.
     fn degree_lower_bound(net: &Net<Self>) -> Option<(usize, usize)> {
-        power_components_mod_p(net).map(|comps| actual_degree(&comps, |a, _| a.is_zero()))
+        net_mod_p(net).map(|image| actual_degree(&power_components(&image), |a, _| a.is_zero()))
     }
 }
 
@@ -381,18 +381,21 @@ const PROBE_V: u64 = 0x1B87_3593_9E37_79B9 % crate::algebra::modp::MODULUS;
 /// gcd of 1 over F_p excludes such `g`. (3) The same with `u = u₀` excludes a
 /// factor with `deg_v g ≥ 1`; what is left is a constant.
 pub(crate) fn certified_minimal(net: &Net<BigRational>) -> bool {
-    let Some(comps) = power_components_mod_p(net) else {
-        return false;
-    };
-    let (m, n) = (net.len() - 1, net[0].len() - 1);
+    net_mod_p(net).is_some_and(|image| certified_image(&image))
+}
+
+/// The certificate of [`certified_minimal`] on the image modulo `p` of a
+/// net over Q (every denominator invertible modulo `p`).
+pub(crate) fn certified_image(image: &Net<Fp>) -> bool {
+    let comps = power_components(image);
+    let (m, n) = (image.len() - 1, image[0].len() - 1);
     actual_degree(&comps, |a, _| a.is_zero()) == (m, n) && coprime_fp(&comps, (m, n))
 }
 
-/// The power-basis grids of the components of `net` modulo `p`; `None`
-/// when a denominator is divisible by `p`.
-fn power_components_mod_p(net: &Net<BigRational>) -> Option<Vec<Vec<Vec<Fp>>>> {
-    let image: Option<Net<Fp>> = net
-        .iter()
+/// The image of `net` modulo `p`; `None` when a denominator is divisible
+/// by `p`.
+fn net_mod_p(net: &Net<BigRational>) -> Option<Net<Fp>> {
+    net.iter()
         .map(|row| {
             row.iter()
                 .map(|h| {
@@ -402,8 +405,7 @@ fn power_components_mod_p(net: &Net<BigRational>) -> Option<Vec<Vec<Vec<Fp>>>> {
                 })
                 .collect()
         })
-        .collect();
-    image.map(|image| power_components(&image))
+        .collect()
 }
 
 /// The net of bidegree `(k, l)` whose degree elevation is `net`, or `None`

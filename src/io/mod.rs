@@ -42,7 +42,9 @@ pub use model::{
     read_exact_model, read_model,
 };
 pub use nurbs::{is_nurbs, nurbs_to_json, read_nurbs};
+mod fast;
 mod stream;
+pub use fast::read_small_patch;
 pub use stream::{for_each_chunk, Record};
 
 use crate::patch::Patch;

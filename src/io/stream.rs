@@ -10,8 +10,9 @@
 //! caller, in parallel, with [`patch_from_value`](crate::io::patch_from_value).
 
 use crate::algebra::ExactNumber;
+use crate::coincide::canonical::SmallPatch;
 use crate::error::Error;
-use crate::io::{parse_json, patch_from_value, patch_from_value_as};
+use crate::io::{parse_json, patch_from_value, patch_from_value_as, read_small_patch};
 use crate::patch::Patch;
 use num_rational::BigRational;
 use serde::de::{DeserializeSeed, Error as _, SeqAccess, Visitor};
@@ -55,6 +56,16 @@ impl Record {
             Record::Element(_, v) => patch_from_value_as(v),
         };
         parsed.map_err(|e| self.locate(e))
+    }
+
+    /// The patch of this record by the fast reader
+    /// ([`read_small_patch`](crate::io::read_small_patch)) when it is a
+    /// line of the plain shape; `None` sends it to [`patch`](Record::patch).
+    pub fn small_patch(&self) -> Option<SmallPatch> {
+        match self {
+            Record::Line(_, text) => read_small_patch(text),
+            Record::Element(..) => None,
+        }
     }
 
     /// `e` prefixed with where this record is (`line 7: …`, `element 6: …`).

@@ -193,6 +193,47 @@ fn keys_of_shards_in_separate_processes_group_into_the_dedup_classes() {
     std::fs::remove_file(&whole).unwrap();
 }
 
+/// JSON Lines of the plain shape take the fast reader, the same records as
+/// one JSON array the general one: byte-identical keys and key texts, and
+/// under `--max-work` the same refusal at the same record (both charge
+/// each record the same work).
+#[test]
+fn the_fast_and_the_general_reader_give_the_same_keys_and_refusals() {
+    let (patches, _) = planted(24, 40);
+    let lines = lines_of(&patches);
+    let jsonl = temp("fast.jsonl");
+    std::fs::write(&jsonl, lines.join("\n") + "\n").unwrap();
+    let array = temp("general.json");
+    std::fs::write(&array, format!("[{}]", lines.join(",\n"))).unwrap();
+    let (fast, general) = (jsonl.to_str().unwrap(), array.to_str().unwrap());
+    let both = |args: &[&str]| {
+        let run = |file: &str| {
+            let mut all = vec![args[0], file];
+            all.extend(&args[1..]);
+            run_with_threads(&all, "2")
+        };
+        (run(fast), run(general))
+    };
+    let (a, b) = both(&["key", "--text"]);
+    assert_eq!(a.0, 0, "{}", a.2);
+    assert_eq!(a, b);
+    let (a, b) = both(&["dedup"]);
+    assert_eq!(a.0, 0, "{}", a.2);
+    assert_eq!(a, b);
+    let mut outcomes = Vec::new();
+    for budget in ["100000", "1000000", "10000000", "100000000"] {
+        let (a, b) = both(&["key", "--max-work", budget]);
+        assert_eq!(a, b, "--max-work {budget}");
+        outcomes.push(a.0);
+    }
+    assert!(
+        outcomes.contains(&0) && outcomes.contains(&2),
+        "{outcomes:?}"
+    );
+    std::fs::remove_file(&jsonl).unwrap();
+    std::fs::remove_file(&array).unwrap();
+}
+
 #[test]
 fn key_text_is_hashed_into_the_key() {
     use sha2::{Digest, Sha256};

@@ -10,10 +10,17 @@
 //! two single-word gcds of its cross terms (`(a/b)(c/d) = (a/g₁)(c/g₂) /
 //! ((b/g₂)(d/g₁))` with `g₁ = gcd(a, d)`, `g₂ = gcd(c, b)`).
 
-use crate::coincide::minimal::Net;
+use crate::algebra::modp::{Fp, MODULUS};
+use crate::coincide::minimal::{certified_image, Net};
 use crate::coincide::Symmetry;
+use crate::curve::RationalCurve;
+use crate::error::Error;
+use crate::hpoint::HPoint;
+use crate::limits::Size;
+use crate::rect::RectPatch;
+use crate::Patch;
 use num_rational::BigRational;
-use num_traits::ToPrimitive;
+use num_traits::{ToPrimitive, Zero};
 use std::cmp::Ordering;
 
 /// A rational `p/q` in lowest terms with `q > 0`, in machine integers.
@@ -23,10 +30,14 @@ struct Small {
     q: i128,
 }
 
-/// Binary gcd of machine words (`gcd(0, b) = b`).
+/// Binary gcd of machine words (`gcd(0, b) = b`), on 64-bit words when
+/// both fit (the common case, several times faster).
 fn gcd(mut a: u128, mut b: u128) -> u128 {
     if a == 0 || b == 0 {
         return a | b;
+    }
+    if let (Ok(a), Ok(b)) = (u64::try_from(a), u64::try_from(b)) {
+        return u128::from(gcd64(a, b));
     }
     let shift = (a | b).trailing_zeros();
     a >>= a.trailing_zeros();
@@ -42,8 +53,45 @@ fn gcd(mut a: u128, mut b: u128) -> u128 {
     }
 }
 
+/// [`gcd`] of non-zero 64-bit words.
+fn gcd64(mut a: u64, mut b: u64) -> u64 {
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
+
+/// `a / g` for a divisor `g > 0` of `a`, on 64-bit words when `a` fits.
+fn div_exact(a: i128, g: i128) -> i128 {
+    match (g, i64::try_from(a), i64::try_from(g)) {
+        (1, _, _) => a,
+        (_, Ok(a), Ok(g)) => i128::from(a / g),
+        _ => a / g,
+    }
+}
+
 impl Small {
     const ONE: Small = Small { p: 1, q: 1 };
+
+    /// `p/q` in lowest terms, for `q > 0`.
+    fn reduced((p, q): (i128, i128)) -> Option<Small> {
+        if q <= 0 {
+            return None;
+        }
+        let g = gcd(p.unsigned_abs(), q.unsigned_abs()) as i128;
+        Some(Small {
+            p: div_exact(p, g),
+            q: div_exact(q, g),
+        })
+    }
 
     fn of(x: &BigRational) -> Option<Small> {
         Some(Small {
@@ -57,8 +105,8 @@ impl Small {
         let g1 = gcd(self.p.unsigned_abs(), o.q.unsigned_abs()) as i128;
         let g2 = gcd(o.p.unsigned_abs(), self.q.unsigned_abs()) as i128;
         Some(Small {
-            p: (self.p / g1).checked_mul(o.p / g2)?,
-            q: (self.q / g2).checked_mul(o.q / g1)?,
+            p: div_exact(self.p, g1).checked_mul(div_exact(o.p, g2))?,
+            q: div_exact(self.q, g2).checked_mul(div_exact(o.q, g1))?,
         })
     }
 
@@ -172,7 +220,12 @@ fn positions((m, n): (usize, usize)) -> impl Iterator<Item = (usize, usize)> {
 /// The key text of a net with positive weights that is already of minimal
 /// (bi)degree, or `None` when a number leaves `i128`.
 pub(super) fn key_text(net: &Net<BigRational>, curve: bool) -> Option<String> {
-    let s = Split::new(net)?;
+    split_key_text(&Split::new(net)?, curve)
+}
+
+/// The key text of a split net already of minimal (bi)degree, or `None`
+/// when a number leaves `i128`.
+fn split_key_text(s: &Split, curve: bool) -> Option<String> {
     let target = if curve {
         (s.m, s.n)
     } else {
@@ -202,7 +255,7 @@ pub(super) fn key_text(net: &Net<BigRational>, curve: bool) -> Option<String> {
         }
     }
     let (sym, inv) = chosen?;
-    Some(text(curve, target, &s, sym, &inv))
+    Some(text(curve, target, s, sym, &inv))
 }
 
 /// The text of [`CanonicalKey::text`](super::CanonicalKey::text) from the chosen view.
@@ -228,4 +281,209 @@ fn text(curve: bool, dims: (usize, usize), s: &Split, sym: Symmetry, inv: &[Smal
         x.write(&mut out);
     }
     out
+}
+
+/// `v` (row-major) as rows of `cols` entries.
+fn rows<T: Clone>(v: &[T], cols: usize) -> Vec<Vec<T>> {
+    v.chunks(cols).map(<[T]>::to_vec).collect()
+}
+
+/// `x mod p` for a machine fraction, or `None` when `p` divides its
+/// denominator (`p = 2⁶¹ − 1`, as [`Fp::from_rational_checked`]).
+fn mod_p(x: Small) -> Option<Fp> {
+    let reduce = |v: i128| {
+        let r = Fp::new((v.unsigned_abs() % u128::from(MODULUS)) as u64);
+        if v < 0 {
+            -r
+        } else {
+            r
+        }
+    };
+    let q = reduce(x.q);
+    (!q.is_zero()).then(|| reduce(x.p) / q)
+}
+
+/// Bits of a machine fraction as [`limits::bits`](crate::limits::bits)
+/// counts them: the numerator's and the denominator's bit lengths.
+fn bit_len(x: Small) -> u64 {
+    let len = |v: u128| u64::from(128 - v.leading_zeros());
+    len(x.p.unsigned_abs()) + len(x.q.unsigned_abs())
+}
+
+/// A curve or rect patch over Q whose numbers are machine fractions: what
+/// the bulk commands read straight from a JSON line
+/// ([`io::read_small_patch`](crate::io::read_small_patch)), keyed without a
+/// `BigRational` when its net is certified minimal (the common case).
+///
+/// It is the same patch as [`to_patch`](SmallPatch::to_patch), and
+/// [`key_text`](SmallPatch::key_text) is the same text as
+/// [`canonical_text`](super::canonical_text) of that patch.
+///
+/// ```
+/// use exact_bezier::coincide::canonical::{canonical_text, SmallPatch};
+/// // The curve (0) (1/2) (3) with weights 1, 2, 1.
+/// let mut c = SmallPatch::new(true, (2, 0), 1, &[(0, 1), (1, 2), (3, 1)], &[(1, 1), (2, 1), (1, 1)]).unwrap();
+/// assert!(c.certify());
+/// assert_eq!(c.key_text().unwrap(), canonical_text(&c.to_patch().unwrap()).unwrap());
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SmallPatch {
+    curve: bool,
+    shape: (usize, usize),
+    dim: usize,
+    /// Cartesian coordinates, row-major, `dim` per point.
+    coords: Vec<Small>,
+    /// Weights, row-major.
+    weights: Vec<Small>,
+    /// Whether [`certify`](SmallPatch::certify) proved the net minimal.
+    certified: bool,
+}
+
+impl SmallPatch {
+    /// The curve (`curve`, `shape = (n, 0)`: `n + 1` points) or rect patch
+    /// of bidegree `shape` in dimension `dim`, from its Cartesian
+    /// coordinates (row-major, `dim` per point) and weights, each `(p, q)`
+    /// standing for `p/q`. `None` unless every `q > 0`, every weight is
+    /// positive, `dim ≥ 1` and the counts fit the shape.
+    pub fn new(
+        curve: bool,
+        shape: (usize, usize),
+        dim: usize,
+        coords: &[(i128, i128)],
+        weights: &[(i128, i128)],
+    ) -> Option<SmallPatch> {
+        let count = (shape.0 + 1) * (shape.1 + 1);
+        let fits = dim >= 1
+            && (!curve || shape.1 == 0)
+            && weights.len() == count
+            && coords.len() == count * dim;
+        if !fits {
+            return None;
+        }
+        let coords = coords
+            .iter()
+            .map(|&x| Small::reduced(x))
+            .collect::<Option<Vec<_>>>()?;
+        let weights = weights
+            .iter()
+            .map(|&w| Small::reduced(w).filter(|w| w.p > 0))
+            .collect::<Option<Vec<_>>>()?;
+        Some(SmallPatch {
+            curve,
+            shape,
+            dim,
+            coords,
+            weights,
+            certified: false,
+        })
+    }
+
+    /// The size the cost model charges ([`Patch::size`](crate::Patch::size)
+    /// of [`to_patch`](SmallPatch::to_patch)); `None` when a homogeneous
+    /// number leaves `i128`.
+    pub fn size(&self) -> Option<Size> {
+        let mut bits = 0;
+        for (&w, x) in self.weights.iter().zip(self.coords.chunks_exact(self.dim)) {
+            bits = bits.max(bit_len(w));
+            for &c in x {
+                bits = bits.max(bit_len(c.mul(w)?));
+            }
+        }
+        Some(Size {
+            degree: self.shape,
+            tri: false,
+            dim: self.dim,
+            bits,
+            op_cost: 1,
+        })
+    }
+
+    /// Prove the net minimal modulo `p` as
+    /// [`KeyPlan::Minimal`](super::KeyPlan::Minimal) does (the same
+    /// certificate on the same image); `false` when it is not proved (or a
+    /// denominator is divisible by `p`). Keys of certified patches take the
+    /// machine-integer path.
+    pub fn certify(&mut self) -> bool {
+        let Some(homogeneous) = self.homogeneous_mod_p() else {
+            return false;
+        };
+        self.certified = certified_image(&homogeneous);
+        self.certified
+    }
+
+    /// The image modulo `p` of the homogeneous net, or `None` when `p`
+    /// divides a denominator.
+    fn homogeneous_mod_p(&self) -> Option<Net<Fp>> {
+        let cols = self.shape.1 + 1;
+        let points = self
+            .weights
+            .iter()
+            .zip(self.coords.chunks_exact(self.dim))
+            .map(|(&w, x)| {
+                let w = mod_p(w)?;
+                let coords = x
+                    .iter()
+                    .map(|&c| mod_p(c).map(|c| c * w))
+                    .chain(std::iter::once(Some(w)))
+                    .collect::<Option<Vec<Fp>>>()?;
+                Some(HPoint { coords })
+            })
+            .collect::<Option<Vec<_>>>()?;
+        Some(rows(&points, cols))
+    }
+
+    /// The same patch over `BigRational`.
+    ///
+    /// # Errors
+    ///
+    /// As [`RationalCurve::new`] and [`RectPatch::new`] (never for a patch
+    /// built by [`new`](SmallPatch::new)).
+    pub fn to_patch(&self) -> Result<Patch<BigRational>, Error> {
+        let big = |x: &Small| BigRational::new(x.p.into(), x.q.into());
+        let points: Vec<Vec<BigRational>> = self
+            .coords
+            .chunks_exact(self.dim)
+            .map(|x| x.iter().map(big).collect())
+            .collect();
+        let weights: Vec<BigRational> = self.weights.iter().map(big).collect();
+        if self.curve {
+            return RationalCurve::new(points, weights).map(Patch::Curve);
+        }
+        let cols = self.shape.1 + 1;
+        RectPatch::new(rows(&points, cols), rows(&weights, cols)).map(Patch::Rect)
+    }
+
+    /// The key text, [`canonical_text`](super::canonical_text) of
+    /// [`to_patch`](SmallPatch::to_patch): in machine integers when
+    /// [`certify`](SmallPatch::certify) proved the net minimal and every
+    /// number stays in `i128`, else through the general path.
+    ///
+    /// # Errors
+    ///
+    /// As [`canonical_text`](super::canonical_text).
+    pub fn key_text(&self) -> Result<String, Error> {
+        let split = || Split {
+            m: self.shape.0,
+            n: self.shape.1,
+            hat: self
+                .coords
+                .chunks_exact(self.dim)
+                .map(|x| {
+                    x.iter()
+                        .copied()
+                        .chain(std::iter::once(Small::ONE))
+                        .collect()
+                })
+                .collect(),
+            weight: self.weights.clone(),
+        };
+        match self
+            .certified
+            .then(|| split_key_text(&split(), self.curve))
+            .flatten()
+        {
+            Some(text) => Ok(text),
+            None => super::canonical_text(&self.to_patch()?),
+        }
+    }
 }

@@ -1,0 +1,552 @@
+//! The bulk commands' fast reader: a JSON line holding a curve or rect
+//! patch of the plain shape read straight from its bytes into a
+//! [`SmallPatch`] (machine fractions), without a JSON value in between.
+//!
+//! The plain shape: one object with the fields `"kind"` (`"curve"` or
+//! `"rect"`), `"points"`, and optionally `"degree"` and `"weights"`, each
+//! once, in any order; numbers as JSON numbers `-?(0|[1-9]d*)(.d+)?` or
+//! strings `"-?d+(.d+)?(/d+)?"` that fit `i128`. Anything else — another
+//! field, an exponent, an escape, a big number, a shape error, a
+//! non-positive weight, a number over `--max-digits` — gives `None`, and
+//! the caller reads the line with the general reader
+//! ([`patch_from_value`](crate::io::patch_from_value)), which accepts or
+//! refuses it as it always did. So what this reader accepts is valid JSON
+//! that the general reader turns into the same patch (tested against it).
+
+use crate::coincide::canonical::SmallPatch;
+use crate::limits::{self, MAX_DEGREE, MAX_DIMENSION};
+
+/// The patch of one JSON line of the plain shape, or `None` (then the
+/// general reader decides).
+///
+/// ```
+/// use exact_bezier::io::{parse_json, patch_from_value, read_small_patch};
+/// let line = r#"{"kind": "curve", "points": [[0, 0], ["1/2", 1.5], [3, 0]], "weights": [1, "2", 1]}"#;
+/// let fast = read_small_patch(line).unwrap().to_patch().unwrap();
+/// assert_eq!(fast, patch_from_value(&parse_json(line).unwrap()).unwrap());
+/// assert!(read_small_patch(r#"{"kind": "curve", "points": [[1e3]]}"#).is_none());
+/// ```
+pub fn read_small_patch(line: &str) -> Option<SmallPatch> {
+    let mut c = Cursor {
+        bytes: line.as_bytes(),
+        at: 0,
+        max_digits: limits::current().max_digits,
+    };
+    let fields = c.object()?;
+    c.skip_space();
+    if c.at != c.bytes.len() {
+        return None;
+    }
+    fields.patch()
+}
+
+/// Nested arrays of numbers as read: the numbers in order and the length
+/// of every array, innermost level first.
+#[derive(Default)]
+struct Grid {
+    numbers: Vec<(i128, i128)>,
+    /// `lens[k]`: the common length of the arrays at depth `k` from the
+    /// innermost (`None` until one is read).
+    lens: Vec<Option<usize>>,
+}
+
+/// What the declared `"degree"` was: a count or a pair of counts.
+enum Degree {
+    One(usize),
+    Two(usize, usize),
+}
+
+/// The fields of the object.
+#[derive(Default)]
+struct Fields {
+    curve: Option<bool>,
+    degree: Option<Degree>,
+    points: Option<Grid>,
+    weights: Option<Grid>,
+}
+
+impl Fields {
+    /// The patch the fields describe, if they are consistent.
+    fn patch(self) -> Option<SmallPatch> {
+        let curve = self.curve?;
+        let points = self.points?;
+        let depth = if curve { 2 } else { 3 };
+        if points.lens.len() != depth {
+            return None;
+        }
+        let dim = points.lens[0]?;
+        let shape = if curve {
+            (points.lens[1]? - 1, 0)
+        } else {
+            (points.lens[2]? - 1, points.lens[1]? - 1)
+        };
+        if dim > MAX_DIMENSION || shape.0 > MAX_DEGREE || shape.1 > MAX_DEGREE {
+            return None;
+        }
+        let declared_ok = match (self.degree, curve) {
+            (None, _) => true,
+            (Some(Degree::One(n)), true) => n == shape.0,
+            (Some(Degree::Two(m, n)), false) => (m, n) == shape,
+            _ => false,
+        };
+        let weights = match self.weights {
+            None => vec![(1, 1); (shape.0 + 1) * (shape.1 + 1)],
+            Some(w) => {
+                let shape_of_weights = if curve {
+                    vec![Some(shape.0 + 1)]
+                } else {
+                    vec![Some(shape.1 + 1), Some(shape.0 + 1)]
+                };
+                if w.lens != shape_of_weights {
+                    return None;
+                }
+                w.numbers
+            }
+        };
+        if !declared_ok {
+            return None;
+        }
+        SmallPatch::new(curve, shape, dim, &points.numbers, &weights)
+    }
+}
+
+/// A position in the line's bytes.
+struct Cursor<'a> {
+    bytes: &'a [u8],
+    at: usize,
+    max_digits: u64,
+}
+
+impl Cursor<'_> {
+    fn peek(&self) -> Option<u8> {
+        self.bytes.get(self.at).copied()
+    }
+
+    /// Skip JSON whitespace.
+    fn skip_space(&mut self) {
+        while let Some(b' ' | b'\t' | b'\n' | b'\r') = self.peek() {
+            self.at += 1;
+        }
+    }
+
+    /// Skip whitespace and take `b`.
+    fn expect(&mut self, b: u8) -> Option<()> {
+        self.skip_space();
+        (self.peek() == Some(b)).then(|| self.at += 1)
+    }
+
+    /// Skip whitespace and take `b` if it is next.
+    fn take(&mut self, b: u8) -> bool {
+        self.expect(b).is_some()
+    }
+
+    /// A string without escapes, as bytes.
+    fn string(&mut self) -> Option<&[u8]> {
+        self.expect(b'"')?;
+        let start = self.at;
+        loop {
+            match self.peek()? {
+                b'"' => break,
+                b'\\' | 0..=0x1f => return None,
+                _ => self.at += 1,
+            }
+        }
+        self.at += 1;
+        Some(&self.bytes[start..self.at - 1])
+    }
+
+    /// The object's fields; `None` on another or a repeated field.
+    fn object(&mut self) -> Option<Fields> {
+        self.expect(b'{')?;
+        let mut f = Fields::default();
+        loop {
+            let repeated = match self.string()? {
+                b"kind" => {
+                    let kind = match self.colon()?.string()? {
+                        b"curve" => true,
+                        b"rect" => false,
+                        _ => return None,
+                    };
+                    f.curve.replace(kind).is_some()
+                }
+                b"degree" => {
+                    let d = self.colon()?.degree()?;
+                    f.degree.replace(d).is_some()
+                }
+                b"points" => {
+                    let g = self.colon()?.grid()?;
+                    f.points.replace(g).is_some()
+                }
+                b"weights" => {
+                    let g = self.colon()?.grid()?;
+                    f.weights.replace(g).is_some()
+                }
+                _ => return None,
+            };
+            if repeated {
+                return None;
+            }
+            if !self.take(b',') {
+                break;
+            }
+        }
+        self.expect(b'}')?;
+        Some(f)
+    }
+
+    fn colon(&mut self) -> Option<&mut Self> {
+        self.expect(b':')?;
+        Some(self)
+    }
+
+    /// `n` or `[m, n]`, counts written as JSON integers without sign.
+    fn degree(&mut self) -> Option<Degree> {
+        if !self.take(b'[') {
+            return self.count().map(Degree::One);
+        }
+        let m = self.count()?;
+        self.expect(b',')?;
+        let n = self.count()?;
+        self.expect(b']')?;
+        Some(Degree::Two(m, n))
+    }
+
+    /// A JSON integer `0|[1-9]d*` of at most 6 digits.
+    fn count(&mut self) -> Option<usize> {
+        self.skip_space();
+        let start = self.at;
+        let digits = self.digits();
+        let text = &self.bytes[start..self.at];
+        let canonical = (1..=6).contains(&digits) && (digits == 1 || text[0] != b'0');
+        canonical.then(|| text.iter().fold(0, |n, d| 10 * n + usize::from(d - b'0')))
+    }
+
+    /// Skip ASCII digits; how many.
+    fn digits(&mut self) -> usize {
+        let start = self.at;
+        while self.peek().is_some_and(|b| b.is_ascii_digit()) {
+            self.at += 1;
+        }
+        self.at - start
+    }
+
+    /// Nested non-empty arrays of numbers, every array at one depth of the
+    /// same length, at most 3 deep.
+    fn grid(&mut self) -> Option<Grid> {
+        let mut g = Grid::default();
+        self.array(&mut g, 0)?;
+        Some(g)
+    }
+
+    /// One array at nesting `level` (0 outermost) into `g`; the depth of
+    /// the arrays below and including it.
+    fn array(&mut self, g: &mut Grid, level: usize) -> Option<usize> {
+        self.expect(b'[')?;
+        self.skip_space();
+        let nested = self.peek() == Some(b'[');
+        if nested && level == 2 {
+            return None;
+        }
+        let (mut len, mut below) = (0, 0);
+        loop {
+            if nested {
+                let d = self.array(g, level + 1)?;
+                if len > 0 && d != below {
+                    return None;
+                }
+                below = d;
+            } else {
+                let x = self.number()?;
+                g.numbers.push(x);
+            }
+            len += 1;
+            if !self.take(b',') {
+                break;
+            }
+        }
+        self.expect(b']')?;
+        if below >= g.lens.len() {
+            g.lens.push(None);
+        }
+        match g.lens[below] {
+            Some(l) if l != len => None,
+            _ => {
+                g.lens[below] = Some(len);
+                Some(below + 1)
+            }
+        }
+    }
+
+    /// A number: a JSON number without exponent, or a string
+    /// `-?d+(.d+)?(/d+)?`; as `(p, q)` with `q > 0`.
+    fn number(&mut self) -> Option<(i128, i128)> {
+        self.skip_space();
+        let quoted = self.peek() == Some(b'"');
+        if quoted {
+            self.at += 1;
+        }
+        let start = self.at;
+        let (p, q) = self.decimal(quoted)?;
+        let (p, q) = if quoted && self.peek() == Some(b'/') {
+            self.at += 1;
+            let (d, e) = self.decimal(true)?;
+            if d <= 0 {
+                return None;
+            }
+            (p.checked_mul(e)?, q.checked_mul(d)?)
+        } else {
+            (p, q)
+        };
+        let digits = self.bytes[start..self.at]
+            .iter()
+            .filter(|b| b.is_ascii_digit())
+            .count();
+        if digits as u64 > self.max_digits {
+            return None;
+        }
+        if quoted {
+            self.expect_now(b'"')?;
+        }
+        Some((p, q))
+    }
+
+    /// Take `b` with no whitespace before it.
+    fn expect_now(&mut self, b: u8) -> Option<()> {
+        (self.peek() == Some(b)).then(|| self.at += 1)
+    }
+
+    /// `-?d+(.d+)?` as `(mantissa, 10^fraction digits)`; a JSON number
+    /// (`loose = false`) has no leading zero.
+    fn decimal(&mut self, loose: bool) -> Option<(i128, i128)> {
+        let negative = self.peek() == Some(b'-');
+        if negative {
+            self.at += 1;
+        }
+        let start = self.at;
+        let whole = self.digits();
+        if whole == 0 || (!loose && whole > 1 && self.bytes[start] == b'0') {
+            return None;
+        }
+        let mut frac = 0;
+        if self.peek() == Some(b'.') {
+            self.at += 1;
+            frac = self.digits();
+            if frac == 0 {
+                return None;
+            }
+        }
+        let mut mantissa: i128 = 0;
+        for &d in self.bytes[start..self.at]
+            .iter()
+            .filter(|b| b.is_ascii_digit())
+        {
+            mantissa = mantissa
+                .checked_mul(10)?
+                .checked_add(i128::from(d - b'0'))?;
+        }
+        let scale = 10i128.checked_pow(u32::try_from(frac).ok()?)?;
+        Some((if negative { -mantissa } else { mantissa }, scale))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::coincide::canonical::canonical_text;
+    use crate::io::{parse_json, patch_from_value};
+    use crate::limits::{with_limits, Limits};
+    use proptest::prelude::*;
+
+    /// The general reader's patch of `line`.
+    fn general(line: &str) -> Result<crate::Patch<num_rational::BigRational>, crate::Error> {
+        parse_json(line).and_then(|v| patch_from_value(&v))
+    }
+
+    /// Whatever the fast reader accepts, the general reader reads as the
+    /// same patch, and the fast key text is the general one.
+    fn agrees(line: &str) -> bool {
+        let Some(mut fast) = read_small_patch(line) else {
+            return false;
+        };
+        let want = general(line).unwrap_or_else(|e| panic!("{line}: fast accepts, general: {e}"));
+        assert_eq!(fast.to_patch().unwrap(), want, "{line}");
+        fast.certify();
+        assert_eq!(
+            fast.key_text().unwrap(),
+            canonical_text(&want).unwrap(),
+            "{line}"
+        );
+        true
+    }
+
+    /// A number written in form `form` from `a`, `b` (`b ≥ 1`); whether
+    /// the fast reader should take it.
+    fn number(form: u8, a: i64, b: i64) -> (String, bool) {
+        match form % 8 {
+            0 => (a.to_string(), true),
+            1 => (format!("\"{a}/{b}\""), true),
+            2 => (format!("{a}.{:03}", b % 1000), true),
+            3 => (format!("\"{a}.{b}\""), true),
+            4 => (format!("\"{a}.5/{b}.25\""), true),
+            5 => (format!("\"{}\"", b), true),
+            6 => (format!("{a}e2"), false),
+            _ => (format!("\"{a}{:040}\"", b), false),
+        }
+    }
+
+    /// A curve or rect record with numbers in the given forms, fields in
+    /// a rotated order, with or without degree and weights.
+    fn record(
+        rect: bool,
+        (m, n, dim): (usize, usize, usize),
+        forms: &[(u8, i64, i64)],
+        rotate: usize,
+        with_degree: bool,
+        with_weights: bool,
+    ) -> (String, bool) {
+        let mut it = forms.iter().cycle();
+        // Whether the points, and the weights, are all of plain forms.
+        let mut plain = [true, true];
+        let mut num = |weight: bool| {
+            let &(f, a, b) = it.next().unwrap();
+            let a = if weight { a.abs() + 1 } else { a };
+            let (text, ok) = number(f, a, b);
+            plain[usize::from(weight)] &= ok;
+            text
+        };
+        let point = |num: &mut dyn FnMut(bool) -> String| {
+            format!(
+                "[{}]",
+                (0..dim).map(|_| num(false)).collect::<Vec<_>>().join(", ")
+            )
+        };
+        let list = |items: Vec<String>| format!("[{}]", items.join(","));
+        let (points, weights, degree) = if rect {
+            let pts = (0..=m)
+                .map(|_| list((0..=n).map(|_| point(&mut num)).collect()))
+                .collect();
+            let ws = (0..=m)
+                .map(|_| list((0..=n).map(|_| num(true)).collect()))
+                .collect();
+            (list(pts), list(ws), format!("[{m}, {n}]"))
+        } else {
+            let pts = (0..=m).map(|_| point(&mut num)).collect();
+            let ws = (0..=m).map(|_| num(true)).collect();
+            (list(pts), list(ws), m.to_string())
+        };
+        let plain = plain[0] && (plain[1] || !with_weights);
+        let kind = if rect { "rect" } else { "curve" };
+        let mut fields = vec![
+            format!("\"kind\": \"{kind}\""),
+            format!("\"points\":{points}"),
+        ];
+        if with_degree {
+            fields.push(format!("\"degree\" : {degree}"));
+        }
+        if with_weights {
+            fields.push(format!("\"weights\": {weights}"));
+        }
+        let k = rotate % fields.len();
+        fields.rotate_left(k);
+        (format!(" {{{}}}\n", fields.join(", ")), plain)
+    }
+
+    fn records() -> impl Strategy<Value = (String, bool)> {
+        (
+            any::<bool>(),
+            (0usize..4, 0usize..4, 1usize..4),
+            prop::collection::vec((0u8..8, -60i64..60, 1i64..40), 1..12),
+            0usize..4,
+            any::<bool>(),
+            any::<bool>(),
+        )
+            .prop_map(|(rect, shape, forms, rotate, d, w)| {
+                let shape = if rect { shape } else { (shape.0, 0, shape.2) };
+                record(rect, shape, &forms, rotate, d, w)
+            })
+    }
+
+    proptest! {
+        #[test]
+        fn plain_records_are_read_as_the_general_reader_reads_them((line, plain) in records()) {
+            prop_assert_eq!(agrees(&line), plain, "{}", line);
+        }
+
+        #[test]
+        fn a_damaged_record_is_refused_or_read_as_the_general_reader_reads_it(
+            (line, _) in records(),
+            at in any::<prop::sample::Index>(),
+            edit in 0usize..20,
+        ) {
+            const BYTES: &[u8] = b"[]{},:\"-./0159e x\\";
+            let mut bytes = line.into_bytes();
+            let k = at.index(bytes.len());
+            match BYTES.get(edit) {
+                Some(&b) => bytes[k] = b,
+                None => {
+                    bytes.remove(k);
+                }
+            }
+            if let Ok(line) = String::from_utf8(bytes) {
+                agrees(&line);
+            }
+        }
+    }
+
+    #[test]
+    fn the_corpus_patches_are_keyed_as_by_the_general_path() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures");
+        let mut fast = 0;
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().is_none_or(|e| e != "json") {
+                continue;
+            }
+            let v: serde_json::Value =
+                serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+            let items = match v {
+                serde_json::Value::Array(items) => items,
+                v => vec![v],
+            };
+            for item in items {
+                let line = item.to_string();
+                if general(&line).is_ok() && agrees(&line) {
+                    fast += 1;
+                }
+            }
+        }
+        // The teapot's 32 patches alone are of the plain shape.
+        assert!(fast >= 32, "{fast}");
+    }
+
+    #[test]
+    fn unusual_records_go_to_the_general_reader() {
+        let ok = r#"{"kind": "curve", "points": [[0], [1]]}"#;
+        assert!(agrees(ok));
+        for line in [
+            r#"{"kind": "curve", "points": [[0], [1]], "origin": {}}"#,
+            r#"{"kind": "curve", "points": [[0], [1]], "kind": "curve"}"#,
+            r#"{"kind": "cur\u0076e", "points": [[0], [1]]}"#,
+            r#"{"kind": "tri", "points": [[[0], [1]], [[2]]]}"#,
+            r#"{"kind": "curve", "points": [[0], [1e0]]}"#,
+            r#"{"kind": "curve", "points": [[0], ["+1"]]}"#,
+            r#"{"kind": "curve", "points": [[0], [" 1"]]}"#,
+            r#"{"kind": "curve", "points": [[0], ["1/-3"]]}"#,
+            r#"{"kind": "curve", "points": [[0], [01]]}"#,
+            r#"{"kind": "curve", "points": [[0], [1]], "weights": [1, 0]}"#,
+            r#"{"kind": "curve", "points": [[0], [1]], "degree": 1.0}"#,
+            r#"{"kind": "curve", "points": [[0], [1, 2]]}"#,
+            r#"{"kind": "curve", "points": [[0], [1]]} x"#,
+            r#"{"kind": "curve", "points": [[0], [170141183460469231731687303715884105728]]}"#,
+        ] {
+            assert!(read_small_patch(line).is_none(), "{line}");
+        }
+        let few_digits = Limits {
+            max_digits: 3,
+            ..Limits::default()
+        };
+        let long = r#"{"kind": "curve", "points": [[0], ["1/1000"]]}"#;
+        assert!(read_small_patch(long).is_some());
+        assert!(with_limits(few_digits, || read_small_patch(long)).is_none());
+    }
+}
