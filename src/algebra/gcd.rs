@@ -221,6 +221,39 @@ pub fn fraction(numer: BigInt, denom: BigInt) -> BigRational {
     }
 }
 
+/// `a · b` in lowest terms, reduced by [`gcd`] (num-rational's own
+/// product reduces by the binary gcd, quadratic on big operands).
+///
+/// ```
+/// use exact_bezier::algebra::gcd::product;
+/// use exact_bezier::BigRational;
+/// let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+/// assert_eq!(product(&q(6, 35), &q(-14, 9)), q(-4, 15));
+/// ```
+pub fn product(a: &BigRational, b: &BigRational) -> BigRational {
+    fraction(a.numer() * b.numer(), a.denom() * b.denom())
+}
+
+/// `a + b` in lowest terms, reduced by [`gcd`].
+///
+/// ```
+/// use exact_bezier::algebra::gcd::sum;
+/// use exact_bezier::BigRational;
+/// let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+/// assert_eq!(sum(&q(1, 6), &q(3, 10)), q(7, 15));
+/// assert_eq!(sum(&q(1, 6), &q(-1, 6)), q(0, 1));
+/// ```
+pub fn sum(a: &BigRational, b: &BigRational) -> BigRational {
+    if a.denom() == b.denom() {
+        fraction(a.numer() + b.numer(), a.denom().clone())
+    } else {
+        fraction(
+            a.numer() * b.denom() + b.numer() * a.denom(),
+            a.denom() * b.denom(),
+        )
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -26,6 +26,7 @@
 //! non-empty sum is non-zero.
 
 use super::polys;
+use crate::algebra::gcd;
 use crate::algebra::upoly::UPoly;
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -114,7 +115,10 @@ impl Monomial {
     /// base `b`, so an error `ε` in one factor moves the product by at most
     /// `ε ∏ b`; `G = Σ bits(b) + bits(#factors) + 3` guard bits cover the
     /// `5·#factors·∏ b` units of widening).
-    fn enclosure(&self, prec: u32) -> (BigRational, BigRational) {
+    ///
+    /// The bounds are returned in fixed point, `(L, H, w)` with
+    /// `L/2^w ≤ value ≤ H/2^w` (see [`dyadic`] for them as fractions).
+    fn enclosure(&self, prec: u32) -> (BigInt, BigInt, usize) {
         let guard: u64 = self.0.iter().map(|(b, _)| b.bits()).sum::<u64>()
             + u64::from(usize::BITS - self.0.len().leading_zeros())
             + 3;
@@ -125,12 +129,15 @@ impl Monomial {
             lo = (lo * l) >> work;
             hi = ((hi * h) >> work) + 1;
         }
-        let scale = BigInt::one() << work;
-        (
-            BigRational::new(lo, scale.clone()),
-            BigRational::new(hi, scale),
-        )
+        (lo, hi, work)
     }
+}
+
+/// The fraction `n / 2^k` in lowest terms, reduced by the trailing zero
+/// bits of `n` (a gcd with a power of two needs no division).
+fn dyadic(n: BigInt, k: usize) -> BigRational {
+    let t = n.trailing_zeros().map_or(k, |t| (t as usize).min(k));
+    BigRational::new_raw(n >> t, BigInt::one() << (k - t))
 }
 
 /// Fixed-point bounds `(L, H)` on `b^e · 2^w` for an integer `b > 1` and
@@ -418,7 +425,7 @@ impl RadicalSum {
     pub(crate) fn add(&self, other: &Self) -> Self {
         let (mut a, b) = self.unify(other);
         for (m, c) in b.terms {
-            let sum = a.terms.remove(&m).map_or(c.clone(), |x| x + &c);
+            let sum = a.terms.remove(&m).map_or(c.clone(), |x| gcd::sum(&x, &c));
             if !sum.is_zero() {
                 a.terms.insert(m, sum);
             }
@@ -450,9 +457,9 @@ impl RadicalSum {
         for (ma, ca) in &self.terms {
             for (mb, cb) in &other.terms {
                 let (carry, m) = ma.mul(mb);
-                let c = carry * ca * cb;
+                let c = gcd::product(&gcd::product(&carry, ca), cb);
                 let entry = out.entry(m).or_insert_with(BigRational::zero);
-                *entry += c;
+                *entry = gcd::sum(entry, &c);
             }
         }
         out.retain(|_, c| !c.is_zero());
@@ -465,7 +472,11 @@ impl RadicalSum {
             return Self::default();
         }
         RadicalSum {
-            terms: self.terms.iter().map(|(m, x)| (m.clone(), x * c)).collect(),
+            terms: self
+                .terms
+                .iter()
+                .map(|(m, x)| (m.clone(), gcd::product(x, c)))
+                .collect(),
         }
     }
 
@@ -495,26 +506,31 @@ impl RadicalSum {
     }
 
     /// Rational bounds `lo ≤ self ≤ hi`, width at most `terms · |c|max · 2^{−prec}`.
+    ///
+    /// Computed in fixed point at `2^{−(prec+3)}` (every term's bounds
+    /// rounded outward there, then one fraction each; no gcd of big
+    /// numbers per term), so the width is at most
+    /// `terms · (|c|max · 2^{−prec} + 2^{−prec−2})`.
     pub(crate) fn enclosure(&self, prec: u32) -> (BigRational, BigRational) {
-        let mut lo = BigRational::zero();
-        let mut hi = BigRational::zero();
+        let scale = prec as usize + 3;
+        let (mut lo, mut hi) = (BigInt::zero(), BigInt::zero());
         for (m, c) in &self.terms {
-            if m.is_one() {
-                lo += c;
-                hi += c;
-                continue;
-            }
-            let (a, b) = m.enclosure(prec);
-            let (x, y) = (a * c, b * c);
-            if c.is_positive() {
-                lo += x;
-                hi += y;
+            let (a, b, w) = if m.is_one() {
+                (BigInt::one(), BigInt::one(), 0)
             } else {
-                lo += y;
-                hi += x;
-            }
+                m.enclosure(prec)
+            };
+            // c·[a, b]/2^w rounded outward to multiples of 2^{−scale}.
+            let (n, d) = (c.numer() << scale, c.denom() << w);
+            let (x, y) = if c.is_positive() {
+                (a * &n, b * &n)
+            } else {
+                (b * &n, a * &n)
+            };
+            lo += x.div_floor(&d);
+            hi += -((-y).div_floor(&d));
         }
-        (lo, hi)
+        (dyadic(lo, scale), dyadic(hi, scale))
     }
 
     /// The root index of each base: `(b, n)` with `n` the lcm of the
