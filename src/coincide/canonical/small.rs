@@ -10,6 +10,7 @@
 //! two single-word gcds of its cross terms (`(a/b)(c/d) = (a/g₁)(c/g₂) /
 //! ((b/g₂)(d/g₁))` with `g₁ = gcd(a, d)`, `g₂ = gcd(c, b)`).
 
+use crate::algebra::gcd::gcd_u128;
 use crate::algebra::modp::{Fp, MODULUS};
 use crate::coincide::minimal::{certified_image, Net};
 use crate::coincide::Symmetry;
@@ -30,45 +31,6 @@ struct Small {
     q: i128,
 }
 
-/// Binary gcd of machine words (`gcd(0, b) = b`), on 64-bit words when
-/// both fit (the common case, several times faster).
-fn gcd(mut a: u128, mut b: u128) -> u128 {
-    if a == 0 || b == 0 {
-        return a | b;
-    }
-    if let (Ok(a), Ok(b)) = (u64::try_from(a), u64::try_from(b)) {
-        return u128::from(gcd64(a, b));
-    }
-    let shift = (a | b).trailing_zeros();
-    a >>= a.trailing_zeros();
-    loop {
-        b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        if b == 0 {
-            return a << shift;
-        }
-    }
-}
-
-/// [`gcd`] of non-zero 64-bit words.
-fn gcd64(mut a: u64, mut b: u64) -> u64 {
-    let shift = (a | b).trailing_zeros();
-    a >>= a.trailing_zeros();
-    loop {
-        b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        if b == 0 {
-            return a << shift;
-        }
-    }
-}
-
 /// `a / g` for a divisor `g > 0` of `a`, on 64-bit words when `a` fits.
 fn div_exact(a: i128, g: i128) -> i128 {
     match (g, i64::try_from(a), i64::try_from(g)) {
@@ -86,7 +48,7 @@ impl Small {
         if q <= 0 {
             return None;
         }
-        let g = gcd(p.unsigned_abs(), q.unsigned_abs()) as i128;
+        let g = gcd_u128(p.unsigned_abs(), q.unsigned_abs()) as i128;
         Some(Small {
             p: div_exact(p, g),
             q: div_exact(q, g),
@@ -102,8 +64,8 @@ impl Small {
 
     /// The product, reduced by cross gcds; `None` on overflow.
     fn mul(self, o: Small) -> Option<Small> {
-        let g1 = gcd(self.p.unsigned_abs(), o.q.unsigned_abs()) as i128;
-        let g2 = gcd(o.p.unsigned_abs(), self.q.unsigned_abs()) as i128;
+        let g1 = gcd_u128(self.p.unsigned_abs(), o.q.unsigned_abs()) as i128;
+        let g2 = gcd_u128(o.p.unsigned_abs(), self.q.unsigned_abs()) as i128;
         Some(Small {
             p: div_exact(self.p, g1).checked_mul(div_exact(o.p, g2))?,
             q: div_exact(self.q, g2).checked_mul(div_exact(o.q, g1))?,
