@@ -390,7 +390,8 @@ mod tests {
             4 => (format!("\"{a}.5/{b}.25\""), true),
             5 => (format!("\"{}\"", b), true),
             6 => (format!("{a}e2"), false),
-            _ => (format!("\"{a}{:040}\"", b), false),
+            // A non-zero lead and 40 more digits: at least 10^40 > i128::MAX.
+            _ => (format!("\"{}{:040}\"", a.abs() % 9 + 1, b), false),
         }
     }
 
