@@ -103,13 +103,13 @@ pub struct Limits {
 }
 
 impl Limits {
-    /// The defaults: 1 000 digits, 64 MiB, 2·10⁹ work units (a minute or
-    /// two at worst on a slow machine; `docs/limits.md` has the
-    /// calibration).
+    /// The defaults: 1 000 digits, 64 MiB, 10¹⁰ work units — about a
+    /// minute in a release build on the reference machine (a unit is about
+    /// 7 ns of CPU time there; `docs/limits.md` has the calibration).
     pub const DEFAULT: Limits = Limits {
         max_digits: 1_000,
         max_input_bytes: 64 << 20,
-        max_work: 2_000_000_000,
+        max_work: 10_000_000_000,
     };
 }
 
@@ -170,6 +170,41 @@ fn sci(x: u64) -> String {
     format!("{:.2e}", x as f64)
 }
 
+/// The fixed work of one command, whatever its input: parsing the
+/// arguments, opening and writing (about 0.25 ms in a release build,
+/// `cli/benches/cost_model.rs`).
+pub const COMMAND_WORK: u64 = 25_000;
+
+/// Work units per byte of a JSON input read whole (the exact numbers
+/// parsed from their text: about 0.6 µs a byte in a release build).
+pub const JSON_BYTE_WORK: u64 = 64;
+
+/// Work units per byte of an input read as a stream (STEP, the models of
+/// `audit` and `convert --to bezier`: entities resolved and converted,
+/// about 1–3 µs a byte).
+pub const STREAM_BYTE_WORK: u64 = 200;
+
+/// `f64` operations per work unit: a command run with `--scalar f64`, and
+/// the sampling of `plot` and `mesh`, is charged its operation count over
+/// this (an `f64` operation takes well under a nanosecond).
+pub const F64_OPS_PER_UNIT: u64 = 128;
+
+/// Work units of `ops` operations in `f64`: `⌈ops / 128⌉`
+/// ([`F64_OPS_PER_UNIT`]).
+pub fn f64_work(ops: u64) -> u64 {
+    ops.div_ceil(F64_OPS_PER_UNIT)
+}
+
+/// Charge the reading of an input of `bytes` bytes at `per_byte` units a
+/// byte ([`JSON_BYTE_WORK`], [`STREAM_BYTE_WORK`]).
+///
+/// # Errors
+///
+/// [`Error::Limit`] as [`charge`].
+pub fn charge_input(bytes: u64, per_byte: u64) -> Result<(), Error> {
+    charge("reading the input", bytes.saturating_mul(per_byte))
+}
+
 /// Work units of `ops` exact rational operations on numbers of `bits` bits:
 /// `ops × (2 + bits/64)²` (saturating). The square is the cost of the gcd
 /// that normalizes every rational result; the `2` the fixed cost of an
@@ -186,7 +221,7 @@ pub fn exact_work(ops: u64, bits: u64) -> u64 {
 /// the total degree `N`, and the degrees of resultants multiply: a quadratic
 /// curve under a Möbius map with a degree-3 root takes 0.8 s; with a
 /// degree-7 root, or a cubic with a degree-3 root, many minutes). An `f64`
-/// run counts the operations only.
+/// run is charged [`f64_work`] of the operations.
 ///
 /// # Errors
 ///
@@ -201,7 +236,7 @@ pub fn charge_sizes(
     for size in sizes {
         let (ops, bits) = cost(&size);
         let units = if !exact {
-            ops
+            f64_work(ops)
         } else if param_degree > 1 {
             let e = u32::try_from(4 * size.total_degree()).unwrap_or(u32::MAX);
             let param_cost = 16u64.saturating_mul(param_degree.saturating_pow(e));

@@ -11,6 +11,7 @@ use exact_bezier::audit::brep::{audit_brep, default_angle_tolerance};
 use exact_bezier::audit::{audit, Audit, Continuity, ExactModel, Model, PatchEdge, SeamScalar};
 use exact_bezier::coincide::boundary_curve;
 use exact_bezier::io::{audit_to_json, brep_audit_to_json, is_step, read_exact_model, JsonScalar};
+use exact_bezier::limits::{self, Cost, Size};
 use exact_bezier::patch::Patch;
 use exact_bezier::render::plot::{plot_colored_png, PlotOptions};
 use exact_bezier::step::read_brep;
@@ -88,8 +89,10 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     }
 }
 
-/// The audit of a model over either exact scalar.
-fn run_on<T: SeamScalar + JsonScalar>(model: &Model<T>, a: &Args) -> Result<Value, Error> {
+/// The audit of a model over either exact scalar, its work charged first.
+fn run_on<T: SeamScalar + JsonScalar + Cost>(model: &Model<T>, a: &Args) -> Result<Value, Error> {
+    let sizes = model.pieces.iter().map(|p| p.patch.size());
+    limits::charge_sizes("audit", sizes, true, 1, audit_cost)?;
     let report = audit(model)?;
     if let Some(out) = &a.plot {
         plot(model, &report, out)?;
@@ -101,6 +104,17 @@ fn run_on<T: SeamScalar + JsonScalar>(model: &Model<T>, a: &Args) -> Result<Valu
         );
     }
     Ok(audit_to_json(&report, model))
+}
+
+/// Estimated `(operations, bits)` of auditing one piece of a patch model:
+/// its edges' jets, the matching of edges and the exact seam verdicts,
+/// `16(N+1)³(d+1)` operations on its own numbers (calibrated,
+/// `cli/benches/cost_model.rs`: the 32 bicubics of the teapot take about
+/// 50 ms). The certified measures of an audit charge their own pieces as
+/// they go (`docs/audit.md`).
+fn audit_cost(s: &Size) -> (u64, u64) {
+    let n1 = s.total_degree() + 1;
+    (16 * n1.pow(3) * (s.dim as u64 + 1), s.bits)
 }
 
 /// Palette indices (see [`plot_colored_png`]).

@@ -181,13 +181,14 @@ fn modp_work(s: &Size) -> u64 {
 }
 
 /// The work of the key of a certified minimal net of size `s`: the change
-/// of basis modulo p ([`modp_work`]) and the points and invariants of up to
-/// 8 symmetries (`8(m+1)(n+1)(d+1)` exact operations on numbers of
-/// `bits·(N+1)` bits).
+/// of basis modulo p ([`modp_work`]) and the points, invariants and digest
+/// of up to 8 symmetries (`16(m+1)(n+1)(d+1)` exact operations on numbers
+/// of `bits·(N+1)` bits: two per point and symmetry, calibrated by
+/// `cli/benches/cost_model.rs`).
 fn minimal_key_work(s: &Size) -> u64 {
     let (m1, n1) = (s.degree.0 as u64 + 1, s.degree.1 as u64 + 1);
     let exact = limits::exact_work(
-        8 * m1 * n1 * (s.dim as u64 + 1),
+        16 * m1 * n1 * (s.dim as u64 + 1),
         s.bits.max(8).saturating_mul(s.total_degree() + 1),
     );
     modp_work(s).saturating_add(exact)

@@ -34,13 +34,45 @@ pub struct Args {
 /// Estimated `(operations, bits)` of deciding coincidence for a patch of
 /// size `s` (canonical forms: polynomial gcds and Möbius solves over the
 /// whole net, numbers grown by the total degree N):
-/// `(N+1)⁴(d+1)` operations on `(N+1)·bits`-bit numbers.
+/// `(N+1)³(d+1)` operations on `(N+1)·bits`-bit numbers (calibrated,
+/// `cli/benches/cost_model.rs`: an elevated copy is reduced first, and
+/// most of the work is on the net's own numbers).
 pub(super) fn coincide_cost(s: &Size) -> (u64, u64) {
     let n1 = s.total_degree() + 1;
     (
-        n1.pow(4) * (s.dim as u64 + 1),
+        n1.pow(3) * (s.dim as u64 + 1),
         s.bits.max(8).saturating_mul(n1),
     )
+}
+
+/// Charge the decision for `pa` and `pb` ([`coincide_cost`]): both are
+/// reduced to their least degree first, and two patches of different least
+/// degrees differ, so the canonical forms are charged at the lower of the
+/// two degrees, plus for each patch one exact pass over its net that
+/// undoes an elevation (`(m+1)(n+1)(N_low+2)(d+1)` operations, as for an
+/// elevated copy in `key`). Calibrated by `cli/benches/cost_model.rs`: a
+/// (8, 8) net against its (16, 16) elevation took 28 ms, 30 times less than
+/// the model at the higher degree.
+fn charge_pair<T: ExactScalar>(
+    pa: &Patch<T>,
+    pb: &Patch<T>,
+    scalar: ScalarKind,
+) -> Result<(), Error> {
+    let (sa, sb) = (pa.size(), pb.size());
+    let low = if sa.total_degree() <= sb.total_degree() {
+        sa.degree
+    } else {
+        sb.degree
+    };
+    charge_each("coincide", &[pa.clone(), pb.clone()], scalar, |s| {
+        let lower = Size { degree: low, ..*s };
+        let (ops, bits) = coincide_cost(&lower);
+        let undo = (s.degree.0 as u64 + 1)
+            * (s.degree.1 as u64 + 1)
+            * (lower.total_degree() + 2)
+            * (s.dim as u64 + 1);
+        (ops + undo, bits)
+    })
 }
 
 /// Read exactly one curve or patch from `path` (rational or algebraic).
@@ -72,12 +104,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     match (one_patch(&a.a)?, one_patch(&a.b)?) {
         (ExactPatches::Rational(pa), ExactPatches::Rational(pb)) => {
             if a.filtered {
-                charge_each(
-                    "coincide",
-                    &[pa[0].clone(), pb[0].clone()],
-                    a.scalar,
-                    coincide_cost,
-                )?;
+                charge_pair(&pa[0], &pb[0], a.scalar)?;
                 let c = coincide(&pa[0], &pb[0], Options::filtered())?;
                 let mut v = coincidence_to_json(&c);
                 v["decided_by"] = format!("{:?}", c.decided_by).to_lowercase().into();
@@ -98,12 +125,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 
 /// The exact decision over `T`, or (with `--scalar f64`) the tolerance one.
 fn decide<T: ExactScalar>(a: &Args, pa: &Patch<T>, pb: &Patch<T>) -> Result<Value, Error> {
-    charge_each(
-        "coincide",
-        &[pa.clone(), pb.clone()],
-        a.scalar,
-        coincide_cost,
-    )?;
+    charge_pair(pa, pb, a.scalar)?;
     match a.scalar {
         ScalarKind::F64 => {
             let tol = a.tol.unwrap_or(Tolerance::default().0);

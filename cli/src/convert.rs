@@ -164,20 +164,22 @@ impl Plan<BigRational> {
 /// Estimated `(operations, bits)` of converting a patch of size `s`: a rect
 /// (m, n) gives two tris of degree N = m + n, each coefficient a sum over
 /// the net; a tri of degree n gives three rects (n, n), each coefficient a
-/// sum over the net with split parameters of `split_bits` bits.
+/// sum over the net with split parameters of `split_bits` bits. Each term
+/// of those sums costs 4 operations (to tri) or 8 (to rect, whose split
+/// parameters make larger fractions; calibrated, `cli/benches/cost_model.rs`).
 fn convert_cost(s: &Size, split_bits: u64) -> (u64, u64) {
     let d1 = s.dim as u64 + 1;
     let (m, n) = (s.degree.0 as u64, s.degree.1 as u64);
     if s.tri {
         let net = (m + 1) * (m + 2) / 2;
         (
-            12 * (m + 1) * (m + 1) * net * d1,
+            96 * (m + 1) * (m + 1) * net * d1,
             s.grown_bits(2 * m, split_bits),
         )
     } else {
         let big = m + n + 1;
         (
-            2 * big * big * (m + 1) * (n + 1) * d1,
+            8 * big * big * (m + 1) * (n + 1) * d1,
             s.grown_bits(2 * (m + n), 1),
         )
     }

@@ -85,10 +85,13 @@ struct Deriv(usize);
 impl PatchOp for Deriv {
     const NAME: &'static str = "deriv";
 
+    /// `16(k+1)` evaluations' operations: the derivative of a rational
+    /// curve builds the hodographs of its homogeneous net exactly, every
+    /// number a fresh fraction (calibrated, `cli/benches/cost_model.rs`).
     fn cost(&self, s: &Size, param_bits: u64) -> (u64, u64) {
         let k = self.0 as u64 + 1;
         (
-            k * s.eval_ops(),
+            16 * k * s.eval_ops(),
             s.grown_bits(s.total_degree() + k, param_bits),
         )
     }

@@ -67,14 +67,23 @@ pub fn run(a: &Args) -> Result<Result<Value, i32>, Error> {
     on_exact!(ExactPatches::parse(&text)?, patches => run_patches(a, &patches))
 }
 
+/// The model's exact operations per work unit of `eval`: 128. Exact
+/// evaluation is fraction-free (integer de Casteljau over a common
+/// denominator, word-sized and 256-bit tiers first), so it costs about
+/// 1/128 of the rational operations the model counts; the parsing of the
+/// input, charged apart, is most of an evaluation's time (calibrated,
+/// `cli/benches/cost_model.rs`).
+const EVAL_OPS_PER_UNIT: u64 = 128;
+
 /// One point, written as `{"point": …}`.
 fn is_single(a: &Args) -> bool {
     a.at.len() == 1 && a.grid.is_none() && !a.jsonl
 }
 
 /// `eval` on patches of exact numbers `T`: exactly, or on their nearest
-/// `f64` patches. The work is charged first ([`Size::op_cost`](exact_bezier::limits::Size::op_cost)
-/// times the exact model for one operation).
+/// `f64` patches. The work is charged first: [`Size::op_cost`](exact_bezier::limits::Size::op_cost)
+/// times the exact model for one operation, over [`EVAL_OPS_PER_UNIT`]
+/// (or [`f64_work`](exact_bezier::limits::f64_work) in `f64`).
 fn run_patches<T: ExactScalar>(
     a: &Args,
     patches: &[Patch<T>],
@@ -98,9 +107,9 @@ fn run_patches<T: ExactScalar>(
                     size.total_degree(),
                     exact_bezier::limits::max_bits(at.iter().flatten()),
                 );
-                size.exact_units(ops, bits)
+                size.exact_units(ops, bits).div_ceil(EVAL_OPS_PER_UNIT)
             }
-            ScalarKind::F64 => ops,
+            ScalarKind::F64 => exact_bezier::limits::f64_work(ops),
         };
         exact_bezier::limits::charge("eval", units)?;
         let tag = a.jsonl.then(|| (patches.len() > 1).then_some(k));

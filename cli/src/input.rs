@@ -20,6 +20,7 @@ fn read_limited(r: impl Read, what: &str) -> Result<String, Error> {
         .read_to_end(&mut bytes)
         .map_err(|e| Error::Io(format!("cannot read {what}: {e}")))?;
     limits::check_input_bytes(bytes.len() as u64)?;
+    limits::charge_input(bytes.len() as u64, limits::JSON_BYTE_WORK)?;
     String::from_utf8(bytes).map_err(|_| Error::Format(format!("{what} is not UTF-8 text")))
 }
 
@@ -37,14 +38,36 @@ pub(crate) fn read_input(path: &str) -> Result<String, Error> {
 }
 
 /// A buffered reader of `path` (`-` for this run's standard input), for
-/// inputs read as a stream (STEP files).
+/// inputs read as a stream (STEP files, the models of `audit` and
+/// `convert --to bezier`); every byte read is charged
+/// [`limits::STREAM_BYTE_WORK`] ([`Charged`]).
 pub(crate) fn open_input(path: &str) -> Result<Box<dyn std::io::BufRead>, Error> {
-    if path == "-" {
-        return Ok(Box::new(std::io::BufReader::new(stdin_reader())));
+    let inner: Box<dyn Read> = if path == "-" {
+        stdin_reader()
+    } else {
+        Box::new(
+            std::fs::File::open(path)
+                .map_err(|e| Error::Io(format!("cannot read {path:?}: {e}")))?,
+        )
+    };
+    Ok(Box::new(std::io::BufReader::with_capacity(
+        1 << 16,
+        Charged(inner),
+    )))
+}
+
+/// A reader that charges the work of what is read from it as it comes:
+/// [`limits::STREAM_BYTE_WORK`] a byte. Over the budget, the read fails
+/// with the limit's message (an `io::Error` of kind `Other` carrying it).
+struct Charged<R>(R);
+
+impl<R: Read> Read for Charged<R> {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        let n = self.0.read(buf)?;
+        limits::charge_input(n as u64, limits::STREAM_BYTE_WORK)
+            .map_err(|e| std::io::Error::other(e.to_string()))?;
+        Ok(n)
     }
-    let f =
-        std::fs::File::open(path).map_err(|e| Error::Io(format!("cannot read {path:?}: {e}")))?;
-    Ok(Box::new(std::io::BufReader::with_capacity(1 << 16, f)))
 }
 
 /// Read the patches of `path`. An empty array is an empty model

@@ -50,13 +50,19 @@ pub struct Args {
 /// Estimated `(operations, bits)` of the exact elimination for curves of
 /// degrees `m`, `n`: `D + 1 = 2mn + 1` Sylvester determinants of size
 /// `2n`, Sturm isolation of a degree-`D` polynomial (`D³`), on numbers of
-/// about `(m + n)·bits` bits.
+/// about `(m + n)·bits` bits — times `(mn)³/4096` for the roots found, each
+/// an algebraic number of degree up to `mn` refined and substituted
+/// (calibrated, `cli/benches/cost_model.rs`: two cubics take 5 ms, two
+/// sextics 35 s).
 fn intersect_cost(a: &Size, b: &Size) -> (u64, u64) {
     let (m, n) = (a.degree.0 as u64, b.degree.0 as u64);
     let d = 2 * m * n + 1;
     let size = 2 * m.max(n) + 2;
+    let roots = (m * n).saturating_pow(3);
     (
-        d * size.pow(3) * (a.dim as u64 + 1) + d.pow(3),
+        (d * size.pow(3) * (a.dim as u64 + 1) + d.pow(3))
+            .saturating_mul(roots)
+            .div_ceil(4096),
         (a.bits + b.bits + 64).saturating_mul(m + n),
     )
 }
@@ -67,7 +73,7 @@ fn intersect_cost(a: &Size, b: &Size) -> (u64, u64) {
 /// `(n + 1)²` operations per coordinate.
 fn filter_cost(a: &Size, b: &Size) -> u64 {
     let split = |s: &Size| (s.degree.0 as u64 + 1).pow(2) * (s.dim as u64 + 1);
-    16 * 1024 * 2 * (split(a) + split(b))
+    (16 * 1024 * 2 * (split(a) + split(b))).div_ceil(64)
 }
 
 /// Read one curve from `path`.
@@ -139,7 +145,7 @@ fn run_f64(
         ));
     };
     let tol = a.tol.unwrap_or(1e-9);
-    limits::charge("intersect", ops)?;
+    limits::charge("intersect", limits::f64_work(ops))?;
     let as_f64 = |c: &RationalCurve<BigRational>| match patch_f64(&Patch::Curve(c.clone()))? {
         Patch::Curve(c) => Ok(c),
         _ => unreachable!("a curve maps to a curve"),

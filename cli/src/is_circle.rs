@@ -24,7 +24,10 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         let d1 = s.dim as u64 + 1;
         // Cleared denominators: up to one factor per stored number.
         let cleared = s.bits.saturating_mul(n1 * d1);
-        (4 * n1 * n1 * d1, cleared.saturating_mul(2))
+        // Integer arithmetic on the cleared net, most of it on the small
+        // coefficients: (n+1)²(d+1)/64 operations (calibrated,
+        // `cli/benches/cost_model.rs`).
+        ((n1 * n1 * d1).div_ceil(64), cleared.saturating_mul(2))
     })?;
     let values = patches
         .iter()

@@ -37,9 +37,11 @@ fn one_curve(path: &str) -> Result<Patch<BigRational>, Error> {
 pub fn run(a: &Args) -> Result<Value, Error> {
     check_tol(a.tol)?;
     let (p, q) = (one_curve(&a.first)?, one_curve(&a.second)?);
-    // End derivatives up to order 2 and a few products of them.
+    // End derivatives up to order 2 and a few products of them: 3
+    // evaluations' operations, 16 each as for `deriv` (calibrated,
+    // `cli/benches/cost_model.rs`).
     charge_each("join", &[p.clone(), q.clone()], a.scalar, |s| {
-        (3 * s.eval_ops(), s.bits.saturating_mul(8))
+        (48 * s.eval_ops(), s.bits.saturating_mul(8))
     })?;
     match a.scalar {
         ScalarKind::Exact => join_with(&p, &q, Tolerance::EXACT),

@@ -48,11 +48,13 @@ pub struct Args {
 pub fn run(a: &Args) -> Result<Value, Error> {
     check_tol(a.tol)?;
     let patches = load(&a.file)?;
-    // Recursions over the net (least squares: a dense (n+1)² system).
+    // Recursions over the net (least squares: a dense (n+1)² system),
+    // mostly on small numbers: (n+1)³(d+1)/32 operations (calibrated,
+    // `cli/benches/cost_model.rs`).
     charge_each("reduce", &patches, a.scalar, |s| {
         let n1 = s.total_degree() + 1;
         (
-            n1 * n1 * n1 * (s.dim as u64 + 1),
+            (n1 * n1 * n1 * (s.dim as u64 + 1)).div_ceil(32),
             s.grown_bits(2 * n1, s.bits),
         )
     })?;

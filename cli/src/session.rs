@@ -91,10 +91,13 @@ fn parse_and_run(args: Vec<String>, nested: bool) -> (i32, Option<String>, u64) 
     let pretty = cli.pretty;
     let run = |command| {
         let before = limits::charged();
-        let result = dispatch(command).and_then(|r| match r {
-            Ok(v) => check_finite(&v).map(|()| Ok(v)),
-            Err(code) => Ok(Err(code)),
-        });
+        let result = limits::charge("the command", limits::COMMAND_WORK);
+        let result = result
+            .and_then(|()| dispatch(command))
+            .and_then(|r| match r {
+                Ok(v) => check_finite(&v).map(|()| Ok(v)),
+                Err(code) => Ok(Err(code)),
+            });
         (result, limits::charged() - before)
     };
     let (result, work) = if nested {

@@ -101,14 +101,15 @@ impl PatchOp for Reparam {
 
     /// Möbius: one evaluation's work. Quadratic: every coefficient of the
     /// (N, N) result (N = m + n) sums over the whole net, on numbers grown
-    /// by 2N parameter factors.
+    /// by 2N parameter factors, 8 operations a term (calibrated,
+    /// `cli/benches/cost_model.rs`).
     fn cost(&self, s: &Size, param_bits: u64) -> (u64, u64) {
         if !self.quadratic {
             return (s.eval_ops(), s.grown_bits(s.total_degree(), param_bits));
         }
         let (m, n) = (s.degree.0 as u64, s.degree.1 as u64);
         let big = m + n + 1;
-        let ops = big * big * (m + 1) * (n + 1) * (s.dim as u64 + 1);
+        let ops = 8 * big * big * (m + 1) * (n + 1) * (s.dim as u64 + 1);
         (ops, s.grown_bits(2 * (m + n), param_bits))
     }
 
@@ -199,7 +200,10 @@ fn elevate_each<T: ExactScalar>(
     charge_each("elevate", patches, ScalarKind::Exact, |s| {
         let (r, t) = (by[0], by.get(1).copied().unwrap_or(0));
         let (m, n) = (s.degree.0 + r, s.degree.1 + t);
-        let ops = ((m + 1) * (n + 1) * (m + n + 2) * (s.dim + 1)) as u64;
+        // Every new coefficient a fresh fraction with binomial
+        // denominators, written out: 16 operations a term (calibrated,
+        // `cli/benches/cost_model.rs`).
+        let ops = 16 * ((m + 1) * (n + 1) * (m + n + 2) * (s.dim + 1)) as u64;
         (ops, s.bits + 2 * (m + n) as u64)
     })?;
     let out = patches
