@@ -12,16 +12,21 @@
 //!   parsers' caps ([`MAX_STEP_STATEMENT`], [`MAX_STEP_DEPTH`],
 //!   [`MAX_ALGEBRAIC_TEXT`], [`MAX_ALGEBRAIC_DEPTH`],
 //!   [`MAX_ALGEBRAIC_EXPONENT`]).
-//! - **Exact work**: a cost model, [`exact_work`]: `ops × (2 + S/64)²` word
-//!   operations for `ops` rational operations on numbers of `S` bits (a
+//! - **Exact work**: a cost model, [`exact_work`]: `ops × (2 + S/64)²`
+//!   units for `ops` rational operations on numbers of `S` bits (a
 //!   rational `+`/`×` reduces by a gcd, quadratic in the size). Each command
 //!   estimates `ops` and `S` from the degree, the dimension and the bit size
 //!   of its numbers and parameters, and [`charge`]s it against
-//!   [`Limits::max_work`] before computing.
+//!   [`Limits::max_work`] before computing, besides a fixed
+//!   [`COMMAND_WORK`] and its input's bytes ([`charge_input`]). The
+//!   commands' constant factors are calibrated by
+//!   `cli/benches/cost_model.rs` so that a unit is about the same time for
+//!   every command (about 7 ns in a release build on the reference
+//!   machine).
 //! - **f64 work and output size**: sample and vertex counts of `plot` and
 //!   `mesh` ([`MAX_PLOT_POINTS`], [`MAX_PIXELS`], [`MAX_MESH_VERTICES`],
 //!   [`MAX_DENSITY`], [`MAX_DOCUMENT_POINTS`]), charged by the same counter
-//!   with `S = 0`.
+//!   ([`f64_work`]).
 //!
 //! The limits are per thread ([`with_limits`]): the command line sets them
 //! from `--max-digits`, `--max-input-bytes` and `--max-work`. No limit turns

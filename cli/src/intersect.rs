@@ -50,21 +50,26 @@ pub struct Args {
 /// Estimated `(operations, bits)` of the exact elimination for curves of
 /// degrees `m`, `n`: `D + 1 = 2mn + 1` Sylvester determinants of size
 /// `2n`, Sturm isolation of a degree-`D` polynomial (`D³`), on numbers of
-/// about `(m + n)·bits` bits — times `(mn)³/4096` for the roots found, each
-/// an algebraic number of degree up to `mn` refined and substituted
-/// (calibrated, `cli/benches/cost_model.rs`: two cubics take 5 ms, two
-/// sextics 35 s).
+/// about `(m + n)·bits` bits. The `f64` search is charged these operations
+/// ([`limits::f64_work`]).
 fn intersect_cost(a: &Size, b: &Size) -> (u64, u64) {
     let (m, n) = (a.degree.0 as u64, b.degree.0 as u64);
     let d = 2 * m * n + 1;
     let size = 2 * m.max(n) + 2;
-    let roots = (m * n).saturating_pow(3);
     (
-        (d * size.pow(3) * (a.dim as u64 + 1) + d.pow(3))
-            .saturating_mul(roots)
-            .div_ceil(4096),
+        d * size.pow(3) * (a.dim as u64 + 1) + d.pow(3),
         (a.bits + b.bits + 64).saturating_mul(m + n),
     )
+}
+
+/// The exact work of the elimination: [`intersect_cost`]'s operations times
+/// `(mn)³/4096` for the roots, each an algebraic number of degree up to
+/// `mn` isolated, refined and substituted (calibrated,
+/// `cli/benches/cost_model.rs`: two cubics take 5 ms, two sextics 35 s).
+fn exact_cost(a: &Size, b: &Size) -> u64 {
+    let (ops, bits) = intersect_cost(a, b);
+    let roots = (a.degree.0 as u64 * b.degree.0 as u64).saturating_pow(3);
+    limits::exact_work(ops.saturating_mul(roots).div_ceil(4096), bits)
 }
 
 /// The work of the interval stage of `--filtered` (charged before it
@@ -92,7 +97,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         Patch::Curve(ca.clone()).size(),
         Patch::Curve(other.clone()).size(),
     );
-    let (ops, bits) = intersect_cost(&sa, &sb);
+    let (ops, _) = intersect_cost(&sa, &sb);
     match a.scalar {
         ScalarKind::F64 => run_f64(a, &ca, cb.as_ref(), ops),
         ScalarKind::Exact => {
@@ -117,7 +122,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
                     return Ok(certified_json(&found));
                 }
             }
-            limits::charge("intersect", limits::exact_work(ops, bits))?;
+            limits::charge("intersect", exact_cost(&sa, &sb))?;
             let found = intersect(&ca, cb.as_ref(), Options::default())?;
             let mut v = to_json(&found.exact().expect("the exact elimination decides"));
             if a.filtered {
