@@ -21,7 +21,7 @@
 //!   [`COMMAND_WORK`] and its input's bytes ([`charge_input`]). The
 //!   commands' constant factors are calibrated by
 //!   `cli/benches/cost_model.rs` so that a unit is about the same time for
-//!   every command (about 7 ns in a release build on the reference
+//!   every command (about 8 ns in a release build on the reference
 //!   machine).
 //! - **f64 work and output size**: sample and vertex counts of `plot` and
 //!   `mesh` ([`MAX_PLOT_POINTS`], [`MAX_PIXELS`], [`MAX_MESH_VERTICES`],
@@ -110,7 +110,7 @@ pub struct Limits {
 impl Limits {
     /// The defaults: 1 000 digits, 64 MiB, 10¹⁰ work units — about a
     /// minute in a release build on the reference machine (a unit is about
-    /// 7 ns of CPU time there; `docs/limits.md` has the calibration).
+    /// 8 ns of CPU time there; `docs/limits.md` has the calibration).
     pub const DEFAULT: Limits = Limits {
         max_digits: 1_000,
         max_input_bytes: 64 << 20,
