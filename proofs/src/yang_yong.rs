@@ -76,11 +76,11 @@ fn for_all_bidegrees(
     claim: &str,
     source: &str,
     expected: Verdict,
-    check: impl Fn(usize, usize) -> Option<String>,
+    check: impl Fn(usize, usize) -> Option<String> + Sync,
 ) -> Claim {
-    let failure = bidegrees(max)
-        .into_iter()
-        .find_map(|(m, n)| check(m, n).map(|why| format!("(m, n) = ({m}, {n}): {why}")));
+    let failure = super::first_failure(&bidegrees(max), |&(m, n)| {
+        check(m, n).map(|why| format!("(m, n) = ({m}, {n}): {why}"))
+    });
     let holds = failure.is_none();
     Claim::check(
         &format!("{claim} — checked for every 1 ≤ m, n ≤ {max}"),
@@ -177,7 +177,7 @@ fn weight_rule() -> Claim {
 
 /// (4) with the factor of entry (i, j) given by `factor(i, j, m, n)` (the
 /// tests feed wrong ones through the same code).
-fn weight_rule_with(factor: impl Fn(usize, usize, usize, usize) -> Poly) -> Claim {
+fn weight_rule_with(factor: impl Fn(usize, usize, usize, usize) -> Poly + Sync) -> Claim {
     for_all_bidegrees(
         MAX,
         "weight rule (4): after (2)(3) ω̃_{i,j} = ω_{i,j}(1−α)^i α^{m−i}(1−β)^j β^{n−j}, points P_{i,j} unchanged",
@@ -401,14 +401,10 @@ fn weight_net(m: usize, n: usize) -> RectPatch<Poly> {
     RectPatch::from_hom(ctrl).expect("a symbolic net")
 }
 
-/// `Σ_k c_k·x_k` with rational `c_k`, summed pairwise by `Poly`'s balanced
-/// `Sum` (a left fold re-merges the growing accumulator at every step).
+/// `Σ_k c_k·x_k` with rational `c_k`: one merge over a common denominator
+/// ([`Poly::linear_combination`]).
 fn combination(x: &[Poly], c: &[BigRational]) -> Poly {
-    x.iter()
-        .zip(c)
-        .filter(|(p, k)| !p.is_zero() && !k.is_zero())
-        .map(|(p, k)| p.scale(k))
-        .sum()
+    Poly::linear_combination(x.iter().zip(c))
 }
 
 /// The corner weights printed before (18) (bicubic), generalized:

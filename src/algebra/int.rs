@@ -72,11 +72,9 @@ impl Int {
     /// small, Lehmer's algorithm ([`crate::algebra::gcd`]) otherwise.
     pub fn gcd(&self, other: &Int) -> Int {
         if let (Int::Small(x), Int::Small(y)) = (self, other) {
-            let (mut x, mut y) = (x.unsigned_abs(), y.unsigned_abs());
-            while y != 0 {
-                (x, y) = (y, x % y);
-            }
-            if let Ok(g) = i128::try_from(x) {
+            // Binary gcd: no 128-bit division (the bulk of a normalization).
+            let g = crate::algebra::gcd::gcd_u128(x.unsigned_abs(), y.unsigned_abs());
+            if let Ok(g) = i128::try_from(g) {
                 return Int::Small(g);
             }
         }

@@ -51,7 +51,7 @@ mod terms;
 
 use monomial::Monomial;
 use packed::Packing;
-use terms::{content_with, divide, is_negative, is_one, mul, Terms};
+use terms::{content_with, divide, is_negative, is_one, mul, sum_scaled, Terms};
 
 /// The process-wide table of variable names; a variable's id is its index.
 #[derive(Default)]
@@ -387,6 +387,50 @@ impl Poly {
         Poly::normalized(terms, mul(&self.den, &Int::from_ref(q.denom())))
     }
 
+    /// The linear combination `Σ q_k·p_k` of polynomials `p_k` with rational
+    /// factors `q_k`: every part brought to the common denominator
+    /// `L = lcm(den(p_k)·den(q_k))`, then one k-way merge and one
+    /// normalization (a sum of scaled copies normalizes each copy and each
+    /// partial sum).
+    ///
+    /// ```
+    /// use exact_bezier::{Poly, ratio};
+    /// use exact_bezier::BigRational;
+    /// let (x, y) = (Poly::var("x"), Poly::var("y"));
+    /// let (a, b): (BigRational, BigRational) = (ratio(1, 2), ratio(-2, 3));
+    /// let p = x.clone() + &y;
+    /// assert_eq!(Poly::linear_combination([(&p, &a), (&y, &b)]), x * ratio::<Poly>(1, 2) - y * ratio::<Poly>(1, 6));
+    /// ```
+    pub fn linear_combination<'a>(
+        parts: impl IntoIterator<Item = (&'a Poly, &'a BigRational)>,
+    ) -> Poly {
+        let parts = parts
+            .into_iter()
+            .filter(|(p, q)| !p.is_zero() && !q.is_zero())
+            .map(|(p, q)| {
+                let den = mul(&p.den, &Int::from_ref(q.denom()));
+                (&p.terms, Int::from_ref(q.numer()), den)
+            })
+            .collect();
+        Poly::combine(parts)
+    }
+
+    /// `Σ (n_k/d_k)·t_k` for term lists `t_k`, integers `n_k ≠ 0` and
+    /// `d_k > 0`: over `L = lcm(d_k)`, each list scaled by `n_k·L/d_k`.
+    /// (Packing the lists for the merge costs more than it saves: the merge
+    /// touches each term once, packing and unpacking touch it twice.)
+    fn combine(parts: Vec<(&Terms, Int, Int)>) -> Poly {
+        let lcm = parts.iter().fold(Int::Small(1), |l, (_, _, d)| {
+            let g = l.gcd(d);
+            mul(&l, &d.div_exact(&g))
+        });
+        let scaled: Vec<(&Terms, Int)> = parts
+            .into_iter()
+            .map(|(t, n, d)| (t, mul(&n, &lcm.div_exact(&d))))
+            .collect();
+        Poly::normalized(sum_scaled(&scaled), lcm)
+    }
+
     /// The terms as `(variables with exponents, coefficient)`, in the
     /// canonical (monomial) order.
     pub fn terms(&self) -> impl Iterator<Item = (Vec<(String, u32)>, BigRational)> + '_ {
@@ -526,9 +570,11 @@ impl Neg for Poly {
     }
 }
 
-/// Balanced pairwise summation: adding k polynomials of N terms in all
-/// costs O(N log k) term moves, where a left fold `acc + p` costs O(N k)
-/// (every addition merges the whole accumulator).
+/// The sum of many polynomials at once ([`Poly::linear_combination`] with
+/// factors 1): adding k polynomials of N terms in all costs one k-way merge,
+/// O(N log k) comparisons and N term moves, and one normalization, where a
+/// left fold `acc + p` costs O(N k) (every addition merges the whole
+/// accumulator).
 ///
 /// ```
 /// use exact_bezier::Poly;
@@ -538,18 +584,13 @@ impl Neg for Poly {
 /// ```
 impl std::iter::Sum for Poly {
     fn sum<I: Iterator<Item = Poly>>(iter: I) -> Poly {
-        let mut level: Vec<Poly> = iter.collect();
-        while level.len() > 1 {
-            let mut pairs = level.into_iter();
-            level = Vec::new();
-            while let Some(a) = pairs.next() {
-                level.push(match pairs.next() {
-                    Some(b) => a + b,
-                    None => a,
-                });
-            }
-        }
-        level.pop().unwrap_or_else(Poly::zero)
+        let polys: Vec<Poly> = iter.filter(|p| !p.is_zero()).collect();
+        Poly::combine(
+            polys
+                .iter()
+                .map(|p| (&p.terms, Int::Small(1), p.den.clone()))
+                .collect(),
+        )
     }
 }
 
@@ -564,6 +605,9 @@ impl Scalar for Poly {
     }
     fn pow_u32(&self, e: u32) -> Self {
         self.pow(e)
+    }
+    fn sum_of(parts: Vec<Self>) -> Self {
+        parts.into_iter().sum()
     }
 }
 
@@ -785,6 +829,38 @@ mod tests {
                     );
                     prop_assert_eq!(x.clone() * y, merged);
                 }
+            }
+
+            #[test]
+            fn merged_sums_match_pairwise_addition(
+                parts in proptest::collection::vec((poly(), -9i64..=9, 1i64..=6), 0..7),
+                k in 0u32..40,
+            ) {
+                // The k-way merge against a left fold of two-way merges
+                // (`add_signed`), with parts scaled by 7^k (past i128).
+                let big = Poly::from_int(7).pow(k);
+                let parts: Vec<(Poly, BigRational)> = parts
+                    .into_iter()
+                    .map(|(p, n, d)| (p * &big, ratio(n, d)))
+                    .collect();
+                let folded = parts
+                    .iter()
+                    .fold(Poly::zero(), |acc, (p, q)| acc + &p.scale(q));
+                let merged = Poly::linear_combination(parts.iter().map(|(p, q)| (p, q)));
+                prop_assert_eq!(&merged, &folded);
+                let plain = parts.iter().fold(Poly::zero(), |acc, (p, _)| acc + p);
+                // The merge on unpacked monomials (the wide-exponent route).
+                let lcm = parts.iter().fold(Int::Small(1), |l, (p, _)| {
+                    let g = l.gcd(&p.den);
+                    mul(&l, &p.den.div_exact(&g))
+                });
+                let lists: Vec<(&Terms, Int)> = parts
+                    .iter()
+                    .filter(|(p, _)| !p.is_zero())
+                    .map(|(p, _)| (&p.terms, lcm.div_exact(&p.den)))
+                    .collect();
+                prop_assert_eq!(&Poly::normalized(sum_scaled(&lists), lcm), &plain);
+                prop_assert_eq!(parts.into_iter().map(|(p, _)| p).sum::<Poly>(), plain);
             }
 
             #[test]

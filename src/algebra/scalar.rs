@@ -182,6 +182,14 @@ pub trait Scalar: Ring + MulAcc {
     fn pow_u32(&self, e: u32) -> Self {
         pow(self, e)
     }
+
+    /// The sum of `parts` (`0` for none). The default adds them left to
+    /// right, `((0 + p₀) + p₁) + …` (so `f64` rounds as a loop would); an
+    /// exact type may take a faster route to the same value (`Poly` merges
+    /// all the parts at once).
+    fn sum_of(parts: Vec<Self>) -> Self {
+        parts.into_iter().fold(Self::zero(), |acc, x| acc + x)
+    }
 }
 
 /// A [`Scalar`] with division: exact rationals and `f64`.
@@ -444,5 +452,15 @@ mod tests {
         assert_eq!(3.0_f64.pow_u32(5), 243.0);
         assert_eq!(ratio::<BigRational>(2, 3).pow_u32(3), ratio(8, 27));
         assert_eq!(ratio::<BigRational>(2, 3).pow_u32(0), ratio(1, 1));
+    }
+
+    #[test]
+    fn default_sum_adds_left_to_right() {
+        // (1e16 + 1) rounds back to 1e16 in f64, so the left fold gives 0;
+        // any other order (1e16 − 1e16 first) would give 1.
+        assert_eq!(f64::sum_of(vec![1e16, 1.0, -1e16]), 0.0);
+        assert_eq!(f64::sum_of(Vec::new()), 0.0);
+        let parts = vec![ratio::<BigRational>(1, 2), ratio(1, 3), ratio(1, 6)];
+        assert_eq!(BigRational::sum_of(parts), ratio(1, 1));
     }
 }

@@ -180,15 +180,21 @@ impl<T: Scalar> RectPatch<T> {
             .map(|k1| {
                 (0..=d)
                     .map(|k2| {
-                        let mut acc = HPoint::zero(self.dim());
+                        // Per coordinate, the terms summed at once (Scalar::sum_of).
+                        let mut parts: Vec<Vec<T>> = vec![Vec::new(); self.dim() + 1];
                         for (i, row) in self.ctrl().iter().enumerate() {
                             for (j, h) in row.iter().enumerate() {
                                 if let (Some(a), Some(b)) = (&sp[i][j][k1], &tp[i][j][k2]) {
-                                    acc = acc.add(&h.scale(&(a.clone() * b)));
+                                    let f = a.clone() * b;
+                                    for (part, x) in parts.iter_mut().zip(&h.coords) {
+                                        part.push(x.clone() * &f);
+                                    }
                                 }
                             }
                         }
-                        acc
+                        HPoint {
+                            coords: parts.into_iter().map(T::sum_of).collect(),
+                        }
                     })
                     .collect()
             })

@@ -67,12 +67,16 @@ impl Packing {
     /// The variables of `lists` (sorted ids) and, per variable, the
     /// largest exponent in each list summed over the lists, times `k`.
     pub(crate) fn for_product(lists: &[&Terms], k: u64) -> Option<Packing> {
-        let mut vars: Vec<u32> = lists
-            .iter()
-            .flat_map(|t| t.iter().flat_map(|(m, _)| m.factors().map(|(v, _)| v)))
-            .collect();
-        vars.sort_unstable();
-        vars.dedup();
+        // The few distinct ids, kept sorted as they come (sorting every
+        // factor of every term first cost more than the product itself).
+        let mut vars: Vec<u32> = Vec::new();
+        for (m, _) in lists.iter().flat_map(|t| t.iter()) {
+            for (v, _) in m.factors() {
+                if let Err(at) = vars.binary_search(&v) {
+                    vars.insert(at, v);
+                }
+            }
+        }
         let mut max = vec![0u64; vars.len()];
         for t in lists {
             let mut top = vec![0u64; vars.len()];

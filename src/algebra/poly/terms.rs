@@ -7,7 +7,8 @@
 //! never allocate and never take a gcd.
 //!
 //! - sum: one linear merge (`a·fa + b·fb`, the scale factors bring two
-//!   polynomials to a common denominator);
+//!   polynomials to a common denominator); a sum of many: one k-way heap
+//!   merge of all the lists;
 //! - product: Johnson's heap merge of the `|b|` sorted streams `a·b_j`
 //!   (each stream is sorted because the order is multiplicative), so equal
 //!   monomials meet in the heap and are summed at once — no map, no sort.
@@ -97,6 +98,44 @@ pub(crate) fn add(a: &Terms, fa: &Int, b: &Terms, fb: &Int) -> Terms {
     }
     out.extend(a[i..].iter().map(|(m, c)| (m.clone(), times(c, fa))));
     out.extend(b[j..].iter().map(|(m, c)| (m.clone(), times(c, fb))));
+    out
+}
+
+/// `Σ f_k·t_k` (every `f_k` non-zero) by one k-way heap merge of the
+/// sorted lists `t_k`: each input term moves once, where a balanced tree of
+/// two-way merges moves it `log₂ k` times and normalizes every partial sum.
+pub(crate) fn sum_scaled(parts: &[(&Terms, Int)]) -> Terms {
+    // Heap of (next monomial of list k, k, index i into list k), min first.
+    let mut heap: BinaryHeap<Reverse<(&Monomial, usize, usize)>> = parts
+        .iter()
+        .enumerate()
+        .filter_map(|(k, (t, _))| t.first().map(|(m, _)| Reverse((m, k, 0))))
+        .collect();
+    let mut out: Terms = Vec::with_capacity(parts.iter().map(|(t, _)| t.len()).sum());
+    while let Some(mut top) = heap.peek_mut() {
+        let Reverse((m, k, i)) = &mut *top;
+        let (m0, k, i0) = (*m, *k, *i);
+        let (t, f) = &parts[k];
+        let c = if is_one(f) {
+            t[i0].1.clone()
+        } else {
+            mul(&t[i0].1, f)
+        };
+        if let Some((next, _)) = t.get(i0 + 1) {
+            (*m, *i) = (next, i0 + 1);
+            drop(top);
+        } else {
+            std::collections::binary_heap::PeekMut::pop(top);
+        }
+        match out.last_mut() {
+            Some((last, acc)) if last == m0 => *acc = std::mem::replace(acc, Int::Small(0)) + &c,
+            _ => {
+                drop_zero_last(&mut out);
+                out.push((m0.clone(), c));
+            }
+        }
+    }
+    drop_zero_last(&mut out);
     out
 }
 
