@@ -508,12 +508,12 @@ fn analytic_pieces_satisfy_the_closed_forms_of_their_entities() {
 #[test]
 fn brep_audit_classifies_edges_as_the_independent_counter() {
     use exact_bezier::audit::brep::ToleranceSource;
-    use exact_bezier::audit::brep::{audit_brep, default_angle_tolerance, EdgeClass};
+    use exact_bezier::audit::brep::{audit_brep_topology, default_angle_tolerance, EdgeClass};
     let text = std::fs::read_to_string(format!("{}/counts.json", dir())).unwrap();
     let counts: Value = serde_json::from_str(&text).unwrap();
     for (name, want) in counts.as_object().unwrap() {
         let m = read(name, false);
-        let a = audit_brep(&m, None, default_angle_tolerance());
+        let a = audit_brep_topology(&m, None, default_angle_tolerance());
         let uses = &want["edge_uses"];
         for c in [
             EdgeClass::Shared,
