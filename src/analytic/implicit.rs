@@ -116,7 +116,9 @@ impl<T: Scalar> Implicit<T> {
                 let r = radius.clone() + &(slope.clone() * &h);
                 rho2 - &(r.clone() * &r)
             }
-            Implicit::Sphere { radius, .. } => rho2 + &(h.clone() * &h) - &(radius.clone() * radius),
+            Implicit::Sphere { radius, .. } => {
+                rho2 + &(h.clone() * &h) - &(radius.clone() * radius)
+            }
             Implicit::Torus { major, minor, .. } => {
                 let big = major.clone() * major;
                 let s = rho2.clone() + &(h.clone() * &h) + &big - &(minor.clone() * minor);
@@ -152,6 +154,4 @@ impl<T: Scalar> Implicit<T> {
             &scale(&f.z, &gh),
         )
     }
-
 }
-

@@ -413,7 +413,10 @@ impl BrepAudit {
         let why = if not_measured.is_empty() {
             String::new()
         } else {
-            let list: Vec<String> = not_measured.iter().map(|(w, k)| format!("{k} {w}")).collect();
+            let list: Vec<String> = not_measured
+                .iter()
+                .map(|(w, k)| format!("{k} {w}"))
+                .collect();
             format!(" ({})", list.join("; "))
         };
         format!(

@@ -109,7 +109,10 @@ fn lies_on(pieces: &[Curve], f: &Implicit<RealAlgebraic>) -> Result<bool, Error>
 /// `j/m`, `j = 0…m`, charged.
 fn sample_params(m: usize) -> Result<Vec<RealAlgebraic>, Error> {
     let m = m.max(1);
-    limits::charge("an exact test along an edge", EXACT_POINT_WORK * (m as u64 + 1))?;
+    limits::charge(
+        "an exact test along an edge",
+        EXACT_POINT_WORK * (m as u64 + 1),
+    )?;
     Ok((0..=m)
         .map(|j| RealAlgebraic::from_i64(j as i64) / &RealAlgebraic::from_i64(m as i64))
         .collect())
@@ -166,7 +169,8 @@ fn around(curve: &ICurve, surfaces: &[ISurface; 2], t: Interval) -> Result<Optio
         return Ok(None);
     };
     let dt = t.sub(&m);
-    let signed = |mid: &Distance, over: &Distance| mid.signed.add(&dot(&over.normal, &co.dx).mul(&dt));
+    let signed =
+        |mid: &Distance, over: &Distance| mid.signed.add(&dot(&over.normal, &co.dx).mul(&dt));
     Ok(Some(Around {
         signed: [signed(&m0, &o0), signed(&m1, &o1)],
         mid: [m0, m1],
@@ -181,7 +185,10 @@ fn length(v: &[Interval]) -> Interval {
 /// The angle between the oriented normals.
 fn angle_bound(a: &Around, signs: [Interval; 2]) -> Bound {
     let angle = |d: &[Distance; 2]| {
-        let (n1, n2) = (scale(&d[0].normal, &signs[0]), scale(&d[1].normal, &signs[1]));
+        let (n1, n2) = (
+            scale(&d[0].normal, &signs[0]),
+            scale(&d[1].normal, &signs[1]),
+        );
         polar_angle(&length(&cross(&n1, &n2)), &dot(&n1, &n2))
     };
     Bound {
@@ -203,7 +210,15 @@ fn gap_bound(a: &Around, k: usize) -> Bound {
 /// gap less the other's maximum.
 fn face_gap(gap: &[Measure; 2]) -> Measure {
     let value = |m: &Measure| match m {
-        Measure::Exact => Some((Enclosure { lo: 0.0, hi: 0.0, at: Interval { lo: 0.0, hi: 1.0 }, tight: true }, 0)),
+        Measure::Exact => Some((
+            Enclosure {
+                lo: 0.0,
+                hi: 0.0,
+                at: Interval { lo: 0.0, hi: 1.0 },
+                tight: true,
+            },
+            0,
+        )),
         Measure::Enclosed { value, piece } => Some((*value, *piece)),
         Measure::Unproved => None,
     };
@@ -214,7 +229,12 @@ fn face_gap(gap: &[Measure; 2]) -> Measure {
             let lo = (a.lo - b.hi).max(b.lo - a.hi).max(0.0);
             let hi = Interval::point(a.hi).add(&Interval::point(b.hi)).hi;
             Measure::Enclosed {
-                value: Enclosure { lo, hi, at: big.at, tight: a.tight && b.tight },
+                value: Enclosure {
+                    lo,
+                    hi,
+                    at: big.at,
+                    tight: a.tight && b.tight,
+                },
                 piece,
             }
         }
@@ -231,9 +251,12 @@ fn along(
 ) -> Result<Measure, Error> {
     let mut best: Option<(Enclosure, usize)> = None;
     for (k, c) in curves.iter().enumerate() {
-        let e = maximize_until(Interval { lo: 0.0, hi: 1.0 }, target, |u| u < enough, |t| {
-            Ok(around(c, surfaces, t)?.map(|a| f(&a)))
-        })?;
+        let e = maximize_until(
+            Interval { lo: 0.0, hi: 1.0 },
+            target,
+            |u| u < enough,
+            |t| Ok(around(c, surfaces, t)?.map(|a| f(&a))),
+        )?;
         best = Some(match best {
             Some((b, i)) if b.hi >= e.hi => (b.max(e), i),
             Some((b, _)) => (e.max(b), k),
@@ -362,18 +385,37 @@ fn measure_capped(
     if pieces.is_empty() {
         return Err(Error::Shape("an edge with no curve pieces".into()));
     }
-    let curves = pieces.iter().map(ICurve::new).collect::<Result<Vec<_>, _>>()?;
+    let curves = pieces
+        .iter()
+        .map(ICurve::new)
+        .collect::<Result<Vec<_>, _>>()?;
     let surfaces = faces.clone().map(|f| ISurface::new(f.surface));
     let [Some(s0), Some(s1)] = surfaces else {
-        return Err(Error::Domain("a torus whose minor radius is not below its major radius".into()));
+        return Err(Error::Domain(
+            "a torus whose minor radius is not below its major radius".into(),
+        ));
     };
     let surfaces = [s0, s1];
-    let signs = faces.clone().map(|f| Interval::point(if f.same_sense { 1.0 } else { -1.0 }));
+    let signs = faces
+        .clone()
+        .map(|f| Interval::point(if f.same_sense { 1.0 } else { -1.0 }));
     // Refined to 10⁻³ relative or a hundredth of the tolerance, or until
     // below a third of it (the two gaps' sum bounds the face gap).
     let length = match tol.length {
-        Some(t) => (Target { rel: 1e-3, abs: t.lo / 100.0 }, t.lo / 3.0),
-        None => (Target { rel: 1e-3, abs: 1e-12 }, 0.0),
+        Some(t) => (
+            Target {
+                rel: 1e-3,
+                abs: t.lo / 100.0,
+            },
+            t.lo / 3.0,
+        ),
+        None => (
+            Target {
+                rel: 1e-3,
+                abs: 1e-12,
+            },
+            0.0,
+        ),
     };
     let angular = (
         Target {
@@ -394,7 +436,9 @@ fn measure_capped(
     let angle = match within_cap(exact_angle(pieces, faces))? {
         Some(Some(true)) => Measure::Exact,
         Some(Some(false)) => fold(),
-        Some(None) => settle(along(&curves, &surfaces, angular, |a| angle_bound(a, signs)))?,
+        Some(None) => settle(along(&curves, &surfaces, angular, |a| {
+            angle_bound(a, signs)
+        }))?,
         None => Measure::Unproved,
     };
     Ok(JointMeasures {
@@ -440,7 +484,11 @@ mod tests {
     /// face and on the second, and the faces meet at atan(10⁻⁵) rad.
     fn gap_and_kink(same_sense: bool, t: &JointTolerances) -> JointMeasures {
         let floor = Implicit::Plane {
-            frame: Frame::from_axes(v((0, 1), (0, 1), (0, 1)), v((1, 1), (0, 1), (0, 1)), v((0, 1), (0, 1), (1, 1))),
+            frame: Frame::from_axes(
+                v((0, 1), (0, 1), (0, 1)),
+                v((1, 1), (0, 1), (0, 1)),
+                v((0, 1), (0, 1), (1, 1)),
+            ),
         };
         let tilted = Implicit::Plane {
             frame: Frame::from_placement(
@@ -456,8 +504,14 @@ mod tests {
         ])
         .unwrap();
         let faces = [
-            JointFace { surface: &floor, same_sense: true },
-            JointFace { surface: &tilted, same_sense },
+            JointFace {
+                surface: &floor,
+                same_sense: true,
+            },
+            JointFace {
+                surface: &tilted,
+                same_sense,
+            },
         ];
         measure_joint(&[edge], &faces, t).unwrap()
     }
@@ -499,29 +553,65 @@ mod tests {
     /// line x = 2, y = 0 (tangent: angle exactly 0).
     #[test]
     fn exact_paths_on_a_cylinder() {
-        let axes = Frame::from_axes(v((0, 1), (0, 1), (0, 1)), v((1, 1), (0, 1), (0, 1)), v((0, 1), (0, 1), (1, 1)));
-        let cylinder = Implicit::Cylinder { frame: axes.clone(), radius: q(2, 1) };
-        let floor = Implicit::Plane { frame: axes.clone() };
+        let axes = Frame::from_axes(
+            v((0, 1), (0, 1), (0, 1)),
+            v((1, 1), (0, 1), (0, 1)),
+            v((0, 1), (0, 1), (1, 1)),
+        );
+        let cylinder = Implicit::Cylinder {
+            frame: axes.clone(),
+            radius: q(2, 1),
+        };
+        let floor = Implicit::Plane {
+            frame: axes.clone(),
+        };
         let rim = circle(&axes, &q(2, 1));
         let faces = [
-            JointFace { surface: &cylinder, same_sense: true },
-            JointFace { surface: &floor, same_sense: false },
+            JointFace {
+                surface: &cylinder,
+                same_sense: true,
+            },
+            JointFace {
+                surface: &floor,
+                same_sense: false,
+            },
         ];
         let m = measure_joint(&rim, &faces, &tol(1e-6, 1e-6)).unwrap();
-        assert_eq!((m.gap, m.face_gap, m.g0), ([Measure::Exact; 2], Measure::Exact, Verdict::Exact));
+        assert_eq!(
+            (m.gap, m.face_gap, m.g0),
+            ([Measure::Exact; 2], Measure::Exact, Verdict::Exact)
+        );
         let a = enclosed(m.angle);
         let right = std::f64::consts::FRAC_PI_2;
-        assert!(a.lo <= right && right <= a.hi && a.hi - a.lo < 1e-3 * right, "{a:?}");
+        assert!(
+            a.lo <= right && right <= a.hi && a.hi - a.lo < 1e-3 * right,
+            "{a:?}"
+        );
 
         let side = Implicit::Plane {
-            frame: Frame::from_axes(v((2, 1), (0, 1), (0, 1)), v((0, 1), (1, 1), (0, 1)), v((1, 1), (0, 1), (0, 1))),
+            frame: Frame::from_axes(
+                v((2, 1), (0, 1), (0, 1)),
+                v((0, 1), (1, 1), (0, 1)),
+                v((1, 1), (0, 1), (0, 1)),
+            ),
         };
-        let line = RationalCurve::polynomial(vec![v((2, 1), (0, 1), (0, 1)), v((2, 1), (0, 1), (3, 1))]).unwrap();
+        let line =
+            RationalCurve::polynomial(vec![v((2, 1), (0, 1), (0, 1)), v((2, 1), (0, 1), (3, 1))])
+                .unwrap();
         let faces = [
-            JointFace { surface: &cylinder, same_sense: true },
-            JointFace { surface: &side, same_sense: true },
+            JointFace {
+                surface: &cylinder,
+                same_sense: true,
+            },
+            JointFace {
+                surface: &side,
+                same_sense: true,
+            },
         ];
         let m = measure_joint(&[line], &faces, &tol(1e-6, 1e-6)).unwrap();
-        assert_eq!((m.angle, m.g0, m.g1), (Measure::Exact, Verdict::Exact, Verdict::Exact));
+        assert_eq!(
+            (m.angle, m.g0, m.g1),
+            (Measure::Exact, Verdict::Exact, Verdict::Exact)
+        );
     }
 }

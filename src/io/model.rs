@@ -366,8 +366,14 @@ fn continuity_counts(a: &BrepAudit) -> Value {
     for g in [Grade::G1, Grade::G0, Grade::Fails, Grade::Undecided] {
         c.insert(g.name().into(), json!(grades.get(&g).map_or(0, |k| k[0])));
     }
-    c.insert("exact".into(), json!(grades.values().map(|k| k[1]).sum::<usize>()));
-    c.insert("not_measured".into(), json!(a.not_measured().values().sum::<usize>()));
+    c.insert(
+        "exact".into(),
+        json!(grades.values().map(|k| k[1]).sum::<usize>()),
+    );
+    c.insert(
+        "not_measured".into(),
+        json!(a.not_measured().values().sum::<usize>()),
+    );
     Value::Object(c)
 }
 

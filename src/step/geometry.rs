@@ -39,9 +39,9 @@ use crate::algebra::parse_rational;
 use crate::algebra::scalar::{Field, Ordered, Roots};
 use crate::analytic::trim::dyadic;
 use crate::analytic::{
-    Implicit,
     circle, cone, cone_slope, covering_range, ellipse, extrusion, line_segment, locate_vertex,
-    plane, polyline, revolution, sphere, split_between, torus, AngleUnit, Frame, Frame2, Unbounded,
+    plane, polyline, revolution, sphere, split_between, torus, AngleUnit, Frame, Frame2, Implicit,
+    Unbounded,
 };
 use crate::curve::RationalCurve;
 use crate::error::Error;

@@ -104,7 +104,10 @@ impl ISurface {
             Kind::Plane => (h, [0.0, 0.0, 1.0].map(Interval::point)),
             Kind::Cylinder { radius } => {
                 let r = rho()?;
-                (r.sub(&radius), [a.div(&r)?, b.div(&r)?, Interval::point(0.0)])
+                (
+                    r.sub(&radius),
+                    [a.div(&r)?, b.div(&r)?, Interval::point(0.0)],
+                )
             }
             Kind::Sphere { radius } => {
                 let r = a.sqr().add(&b.sqr()).add(&h.sqr()).sqrt()?;
@@ -124,7 +127,14 @@ impl ISurface {
                 } else {
                     return None;
                 };
-                (s.div(&norm)?, [a.div(&r)?.div(&norm)?, b.div(&r)?.div(&norm)?, k.div(&norm)?])
+                (
+                    s.div(&norm)?,
+                    [
+                        a.div(&r)?.div(&norm)?,
+                        b.div(&r)?.div(&norm)?,
+                        k.div(&norm)?,
+                    ],
+                )
             }
             Kind::Torus { major, minor } => {
                 let r = rho()?;
@@ -134,7 +144,10 @@ impl ISurface {
                     return None;
                 }
                 let c = radial.div(&q)?;
-                (q.sub(&minor), [c.mul(&a.div(&r)?), c.mul(&b.div(&r)?), h.div(&q)?])
+                (
+                    q.sub(&minor),
+                    [c.mul(&a.div(&r)?), c.mul(&b.div(&r)?), h.div(&q)?],
+                )
             }
         };
         let normal = add(
