@@ -633,8 +633,9 @@ fn certified_gaps_contain_independent_samples() {
                         let mut q = hom.clone();
                         for level in (1..q.len()).rev() {
                             for r in 0..level {
-                                for d in 0..4 {
-                                    q[r][d] = (1.0 - t) * q[r][d] + t * q[r + 1][d];
+                                let next = q[r + 1].clone();
+                                for (x, y) in q[r].iter_mut().zip(&next) {
+                                    *x = (1.0 - t) * *x + t * y;
                                 }
                             }
                         }

@@ -104,7 +104,7 @@ pub enum Measured {
     /// Not measured: why.
     NotMeasured(String),
     /// Measured.
-    Measured(JointMeasures),
+    Measured(Box<JointMeasures>),
 }
 
 /// The continuity an edge is counted under: the highest order whose
@@ -283,7 +283,7 @@ fn measure(m: &BrepModel, e: &Edge, tol: &JointTolerances) -> Measured {
         measure_joint(&pieces, &faces()?, tol).map_err(|x| format!("not measurable: {x}"))
     };
     match run() {
-        Ok(j) => Measured::Measured(j),
+        Ok(j) => Measured::Measured(Box::new(j)),
         Err(why) => Measured::NotMeasured(why),
     }
 }

@@ -68,7 +68,7 @@ pub struct AnalyticPieces {
     pub vertex_distance_sq: Option<[RealAlgebraic; 2]>,
     /// For a face: the closed form of its elementary surface, when its
     /// pieces are exactly it ([`crate::analytic::Implicit`]).
-    pub implicit: Option<Implicit<RealAlgebraic>>,
+    pub implicit: Option<Box<Implicit<RealAlgebraic>>>,
 }
 
 /// A referenced geometric entity: its id, type name and geometry.
