@@ -11,13 +11,21 @@
 //!   border of a surface model), **non-manifold** (more than two uses), or
 //!   **unused** (no loop uses it).
 //!
+//! Every shared and seam edge is measured ([`super::joint`]): certified
+//! gaps and angle with G0/G1 verdicts against the tolerances, where both
+//! faces are elementary surfaces with an exact closed form; other edges are
+//! *not measured*, with the reason counted.
+//!
 //! The length tolerance is `--tol` when given, else the declared
 //! `UNCERTAINTY_MEASURE_WITH_UNIT` of the model's representation contexts
 //! (the largest when they differ), in the model's length unit.
 
-use crate::algebra::Ordered;
+use super::certify::Verdict;
+use super::joint::{measure_joint, JointFace, JointMeasures, JointTolerances};
+use crate::algebra::{Interval, Ordered, RealAlgebraic, Scalar};
+use crate::curve::RationalCurve;
 use crate::patch::Patch;
-use crate::step::brep::{Edge, EdgeUse, Geometry};
+use crate::step::brep::{Edge, EdgeUse, Face, Geometry};
 use crate::step::BrepModel;
 use crate::Tolerance;
 use num_rational::BigRational;
@@ -84,6 +92,60 @@ pub struct BrepEdge {
     pub faces: Vec<u64>,
     /// Its class.
     pub class: EdgeClass,
+    /// Its measures (shared and seam edges).
+    pub measured: Measured,
+}
+
+/// The continuity measures of an edge.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Measured {
+    /// Not a shared or seam edge: nothing to measure.
+    NotApplicable,
+    /// Not measured: why.
+    NotMeasured(String),
+    /// Measured.
+    Measured(Box<JointMeasures>),
+}
+
+/// The continuity an edge is counted under: the highest order whose
+/// verdict holds (exact or within tolerance), unless an undecided order
+/// comes first.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Grade {
+    /// G0 and G1 hold.
+    G1,
+    /// G0 holds, G1 fails (a crease).
+    G0,
+    /// G0 fails (a gap over the tolerance).
+    Fails,
+    /// The first order that does not hold is undecided.
+    Undecided,
+}
+
+impl Grade {
+    /// The name used in the JSON output.
+    pub fn name(self) -> &'static str {
+        match self {
+            Grade::G1 => "G1",
+            Grade::G0 => "G0",
+            Grade::Fails => "fails",
+            Grade::Undecided => "undecided",
+        }
+    }
+
+    /// The grade of measured verdicts, and whether the orders it counts
+    /// hold exactly (deviation proved 0).
+    pub fn of(m: &JointMeasures) -> (Grade, bool) {
+        let holds = |v: &Verdict| matches!(v, Verdict::Exact | Verdict::WithinTolerance);
+        let exact = |v: &Verdict| *v == Verdict::Exact;
+        match (&m.g0, &m.g1) {
+            (Verdict::Undecided, _) => (Grade::Undecided, false),
+            (Verdict::Fails { .. }, _) => (Grade::Fails, false),
+            (g0, Verdict::Undecided) if holds(g0) => (Grade::Undecided, false),
+            (g0, Verdict::Fails { .. }) => (Grade::G0, exact(g0)),
+            (g0, g1) => (Grade::G1, exact(g0) && exact(g1)),
+        }
+    }
 }
 
 /// Where the length tolerance came from.
@@ -158,6 +220,74 @@ pub fn classify(e: &Edge) -> EdgeClass {
     }
 }
 
+/// The edge's curve as Bézier pieces over the real algebraic numbers, or
+/// why not.
+fn edge_pieces(e: &Edge) -> Result<Vec<RationalCurve<RealAlgebraic>>, String> {
+    let curves = |ps: Vec<Patch<RealAlgebraic>>| {
+        ps.into_iter()
+            .map(|p| match p {
+                Patch::Curve(c) => Ok(c),
+                _ => Err("the edge curve's pieces are not curves".to_string()),
+            })
+            .collect()
+    };
+    match &e.curve.geometry {
+        Geometry::Analytic(a) if a.approximate.is_some() => {
+            Err(format!("{} edge converted approximately", e.curve.kind))
+        }
+        Geometry::Analytic(a) => curves(a.pieces.clone()),
+        Geometry::Pieces(ps) => curves(
+            ps.iter()
+                .map(|p| p.patch.map(RealAlgebraic::from_rational))
+                .collect(),
+        ),
+        Geometry::NotConverted | Geometry::Invalid(_) => {
+            Err(format!("{} edge curve not converted", e.curve.kind))
+        }
+    }
+}
+
+/// The face as a [`JointFace`], or why not.
+fn joint_face(f: &Face) -> Result<JointFace<'_>, String> {
+    match &f.surface.geometry {
+        Geometry::Analytic(a) => match &a.implicit {
+            Some(s) => Ok(JointFace {
+                surface: s,
+                same_sense: f.same_sense,
+            }),
+            None => Err(format!("{} face has no exact closed form", f.surface.kind)),
+        },
+        Geometry::Pieces(_) => Err(format!(
+            "{} face (certified foot points on B-spline faces not wired in)",
+            f.surface.kind
+        )),
+        Geometry::NotConverted | Geometry::Invalid(_) => {
+            Err(format!("{} face not converted", f.surface.kind))
+        }
+    }
+}
+
+/// Measure a shared or seam edge.
+fn measure(m: &BrepModel, e: &Edge, tol: &JointTolerances) -> Measured {
+    let faces = || -> Result<[JointFace<'_>; 2], String> {
+        let face = |id: &u64| {
+            m.faces
+                .get(id)
+                .ok_or_else(|| format!("face #{id} not read"))
+                .and_then(joint_face)
+        };
+        Ok([face(&e.used_by[0])?, face(&e.used_by[1])?])
+    };
+    let run = || -> Result<JointMeasures, String> {
+        let pieces = edge_pieces(e)?;
+        measure_joint(&pieces, &faces()?, tol).map_err(|x| format!("not measurable: {x}"))
+    };
+    match run() {
+        Ok(j) => Measured::Measured(Box::new(j)),
+        Err(why) => Measured::NotMeasured(why),
+    }
+}
+
 /// The length tolerance: `given`, else the largest declared one.
 fn tolerances(m: &BrepModel, given: Option<Q>, angle: Q) -> Tolerances {
     let unit = m
@@ -194,20 +324,43 @@ fn tolerances(m: &BrepModel, given: Option<Q>, angle: Q) -> Tolerances {
 /// assert_eq!(a.count(EdgeClass::Open), 0);
 /// ```
 pub fn audit_brep(m: &BrepModel, tol: Option<Q>, angle: Q) -> BrepAudit {
+    audit_with(m, tol, angle, true)
+}
+
+/// [`audit_brep`] without the measures (every edge
+/// [`Measured::NotApplicable`]): the topology, faces and tolerances only.
+pub fn audit_brep_topology(m: &BrepModel, tol: Option<Q>, angle: Q) -> BrepAudit {
+    audit_with(m, tol, angle, false)
+}
+
+fn audit_with(m: &BrepModel, tol: Option<Q>, angle: Q, measured: bool) -> BrepAudit {
+    let tolerance = tolerances(m, tol, angle);
+    let joint = JointTolerances {
+        length: tolerance.length.as_ref().map(Interval::enclose),
+        angle: Interval::enclose(&tolerance.angle),
+    };
     let edges = m
         .edges
         .values()
-        .map(|e| BrepEdge {
-            id: e.id,
-            curve: e.curve.kind.clone(),
-            faces: e.used_by.clone(),
-            class: classify(e),
+        .map(|e| {
+            let class = classify(e);
+            let measured = match class {
+                EdgeClass::Shared | EdgeClass::Seam if measured => measure(m, e, &joint),
+                _ => Measured::NotApplicable,
+            };
+            BrepEdge {
+                id: e.id,
+                curve: e.curve.kind.clone(),
+                faces: e.used_by.clone(),
+                class,
+                measured,
+            }
         })
         .collect();
     BrepAudit {
         faces_by_surface: m.summary.faces_by_surface.clone(),
         edges,
-        tolerance: tolerances(m, tol, angle),
+        tolerance,
         not_converted: m.summary.not_converted.clone(),
         invalid: m.summary.invalid.len(),
     }
@@ -224,13 +377,52 @@ impl BrepAudit {
         self.faces_by_surface.values().sum()
     }
 
+    /// Measured edges by [`Grade`], and how many of each hold exactly.
+    pub fn grades(&self) -> BTreeMap<Grade, [usize; 2]> {
+        let mut out = BTreeMap::new();
+        for e in &self.edges {
+            if let Measured::Measured(j) = &e.measured {
+                let (g, exact) = Grade::of(j);
+                let c: &mut [usize; 2] = out.entry(g).or_default();
+                c[0] += 1;
+                c[1] += usize::from(exact);
+            }
+        }
+        out
+    }
+
+    /// Edges not measured, by reason.
+    pub fn not_measured(&self) -> BTreeMap<String, usize> {
+        let mut out = BTreeMap::new();
+        for e in &self.edges {
+            if let Measured::NotMeasured(why) = &e.measured {
+                *out.entry(why.clone()).or_default() += 1;
+            }
+        }
+        out
+    }
+
     /// The one-line summary, naming what was not done.
     pub fn summary(&self) -> String {
         let n = |c| self.count(c);
         let skipped: usize = self.not_converted.values().sum();
+        let grades = self.grades();
+        let g = |k| grades.get(&k).map_or(0, |c| c[0]);
+        let exact: usize = grades.values().map(|c| c[1]).sum();
+        let not_measured = self.not_measured();
+        let why = if not_measured.is_empty() {
+            String::new()
+        } else {
+            let list: Vec<String> = not_measured
+                .iter()
+                .map(|(w, k)| format!("{k} {w}"))
+                .collect();
+            format!(" ({})", list.join("; "))
+        };
         format!(
             "{} faces, {} edges: {} shared, {} seam, {} open, {} non-manifold, {} degenerate, {} unused; \
-             continuity of the {} shared edges not measured (certified measures are not wired in yet); \
+             continuity of the {} shared and seam edges: {} G1, {} G0, {} fail G0, {} undecided ({} exact), \
+             {} not measured{why}, G2 not measured; \
              {skipped} faces or edges with geometry not converted, {} entities unreadable",
             self.faces(),
             self.edges.len(),
@@ -240,7 +432,13 @@ impl BrepAudit {
             n(EdgeClass::NonManifold),
             n(EdgeClass::Degenerate),
             n(EdgeClass::Unused),
-            n(EdgeClass::Shared),
+            n(EdgeClass::Shared) + n(EdgeClass::Seam),
+            g(Grade::G1),
+            g(Grade::G0),
+            g(Grade::Fails),
+            g(Grade::Undecided),
+            exact,
+            not_measured.values().sum::<usize>(),
             self.invalid,
         )
     }

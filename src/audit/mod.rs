@@ -22,6 +22,7 @@ use std::cmp::Ordering;
 
 pub mod brep;
 pub mod certify;
+pub mod joint;
 pub mod model;
 pub mod seam;
 

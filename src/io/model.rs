@@ -7,7 +7,9 @@ use super::{
     JsonScalar,
 };
 use crate::algebra::{ExactNumber, Field, RealAlgebraic};
-use crate::audit::brep::{BrepAudit, EdgeClass, ToleranceSource};
+use crate::audit::brep::{BrepAudit, BrepEdge, EdgeClass, Grade, Measured, ToleranceSource};
+use crate::audit::certify::Verdict;
+use crate::audit::joint::Measure;
 use crate::audit::{nurbs_pieces, Audit, ExactModel, Model, Origin, PatchEdge, Piece};
 use crate::error::Error;
 use crate::patch::Patch;
@@ -329,8 +331,7 @@ pub fn brep_audit_to_json(a: &BrepAudit, full: bool) -> Value {
         "summary": a.summary(),
         "faces": {"total": a.faces(), "by_surface": a.faces_by_surface},
         "edges": edges,
-        "continuity": {"G2": 0, "G1": 0, "G0": 0, "fails": 0, "undecided": 0, "exact": 0,
-                       "not_measured": a.count(EdgeClass::Shared)},
+        "continuity": continuity_counts(a),
         "tolerance": {"length": t.length.as_ref().map(BigRational::to_json), "unit": t.unit,
                       "angle": t.angle.to_json(), "source": source},
     });
@@ -339,18 +340,81 @@ pub fn brep_audit_to_json(a: &BrepAudit, full: bool) -> Value {
             .edges
             .iter()
             .map(|e| {
-                json!({
+                let mut v = json!({
                     "id": format!("#{}", e.id),
                     "curve": e.curve,
                     "faces": e.faces.iter().map(|f| format!("#{f}")).collect::<Vec<_>>(),
                     "class": e.class.name(),
-                })
+                });
+                edge_measures(e, &mut v);
+                v
             })
             .collect();
         v["not_converted"] = json!(a.not_converted);
         v["invalid_entities"] = json!(a.invalid);
     }
     v
+}
+
+/// The `continuity` counts of a B-rep audit: measured shared and seam
+/// edges by [`Grade`], `exact` among them, `not_measured`; `G2` is `null`
+/// (not measured: a G2 edge counts as G1).
+fn continuity_counts(a: &BrepAudit) -> Value {
+    let grades = a.grades();
+    let mut c = serde_json::Map::new();
+    c.insert("G2".into(), Value::Null);
+    for g in [Grade::G1, Grade::G0, Grade::Fails, Grade::Undecided] {
+        c.insert(g.name().into(), json!(grades.get(&g).map_or(0, |k| k[0])));
+    }
+    c.insert(
+        "exact".into(),
+        json!(grades.values().map(|k| k[1]).sum::<usize>()),
+    );
+    c.insert(
+        "not_measured".into(),
+        json!(a.not_measured().values().sum::<usize>()),
+    );
+    Value::Object(c)
+}
+
+/// A measure as JSON: `0` when exact, else its enclosure with the piece
+/// and piece parameters where the maximum is attained, or `"unproved"`.
+fn measure_json(m: &Measure) -> Value {
+    match m {
+        Measure::Exact => json!(0),
+        Measure::Enclosed { value, piece } => json!({
+            "lo": value.lo, "hi": value.hi, "piece": piece, "t": [value.at.lo, value.at.hi],
+        }),
+        Measure::Unproved => json!("unproved"),
+    }
+}
+
+fn verdict_name(v: &Verdict) -> &'static str {
+    match v {
+        Verdict::Exact => "exact",
+        Verdict::WithinTolerance => "within_tolerance",
+        Verdict::Fails { .. } => "fails",
+        Verdict::Undecided => "undecided",
+    }
+}
+
+/// Add an edge's measures and verdicts (or why it is not measured) to `v`.
+fn edge_measures(e: &BrepEdge, v: &mut Value) {
+    match &e.measured {
+        Measured::NotApplicable => {}
+        Measured::NotMeasured(why) => v["not_measured"] = json!(why),
+        Measured::Measured(j) => {
+            let (grade, exact) = Grade::of(j);
+            v["measures"] = json!({
+                "gap": j.gap.iter().map(measure_json).collect::<Vec<_>>(),
+                "face_gap": measure_json(&j.face_gap),
+                "angle": measure_json(&j.angle),
+            });
+            v["verdicts"] = json!({"G0": verdict_name(&j.g0), "G1": verdict_name(&j.g1)});
+            v["continuity"] = json!(grade.name());
+            v["exact"] = json!(exact);
+        }
+    }
 }
 
 /// Pieces that come from one source surface (one STEP entity or one NURBS

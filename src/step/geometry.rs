@@ -40,7 +40,8 @@ use crate::algebra::scalar::{Field, Ordered, Roots};
 use crate::analytic::trim::dyadic;
 use crate::analytic::{
     circle, cone, cone_slope, covering_range, ellipse, extrusion, line_segment, locate_vertex,
-    plane, polyline, revolution, sphere, split_between, torus, AngleUnit, Frame, Frame2, Unbounded,
+    plane, polyline, revolution, sphere, split_between, torus, AngleUnit, Frame, Frame2, Implicit,
+    Unbounded,
 };
 use crate::curve::RationalCurve;
 use crate::error::Error;
@@ -95,6 +96,9 @@ pub struct SurfacePieces<T> {
     pub patches: Vec<RectPatch<T>>,
     /// Why the pieces are not exactly the entity (a cone's slope), if not.
     pub approximate: Option<String>,
+    /// The closed form of an elementary surface whose pieces are exact
+    /// (plane, cylinder, cone of exact slope, sphere, torus).
+    pub implicit: Option<Implicit<T>>,
 }
 
 /// What a curve id is.
@@ -740,11 +744,12 @@ pub fn surface_pieces<T: Field + Ordered + Roots>(
             covering_range(u, boundary).map_err(|x| e.err(x))
         }
     };
-    let pieces = |patches, approximate| {
+    let pieces = |patches, approximate, implicit| {
         Ok(Surface::Pieces(SurfacePieces {
             entity: e.rec.name.clone(),
             patches,
             approximate,
+            implicit,
         }))
     };
     let frame = || placement::<T>(table, e.reference(1)?);
@@ -755,14 +760,17 @@ pub fn surface_pieces<T: Field + Ordered + Roots>(
             pieces(
                 vec![plane(&f, [&r[0][0], &r[0][1]], [&r[1][0], &r[1][1]])],
                 None,
+                Some(Implicit::Plane { frame: f }),
             )
         }
         "CYLINDRICAL_SURFACE" | "CONICAL_SURFACE" => {
             let f = frame()?;
             let r = range(&Unbounded::Axial(&f))?;
             let v = [&r[0][0], &r[0][1]];
+            let radius: T = e.number(2)?;
             if e.rec.name == "CYLINDRICAL_SURFACE" {
-                return pieces(crate::analytic::cylinder(&f, &e.number(2)?, v), None);
+                let patches = crate::analytic::cylinder(&f, &radius, v);
+                return pieces(patches, None, Some(Implicit::Cylinder { frame: f, radius }));
             }
             let text = e.text(3)?;
             let s = cone_slope::<T>(text, &ctx.angle_unit).map_err(|x| e.err(x))?;
@@ -772,11 +780,31 @@ pub fn surface_pieces<T: Field + Ordered + Roots>(
                     s.error
                 )
             });
-            pieces(cone(&f, &e.number(2)?, &s.tan, v), why)
+            let patches = cone(&f, &radius, &s.tan, v);
+            let implicit = s.exact.then(|| Implicit::Cone {
+                frame: f,
+                radius,
+                slope: s.tan,
+            });
+            pieces(patches, why, implicit)
         }
-        "SPHERICAL_SURFACE" => pieces(sphere(&frame()?, &e.number(2)?), None),
+        "SPHERICAL_SURFACE" => {
+            let (frame, radius) = (frame()?, e.number(2)?);
+            let patches = sphere(&frame, &radius);
+            pieces(patches, None, Some(Implicit::Sphere { frame, radius }))
+        }
         "TOROIDAL_SURFACE" | "DEGENERATE_TOROIDAL_SURFACE" => {
-            pieces(torus(&frame()?, &e.number(2)?, &e.number(3)?), None)
+            let (frame, major, minor) = (frame()?, e.number(2)?, e.number(3)?);
+            let patches = torus(&frame, &major, &minor);
+            pieces(
+                patches,
+                None,
+                Some(Implicit::Torus {
+                    frame,
+                    major,
+                    minor,
+                }),
+            )
         }
         "SURFACE_OF_LINEAR_EXTRUSION" => {
             let v: Vec<T> = vector(table, e.reference(2)?)?;
@@ -788,7 +816,7 @@ pub fn surface_pieces<T: Field + Ordered + Roots>(
                 curve: &curve,
                 vector: &v,
             })?;
-            pieces(extrusion(&curve, &v, [&r[0][0], &r[0][1]])?, None)
+            pieces(extrusion(&curve, &v, [&r[0][0], &r[0][1]])?, None, None)
         }
         "SURFACE_OF_REVOLUTION" => {
             let (origin, axis) = axis1::<T>(table, e.reference(2)?)?;
@@ -798,7 +826,7 @@ pub fn surface_pieces<T: Field + Ordered + Roots>(
                 Ok((b, _)) => b.pieces,
                 Err(c) => return Ok(swept_unsupported(id, &e, &c)),
             };
-            pieces(revolution(&curve, &origin, &axis)?, None)
+            pieces(revolution(&curve, &origin, &axis)?, None, None)
         }
         _ => Ok(unsupported_surface(table, id)),
     }

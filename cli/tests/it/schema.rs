@@ -203,7 +203,7 @@ fn command_outputs_match_the_schema() {
     assert_valid(
         "brepAuditSummary",
         "audit STEP B-rep",
-        &output(&["audit", "tests/fixtures/step/screw.step", "--summary"]),
+        &output(&["audit", "tests/fixtures/step/sg1-c5-214.stp", "--summary"]),
     );
     assert_valid(
         "patches",

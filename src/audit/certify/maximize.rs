@@ -78,6 +78,22 @@ pub const WORK_PER_PIECE: u64 = 2_000;
 pub fn maximize(
     range: Interval,
     target: Target,
+    bound: impl FnMut(Interval) -> Result<Option<Bound>, Error>,
+) -> Result<Enclosure, Error> {
+    maximize_until(range, target, |_| false, bound)
+}
+
+/// [`maximize`], stopping early, with `tight: false`, as soon as
+/// `decided(U)` holds for the greatest upper bound `U` (e.g. `U` below a
+/// tolerance: the verdict needs no tighter enclosure).
+///
+/// # Errors
+///
+/// Those of [`maximize`].
+pub fn maximize_until(
+    range: Interval,
+    target: Target,
+    decided: impl Fn(f64) -> bool,
     mut bound: impl FnMut(Interval) -> Result<Option<Bound>, Error>,
 ) -> Result<Enclosure, Error> {
     let mut pieces: BinaryHeap<Piece> = BinaryHeap::new();
@@ -103,7 +119,7 @@ pub fn maximize(
         }
         let Piece { upper, t } = pieces.pop().expect("at least one piece");
         let done = upper.is_finite() && upper - lower <= target.rel * upper + target.abs;
-        if done || t.width() < MIN_PIECE {
+        if done || decided(upper) || t.width() < MIN_PIECE {
             let at = pieces
                 .iter()
                 .filter(|p| p.upper >= lower)

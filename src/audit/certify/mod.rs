@@ -46,6 +46,7 @@
 
 pub mod angle;
 pub mod bezier;
+pub mod closed_form;
 pub mod curvature;
 pub mod foot;
 pub mod gap;

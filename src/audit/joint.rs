@@ -1,0 +1,617 @@
+//! Certified measures and verdicts of one B-rep edge between its two faces
+//! (a shared edge), or between a face and itself (a seam), where both faces
+//! are elementary surfaces with an exact closed form ([`Implicit`]). See
+//! `docs/audit.md`, "STEP B-rep input".
+//!
+//! **Exact paths first.** With `F` a face's implicit equation of degree `d`
+//! and a curve piece of degree `n` with positive weights, `w(t)^d F(C(t))`
+//! is a polynomial of degree `≤ d·n` in `t`; it vanishes identically iff it
+//! vanishes at `d·n + 1` distinct parameters. So `F(C(t_j)) = 0` at
+//! `t_j = j/(d·n)`, exactly, proves the gap to that face is 0. Likewise the
+//! cross product of the two faces' [`Implicit::gradient`]s (degrees `g₁`,
+//! `g₂` in the point) is a polynomial of degree `≤ (g₁ + g₂)·n`: zero at
+//! `(g₁ + g₂)·n + 1` parameters proves the tangent planes coincide along the
+//! whole edge, and the sign of the oriented normals' dot product at one
+//! point says whether the faces continue each other (angle exactly 0) or
+//! fold back (exactly π).
+//!
+//! **Enclosures otherwise.** Along each Bézier piece of the edge, over a
+//! piece `T` of its parameter with midpoint `t_m`:
+//! - the gap to a face is `|s(C(t))|`, `s` the closed-form signed distance
+//!   ([`ISurface`]); by the mean value theorem
+//!   `s(C(T)) ⊆ s(C(t_m)) + (n̂(C(T))·C'(T))(T − t_m)`, tight like `|T|²`
+//!   where the edge runs along the face;
+//! - the gap between the faces, between the two foot points
+//!   `C − s₁n̂₁` and `C − s₂n̂₂`, is enclosed from the two gaps by the
+//!   triangle inequality ([`face_gap`]);
+//! - the angle between the oriented foot normals `±n̂₁`, `±n̂₂` is
+//!   [`polar_angle`] of `(|N₁ × N₂|, N₁·N₂)`, over `T` and at `t_m`;
+//!
+//! and [`maximize`] refines to the target width. Each edge has its own work
+//! cap ([`EDGE_WORK`]); a measure not proved within it is *unproved* and
+//! its verdict *undecided*.
+
+use super::certify::angle::polar_angle;
+use super::certify::closed_form::{Distance, ISurface};
+use super::certify::gap::abs_lower;
+use super::certify::ivec::{cross, dot, norm2, scale};
+use super::certify::maximize::{maximize_until, Bound, Enclosure, Target};
+use super::certify::{ICurve, Verdict};
+use crate::algebra::{Interval, RealAlgebraic, Scalar};
+use crate::analytic::{cross as exact_cross, dot as exact_dot, Implicit};
+use crate::curve::RationalCurve;
+use crate::error::Error;
+use crate::limits::{self, Limits};
+use num_traits::Zero;
+
+type Curve = RationalCurve<RealAlgebraic>;
+
+/// The work cap of one edge (in [`limits`] units): about 50 000 pieces of
+/// [`maximize`]. An edge's work is not charged to the command's budget.
+pub const EDGE_WORK: u64 = 100_000_000;
+
+/// Work units charged per exact point test.
+const EXACT_POINT_WORK: u64 = 50_000;
+
+/// One face along the edge: its closed form and orientation.
+#[derive(Clone, Debug)]
+pub struct JointFace<'a> {
+    /// The face's surface.
+    pub surface: &'a Implicit<RealAlgebraic>,
+    /// Does the face's normal agree with the surface's (`same_sense`)?
+    pub same_sense: bool,
+}
+
+/// One measure of an edge: the maximum along it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Measure {
+    /// Proved to be exactly 0 everywhere along the edge.
+    Exact,
+    /// Enclosed: the maximum is in `[value.lo, value.hi]`, attained in
+    /// `value.at` of the edge's Bézier piece `piece` (parameter `[0, 1]`).
+    Enclosed {
+        /// The enclosure.
+        value: Enclosure,
+        /// The edge piece where the maximum is attained.
+        piece: usize,
+    },
+    /// Not proved within the work cap, or a foot point is singular.
+    Unproved,
+}
+
+/// The measures and verdicts of one edge.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JointMeasures {
+    /// The largest distance from the edge curve to each face's surface.
+    pub gap: [Measure; 2],
+    /// The largest distance between the two faces' foot points.
+    pub face_gap: Measure,
+    /// The largest angle between the faces' oriented normals, radians.
+    pub angle: Measure,
+    /// G0: the gaps against the length tolerance.
+    pub g0: Verdict,
+    /// G1: the angle against the angular tolerance.
+    pub g1: Verdict,
+}
+
+/// Is `F` zero along every piece (exactly, at `d·n + 1` parameters)?
+fn lies_on(pieces: &[Curve], f: &Implicit<RealAlgebraic>) -> Result<bool, Error> {
+    for c in pieces {
+        for t in sample_params(f.degree() * c.degree())? {
+            if !f.value(&c.eval(&t)?).is_zero() {
+                return Ok(false);
+            }
+        }
+    }
+    Ok(true)
+}
+
+/// `j/m`, `j = 0…m`, charged.
+fn sample_params(m: usize) -> Result<Vec<RealAlgebraic>, Error> {
+    let m = m.max(1);
+    limits::charge(
+        "an exact test along an edge",
+        EXACT_POINT_WORK * (m as u64 + 1),
+    )?;
+    Ok((0..=m)
+        .map(|j| RealAlgebraic::from_i64(j as i64) / &RealAlgebraic::from_i64(m as i64))
+        .collect())
+}
+
+/// The oriented gradient of a face at `p`.
+fn oriented(face: &JointFace<'_>, p: &[RealAlgebraic]) -> Vec<RealAlgebraic> {
+    let g = face.surface.gradient(p);
+    if face.same_sense {
+        g
+    } else {
+        g.into_iter().map(|x| -x).collect()
+    }
+}
+
+/// Are the faces' tangent planes the same all along the edge (exactly)?
+/// `Some(0)` when the oriented normals agree, `Some(π)` at a fold, `None`
+/// when not proved parallel.
+fn exact_angle(pieces: &[Curve], faces: &[JointFace<'_>; 2]) -> Result<Option<bool>, Error> {
+    let g = faces[0].surface.gradient_degree() + faces[1].surface.gradient_degree();
+    let mut sign = None;
+    for c in pieces {
+        for t in sample_params(g * c.degree())? {
+            let p = c.eval(&t)?;
+            let (n1, n2) = (oriented(&faces[0], &p), oriented(&faces[1], &p));
+            if !exact_cross(&n1, &n2).iter().all(Zero::is_zero) {
+                return Ok(None);
+            }
+            let d = exact_dot(&n1, &n2);
+            if d.is_zero() {
+                return Ok(None);
+            }
+            sign.get_or_insert(d.signum() > 0);
+        }
+    }
+    Ok(sign)
+}
+
+/// What one piece `T` of the edge proves.
+struct Around {
+    /// Distances at `t_m`.
+    mid: [Distance; 2],
+    /// Normals over `T`.
+    over: [Distance; 2],
+    /// `s` over `T` (mean-value form).
+    signed: [Interval; 2],
+}
+
+fn around(curve: &ICurve, surfaces: &[ISurface; 2], t: Interval) -> Result<Option<Around>, Error> {
+    let m = Interval::point(t.mid());
+    let (cm, co) = (curve.jet(m)?, curve.jet(t)?);
+    let get = |s: &ISurface| Some((s.distance(&cm.x)?, s.distance(&co.x)?));
+    let (Some((m0, o0)), Some((m1, o1))) = (get(&surfaces[0]), get(&surfaces[1])) else {
+        return Ok(None);
+    };
+    let dt = t.sub(&m);
+    let signed =
+        |mid: &Distance, over: &Distance| mid.signed.add(&dot(&over.normal, &co.dx).mul(&dt));
+    Ok(Some(Around {
+        signed: [signed(&m0, &o0), signed(&m1, &o1)],
+        mid: [m0, m1],
+        over: [o0, o1],
+    }))
+}
+
+fn length(v: &[Interval]) -> Interval {
+    norm2(v).sqrt().expect("a sum of squares is never negative")
+}
+
+/// The angle between the oriented normals.
+fn angle_bound(a: &Around, signs: [Interval; 2]) -> Bound {
+    let angle = |d: &[Distance; 2]| {
+        let (n1, n2) = (
+            scale(&d[0].normal, &signs[0]),
+            scale(&d[1].normal, &signs[1]),
+        );
+        polar_angle(&length(&cross(&n1, &n2)), &dot(&n1, &n2))
+    };
+    Bound {
+        upper: angle(&a.over).hi,
+        lower: angle(&a.mid).lo,
+    }
+}
+
+fn gap_bound(a: &Around, k: usize) -> Bound {
+    Bound {
+        upper: a.signed[k].mag(),
+        lower: abs_lower(&a.mid[k].signed),
+    }
+}
+
+/// The gap between the faces' foot points from the two gaps: at every `t`,
+/// `|S₁ − S₂| ≤ |s₁| + |s₂|` (through `C(t)`), so the maximum is at most
+/// the sum of the two maxima; where gap `i` is greatest it is at least that
+/// gap less the other's maximum.
+fn face_gap(gap: &[Measure; 2]) -> Measure {
+    let value = |m: &Measure| match m {
+        Measure::Exact => Some((
+            Enclosure {
+                lo: 0.0,
+                hi: 0.0,
+                at: Interval { lo: 0.0, hi: 1.0 },
+                tight: true,
+            },
+            0,
+        )),
+        Measure::Enclosed { value, piece } => Some((*value, *piece)),
+        Measure::Unproved => None,
+    };
+    match (gap, value(&gap[0]), value(&gap[1])) {
+        ([Measure::Exact, Measure::Exact], _, _) => Measure::Exact,
+        (_, Some((a, i)), Some((b, j))) => {
+            let (big, piece) = if a.hi >= b.hi { (a, i) } else { (b, j) };
+            let lo = (a.lo - b.hi).max(b.lo - a.hi).max(0.0);
+            let hi = Interval::point(a.hi).add(&Interval::point(b.hi)).hi;
+            Measure::Enclosed {
+                value: Enclosure {
+                    lo,
+                    hi,
+                    at: big.at,
+                    tight: a.tight && b.tight,
+                },
+                piece,
+            }
+        }
+        _ => Measure::Unproved,
+    }
+}
+
+/// The maximum of one measure over all pieces, with its piece.
+fn along(
+    curves: &[ICurve],
+    surfaces: &[ISurface; 2],
+    (target, enough): (Target, f64),
+    f: impl Fn(&Around) -> Bound + Copy,
+) -> Result<Measure, Error> {
+    let mut best: Option<(Enclosure, usize)> = None;
+    for (k, c) in curves.iter().enumerate() {
+        let e = maximize_until(
+            Interval { lo: 0.0, hi: 1.0 },
+            target,
+            |u| u < enough,
+            |t| Ok(around(c, surfaces, t)?.map(|a| f(&a))),
+        )?;
+        best = Some(match best {
+            Some((b, i)) if b.hi >= e.hi => (b.max(e), i),
+            Some((b, _)) => (e.max(b), k),
+            None => (e, k),
+        });
+    }
+    let (value, piece) = best.ok_or_else(|| Error::Shape("an edge with no curve pieces".into()))?;
+    Ok(Measure::Enclosed { value, piece })
+}
+
+/// A measure, unproved on a work-cap or singular-foot error.
+fn settle(r: Result<Measure, Error>) -> Result<Measure, Error> {
+    match r {
+        Err(Error::Limit(_) | Error::Domain(_)) => Ok(Measure::Unproved),
+        r => r,
+    }
+}
+
+/// `None` when the work cap ran out.
+fn within_cap<T>(r: Result<T, Error>) -> Result<Option<T>, Error> {
+    match r {
+        Err(Error::Limit(_)) => Ok(None),
+        r => r.map(Some),
+    }
+}
+
+/// The angle of a fold, π, enclosed, everywhere along the edge.
+fn fold() -> Measure {
+    let pi = std::f64::consts::PI;
+    Measure::Enclosed {
+        value: Enclosure {
+            lo: pi * (1.0 - 1e-15),
+            hi: pi * (1.0 + 1e-15),
+            at: Interval { lo: 0.0, hi: 1.0 },
+            tight: true,
+        },
+        piece: 0,
+    }
+}
+
+/// The tolerances of the verdicts, in model units and radians, each
+/// enclosed (the exact tolerance lies in the interval; `None` length: only
+/// an exact gap holds).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JointTolerances {
+    /// Length.
+    pub length: Option<Interval>,
+    /// Angle.
+    pub angle: Interval,
+}
+
+/// The verdict of measures against `tol`: exact when all are exactly 0,
+/// else the tolerance test of the largest (within when its upper end is
+/// below the tolerance, fails when its lower end is above it), undecided
+/// when one is unproved.
+fn verdict(ms: &[Measure], tol: Option<Interval>) -> Verdict {
+    let mut worst: Option<Enclosure> = None;
+    for m in ms {
+        match m {
+            Measure::Exact => {}
+            Measure::Unproved => return Verdict::Undecided,
+            Measure::Enclosed { value, .. } => {
+                worst = Some(worst.map_or(*value, |w| w.max(*value)));
+            }
+        }
+    }
+    match (worst, tol) {
+        (None, _) => Verdict::Exact,
+        (Some(w), Some(t)) if w.hi < t.lo => Verdict::WithinTolerance,
+        (Some(w), t) if w.lo > t.map_or(0.0, |t| t.hi) => Verdict::Fails { magnitude: w },
+        (Some(_), _) => Verdict::Undecided,
+    }
+}
+
+/// Measure the edge with Bézier `pieces` between two faces, and judge it
+/// against `tol`. Runs under its own work cap [`EDGE_WORK`].
+///
+/// # Errors
+///
+/// [`Error::Shape`] for an edge with no pieces or not in 3D;
+/// [`Error::Weight`] for a non-positive weight.
+///
+/// ```
+/// use exact_bezier::algebra::{Interval, RealAlgebraic, Scalar};
+/// use exact_bezier::analytic::{Frame, Implicit};
+/// use exact_bezier::audit::certify::Verdict;
+/// use exact_bezier::audit::joint::{measure_joint, JointFace, JointTolerances, Measure};
+/// use exact_bezier::RationalCurve;
+/// let q = |n: i64| RealAlgebraic::from_i64(n);
+/// let o = vec![q(0), q(0), q(0)];
+/// // The floor z = 0 (normal down, out of the solid) and the wall y = 0
+/// // (its normal −ŷ): a right-angled edge along the x axis.
+/// let floor = Implicit::Plane { frame: Frame::from_axes(o.clone(), vec![q(1), q(0), q(0)], vec![q(0), q(0), q(1)]) };
+/// let wall = Implicit::Plane { frame: Frame::from_axes(o.clone(), vec![q(1), q(0), q(0)], vec![q(0), q(1), q(0)]) };
+/// let edge = RationalCurve::polynomial(vec![o, vec![q(1), q(0), q(0)]]).unwrap();
+/// let faces = [
+///     JointFace { surface: &floor, same_sense: false },
+///     JointFace { surface: &wall, same_sense: false },
+/// ];
+/// let tol = JointTolerances { length: Some(Interval::point(1e-6)), angle: Interval::point(1e-6) };
+/// let m = measure_joint(&[edge], &faces, &tol).unwrap();
+/// assert_eq!(m.gap, [Measure::Exact, Measure::Exact]);
+/// assert_eq!(m.g0, Verdict::Exact);
+/// let Measure::Enclosed { value, .. } = m.angle else { panic!() };
+/// let right = std::f64::consts::FRAC_PI_2;
+/// assert!(value.lo <= right && right <= value.hi && value.hi - value.lo < 1e-9);
+/// assert!(matches!(m.g1, Verdict::Fails { .. }));
+/// ```
+pub fn measure_joint(
+    pieces: &[Curve],
+    faces: &[JointFace<'_>; 2],
+    tol: &JointTolerances,
+) -> Result<JointMeasures, Error> {
+    let cap = Limits {
+        max_work: EDGE_WORK,
+        ..limits::current()
+    };
+    limits::with_limits(cap, || measure_capped(pieces, faces, tol))
+}
+
+fn measure_capped(
+    pieces: &[Curve],
+    faces: &[JointFace<'_>; 2],
+    tol: &JointTolerances,
+) -> Result<JointMeasures, Error> {
+    if pieces.is_empty() {
+        return Err(Error::Shape("an edge with no curve pieces".into()));
+    }
+    let curves = pieces
+        .iter()
+        .map(ICurve::new)
+        .collect::<Result<Vec<_>, _>>()?;
+    let surfaces = faces.clone().map(|f| ISurface::new(f.surface));
+    let [Some(s0), Some(s1)] = surfaces else {
+        return Err(Error::Domain(
+            "a torus whose minor radius is not below its major radius".into(),
+        ));
+    };
+    let surfaces = [s0, s1];
+    let signs = faces
+        .clone()
+        .map(|f| Interval::point(if f.same_sense { 1.0 } else { -1.0 }));
+    // Refined to 10⁻³ relative or a hundredth of the tolerance, or until
+    // below a third of it (the two gaps' sum bounds the face gap).
+    let length = match tol.length {
+        Some(t) => (
+            Target {
+                rel: 1e-3,
+                abs: t.lo / 100.0,
+            },
+            t.lo / 3.0,
+        ),
+        None => (
+            Target {
+                rel: 1e-3,
+                abs: 1e-12,
+            },
+            0.0,
+        ),
+    };
+    let angular = (
+        Target {
+            rel: 1e-3,
+            abs: tol.angle.lo / 100.0,
+        },
+        tol.angle.lo,
+    );
+    let mut gap = [Measure::Unproved; 2];
+    for (k, g) in gap.iter_mut().enumerate() {
+        *g = match within_cap(lies_on(pieces, faces[k].surface))? {
+            Some(true) => Measure::Exact,
+            Some(false) => settle(along(&curves, &surfaces, length, |a| gap_bound(a, k)))?,
+            None => Measure::Unproved,
+        };
+    }
+    let face_gap = face_gap(&gap);
+    let angle = match within_cap(exact_angle(pieces, faces))? {
+        Some(Some(true)) => Measure::Exact,
+        Some(Some(false)) => fold(),
+        Some(None) => settle(along(&curves, &surfaces, angular, |a| {
+            angle_bound(a, signs)
+        }))?,
+        None => Measure::Unproved,
+    };
+    Ok(JointMeasures {
+        g0: verdict(&[gap[0], gap[1], face_gap], tol.length),
+        g1: verdict(&[angle], Some(tol.angle)),
+        gap,
+        face_gap,
+        angle,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analytic::{circle, Frame};
+    use crate::ratio;
+    use num_rational::BigRational;
+
+    fn q(n: i64, d: i64) -> RealAlgebraic {
+        RealAlgebraic::from_rational(&ratio::<BigRational>(n, d))
+    }
+
+    fn v(x: (i64, i64), y: (i64, i64), z: (i64, i64)) -> Vec<RealAlgebraic> {
+        vec![q(x.0, x.1), q(y.0, y.1), q(z.0, z.1)]
+    }
+
+    fn tol(length: f64, angle: f64) -> JointTolerances {
+        JointTolerances {
+            length: Some(Interval::point(length)),
+            angle: Interval::point(angle),
+        }
+    }
+
+    fn enclosed(m: Measure) -> Enclosure {
+        match m {
+            Measure::Enclosed { value, .. } => value,
+            other => panic!("not enclosed: {other:?}"),
+        }
+    }
+
+    /// The face z = 0 and the face through the line y = 0, z = 10⁻⁷ with
+    /// normal (0, −10⁻⁵, 1): the edge, that line, is 10⁻⁷ off the first
+    /// face and on the second, and the faces meet at atan(10⁻⁵) rad.
+    fn gap_and_kink(same_sense: bool, t: &JointTolerances) -> JointMeasures {
+        let floor = Implicit::Plane {
+            frame: Frame::from_axes(
+                v((0, 1), (0, 1), (0, 1)),
+                v((1, 1), (0, 1), (0, 1)),
+                v((0, 1), (0, 1), (1, 1)),
+            ),
+        };
+        let tilted = Implicit::Plane {
+            frame: Frame::from_placement(
+                &v((0, 1), (0, 1), (1, 10_000_000)),
+                Some(&v((0, 1), (-1, 100_000), (1, 1))),
+                Some(&v((1, 1), (0, 1), (0, 1))),
+            )
+            .unwrap(),
+        };
+        let edge = RationalCurve::polynomial(vec![
+            v((0, 1), (0, 1), (1, 10_000_000)),
+            v((1, 1), (0, 1), (1, 10_000_000)),
+        ])
+        .unwrap();
+        let faces = [
+            JointFace {
+                surface: &floor,
+                same_sense: true,
+            },
+            JointFace {
+                surface: &tilted,
+                same_sense,
+            },
+        ];
+        measure_joint(&[edge], &faces, t).unwrap()
+    }
+
+    #[test]
+    fn a_gap_of_1e_7_and_a_kink_of_atan_1e_5() {
+        let m = gap_and_kink(true, &tol(1e-6, 1e-6));
+        // Independently: the edge is at height 1e-7 over z = 0; the angle
+        // between (0, 0, 1) and (0, −1e-5, 1) is atan(1e-5).
+        let g = enclosed(m.gap[0]);
+        assert!(g.lo <= 1e-7 && 1e-7 <= g.hi && g.hi - g.lo < 1e-12, "{g:?}");
+        assert_eq!(m.gap[1], Measure::Exact);
+        let f = enclosed(m.face_gap);
+        assert!(f.lo <= 1e-7 && 1e-7 <= f.hi && f.hi < 1.01e-7, "{f:?}");
+        let a = enclosed(m.angle);
+        let kink = 1e-5f64.atan();
+        assert!(a.lo <= kink && kink <= a.hi && a.hi - a.lo < 1e-10, "{a:?}");
+        assert_eq!(m.g0, Verdict::WithinTolerance);
+        assert!(matches!(m.g1, Verdict::Fails { magnitude } if magnitude.lo > 1e-6));
+        // Tighter length tolerance: G0 fails; looser angle tolerance: G1 holds.
+        let m = gap_and_kink(true, &tol(1e-8, 1e-4));
+        assert!(matches!(m.g0, Verdict::Fails { magnitude } if magnitude.lo > 1e-8));
+        assert_eq!(m.g1, Verdict::WithinTolerance);
+        // A tolerance inside the gap's enclosure cannot be decided.
+        let m = gap_and_kink(true, &tol(1e-7, 1e-4));
+        assert_eq!(m.g0, Verdict::Undecided);
+    }
+
+    #[test]
+    fn a_reversed_face_is_a_fold() {
+        let m = gap_and_kink(false, &tol(1e-6, 1e-6));
+        let a = enclosed(m.angle);
+        let fold = std::f64::consts::PI - 1e-5f64.atan();
+        assert!(a.lo <= fold && fold <= a.hi, "{a:?}");
+    }
+
+    /// The cylinder x² + y² = 4 with the plane z = 0 along their circle
+    /// (a right angle, gaps exactly 0) and with the plane x = 2 along the
+    /// line x = 2, y = 0 (tangent: angle exactly 0).
+    #[test]
+    fn exact_paths_on_a_cylinder() {
+        let axes = Frame::from_axes(
+            v((0, 1), (0, 1), (0, 1)),
+            v((1, 1), (0, 1), (0, 1)),
+            v((0, 1), (0, 1), (1, 1)),
+        );
+        let cylinder = Implicit::Cylinder {
+            frame: axes.clone(),
+            radius: q(2, 1),
+        };
+        let floor = Implicit::Plane {
+            frame: axes.clone(),
+        };
+        let rim = circle(&axes, &q(2, 1));
+        let faces = [
+            JointFace {
+                surface: &cylinder,
+                same_sense: true,
+            },
+            JointFace {
+                surface: &floor,
+                same_sense: false,
+            },
+        ];
+        let m = measure_joint(&rim, &faces, &tol(1e-6, 1e-6)).unwrap();
+        assert_eq!(
+            (m.gap, m.face_gap, m.g0),
+            ([Measure::Exact; 2], Measure::Exact, Verdict::Exact)
+        );
+        let a = enclosed(m.angle);
+        let right = std::f64::consts::FRAC_PI_2;
+        assert!(
+            a.lo <= right && right <= a.hi && a.hi - a.lo < 1e-3 * right,
+            "{a:?}"
+        );
+
+        let side = Implicit::Plane {
+            frame: Frame::from_axes(
+                v((2, 1), (0, 1), (0, 1)),
+                v((0, 1), (1, 1), (0, 1)),
+                v((1, 1), (0, 1), (0, 1)),
+            ),
+        };
+        let line =
+            RationalCurve::polynomial(vec![v((2, 1), (0, 1), (0, 1)), v((2, 1), (0, 1), (3, 1))])
+                .unwrap();
+        let faces = [
+            JointFace {
+                surface: &cylinder,
+                same_sense: true,
+            },
+            JointFace {
+                surface: &side,
+                same_sense: true,
+            },
+        ];
+        let m = measure_joint(&[line], &faces, &tol(1e-6, 1e-6)).unwrap();
+        assert_eq!(
+            (m.angle, m.g0, m.g1),
+            (Measure::Exact, Verdict::Exact, Verdict::Exact)
+        );
+    }
+}
