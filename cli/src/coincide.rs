@@ -6,7 +6,7 @@ use super::{charge_each, load_exact, patch_f64, ExactPatches, ExactScalar, Scala
 use exact_bezier::algebra::Tolerance;
 use exact_bezier::coincide::{coincide, Options};
 use exact_bezier::io::coincidence_to_json;
-use exact_bezier::limits::Size;
+use exact_bezier::limits::{self, Size};
 use exact_bezier::patch::Patch;
 use exact_bezier::Error;
 use serde_json::Value;
@@ -97,11 +97,18 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 }
 
 /// The exact decision over `T`, or (with `--scalar f64`) the tolerance one.
+///
+/// The work is charged with both patches' numbers in one field (the
+/// decision compares them), refused over the field degree limit.
 fn decide<T: ExactScalar>(a: &Args, pa: &Patch<T>, pb: &Patch<T>) -> Result<Value, Error> {
-    charge_each(
+    let sizes = [
+        pa.size_with(pb.numbers()),
+        pb.size_with(pa.numbers()),
+    ];
+    limits::charge_sizes(
         "coincide",
-        &[pa.clone(), pb.clone()],
-        a.scalar,
+        sizes,
+        a.scalar == ScalarKind::Exact,
         coincide_cost,
     )?;
     match a.scalar {

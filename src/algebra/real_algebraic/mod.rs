@@ -123,13 +123,19 @@ impl RealAlgebraic {
     }
 
     /// This number as a field element (`Err` with the value when it is
-    /// rational): a radical sum or an isolated root generates its own field
-    /// (minimal or defining polynomial, isolating interval); a negative one
-    /// is `−θ` for the positive `θ = −x`, so that `x` and `−x` share a field.
+    /// rational): a radical sum lives in the field of its radicals
+    /// ([`Self::radical_parts`]; its own minimal polynomial's field only
+    /// when that one would be over the limit); an isolated root generates
+    /// its own field (defining polynomial, isolating interval), a negative
+    /// one as `−θ` for the positive `θ = −x`, so that `x` and `−x` share a
+    /// field.
     fn field_parts(&self) -> Result<FieldNum, BigRational> {
         if let Repr::Radical(s) = &self.0 {
             if let Some(q) = s.as_rational() {
                 return Err(q);
+            }
+            if let Some(x) = Self::radical_parts(s, None) {
+                return Ok(x);
             }
         }
         if !matches!(self.0, Repr::Field(_)) && self.signum() < 0 {
@@ -137,9 +143,6 @@ impl RealAlgebraic {
         }
         match &self.0 {
             Repr::Radical(s) => {
-                if let Some(q) = s.as_rational() {
-                    return Err(q);
-                }
                 let p = s.minimal_polynomial().monic();
                 let (lo, hi) =
                     field::isolate_value(&polys::sturm_sequence(&p), |prec| s.enclosure(prec));
@@ -157,10 +160,73 @@ impl RealAlgebraic {
         }
     }
 
+    /// The irrational radical sum `s` as an element of a number field that
+    /// contains `within` (when given) and the fields `Q(b^{1/n})` of its
+    /// radicals ([`radical_field`]: one per base `b`, `n` the least common
+    /// denominator of `b`'s exponents): every sum of the same radicals
+    /// lands in the same field, of the degree the radicals span
+    /// ([`RealAlgebraic::span_degree`]) times `within`'s, and a field that
+    /// already holds those radicals is not extended. `None` when a field
+    /// would be over [`crate::limits::MAX_FIELD_DEGREE`].
+    fn radical_parts(s: &RadicalSum, within: Option<&Arc<NumberField>>) -> Option<FieldNum> {
+        let bases = s.bases();
+        let mut gens = Vec::with_capacity(bases.len());
+        let mut k = within.cloned();
+        for b in &bases {
+            let n = s.exponent_lcm(b);
+            let g = radical_field(b, n);
+            k = Some(match k {
+                None => g.clone(),
+                Some(k) => field::extend(&k, &g)?,
+            });
+            gens.push((g, n));
+        }
+        let k = k?;
+        let images = gens
+            .iter()
+            .map(|(g, _)| field::image_in(&k, g))
+            .collect::<Option<Vec<QPoly>>>()?;
+        let terms: Vec<(BigRational, Vec<u32>)> = s
+            .terms()
+            .iter()
+            .map(|(m, c)| {
+                let exps = bases
+                    .iter()
+                    .zip(&gens)
+                    .map(|(b, (_, n))| {
+                        m.0.iter()
+                            .find(|(x, _)| x == b)
+                            .map_or(0, |(_, e)| (e * *n).to_integer() as u32)
+                    })
+                    .collect();
+                (c.clone(), exps)
+            })
+            .collect();
+        FieldNum::new(k.clone(), &field::sum_of_monomials(&k, &images, &terms))
+    }
+
     /// Both numbers in one field, `(K, a, b)` with `self = a(θ)`,
     /// `other = b(θ)`; `None` when that field would be over
-    /// [`crate::limits::MAX_FIELD_DEGREE`].
+    /// [`crate::limits::MAX_FIELD_DEGREE`]. A radical sum meets a field
+    /// element in the field extended by its radicals only.
     fn common(&self, other: &Self) -> Option<(Arc<NumberField>, QPoly, QPoly)> {
+        let radical = |x: &Self| match &x.0 {
+            Repr::Radical(s) if s.as_rational().is_none() => Some(s.clone()),
+            _ => None,
+        };
+        match (radical(self), radical(other)) {
+            (Some(s), None) => {
+                let b = other.field_parts().ok()?;
+                let a = Self::radical_parts(&s, Some(&b.field))?;
+                return field::unify(&a, &b);
+            }
+            (None, Some(s)) => {
+                let a = self.field_parts().ok()?;
+                let b = Self::radical_parts(&s, Some(&a.field))?;
+                return field::unify(&a, &b);
+            }
+            _ => {}
+        }
         let constant = |q: BigRational| UPoly::constant(q);
         match (self.field_parts(), other.field_parts()) {
             (Ok(a), Ok(b)) => field::unify(&a, &b),
@@ -294,6 +360,18 @@ impl RealAlgebraic {
             Repr::Radical(_) => None,
             Repr::Root(r) => r.poly().degree(),
             Repr::Field(v) => Some(v.num.field.degree()),
+        }
+    }
+
+    /// The most bits (numerator + denominator) of a rational in this
+    /// number's representation: a radical sum's coefficients (with its
+    /// bases), an isolated root's polynomial, a field element's polynomial
+    /// and its field's. No arithmetic: what cost models need to know.
+    pub fn coefficient_bits(&self) -> u64 {
+        match &self.0 {
+            Repr::Radical(s) => s.coefficient_bits(),
+            Repr::Root(r) => polys::poly_bits(r.poly()),
+            Repr::Field(v) => polys::poly_bits(&v.num.a).max(polys::poly_bits(v.num.field.poly())),
         }
     }
 
@@ -778,6 +856,20 @@ impl RealAlgebraic {
     }
 }
 
+/// The field `Q(b^{1/n}) = Q[x]/(xⁿ − b)` of the positive real root of an
+/// integer base `b > 1` of a radical sum (`xⁿ − b` is square-free), the
+/// root isolated from the radical's enclosures. Registered, so every
+/// radical sum over `b^{1/n}` shares it.
+fn radical_field(b: &BigInt, n: i64) -> Arc<NumberField> {
+    let mut c = vec![BigRational::zero(); n as usize + 1];
+    c[0] = -BigRational::from_integer(b.clone());
+    c[n as usize] = BigRational::one();
+    let p = UPoly::new(c);
+    let root = RadicalSum::int_power(b, radical::Exp::new(1, n));
+    let (lo, hi) = field::isolate_value(&polys::sturm_sequence(&p), |prec| root.enclosure(prec));
+    NumberField::new(p, lo, hi)
+}
+
 /// `floor(x^{1/n} · 2^prec) / 2^prec` for `x ≥ 0` (0 for `x < 0`).
 fn root_floor(x: &BigRational, n: u32, prec: u32) -> BigRational {
     if !x.is_positive() {
@@ -937,7 +1029,10 @@ impl std::ops::Mul<&RealAlgebraic> for RealAlgebraic {
             (Repr::Radical(a), Repr::Radical(b)) => Self::radical(a.mul(b)),
             _ if self.is_zero() || other.is_zero() => Self::zero(),
             _ => match self.common(other) {
-                Some((k, a, b)) => Self::from_field(k, &a.mul(&b)),
+                Some((k, a, b)) => {
+                    let c = k.product(&a, &b);
+                    Self::from_field(k, &c)
+                }
                 None => self.mul_general(other),
             },
         }
@@ -997,6 +1092,14 @@ impl Roots for RealAlgebraic {
             1 => Some(self.clone()),
             _ => self.root_exact(n),
         }
+    }
+
+    /// `None` when the root's field would be over the field degree limit
+    /// (or a radical's index over the radical index limit), checked before
+    /// any work ([`RealAlgebraic::span_degree`]).
+    fn bounded_root(&self, n: u32) -> Option<Self> {
+        self.check_root_degree(n, "the root").ok()?;
+        self.nth_root(n)
     }
 }
 
