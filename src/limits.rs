@@ -69,8 +69,10 @@ pub const MAX_ALGEBRAIC_EXPONENT: i64 = 64;
 /// fields of degrees `d₁`, `d₂` needs `d₁·d₂`, an `n`-th root `n·d`, known
 /// before the work. An input whose numbers span a larger field (a `CRootOf`
 /// or a root of a sum among them) is refused as it is read
-/// ([`check_field_degree`]); a field a computation would grow past it falls
-/// back to resultants. 32: a tower of square roots `√(1 + √(1 + …))` of
+/// ([`check_field_degree`]), and so is a command whose numbers and
+/// parameters together would span one ([`charge_sizes`]) or whose roots
+/// would extend the field past it ([`charge_extension`]); the library's
+/// arithmetic, called directly, falls back to resultants there. 32: a tower of square roots `√(1 + √(1 + …))` of
 /// degree 16 is read in 0.6 s, of degree 32 in about a minute (debug
 /// builds), of degree 64 in minutes.
 pub const MAX_FIELD_DEGREE: usize = 32;
@@ -233,27 +235,34 @@ pub fn charge_sizes(
     Ok(())
 }
 
-/// The cost of one operation in a number field of degree `degree` over Q,
-/// in rational operations on numbers of the elements' size:
-/// `FIELD_OP_FACTOR · D²` for `D ≥ 2` (an element has `D` coefficients, a
-/// product `D²` coefficient products and its reduction modulo the field's
-/// polynomial as many again), 1 for `D = 1` (Q itself). Saturating.
+/// The cost of one operation on numbers that span a field of degree `D =
+/// degree` over Q, in rational operations on numbers of the elements'
+/// (input) size: `FIELD_OP_FACTOR · D⁴` in a number field (`field`), for
+/// `D ≥ 2`. An element has `D` coefficients, a product takes `D²`
+/// coefficient products and as many for its reduction modulo the field's
+/// polynomial, and the coefficients in the field's basis grow with `D`
+/// (their size, squared in the cost of a rational operation, gives the
+/// other `D²`). Radical sums alone (`!field`) multiply term by term
+/// without that growth: `FIELD_OP_FACTOR · D²`. 1 over Q (`D = 1`).
+/// Saturating.
 ///
-/// The constant is measured, not derived: see [`FIELD_OP_FACTOR`].
-pub fn field_op_cost(degree: u64) -> u64 {
+/// Fitted on the release build (docs/limits.md, "Algebraic work"):
+/// `eval` of a cubic over `Q(θ)`, θ a root of `x^D − x − 1`, takes 0.03,
+/// 0.76 and 27 s for D = 6, 12, 24 (the machine shared), 10–13 ns a unit
+/// with `D⁴`, where `D²` left 0.1–1.8 µs a unit.
+pub fn field_op_cost(degree: u64, field: bool) -> u64 {
     if degree <= 1 {
-        1
-    } else {
-        FIELD_OP_FACTOR.saturating_mul(degree.saturating_mul(degree))
+        return 1;
     }
+    let square = degree.saturating_mul(degree);
+    let growth = if field { square } else { 1 };
+    FIELD_OP_FACTOR
+        .saturating_mul(square)
+        .saturating_mul(growth)
 }
 
-/// The constant of [`field_op_cost`]: the rational operations one field
-/// operation costs per `D²`, fitted on the release build (docs/limits.md,
-/// "Algebraic input"): the coefficients of an element in a field's basis
-/// are larger than the number's own text suggests, and comparisons refine
-/// the generator's enclosure on top of the arithmetic.
-pub const FIELD_OP_FACTOR: u64 = 16;
+/// The constant of [`field_op_cost`] (see there for the fit).
+pub const FIELD_OP_FACTOR: u64 = 4;
 
 /// Charge, before the work, a computation that extends the field of its
 /// numbers (degree `degree`, from [`Cost::field_degree`], numbers of up to
@@ -261,8 +270,8 @@ pub const FIELD_OP_FACTOR: u64 = 16;
 /// `D = n · degree` would be over [`MAX_FIELD_DEGREE`] (`what` names the
 /// computation). Building the extension (a primitive element: `D + 1`
 /// powers and a `D × D` elimination) and writing its numbers (a minimal
-/// polynomial each) cost about `D` operations in it: `exact_work(D, bits)
-/// · field_op_cost(D)`. Rational numbers (`degree` 1) extend nothing the
+/// polynomial each, and the isolation of its root) cost about `D²`
+/// operations in it: `exact_work(D², bits) · field_op_cost(D)`. Rational numbers (`degree` 1) extend nothing the
 /// limit counts: the root of a rational is a radical, bounded by
 /// [`MAX_RADICAL_INDEX`] instead.
 ///
@@ -278,7 +287,8 @@ pub fn charge_extension(what: &str, degree: u64, n: u64, bits: u64) -> Result<()
     check_field_degree(extended, false, what)?;
     charge(
         what,
-        exact_work(extended, bits).saturating_mul(field_op_cost(extended)),
+        exact_work(extended.saturating_mul(extended), bits)
+            .saturating_mul(field_op_cost(extended, true)),
     )
 }
 
@@ -535,7 +545,7 @@ impl Size {
     /// The cost of one operation on this patch's numbers, in rational
     /// operations ([`field_op_cost`] of [`Size::field_degree`]).
     pub fn op_cost(&self) -> u64 {
-        field_op_cost(self.field_degree)
+        field_op_cost(self.field_degree, self.field)
     }
 
     /// Work units of `ops` operations on numbers of `bits` bits made of
@@ -640,11 +650,12 @@ mod tests {
     }
 
     #[test]
-    fn a_field_operation_costs_the_square_of_the_degree() {
-        assert_eq!(field_op_cost(1), 1);
-        assert_eq!(field_op_cost(3), FIELD_OP_FACTOR * 9);
-        assert_eq!(field_op_cost(6), 4 * field_op_cost(3));
-        assert_eq!(field_op_cost(u64::MAX), u64::MAX);
+    fn a_field_operation_costs_the_fourth_power_of_the_degree() {
+        assert_eq!(field_op_cost(1, true), 1);
+        assert_eq!(field_op_cost(3, true), FIELD_OP_FACTOR * 81);
+        assert_eq!(field_op_cost(6, true), 16 * field_op_cost(3, true));
+        assert_eq!(field_op_cost(6, false), 4 * field_op_cost(3, false));
+        assert_eq!(field_op_cost(u64::MAX, true), u64::MAX);
     }
 
     #[test]
@@ -653,7 +664,7 @@ mod tests {
             assert!(charge_extension("κ", 1, 2, 0).is_ok());
             assert_eq!(charged(), 0, "a rational root extends nothing");
             assert!(charge_extension("κ", 16, 2, 0).is_ok());
-            assert_eq!(charged(), exact_work(32, 0) * field_op_cost(32));
+            assert_eq!(charged(), exact_work(32 * 32, 0) * field_op_cost(32, true));
             let e = charge_extension("κ", 17, 2, 0).unwrap_err().to_string();
             assert!(e.contains("degree 34") && e.contains("field degree limit of 32"), "{e}");
         });

@@ -76,10 +76,10 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 /// span, then σ = ∛(N/D), which extends that field to degree `3D`
 /// ([`limits::charge_extension`], refused over the field degree limit).
 fn charge_arc(numbers: &[RealAlgebraic], dim: usize) -> Result<(), Error> {
-    let (degree, _) = RealAlgebraic::field_degree(numbers);
+    let (degree, field) = RealAlgebraic::field_degree(numbers);
     let bits = numbers.iter().map(Cost::bits).max().unwrap_or(0);
     let ops = ARC_OPS_PER_COORDINATE.saturating_mul(dim as u64 + 1);
-    let units = limits::exact_work(ops, bits).saturating_mul(limits::field_op_cost(degree));
+    let units = limits::exact_work(ops, bits).saturating_mul(limits::field_op_cost(degree, field));
     limits::charge("arc", units)?;
     limits::charge_extension("arc's σ = ∛(N/D)", degree, 3, bits)
 }

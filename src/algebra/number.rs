@@ -126,7 +126,7 @@ impl Cost for BigRational {
 /// the degree of the radicals they use, every other number the degree of
 /// its field, distinct fields multiplying). Both are read off the numbers
 /// without arithmetic, so a command charges one operation on them as
-/// [`field_op_cost`](crate::limits::field_op_cost)`(D)` rational operations
+/// [`field_op_cost`](crate::limits::field_op_cost)`(D, field)` rational operations
 /// before it starts.
 impl Cost for RealAlgebraic {
     fn bits(&self) -> u64 {

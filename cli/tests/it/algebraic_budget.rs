@@ -139,37 +139,36 @@ fn case() -> impl Strategy<Value = Case> {
                         Shape::Curve(n) => json!({
                             "kind": "curve", "degree": n, "points": points, "weights": weights,
                         }),
-                        Shape::Rect(m, n) => {
-                            let grid = |v: &[_]| -> Vec<_> {
-                                v.chunks(n + 1).map(<[_]>::to_vec).collect()
-                            };
-                            json!({
-                                "kind": "rect", "degree": [m, n],
-                                "points": grid(&points), "weights": grid(&weights),
-                            })
-                        }
-                        Shape::Tri(n) => {
-                            // Row j holds n − j + 1 points.
-                            let rows = |v: &[_]| -> Vec<Vec<_>> {
-                                let mut rest = v;
-                                (0..=n)
-                                    .map(|j| {
-                                        let (row, tail) = rest.split_at(n - j + 1);
-                                        rest = tail;
-                                        row.to_vec()
-                                    })
-                                    .collect()
-                            };
-                            json!({
-                                "kind": "tri", "degree": n,
-                                "points": rows(&points), "weights": rows(&weights),
-                            })
-                        }
+                        Shape::Rect(m, n) => json!({
+                            "kind": "rect", "degree": [m, n],
+                            "points": grid(&points, n), "weights": grid(&weights, n),
+                        }),
+                        Shape::Tri(n) => json!({
+                            "kind": "tri", "degree": n,
+                            "points": tri_rows(&points, n), "weights": tri_rows(&weights, n),
+                        }),
                     };
                     Case { json, shape, first }
                 })
         },
     )
+}
+
+/// Rows of `n + 1` entries (a rect's `points[i][j]`).
+fn grid<T: Clone>(v: &[T], n: usize) -> Vec<Vec<T>> {
+    v.chunks(n + 1).map(<[T]>::to_vec).collect()
+}
+
+/// A tri patch's rows: row `j` holds `n − j + 1` entries.
+fn tri_rows<T: Clone>(v: &[T], n: usize) -> Vec<Vec<T>> {
+    let mut rest = v;
+    (0..=n)
+        .map(|j| {
+            let (row, tail) = rest.split_at(n - j + 1);
+            rest = tail;
+            row.to_vec()
+        })
+        .collect()
 }
 
 /// Run `args` in-process with `--max-work CASE_WORK` and check the

@@ -173,6 +173,16 @@ impl NumberField {
         Some(found)
     }
 
+    /// Is the field keyed `key` this one or one it was built from (through
+    /// any chain of parents)? No arithmetic.
+    pub(crate) fn holds(&self, key: &Key) -> bool {
+        if &self.key == key {
+            return true;
+        }
+        let parents = self.parents.lock().expect("not poisoned").clone();
+        parents.iter().any(|(k, _)| k.holds(key))
+    }
+
     /// `deg p`.
     pub(crate) fn degree(&self) -> usize {
         self.p.degree().unwrap_or(0)

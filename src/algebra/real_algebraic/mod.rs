@@ -381,7 +381,9 @@ impl RealAlgebraic {
     /// root indices). Radical sums count the degree of the radicals they
     /// use ([`RadicalSum::span_degree`]); every other number (an isolated
     /// root, a field element) the degree of its field, distinct fields
-    /// multiplying, as their compositum needs (`deg K₁K₂ ≤ deg K₁·deg K₂`).
+    /// multiplying, as their compositum needs (`deg K₁K₂ ≤ deg K₁·deg K₂`),
+    /// except that a field (or a radical's field `Q(b^{1/n})`) another one
+    /// of them was built from is counted once, inside that one.
     /// Saturates at `u64::MAX`. Cost: a gcd-free basis of the radicals'
     /// bases; no arithmetic on the numbers.
     ///
@@ -395,32 +397,42 @@ impl RealAlgebraic {
     /// ```
     pub fn span_degree<'a>(xs: impl IntoIterator<Item = &'a RealAlgebraic>) -> (u64, bool) {
         let mut radicals = Vec::new();
-        let mut fields: Vec<(Vec<BigRational>, usize, u64)> = Vec::new();
+        let mut roots: Vec<(field::Key, u64)> = Vec::new();
+        let mut fields: Vec<Arc<NumberField>> = Vec::new();
         for x in xs {
-            let key = match &x.0 {
-                Repr::Radical(s) => {
-                    radicals.extend(s.root_indices());
-                    continue;
+            match &x.0 {
+                Repr::Radical(s) => radicals.extend(s.root_indices()),
+                Repr::Root(r) => {
+                    let key = (r.poly().coeffs().to_vec(), r.index());
+                    if !roots.iter().any(|(k, _)| *k == key) {
+                        roots.push((key, r.poly().degree().unwrap_or(1) as u64));
+                    }
                 }
-                Repr::Root(r) => (r.poly().coeffs().to_vec(), r.index(), r.poly().degree()),
                 Repr::Field(v) => {
-                    let (p, k) = v.num.field.key();
-                    (p, k, v.num.field.poly().degree())
+                    if !fields.iter().any(|f| f.key() == v.num.field.key()) {
+                        fields.push(v.num.field.clone());
+                    }
                 }
-            };
-            let (p, k, d) = (key.0, key.1, key.2.unwrap_or(1) as u64);
-            if !fields.iter().any(|f| f.0 == p && f.1 == k) {
-                fields.push((p, k, d));
             }
         }
+        // A field built from another (or from a radical's field
+        // `Q(b^{1/n})`, radical_field) already holds it: counted once.
+        let held = |key: &field::Key, own: Option<&NumberField>| {
+            fields
+                .iter()
+                .any(|f| own.is_none_or(|o| o.key() != f.key()) && f.holds(key))
+        };
+        let radicals_only = roots.is_empty() && fields.is_empty();
         radicals.sort();
         radicals.dedup();
+        radicals.retain(|(b, n)| !held(&radical_key(b, *n), None));
         let degree = fields
             .iter()
-            .fold(RadicalSum::span_degree(&radicals), |acc, f| {
-                acc.saturating_mul(f.2)
-            });
-        (degree, fields.is_empty())
+            .filter(|f| !held(&f.key(), Some(f)))
+            .map(|f| f.degree() as u64)
+            .chain(roots.iter().filter(|(k, _)| !held(k, None)).map(|r| r.1))
+            .fold(RadicalSum::span_degree(&radicals), u64::saturating_mul);
+        (degree, radicals_only)
     }
 
     /// Refuse (before computing it) an `n`-th root of `self` whose field
@@ -868,6 +880,15 @@ fn radical_field(b: &BigInt, n: i64) -> Arc<NumberField> {
     let root = RadicalSum::int_power(b, radical::Exp::new(1, n));
     let (lo, hi) = field::isolate_value(&polys::sturm_sequence(&p), |prec| root.enclosure(prec));
     NumberField::new(p, lo, hi)
+}
+
+/// The key of [`radical_field`]`(b, n)`: `xⁿ − b` and the index of its
+/// positive root among the real roots (the larger of two for even `n`).
+fn radical_key(b: &BigInt, n: u64) -> field::Key {
+    let mut c = vec![BigRational::zero(); n as usize + 1];
+    c[0] = -BigRational::from_integer(b.clone());
+    c[n as usize] = BigRational::one();
+    (c, usize::from(n % 2 == 0))
 }
 
 /// `floor(x^{1/n} · 2^prec) / 2^prec` for `x ≥ 0` (0 for `x < 0`).
