@@ -666,7 +666,10 @@ mod tests {
             assert!(charge_extension("κ", 16, 2, 0).is_ok());
             assert_eq!(charged(), exact_work(32 * 32, 0) * field_op_cost(32, true));
             let e = charge_extension("κ", 17, 2, 0).unwrap_err().to_string();
-            assert!(e.contains("degree 34") && e.contains("field degree limit of 32"), "{e}");
+            assert!(
+                e.contains("degree 34") && e.contains("field degree limit of 32"),
+                "{e}"
+            );
         });
     }
 

@@ -101,10 +101,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 /// The work is charged with both patches' numbers in one field (the
 /// decision compares them), refused over the field degree limit.
 fn decide<T: ExactScalar>(a: &Args, pa: &Patch<T>, pb: &Patch<T>) -> Result<Value, Error> {
-    let sizes = [
-        pa.size_with(pb.numbers()),
-        pb.size_with(pa.numbers()),
-    ];
+    let sizes = [pa.size_with(pb.numbers()), pb.size_with(pa.numbers())];
     limits::charge_sizes(
         "coincide",
         sizes,

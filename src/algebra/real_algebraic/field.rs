@@ -384,7 +384,11 @@ pub(crate) fn extend(k: &Arc<NumberField>, g: &Arc<NumberField>) -> Option<Arc<N
     if image_in(k, g).is_some() {
         return Some(k.clone());
     }
-    unify(&FieldNum::generator(k.clone()), &FieldNum::generator(g.clone())).map(|(f, _, _)| f)
+    unify(
+        &FieldNum::generator(k.clone()),
+        &FieldNum::generator(g.clone()),
+    )
+    .map(|(f, _, _)| f)
 }
 
 /// `Σ_t c_t ∏_j g_j^{e_tj}` in `k`, for the images `g_j` of generators

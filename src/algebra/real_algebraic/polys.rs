@@ -36,7 +36,11 @@ fn q(n: i64) -> BigRational {
 
 /// The most bits (numerator + denominator) of a coefficient of `p`.
 pub(crate) fn poly_bits(p: &QPoly) -> u64 {
-    p.coeffs().iter().map(crate::limits::bits).max().unwrap_or(0)
+    p.coeffs()
+        .iter()
+        .map(crate::limits::bits)
+        .max()
+        .unwrap_or(0)
 }
 
 /// Record `ops` coefficient operations on the coefficients of `polys` in
@@ -369,7 +373,7 @@ pub(crate) fn resultant(a: &QPoly, b: &QPoly) -> BigRational {
     if n == 0 {
         return b.lead().expect("non-zero").pow(m as i32);
     }
-    meter((m - n + 1) * n, &[a, b]);
+    meter((m + 1).saturating_sub(n).max(1) * n, &[a, b]);
     let (_, r) = a.div_rem(b).expect("non-zero divisor");
     let Some(k) = r.degree() else {
         return BigRational::zero();
