@@ -74,8 +74,10 @@ pub const MAX_ALGEBRAIC_EXPONENT: i64 = 64;
 /// fields of degrees `d₁`, `d₂` needs `d₁·d₂`, an `n`-th root `n·d`, known
 /// before the work. An input whose numbers span a larger field (a `CRootOf`
 /// or a root of a sum among them) is refused as it is read
-/// ([`check_field_degree`]); a field a computation would grow past it falls
-/// back to resultants. 32: a tower of square roots `√(1 + √(1 + …))` of
+/// ([`check_field_degree`]), and so is a command whose numbers and
+/// parameters together would span one ([`charge_sizes`]) or whose roots
+/// would extend the field past it ([`charge_extension`]); the library's
+/// arithmetic, called directly, falls back to resultants there. 32: a tower of square roots `√(1 + √(1 + …))` of
 /// degree 16 is read in 0.6 s, of degree 32 in about a minute (debug
 /// builds), of degree 64 in minutes.
 pub const MAX_FIELD_DEGREE: usize = 32;
@@ -127,6 +129,7 @@ impl Default for Limits {
 thread_local! {
     static CURRENT: Cell<Limits> = const { Cell::new(Limits::DEFAULT) };
     static CHARGED: Cell<u64> = const { Cell::new(0) };
+    static METERED: Cell<u64> = const { Cell::new(0) };
 }
 
 /// The limits in force on this thread.
@@ -134,15 +137,36 @@ pub fn current() -> Limits {
     CURRENT.with(Cell::get)
 }
 
-/// Run `f` under `limits` with a fresh work counter; the previous limits
-/// and counter are restored afterwards.
+/// Run `f` under `limits` with a fresh work counter and a fresh
+/// actual-work meter ([`metered`]); the previous limits, counter and meter
+/// are restored afterwards.
 pub fn with_limits<R>(limits: Limits, f: impl FnOnce() -> R) -> R {
     let old = CURRENT.with(|c| c.replace(limits));
     let old_charged = CHARGED.with(|c| c.replace(0));
+    let old_metered = METERED.with(|c| c.replace(0));
     let r = f();
     CURRENT.with(|c| c.set(old));
     CHARGED.with(|c| c.set(old_charged));
+    METERED.with(|c| c.set(old_metered));
     r
+}
+
+/// Record `ops` coefficient operations actually done on rationals of up to
+/// `bits` bits, in the units of [`exact_work`]: the **actual-work meter**.
+/// It never fails and limits nothing; the exact algebraic arithmetic
+/// (`algebra::real_algebraic`: number-field operations, radical sums,
+/// Sturm sequences, resultants) feeds it, so that tests can compare the
+/// work a command really did with the work it was [`charge`]d
+/// (`cli/tests/it/algebraic_budget.rs`).
+pub fn meter(ops: u64, bits: u64) {
+    let units = exact_work(ops, bits);
+    METERED.with(|c| c.set(c.get().saturating_add(units)));
+}
+
+/// The work recorded by [`meter`] on this thread since [`with_limits`]
+/// began.
+pub fn metered() -> u64 {
+    METERED.with(Cell::get)
 }
 
 /// The work charged on this thread since [`with_limits`] began.
@@ -220,38 +244,93 @@ pub fn exact_work(ops: u64, bits: u64) -> u64 {
 }
 
 /// Charge `what`'s estimated work on patches of `sizes` before computing:
-/// `cost` gives `(operations, bits)` per patch. `exact`: [`Size::exact_units`],
-/// times `16·d^{4N}` per operation instead when a map parameter is a general
-/// root of degree `d = param_degree > 1` (it enters raised to powers up to
-/// the total degree `N`, and the degrees of resultants multiply: a quadratic
-/// curve under a Möbius map with a degree-3 root takes 0.8 s; with a
-/// degree-7 root, or a cubic with a degree-3 root, many minutes). An `f64`
-/// run is charged [`f64_work`] of the operations.
+/// `cost` gives `(operations, bits)` per patch, and `exact` runs are
+/// charged [`Size::exact_units`] (the operations times the cost of one
+/// operation in the patch's number field, [`field_op_cost`]); an `f64` run
+/// is charged [`f64_work`] of the operations. An exact run whose numbers
+/// (with the command's parameters) would build a field over
+/// [`MAX_FIELD_DEGREE`] is refused first: its arithmetic would leave the
+/// bounded field path.
 ///
 /// # Errors
 ///
-/// [`Error::Limit`] as [`charge`].
+/// [`Error::Limit`] as [`charge`] and [`check_field_degree`].
 pub fn charge_sizes(
     what: &str,
     sizes: impl IntoIterator<Item = Size>,
     exact: bool,
-    param_degree: u64,
     cost: impl Fn(&Size) -> (u64, u64),
 ) -> Result<(), Error> {
     for size in sizes {
+        if exact && size.field {
+            check_field_degree(size.field_degree, false, what)?;
+        }
         let (ops, bits) = cost(&size);
-        let units = if !exact {
-            f64_work(ops)
-        } else if param_degree > 1 {
-            let e = u32::try_from(4 * size.total_degree()).unwrap_or(u32::MAX);
-            let param_cost = 16u64.saturating_mul(param_degree.saturating_pow(e));
-            exact_work(ops, bits).saturating_mul(size.op_cost.max(param_cost))
-        } else {
+        let units = if exact {
             size.exact_units(ops, bits)
+        } else {
+            f64_work(ops)
         };
         charge(what, units)?;
     }
     Ok(())
+}
+
+/// The cost of one operation on numbers that span a field of degree `D =
+/// degree` over Q, in rational operations on numbers of the elements'
+/// (input) size: `FIELD_OP_FACTOR · D⁴` in a number field (`field`), for
+/// `D ≥ 2`. An element has `D` coefficients, a product takes `D²`
+/// coefficient products and as many for its reduction modulo the field's
+/// polynomial, and the coefficients in the field's basis grow with `D`
+/// (their size, squared in the cost of a rational operation, gives the
+/// other `D²`). Radical sums alone (`!field`) multiply term by term
+/// without that growth: `FIELD_OP_FACTOR · D²`. 1 over Q (`D = 1`).
+/// Saturating.
+///
+/// Fitted on the release build (docs/limits.md, "Algebraic work"):
+/// `eval` of a cubic over `Q(θ)`, θ a root of `x^D − x − 1`, takes 0.03,
+/// 0.76 and 27 s for D = 6, 12, 24 (the machine shared), 10–13 ns a unit
+/// with `D⁴`, where `D²` left 0.1–1.8 µs a unit.
+pub fn field_op_cost(degree: u64, field: bool) -> u64 {
+    if degree <= 1 {
+        return 1;
+    }
+    let square = degree.saturating_mul(degree);
+    let growth = if field { square } else { 1 };
+    FIELD_OP_FACTOR
+        .saturating_mul(square)
+        .saturating_mul(growth)
+}
+
+/// The constant of [`field_op_cost`] (see there for the fit).
+pub const FIELD_OP_FACTOR: u64 = 4;
+
+/// Charge, before the work, a computation that extends the field of its
+/// numbers (degree `degree`, from [`Cost::field_degree`], numbers of up to
+/// `bits` bits) by an `n`-th root, and refuse it when the extension
+/// `D = n · degree` would be over [`MAX_FIELD_DEGREE`] (`what` names the
+/// computation). Building the extension (a primitive element: `D + 1`
+/// powers and a `D × D` elimination) and writing its numbers (a minimal
+/// polynomial each, and the isolation of its root) cost about `D²`
+/// operations in it: `exact_work(D², bits) · field_op_cost(D)`. Rational numbers (`degree` 1) extend nothing the
+/// limit counts: the root of a rational is a radical, bounded by
+/// [`MAX_RADICAL_INDEX`] instead.
+///
+/// # Errors
+///
+/// [`Error::Limit`] naming the degree and the field degree limit, or the
+/// budget as [`charge`].
+pub fn charge_extension(what: &str, degree: u64, n: u64, bits: u64) -> Result<(), Error> {
+    if degree <= 1 {
+        return Ok(());
+    }
+    let extended = degree.saturating_mul(n);
+    check_field_degree(extended, false, what)?;
+    charge(
+        what,
+        exact_work(extended.saturating_mul(extended), bits)
+            .saturating_mul(field_op_cost(extended, true)),
+    )
 }
 
 /// Check the text of one number before it is parsed: at most
@@ -443,17 +522,20 @@ pub fn max_bits<'a>(xs: impl IntoIterator<Item = &'a BigRational>) -> u64 {
     xs.into_iter().map(bits).max().unwrap_or(0)
 }
 
-/// What the cost model needs to know of one number (implemented for the
-/// exact scalars in `algebra`).
-pub trait Cost {
-    /// The size of the number in bits.
+/// What the cost model needs to know of numbers (implemented for the
+/// exact scalars in `algebra`), known without arithmetic on them.
+pub trait Cost: Sized {
+    /// The size of the number in bits (of its largest rational
+    /// coefficient).
     fn bits(&self) -> u64;
-    /// The work of one operation with this number, in units of a rational
-    /// operation on numbers of the same size (1 for a rational).
-    fn op_cost(&self) -> u64;
-    /// The degree of the general root behind this number (`CRootOf`), 1
-    /// for rationals and radical sums.
-    fn root_degree(&self) -> u64;
+    /// The degree over Q of the number field the numbers `xs` span, as the
+    /// exact arithmetic represents it (1 for rationals): every operation on
+    /// them costs [`field_op_cost`] of it; and whether their arithmetic
+    /// builds that field (false for rationals and for radicals alone, whose
+    /// sums and products stay sums of radicals).
+    fn field_degree<'a>(xs: impl IntoIterator<Item = &'a Self>) -> (u64, bool)
+    where
+        Self: 'a;
 }
 
 /// What the cost model needs to know of a patch (built by the patch's
@@ -468,35 +550,49 @@ pub struct Size {
     pub dim: usize,
     /// The most bits of a stored (homogeneous) number.
     pub bits: u64,
-    /// The largest [`Cost::op_cost`] of a stored number (at least 1).
-    pub op_cost: u64,
+    /// The degree over Q of the number field the stored numbers (and the
+    /// command's parameters) span ([`Cost::field_degree`]; 1 over Q).
+    pub field_degree: u64,
+    /// Whether the arithmetic on them builds that field (an isolated root
+    /// or a field element among them), so [`MAX_FIELD_DEGREE`] applies.
+    pub field: bool,
 }
 
 impl Size {
     /// The size of a patch of `degree` (`tri` for a tri patch) in dimension
-    /// `dim` whose stored numbers are `numbers`.
+    /// `dim` whose stored numbers are `numbers`, computed with numbers
+    /// `with` (a command's parameters: they count in the field degree, not
+    /// in the bits).
     pub fn measure<'a, T: Cost + 'a>(
         degree: (usize, usize),
         tri: bool,
         dim: usize,
         numbers: impl IntoIterator<Item = &'a T>,
+        with: impl IntoIterator<Item = &'a T>,
     ) -> Size {
-        let (bits, op_cost) = numbers
-            .into_iter()
-            .fold((0, 1), |(b, c), x| (b.max(x.bits()), c.max(x.op_cost())));
+        let numbers: Vec<&T> = numbers.into_iter().collect();
+        let bits = numbers.iter().map(|x| x.bits()).max().unwrap_or(0);
+        let (field_degree, field) = T::field_degree(numbers.into_iter().chain(with));
         Size {
             degree,
             tri,
             dim,
             bits,
-            op_cost,
+            field_degree,
+            field,
         }
+    }
+
+    /// The cost of one operation on this patch's numbers, in rational
+    /// operations ([`field_op_cost`] of [`Size::field_degree`]).
+    pub fn op_cost(&self) -> u64 {
+        field_op_cost(self.field_degree, self.field)
     }
 
     /// Work units of `ops` operations on numbers of `bits` bits made of
     /// this patch's numbers: [`exact_work`] times [`Size::op_cost`].
     pub fn exact_units(&self, ops: u64, bits: u64) -> u64 {
-        exact_work(ops, bits).saturating_mul(self.op_cost)
+        exact_work(ops, bits).saturating_mul(self.op_cost())
     }
 
     /// The total degree `m + n` (`n` for a curve or tri patch).
@@ -574,6 +670,48 @@ mod tests {
             },
         );
         assert_eq!(charged(), 0);
+    }
+
+    #[test]
+    fn the_meter_counts_without_failing_and_starts_fresh() {
+        with_limits(
+            Limits {
+                max_work: 1,
+                ..Limits::DEFAULT
+            },
+            || {
+                meter(10, 0);
+                meter(u64::MAX, 64);
+                assert_eq!(metered(), u64::MAX);
+                with_limits(Limits::DEFAULT, || assert_eq!(metered(), 0));
+                assert_eq!(metered(), u64::MAX);
+            },
+        );
+        assert_eq!(metered(), 0);
+    }
+
+    #[test]
+    fn a_field_operation_costs_the_fourth_power_of_the_degree() {
+        assert_eq!(field_op_cost(1, true), 1);
+        assert_eq!(field_op_cost(3, true), FIELD_OP_FACTOR * 81);
+        assert_eq!(field_op_cost(6, true), 16 * field_op_cost(3, true));
+        assert_eq!(field_op_cost(6, false), 4 * field_op_cost(3, false));
+        assert_eq!(field_op_cost(u64::MAX, true), u64::MAX);
+    }
+
+    #[test]
+    fn extensions_past_the_field_degree_limit_are_refused() {
+        with_limits(Limits::DEFAULT, || {
+            assert!(charge_extension("κ", 1, 2, 0).is_ok());
+            assert_eq!(charged(), 0, "a rational root extends nothing");
+            assert!(charge_extension("κ", 8, 2, 0).is_ok());
+            assert_eq!(charged(), exact_work(16 * 16, 0) * field_op_cost(16, true));
+            let e = charge_extension("κ", 17, 2, 0).unwrap_err().to_string();
+            assert!(
+                e.contains("degree 34") && e.contains("field degree limit of 32"),
+                "{e}"
+            );
+        });
     }
 
     #[test]

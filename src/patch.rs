@@ -69,26 +69,34 @@ impl<T: Ordered> Patch<T> {
 
 impl<T: Scalar + Cost> Patch<T> {
     /// The [`Size`] of this patch: degree, kind, dimension, the most bits
-    /// and the largest operation cost of its stored (homogeneous) numbers.
+    /// of its stored (homogeneous) numbers and the degree of the number
+    /// field they span.
     pub fn size(&self) -> Size {
-        let (degree, tri, dim, points): (_, _, _, Vec<&HPoint<T>>) = match self {
-            Patch::Curve(c) => ((c.degree(), 0), false, c.dim(), c.ctrl().iter().collect()),
-            Patch::Rect(r) => (
-                r.degree(),
-                false,
-                r.dim(),
-                r.ctrl().iter().flatten().collect(),
-            ),
-            Patch::Tri(t) => (
-                (t.degree(), 0),
-                true,
-                t.dim(),
-                t.rows().iter().flatten().collect(),
-            ),
+        self.size_with(&[])
+    }
+
+    /// The [`Size`] of this patch computed with the numbers `with` (a
+    /// command's parameters, another patch's numbers): they join the field
+    /// degree, not the bits.
+    pub fn size_with<'a>(&'a self, with: impl IntoIterator<Item = &'a T>) -> Size {
+        let (degree, tri, dim) = match self {
+            Patch::Curve(c) => ((c.degree(), 0), false, c.dim()),
+            Patch::Rect(r) => (r.degree(), false, r.dim()),
+            Patch::Tri(t) => ((t.degree(), 0), true, t.dim()),
         };
-        let numbers = points
+        Size::measure(degree, tri, dim, self.numbers(), with)
+    }
+
+    /// Every stored (homogeneous) number: weighted coordinates and weights.
+    pub fn numbers(&self) -> Vec<&T> {
+        let points: Vec<&HPoint<T>> = match self {
+            Patch::Curve(c) => c.ctrl().iter().collect(),
+            Patch::Rect(r) => r.ctrl().iter().flatten().collect(),
+            Patch::Tri(t) => t.rows().iter().flatten().collect(),
+        };
+        points
             .into_iter()
-            .flat_map(|h| h.weighted().iter().chain([h.weight()]));
-        Size::measure(degree, tri, dim, numbers)
+            .flat_map(|h| h.weighted().iter().chain([h.weight()]))
+            .collect()
     }
 }

@@ -7,6 +7,7 @@ use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::algebra::Tolerance;
 use exact_bezier::arc::QuadArc;
 use exact_bezier::io::{patch_to_json, JsonScalar};
+use exact_bezier::limits::{self, Cost};
 use exact_bezier::patch::Patch;
 use exact_bezier::Error;
 use num_traits::Zero;
@@ -47,6 +48,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         .chain(pts.iter().flatten().cloned())
         .collect();
     crate::input::check_numbers(&all, "the arc's numbers")?;
+    charge_arc(&all, pts.iter().map(Vec::len).max().unwrap_or(0))?;
     let arc = match (pts.as_slice(), &a.direction) {
         ([b0, b1, b2], None) => QuadArc::from_control(b0, b1, b2, &c, Tolerance::EXACT)?,
         ([b0, b2], Some(d)) if c.is_zero() => {
@@ -67,6 +69,24 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     }
     Ok(out)
 }
+
+/// Charge the arc's work before it starts: a fixed number of operations
+/// per coordinate (the triangle's dot products, `A₁`, the cubic's points:
+/// [`ARC_OPS_PER_COORDINATE`]) in the field of degree `D` that the numbers
+/// span, then σ = ∛(N/D), which extends that field to degree `3D`
+/// ([`limits::charge_extension`], refused over the field degree limit).
+fn charge_arc(numbers: &[RealAlgebraic], dim: usize) -> Result<(), Error> {
+    let (degree, field) = RealAlgebraic::field_degree(numbers);
+    let bits = numbers.iter().map(Cost::bits).max().unwrap_or(0);
+    let ops = ARC_OPS_PER_COORDINATE.saturating_mul(dim as u64 + 1);
+    let units = limits::exact_work(ops, bits).saturating_mul(limits::field_op_cost(degree, field));
+    limits::charge("arc", units)?;
+    limits::charge_extension("arc's σ = ∛(N/D)", degree, 3, bits)
+}
+
+/// Operations of `arc` per coordinate of its points (about 30 products and
+/// sums: the control triangle's checks, `A₁`, the cubic's four points).
+const ARC_OPS_PER_COORDINATE: u64 = 32;
 
 /// One exact number: rational or algebraic text.
 fn number(text: &str) -> Result<RealAlgebraic, Error> {

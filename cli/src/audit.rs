@@ -92,7 +92,7 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 /// The audit of a model over either exact scalar, its work charged first.
 fn run_on<T: SeamScalar + JsonScalar + Cost>(model: &Model<T>, a: &Args) -> Result<Value, Error> {
     let sizes = model.pieces.iter().map(|p| p.patch.size());
-    limits::charge_sizes("audit", sizes, true, 1, audit_cost)?;
+    limits::charge_sizes("audit", sizes, true, audit_cost)?;
     let report = audit(model)?;
     if let Some(out) = &a.plot {
         plot(model, &report, out)?;

@@ -139,8 +139,9 @@ pub(crate) type KeyCache<K> = HashMap<RecordHash, K>;
 /// elevated copy adds one exact pass that undoes the elevation
 /// (`O(size · degree)`) and is then charged as a patch of the lower degree;
 /// anything else is charged the model of `coincide`. Over the real
-/// algebraic numbers: the model of `coincide` times the operation cost of
-/// the numbers (general roots make every operation a resultant).
+/// algebraic numbers: the model of `coincide` times the cost of one
+/// operation in the field the record's numbers span, refused when that
+/// field is over the field degree limit.
 ///
 /// # Errors
 ///
@@ -152,7 +153,13 @@ pub(crate) fn key_work(p: &Member) -> Result<u64, Error> {
     };
     Ok(match p {
         Member::Small(s) => key_work(&Member::Rational(s.to_patch()?))?,
-        Member::Algebraic(p) => coincide(&p.size()),
+        Member::Algebraic(p) => {
+            let s = p.size();
+            if s.field {
+                limits::check_field_degree(s.field_degree, false, "an algebraic record")?;
+            }
+            coincide(&s)
+        }
         Member::Rational(q) => {
             let size = q.size();
             match key_plan(q)? {

@@ -2,11 +2,11 @@
 //! rect patches the same up to Möbius maps, reversal, swapping, elevation,
 //! common factors and weight scaling? Exit 0 either way.
 
-use super::{charge_each, load_exact, patch_f64, ExactPatches, ExactScalar, ScalarKind};
+use super::{load_exact, patch_f64, ExactPatches, ExactScalar, ScalarKind};
 use exact_bezier::algebra::Tolerance;
 use exact_bezier::coincide::{coincide, Options};
 use exact_bezier::io::coincidence_to_json;
-use exact_bezier::limits::Size;
+use exact_bezier::limits::{self, Size};
 use exact_bezier::patch::Patch;
 use exact_bezier::Error;
 use serde_json::Value;
@@ -64,7 +64,10 @@ fn charge_pair<T: ExactScalar>(
     } else {
         sb.degree
     };
-    charge_each("coincide", &[pa.clone(), pb.clone()], scalar, |s| {
+    // Both patches' numbers in one field: the decision compares them.
+    let sizes = [pa.size_with(pb.numbers()), pb.size_with(pa.numbers())];
+    let exact = scalar == ScalarKind::Exact;
+    limits::charge_sizes("coincide", sizes, exact, |s| {
         let lower = Size { degree: low, ..*s };
         let (ops, bits) = coincide_cost(&lower);
         let undo = (s.degree.0 as u64 + 1)
@@ -124,6 +127,9 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 }
 
 /// The exact decision over `T`, or (with `--scalar f64`) the tolerance one.
+///
+/// The work is charged with both patches' numbers in one field (the
+/// decision compares them), refused over the field degree limit.
 fn decide<T: ExactScalar>(a: &Args, pa: &Patch<T>, pb: &Patch<T>) -> Result<Value, Error> {
     charge_pair(pa, pb, a.scalar)?;
     match a.scalar {

@@ -11,7 +11,7 @@ use super::{
 };
 use exact_bezier::algebra::{Ordered, Roots, Scalar};
 use exact_bezier::io::JsonScalar;
-use exact_bezier::limits::Size;
+use exact_bezier::limits::{self, Size};
 use exact_bezier::patch::Patch;
 use exact_bezier::Error;
 use serde_json::{json, Value};
@@ -45,11 +45,18 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 
 /// The exact result on every patch: κ² over `T` and κ = √κ² as a real
 /// algebraic number, with κ as `f64` in `curvature_approx` (left out when
-/// it overflows). The work is charged first.
+/// it overflows). The work is charged first, the square root's extension
+/// of the numbers' field included (refused when it would pass the field
+/// degree limit).
 fn exact_each<T: ExactScalar>(patches: &[Patch<T>], t: &T) -> Result<Value, Error> {
     charge_each("curvature", patches, ScalarKind::Exact, |s| {
         Curvature.cost(s, t.bits())
     })?;
+    for p in patches {
+        let s = p.size();
+        let (_, bits) = Curvature.cost(&s, t.bits());
+        limits::charge_extension("curvature's κ = √κ²", s.field_degree, 2, bits)?;
+    }
     let values = patches
         .iter()
         .map(|p| {

@@ -182,13 +182,28 @@ fn check_field_degree(patches: &[Patch<RealAlgebraic>]) -> Result<(), Error> {
 }
 
 /// Refuse numbers that span a number field over the limit
-/// ([`RealAlgebraic::span_degree`]); radicals alone need no field.
+/// ([`RealAlgebraic::span_degree`]; radicals alone need no field), and
+/// charge the work of having read them: a number that is an isolated root
+/// or a field element of degree `D` was built as one (a Sturm sequence and
+/// its isolation, or a primitive element: about `D` operations in degree
+/// `D`, `exact_work(D, bits) · field_op_cost(D, true)`). The text limits bound
+/// that work before it is done; the charge keeps the counted work whole.
 pub(crate) fn check_numbers(numbers: &[RealAlgebraic], what: &str) -> Result<(), Error> {
     let (degree, radical) = RealAlgebraic::span_degree(numbers);
     if radical {
         return Ok(());
     }
-    limits::check_field_degree(degree, false, what)
+    limits::check_field_degree(degree, false, what)?;
+    let read = numbers.iter().fold(0u64, |acc, x| {
+        let (d, field) = RealAlgebraic::field_degree([x]);
+        let units = if field {
+            limits::exact_work(d, x.bits()).saturating_mul(limits::field_op_cost(d, true))
+        } else {
+            0
+        };
+        acc.saturating_add(units)
+    });
+    limits::charge(what, read)
 }
 
 /// The patches of every file of `paths`, in order: rational if they all

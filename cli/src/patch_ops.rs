@@ -39,7 +39,7 @@ pub(crate) fn charge_each<T: ExactScalar>(
     cost: impl Fn(&Size) -> (u64, u64),
 ) -> Result<(), Error> {
     let sizes = patches.iter().map(Patch::size);
-    limits::charge_sizes(what, sizes, scalar == ScalarKind::Exact, 1, cost)
+    limits::charge_sizes(what, sizes, scalar == ScalarKind::Exact, cost)
 }
 
 /// Convert an exact patch to `f64`, refusing numbers that overflow.
@@ -78,12 +78,9 @@ pub(crate) fn run_each<Op: PatchOp, T: ExactScalar>(
     op: &Op,
 ) -> Result<Value, Error> {
     let param_bits = params.iter().map(T::bits).max().unwrap_or(0);
-    let param_degree = params.iter().map(T::root_degree).max().unwrap_or(1);
-    let sizes = patches.iter().map(Patch::size);
+    let sizes = patches.iter().map(|p| p.size_with(params));
     let exact = scalar == ScalarKind::Exact;
-    limits::charge_sizes(Op::NAME, sizes, exact, param_degree, |s| {
-        op.cost(s, param_bits)
-    })?;
+    limits::charge_sizes(Op::NAME, sizes, exact, |s| op.cost(s, param_bits))?;
     let values = patches
         .iter()
         .map(|p| match scalar {

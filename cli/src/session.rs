@@ -33,6 +33,10 @@ pub struct Outcome {
     pub stderr: String,
     /// Work units charged by the cost model ([`exact_bezier::limits::charged`]).
     pub work: u64,
+    /// Work units the exact algebraic arithmetic actually did, in the same
+    /// units ([`exact_bezier::limits::metered`]): tests compare it with
+    /// [`Outcome::work`].
+    pub metered: u64,
 }
 
 /// The state of the run in progress on this thread.
@@ -68,29 +72,30 @@ fn run_session(args: Vec<String>, stdin: Stdin, direct: bool) -> Outcome {
             direct,
         })
     });
-    let (code, stderr, work) = parse_and_run(args, nested);
+    let (code, stderr, (work, metered)) = parse_and_run(args, nested);
     let session = SESSION.with(|s| s.borrow_mut().pop().expect("the session pushed above"));
     Outcome {
         code: if code == 0 { session.exit } else { code },
         stdout: session.stdout,
         stderr: stderr.map_or_else(String::new, |e| format!("error: {}\n", one_line(&e))),
         work,
+        metered,
     }
 }
 
 /// Parse and run; the exit code, the error message if any, and the work
-/// charged.
-fn parse_and_run(args: Vec<String>, nested: bool) -> (i32, Option<String>, u64) {
+/// charged and metered.
+fn parse_and_run(args: Vec<String>, nested: bool) -> (i32, Option<String>, (u64, u64)) {
     let cli = match Cli::try_parse_from(args) {
         Ok(cli) => cli,
         Err(e) => {
             let (code, err) = clap_outcome(&e);
-            return (code, err, 0);
+            return (code, err, (0, 0));
         }
     };
     let pretty = cli.pretty;
     let run = |command| {
-        let before = limits::charged();
+        let before = (limits::charged(), limits::metered());
         let result = limits::charge("the command", limits::COMMAND_WORK);
         let result = result
             .and_then(|()| dispatch(command))
@@ -98,12 +103,16 @@ fn parse_and_run(args: Vec<String>, nested: bool) -> (i32, Option<String>, u64) 
                 Ok(v) => check_finite(&v).map(|()| Ok(v)),
                 Err(code) => Ok(Err(code)),
             });
-        (result, limits::charged() - before)
+        let work = (
+            limits::charged() - before.0,
+            limits::metered().saturating_sub(before.1),
+        );
+        (result, work)
     };
     let (result, work) = if nested {
         if cli.sets_limits() {
             let e = "limit flags belong to the outer command line".to_string();
-            return (2, Some(e), 0);
+            return (2, Some(e), (0, 0));
         }
         run(cli.command)
     } else {

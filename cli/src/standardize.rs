@@ -32,6 +32,9 @@ pub struct Args {
 pub fn run(a: &Args) -> Result<Value, Error> {
     let patches = load(&a.file)?;
     for p in &patches {
+        if let MapField::General(degree) = map_field(p) {
+            limits::check_field_degree(degree, false, "standardize's β1 = β2 (eq. 19)")?;
+        }
         limits::charge("standardize", standardize_cost(p))?;
     }
     let options = Options {
@@ -70,15 +73,51 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 fn standardize_cost(p: &Patch<BigRational>) -> u64 {
     let s = p.size();
     let (m, n) = (s.degree.0.max(1) as u64, s.degree.1.max(1) as u64);
-    let quadratic = matches!(p, Patch::Rect(r) if !Options::default().linear(r));
+    let map = map_field(p);
+    let quadratic = !matches!(map, MapField::Mobius(_));
     let big = if quadratic { m + n + 1 } else { m.max(n) + 1 };
     let ops = big * big * (m + 1) * (n + 1) * (s.dim as u64 + 1);
-    let field = if quadratic { m * m * n } else { m * n };
-    // β = ((α₂/α₁)^{m/g})^{g/n}·(ω₀₀/ω₀ₙ)^{1/n}, g = gcd(m, n), stays a sum
-    // of radicals when n divides m (or the α are rational, m = 1); otherwise
-    // it is a root of an element of the α's field, isolated by resultants,
-    // whose degrees multiply: charged as D⁸.
-    let general = quadratic && m >= 2 && m % n != 0;
-    let ops = ops.saturating_mul(field.saturating_pow(if general { 8 } else { 3 }));
+    let ops = match map {
+        MapField::Mobius(field) | MapField::Radical(field) => {
+            ops.saturating_mul(field.saturating_pow(3))
+        }
+        MapField::General(field) => ops.saturating_mul(field.saturating_pow(8)),
+    };
     limits::exact_work(ops, s.grown_bits(2 * (m + n), s.bits)) / 10
+}
+
+/// The field of the map's parameters, of degree `D` (a bound): `m·n` for
+/// a Möbius map (`n` for a curve), `m²·n` for the quadratic map (two m-th
+/// roots and an n-th root).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum MapField {
+    /// A Möbius map: roots of rationals, sums of radicals.
+    Mobius(u64),
+    /// The quadratic map with β = ((α₂/α₁)^{m/g})^{g/n}·(ω₀₀/ω₀ₙ)^{1/n},
+    /// g = gcd(m, n), a sum of radicals: n divides m (or the α are
+    /// rational, m = 1).
+    Radical(u64),
+    /// The quadratic map with β a root of an element of the α's field,
+    /// which builds a number field of that degree (refused over
+    /// `MAX_FIELD_DEGREE`); charged as `D⁸`, the isolation's growth.
+    General(u64),
+}
+
+/// The [`MapField`] of standardizing `p`.
+fn map_field(p: &Patch<BigRational>) -> MapField {
+    let (m, n) = match p {
+        Patch::Rect(r) => (r.degree().0.max(1) as u64, r.degree().1.max(1) as u64),
+        Patch::Curve(c) => (c.degree().max(1) as u64, 1),
+        Patch::Tri(t) => (t.degree().max(1) as u64, 1),
+    };
+    match p {
+        Patch::Rect(r) if !Options::default().linear(r) => {
+            if m >= 2 && m % n != 0 {
+                MapField::General(m * m * n)
+            } else {
+                MapField::Radical(m * m * n)
+            }
+        }
+        _ => MapField::Mobius(m * n),
+    }
 }

@@ -110,33 +110,30 @@ impl ExactNumber for RealAlgebraic {
     }
 }
 
-/// Exact rationals: `bits` of numerator and denominator, unit cost.
+/// Exact rationals: `bits` of numerator and denominator, field degree 1.
 impl Cost for BigRational {
     fn bits(&self) -> u64 {
         crate::limits::bits(self)
     }
-    fn op_cost(&self) -> u64 {
-        1
-    }
-    fn root_degree(&self) -> u64 {
-        1
+    fn field_degree<'a>(_: impl IntoIterator<Item = &'a Self>) -> (u64, bool) {
+        (1, false)
     }
 }
 
-/// A model: radical sums multiply term by term (16); a general root
-/// (`CRootOf` of degree `d`) goes through resultants, `16·d²` in a patch
-/// (a rect with a degree-9 root weight is keyed in 0.6 s). A map
-/// parameter that is a general root is charged by
-/// [`charge_sizes`](crate::limits::charge_sizes).
+/// Real algebraic numbers: the bits of the largest rational in their
+/// representation ([`RealAlgebraic::coefficient_bits`]) and the degree `D`
+/// of the field they span ([`RealAlgebraic::span_degree`]: radicals count
+/// the degree of the radicals they use, every other number the degree of
+/// its field, distinct fields multiplying). Both are read off the numbers
+/// without arithmetic, so a command charges one operation on them as
+/// [`field_op_cost`](crate::limits::field_op_cost)`(D, field)` rational operations
+/// before it starts.
 impl Cost for RealAlgebraic {
-    /// ≈ 3.5 bits a character of the number's text.
     fn bits(&self) -> u64 {
-        self.to_string().len() as u64 * 7 / 2
+        self.coefficient_bits()
     }
-    fn op_cost(&self) -> u64 {
-        16u64.saturating_mul(Cost::root_degree(self).saturating_pow(2))
-    }
-    fn root_degree(&self) -> u64 {
-        RealAlgebraic::root_degree(self).unwrap_or(1) as u64
+    fn field_degree<'a>(xs: impl IntoIterator<Item = &'a Self>) -> (u64, bool) {
+        let (degree, radicals) = RealAlgebraic::span_degree(xs);
+        (degree, !radicals)
     }
 }

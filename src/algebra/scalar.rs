@@ -385,6 +385,14 @@ pub fn ratio<T: Scalar>(p: i64, q: i64) -> T {
 pub trait Roots: Ordered {
     /// The real n-th root of `self`, if it exists and is representable.
     fn nth_root(&self, n: u32) -> Option<Self>;
+
+    /// [`Roots::nth_root`] when the root stays inside the limits of exact
+    /// arithmetic (for real algebraic numbers: a number field of degree at
+    /// most [`MAX_FIELD_DEGREE`](crate::limits::MAX_FIELD_DEGREE)), else
+    /// `None`: for callers that have an exact answer without the root.
+    fn bounded_root(&self, n: u32) -> Option<Self> {
+        self.nth_root(n)
+    }
 }
 
 impl Roots for BigRational {

@@ -165,7 +165,9 @@ pub enum MobiusParam<T> {
         /// `α`.
         alpha: T,
     },
-    /// `ρ` is irrational: `ρ^exponent = power` (then `α = 1/(1 + ρ)`).
+    /// `ρ` is not computed: irrational over Q, or (over the real algebraic
+    /// numbers) its root would need a field over the field degree limit
+    /// ([`Roots::bounded_root`]): `ρ^exponent = power` (then `α = 1/(1 + ρ)`).
     Power {
         /// The exponent `a`.
         exponent: usize,
@@ -373,7 +375,7 @@ fn witness<T: Roots>(va: &View<'_, T>, vb: &View<'_, T>) -> Witness<T> {
         Some(a) => {
             let (i, j) = at(a);
             let power = lambda(i, j) / &l00;
-            match power.nth_root(a as u32) {
+            match power.bounded_root(a as u32) {
                 Some(rho) => {
                     let alpha = (T::one() + &rho).recip();
                     MobiusParam::Value { rho, alpha }

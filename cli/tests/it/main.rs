@@ -5,6 +5,7 @@
 //! examples from the workspace root.)
 
 mod algebraic;
+mod algebraic_budget;
 mod arcs;
 mod audit;
 mod coincide;

@@ -173,19 +173,42 @@ impl NumberField {
         Some(found)
     }
 
+    /// Is the field keyed `key` this one or one it was built from (through
+    /// any chain of parents)? No arithmetic.
+    pub(crate) fn holds(&self, key: &Key) -> bool {
+        if &self.key == key {
+            return true;
+        }
+        let parents = self.parents.lock().expect("not poisoned").clone();
+        parents.iter().any(|(k, _)| k.holds(key))
+    }
+
     /// `deg p`.
     pub(crate) fn degree(&self) -> usize {
         self.p.degree().unwrap_or(0)
     }
 
+    /// `a mod p` (metered: a division step per degree of `a` at or above
+    /// `deg p`, `deg p` coefficient operations each).
     fn reduce(&self, a: &QPoly) -> QPoly {
+        let (len, d) = (a.coeffs().len(), self.degree());
+        if len > d {
+            polys::meter((len - d) * d, &[a, &self.p]);
+        }
         a.div_rem(&self.p).expect("p is non-zero").1
+    }
+
+    /// `a · b`, not yet reduced (metered: `len a · len b` coefficient
+    /// products).
+    pub(crate) fn product(&self, a: &QPoly, b: &QPoly) -> QPoly {
+        polys::meter(a.coeffs().len() * b.coeffs().len(), &[a, b]);
+        a.mul(b)
     }
 
     /// `a(b(x)) mod p` (Horner).
     fn compose(&self, a: &QPoly, b: &QPoly) -> QPoly {
         a.coeffs().iter().rev().fold(UPoly::zero(), |acc, c| {
-            self.reduce(&acc.mul(b).add(&UPoly::constant(c.clone())))
+            self.reduce(&self.product(&acc, b).add(&UPoly::constant(c.clone())))
         })
     }
 
@@ -221,8 +244,10 @@ impl NumberField {
         let (mut r0, mut r1) = (self.p.clone(), self.unit(a));
         let (mut s0, mut s1) = (QPoly::zero(), UPoly::constant(q(1)));
         while r1.degree().unwrap_or(0) > 0 {
+            let steps = r0.coeffs().len().saturating_sub(r1.coeffs().len()) + 1;
+            polys::meter(steps * r1.coeffs().len(), &[&r0, &r1]);
             let (quot, rem) = r0.div_rem(&r1).expect("non-zero");
-            let s2 = s0.sub(&quot.mul(&s1));
+            let s2 = s0.sub(&self.product(&quot, &s1));
             (r0, r1, s0, s1) = (r1, rem, s1, s2);
         }
         let c = r1.lead().expect("e is a unit mod p").recip();
@@ -287,6 +312,7 @@ impl FieldNum {
                 if v[*pivot].is_zero() {
                     continue;
                 }
+                crate::limits::meter((d + j + 1) as u64, vector_bits(row.iter().chain(rc)));
                 let f = &v[*pivot] / &row[*pivot];
                 for (x, r) in v.iter_mut().zip(row) {
                     *x -= &f * r;
@@ -299,7 +325,7 @@ impl FieldNum {
                 None => return UPoly::new(combo),
                 Some(pivot) => rows.push((pivot, v, combo)),
             }
-            power = k.reduce(&power.mul(&self.a));
+            power = k.reduce(&k.product(&power, &self.a));
         }
         unreachable!("d + 1 vectors in a space of dimension d are dependent")
     }
@@ -341,6 +367,53 @@ impl FieldNum {
             a: emb.second,
         })
     }
+}
+
+/// The image of `g`'s generator in `k` when `k` is `g` or was built from
+/// it (directly or through other fields).
+pub(crate) fn image_in(k: &NumberField, g: &NumberField) -> Option<QPoly> {
+    if k.key == g.key {
+        return Some(x_poly());
+    }
+    k.image_of(g)
+}
+
+/// A field containing `k` and `g` (`k` itself when it already contains
+/// `g`); `None` when a new compositum would be over the field-degree limit.
+pub(crate) fn extend(k: &Arc<NumberField>, g: &Arc<NumberField>) -> Option<Arc<NumberField>> {
+    if image_in(k, g).is_some() {
+        return Some(k.clone());
+    }
+    unify(
+        &FieldNum::generator(k.clone()),
+        &FieldNum::generator(g.clone()),
+    )
+    .map(|(f, _, _)| f)
+}
+
+/// `Σ_t c_t ∏_j g_j^{e_tj}` in `k`, for the images `g_j` of generators
+/// and terms `(c_t, e_t)` (each power computed once, products reduced).
+pub(crate) fn sum_of_monomials(
+    k: &NumberField,
+    gens: &[QPoly],
+    terms: &[(BigRational, Vec<u32>)],
+) -> QPoly {
+    let mut powers: Vec<Vec<QPoly>> = gens.iter().map(|_| vec![UPoly::constant(q(1))]).collect();
+    let mut total = QPoly::zero();
+    for (c, exps) in terms {
+        let mut acc = UPoly::constant(c.clone());
+        for (j, &e) in exps.iter().enumerate() {
+            while powers[j].len() <= e as usize {
+                let next = k.reduce(&k.product(powers[j].last().expect("x⁰"), &gens[j]));
+                powers[j].push(next);
+            }
+            if e > 0 {
+                acc = k.reduce(&k.product(&acc, &powers[j][e as usize]));
+            }
+        }
+        total = total.add(&acc);
+    }
+    total
 }
 
 /// Both elements written in one field: `(K, a, b)`; `None` when their
@@ -415,7 +488,7 @@ fn times_phi(k: &NumberField, f: &[QPoly], c: &BigRational, v: &Tower) -> Tower 
     }
     // y · v[n−1] y^{n−1} = v[n−1] yⁿ = −v[n−1] Σ f_j y^j.
     for j in 0..n {
-        out[j] = k.reduce(&out[j].sub(&v[n - 1].mul(&f[j])));
+        out[j] = k.reduce(&out[j].sub(&k.product(&v[n - 1], &f[j])));
     }
     out
 }
@@ -530,10 +603,12 @@ fn solve(
         rows.swap(pivot, col);
         let inv = rows[col][col].recip();
         let pivot_row: Vec<BigRational> = rows[col].iter().map(|v| v * &inv).collect();
+        let pivot_bits = vector_bits(&pivot_row);
         for (r, row) in rows.iter_mut().enumerate() {
             if r == col || row[col].is_zero() {
                 continue;
             }
+            crate::limits::meter((width - col) as u64, pivot_bits);
             let factor = row[col].clone();
             for k in col..width {
                 row[k] = &row[k] - &factor * &pivot_row[k];
@@ -546,6 +621,11 @@ fn solve(
             .map(|j| rows.iter().map(|row| row[size + j].clone()).collect())
             .collect(),
     )
+}
+
+/// The most bits of the rationals `v` (for the actual-work meter).
+fn vector_bits<'a>(v: impl IntoIterator<Item = &'a BigRational>) -> u64 {
+    v.into_iter().map(crate::limits::bits).max().unwrap_or(0)
 }
 
 #[cfg(test)]

@@ -123,13 +123,19 @@ impl RealAlgebraic {
     }
 
     /// This number as a field element (`Err` with the value when it is
-    /// rational): a radical sum or an isolated root generates its own field
-    /// (minimal or defining polynomial, isolating interval); a negative one
-    /// is `−θ` for the positive `θ = −x`, so that `x` and `−x` share a field.
+    /// rational): a radical sum lives in the field of its radicals
+    /// ([`Self::radical_parts`]; its own minimal polynomial's field only
+    /// when that one would be over the limit); an isolated root generates
+    /// its own field (defining polynomial, isolating interval), a negative
+    /// one as `−θ` for the positive `θ = −x`, so that `x` and `−x` share a
+    /// field.
     fn field_parts(&self) -> Result<FieldNum, BigRational> {
         if let Repr::Radical(s) = &self.0 {
             if let Some(q) = s.as_rational() {
                 return Err(q);
+            }
+            if let Some(x) = Self::radical_parts(s, None) {
+                return Ok(x);
             }
         }
         if !matches!(self.0, Repr::Field(_)) && self.signum() < 0 {
@@ -137,9 +143,6 @@ impl RealAlgebraic {
         }
         match &self.0 {
             Repr::Radical(s) => {
-                if let Some(q) = s.as_rational() {
-                    return Err(q);
-                }
                 let p = s.minimal_polynomial().monic();
                 let (lo, hi) =
                     field::isolate_value(&polys::sturm_sequence(&p), |prec| s.enclosure(prec));
@@ -157,10 +160,73 @@ impl RealAlgebraic {
         }
     }
 
+    /// The irrational radical sum `s` as an element of a number field that
+    /// contains `within` (when given) and the fields `Q(b^{1/n})` of its
+    /// radicals ([`radical_field`]: one per base `b`, `n` the least common
+    /// denominator of `b`'s exponents): every sum of the same radicals
+    /// lands in the same field, of the degree the radicals span
+    /// ([`RealAlgebraic::span_degree`]) times `within`'s, and a field that
+    /// already holds those radicals is not extended. `None` when a field
+    /// would be over [`crate::limits::MAX_FIELD_DEGREE`].
+    fn radical_parts(s: &RadicalSum, within: Option<&Arc<NumberField>>) -> Option<FieldNum> {
+        let bases = s.bases();
+        let mut gens = Vec::with_capacity(bases.len());
+        let mut k = within.cloned();
+        for b in &bases {
+            let n = s.exponent_lcm(b);
+            let g = radical_field(b, n);
+            k = Some(match k {
+                None => g.clone(),
+                Some(k) => field::extend(&k, &g)?,
+            });
+            gens.push((g, n));
+        }
+        let k = k?;
+        let images = gens
+            .iter()
+            .map(|(g, _)| field::image_in(&k, g))
+            .collect::<Option<Vec<QPoly>>>()?;
+        let terms: Vec<(BigRational, Vec<u32>)> = s
+            .terms()
+            .iter()
+            .map(|(m, c)| {
+                let exps = bases
+                    .iter()
+                    .zip(&gens)
+                    .map(|(b, (_, n))| {
+                        m.0.iter()
+                            .find(|(x, _)| x == b)
+                            .map_or(0, |(_, e)| (e * *n).to_integer() as u32)
+                    })
+                    .collect();
+                (c.clone(), exps)
+            })
+            .collect();
+        FieldNum::new(k.clone(), &field::sum_of_monomials(&k, &images, &terms))
+    }
+
     /// Both numbers in one field, `(K, a, b)` with `self = a(θ)`,
     /// `other = b(θ)`; `None` when that field would be over
-    /// [`crate::limits::MAX_FIELD_DEGREE`].
+    /// [`crate::limits::MAX_FIELD_DEGREE`]. A radical sum meets a field
+    /// element in the field extended by its radicals only.
     fn common(&self, other: &Self) -> Option<(Arc<NumberField>, QPoly, QPoly)> {
+        let radical = |x: &Self| match &x.0 {
+            Repr::Radical(s) if s.as_rational().is_none() => Some(s.clone()),
+            _ => None,
+        };
+        match (radical(self), radical(other)) {
+            (Some(s), None) => {
+                let b = other.field_parts().ok()?;
+                let a = Self::radical_parts(&s, Some(&b.field))?;
+                return field::unify(&a, &b);
+            }
+            (None, Some(s)) => {
+                let a = self.field_parts().ok()?;
+                let b = Self::radical_parts(&s, Some(&a.field))?;
+                return field::unify(&a, &b);
+            }
+            _ => {}
+        }
         let constant = |q: BigRational| UPoly::constant(q);
         match (self.field_parts(), other.field_parts()) {
             (Ok(a), Ok(b)) => field::unify(&a, &b),
@@ -297,13 +363,27 @@ impl RealAlgebraic {
         }
     }
 
+    /// The most bits (numerator + denominator) of a rational in this
+    /// number's representation: a radical sum's coefficients (with its
+    /// bases), an isolated root's polynomial, a field element's polynomial
+    /// and its field's. No arithmetic: what cost models need to know.
+    pub fn coefficient_bits(&self) -> u64 {
+        match &self.0 {
+            Repr::Radical(s) => s.coefficient_bits(),
+            Repr::Root(r) => polys::poly_bits(r.poly()),
+            Repr::Field(v) => polys::poly_bits(&v.num.a).max(polys::poly_bits(v.num.field.poly())),
+        }
+    }
+
     /// The degree over Q of the field that the numbers `xs` span, as the
     /// exact arithmetic represents it, and whether they are all sums of
     /// radicals (whose arithmetic needs no field: their degree only bounds
     /// root indices). Radical sums count the degree of the radicals they
     /// use ([`RadicalSum::span_degree`]); every other number (an isolated
     /// root, a field element) the degree of its field, distinct fields
-    /// multiplying, as their compositum needs (`deg K₁K₂ ≤ deg K₁·deg K₂`).
+    /// multiplying, as their compositum needs (`deg K₁K₂ ≤ deg K₁·deg K₂`),
+    /// except that a field (or a radical's field `Q(b^{1/n})`) another one
+    /// of them was built from is counted once, inside that one.
     /// Saturates at `u64::MAX`. Cost: a gcd-free basis of the radicals'
     /// bases; no arithmetic on the numbers.
     ///
@@ -317,32 +397,42 @@ impl RealAlgebraic {
     /// ```
     pub fn span_degree<'a>(xs: impl IntoIterator<Item = &'a RealAlgebraic>) -> (u64, bool) {
         let mut radicals = Vec::new();
-        let mut fields: Vec<(Vec<BigRational>, usize, u64)> = Vec::new();
+        let mut roots: Vec<(field::Key, u64)> = Vec::new();
+        let mut fields: Vec<Arc<NumberField>> = Vec::new();
         for x in xs {
-            let key = match &x.0 {
-                Repr::Radical(s) => {
-                    radicals.extend(s.root_indices());
-                    continue;
+            match &x.0 {
+                Repr::Radical(s) => radicals.extend(s.root_indices()),
+                Repr::Root(r) => {
+                    let key = (r.poly().coeffs().to_vec(), r.index());
+                    if !roots.iter().any(|(k, _)| *k == key) {
+                        roots.push((key, r.poly().degree().unwrap_or(1) as u64));
+                    }
                 }
-                Repr::Root(r) => (r.poly().coeffs().to_vec(), r.index(), r.poly().degree()),
                 Repr::Field(v) => {
-                    let (p, k) = v.num.field.key();
-                    (p, k, v.num.field.poly().degree())
+                    if !fields.iter().any(|f| f.key() == v.num.field.key()) {
+                        fields.push(v.num.field.clone());
+                    }
                 }
-            };
-            let (p, k, d) = (key.0, key.1, key.2.unwrap_or(1) as u64);
-            if !fields.iter().any(|f| f.0 == p && f.1 == k) {
-                fields.push((p, k, d));
             }
         }
+        // A field built from another (or from a radical's field
+        // `Q(b^{1/n})`, radical_field) already holds it: counted once.
+        let held = |key: &field::Key, own: Option<&NumberField>| {
+            fields
+                .iter()
+                .any(|f| own.is_none_or(|o| o.key() != f.key()) && f.holds(key))
+        };
+        let radicals_only = roots.is_empty() && fields.is_empty();
         radicals.sort();
         radicals.dedup();
+        radicals.retain(|(b, n)| !held(&radical_key(b, *n), None));
         let degree = fields
             .iter()
-            .fold(RadicalSum::span_degree(&radicals), |acc, f| {
-                acc.saturating_mul(f.2)
-            });
-        (degree, fields.is_empty())
+            .filter(|f| !held(&f.key(), Some(f)))
+            .map(|f| f.degree() as u64)
+            .chain(roots.iter().filter(|(k, _)| !held(k, None)).map(|r| r.1))
+            .fold(RadicalSum::span_degree(&radicals), u64::saturating_mul);
+        (degree, radicals_only)
     }
 
     /// Refuse (before computing it) an `n`-th root of `self` whose field
@@ -778,6 +868,29 @@ impl RealAlgebraic {
     }
 }
 
+/// The field `Q(b^{1/n}) = Q[x]/(xⁿ − b)` of the positive real root of an
+/// integer base `b > 1` of a radical sum (`xⁿ − b` is square-free), the
+/// root isolated from the radical's enclosures. Registered, so every
+/// radical sum over `b^{1/n}` shares it.
+fn radical_field(b: &BigInt, n: i64) -> Arc<NumberField> {
+    let mut c = vec![BigRational::zero(); n as usize + 1];
+    c[0] = -BigRational::from_integer(b.clone());
+    c[n as usize] = BigRational::one();
+    let p = UPoly::new(c);
+    let root = RadicalSum::int_power(b, radical::Exp::new(1, n));
+    let (lo, hi) = field::isolate_value(&polys::sturm_sequence(&p), |prec| root.enclosure(prec));
+    NumberField::new(p, lo, hi)
+}
+
+/// The key of [`radical_field`]`(b, n)`: `xⁿ − b` and the index of its
+/// positive root among the real roots (the larger of two for even `n`).
+fn radical_key(b: &BigInt, n: u64) -> field::Key {
+    let mut c = vec![BigRational::zero(); n as usize + 1];
+    c[0] = -BigRational::from_integer(b.clone());
+    c[n as usize] = BigRational::one();
+    (c, usize::from(n % 2 == 0))
+}
+
 /// `floor(x^{1/n} · 2^prec) / 2^prec` for `x ≥ 0` (0 for `x < 0`).
 fn root_floor(x: &BigRational, n: u32, prec: u32) -> BigRational {
     if !x.is_positive() {
@@ -937,7 +1050,10 @@ impl std::ops::Mul<&RealAlgebraic> for RealAlgebraic {
             (Repr::Radical(a), Repr::Radical(b)) => Self::radical(a.mul(b)),
             _ if self.is_zero() || other.is_zero() => Self::zero(),
             _ => match self.common(other) {
-                Some((k, a, b)) => Self::from_field(k, &a.mul(&b)),
+                Some((k, a, b)) => {
+                    let c = k.product(&a, &b);
+                    Self::from_field(k, &c)
+                }
                 None => self.mul_general(other),
             },
         }
@@ -997,6 +1113,14 @@ impl Roots for RealAlgebraic {
             1 => Some(self.clone()),
             _ => self.root_exact(n),
         }
+    }
+
+    /// `None` when the root's field would be over the field degree limit
+    /// (or a radical's index over the radical index limit), checked before
+    /// any work ([`RealAlgebraic::span_degree`]).
+    fn bounded_root(&self, n: u32) -> Option<Self> {
+        self.check_root_degree(n, "the root").ok()?;
+        self.nth_root(n)
     }
 }
 

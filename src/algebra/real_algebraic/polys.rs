@@ -34,6 +34,22 @@ fn q(n: i64) -> BigRational {
     BigRational::from_integer(n.into())
 }
 
+/// The most bits (numerator + denominator) of a coefficient of `p`.
+pub(crate) fn poly_bits(p: &QPoly) -> u64 {
+    p.coeffs()
+        .iter()
+        .map(crate::limits::bits)
+        .max()
+        .unwrap_or(0)
+}
+
+/// Record `ops` coefficient operations on the coefficients of `polys` in
+/// the actual-work meter ([`crate::limits::meter`]).
+pub(crate) fn meter(ops: usize, polys: &[&QPoly]) {
+    let bits = polys.iter().map(|p| poly_bits(p)).max().unwrap_or(0);
+    crate::limits::meter(ops as u64, bits);
+}
+
 /// `p'`.
 pub(crate) fn derivative(p: &QPoly) -> QPoly {
     UPoly::new(
@@ -158,6 +174,12 @@ impl SignPoly {
     fn negated_remainder(&self, other: &SignPoly) -> SignPoly {
         let lc = other.0.last().expect("non-zero divisor");
         let n = other.0.len();
+        let coeff_bits = self.0.iter().chain(&other.0).map(BigInt::bits).max();
+        let steps_bound = self.0.len().saturating_sub(n) + 1;
+        crate::limits::meter(
+            (steps_bound * self.0.len()) as u64,
+            coeff_bits.unwrap_or(0) + steps_bound as u64 * lc.bits(),
+        );
         let mut r = self.0.clone();
         let mut steps = 0;
         while r.len() >= n {
@@ -190,6 +212,9 @@ impl SignPoly {
         let Some(lead) = coeffs.next() else {
             return 0;
         };
+        let degree = self.0.len() as u64;
+        let coeff_bits = self.0.iter().map(BigInt::bits).max().unwrap_or(0);
+        crate::limits::meter(2 * degree, coeff_bits + degree * crate::limits::bits(x));
         let mut acc = lead.clone();
         let mut bpow = BigInt::one();
         for c in coeffs {
@@ -282,6 +307,9 @@ pub(crate) fn eval_on_interval(
     a: &BigRational,
     b: &BigRational,
 ) -> (BigRational, BigRational) {
+    let end_bits = crate::limits::bits(a).max(crate::limits::bits(b));
+    let degree = p.coeffs().len() as u64;
+    crate::limits::meter(4 * degree, poly_bits(p) + degree * end_bits);
     p.coeffs().iter().rev().fold((q(0), q(0)), |(lo, hi), c| {
         let products = [&lo * a, &lo * b, &hi * a, &hi * b];
         let min = products.iter().min().expect("four").clone();
@@ -345,6 +373,7 @@ pub(crate) fn resultant(a: &QPoly, b: &QPoly) -> BigRational {
     if n == 0 {
         return b.lead().expect("non-zero").pow(m as i32);
     }
+    meter((m + 1).saturating_sub(n).max(1) * n, &[a, b]);
     let (_, r) = a.div_rem(b).expect("non-zero divisor");
     let Some(k) = r.degree() else {
         return BigRational::zero();
@@ -367,6 +396,8 @@ pub(crate) fn interpolate(values: &[BigRational]) -> QPoly {
     let Some(deg) = values.len().checked_sub(1) else {
         return UPoly::zero();
     };
+    let value_bits = values.iter().map(crate::limits::bits).max().unwrap_or(0);
+    crate::limits::meter(2 * (deg as u64 + 1).pow(2), value_bits);
     let (mut diff, l): (Vec<BigInt>, _) = common_denominator(values);
     for level in 1..=deg {
         for k in (level..=deg).rev() {

@@ -164,6 +164,7 @@ fn power_enclosure(b: &BigInt, e: &Exp, w: usize) -> (BigInt, BigInt) {
         n /= k;
         let shift = w * (k as usize - 1);
         let index = u32::try_from(k).expect("a prime factor of a root index");
+        crate::limits::meter(u64::from(index), lo.bits() + shift as u64);
         lo = (lo << shift).nth_root(index);
         hi = (hi << shift).nth_root(index) + 1;
     }
@@ -360,7 +361,8 @@ impl RadicalSum {
         self.terms.is_empty()
     }
 
-    fn bases(&self) -> Vec<BigInt> {
+    /// The distinct bases of the monomials, increasing.
+    pub(crate) fn bases(&self) -> Vec<BigInt> {
         let mut b: Vec<BigInt> = self
             .terms
             .keys()
@@ -421,8 +423,22 @@ impl RadicalSum {
         (self.rewrite(&basis), other.rewrite(&basis))
     }
 
+    /// The most bits of a term: its coefficient's (numerator and
+    /// denominator) plus its monomial's bases'.
+    pub(crate) fn coefficient_bits(&self) -> u64 {
+        self.terms
+            .iter()
+            .map(|(m, c)| crate::limits::bits(c) + m.0.iter().map(|(b, _)| b.bits()).sum::<u64>())
+            .max()
+            .unwrap_or(0)
+    }
+
     /// `self + other`.
     pub(crate) fn add(&self, other: &Self) -> Self {
+        crate::limits::meter(
+            (self.terms.len() + other.terms.len()) as u64,
+            self.coefficient_bits().max(other.coefficient_bits()),
+        );
         let (mut a, b) = self.unify(other);
         for (m, c) in b.terms {
             let sum = a.terms.remove(&m).map_or(c.clone(), |x| gcd::sum(&x, &c));
@@ -453,6 +469,10 @@ impl RadicalSum {
     }
 
     fn mul_same_basis(&self, other: &Self) -> Self {
+        crate::limits::meter(
+            (self.terms.len() * other.terms.len()) as u64,
+            self.coefficient_bits().max(other.coefficient_bits()),
+        );
         let mut out: BTreeMap<Monomial, BigRational> = BTreeMap::new();
         for (ma, ca) in &self.terms {
             for (mb, cb) in &other.terms {
@@ -704,7 +724,7 @@ impl RadicalSum {
     }
 
     /// The least common denominator of the exponents of base `b`.
-    fn exponent_lcm(&self, b: &BigInt) -> i64 {
+    pub(crate) fn exponent_lcm(&self, b: &BigInt) -> i64 {
         self.terms
             .keys()
             .flat_map(|m| m.0.iter().filter(|(x, _)| x == b).map(|(_, e)| *e.denom()))

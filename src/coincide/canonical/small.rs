@@ -356,7 +356,8 @@ impl SmallPatch {
             tri: false,
             dim: self.dim,
             bits,
-            op_cost: 1,
+            field_degree: 1,
+            field: false,
         })
     }
 
