@@ -174,6 +174,11 @@ impl RealAlgebraic {
         let mut k = within.cloned();
         for b in &bases {
             let n = s.exponent_lcm(b);
+            // Q(b^{1/n}) has degree n: over the limit, no field is built
+            // (and xⁿ − b is not even written down).
+            if n > crate::limits::MAX_FIELD_DEGREE as i64 {
+                return None;
+            }
             let g = radical_field(b, n);
             k = Some(match k {
                 None => g.clone(),
@@ -425,7 +430,10 @@ impl RealAlgebraic {
         let radicals_only = roots.is_empty() && fields.is_empty();
         radicals.sort();
         radicals.dedup();
-        radicals.retain(|(b, n)| !held(&radical_key(b, *n), None));
+        // Only a radical field of degree n ≤ MAX_FIELD_DEGREE is ever
+        // built (radical_parts), so only such a radical can be held.
+        let small = |n: u64| n <= crate::limits::MAX_FIELD_DEGREE as u64;
+        radicals.retain(|(b, n)| !(small(*n) && held(&radical_key(b, *n), None)));
         let degree = fields
             .iter()
             .filter(|f| !held(&f.key(), Some(f)))
