@@ -70,7 +70,8 @@ pub fn run(a: &Args) -> Result<Result<Value, i32>, Error> {
 /// The model's exact operations per work unit of `eval`: 128. Exact
 /// evaluation is fraction-free (integer de Casteljau over a common
 /// denominator, word-sized and 256-bit tiers first), so it costs about
-/// 1/128 of the rational operations the model counts; the parsing of the
+/// 1/128 of the rational operations the model counts (rationals and sums
+/// of radicals; number-field elements are charged in full); the parsing of the
 /// input, charged apart, is most of an evaluation's time (calibrated,
 /// `cli/benches/cost_model.rs`).
 const EVAL_OPS_PER_UNIT: u64 = 128;
@@ -107,7 +108,9 @@ fn run_patches<T: ExactScalar>(
                     size.total_degree(),
                     exact_bezier::limits::max_bits(at.iter().flatten()),
                 );
-                size.exact_units(ops, bits).div_ceil(EVAL_OPS_PER_UNIT)
+                // Number-field arithmetic has no fraction-free shortcut.
+                let per_unit = if size.field { 1 } else { EVAL_OPS_PER_UNIT };
+                size.exact_units(ops, bits).div_ceil(per_unit)
             }
             ScalarKind::F64 => exact_bezier::limits::f64_work(ops),
         };

@@ -47,7 +47,8 @@ use num_traits::Zero;
 type Curve = RationalCurve<RealAlgebraic>;
 
 /// The work cap of one edge (in [`limits`] units): about 50 000 pieces of
-/// [`maximize`]. An edge's work is not charged to the command's budget.
+/// [`maximize`]. The work an edge used is then charged to the command's
+/// budget, and the cap never exceeds what is left of that budget.
 pub const EDGE_WORK: u64 = 100_000_000;
 
 /// Work units charged per exact point test.
@@ -332,7 +333,8 @@ fn verdict(ms: &[Measure], tol: Option<Interval>) -> Verdict {
 }
 
 /// Measure the edge with Bézier `pieces` between two faces, and judge it
-/// against `tol`. Runs under its own work cap [`EDGE_WORK`].
+/// against `tol`. Runs under its own work cap [`EDGE_WORK`] (at most what is
+/// left of the command's budget), and charges the work it used.
 ///
 /// # Errors
 ///
@@ -370,11 +372,17 @@ pub fn measure_joint(
     faces: &[JointFace<'_>; 2],
     tol: &JointTolerances,
 ) -> Result<JointMeasures, Error> {
+    let outer = limits::current();
     let cap = Limits {
-        max_work: EDGE_WORK,
-        ..limits::current()
+        max_work: EDGE_WORK.min(outer.max_work.saturating_sub(limits::charged())),
+        ..outer
     };
-    limits::with_limits(cap, || measure_capped(pieces, faces, tol))
+    let (measures, used) = limits::with_limits(cap, || {
+        let m = measure_capped(pieces, faces, tol);
+        (m, limits::charged())
+    });
+    limits::charge("the certified measures of an edge", used)?;
+    measures
 }
 
 fn measure_capped(
