@@ -169,30 +169,22 @@ pub(crate) fn gcd_u128(x: u128, y: u128) -> u128 {
         return x | y;
     }
     if let (Ok(a), Ok(b)) = (u64::try_from(x), u64::try_from(y)) {
-        return u128::from(gcd_u64(a, b));
+        return u128::from(binary_gcd(a, b));
     }
-    let twos = (x | y).trailing_zeros();
-    let (mut x, mut y) = (x >> x.trailing_zeros(), y);
-    while y != 0 {
-        y >>= y.trailing_zeros();
-        if x > y {
-            std::mem::swap(&mut x, &mut y);
-        }
-        y -= x;
-    }
-    x << twos
+    binary_gcd(x, y)
 }
 
-/// [`gcd_u128`] of non-zero 64-bit words.
-fn gcd_u64(mut x: u64, mut y: u64) -> u64 {
-    let twos = (x | y).trailing_zeros();
-    x >>= x.trailing_zeros();
-    while y != 0 {
-        y >>= y.trailing_zeros();
+/// Stein's binary gcd of non-zero words (`u64` or `u128`): strip the common
+/// factor 2, then subtract the smaller odd number from the larger.
+fn binary_gcd<W: num_traits::PrimInt>(x: W, y: W) -> W {
+    let twos = (x | y).trailing_zeros() as usize;
+    let (mut x, mut y) = (x >> x.trailing_zeros() as usize, y);
+    while y != W::zero() {
+        y = y >> y.trailing_zeros() as usize;
         if x > y {
             std::mem::swap(&mut x, &mut y);
         }
-        y -= x;
+        y = y - x;
     }
     x << twos
 }
