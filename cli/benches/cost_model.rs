@@ -382,6 +382,15 @@ fn measure(b: &mut Bench) {
         "rect (8,8), f64",
         &["mesh", &r8, "-o", &out_obj, "--density", "256"],
     );
+    let out_svg = b.dir.join("plot.svg").display().to_string();
+    let out_png = b.dir.join("plot.png").display().to_string();
+    b.row("plot (SVG)", "rect (8,8)", &["plot", &r8, "-o", &out_svg]);
+    b.row("plot (PNG)", "rect (8,8)", &["plot", &r8, "-o", &out_png]);
+    b.row(
+        "plot (SVG)",
+        "curve n=64, d=3",
+        &["plot", &c64, "-o", &out_svg],
+    );
 
     // Tri patches.
     let t1 = b.file("t1.json", &tri(g, 1));
@@ -420,6 +429,45 @@ fn measure(b: &mut Bench) {
         b.row("standardize", &label, &["standardize", &b.fixture(&name)]);
     }
 
+    // Trigonometric patches (source 002) and circular arcs (source 004).
+    let bowl = b.fixture("bowl.json");
+    b.row(
+        "eval (trig)",
+        "bowl.json, 4 trig-rects",
+        &["eval", &bowl, "--at", "1/3,1/5"],
+    );
+    b.row(
+        "convert --to rational",
+        "bowl.json, 4 trig-rects",
+        &["convert", &bowl, "--to", "rational"],
+    );
+    b.row(
+        "arc",
+        "cos θ/2 = 3/5, λ = 0",
+        &[
+            "arc",
+            "--cos-half",
+            "3/5",
+            "--lambda",
+            "0",
+            "--points",
+            "1,0;1,4/3;-7/25,24/25",
+        ],
+    );
+    b.row(
+        "arc",
+        "cos θ/2 = √2/2, λ = 1/10",
+        &[
+            "arc",
+            "--cos-half",
+            "sqrt(2)/2",
+            "--lambda",
+            "1/10",
+            "--points",
+            "1,0;1,1;0,1",
+        ],
+    );
+
     // Coincidence, canonical keys, bulk.
     let r16e = elevated_copy(b, &r8, "r8e.json");
     b.row(
@@ -450,6 +498,12 @@ fn measure(b: &mut Bench) {
         "dedup",
         "200 copies of an elevated (16,16)",
         &["dedup", &copies_file],
+    );
+    let few_copies = b.file("copies20.jsonl", &(copies[..20].join("\n") + "\n"));
+    b.row(
+        "dedup --witness",
+        "20 copies of an elevated (16,16)",
+        &["dedup", &few_copies, "--witness"],
     );
     let alg: Vec<String> = (0..50).map(|_| rect(g, 2, 2, true)).collect();
     let alg_file = b.file("alg.jsonl", &(alg.join("\n") + "\n"));

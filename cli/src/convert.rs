@@ -170,16 +170,18 @@ impl Plan<BigRational> {
 fn convert_cost(s: &Size, split_bits: u64) -> (u64, u64) {
     let d1 = s.dim as u64 + 1;
     let (m, n) = (s.degree.0 as u64, s.degree.1 as u64);
+    // Written: three (m, m) rects of a tri patch, two tri patches of
+    // degree m + n of a rect.
     if s.tri {
         let net = (m + 1) * (m + 2) / 2;
         (
-            96 * (m + 1) * (m + 1) * net * d1,
+            96 * (m + 1) * (m + 1) * net * d1 + s.write_ops(3 * (m + 1) * (m + 1) * d1),
             s.grown_bits(2 * m, split_bits),
         )
     } else {
         let big = m + n + 1;
         (
-            8 * big * big * (m + 1) * (n + 1) * d1,
+            8 * big * big * (m + 1) * (n + 1) * d1 + s.write_ops(big * (big + 1) * d1),
             s.grown_bits(2 * (m + n), 1),
         )
     }

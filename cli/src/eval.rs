@@ -101,7 +101,8 @@ fn run_patches<T: ExactScalar>(
         };
         check_points(p, &at, a.extrapolate)?;
         let size = p.size();
-        let ops = size.eval_ops().saturating_mul(at.len() as u64);
+        let points = at.len() as u64;
+        let ops = size.eval_ops().saturating_mul(points) + size.write_ops(points * size.dim as u64);
         let units = match a.scalar {
             ScalarKind::Exact => {
                 let bits = size.grown_bits(

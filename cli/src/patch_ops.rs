@@ -23,9 +23,13 @@ pub(crate) trait PatchOp {
 
     /// Estimated `(operations, bits)` of [`PatchOp::apply`] on a patch of
     /// size `s` at parameters of `param_bits` bits (the cost model of
-    /// [`exact_bezier::limits`]); by default one evaluation.
+    /// [`exact_bezier::limits`]); by default one evaluation and one point
+    /// written.
     fn cost(&self, s: &Size, param_bits: u64) -> (u64, u64) {
-        (s.eval_ops(), s.grown_bits(s.total_degree(), param_bits))
+        (
+            s.eval_ops() + s.write_ops(s.dim as u64),
+            s.grown_bits(s.total_degree(), param_bits),
+        )
     }
 }
 

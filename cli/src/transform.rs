@@ -99,17 +99,21 @@ struct Reparam {
 impl PatchOp for Reparam {
     const NAME: &'static str = "reparam";
 
-    /// Möbius: one evaluation's work. Quadratic: every coefficient of the
-    /// (N, N) result (N = m + n) sums over the whole net, on numbers grown
-    /// by 2N parameter factors, 8 operations a term (calibrated,
-    /// `cli/benches/cost_model.rs`).
+    /// Möbius: one evaluation's work and the net written. Quadratic: every
+    /// coefficient of the (N, N) result (N = m + n) sums over the whole
+    /// net, on numbers grown by 2N parameter factors, 8 operations a term
+    /// (calibrated, `cli/benches/cost_model.rs`), and the result written.
     fn cost(&self, s: &Size, param_bits: u64) -> (u64, u64) {
         if !self.quadratic {
-            return (s.eval_ops(), s.grown_bits(s.total_degree(), param_bits));
+            return (
+                s.eval_ops() + s.write_ops(s.stored_numbers()),
+                s.grown_bits(s.total_degree(), param_bits),
+            );
         }
         let (m, n) = (s.degree.0 as u64, s.degree.1 as u64);
         let big = m + n + 1;
-        let ops = 8 * big * big * (m + 1) * (n + 1) * (s.dim as u64 + 1);
+        let d1 = s.dim as u64 + 1;
+        let ops = 8 * big * big * (m + 1) * (n + 1) * d1 + s.write_ops(big * big * d1);
         (ops, s.grown_bits(2 * (m + n), param_bits))
     }
 
@@ -203,7 +207,8 @@ fn elevate_each<T: ExactScalar>(
         // Every new coefficient a fresh fraction with binomial
         // denominators, written out: 16 operations a term (calibrated,
         // `cli/benches/cost_model.rs`).
-        let ops = 16 * ((m + 1) * (n + 1) * (m + n + 2) * (s.dim + 1)) as u64;
+        let ops = 16 * ((m + 1) * (n + 1) * (m + n + 2) * (s.dim + 1)) as u64
+            + s.write_ops(((m + 1) * (n + 1) * (s.dim + 1)) as u64);
         (ops, s.bits + 2 * (m + n) as u64)
     })?;
     let out = patches
