@@ -139,11 +139,11 @@ pub(crate) type KeyCache<K> = HashMap<RecordHash, K>;
 /// elevated copy adds one exact pass that undoes the elevation
 /// (`O(size · degree)`) and is then charged as a patch of the lower degree;
 /// anything else is charged the model of `coincide`. Over the real
-/// algebraic numbers: the model of `coincide`, and the normalized net
-/// encoded for the digest (each number's minimal polynomial and isolating
-/// interval, [`limits::write_ops`]), times the cost of one operation in the
-/// field the record's numbers span, refused when that field is over the
-/// field degree limit.
+/// algebraic numbers: the model of `coincide` and the signs that order
+/// the normalized points (charged as one point written,
+/// [`limits::write_ops`]: a sign refines an isolating interval), times the
+/// cost of one operation in the field the record's numbers span, refused
+/// when that field is over the field degree limit.
 ///
 /// # Errors
 ///
@@ -161,7 +161,7 @@ pub(crate) fn key_work(p: &Member) -> Result<u64, Error> {
                 limits::check_field_degree(s.field_degree, false, "an algebraic record")?;
             }
             let (ops, bits) = super::coincide::coincide_cost(&s);
-            s.exact_units(ops + s.write_ops(s.stored_numbers()), bits)
+            s.exact_units(ops + s.write_ops(s.dim as u64 + 1), bits)
         }
         Member::Rational(q) => {
             let size = q.size();
