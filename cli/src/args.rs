@@ -15,13 +15,13 @@ pub struct Cli {
     #[command(subcommand)]
     pub(crate) command: Command,
     /// Most decimal digits per input number, exponent included (docs/limits.md).
-    #[arg(long, global = true, value_name = "N")]
+    #[arg(long, global = true, value_parser = parse_count, value_name = "N")]
     max_digits: Option<u64>,
     /// Most bytes of one input file or of standard input.
-    #[arg(long, global = true, value_name = "BYTES")]
+    #[arg(long, global = true, value_parser = parse_count, value_name = "BYTES")]
     max_input_bytes: Option<u64>,
     /// Most estimated work units of one command (docs/limits.md).
-    #[arg(long, global = true, value_name = "UNITS")]
+    #[arg(long, global = true, value_parser = parse_count, value_name = "UNITS")]
     max_work: Option<u64>,
     /// Print JSON results over several indented lines (default: one line).
     #[arg(long, global = true)]
@@ -42,6 +42,35 @@ impl Cli {
     pub(crate) fn sets_limits(&self) -> bool {
         self.max_digits.is_some() || self.max_input_bytes.is_some() || self.max_work.is_some()
     }
+}
+
+/// The value of a limit flag: an integer in digits (`10000000000`) or in
+/// the scientific notation the limit messages print (`1e10`, `1.00e10`,
+/// `2.5e9`), whose value must be a whole number of at most `u64::MAX`.
+fn parse_count(text: &str) -> Result<u64, String> {
+    let bad = || format!("{text:?} is not a whole number (digits, or as 1e10 or 2.5e9)");
+    let (mantissa, exponent) = match text.split_once(['e', 'E']) {
+        Some((m, e)) => (m, e.strip_prefix('+').unwrap_or(e)),
+        None => (text, "0"),
+    };
+    let (whole, fraction) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let fraction = fraction.trim_end_matches('0');
+    let digits = format!("{whole}{fraction}");
+    let all_digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    if !all_digits(&digits) || !all_digits(exponent) || whole.is_empty() {
+        return Err(bad());
+    }
+    let too_large = || format!("{text} is over the largest count, {}", u64::MAX);
+    let shift = exponent
+        .parse::<u32>()
+        .ok()
+        .and_then(|e| e.checked_sub(fraction.len() as u32))
+        .ok_or_else(bad)?;
+    let base: u64 = digits.parse().map_err(|_| too_large())?;
+    10u64
+        .checked_pow(shift)
+        .and_then(|scale| base.checked_mul(scale))
+        .ok_or_else(too_large)
 }
 
 /// Which scalar a command computes with.
@@ -172,4 +201,25 @@ pub(crate) fn dispatch(command: Command) -> Result<Result<Value, i32>, Error> {
         Command::Audit(a) => audit::run(&a),
     }?;
     Ok(Ok(value))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse_count;
+
+    #[test]
+    fn limit_counts_take_digits_and_the_printed_scientific_form() {
+        assert_eq!(parse_count("10000000000"), Ok(10_000_000_000));
+        assert_eq!(parse_count("1e10"), Ok(10_000_000_000));
+        assert_eq!(parse_count("1.00e10"), Ok(10_000_000_000));
+        assert_eq!(parse_count("2.5E+9"), Ok(2_500_000_000));
+        assert_eq!(parse_count("0"), Ok(0));
+        assert_eq!(parse_count("18446744073709551615"), Ok(u64::MAX));
+        for bad in ["", "e5", "1.5", "2.55e1", "-1", "1e", "1e-2", "0x10", "1 e3", "1.e3.2"] {
+            assert!(parse_count(bad).is_err(), "{bad}");
+        }
+        for over in ["18446744073709551616", "1e20", "99999999999999999999e0"] {
+            assert!(parse_count(over).unwrap_err().contains("largest"), "{over}");
+        }
+    }
 }
