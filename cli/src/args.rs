@@ -215,7 +215,9 @@ mod tests {
         assert_eq!(parse_count("2.5E+9"), Ok(2_500_000_000));
         assert_eq!(parse_count("0"), Ok(0));
         assert_eq!(parse_count("18446744073709551615"), Ok(u64::MAX));
-        for bad in ["", "e5", "1.5", "2.55e1", "-1", "1e", "1e-2", "0x10", "1 e3", "1.e3.2"] {
+        for bad in [
+            "", "e5", "1.5", "2.55e1", "-1", "1e", "1e-2", "0x10", "1 e3", "1.e3.2",
+        ] {
             assert!(parse_count(bad).is_err(), "{bad}");
         }
         for over in ["18446744073709551616", "1e20", "99999999999999999999e0"] {

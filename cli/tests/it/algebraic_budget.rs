@@ -198,38 +198,9 @@ fn run(args: &[&str]) -> Outcome {
             out.metered,
             out.work
         );
-        reads_back(&out.stdout, args);
+        crate::common::written_numbers_read_back(&out.stdout, args);
     }
     out
-}
-
-/// Every number the output writes (a string of the numbers' grammar) is
-/// read back under the default limits.
-fn reads_back(stdout: &str, args: &[&str]) {
-    let v: Value = serde_json::from_str(stdout).expect("JSON");
-    let mut strings = Vec::new();
-    collect(&v, &mut strings);
-    for s in strings.iter().filter(|s| is_number(s)) {
-        assert!(
-            RealAlgebraic::from_text(s).is_ok(),
-            "{args:?} wrote {s:.200}, which the reader refuses"
-        );
-    }
-}
-
-fn collect(v: &Value, out: &mut Vec<String>) {
-    match v {
-        Value::String(s) => out.push(s.clone()),
-        Value::Array(a) => a.iter().for_each(|x| collect(x, out)),
-        Value::Object(m) => m.values().for_each(|x| collect(x, out)),
-        _ => {}
-    }
-}
-
-fn is_number(s: &str) -> bool {
-    s.contains(|c: char| c.is_ascii_digit())
-        && s.split(|c: char| !c.is_ascii_alphabetic())
-            .all(|w| w.is_empty() || ["sqrt", "cbrt", "root", "CRootOf", "x"].contains(&w))
 }
 
 /// The exact value of a written number (JSON number or string).

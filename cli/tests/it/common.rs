@@ -53,3 +53,35 @@ pub fn read_to_string(path: impl AsRef<Path>) -> std::io::Result<String> {
 pub fn open(path: impl AsRef<Path>) -> std::io::Result<std::fs::File> {
     std::fs::File::open(root().join(path))
 }
+
+/// Every number a JSON answer writes (a string of the numbers' grammar,
+/// docs/algebraic_numbers.md) is read back by the algebraic reader under
+/// the default limits; `args` names the command in the failure.
+pub fn written_numbers_read_back(stdout: &str, args: &[&str]) {
+    use exact_bezier::algebra::{ExactNumber, RealAlgebraic};
+    let v: serde_json::Value = serde_json::from_str(stdout).expect("JSON");
+    let mut strings = Vec::new();
+    collect_strings(&v, &mut strings);
+    for s in strings.iter().filter(|s| is_number_text(s)) {
+        assert!(
+            RealAlgebraic::from_text(s).is_ok(),
+            "{args:?} wrote {s:.200}, which the reader refuses"
+        );
+    }
+}
+
+fn collect_strings(v: &serde_json::Value, out: &mut Vec<String>) {
+    match v {
+        serde_json::Value::String(s) => out.push(s.clone()),
+        serde_json::Value::Array(a) => a.iter().for_each(|x| collect_strings(x, out)),
+        serde_json::Value::Object(m) => m.values().for_each(|x| collect_strings(x, out)),
+        _ => {}
+    }
+}
+
+/// A string with a digit whose words are all names of the number grammar.
+fn is_number_text(s: &str) -> bool {
+    s.contains(|c: char| c.is_ascii_digit())
+        && s.split(|c: char| !c.is_ascii_alphabetic())
+            .all(|w| w.is_empty() || ["sqrt", "cbrt", "root", "CRootOf", "x"].contains(&w))
+}

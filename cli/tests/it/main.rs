@@ -8,6 +8,7 @@ mod algebraic;
 mod algebraic_budget;
 mod arcs;
 mod audit;
+mod budget_findings;
 mod coincide;
 mod common;
 mod conversions;

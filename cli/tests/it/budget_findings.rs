@@ -1,0 +1,138 @@
+//! The fuzzing findings that opened issue 32, each run as the issue ran it,
+//! in-process under the **default** limits: every one now answers with
+//! work bounded by its charge (the actual-work meter, not wall time), or is
+//! refused at once naming the limit, and every number it writes reads back.
+//! Before the number-field arithmetic, each ran from 20 s to 14 minutes.
+
+use exact_bezier::algebra::{ExactNumber, RealAlgebraic};
+use exact_bezier_cli::{run_with, Outcome, Stdin};
+use serde_json::Value;
+
+/// The issue's 149-byte quadratic: one weight and one coordinate a root of
+/// `x³ − x − 1`.
+const QUADRATIC: &str = r#"{"kind":"curve","degree":2,"points":[[1,"7/2"],["-8/3","-17/2"],["5/6","CRootOf(x**3 - x - 1, 0)"]],"weights":[6,"CRootOf(x**3 - x - 1, 0)","13/5"]}"#;
+
+/// A degree-1 curve with that root.
+const LINE: &str = r#"{"kind":"curve","degree":1,"points":[[1,"7/2"],["5/6","CRootOf(x**3 - x - 1, 0)"]],"weights":[6,"CRootOf(x**3 - x - 1, 0)"]}"#;
+
+/// A cubic with that root.
+const CUBIC: &str = r#"{"kind":"curve","degree":3,"points":[[1,"7/2"],["-8/3","-17/2"],[2,1],["5/6","CRootOf(x**3 - x - 1, 0)"]],"weights":[6,"CRootOf(x**3 - x - 1, 0)",1,"13/5"]}"#;
+
+/// Metered work at most this many times the charge (the calibration's
+/// factor, as `algebraic_budget.rs`), plus a small constant.
+const METER_FACTOR: u64 = 4;
+const METER_SLACK: u64 = 20_000;
+
+/// `sqrt(` nested `depth` times around `inner`.
+fn nested_sqrt(inner: &str, depth: usize) -> String {
+    (0..depth).fold(inner.to_string(), |acc, _| format!("sqrt({acc})"))
+}
+
+/// A degree-1 curve from (0, `y`) to (1, 2).
+fn segment_to(y: &str) -> String {
+    format!(r#"{{"kind":"curve","degree":1,"points":[[0,"{y}"],[1,2]]}}"#)
+}
+
+/// Run `args` with `input` on standard input (`-`) under the default limits.
+fn run(args: &[&str], input: &str) -> Outcome {
+    let argv = std::iter::once("exact-bezier")
+        .chain(args.iter().copied())
+        .map(String::from)
+        .collect();
+    run_with(argv, Stdin::Bytes(input.as_bytes().to_vec()))
+}
+
+/// `run`, which must answer within its charged work, writing only numbers
+/// that read back; the JSON answer.
+fn answers(args: &[&str], input: &str) -> Value {
+    let out = run(args, input);
+    assert_eq!(out.code, 0, "{args:?}: {}", out.stderr);
+    assert!(
+        out.metered <= METER_FACTOR * out.work + METER_SLACK,
+        "{args:?}: metered {} for {} charged",
+        out.metered,
+        out.work
+    );
+    crate::common::written_numbers_read_back(&out.stdout, args);
+    serde_json::from_str(&out.stdout).expect("JSON")
+}
+
+/// "`curvature --at 1/2`, `curvature --at 0` and `elevate --by 2` run for
+/// more than two minutes; `eval --at 7/8` of a degree-1 curve more than a
+/// minute; `deriv` of a cubic 14 minutes."
+#[test]
+fn the_cubic_root_curves_answer_within_their_charge() {
+    let k = answers(&["curvature", "-", "--at", "1/2"], QUADRATIC);
+    // κ² > 0 and κ = √κ², exactly: κ·κ = κ².
+    let k2 = RealAlgebraic::from_text(k["curvature_squared"].as_str().unwrap()).unwrap();
+    let kappa = RealAlgebraic::from_text(k["curvature"].as_str().unwrap()).unwrap();
+    assert_eq!(kappa.clone() * &kappa, k2);
+    answers(&["curvature", "-", "--at", "0"], QUADRATIC);
+    let raised = answers(&["elevate", "-", "--by", "2"], QUADRATIC);
+    // Elevation keeps the end points: the last weight is still 13/5.
+    assert_eq!(raised["weights"][4], "13/5");
+    let p = answers(&["eval", "-", "--at", "7/8"], LINE);
+    // Independently: (1−t)·w₀·P₀ + t·w₁·P₁ over (1−t)·w₀ + t·w₁ at t = 7/8,
+    // with w₁ = α: x = (6/8 + 7/8·α·5/6)/(6/8 + 7/8·α).
+    let alpha = RealAlgebraic::from_text("CRootOf(x**3 - x - 1, 0)").unwrap();
+    let q = |s: &str| RealAlgebraic::from_text(s).unwrap();
+    let den = q("3/4") + &(q("7/8") * &alpha);
+    let x = (q("3/4") + &(q("35/48") * &alpha)) / &den;
+    assert_eq!(q(p["point"][0].as_str().unwrap()), x);
+    answers(&["deriv", "-", "--at", "1/2"], CUBIC);
+    // "eval of a cubic with that CRootOf at 2/3 writes a 10 092-character
+    // number (the reader takes ≤ 10 000)".
+    answers(&["eval", "-", "--at", "2/3"], CUBIC);
+}
+
+/// "a 56-character number, `sqrt(` nested 15 times around 3, makes `eval`
+/// run more than 20 s"; "`sqrt` nested 7 times around 2 is written as
+/// `root(2, 128)`, which the reader refuses".
+#[test]
+fn nested_square_roots_answer_and_read_back() {
+    let deep = nested_sqrt("3", 15);
+    let v = answers(&["eval", "-", "--at", "0"], &segment_to(&deep));
+    assert_eq!(
+        RealAlgebraic::from_text(v["point"][1].as_str().unwrap()).unwrap(),
+        RealAlgebraic::from_text(&deep).unwrap()
+    );
+    let seven = nested_sqrt("2", 7);
+    let v = answers(&["eval", "-", "--at", "0"], &segment_to(&seven));
+    let written = RealAlgebraic::from_text(v["point"][1].as_str().unwrap()).unwrap();
+    // 2^(1/128), independently: its 128th power is 2.
+    let power = (0..7).fold(written, |x, _| x.clone() * &x);
+    assert_eq!(power, RealAlgebraic::from_text("2").unwrap());
+}
+
+/// "`curvature --at 1e999 --extrapolate` writes κ with 63 940 characters":
+/// now refused before the work, naming the budget and the flag.
+#[test]
+fn curvature_far_outside_is_refused_at_once() {
+    let out = run(
+        &["curvature", "-", "--at", "1e999", "--extrapolate"],
+        QUADRATIC,
+    );
+    assert_eq!(out.code, 2, "{}", out.stdout);
+    assert!(
+        out.stderr.contains("over a limit") && out.stderr.contains("--max-work"),
+        "{}",
+        out.stderr
+    );
+    assert!(
+        out.metered <= METER_SLACK,
+        "metered {} before refusing",
+        out.metered
+    );
+}
+
+/// "`dedup --max-work 1` still answers (while `coincide --max-work 1`
+/// refuses)": both bulk commands now charge every record.
+#[test]
+fn bulk_commands_honour_the_work_budget() {
+    let records = format!("{QUADRATIC}\n{LINE}\n");
+    for command in ["dedup", "key"] {
+        let out = run(&["--max-work", "1", command, "-"], &records);
+        assert_eq!(out.code, 2, "{command}: {}", out.stdout);
+        assert!(out.stderr.contains("over a limit"), "{}", out.stderr);
+    }
+}
