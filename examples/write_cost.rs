@@ -8,7 +8,7 @@
 //! ```
 
 use exact_bezier::algebra::{ExactNumber, RealAlgebraic};
-use exact_bezier::limits::{field_op_cost, metered, with_limits, write_ops, Limits};
+use exact_bezier::limits::{exact_work, field_op_cost, metered, with_limits, write_ops, Limits};
 
 /// Elements generating fields of degree 4, 6, 8 and 10.
 const ELEMENTS: [&str; 4] = [
@@ -32,8 +32,9 @@ fn main() -> Result<(), exact_bezier::Error> {
             let d = c.root_degree().unwrap_or(1) as u64;
             let op = field_op_cost(d, true);
             println!(
-                "{d:>3} {product:>9} {op:>8} {write:>8} {:>8} {:>9.1}",
-                op * write_ops(d, true),
+                "{d:>3} {product:>9} {:>8} {write:>8} {:>8} {:>9.1}",
+                exact_work(1, 0) * op,
+                exact_work(write_ops(d, true), 0) * op,
                 write as f64 / d.pow(5) as f64
             );
             std::hint::black_box(written);

@@ -204,8 +204,10 @@ fn sci(x: u64) -> String {
 /// `cli/benches/cost_model.rs`).
 pub const COMMAND_WORK: u64 = 25_000;
 
-/// Work units per byte of a JSON input read whole (the exact numbers
-/// parsed from their text: about 0.6 µs a byte in a release build).
+/// Work units per byte of a JSON input read whole, white space not counted
+/// (the exact numbers parsed from their text: about 0.5 µs a byte in a
+/// release build; the indentation of a pretty-printed file costs next to
+/// nothing).
 pub const JSON_BYTE_WORK: u64 = 64;
 
 /// Work units per byte of an input read as a stream (STEP, the models of
@@ -315,9 +317,9 @@ pub const FIELD_OP_FACTOR: u64 = 4;
 /// term, at no cost beyond the operation count of the command.
 ///
 /// Measured with the actual-work [`meter`] (`examples/write_cost.rs`):
-/// about `25·D⁵` units a number for D = 4…10, against `4·D⁴` charged per
-/// product, so writing is `≈ 6·D` products; the factor 8 keeps the charge
-/// above it.
+/// about `25·D⁵` units a number for D = 4…10; `2·D` operations of
+/// `4·D⁴` each on numbers of at most two words ([`exact_work`]: 4 units an
+/// operation) charge `32·D⁵`.
 pub fn write_ops(degree: u64, field: bool) -> u64 {
     if field && degree >= 2 {
         WRITE_OPS_PER_DEGREE.saturating_mul(degree)
@@ -327,7 +329,7 @@ pub fn write_ops(degree: u64, field: bool) -> u64 {
 }
 
 /// The constant of [`write_ops`].
-pub const WRITE_OPS_PER_DEGREE: u64 = 8;
+pub const WRITE_OPS_PER_DEGREE: u64 = 2;
 
 /// Charge, before the work, a computation that extends the field of its
 /// numbers (degree `degree`, from [`Cost::field_degree`], numbers of up to

@@ -74,14 +74,22 @@ pub fn run(a: &Args) -> Result<Value, Error> {
 /// per coordinate (the triangle's dot products, `A₁`, the cubic's points:
 /// [`ARC_OPS_PER_COORDINATE`]) in the field of degree `D` that the numbers
 /// span, then σ = ∛(N/D), which extends that field to degree `3D`
-/// ([`limits::charge_extension`], refused over the field degree limit).
+/// ([`limits::charge_extension`], refused over the field degree limit),
+/// and the cubic's numbers written in that extension
+/// ([`limits::write_ops`]; calibrated by `cli/benches/cost_model.rs`).
 fn charge_arc(numbers: &[RealAlgebraic], dim: usize) -> Result<(), Error> {
     let (degree, field) = RealAlgebraic::field_degree(numbers);
     let bits = numbers.iter().map(Cost::bits).max().unwrap_or(0);
     let ops = ARC_OPS_PER_COORDINATE.saturating_mul(dim as u64 + 1);
     let units = limits::exact_work(ops, bits).saturating_mul(limits::field_op_cost(degree, field));
     limits::charge("arc", units)?;
-    limits::charge_extension("arc's σ = ∛(N/D)", degree, 3, bits)
+    limits::charge_extension("arc's σ = ∛(N/D)", degree, 3, bits)?;
+    // The cubic's four points and weights, written in that extension.
+    let extended = degree.saturating_mul(3);
+    let written = 4 * (dim as u64 + 1) * limits::write_ops(extended, degree > 1);
+    let units =
+        limits::exact_work(written, bits).saturating_mul(limits::field_op_cost(extended, true));
+    limits::charge("arc (writing the cubic)", units)
 }
 
 /// Operations of `arc` per coordinate of its points (about 30 products and

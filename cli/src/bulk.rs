@@ -183,6 +183,27 @@ pub(crate) fn key_work(p: &Member) -> Result<u64, Error> {
     })
 }
 
+/// The size of a record and the degree its canonical form is computed at:
+/// the degree of the elevated copy's lower net for a record over Q that
+/// [`key_plan`] finds elevated, its own degree otherwise.
+pub(crate) fn least_degree(p: &Member) -> Result<(Size, (usize, usize)), Error> {
+    let rational = |q: &Patch<BigRational>| -> Result<(Size, (usize, usize)), Error> {
+        let s = q.size();
+        Ok(match key_plan(q)? {
+            KeyPlan::Elevated(to) => (s, to),
+            KeyPlan::Minimal | KeyPlan::General => (s, s.degree),
+        })
+    };
+    match p {
+        Member::Small(q) => rational(&q.to_patch()?),
+        Member::Rational(q) => rational(q),
+        Member::Algebraic(q) => {
+            let s = q.size();
+            Ok((s, s.degree))
+        }
+    }
+}
+
 /// The change of basis modulo p that certifies a net of size `s`:
 /// `(m+1)(n+1)(m+n+2)(d+1)` word operations.
 fn modp_work(s: &Size) -> u64 {

@@ -67,15 +67,21 @@ fn charge_pair<T: ExactScalar>(
     // Both patches' numbers in one field: the decision compares them.
     let sizes = [pa.size_with(pb.numbers()), pb.size_with(pa.numbers())];
     let exact = scalar == ScalarKind::Exact;
-    limits::charge_sizes("coincide", sizes, exact, |s| {
-        let lower = Size { degree: low, ..*s };
-        let (ops, bits) = coincide_cost(&lower);
-        let undo = (s.degree.0 as u64 + 1)
-            * (s.degree.1 as u64 + 1)
-            * (lower.total_degree() + 2)
-            * (s.dim as u64 + 1);
-        (ops + undo, bits)
-    })
+    limits::charge_sizes("coincide", sizes, exact, |s| pair_cost(s, low))
+}
+
+/// The `(operations, bits)` of one side of a decision of size `s` whose
+/// canonical forms are computed at degree `low` ([`charge_pair`]): the
+/// model of [`coincide_cost`] there, plus the pass that undoes an
+/// elevation from `s.degree`.
+pub(super) fn pair_cost(s: &Size, low: (usize, usize)) -> (u64, u64) {
+    let lower = Size { degree: low, ..*s };
+    let (ops, bits) = coincide_cost(&lower);
+    let undo = (s.degree.0 as u64 + 1)
+        * (s.degree.1 as u64 + 1)
+        * (lower.total_degree() + 2)
+        * (s.dim as u64 + 1);
+    (ops + undo, bits)
 }
 
 /// Read exactly one curve or patch from `path` (rational or algebraic).

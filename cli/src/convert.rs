@@ -313,6 +313,9 @@ fn trig_to_rational(a: &Args) -> Result<Value, Error> {
     let patches = read_trig_patches(&read_input(&a.file)?)?.ok_or_else(|| {
         Error::Format("convert --to rational needs trig-curve or trig-rect patches".into())
     })?;
+    for p in &patches {
+        limits::charge("convert --to rational", trig_rational_cost(p, a.scalar))?;
+    }
     let out = patches
         .iter()
         .map(|p| match a.scalar {
@@ -322,6 +325,39 @@ fn trig_to_rational(a: &Args) -> Result<Value, Error> {
         .collect::<Result<Vec<_>, _>>()?;
     Ok(Value::Array(out))
 }
+
+/// The work of one trig patch's rational form: [`TRIG_OPS_PER_NUMBER`]
+/// operations for each number of the result (a quartic curve or a (4, 4)
+/// rect, homogeneous) on numbers of the patch's size; `f64` as
+/// [`limits::f64_work`].
+fn trig_rational_cost(p: &TrigPatch<BigRational>, scalar: ScalarKind) -> u64 {
+    let bits = std::cell::Cell::new(0);
+    let _ = p.map(|x| {
+        bits.set(bits.get().max(limits::bits(x)));
+        0.0
+    });
+    let (points, d) = match p {
+        TrigPatch::Curve(c) => (5, c.points().first().map_or(0, Vec::len)),
+        TrigPatch::Rect(r) => (
+            25,
+            r.points()
+                .first()
+                .and_then(|row| row.first())
+                .map_or(0, Vec::len),
+        ),
+    };
+    let ops = TRIG_OPS_PER_NUMBER * points * (d as u64 + 1);
+    match scalar {
+        ScalarKind::Exact => limits::exact_work(ops, bits.get()),
+        ScalarKind::F64 => limits::f64_work(ops),
+    }
+}
+
+/// Operations per number of a trig patch's rational form: the four trig
+/// basis functions of each direction rewritten in `τ = tan(t/2)` and
+/// multiplied out (calibrated by `cli/benches/cost_model.rs`: the four
+/// trig-rects of `tests/fixtures/bowl.json` took 16 ms, 4 ms a patch).
+const TRIG_OPS_PER_NUMBER: u64 = 1024;
 
 fn trig_rational_json<T: JsonScalar + Ordered>(
     p: &TrigPatch<T>,

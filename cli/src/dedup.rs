@@ -55,7 +55,8 @@ struct Witnesses {
 impl Witnesses {
     /// The witnesses of one keyed chunk whose class ids are `ids`; each
     /// member that is not a representative is charged the work of
-    /// `coincide` first.
+    /// `coincide` with its representative first (both sides, at the
+    /// degree of their common canonical form, [`super::bulk::least_degree`]).
     fn add_chunk(
         &mut self,
         d: &Deduper,
@@ -73,15 +74,13 @@ impl Witnesses {
         for (k, (p, &id)) in read.into_iter().zip(ids).enumerate() {
             let p = p?;
             if d.representative(id) != first + k {
-                let s = match &p {
-                    Member::Small(q) => q.to_patch()?.size(),
-                    Member::Rational(q) => q.size(),
-                    Member::Algebraic(q) => q.size(),
-                };
-                let (ops, bits) = super::coincide::coincide_cost(&s);
+                // Member and representative share a key, so a least degree:
+                // `coincide`'s charge at that degree.
+                let (s, low) = super::bulk::least_degree(&p)?;
+                let (ops, bits) = super::coincide::pair_cost(&s, low);
                 limits::charge(
                     &format!("dedup --witness (through record {})", first + k),
-                    s.exact_units(ops, bits),
+                    s.exact_units(ops, bits).saturating_mul(2),
                 )?;
             }
             patches.push(p);

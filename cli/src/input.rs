@@ -20,7 +20,8 @@ fn read_limited(r: impl Read, what: &str) -> Result<String, Error> {
         .read_to_end(&mut bytes)
         .map_err(|e| Error::Io(format!("cannot read {what}: {e}")))?;
     limits::check_input_bytes(bytes.len() as u64)?;
-    limits::charge_input(bytes.len() as u64, limits::JSON_BYTE_WORK)?;
+    let significant = bytes.iter().filter(|b| !b.is_ascii_whitespace()).count();
+    limits::charge_input(significant as u64, limits::JSON_BYTE_WORK)?;
     String::from_utf8(bytes).map_err(|_| Error::Format(format!("{what} is not UTF-8 text")))
 }
 

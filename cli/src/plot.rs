@@ -3,7 +3,7 @@
 //! [--split diagonal|a,b,c,d,e,f] [--title T]`.
 
 use super::{charge_each, load_all_exact, on_exact, ExactScalar, ScalarKind};
-use exact_bezier::limits::{MAX_PIXELS, MAX_PLOT_POINTS};
+use exact_bezier::limits::{self, MAX_PIXELS, MAX_PLOT_POINTS};
 use exact_bezier::patch::Patch;
 use exact_bezier::render::plot::{plot_png, plot_svg, PlotOptions, Projection, Split};
 use exact_bezier::Error;
@@ -88,8 +88,8 @@ fn plot_to<T: ExactScalar>(
     patches: &[Patch<T>],
     opts: &PlotOptions,
 ) -> Result<Value, Error> {
-    check_plot_size(patches, opts)?;
     let lower = a.output.to_ascii_lowercase();
+    check_plot_size(patches, opts, lower.ends_with(".png"))?;
     let (bytes, format) = if lower.ends_with(".svg") {
         (plot_svg(patches, opts)?.into_bytes(), "svg")
     } else if lower.ends_with(".png") {
@@ -106,8 +106,13 @@ fn plot_to<T: ExactScalar>(
 
 /// Refuse pictures over [`MAX_PIXELS`] or [`MAX_PLOT_POINTS`] sample
 /// points (curves, iso-lines both ways, speed dots), then charge the `f64`
-/// evaluations of the samples.
-fn check_plot_size<T: ExactScalar>(patches: &[Patch<T>], opts: &PlotOptions) -> Result<(), Error> {
+/// evaluations of the samples and, for a PNG (`raster`), the rasterizing
+/// and encoding of every pixel ([`PNG_UNITS_PER_PIXEL`]).
+fn check_plot_size<T: ExactScalar>(
+    patches: &[Patch<T>],
+    opts: &PlotOptions,
+    raster: bool,
+) -> Result<(), Error> {
     let pixels = u64::from(opts.width) * u64::from(opts.height);
     if pixels > MAX_PIXELS {
         return Err(Error::Limit(format!(
@@ -134,8 +139,17 @@ fn check_plot_size<T: ExactScalar>(patches: &[Patch<T>], opts: &PlotOptions) -> 
     }
     charge_each("plot", patches, ScalarKind::F64, |s| {
         (s.eval_ops().saturating_mul(per_surface), 0)
-    })
+    })?;
+    if raster {
+        limits::charge("plot (PNG)", pixels.saturating_mul(PNG_UNITS_PER_PIXEL))?;
+    }
+    Ok(())
 }
+
+/// Work units of rasterizing and encoding one pixel of a PNG: 800×600
+/// pixels of a (8, 8) rect took 15 ms more than its SVG (release build,
+/// `cli/benches/cost_model.rs`), 31 ns a pixel.
+const PNG_UNITS_PER_PIXEL: u64 = 4;
 
 /// Write `bytes` to `path`, creating its folder.
 pub(super) fn write_output(path: &str, bytes: &[u8]) -> Result<(), Error> {
