@@ -328,6 +328,28 @@ pub fn write_ops(degree: u64, field: bool) -> u64 {
     }
 }
 
+/// Charge `what`: writing `count` numbers of `bits` bits that lie in a
+/// field of degree `degree` ([`write_ops`] operations each, at
+/// [`field_op_cost`]); nothing for rationals and radical sums (`field`
+/// false).
+///
+/// # Errors
+///
+/// [`Error::Limit`] as [`charge`].
+pub fn charge_writes(
+    what: &str,
+    count: u64,
+    degree: u64,
+    field: bool,
+    bits: u64,
+) -> Result<(), Error> {
+    let ops = count.saturating_mul(write_ops(degree, field));
+    charge(
+        what,
+        exact_work(ops, bits).saturating_mul(field_op_cost(degree, true)),
+    )
+}
+
 /// The constant of [`write_ops`].
 pub const WRITE_OPS_PER_DEGREE: u64 = 2;
 

@@ -85,11 +85,14 @@ fn charge_arc(numbers: &[RealAlgebraic], dim: usize) -> Result<(), Error> {
     limits::charge("arc", units)?;
     limits::charge_extension("arc's σ = ∛(N/D)", degree, 3, bits)?;
     // The cubic's four points and weights, written in that extension.
-    let extended = degree.saturating_mul(3);
-    let written = 4 * (dim as u64 + 1) * limits::write_ops(extended, degree > 1);
-    let units =
-        limits::exact_work(written, bits).saturating_mul(limits::field_op_cost(extended, true));
-    limits::charge("arc (writing the cubic)", units)
+    let count = 4 * (dim as u64 + 1);
+    limits::charge_writes(
+        "arc (writing the cubic)",
+        count,
+        3 * degree,
+        degree > 1,
+        bits,
+    )
 }
 
 /// Operations of `arc` per coordinate of its points (about 30 products and

@@ -56,6 +56,22 @@ fn exact_each<T: ExactScalar>(patches: &[Patch<T>], t: &T) -> Result<Value, Erro
         let s = p.size();
         let (_, bits) = Curvature.cost(&s, t.bits());
         limits::charge_extension("curvature's κ = √κ²", s.field_degree, 2, bits)?;
+        // Building that extension: the primitive element of κ's field and
+        // its minimal polynomial, `D'³` operations in degree D' = 2D
+        // (metered: 4·10⁶ units for κ of a cubic over Q(√11), twice what
+        // `D'²` charged for it).
+        let (d, field) = (s.field_degree, s.field);
+        if d > 1 {
+            let extended = 2 * d;
+            let ops = extended.pow(3);
+            limits::charge(
+                "curvature's κ = √κ² (its field)",
+                limits::exact_work(ops, bits).saturating_mul(limits::field_op_cost(extended, true)),
+            )?;
+        }
+        // κ² written in the numbers' field, κ in its quadratic extension.
+        limits::charge_writes("curvature (writing κ²)", 1, d, field, bits)?;
+        limits::charge_writes("curvature (writing κ)", 1, 2 * d, d > 1, bits)?;
     }
     let values = patches
         .iter()
