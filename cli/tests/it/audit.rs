@@ -360,3 +360,110 @@ fn geomdl_json_layouts_read_as_our_nurbs() {
         .to_string()
         .contains("size 3×2"));
 }
+
+/// `text` with every non-zero coordinate of every `CARTESIAN_POINT` moved
+/// by 1 to 3 units in the last place of its `f64` value (cycling +1, −2,
+/// +3, …) and written back as the shortest decimal of that `f64`: the
+/// model as an exporter that rounds through `f64` would write it. Zero
+/// stays zero (a rounding of 0 is 0).
+fn moved_by_ulps(text: &str) -> String {
+    const NAME: &str = "CARTESIAN_POINT(";
+    let mut out = String::with_capacity(text.len() + text.len() / 4);
+    let mut rest = text;
+    let mut k = 0u64;
+    while let Some(at) = rest.find(NAME) {
+        let body = at + NAME.len();
+        out.push_str(&rest[..body]);
+        // Skip the quoted name (`''` is a quote inside it), then take the
+        // parenthesized coordinate list.
+        let after_name = skip_quoted(&rest[body..]) + body;
+        let open = after_name + rest[after_name..].find('(').expect("a coordinate list");
+        let close = open + rest[open..].find(')').expect("a closed list");
+        out.push_str(&rest[body..=open]);
+        let coords: Vec<String> = rest[open + 1..close]
+            .split(',')
+            .map(|c| {
+                k += 1;
+                moved(c.trim(), k)
+            })
+            .collect();
+        out.push_str(&coords.join(","));
+        rest = &rest[close..];
+    }
+    out.push_str(rest);
+    out
+}
+
+/// The index just past a leading `'…'` string of `s` (0 if none).
+fn skip_quoted(s: &str) -> usize {
+    let Some(start) = s.find('\'') else { return 0 };
+    let mut i = start + 1;
+    let bytes = s.as_bytes();
+    while i < bytes.len() {
+        if bytes[i] == b'\'' {
+            if bytes.get(i + 1) == Some(&b'\'') {
+                i += 2;
+                continue;
+            }
+            return i + 1;
+        }
+        i += 1;
+    }
+    s.len()
+}
+
+/// A STEP real moved by `1 + (k mod 3)` ulps, up for odd `k`, down for
+/// even, written with a decimal point as STEP requires.
+fn moved(real: &str, k: u64) -> String {
+    let x: f64 = real.parse().unwrap_or_else(|_| panic!("a real: {real:?}"));
+    if x == 0.0 {
+        return real.to_string();
+    }
+    let steps = 1 + k % 3;
+    let bits = if (k % 2 == 1) == (x > 0.0) {
+        x.to_bits() + steps
+    } else {
+        x.to_bits() - steps
+    };
+    let y = f64::from_bits(bits);
+    assert!(y.is_finite() && y != x && (y > 0.0) == (x > 0.0));
+    let shown = format!("{y:?}").replace('e', "E");
+    match shown.find('E') {
+        Some(e) if !shown[..e].contains('.') => format!("{}.{}", &shown[..e], &shown[e..]),
+        _ => shown,
+    }
+}
+
+/// Issue 28, "stable under rounding": the edge classes and the continuity
+/// verdicts of real models, with the default tolerances, are the same after
+/// every coordinate is moved by a few ulps through `f64`. Only the count of
+/// *exact* verdicts may fall (an exact 0 deviation becomes a tiny one,
+/// within tolerance).
+#[test]
+fn brep_verdicts_are_stable_under_f64_rounding() {
+    for name in ["sg1-c5-214.stp", "0058_isolated_blends_test_12.stp"] {
+        let path = fixture(&format!("step/{name}"));
+        let text = crate::common::read_to_string(&path).unwrap();
+        let moved_text = moved_by_ulps(&text);
+        assert_ne!(moved_text, text, "{name}: nothing moved");
+        let moved_path =
+            std::env::temp_dir().join(format!("eb-ulps-{}-{name}", std::process::id()));
+        std::fs::write(&moved_path, &moved_text).unwrap();
+        let (code, before) = cli_json(&["audit", &path, "--summary"]);
+        assert_eq!(code, 0, "{name}: {before}");
+        let (code, after) = cli_json(&["audit", moved_path.to_str().unwrap(), "--summary"]);
+        assert_eq!(code, 0, "{name} moved: {after}");
+        assert_eq!(before["edges"], after["edges"], "{name}");
+        assert_eq!(before["faces"], after["faces"], "{name}");
+        for order in ["G1", "G0", "fails", "undecided", "not_measured"] {
+            assert_eq!(
+                before["continuity"][order], after["continuity"][order],
+                "{name}: {order} changed; before {}, after {}",
+                before["continuity"], after["continuity"]
+            );
+        }
+        let exact = |v: &Value| v["continuity"]["exact"].as_u64().unwrap();
+        assert!(exact(&after) <= exact(&before), "{name}");
+        std::fs::remove_file(&moved_path).ok();
+    }
+}
