@@ -500,6 +500,44 @@ fn analytic_pieces_satisfy_the_closed_forms_of_their_entities() {
     assert!(edges_checked > 1000, "{edges_checked} edge points");
 }
 
+/// The knot lines of `a` are the counter's `knot_lines` (every interior
+/// knot of every B-spline face, found from the file's multiplicities), each
+/// at least as smooth as its multiplicity makes it: `C^{p−μ}`, exactly or
+/// more (a knot the control net makes removable is `None`, C^∞).
+fn knot_lines_agree_with_the_multiplicities(
+    name: &str,
+    a: &exact_bezier::audit::brep::BrepAudit,
+    want: &Value,
+) {
+    let want = want.as_object().expect("knot_lines");
+    let ours: std::collections::BTreeSet<String> =
+        a.knot_lines.keys().map(|f| format!("#{f}")).collect();
+    let theirs: std::collections::BTreeSet<String> = want.keys().cloned().collect();
+    assert_eq!(ours, theirs, "{name}: faces with knot lines");
+    for (face, lines) in &a.knot_lines {
+        let listed = want[&format!("#{face}")].as_array().unwrap();
+        assert_eq!(lines.len(), listed.len(), "{name} #{face}: knot lines");
+        for w in listed {
+            let direction = w[0].as_str().unwrap();
+            let knot = exact_bezier::algebra::parse_rational(w[1].as_str().unwrap()).unwrap();
+            let (degree, nominal) = (
+                w[2].as_u64().unwrap() as usize,
+                w[3].as_u64().unwrap() as usize,
+            );
+            let line = lines
+                .iter()
+                .find(|l| l.direction.name() == direction && l.knot == knot)
+                .unwrap_or_else(|| panic!("{name} #{face}: no {direction} = {knot}"));
+            assert_eq!(line.degree, degree, "{name} #{face}");
+            assert!(
+                line.continuity.is_none_or(|r| r >= nominal),
+                "{name} #{face} {direction} = {knot}: C{:?} below C{nominal}",
+                line.continuity
+            );
+        }
+    }
+}
+
 /// The B-rep audit classifies every edge of every corpus model as the
 /// independent counter does (shared / seam / open / non-manifold from the
 /// loops), finds no open edge in a model whose shells are all closed, and
@@ -557,6 +595,7 @@ fn brep_audit_classifies_edges_as_the_independent_counter() {
         };
         assert_eq!(a.tolerance.source, source, "{name}");
         assert_eq!(a.faces(), m.faces.len(), "{name}: faces");
+        knot_lines_agree_with_the_multiplicities(name, &a, &want["knot_lines"]);
     }
 }
 

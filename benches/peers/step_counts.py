@@ -22,6 +22,8 @@ For every file it prints (one JSON object keyed by file name):
 * ``edge_uses``: how the face loops use each EDGE_CURVE (through
   ORIENTED_EDGE): ``shared`` (two faces), ``seam`` (one face twice),
   ``open`` (once), ``non_manifold`` (more than two uses), ``unused``;
+* ``knot_lines``: for each face on a B-spline surface with interior knots,
+  each knot with the continuity its multiplicity gives (see ``knot_lines``);
 * ``contexts``: for each representation context with units, its length,
   plane-angle and solid-angle units and UNCERTAINTY_MEASURE_WITH_UNIT
   values (as written in the file, never converted to floating point);
@@ -520,6 +522,42 @@ def contexts(inst):
     return result
 
 
+def knot_lines(inst, face_ids):
+    """The interior knots of every face's B-spline surface, with the
+    continuity their multiplicity gives: ``C^(degree - multiplicity)`` (a
+    B-spline of degree p is C^(p-m) across a knot of multiplicity m; Piegl &
+    Tiller, The NURBS Book, section 2.5).  Interior knots are the distinct
+    knots strictly inside the domain ``[U[p], U[len(U)-p-1]]`` of the
+    expanded knot vector.  Returns ``{"#face": [[direction, knot, degree,
+    nominal], ...]}`` for the faces that have any; the knot as the file
+    wrote it."""
+    out = {}
+    for fid in face_ids:
+        parts = inst[fid]
+        p = params_of(parts, "ADVANCED_FACE") or params_of(parts, "FACE_SURFACE")
+        surf = inst.get(p[2].id) if isinstance(p[2], Ref) else None
+        if not surf or "B_SPLINE_SURFACE_WITH_KNOTS" not in surf:
+            continue
+        with_knots = params_of(surf, "B_SPLINE_SURFACE_WITH_KNOTS")
+        base = params_of(surf, "B_SPLINE_SURFACE")
+        if base is None:  # a simple instance: name, then B_SPLINE_SURFACE's own
+            base, with_knots = with_knots[1:8], with_knots[8:]
+        degrees = (int(base[0]), int(base[1]))
+        mults = (with_knots[0], with_knots[1])
+        knots = (with_knots[2], with_knots[3])
+        lines = []
+        for k, direction in enumerate("uv"):
+            deg = degrees[k]
+            expanded = [float(x) for x, m in zip(knots[k], mults[k]) for _ in range(int(m))]
+            lo, hi = expanded[deg], expanded[len(expanded) - deg - 1]
+            for x, m in zip(knots[k], mults[k]):
+                if lo < float(x) < hi:
+                    lines.append([direction, str(x), deg, deg - int(m)])
+        if lines:
+            out["#%d" % fid] = lines
+    return out
+
+
 def summarize(path):
     """Everything this script reports for one file."""
     header, inst, report = read_file(path)
@@ -533,6 +571,7 @@ def summarize(path):
         "shells": {"CLOSED_SHELL": names.get("CLOSED_SHELL", 0), "OPEN_SHELL": names.get("OPEN_SHELL", 0)},
         "solids": {s: names.get(s, 0) for s in SOLIDS},
         "edge_uses": edge_uses(inst, face_ids),
+        "knot_lines": knot_lines(inst, face_ids),
         "contexts": contexts(inst),
         "text": report,
     }

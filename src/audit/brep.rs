@@ -22,6 +22,7 @@
 
 use super::certify::Verdict;
 use super::joint::{measure_joint, JointFace, JointMeasures, JointTolerances};
+use super::knots::{knot_lines, KnotLine};
 use crate::algebra::{Interval, Ordered, RealAlgebraic, Scalar};
 use crate::curve::RationalCurve;
 use crate::patch::Patch;
@@ -183,6 +184,10 @@ pub struct BrepAudit {
     pub tolerance: Tolerances,
     /// Faces and edges whose geometry is not converted, by type.
     pub not_converted: BTreeMap<String, usize>,
+    /// The interior knot lines of every B-spline face, by face id (faces
+    /// without any are left out): the continuity of the face's own
+    /// surface, not a seam ([`super::knots`]).
+    pub knot_lines: BTreeMap<u64, Vec<KnotLine>>,
     /// Entities that could not be read.
     pub invalid: usize,
 }
@@ -357,11 +362,21 @@ fn audit_with(m: &BrepModel, tol: Option<Q>, angle: Q, measured: bool) -> BrepAu
             }
         })
         .collect();
+    let knot_lines = m
+        .faces
+        .values()
+        .filter_map(|f| match &f.surface.geometry {
+            Geometry::Pieces(pieces) => Some((f.id, knot_lines(pieces))),
+            _ => None,
+        })
+        .filter(|(_, lines)| !lines.is_empty())
+        .collect();
     BrepAudit {
         faces_by_surface: m.summary.faces_by_surface.clone(),
         edges,
         tolerance,
         not_converted: m.summary.not_converted.clone(),
+        knot_lines,
         invalid: m.summary.invalid.len(),
     }
 }
@@ -402,6 +417,19 @@ impl BrepAudit {
         out
     }
 
+    /// The knot lines of all faces by continuity: `"C0"`, `"C1"`, … and
+    /// `"removable"` (one polynomial across the knot).
+    pub fn knot_line_counts(&self) -> BTreeMap<String, usize> {
+        let mut out = BTreeMap::new();
+        for line in self.knot_lines.values().flatten() {
+            let key = line
+                .continuity
+                .map_or_else(|| "removable".to_string(), |r| format!("C{r}"));
+            *out.entry(key).or_default() += 1;
+        }
+        out
+    }
+
     /// The one-line summary, naming what was not done.
     pub fn summary(&self) -> String {
         let n = |c| self.count(c);
@@ -410,6 +438,16 @@ impl BrepAudit {
         let g = |k| grades.get(&k).map_or(0, |c| c[0]);
         let exact: usize = grades.values().map(|c| c[1]).sum();
         let not_measured = self.not_measured();
+        let knot_counts = self.knot_line_counts();
+        let knots = if knot_counts.is_empty() {
+            "none".to_string()
+        } else {
+            let list: Vec<String> = knot_counts
+                .iter()
+                .map(|(c, k)| format!("{k} {c}"))
+                .collect();
+            list.join(", ")
+        };
         let why = if not_measured.is_empty() {
             String::new()
         } else {
@@ -423,6 +461,7 @@ impl BrepAudit {
             "{} faces, {} edges: {} shared, {} seam, {} open, {} non-manifold, {} degenerate, {} unused; \
              continuity of the {} shared and seam edges: {} G1, {} G0, {} fail G0, {} undecided ({} exact), \
              {} not measured{why}, G2 not measured; \
+             knot lines inside {} B-spline faces: {knots}; \
              {skipped} faces or edges with geometry not converted, {} entities unreadable",
             self.faces(),
             self.edges.len(),
@@ -439,6 +478,7 @@ impl BrepAudit {
             g(Grade::Undecided),
             exact,
             not_measured.values().sum::<usize>(),
+            self.knot_lines.len(),
             self.invalid,
         )
     }

@@ -23,6 +23,7 @@ use std::cmp::Ordering;
 pub mod brep;
 pub mod certify;
 pub mod joint;
+pub mod knots;
 pub mod model;
 pub mod seam;
 

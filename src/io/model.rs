@@ -332,6 +332,11 @@ pub fn brep_audit_to_json(a: &BrepAudit, full: bool) -> Value {
         "faces": {"total": a.faces(), "by_surface": a.faces_by_surface},
         "edges": edges,
         "continuity": continuity_counts(a),
+        "knot_lines": {
+            "faces": a.knot_lines.len(),
+            "total": a.knot_lines.values().map(Vec::len).sum::<usize>(),
+            "by_continuity": a.knot_line_counts(),
+        },
         "tolerance": {"length": t.length.as_ref().map(BigRational::to_json), "unit": t.unit,
                       "angle": t.angle.to_json(), "source": source},
     });
@@ -348,6 +353,21 @@ pub fn brep_audit_to_json(a: &BrepAudit, full: bool) -> Value {
                 });
                 edge_measures(e, &mut v);
                 v
+            })
+            .collect();
+        v["knot_line_list"] = a
+            .knot_lines
+            .iter()
+            .flat_map(|(face, lines)| {
+                lines.iter().map(move |l| {
+                    json!({
+                        "face": format!("#{face}"),
+                        "direction": l.direction.name(),
+                        "knot": l.knot.to_json(),
+                        "degree": l.degree,
+                        "continuity": l.continuity.map_or_else(|| "removable".to_string(), |r| format!("C{r}")),
+                    })
+                })
             })
             .collect();
         v["not_converted"] = json!(a.not_converted);
