@@ -7,15 +7,19 @@
 
 use super::open_input;
 use exact_bezier::algebra::parse_rational;
-use exact_bezier::audit::brep::{audit_brep, default_angle_tolerance};
+use exact_bezier::algebra::RealAlgebraic;
+use exact_bezier::audit::brep::{
+    audit_brep, default_angle_tolerance, BrepAudit, EdgeClass, Grade, Measured,
+};
 use exact_bezier::audit::{audit, Audit, Continuity, ExactModel, Model, PatchEdge, SeamScalar};
 use exact_bezier::coincide::boundary_curve;
 use exact_bezier::io::{audit_to_json, brep_audit_to_json, is_step, read_exact_model, JsonScalar};
 use exact_bezier::limits::{self, Cost, Size};
 use exact_bezier::patch::Patch;
 use exact_bezier::render::plot::{plot_colored_png, PlotOptions};
-use exact_bezier::step::read_brep;
-use exact_bezier::Error;
+use exact_bezier::step::brep::Geometry;
+use exact_bezier::step::{read_brep, BrepModel};
+use exact_bezier::{Error, Scalar};
 use num_rational::BigRational;
 use serde_json::{json, Value};
 
@@ -56,10 +60,8 @@ pub fn run(a: &Args) -> Result<Value, Error> {
     if is_step(&mut input)? {
         let brep = read_brep(input)?;
         if !brep.edges.is_empty() {
-            if a.plot.is_some() {
-                return Err(Error::Format(
-                    "--plot draws patch models; a STEP B-rep is not drawn yet".into(),
-                ));
+            if let Some(out) = &a.plot {
+                check_png_name(out)?;
             }
             let tol = a
                 .tol
@@ -70,10 +72,11 @@ pub fn run(a: &Args) -> Result<Value, Error> {
                 Some(t) => tolerance(t, "--angle-tol")?,
                 None => default_angle_tolerance(),
             };
-            return Ok(brep_audit_to_json(
-                &audit_brep(&brep, tol, angle),
-                !a.summary,
-            ));
+            let report = audit_brep(&brep, tol, angle);
+            if let Some(out) = &a.plot {
+                plot_brep(&brep, &report, out)?;
+            }
+            return Ok(brep_audit_to_json(&report, !a.summary));
         }
         return run_on(&Model::from_step(brep.geometry), a);
     }
@@ -131,12 +134,8 @@ fn verdict_colour(c: Option<Continuity>) -> usize {
 }
 
 /// The model's patches (3 iso-lines each) and its seams and open edges.
-fn plot<T: SeamScalar>(model: &Model<T>, report: &Audit<T>, out: &str) -> Result<(), Error> {
-    if !out.ends_with(".png") {
-        return Err(Error::Format(format!(
-            "--plot writes PNG: {out} should end in .png"
-        )));
-    }
+fn plot<T: SeamScalar + Cost>(model: &Model<T>, report: &Audit<T>, out: &str) -> Result<(), Error> {
+    check_png_name(out)?;
     let edge = |e: &PatchEdge| -> Patch<T> {
         match &model.pieces[e.patch].patch {
             Patch::Rect(r) => Patch::Curve(boundary_curve(r, e.edge)),
@@ -156,13 +155,87 @@ fn plot<T: SeamScalar>(model: &Model<T>, report: &Audit<T>, out: &str) -> Result
             .iter()
             .map(|s| (edge(&s.a), verdict_colour(s.verdict.continuity))),
     );
+    write_png(&items, report.summary(), out)
+}
+
+/// `--plot` writes PNG only.
+fn check_png_name(out: &str) -> Result<(), Error> {
+    if out.ends_with(".png") {
+        Ok(())
+    } else {
+        Err(Error::Format(format!(
+            "--plot writes PNG: {out} should end in .png"
+        )))
+    }
+}
+
+/// Draw `items` (3 iso-lines a patch, 24 samples a line) under the title
+/// `summary` into the PNG `out`, charging the sampling and the pixels
+/// first.
+fn write_png<T: exact_bezier::Ordered + std::fmt::Display + Cost>(
+    items: &[(Patch<T>, usize)],
+    summary: String,
+    out: &str,
+) -> Result<(), Error> {
     let opts = PlotOptions {
         iso: 3,
         samples: 24,
         net: false,
-        title: format!("exact-bezier audit: {}", report.summary()),
+        title: format!("exact-bezier audit: {summary}"),
         ..PlotOptions::default()
     };
-    let png = plot_colored_png(&items, &opts)?;
+    let samples: u64 = items
+        .iter()
+        .map(|(p, _)| p.size().eval_ops().saturating_mul(216))
+        .sum();
+    let pixels = u64::from(opts.width) * u64::from(opts.height);
+    limits::charge(
+        "audit --plot",
+        limits::f64_work(samples)
+            .saturating_add(pixels.saturating_mul(crate::plot::PNG_UNITS_PER_PIXEL)),
+    )?;
+    let png = plot_colored_png(items, &opts)?;
     std::fs::write(out, png).map_err(|e| Error::Format(format!("cannot write {out}: {e}")))
+}
+
+/// A B-rep's faces (their surfaces' pieces, brown) and its edges coloured
+/// by what the audit found: shared and seam edges by their continuity
+/// grade (G1 blue, G0 red, G0 failing pink, undecided orange, not measured
+/// cyan), open edges purple; other edges are not drawn.
+fn plot_brep(m: &BrepModel, report: &BrepAudit, out: &str) -> Result<(), Error> {
+    let lift = |p: &Patch<BigRational>| p.map(RealAlgebraic::from_rational);
+    let pieces = |g: &Geometry| -> Vec<Patch<RealAlgebraic>> {
+        match g {
+            Geometry::Pieces(p) => p.iter().map(|s| lift(&s.patch)).collect(),
+            Geometry::Analytic(a) => a.pieces.clone(),
+            Geometry::NotConverted | Geometry::Invalid(_) => Vec::new(),
+        }
+    };
+    let mut items: Vec<(Patch<RealAlgebraic>, usize)> = m
+        .faces
+        .values()
+        .flat_map(|f| pieces(&f.surface.geometry))
+        .map(|p| (p, BROWN))
+        .collect();
+    for e in &report.edges {
+        let colour = match (&e.measured, e.class) {
+            (Measured::Measured(j), _) => match Grade::of(j).0 {
+                Grade::G1 => 0,
+                Grade::G0 => 1,
+                Grade::Fails => 7,
+                Grade::Undecided => 4,
+            },
+            (Measured::NotMeasured(_), _) => 5,
+            (Measured::NotApplicable, EdgeClass::Open) => PURPLE,
+            (Measured::NotApplicable, _) => continue,
+        };
+        if let Some(edge) = m.edges.get(&e.id) {
+            items.extend(
+                pieces(&edge.curve.geometry)
+                    .into_iter()
+                    .map(|p| (p, colour)),
+            );
+        }
+    }
+    write_png(&items, report.summary(), out)
 }

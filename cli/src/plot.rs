@@ -149,7 +149,7 @@ fn check_plot_size<T: ExactScalar>(
 /// Work units of rasterizing and encoding one pixel of a PNG: 800×600
 /// pixels of a (8, 8) rect took 15 ms more than its SVG (release build,
 /// `cli/benches/cost_model.rs`), 31 ns a pixel.
-const PNG_UNITS_PER_PIXEL: u64 = 4;
+pub(crate) const PNG_UNITS_PER_PIXEL: u64 = 4;
 
 /// Write `bytes` to `path`, creating its folder.
 pub(super) fn write_output(path: &str, bytes: &[u8]) -> Result<(), Error> {

@@ -467,3 +467,46 @@ fn brep_verdicts_are_stable_under_f64_rounding() {
         std::fs::remove_file(&moved_path).ok();
     }
 }
+
+/// `audit --plot` of a STEP B-rep colours each edge by its verdict: the
+/// vase-like part `sg1-c5-214.stp` has G1 edges (blue), G0 creases (red)
+/// and edges on cones that are not measured (cyan); the red cube with its
+/// cylinder has only G0 edges, so no blue at all. The counts come from the
+/// summary, the colours from the decoded picture.
+#[test]
+fn brep_plot_colours_edges_by_verdict() {
+    const BLUE: [u8; 3] = [0x1f, 0x77, 0xb4];
+    const RED: [u8; 3] = [0xd6, 0x27, 0x28];
+    const CYAN: [u8; 3] = [0x17, 0xbe, 0xcf];
+    let out = std::env::temp_dir().join(format!("eb-brep-plot-{}.png", std::process::id()));
+    let o = out.to_str().unwrap();
+    let colours = |model: &str| {
+        let (code, v) = cli_json(&["audit", &fixture(model), "--summary", "--plot", o]);
+        assert_eq!(code, 0, "{model}: {v}");
+        let png = std::fs::read(&out).unwrap();
+        let count = |rgb| crate::plot::pixels(&png, 800, 600, rgb).1;
+        (
+            v["continuity"].clone(),
+            count(BLUE),
+            count(RED),
+            count(CYAN),
+        )
+    };
+    let (c, blue, red, cyan) = colours("step/sg1-c5-214.stp");
+    assert!(
+        c["G1"].as_u64() > Some(0) && c["G0"].as_u64() > Some(0),
+        "{c}"
+    );
+    assert!(blue > 50 && red > 50 && cyan > 50, "{blue} {red} {cyan}");
+    let (c, blue, red, _) = colours("step/red_cube_blue_cylinder.step");
+    assert_eq!(
+        (c["G1"].as_u64(), c["not_measured"].as_u64()),
+        (Some(0), Some(0)),
+        "{c}"
+    );
+    assert!(red > 50 && blue == 0, "{red} {blue}");
+    std::fs::remove_file(&out).ok();
+    let (code, _, err) = cli(&["audit", &fixture("step/sg1-c5-214.stp"), "--plot", "x.svg"]);
+    assert_eq!(code, 2);
+    assert!(err.contains(".png"), "{err}");
+}

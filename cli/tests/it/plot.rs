@@ -192,7 +192,7 @@ fn projections_map_as_documented() {
 }
 
 /// Count pixels that are clearly not white, and those near a palette colour.
-fn pixels(png: &[u8], w: u32, h: u32, rgb: [u8; 3]) -> (usize, usize) {
+pub(crate) fn pixels(png: &[u8], w: u32, h: u32, rgb: [u8; 3]) -> (usize, usize) {
     let pm = Pixmap::decode_png(png).expect("PNG decodes");
     assert_eq!((pm.width(), pm.height()), (w, h));
     let ink = pm
