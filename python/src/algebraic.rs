@@ -78,7 +78,10 @@ impl Algebraic {
         } else {
             (self.value.clone(), o)
         };
-        let r = guarded(|| f(a, b))?;
+        let r = guarded(|| {
+            a.check_pair_degree(&b, "the operands")?;
+            f(a, b)
+        })?;
         Ok(Bound::new(py, Algebraic::wrap(r))?.into_any().unbind())
     }
 }

@@ -37,6 +37,18 @@ def test_algebraic_refuses_bad_text_and_division_by_zero():
         eb.Algebraic("sqrt(2)") / 0
 
 
+def test_algebraic_arithmetic_over_the_field_degree_limit_is_refused_at_once():
+    # Roots of a septic and a quintic span a field of degree 35 > 32: the
+    # operators refuse before any work (the library's resultant fallback
+    # has no bound); within the limit they answer exactly.
+    a, b = eb.Algebraic("CRootOf(x**7 - x - 1, 0)"), eb.Algebraic("CRootOf(x**5 - x - 1, 0)")
+    for op in (lambda: a + b, lambda: a * b, lambda: a - b, lambda: a / b):
+        with pytest.raises(eb.LimitError, match="32"):
+            op()
+    c = a * eb.Algebraic("sqrt(2)")
+    assert c * c == 2 * a * a
+
+
 def test_algebraic_to_sympy():
     sympy = pytest.importorskip("sympy")
     assert eb.Algebraic("sqrt(6)/6").to_sympy() == sympy.sqrt(6) / 6

@@ -455,8 +455,21 @@ impl RealAlgebraic {
 
     /// Refuse (before computing it) an arithmetic operation on `self` and
     /// `other` whose field would be over [`crate::limits::MAX_FIELD_DEGREE`]
-    /// (two radical sums need no field). `what` names the numbers.
-    pub(crate) fn check_pair_degree(&self, other: &Self, what: &str) -> Result<(), Error> {
+    /// (two radical sums need no field). `what` names the numbers. The
+    /// operators `+ − × ÷` cannot fail: on such a pair they fall back to
+    /// resultants, whose degree is the product of the operands' (unbounded
+    /// cost along a chain); a caller that must stay bounded (the Python
+    /// `Algebraic`) checks here first.
+    ///
+    /// ```
+    /// use exact_bezier::algebra::RealAlgebraic;
+    /// let x = |t: &str| t.parse::<RealAlgebraic>().unwrap();
+    /// let (a, b) = (x("CRootOf(x**7 - x - 1, 0)"), x("CRootOf(x**5 - x - 1, 0)"));
+    /// // Degree 7 · 5 = 35 > 32.
+    /// assert!(a.check_pair_degree(&b, "a + b").is_err());
+    /// assert!(a.check_pair_degree(&x("sqrt(2)"), "a + √2").is_ok());
+    /// ```
+    pub fn check_pair_degree(&self, other: &Self, what: &str) -> Result<(), Error> {
         let (d, radical) = Self::span_degree([self, other]);
         if radical {
             return Ok(());
