@@ -24,6 +24,7 @@
 //! space is at least as smooth. Reference: Piegl & Tiller, *The NURBS
 //! Book* (1997), §2.5 (continuity at a knot) and §5.4 (knot removal).
 
+use crate::algebra::scalar::{binomial_scalar, pow};
 use crate::hpoint::HPoint;
 use crate::nurbs::SpannedPatch;
 use crate::patch::Patch;
@@ -188,8 +189,8 @@ fn order_across(left: &Spanned, right: &Spanned) -> Option<Option<usize>> {
     let mut order = None;
     for i in 0..=n {
         let agree = (0..lc[0].len()).all(|j| {
-            let l = difference(|s| &lc[n - i + s][j], i).scale(&(&scale / pow(&hl, i)));
-            let r = difference(|s| &rc[s][j], i).scale(&(Q::one() / pow(&hr, i)));
+            let l = difference(|s| &lc[n - i + s][j], i).scale(&(&scale / pow(&hl, i as u32)));
+            let r = difference(|s| &rc[s][j], i).scale(&(Q::one() / pow(&hr, i as u32)));
             l == r
         });
         if !agree {
@@ -203,22 +204,11 @@ fn order_across(left: &Spanned, right: &Spanned) -> Option<Option<usize>> {
 
 /// `Δⁱ X₀ = Σ_l (−1)^{i−l} C(i, l) X_l` of the homogeneous points `x(l)`.
 fn difference<'a>(x: impl Fn(usize) -> &'a HPoint<Q>, i: usize) -> HPoint<Q> {
-    let mut acc = HPoint::zero(x(0).dim());
-    let mut binomial = Q::one();
-    for l in 0..=i {
-        let sign = if (i - l) % 2 == 0 {
-            Q::one()
-        } else {
-            -Q::one()
-        };
-        acc = acc.add(&x(l).scale(&(&binomial * sign)));
-        binomial = binomial * Q::from_integer((i - l).into()) / Q::from_integer((l + 1).into());
-    }
-    acc
-}
-
-fn pow(x: &Q, e: usize) -> Q {
-    (0..e).fold(Q::one(), |acc, _| acc * x)
+    (0..=i).fold(HPoint::zero(x(0).dim()), |acc, l| {
+        let c: Q = binomial_scalar(i, l);
+        let signed = if (i - l) % 2 == 0 { c } else { -c };
+        acc.add(&x(l).scale(&signed))
+    })
 }
 
 #[cfg(test)]

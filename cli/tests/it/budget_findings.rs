@@ -18,11 +18,6 @@ const LINE: &str = r#"{"kind":"curve","degree":1,"points":[[1,"7/2"],["5/6","CRo
 /// A cubic with that root.
 const CUBIC: &str = r#"{"kind":"curve","degree":3,"points":[[1,"7/2"],["-8/3","-17/2"],[2,1],["5/6","CRootOf(x**3 - x - 1, 0)"]],"weights":[6,"CRootOf(x**3 - x - 1, 0)",1,"13/5"]}"#;
 
-/// Metered work at most this many times the charge (the calibration's
-/// factor, as `algebraic_budget.rs`), plus a small constant.
-const METER_FACTOR: u64 = 4;
-const METER_SLACK: u64 = 20_000;
-
 /// `sqrt(` nested `depth` times around `inner`.
 fn nested_sqrt(inner: &str, depth: usize) -> String {
     (0..depth).fold(inner.to_string(), |acc, _| format!("sqrt({acc})"))
@@ -46,14 +41,7 @@ fn run(args: &[&str], input: &str) -> Outcome {
 /// that read back; the JSON answer.
 fn answers(args: &[&str], input: &str) -> Value {
     let out = run(args, input);
-    assert_eq!(out.code, 0, "{args:?}: {}", out.stderr);
-    assert!(
-        out.metered <= METER_FACTOR * out.work + METER_SLACK,
-        "{args:?}: metered {} for {} charged",
-        out.metered,
-        out.work
-    );
-    crate::common::written_numbers_read_back(&out.stdout, args);
+    crate::common::answered_within_charge(&out, args);
     serde_json::from_str(&out.stdout).expect("JSON")
 }
 
@@ -119,7 +107,7 @@ fn curvature_far_outside_is_refused_at_once() {
         out.stderr
     );
     assert!(
-        out.metered <= METER_SLACK,
+        out.metered <= crate::common::METER_SLACK,
         "metered {} before refusing",
         out.metered
     );
