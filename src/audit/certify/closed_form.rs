@@ -23,7 +23,24 @@
 //! centres are `2R > 2r` apart). `n̂` is `∇s`, it points the way of
 //! [`Implicit::gradient`], and along a curve `P(t)`:
 //! `d s(P(t))/dt = n̂·P'(t)` — the slope [`super::gap`] uses.
+//!
+//! The normal's Jacobian `J = ∂n̂/∂P` ([`DistanceField::normal_jacobian`])
+//! is a sum of rank-one terms in the unit vectors `e = (a, b, 0)/ρ`,
+//! `e_φ = (−b, a, 0)/ρ` (around the axis) and, for the torus,
+//! `t̂ = (h/q) e − c ẑ` with `c = (ρ − R)/q` (along the meridian circle):
+//!
+//! ```text
+//! plane      J = 0
+//! cylinder   J = e_φ e_φᵀ / ρ
+//! sphere     J = (I − n̂ n̂ᵀ) / |P − C|
+//! cone       J = e_φ e_φᵀ / (ρ √(1 + k²))
+//! torus      J = c e_φ e_φᵀ / ρ + t̂ t̂ᵀ / q
+//! ```
+//!
+//! (`n̂` turns about the axis at the rate `1/ρ` times its radial part, and
+//! in the meridian plane about the meridian's centre of curvature.)
 
+use super::field::{DistanceField, IMat3};
 use super::ivec::{add, dot, scale, sub, IVec};
 use super::Enclose;
 use crate::algebra::{Interval, Scalar};
@@ -91,11 +108,26 @@ impl ISurface {
         })
     }
 
+    /// The point's frame coordinates `(a, b, h)`.
+    fn local(&self, p: &[Interval]) -> [Interval; 3] {
+        let d = sub(p, &self.origin);
+        [0, 1, 2].map(|k| dot(&d, &self.axes[k]))
+    }
+
+    /// A frame vector in world coordinates.
+    fn world(&self, v: &[Interval; 3]) -> IVec {
+        add(
+            &add(&scale(&self.axes[0], &v[0]), &scale(&self.axes[1], &v[1])),
+            &scale(&self.axes[2], &v[2]),
+        )
+    }
+}
+
+impl DistanceField for ISurface {
     /// `s` and `n̂` over the box `p`; `None` where they are not proved
     /// (the box reaches the axis, the centre, the cone's apex plane).
-    pub fn distance(&self, p: &[Interval]) -> Option<Distance> {
-        let d = sub(p, &self.origin);
-        let [a, b, h] = [0, 1, 2].map(|k| dot(&d, &self.axes[k]));
+    fn distance(&self, p: &[Interval]) -> Option<Distance> {
+        let [a, b, h] = self.local(p);
         let rho = || {
             let r = a.sqr().add(&b.sqr()).sqrt()?;
             (r.lo > 0.0).then_some(r)
@@ -150,10 +182,67 @@ impl ISurface {
                 )
             }
         };
-        let normal = add(
-            &add(&scale(&self.axes[0], &na), &scale(&self.axes[1], &nb)),
-            &scale(&self.axes[2], &nh),
-        );
+        let normal = self.world(&[na, nb, nh]);
         Some(Distance { signed, normal })
+    }
+
+    /// `J` over the box `p` (module docs); `None` where a denominator's
+    /// enclosure holds 0.
+    fn normal_jacobian(&self, p: &[Interval]) -> Option<IMat3> {
+        let [a, b, h] = self.local(p);
+        let zero = Interval::point(0.0);
+        let rho = || {
+            let r = a.sqr().add(&b.sqr()).sqrt()?;
+            (r.lo > 0.0).then_some(r)
+        };
+        let around = |r: &Interval| Some([b.neg().div(r)?, a.div(r)?, zero]);
+        let mut j = [[zero; 3]; 3];
+        match self.kind {
+            Kind::Plane => {}
+            Kind::Cylinder { .. } => {
+                let r = rho()?;
+                add_outer(&mut j, &inv(&r)?, &self.world(&around(&r)?));
+            }
+            Kind::Sphere { .. } => {
+                let r = a.sqr().add(&b.sqr()).add(&h.sqr()).sqrt()?;
+                let n = self.world(&[a.div(&r)?, b.div(&r)?, h.div(&r)?]);
+                let k = inv(&r)?;
+                for (i, row) in j.iter_mut().enumerate() {
+                    row[i] = k;
+                }
+                add_outer(&mut j, &k.neg(), &n);
+            }
+            Kind::Cone { slope, .. } => {
+                let r = rho()?;
+                let norm = Interval::point(1.0).add(&slope.sqr()).sqrt()?;
+                add_outer(&mut j, &inv(&r.mul(&norm))?, &self.world(&around(&r)?));
+            }
+            Kind::Torus { major, .. } => {
+                let r = rho()?;
+                let radial = r.sub(&major);
+                let q = radial.sqr().add(&h.sqr()).sqrt()?;
+                let c = radial.div(&q)?;
+                let hq = h.div(&q)?;
+                let t = [hq.mul(&a.div(&r)?), hq.mul(&b.div(&r)?), c.neg()];
+                add_outer(&mut j, &c.div(&r)?, &self.world(&around(&r)?));
+                add_outer(&mut j, &inv(&q)?, &self.world(&t));
+            }
+        }
+        Some(j)
+    }
+}
+
+/// `1/x`.
+fn inv(x: &Interval) -> Option<Interval> {
+    Interval::point(1.0).div(x)
+}
+
+/// `j += k u uᵀ`.
+fn add_outer(j: &mut IMat3, k: &Interval, u: &[Interval]) {
+    for (row, ui) in j.iter_mut().zip(u) {
+        let kui = k.mul(ui);
+        for (x, uj) in row.iter_mut().zip(u) {
+            *x = x.add(&kui.mul(uj));
+        }
     }
 }
