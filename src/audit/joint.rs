@@ -49,9 +49,31 @@ use num_traits::Zero;
 type Curve = RationalCurve<RealAlgebraic>;
 
 /// The work cap of one edge (in [`limits`] units): about 50 000 pieces of
-/// [`maximize`]. The work an edge used is then charged to the command's
-/// budget, and the cap never exceeds what is left of that budget.
+/// [`maximize`]. Running out leaves the enclosures proved so far (wider
+/// than the target). The work an edge used is then charged to the
+/// command's budget, and the cap never exceeds what is left of that budget.
 pub const EDGE_WORK: u64 = 100_000_000;
+
+/// The work cap of one measure of an edge (shared by its pieces): a
+/// quarter of [`EDGE_WORK`], so that each of the five measures gets its
+/// turn.
+const MEASURE_WORK: u64 = EDGE_WORK / 4;
+
+/// The finest length f64 interval arithmetic resolves on an edge whose
+/// coordinates are at most `M` in magnitude: `2⁻⁴⁴ M` (a few hundred
+/// ulps of `M`, what the jets and closed forms lose to outward rounding).
+/// Gaps are not refined below it: a declared tolerance finer than it
+/// (some files declare 10⁻¹² mm) leaves a gap of that size undecided
+/// rather than spending the edge's work cap on rounding noise.
+fn length_resolution(curves: &[ICurve]) -> Result<f64, Error> {
+    let mut m: f64 = 0.0;
+    for c in curves {
+        for x in c.jet(Interval { lo: 0.0, hi: 1.0 })?.x {
+            m = m.max(x.mag());
+        }
+    }
+    Ok(m * 2f64.powi(-44))
+}
 
 /// Work units charged per exact point test (calibrated with the other
 /// commands, `cli/benches/cost_model.rs`: at 50 000 the `audit` of
@@ -322,13 +344,16 @@ fn along(
     f: impl Fn(&Around) -> Option<Bound> + Copy,
 ) -> Result<Measure, Error> {
     let mut best: Option<(Enclosure, usize)> = None;
+    let share = MEASURE_WORK / curves.len() as u64;
     for (k, c) in curves.iter().enumerate() {
-        let e = maximize_until(
-            Interval { lo: 0.0, hi: 1.0 },
-            target,
-            |u| u < enough,
-            |t| Ok(around(c, fields, t)?.and_then(|a| f(&a))),
-        )?;
+        let e = capped(share, "a certified measure along an edge", || {
+            maximize_until(
+                Interval { lo: 0.0, hi: 1.0 },
+                target,
+                |u| u < enough,
+                |t| Ok(around(c, fields, t)?.and_then(|a| f(&a))),
+            )
+        })?;
         best = Some(match best {
             Some((b, i)) if b.hi >= e.hi => (b.max(e), i),
             Some((b, _)) => (e.max(b), k),
@@ -450,17 +475,25 @@ pub fn measure_joint(
     faces: &[JointFace<'_>; 2],
     tol: &JointTolerances,
 ) -> Result<JointMeasures, Error> {
+    capped(EDGE_WORK, "the certified measures of an edge", || {
+        measure_capped(pieces, faces, tol)
+    })
+}
+
+/// Run `f` under a work cap of `work` units (at most what is left of the
+/// current budget), then charge what it used as `what`.
+fn capped<T>(work: u64, what: &str, f: impl FnOnce() -> Result<T, Error>) -> Result<T, Error> {
     let outer = limits::current();
     let cap = Limits {
-        max_work: EDGE_WORK.min(outer.max_work.saturating_sub(limits::charged())),
+        max_work: work.min(outer.max_work.saturating_sub(limits::charged())),
         ..outer
     };
-    let (measures, used) = limits::with_limits(cap, || {
-        let m = measure_capped(pieces, faces, tol);
-        (m, limits::charged())
+    let (result, used) = limits::with_limits(cap, || {
+        let r = f();
+        (r, limits::charged())
     });
-    limits::charge("the certified measures of an edge", used)?;
-    measures
+    limits::charge(what, used)?;
+    result
 }
 
 fn measure_capped(
@@ -487,18 +520,19 @@ fn measure_capped(
         .map(|f| Interval::point(if f.same_sense { 1.0 } else { -1.0 }));
     // Refined to 10⁻³ relative or a hundredth of the tolerance, or until
     // below a third of it (the two gaps' sum bounds the face gap).
+    let floor = length_resolution(&curves)?;
     let length = match tol.length {
         Some(t) => (
             Target {
                 rel: 1e-3,
-                abs: t.lo / 100.0,
+                abs: (t.lo / 100.0).max(floor),
             },
             t.lo / 3.0,
         ),
         None => (
             Target {
                 rel: 1e-3,
-                abs: 1e-12,
+                abs: floor,
             },
             0.0,
         ),

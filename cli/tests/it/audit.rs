@@ -455,7 +455,7 @@ fn brep_verdicts_are_stable_under_f64_rounding() {
         assert_eq!(code, 0, "{name} moved: {after}");
         assert_eq!(before["edges"], after["edges"], "{name}");
         assert_eq!(before["faces"], after["faces"], "{name}");
-        for order in ["G1", "G0", "fails", "undecided", "not_measured"] {
+        for order in ["G2", "G1", "G0", "fails", "undecided", "not_measured"] {
             assert_eq!(
                 before["continuity"][order], after["continuity"][order],
                 "{name}: {order} changed; before {}, after {}",
@@ -468,43 +468,43 @@ fn brep_verdicts_are_stable_under_f64_rounding() {
     }
 }
 
-/// `audit --plot` of a STEP B-rep colours each edge by its verdict: the
-/// vase-like part `sg1-c5-214.stp` has G1 edges (blue), G0 creases (red)
-/// and edges on cones that are not measured (cyan); the red cube with its
-/// cylinder has only G0 edges, so no blue at all. The counts come from the
-/// summary, the colours from the decoded picture.
+/// `audit --plot` of a STEP B-rep colours each edge by its verdict: every
+/// grade the summary counts shows in its colour, and no grade it does not
+/// count: the vase-like part `sg1-c5-214.stp` (G2 seams between its
+/// cylinders and G0 creases), the red cube with its cylinder (only G0
+/// edges). The counts come from the summary, the colours from the decoded
+/// picture.
 #[test]
 fn brep_plot_colours_edges_by_verdict() {
-    const BLUE: [u8; 3] = [0x1f, 0x77, 0xb4];
-    const RED: [u8; 3] = [0xd6, 0x27, 0x28];
-    const CYAN: [u8; 3] = [0x17, 0xbe, 0xcf];
+    // The plot palette (src/render/plot/svg.rs) by continuity count.
+    const COLOURS: [(&str, [u8; 3]); 6] = [
+        ("G2", [0x2c, 0xa0, 0x2c]),
+        ("G1", [0x1f, 0x77, 0xb4]),
+        ("G0", [0xd6, 0x27, 0x28]),
+        ("fails", [0xe3, 0x77, 0xc2]),
+        ("undecided", [0xff, 0x7f, 0x0e]),
+        ("not_measured", [0x17, 0xbe, 0xcf]),
+    ];
     let out = std::env::temp_dir().join(format!("eb-brep-plot-{}.png", std::process::id()));
     let o = out.to_str().unwrap();
-    let colours = |model: &str| {
+    for model in ["step/sg1-c5-214.stp", "step/red_cube_blue_cylinder.step"] {
         let (code, v) = cli_json(&["audit", &fixture(model), "--summary", "--plot", o]);
         assert_eq!(code, 0, "{model}: {v}");
         let png = std::fs::read(&out).unwrap();
-        let count = |rgb| crate::plot::pixels(&png, 800, 600, rgb).1;
-        (
-            v["continuity"].clone(),
-            count(BLUE),
-            count(RED),
-            count(CYAN),
-        )
-    };
-    let (c, blue, red, cyan) = colours("step/sg1-c5-214.stp");
-    assert!(
-        c["G1"].as_u64() > Some(0) && c["G0"].as_u64() > Some(0),
-        "{c}"
-    );
-    assert!(blue > 50 && red > 50 && cyan > 50, "{blue} {red} {cyan}");
-    let (c, blue, red, _) = colours("step/red_cube_blue_cylinder.step");
-    assert_eq!(
-        (c["G1"].as_u64(), c["not_measured"].as_u64()),
-        (Some(0), Some(0)),
-        "{c}"
-    );
-    assert!(red > 50 && blue == 0, "{red} {blue}");
+        let c = &v["continuity"];
+        assert!(c["G0"].as_u64() > Some(0), "{model}: {c}");
+        for (grade, rgb) in COLOURS {
+            let pixels = crate::plot::pixels(&png, 800, 600, rgb).1;
+            match c[grade].as_u64() {
+                Some(0) => assert_eq!(pixels, 0, "{model}: no {grade} edge, yet {grade} pixels"),
+                Some(_) => assert!(
+                    pixels > 50,
+                    "{model}: {grade} edges drawn in {pixels} pixels"
+                ),
+                None => panic!("{model}: no {grade} count in {c}"),
+            }
+        }
+    }
     std::fs::remove_file(&out).ok();
     let (code, _, err) = cli(&["audit", &fixture("step/sg1-c5-214.stp"), "--plot", "x.svg"]);
     assert_eq!(code, 2);

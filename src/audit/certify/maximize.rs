@@ -7,7 +7,8 @@
 //! `U − L ≤ rel · U + abs`, `L` the greatest lower bound found: then the
 //! maximum lies in `[L, U]`, attained in the hull of the pieces whose upper
 //! bound reaches `L`. Every piece examined is charged to the work budget
-//! ([`crate::limits::charge`]).
+//! ([`crate::limits::charge`]); when it runs out, the enclosure proved so
+//! far is returned, marked not tight.
 
 use crate::algebra::Interval;
 use crate::error::Error;
@@ -73,7 +74,9 @@ pub const WORK_PER_PIECE: u64 = 2_000;
 ///
 /// # Errors
 ///
-/// [`Error::Limit`] when the work budget runs out; [`Error::Domain`] when
+/// [`Error::Limit`] when the work budget runs out before every piece has
+/// a finite upper bound (once they have, running out returns the
+/// enclosure proved so far, `tight: false`); [`Error::Domain`] when
 /// a piece too short to split is still not proved; the errors of `bound`.
 pub fn maximize(
     range: Interval,
@@ -98,14 +101,23 @@ pub fn maximize_until(
 ) -> Result<Enclosure, Error> {
     let mut pieces: BinaryHeap<Piece> = BinaryHeap::new();
     let mut lower = f64::NEG_INFINITY;
-    let mut todo = vec![range];
+    let mut todo = vec![Piece {
+        upper: f64::INFINITY,
+        t: range,
+    }];
     loop {
-        for t in todo.drain(..) {
-            limits::charge("a certified measure along an edge", WORK_PER_PIECE)?;
+        while let Some(parent) = todo.pop() {
+            if let Err(e) = limits::charge("a certified measure along an edge", WORK_PER_PIECE) {
+                // Out of work: what is proved so far still stands, wider.
+                pieces.push(parent);
+                pieces.extend(todo.drain(..));
+                return enclosure(&pieces, lower, false).ok_or(e);
+            }
+            let t = parent.t;
             let upper = match bound(t)? {
                 Some(b) => {
                     lower = lower.max(b.lower);
-                    b.upper
+                    b.upper.min(parent.upper)
                 }
                 None if t.width() < MIN_PIECE => {
                     return Err(Error::Domain(format!(
@@ -113,28 +125,45 @@ pub fn maximize_until(
                         t.mid()
                     )))
                 }
-                None => f64::INFINITY,
+                None => parent.upper,
             };
             pieces.push(Piece { upper, t });
         }
-        let Piece { upper, t } = pieces.pop().expect("at least one piece");
+        let Piece { upper, t } = *pieces.peek().expect("at least one piece");
         let done = upper.is_finite() && upper - lower <= target.rel * upper + target.abs;
         if done || decided(upper) || t.width() < MIN_PIECE {
-            let at = pieces
-                .iter()
-                .filter(|p| p.upper >= lower)
-                .fold(t, |a, p| a.hull(&p.t));
-            return Ok(Enclosure {
-                lo: lower.max(0.0),
-                hi: upper,
-                at,
-                tight: done,
-            });
+            return Ok(enclosure(&pieces, lower, done).expect("a finite upper bound"));
         }
+        pieces.pop();
         let m = t.mid();
-        todo.push(Interval { lo: t.lo, hi: m });
-        todo.push(Interval { lo: m, hi: t.hi });
+        todo.push(Piece {
+            upper,
+            t: Interval { lo: t.lo, hi: m },
+        });
+        todo.push(Piece {
+            upper,
+            t: Interval { lo: m, hi: t.hi },
+        });
     }
+}
+
+/// The enclosure the pieces prove: the greatest upper bound, the greatest
+/// lower bound, where; `None` while some piece is unbounded.
+fn enclosure(pieces: &BinaryHeap<Piece>, lower: f64, tight: bool) -> Option<Enclosure> {
+    let top = pieces.peek()?;
+    if !top.upper.is_finite() {
+        return None;
+    }
+    let at = pieces
+        .iter()
+        .filter(|p| p.upper >= lower)
+        .fold(top.t, |a, p| a.hull(&p.t));
+    Some(Enclosure {
+        lo: lower.max(0.0),
+        hi: top.upper,
+        at,
+        tight,
+    })
 }
 
 /// A piece of the edge ordered by its upper bound (greatest first).
