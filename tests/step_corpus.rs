@@ -722,35 +722,41 @@ struct SampleCheck {
     measures: usize,
     /// Measures `"unproved"`, or of a kind the sampler does not give.
     unchecked: BTreeMap<String, usize>,
+    /// Contradictions: the edge, the measure, both values.
+    failures: Vec<String>,
 }
 
 /// Compare one certified measure of ours (`0`, `{"lo", "hi", …}` or
 /// `"unproved"`) with the sampled estimate `s` (`max`, `slack`) of the
 /// same measure; `zero` is what a sampled exact 0 may be (rounding).
-/// Returns whether anything was compared.
-fn compare_measure(what: &str, ours: &Value, s: &Value, zero: f64) -> bool {
+/// `Ok(true)` when compared and consistent, `Ok(false)` for `"unproved"`,
+/// `Err` with both values when they contradict each other.
+fn compare_measure(ours: &Value, s: &Value, zero: f64) -> Result<bool, String> {
     let max = s["max"].as_f64().unwrap();
     let slack = s["slack"].as_f64().unwrap();
     if ours == &Value::from(0) {
-        assert!(max <= zero, "{what}: proved exactly 0, sampled {max} > {zero}");
-        return true;
+        return if max <= zero {
+            Ok(true)
+        } else {
+            Err(format!("proved exactly 0, sampled {max} > {zero}"))
+        };
     }
     let (Some(lo), Some(hi)) = (ours["lo"].as_f64(), ours["hi"].as_f64()) else {
-        return false; // "unproved"
+        return Ok(false); // "unproved"
     };
     // A theorem: every sample is a value, hi bounds the largest value.
     // The only allowance is the rounding of the 50-digit value to f64.
-    assert!(
-        max <= hi + 1e-12 * max,
-        "{what}: sampled {max} above our enclosure [{lo}, {hi}]"
-    );
+    if max > hi + 1e-12 * max {
+        return Err(format!("sampled {max} above our enclosure [{lo}, {hi}]"));
+    }
     // The sampled max is a lower estimate of the true max: lo may exceed
     // it by the sampling error (slack, see step_sample.py).
-    assert!(
-        lo <= max + slack + 1e-12 * max,
-        "{what}: our enclosure [{lo}, {hi}] above the sampled {max} (slack {slack})"
-    );
-    true
+    if lo > max + slack + 1e-12 * max {
+        return Err(format!(
+            "our enclosure [{lo}, {hi}] above the sampled {max} (slack {slack})"
+        ));
+    }
+    Ok(true)
 }
 
 /// Check every measured edge of our audit of `name` (the `audit` command's
@@ -799,10 +805,10 @@ fn check_against_samples(name: &str, sampled: &Value) -> SampleCheck {
             };
             for (what, ours, theirs) in pairs {
                 let zero = if kind == "angle" { 1e-12 } else { length_zero };
-                if compare_measure(&format!("{name} {id} {what}"), ours, theirs, zero) {
-                    out.measures += 1;
-                } else {
-                    *out.unchecked.entry(format!("{kind} unproved")).or_insert(0) += 1;
+                match compare_measure(ours, theirs, zero) {
+                    Ok(true) => out.measures += 1,
+                    Ok(false) => *out.unchecked.entry(format!("{kind} unproved")).or_insert(0) += 1,
+                    Err(why) => out.failures.push(format!("{name} {id} {what}: {why}")),
                 }
             }
         }
@@ -818,6 +824,8 @@ fn sampled() -> Value {
 
 fn check_sampled_models(names: &[&str]) {
     let sampled = sampled();
+    let mut failures = Vec::new();
+    let mut checked = 0;
     for name in names {
         let start = std::time::Instant::now();
         let c = check_against_samples(name, &sampled[*name]);
@@ -830,8 +838,14 @@ fn check_sampled_models(names: &[&str]) {
             sampled[*name]["skipped"],
             start.elapsed().as_secs_f64()
         );
-        assert!(c.edges > 0, "{name}: no edge checked");
+        for f in &c.failures {
+            println!("  FAILS {f}");
+        }
+        checked += c.edges;
+        failures.extend(c.failures);
     }
+    assert!(checked > 0, "no edge checked");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
 /// On cheap corpus models, every certified gap, face gap and angle
