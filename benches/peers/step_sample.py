@@ -281,24 +281,36 @@ class Sphere(Surface):
 
 
 class Cone(Surface):
-    """sigma(u, v) = c + (R + v k)(cos u x + sin u y) + v z, k = tan(semi_angle)."""
+    """sigma(u, v) = c + (R + v k)(cos u x + sin u y) + v z, k = tan(semi_angle),
+    for every real v: both nappes (past the apex, R + v k < 0, the point
+    lies on the opposite side of the axis)."""
 
     def __init__(self, frame, r, k):
         super().__init__(frame)
         self.r, self.k = r, k
 
     def foot(self, p):
+        """The nearer of the feet on the two generators in p's half-plane
+        (rho = R + k v where R + k v >= 0, rho = -(R + k v) where <= 0)."""
         _, h, rho, er = self.local(p)
         if er is None:
             raise Skip("point on a cone's axis")
-        k, s2 = self.k, 1 + self.k**2
-        v = (k * (rho - self.r) + h) / s2  # foot on the generator in p's half-plane
-        radius = self.r + k * v
-        if radius <= 0:
-            raise Skip("foot beyond a cone's apex")
-        foot = add(self.c, add(scale(er, radius), scale(self.z, v)))
-        n = scale(sub(er, scale(self.z, k)), 1 / sqrt(s2))
-        return abs(rho - self.r - k * h) / sqrt(s2), foot, n
+        k, s = self.k, sqrt(1 + self.k**2)
+        best = None
+        for sign in (1, -1):  # rho = sign (R + k v)
+            v = (k * (sign * rho - self.r) + h) / (s * s)
+            radius = self.r + k * v
+            if sign * radius < 0:
+                continue
+            d = abs(rho - sign * (self.r + k * h)) / s
+            if best is None or d < best[0]:
+                foot = add(self.c, add(scale(er, sign * radius), scale(self.z, v)))
+                # sigma_u x sigma_v = (R + k v)(e(u) - k z), e(u) = sign er
+                n = scale(sub(er, scale(self.z, sign * k)), 1 / s)
+                best = (d, foot, n)
+        if best is None:
+            raise Skip("foot at a cone's apex")
+        return best
 
 
 class Torus(Surface):
