@@ -877,7 +877,12 @@ fn certified_measures_contain_samples_on_cheap_models() {
 #[ignore]
 fn certified_measures_contain_samples_on_every_model() {
     let sampled = sampled();
-    let names: Vec<&str> = sampled.as_object().unwrap().keys().map(String::as_str).collect();
+    let names: Vec<&str> = sampled
+        .as_object()
+        .unwrap()
+        .keys()
+        .map(String::as_str)
+        .collect();
     assert!(names.len() >= 19, "{} models sampled", names.len());
     check_sampled_models(&names);
 }
