@@ -202,11 +202,15 @@ class Side:
         return point.Distance(self.on_face.Value(t))
 
     def foot(self, point):
-        """The nearest point of the face's surface (untrimmed) to ``point``."""
+        """The nearest point of the face's surface (untrimmed) to ``point`` and the oriented normal there."""
         self.project.Init(point, self.geometry)
         if not self.project.IsDone() or self.project.NbPoints() == 0:
-            return None
-        return self.project.NearestPoint()
+            return None, None
+        u, v = self.project.LowerDistanceParameters()
+        p, du, dv = gp_Pnt(), gp_Vec(), gp_Vec()
+        self.geometry.D1(u, v, p, du, dv)
+        n = du.Crossed(dv)
+        return self.project.NearestPoint(), n.Reversed() if self.reversed else n
 
     def validate(self, curve, exact):
         """BRepLib_ValidateEdge's deviation: 23 control points, or its optimization (``exact``)."""
@@ -232,22 +236,26 @@ def angle_between(a, b):
 def sampled(edge, ours_sides, ts):
     """Sampled maxima over ``ts``: same-parameter deviation, surface distance per side, face gap, angle."""
     curve = BRepAdaptor_Curve(edge)
-    sp, dist, face_gap, angle = 0.0, [0.0 for _ in ours_sides], 0.0, 0.0
+    sp, dist, face_gap, angle, foot_angle = 0.0, [0.0 for _ in ours_sides], 0.0, 0.0, 0.0
     sp_at, dist_at, angle_at = 0.0, [0.0 for _ in ours_sides], 0.0
     first, last = curve.FirstParameter(), curve.LastParameter()
     for t in ts:
         point = curve.Value(t)
-        feet = []
+        feet, normals = [], []
         for i, side in enumerate(ours_sides):
             d = side.same_parameter(point, t)
             if d > sp:
                 sp, sp_at = d, t
-            foot = side.foot(point)
+            foot, normal = side.foot(point)
             feet.append(foot)
+            normals.append(normal)
             if foot is not None and point.Distance(foot) > dist[i]:
                 dist[i], dist_at[i] = point.Distance(foot), t
         if len(feet) == 2 and feet[0] is not None and feet[1] is not None:
             face_gap = max(face_gap, feet[0].Distance(feet[1]))
+            a = angle_between(normals[0], normals[1])
+            if a is not None:
+                foot_angle = max(foot_angle, a)
         if len(ours_sides) == 2:
             a = angle_between(ours_sides[0].normal(t), ours_sides[1].normal(t))
             if a is not None and a > angle:
@@ -261,17 +269,44 @@ def sampled(edge, ours_sides, ts):
         "face_gap": face_gap,
         "angle": angle,
         "angle_at": (angle_at - first) / span,
+        "foot_angle": foot_angle,
     }
 
 
 # ---------------------------------------------------------------- per file
 
 
+def reader_flagged(edge, faces, use):
+    """Did the reader already encode a regularity (its own EncodeRegularity, read.encoderegularity.angle)?"""
+    if use == "shared":
+        return bool(BRep_Tool.HasContinuity_s(edge, faces[0], faces[1]))
+    if use == "seam":
+        return bool(BRep_Tool.HasContinuity_s(edge, faces[0], faces[0]))
+    return None
+
+
+def continuity_of_faces(edge, faces, use, tol):
+    """BRepLib::ContinuityOfFaces at ``tol``: computed afresh, whatever flags the edge carries."""
+    if use == "shared":
+        return occt_step.enum_name(BRepLib.ContinuityOfFaces_s(edge, faces[0], faces[1], tol))
+    if use == "seam":
+        return occt_step.enum_name(BRepLib.ContinuityOfFaces_s(edge, faces[0], faces[0], tol))
+    return None
+
+
 def occt_edges(shape, label, angle_tol):
     """Per matched EDGE_CURVE id, its Open CASCADE edge occurrences; and the unmatched ones by use."""
-    BRepLib.EncodeRegularity_s(shape, OCCT_REGULARITY_ANGLE)
     ancestors = ShapeToShapes()
     TopExp.MapShapesAndAncestors_s(shape, TopAbs_EDGE, TopAbs_FACE, ancestors)
+    flagged = {}
+    for i in range(1, ancestors.Extent() + 1):
+        edge = TopoDS.Edge(ancestors.FindKey(i))
+        distinct = occt_step.ShapeMap()
+        for face in ancestors.FindFromIndex(i):
+            distinct.Add(face)
+        faces = occt_step.distinct_faces(distinct)
+        flagged[i] = reader_flagged(edge, faces, occt_step.classify_use(edge, faces))
+    BRepLib.EncodeRegularity_s(shape, OCCT_REGULARITY_ANGLE)
     records, unmatched = [], {}
     for i in range(1, ancestors.Extent() + 1):
         edge = TopoDS.Edge(ancestors.FindKey(i))
@@ -293,12 +328,11 @@ def occt_edges(shape, label, angle_tol):
                 "use": use,
                 "tolerance": BRep_Tool.Tolerance_s(edge),
                 "continuity": occt_step.continuity(edge, faces, use),
+                "reader_flagged": flagged[i],
+                "faces_1e-10": continuity_of_faces(edge, faces, use, OCCT_REGULARITY_ANGLE),
+                "faces_our_tol": continuity_of_faces(edge, faces, use, angle_tol),
             }
         )
-    # Second pass at our angular tolerance: EncodeRegularity only revisits edges still C0.
-    BRepLib.EncodeRegularity_s(shape, angle_tol)
-    for r in records:
-        r["continuity_at_our_tol"] = occt_step.continuity(r["edge"], r["faces"], r["use"])
     return records, unmatched
 
 
@@ -366,8 +400,11 @@ def compare_edge(ours, record, scale):
             "angle_21": regular_angle,
             "angle_1001": dense["angle"],
             "angle_1001_at": dense["angle_at"],
+            "foot_angle_1001": dense["foot_angle"],
+            "reader_flagged": record["reader_flagged"],
             "continuity": record["continuity"],
-            "continuity_at_our_tol": record["continuity_at_our_tol"],
+            "continuity_of_faces_1e-10": record["faces_1e-10"],
+            "continuity_of_faces_our_tol": record["faces_our_tol"],
         },
     }
 
@@ -391,8 +428,10 @@ def gap_classes(e):
     sp = c["same_parameter_1001"]
     if sp <= hi + SLACK_MM:
         out.append("same-parameter (1001) <= our hi")
+    elif surf <= hi + SLACK_MM:
+        out.append("same-parameter (1001) > our hi, surface distance <= our hi (parametric)")
     else:
-        out.append("same-parameter (1001) > our hi")
+        out.append("same-parameter (1001) > our hi, surface distance too")
     exact_method = [v for v in c["validate_edge_exact"] if v is not None]
     if exact_method:
         out.append(
@@ -426,24 +465,24 @@ def angle_classes(e):
         return ["angle unproved"]
     if o["angle_exact"]:
         out.append("angle: ours exactly 0 or pi")
-    dense = c["angle_1001"]
-    if o["angle_exact"]:
-        pass
-    elif dense <= a[1] + SLACK_RAD:
-        out.append("angle: OCCT sampled <= our hi")
-    else:
-        out.append("angle: OCCT sampled > our hi")
+    feet = c["foot_angle_1001"]
+    if not o["angle_exact"]:
+        out.append("angle at feet: OCCT sampled <= our hi" if feet <= a[1] + SLACK_RAD else "angle at feet: OCCT sampled > our hi")
+        if c["angle_1001"] > a[1] + SLACK_RAD:
+            out.append("angle at p-curve points > our hi")
     if a[0] > c["angle_21"] + SLACK_RAD:
         out.append("miss: our angle lo > OCCT's 21-sample angle")
     return out
 
 
 def regularity_row(e):
-    """(our G1 verdict, OCCT at 1e-10, OCCT at our tolerance)."""
+    """Our G1 verdict; OCCT's flag after EncodeRegularity (and whether the reader set it); ContinuityOfFaces at 1e-10 and at our tolerance."""
+    c = e["occt"]
     return (
         e["ours"]["verdicts"].get("G1") if e["ours"]["verdicts"] else None,
-        regular(e["occt"]["continuity"]),
-        regular(e["occt"]["continuity_at_our_tol"]),
+        regular(c["continuity"]) + (" (reader)" if c["reader_flagged"] else ""),
+        regular(c["continuity_of_faces_1e-10"]),
+        regular(c["continuity_of_faces_our_tol"]),
     )
 
 
@@ -476,7 +515,7 @@ def analyse(path, exe):
         first["occurrences"] = len(occ)
         first["tolerance"] = max(r["tolerance"] for r in occ)
         verdict_pairs.append(
-            (e.get("continuity") or "not measured", regular(first["continuity"]) or first["use"])
+            (e.get("continuity") or "not measured", regular(first["faces_1e-10"]) or first["use"])
         )
         if e.get("verdicts") and e.get("measures") and e["class"] in ("shared", "seam"):
             compared.append(compare_edge(e, first, scale))
@@ -497,7 +536,7 @@ def analyse(path, exe):
             "occt_edges_matched": len(records),
             "occt_edges_unmatched_by_use": dict(sorted(unmatched.items())),
         },
-        "our_continuity_vs_occt_regularity_1e-10": count(f"{a} / {b}" for a, b in verdict_pairs),
+        "our_continuity_vs_occt_continuity_of_faces_1e-10": count(f"{a} / {b}" for a, b in verdict_pairs),
         "measured_edges": len(compared),
         "gap_classes": count(c for e in compared for c in e["gap_classes"]),
         "angle_classes": count(c for e in compared for c in e["angle_classes"]),
