@@ -6,6 +6,7 @@ with ``cadquery-ocp-novtk`` as ``occt_step`` and builds nothing: pass the
 release binary); not part of CI.
 
     occt_audit.py --exe target/release/exact-bezier [--timing FILE] FILE...
+    occt_audit.py --tables occt_audit_results.json   # the tables of docs/audit.md
 
 For each file it runs our ``audit FILE`` (full JSON) and reads the file with
 Open CASCADE's ``STEPControl_Reader``, then pairs the edges:
@@ -26,20 +27,26 @@ Open CASCADE's ``STEPControl_Reader``, then pairs the edges:
   and the face gap (0 when proved exactly 0).  Open CASCADE's: the edge
   tolerance (``BRep_Tool::Tolerance``); the same-parameter deviation
   ``|C(t) - S(p(t))|`` between the 3D curve and each p-curve on its face, at
-  ``CheckSameParameter``'s 23 parameters and at 1001; and, to compare like
-  with like, the distance from the 3D curve to each face's *surface*
+  ``CheckSameParameter``'s 23 parameters and at 1001; the same deviation
+  from ``BRepLib_ValidateEdge``, with its 23 control points (what
+  ``BRepCheck_Analyzer`` runs by default) and with its exact method (an
+  optimization over the parameter); and, to compare like with like, the
+  distance from the 3D curve to each face's *surface*
   (``GeomAPI_ProjectPointOnSurf``, what our ``gap`` measures) and between
   the two projections (our ``face_gap``) at the same 23 and 1001
   parameters.  A sampled distance is a lower bound of the true maximum, so
   a correct enclosure has ``sampled <= hi``; where our ``lo`` is above
   Open CASCADE's sampled value, the sampling missed part of the maximum.
 * **Regularity.** ``BRep_Tool::Continuity`` after
-  ``BRepLib::EncodeRegularity`` at its default 1e-10 rad, then again at our
-  angular tolerance (the second call only revisits the edges still C0),
-  next to our G1 verdict; and the angle between the faces' oriented
-  normals sampled at the 21 parameters ``BRepLib::ContinuityOfFaces`` uses
-  (the edge's range less 1 % at each end) and at 1001 over the whole range,
-  next to our certified ``angle``.
+  ``BRepLib::EncodeRegularity`` at its default 1e-10 rad, noting whether
+  the reader had already set it (it encodes regularity itself at
+  ``read.encoderegularity.angle``, 0.01 rad, and ``EncodeRegularity`` only
+  revisits edges still C0); ``BRepLib::ContinuityOfFaces`` computed afresh
+  at 1e-10 rad and at our angular tolerance; next to our G1 verdict.  And
+  the angle between the faces' oriented normals, sampled at the p-curve
+  points at the 21 parameters ``ContinuityOfFaces`` uses (the edge's range
+  less 1 % at each end) and at 1001 over the whole range, and at the
+  projection feet (like ours) at 1001, next to our certified ``angle``.
 
 ``--timing FILE`` also times, on the same machine in the same run, our
 ``audit FILE`` (wall, best of 3) against Open CASCADE's read + transfer
@@ -591,12 +598,78 @@ def timing(path, exe, runs=3):
     }
 
 
+# ---------------------------------------------------------------- tables
+
+
+def smooth(verdict):
+    return {"exact": "smooth", "within_tolerance": "smooth", "fails": "fails"}.get(verdict, "undecided")
+
+
+def regularity_counts(edges):
+    """Our G1 verdict (smooth, fails, undecided) against Open CASCADE's three regularity answers."""
+    rows = {}
+    for e in edges:
+        c = e["occt"]
+        ours = smooth(e["ours"]["verdicts"].get("G1"))
+        for name, value in (
+            ("flag", c["continuity"]),
+            ("1e-10", c["continuity_of_faces_1e-10"]),
+            ("ours", c["continuity_of_faces_our_tol"]),
+        ):
+            key = (name, ours, regular(value))
+            rows[key] = rows.get(key, 0) + 1
+    return rows
+
+
+def tables(results):
+    """Markdown tables of a results file (the ones in docs/audit.md)."""
+    files = {k: v for k, v in results["files"].items() if "error" not in v}
+    out = [
+        "| file | our edges | traced | measured | surface <= hi | exact 0 | surface > hi | same-param <= hi | same-param > hi (parametric) | tol >= hi | tol in [lo, hi] | tol < lo | lo > 23 samples |",
+        "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |",
+    ]
+    for name, f in files.items():
+        g = f["gap_classes"]
+        edges = f["per_edge"]
+        miss = sum(1 for e in edges if any(c.startswith("miss: our lo > s") or c.startswith("miss: our lo > V") for c in e["gap_classes"]))
+        out.append(
+            f"| `{name}` | {f['matching']['our_edges']} | {f['matching']['our_edges_with_occt_edge']} | {f['measured_edges']} "
+            f"| {g.get('surface: OCCT sampled <= our hi', 0)} | {g.get('surface: ours exactly 0, OCCT' + chr(39) + 's f64 <= slack', 0)} "
+            f"| {g.get('surface: OCCT sampled > our hi', 0) + g.get('surface: ours exactly 0, OCCT' + chr(39) + 's f64 > slack', 0)} "
+            f"| {g.get('same-parameter (1001) <= our hi', 0)} | {g.get('same-parameter (1001) > our hi, surface distance <= our hi (parametric)', 0)} "
+            f"| {g.get('tolerance >= our hi', 0)} | {g.get('tolerance within our [lo, hi]', 0)} | {g.get('tolerance < our lo', 0)} | {miss} |"
+        )
+    out += [
+        "",
+        "| file | smooth: flag C0 | fails: flag regular | smooth: 1e-10 C0 | fails: 1e-10 regular | smooth: ours-tol C0 | fails: ours-tol regular | agree at our tol | angle at feet <= hi | angle at p-curves > hi |",
+        "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |",
+    ]
+    for name, f in files.items():
+        r = regularity_counts(f["per_edge"])
+        a = f["angle_classes"]
+        agree = r.get(("ours", "smooth", "regular"), 0) + r.get(("ours", "fails", "C0"), 0)
+        out.append(
+            f"| `{name}` | {r.get(('flag', 'smooth', 'C0'), 0)} | {r.get(('flag', 'fails', 'regular'), 0)} "
+            f"| {r.get(('1e-10', 'smooth', 'C0'), 0)} | {r.get(('1e-10', 'fails', 'regular'), 0)} "
+            f"| {r.get(('ours', 'smooth', 'C0'), 0)} | {r.get(('ours', 'fails', 'regular'), 0)} | {agree} "
+            f"| {a.get('angle at feet: OCCT sampled <= our hi', 0)} | {a.get('angle at p-curve points > our hi', 0)} |"
+        )
+    return "\n".join(out)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--exe", required=True, help="the exact-bezier binary (release)")
+    parser.add_argument("--exe", help="the exact-bezier binary (release)")
     parser.add_argument("--timing", help="a file to time both tools on")
-    parser.add_argument("files", nargs="+")
+    parser.add_argument("--tables", help="print the markdown tables of a results file and stop")
+    parser.add_argument("files", nargs="*")
     args = parser.parse_args()
+    if args.tables:
+        with open(args.tables) as f:
+            print(tables(json.load(f)))
+        return
+    if not args.exe or not args.files:
+        parser.error("--exe and at least one FILE are needed")
     out = {"files": {}}
     for path in args.files:
         name = os.path.basename(path)
