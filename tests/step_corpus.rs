@@ -546,12 +546,12 @@ fn knot_lines_agree_with_the_multiplicities(
 #[test]
 fn brep_audit_classifies_edges_as_the_independent_counter() {
     use exact_bezier::audit::brep::ToleranceSource;
-    use exact_bezier::audit::brep::{audit_brep_topology, default_angle_tolerance, EdgeClass};
+    use exact_bezier::audit::brep::{audit_brep_topology, EdgeClass, ToleranceRequest};
     let text = std::fs::read_to_string(format!("{}/counts.json", dir())).unwrap();
     let counts: Value = serde_json::from_str(&text).unwrap();
     for (name, want) in counts.as_object().unwrap() {
         let m = read(name, false);
-        let a = audit_brep_topology(&m, None, default_angle_tolerance());
+        let a = audit_brep_topology(&m, &ToleranceRequest::default());
         let uses = &want["edge_uses"];
         for c in [
             EdgeClass::Shared,
@@ -633,7 +633,7 @@ fn distance_f64(s: &exact_bezier::analytic::Implicit<RealAlgebraic>, p: &[f64]) 
 /// `f64` rounding; closed solids have no open edge.
 #[test]
 fn certified_gaps_contain_independent_samples() {
-    use exact_bezier::audit::brep::{audit_brep, default_angle_tolerance, EdgeClass, Measured};
+    use exact_bezier::audit::brep::{audit_brep, EdgeClass, Measured, ToleranceRequest};
     use exact_bezier::audit::joint::Measure;
     for name in [
         "red_cube_blue_cylinder.step",
@@ -641,7 +641,7 @@ fn certified_gaps_contain_independent_samples() {
         "wavy-cube.stp",
     ] {
         let m = read(name, true);
-        let a = audit_brep(&m, None, default_angle_tolerance());
+        let a = audit_brep(&m, &ToleranceRequest::default());
         assert_eq!(a.count(EdgeClass::Open), 0, "{name}");
         let mut checked = 0;
         for e in &a.edges {
@@ -774,12 +774,12 @@ fn compare_measure(ours: &Value, s: &Value, zero: f64) -> Result<bool, String> {
 /// measures and newly measured edges are checked as soon as both sides
 /// have them.
 fn check_against_samples(name: &str, sampled: &Value) -> SampleCheck {
-    use exact_bezier::audit::brep::{audit_brep, default_angle_tolerance};
+    use exact_bezier::audit::brep::{audit_brep, ToleranceRequest};
     use exact_bezier::limits::{with_limits, Limits};
     let m = read(name, true);
     // One model, one command: its own work budget, as `audit FILE` has.
     let a = with_limits(Limits::DEFAULT, || {
-        audit_brep(&m, None, default_angle_tolerance())
+        audit_brep(&m, &ToleranceRequest::default())
     });
     let json = exact_bezier::io::brep_audit_to_json(&a, true);
     let mut out = SampleCheck::default();
