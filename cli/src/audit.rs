@@ -9,7 +9,7 @@ use super::open_input;
 use exact_bezier::algebra::parse_rational;
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::audit::brep::{
-    audit_brep, default_angle_tolerance, BrepAudit, EdgeClass, Grade, Measured,
+    audit_brep, default_angle_tolerance, BrepAudit, EdgeClass, Grade, Measured, ToleranceRequest,
 };
 use exact_bezier::audit::{audit, Audit, Continuity, ExactModel, Model, PatchEdge, SeamScalar};
 use exact_bezier::coincide::boundary_curve;
@@ -42,6 +42,11 @@ pub struct Args {
     /// Angular tolerance for a STEP B-rep, in radians (default 1e-6).
     #[arg(long = "angle-tol")]
     angle_tol: Option<String>,
+    /// Curvature tolerance for a STEP B-rep: the largest difference of
+    /// normal curvatures across a G2 edge, per model length unit (default
+    /// 1 per metre: 1e-3 per millimetre).
+    #[arg(long = "curvature-tol")]
+    curvature_tol: Option<String>,
 }
 
 /// A tolerance option: an exact non-negative number.
@@ -63,16 +68,14 @@ pub fn run(a: &Args) -> Result<Value, Error> {
             if let Some(out) = &a.plot {
                 check_png_name(out)?;
             }
-            let tol = a
-                .tol
-                .as_deref()
-                .map(|t| tolerance(t, "--tol"))
-                .transpose()?;
-            let angle = match &a.angle_tol {
-                Some(t) => tolerance(t, "--angle-tol")?,
-                None => default_angle_tolerance(),
+            let given = |t: &Option<String>, what| t.as_deref().map(|t| tolerance(t, what));
+            let asked = ToleranceRequest {
+                length: given(&a.tol, "--tol").transpose()?,
+                angle: given(&a.angle_tol, "--angle-tol")
+                    .unwrap_or_else(|| Ok(default_angle_tolerance()))?,
+                curvature: given(&a.curvature_tol, "--curvature-tol").transpose()?,
             };
-            let report = audit_brep(&brep, tol, angle);
+            let report = audit_brep(&brep, &asked);
             if let Some(out) = &a.plot {
                 plot_brep(&brep, &report, out)?;
             }
@@ -80,9 +83,9 @@ pub fn run(a: &Args) -> Result<Value, Error> {
         }
         return run_on(&Model::from_step(brep.geometry), a);
     }
-    if a.tol.is_some() || a.angle_tol.is_some() {
+    if a.tol.is_some() || a.angle_tol.is_some() || a.curvature_tol.is_some() {
         return Err(Error::Format(
-            "--tol and --angle-tol apply to STEP B-rep input; patch models are audited exactly"
+            "--tol, --angle-tol and --curvature-tol apply to STEP B-rep input; patch models are audited exactly"
                 .into(),
         ));
     }
@@ -200,8 +203,8 @@ fn write_png<T: exact_bezier::Ordered + std::fmt::Display + Cost>(
 
 /// A B-rep's faces (their surfaces' pieces, brown) and its edges coloured
 /// by what the audit found: shared and seam edges by their continuity
-/// grade (G1 blue, G0 red, G0 failing pink, undecided orange, not measured
-/// cyan), open edges purple; other edges are not drawn.
+/// grade (G2 green, G1 blue, G0 red, G0 failing pink, undecided orange, not
+/// measured cyan), open edges purple; other edges are not drawn.
 fn plot_brep(m: &BrepModel, report: &BrepAudit, out: &str) -> Result<(), Error> {
     let lift = |p: &Patch<BigRational>| p.map(RealAlgebraic::from_rational);
     let pieces = |g: &Geometry| -> Vec<Patch<RealAlgebraic>> {
@@ -220,6 +223,7 @@ fn plot_brep(m: &BrepModel, report: &BrepAudit, out: &str) -> Result<(), Error> 
     for e in &report.edges {
         let colour = match (&e.measured, e.class) {
             (Measured::Measured(j), _) => match Grade::of(j).0 {
+                Grade::G2 => 2,
                 Grade::G1 => 0,
                 Grade::G0 => 1,
                 Grade::Fails => 7,

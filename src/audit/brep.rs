@@ -12,11 +12,11 @@
 //!   **unused** (no loop uses it).
 //!
 //! Every shared and seam edge is measured ([`super::joint`]): certified
-//! gaps and angle with G0/G1 verdicts against the tolerances, where both
-//! faces have a closed form (elementary surfaces, a cone's slope exact or
-//! enclosed, and extrusions of a line or of a circle along its axis:
-//! [`crate::analytic::ClosedForm`]); other edges are *not measured*, with
-//! the reason counted.
+//! gaps, angle and curvature difference with G0/G1/G2 verdicts against the
+//! tolerances, where both faces have a closed form (elementary surfaces, a
+//! cone's slope exact or enclosed, and extrusions of a line or of a circle
+//! along its axis: [`crate::analytic::ClosedForm`]); other edges are *not
+//! measured*, with the reason counted.
 //!
 //! The length tolerance is `--tol` when given, else the declared
 //! `UNCERTAINTY_MEASURE_WITH_UNIT` of the model's representation contexts
@@ -42,6 +42,42 @@ type Q = BigRational;
 /// decimals written with 15 significant digits, ~1e-14).
 pub fn default_angle_tolerance() -> Q {
     Q::new(1.into(), 1_000_000.into())
+}
+
+/// The default curvature tolerance: 1 per metre in the model's length
+/// unit (`10⁻³` per millimetre, `0.0254` per inch), `10⁻³` per unit when
+/// the model declares no unit — two faces whose normal curvatures across
+/// an edge differ by less are G2 (radii of curvature above a metre agree
+/// with a plane).
+pub fn default_curvature_tolerance(metres_per_unit: Option<&Q>) -> Q {
+    metres_per_unit
+        .cloned()
+        .unwrap_or_else(|| Q::new(1.into(), 1000.into()))
+}
+
+/// The tolerances asked for: `None` length takes the model's declared one,
+/// `None` curvature the default for the model's unit.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ToleranceRequest {
+    /// Length (`--tol`), in the model's unit.
+    pub length: Option<Q>,
+    /// Angle (`--angle-tol`), radians.
+    pub angle: Q,
+    /// Difference of normal curvatures (`--curvature-tol`), per model
+    /// length unit.
+    pub curvature: Option<Q>,
+}
+
+impl Default for ToleranceRequest {
+    /// The model's length tolerance, [`default_angle_tolerance`],
+    /// [`default_curvature_tolerance`].
+    fn default() -> Self {
+        ToleranceRequest {
+            length: None,
+            angle: default_angle_tolerance(),
+            curvature: None,
+        }
+    }
 }
 
 /// How an edge of the B-rep is used.
@@ -116,7 +152,9 @@ pub enum Measured {
 /// comes first.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Grade {
-    /// G0 and G1 hold.
+    /// G0, G1 and G2 hold.
+    G2,
+    /// G0 and G1 hold, G2 fails.
     G1,
     /// G0 holds, G1 fails (a crease).
     G0,
@@ -130,6 +168,7 @@ impl Grade {
     /// The name used in the JSON output.
     pub fn name(self) -> &'static str {
         match self {
+            Grade::G2 => "G2",
             Grade::G1 => "G1",
             Grade::G0 => "G0",
             Grade::Fails => "fails",
@@ -140,14 +179,15 @@ impl Grade {
     /// The grade of measured verdicts, and whether the orders it counts
     /// hold exactly (deviation proved 0).
     pub fn of(m: &JointMeasures) -> (Grade, bool) {
-        let holds = |v: &Verdict| matches!(v, Verdict::Exact | Verdict::WithinTolerance);
         let exact = |v: &Verdict| *v == Verdict::Exact;
-        match (&m.g0, &m.g1) {
-            (Verdict::Undecided, _) => (Grade::Undecided, false),
-            (Verdict::Fails { .. }, _) => (Grade::Fails, false),
-            (g0, Verdict::Undecided) if holds(g0) => (Grade::Undecided, false),
-            (g0, Verdict::Fails { .. }) => (Grade::G0, exact(g0)),
-            (g0, g1) => (Grade::G1, exact(g0) && exact(g1)),
+        match (&m.g0, &m.g1, &m.g2) {
+            (Verdict::Undecided, _, _) => (Grade::Undecided, false),
+            (Verdict::Fails { .. }, _, _) => (Grade::Fails, false),
+            (_, Verdict::Undecided, _) => (Grade::Undecided, false),
+            (g0, Verdict::Fails { .. }, _) => (Grade::G0, exact(g0)),
+            (_, _, Some(Verdict::Undecided) | None) => (Grade::Undecided, false),
+            (g0, g1, Some(Verdict::Fails { .. })) => (Grade::G1, exact(g0) && exact(g1)),
+            (g0, g1, Some(g2)) => (Grade::G2, exact(g0) && exact(g1) && exact(g2)),
         }
     }
 }
@@ -172,6 +212,8 @@ pub struct Tolerances {
     pub unit: Option<String>,
     /// Angle, in radians.
     pub angle: Q,
+    /// Difference of normal curvatures, per length unit.
+    pub curvature: Q,
     /// Where `length` came from.
     pub source: ToleranceSource,
 }
@@ -310,18 +352,21 @@ fn measure(m: &BrepModel, e: &Edge, tol: &JointTolerances) -> Measured {
     }
 }
 
-/// The length tolerance: `given`, else the largest declared one.
-fn tolerances(m: &BrepModel, given: Option<Q>, angle: Q) -> Tolerances {
-    let unit = m
-        .contexts
-        .values()
-        .find_map(|c| c.length.as_ref().map(|u| u.name.clone()));
+/// The length tolerance: `given`, else the largest declared one; the
+/// curvature tolerance: `given`, else the default for the model's unit.
+fn tolerances(m: &BrepModel, asked: &ToleranceRequest) -> Tolerances {
+    let length_unit = m.contexts.values().find_map(|c| c.length.as_ref());
+    let unit = length_unit.map(|u| u.name.clone());
+    let curvature = asked
+        .curvature
+        .clone()
+        .unwrap_or_else(|| default_curvature_tolerance(length_unit.map(|u| &u.metres)));
     let declared = m
         .contexts
         .values()
         .filter_map(|c| c.tolerance.clone())
         .max();
-    let (length, source) = match (given, declared) {
+    let (length, source) = match (asked.length.clone(), declared) {
         (Some(t), _) => (Some(t), ToleranceSource::Given),
         (None, Some(t)) => (Some(t), ToleranceSource::Declared),
         (None, None) => (None, ToleranceSource::None),
@@ -329,37 +374,38 @@ fn tolerances(m: &BrepModel, given: Option<Q>, angle: Q) -> Tolerances {
     Tolerances {
         length,
         unit,
-        angle,
+        angle: asked.angle.clone(),
+        curvature,
         source,
     }
 }
 
-/// Audit the B-rep `m`: its edges classified, its faces counted, the
-/// length tolerance `tol` (else the model's) and angular tolerance `angle`
-/// (radians).
+/// Audit the B-rep `m`: its edges classified, its faces counted, every
+/// shared and seam edge measured against the tolerances `asked`.
 ///
 /// ```
-/// use exact_bezier::audit::brep::{audit_brep, default_angle_tolerance, EdgeClass};
+/// use exact_bezier::audit::brep::{audit_brep, EdgeClass, ToleranceRequest};
 /// let m = exact_bezier::step::read_brep(std::fs::File::open(
 ///     "tests/fixtures/step/red_cube_blue_cylinder.step").map(std::io::BufReader::new).unwrap()).unwrap();
-/// let a = audit_brep(&m, None, default_angle_tolerance());
+/// let a = audit_brep(&m, &ToleranceRequest::default());
 /// assert_eq!(a.count(EdgeClass::Open), 0);
 /// ```
-pub fn audit_brep(m: &BrepModel, tol: Option<Q>, angle: Q) -> BrepAudit {
-    audit_with(m, tol, angle, true)
+pub fn audit_brep(m: &BrepModel, asked: &ToleranceRequest) -> BrepAudit {
+    audit_with(m, asked, true)
 }
 
 /// [`audit_brep`] without the measures (every edge
 /// [`Measured::NotApplicable`]): the topology, faces and tolerances only.
-pub fn audit_brep_topology(m: &BrepModel, tol: Option<Q>, angle: Q) -> BrepAudit {
-    audit_with(m, tol, angle, false)
+pub fn audit_brep_topology(m: &BrepModel, asked: &ToleranceRequest) -> BrepAudit {
+    audit_with(m, asked, false)
 }
 
-fn audit_with(m: &BrepModel, tol: Option<Q>, angle: Q, measured: bool) -> BrepAudit {
-    let tolerance = tolerances(m, tol, angle);
+fn audit_with(m: &BrepModel, asked: &ToleranceRequest, measured: bool) -> BrepAudit {
+    let tolerance = tolerances(m, asked);
     let joint = JointTolerances {
         length: tolerance.length.as_ref().map(Interval::enclose),
         angle: Interval::enclose(&tolerance.angle),
+        curvature: Interval::enclose(&tolerance.curvature),
     };
     let edges = m
         .edges
@@ -476,8 +522,8 @@ impl BrepAudit {
         };
         format!(
             "{} faces, {} edges: {} shared, {} seam, {} open, {} non-manifold, {} degenerate, {} unused; \
-             continuity of the {} shared and seam edges: {} G1, {} G0, {} fail G0, {} undecided ({} exact), \
-             {} not measured{why}, G2 not measured; \
+             continuity of the {} shared and seam edges: {} G2, {} G1, {} G0, {} fail G0, {} undecided ({} exact), \
+             {} not measured{why}; \
              knot lines inside {} B-spline faces: {knots}; \
              {skipped} faces or edges with geometry not converted, {} entities unreadable",
             self.faces(),
@@ -489,6 +535,7 @@ impl BrepAudit {
             n(EdgeClass::Degenerate),
             n(EdgeClass::Unused),
             n(EdgeClass::Shared) + n(EdgeClass::Seam),
+            g(Grade::G2),
             g(Grade::G1),
             g(Grade::G0),
             g(Grade::Fails),

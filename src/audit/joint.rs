@@ -33,9 +33,11 @@
 //! its verdict *undecided*.
 
 use super::certify::angle::polar_angle;
+use super::certify::bezier::CurveJet;
 use super::certify::closed_form::{Distance, ISurface};
+use super::certify::field::{apply, normal_curvature, DistanceField};
 use super::certify::gap::abs_lower;
-use super::certify::ivec::{cross, dot, norm2, scale};
+use super::certify::ivec::{add, cross, dot, norm2, scale, sub, IVec};
 use super::certify::maximize::{maximize_until, Bound, Enclosure, Target};
 use super::certify::{ICurve, Verdict};
 use crate::algebra::{Interval, RealAlgebraic, Scalar};
@@ -127,6 +129,13 @@ pub struct JointMeasures {
     pub g0: Verdict,
     /// G1: the angle against the angular tolerance.
     pub g1: Verdict,
+    /// The largest difference of the faces' normal curvatures across the
+    /// edge, per length unit; `None` where G0 or G1 does not hold (G2 is
+    /// then moot, and not measured).
+    pub curvature: Option<Measure>,
+    /// G2: the curvature difference against the curvature tolerance, where
+    /// measured.
+    pub g2: Option<Verdict>,
 }
 
 /// Is `F` zero along every piece (exactly, at `d·n + 1` parameters)?
@@ -194,6 +203,11 @@ fn exact_angle(
 
 /// What one piece `T` of the edge proves.
 struct Around {
+    /// The curve at `t_m` and over `T`.
+    cm: CurveJet,
+    co: CurveJet,
+    /// `T − t_m`.
+    dt: Interval,
     /// Distances at `t_m`.
     mid: [Distance; 2],
     /// Normals over `T`.
@@ -202,11 +216,11 @@ struct Around {
     signed: [Interval; 2],
 }
 
-fn around(curve: &ICurve, surfaces: &[ISurface; 2], t: Interval) -> Result<Option<Around>, Error> {
+fn around(curve: &ICurve, fields: Fields<'_>, t: Interval) -> Result<Option<Around>, Error> {
     let m = Interval::point(t.mid());
     let (cm, co) = (curve.jet(m)?, curve.jet(t)?);
-    let get = |s: &ISurface| Some((s.distance(&cm.x)?, s.distance(&co.x)?));
-    let (Some((m0, o0)), Some((m1, o1))) = (get(&surfaces[0]), get(&surfaces[1])) else {
+    let get = |s: &dyn DistanceField| Some((s.distance(&cm.x)?, s.distance(&co.x)?));
+    let (Some((m0, o0)), Some((m1, o1))) = (get(fields[0]), get(fields[1])) else {
         return Ok(None);
     };
     let dt = t.sub(&m);
@@ -216,26 +230,80 @@ fn around(curve: &ICurve, surfaces: &[ISurface; 2], t: Interval) -> Result<Optio
         signed: [signed(&m0, &o0), signed(&m1, &o1)],
         mid: [m0, m1],
         over: [o0, o1],
+        cm,
+        co,
+        dt,
     }))
 }
+
+/// The two faces' distance fields.
+type Fields<'a> = [&'a dyn DistanceField; 2];
 
 fn length(v: &[Interval]) -> Interval {
     norm2(v).sqrt().expect("a sum of squares is never negative")
 }
 
-/// The angle between the oriented normals.
-fn angle_bound(a: &Around, signs: [Interval; 2]) -> Bound {
-    let angle = |d: &[Distance; 2]| {
-        let (n1, n2) = (
-            scale(&d[0].normal, &signs[0]),
-            scale(&d[1].normal, &signs[1]),
-        );
-        polar_angle(&length(&cross(&n1, &n2)), &dot(&n1, &n2))
+/// The angle between the oriented normals `N_i = ±n̂_i`: over `T` by
+/// interval extension, and by the mean-value forms of `V = N₁ × N₂` and
+/// `c = N₁·N₂` with `N_i' = ±J_i C'` (tight like `|T|²` where the faces are
+/// nearly tangent), whichever is narrower; at `t_m` for the lower bound.
+fn angle_bound(a: &Around, fields: Fields<'_>, signs: [Interval; 2]) -> Bound {
+    let oriented = |d: &[Distance; 2]| [0, 1].map(|k| scale(&d[k].normal, &signs[k]));
+    let [m1, m2] = oriented(&a.mid);
+    let [o1, o2] = oriented(&a.over);
+    let naive = (length(&cross(&o1, &o2)), dot(&o1, &o2));
+    let (sin, cos) = match normal_rates(a, fields, signs) {
+        Some([d1, d2]) => {
+            let dv = add(&cross(&d1, &o2), &cross(&o1, &d2));
+            let v = add(&cross(&m1, &m2), &scale(&dv, &a.dt));
+            let dc = dot(&d1, &o2).add(&dot(&o1, &d2));
+            let c = dot(&m1, &m2).add(&dc.mul(&a.dt));
+            (narrower(naive.0, length(&v)), narrower(naive.1, c))
+        }
+        None => naive,
     };
     Bound {
-        upper: angle(&a.over).hi,
-        lower: angle(&a.mid).lo,
+        upper: polar_angle(&sin, &cos).hi,
+        lower: polar_angle(&length(&cross(&m1, &m2)), &dot(&m1, &m2)).lo,
     }
+}
+
+/// `N_i' = ±J_i(C(T)) C'(T)` over `T`, when both Jacobians are enclosed.
+fn normal_rates(a: &Around, fields: Fields<'_>, signs: [Interval; 2]) -> Option<[IVec; 2]> {
+    let rate = |k: usize| {
+        let j = fields[k].normal_jacobian(&a.co.x)?;
+        Some(scale(&apply(&j, &a.co.dx), &signs[k]))
+    };
+    Some([rate(0)?, rate(1)?])
+}
+
+/// The intersection of two enclosures of one quantity (the first if they
+/// do not meet, which rounding alone cannot cause).
+fn narrower(a: Interval, b: Interval) -> Interval {
+    a.intersect(&b).unwrap_or(a)
+}
+
+/// `|κ₁ − κ₂|` across the edge: each face's normal curvature relative to
+/// its oriented normal, `κ_i = ∓ wᵢᵀ J_i wᵢ / |wᵢ|²` at the foot point
+/// `F_i = C − s_i n̂_i` in the direction `w_i = n̂_i × C'` (across the
+/// edge, in the face's tangent plane; [`normal_curvature`]); over `T` for
+/// the upper bound, at `t_m` for the lower.
+fn curvature_bound(a: &Around, fields: Fields<'_>, signs: [Interval; 2]) -> Option<Bound> {
+    let kappa = |k: usize, c: &CurveJet, d: &Distance, s: &Interval| {
+        let foot = sub(&c.x, &scale(&d.normal, s));
+        let j = fields[k].normal_jacobian(&foot)?;
+        let w = cross(&d.normal, &c.dx);
+        Some(normal_curvature(&j, &w)?.mul(&signs[k]))
+    };
+    let diff = |c: &CurveJet, d: &[Distance; 2], s: [&Interval; 2]| {
+        Some(kappa(0, c, &d[0], s[0])?.sub(&kappa(1, c, &d[1], s[1])?))
+    };
+    let over = diff(&a.co, &a.over, [&a.signed[0], &a.signed[1]])?;
+    let mid = diff(&a.cm, &a.mid, [&a.mid[0].signed, &a.mid[1].signed])?;
+    Some(Bound {
+        upper: over.mag(),
+        lower: abs_lower(&mid),
+    })
 }
 
 fn gap_bound(a: &Around, k: usize) -> Bound {
@@ -286,9 +354,9 @@ fn face_gap(gap: &[Measure; 2]) -> Measure {
 /// The maximum of one measure over all pieces, with its piece.
 fn along(
     curves: &[ICurve],
-    surfaces: &[ISurface; 2],
+    fields: Fields<'_>,
     (target, enough): (Target, f64),
-    f: impl Fn(&Around) -> Bound + Copy,
+    f: impl Fn(&Around) -> Option<Bound> + Copy,
 ) -> Result<Measure, Error> {
     let mut best: Option<(Enclosure, usize)> = None;
     for (k, c) in curves.iter().enumerate() {
@@ -296,7 +364,7 @@ fn along(
             Interval { lo: 0.0, hi: 1.0 },
             target,
             |u| u < enough,
-            |t| Ok(around(c, surfaces, t)?.map(|a| f(&a))),
+            |t| Ok(around(c, fields, t)?.and_then(|a| f(&a))),
         )?;
         best = Some(match best {
             Some((b, i)) if b.hi >= e.hi => (b.max(e), i),
@@ -347,6 +415,8 @@ pub struct JointTolerances {
     pub length: Option<Interval>,
     /// Angle.
     pub angle: Interval,
+    /// Difference of normal curvatures, per length unit.
+    pub curvature: Interval,
 }
 
 /// The verdict of measures against `tol`: exact when all are exactly 0,
@@ -398,7 +468,11 @@ fn verdict(ms: &[Measure], tol: Option<Interval>) -> Verdict {
 ///     JointFace { surface: JointSurface::Exact(&floor), same_sense: false },
 ///     JointFace { surface: JointSurface::Exact(&wall), same_sense: false },
 /// ];
-/// let tol = JointTolerances { length: Some(Interval::point(1e-6)), angle: Interval::point(1e-6) };
+/// let tol = JointTolerances {
+///     length: Some(Interval::point(1e-6)),
+///     angle: Interval::point(1e-6),
+///     curvature: Interval::point(1e-3),
+/// };
 /// let m = measure_joint(&[edge], &faces, &tol).unwrap();
 /// assert_eq!(m.gap, [Measure::Exact, Measure::Exact]);
 /// assert_eq!(m.g0, Verdict::Exact);
@@ -406,6 +480,7 @@ fn verdict(ms: &[Measure], tol: Option<Interval>) -> Verdict {
 /// let right = std::f64::consts::FRAC_PI_2;
 /// assert!(value.lo <= right && right <= value.hi && value.hi - value.lo < 1e-9);
 /// assert!(matches!(m.g1, Verdict::Fails { .. }));
+/// assert_eq!(m.g2, None); // a crease: curvature is moot
 /// ```
 pub fn measure_joint(
     pieces: &[Curve],
@@ -445,7 +520,8 @@ fn measure_capped(
     };
     // A self-intersecting torus: its part (apple or lemon) the edge is on.
     let mid = curves[0].jet(Interval::point(0.5))?.x;
-    let surfaces = [s0.nearer_part(&mid), s1.nearer_part(&mid)];
+    let (s0, s1) = (s0.nearer_part(&mid), s1.nearer_part(&mid));
+    let fields: Fields<'_> = [&s0, &s1];
     let signs = faces
         .clone()
         .map(|f| Interval::point(if f.same_sense { 1.0 } else { -1.0 }));
@@ -482,7 +558,7 @@ fn measure_capped(
         };
         *g = match on {
             Some(true) => Measure::Exact,
-            Some(false) => settle(along(&curves, &surfaces, length, |a| gap_bound(a, k)))?,
+            Some(false) => settle(along(&curves, fields, length, |a| Some(gap_bound(a, k))))?,
             None => Measure::Unproved,
         };
     }
@@ -497,18 +573,54 @@ fn measure_capped(
     let angle = match within_cap(exact)? {
         Some(Some(true)) => Measure::Exact,
         Some(Some(false)) => fold(),
-        Some(None) => settle(along(&curves, &surfaces, angular, |a| {
-            angle_bound(a, signs)
+        Some(None) => settle(along(&curves, fields, angular, |a| {
+            Some(angle_bound(a, fields, signs))
         }))?,
         None => Measure::Unproved,
     };
+    let (g0, g1) = (
+        verdict(&[gap[0], gap[1], face_gap], tol.length),
+        verdict(&[angle], Some(tol.angle)),
+    );
+    let curvature = if holds(&g0) && holds(&g1) {
+        Some(
+            if angle == Measure::Exact
+                && matches!(
+                    (faces[0].surface.exact(), faces[1].surface.exact()),
+                    (Some(a), Some(b)) if a == b
+                )
+            {
+                Measure::Exact
+            } else {
+                let target = (
+                    Target {
+                        rel: 1e-3,
+                        abs: tol.curvature.lo / 100.0,
+                    },
+                    tol.curvature.lo,
+                );
+                settle(along(&curves, fields, target, |a| {
+                    curvature_bound(a, fields, signs)
+                }))?
+            },
+        )
+    } else {
+        None
+    };
     Ok(JointMeasures {
-        g0: verdict(&[gap[0], gap[1], face_gap], tol.length),
-        g1: verdict(&[angle], Some(tol.angle)),
+        g0,
+        g1,
+        g2: curvature.map(|c| verdict(&[c], Some(tol.curvature))),
+        curvature,
         gap,
         face_gap,
         angle,
     })
+}
+
+/// Does the order hold (exactly or within tolerance)?
+fn holds(v: &Verdict) -> bool {
+    matches!(v, Verdict::Exact | Verdict::WithinTolerance)
 }
 
 #[cfg(test)]
@@ -530,6 +642,7 @@ mod tests {
         JointTolerances {
             length: Some(Interval::point(length)),
             angle: Interval::point(angle),
+            curvature: Interval::point(1e-3),
         }
     }
 

@@ -338,7 +338,7 @@ pub fn brep_audit_to_json(a: &BrepAudit, full: bool) -> Value {
             "by_continuity": a.knot_line_counts(),
         },
         "tolerance": {"length": t.length.as_ref().map(BigRational::to_json), "unit": t.unit,
-                      "angle": t.angle.to_json(), "source": source},
+                      "angle": t.angle.to_json(), "curvature": t.curvature.to_json(), "source": source},
     });
     if full {
         v["edge_list"] = a
@@ -377,13 +377,17 @@ pub fn brep_audit_to_json(a: &BrepAudit, full: bool) -> Value {
 }
 
 /// The `continuity` counts of a B-rep audit: measured shared and seam
-/// edges by [`Grade`], `exact` among them, `not_measured`; `G2` is `null`
-/// (not measured: a G2 edge counts as G1).
+/// edges by [`Grade`], `exact` among them, `not_measured`.
 fn continuity_counts(a: &BrepAudit) -> Value {
     let grades = a.grades();
     let mut c = serde_json::Map::new();
-    c.insert("G2".into(), Value::Null);
-    for g in [Grade::G1, Grade::G0, Grade::Fails, Grade::Undecided] {
+    for g in [
+        Grade::G2,
+        Grade::G1,
+        Grade::G0,
+        Grade::Fails,
+        Grade::Undecided,
+    ] {
         c.insert(g.name().into(), json!(grades.get(&g).map_or(0, |k| k[0])));
     }
     c.insert(
@@ -431,6 +435,10 @@ fn edge_measures(e: &BrepEdge, v: &mut Value) {
                 "angle": measure_json(&j.angle),
             });
             v["verdicts"] = json!({"G0": verdict_name(&j.g0), "G1": verdict_name(&j.g1)});
+            if let (Some(c), Some(g2)) = (&j.curvature, &j.g2) {
+                v["measures"]["curvature"] = measure_json(c);
+                v["verdicts"]["G2"] = json!(verdict_name(g2));
+            }
             v["continuity"] = json!(grade.name());
             v["exact"] = json!(exact);
         }

@@ -35,7 +35,25 @@
 //! A cone whose slope is known only within a bound ([`ClosedForm`]) is
 //! enclosed with its slope widened by the bound: the formulas hold for
 //! every slope in the interval, so they enclose the true cone's.
+//!
+//! The normal's Jacobian `J = ∂n̂/∂P` ([`DistanceField::normal_jacobian`])
+//! is a sum of rank-one terms in the unit vectors `e = (a, b, 0)/ρ`,
+//! `e_φ = (−b, a, 0)/ρ` (around the axis) and, for the torus,
+//! `t̂ = (h/q) e − c ẑ` with `c = (ρ − C)/q` (along the meridian circle of
+//! centre `ρ = C`, `C = ±R`):
+//!
+//! ```text
+//! plane      J = 0
+//! cylinder   J = e_φ e_φᵀ / ρ
+//! sphere     J = (I − n̂ n̂ᵀ) / |P − C|
+//! cone       J = e_φ e_φᵀ / (ρ √(1 + k²))
+//! torus      J = ε(c e_φ e_φᵀ / ρ + t̂ t̂ᵀ / q)
+//! ```
+//!
+//! (`n̂` turns about the axis at the rate `1/ρ` times its radial part, and
+//! in the meridian plane about the meridian's centre of curvature.)
 
+use super::field::{DistanceField, IMat3};
 use super::gap::abs_lower;
 use super::ivec::{add, dot, scale, sub, IVec};
 use super::Enclose;
@@ -172,17 +190,31 @@ impl ISurface {
 
     /// `(ρ, h)` of the box `p`.
     fn meridian(&self, p: &[Interval]) -> (Interval, Interval) {
-        let d = sub(p, &self.origin);
-        let [a, b, h] = [0, 1, 2].map(|k| dot(&d, &self.axes[k]));
+        let [a, b, h] = self.local(p);
         let rho = a.sqr().add(&b.sqr()).sqrt().expect("a sum of squares");
         (rho, h)
     }
 
+    /// The point's frame coordinates `(a, b, h)`.
+    fn local(&self, p: &[Interval]) -> [Interval; 3] {
+        let d = sub(p, &self.origin);
+        [0, 1, 2].map(|k| dot(&d, &self.axes[k]))
+    }
+
+    /// A frame vector in world coordinates.
+    fn world(&self, v: &[Interval; 3]) -> IVec {
+        add(
+            &add(&scale(&self.axes[0], &v[0]), &scale(&self.axes[1], &v[1])),
+            &scale(&self.axes[2], &v[2]),
+        )
+    }
+}
+
+impl DistanceField for ISurface {
     /// `s` and `n̂` over the box `p`; `None` where they are not proved
     /// (the box reaches the axis, the centre, the cone's apex plane).
-    pub fn distance(&self, p: &[Interval]) -> Option<Distance> {
-        let d = sub(p, &self.origin);
-        let [a, b, h] = [0, 1, 2].map(|k| dot(&d, &self.axes[k]));
+    fn distance(&self, p: &[Interval]) -> Option<Distance> {
+        let [a, b, h] = self.local(p);
         let rho = || {
             let r = a.sqr().add(&b.sqr()).sqrt()?;
             (r.lo > 0.0).then_some(r)
@@ -251,11 +283,71 @@ impl ISurface {
                 )
             }
         };
-        let normal = add(
-            &add(&scale(&self.axes[0], &na), &scale(&self.axes[1], &nb)),
-            &scale(&self.axes[2], &nh),
-        );
+        let normal = self.world(&[na, nb, nh]);
         Some(Distance { signed, normal })
+    }
+
+    /// `J` over the box `p` (module docs); `None` where a denominator's
+    /// enclosure holds 0.
+    fn normal_jacobian(&self, p: &[Interval]) -> Option<IMat3> {
+        let [a, b, h] = self.local(p);
+        let zero = Interval::point(0.0);
+        let rho = || {
+            let r = a.sqr().add(&b.sqr()).sqrt()?;
+            (r.lo > 0.0).then_some(r)
+        };
+        let around = |r: &Interval| Some([b.neg().div(r)?, a.div(r)?, zero]);
+        let mut j = [[zero; 3]; 3];
+        match self.kind {
+            Kind::Plane => {}
+            Kind::Cylinder { .. } => {
+                let r = rho()?;
+                add_outer(&mut j, &inv(&r)?, &self.world(&around(&r)?));
+            }
+            Kind::Sphere { .. } => {
+                let r = a.sqr().add(&b.sqr()).add(&h.sqr()).sqrt()?;
+                let n = self.world(&[a.div(&r)?, b.div(&r)?, h.div(&r)?]);
+                let k = inv(&r)?;
+                for (i, row) in j.iter_mut().enumerate() {
+                    row[i] = k;
+                }
+                add_outer(&mut j, &k.neg(), &n);
+            }
+            Kind::Cone { slope, .. } => {
+                let r = rho()?;
+                let norm = Interval::point(1.0).add(&slope.sqr()).sqrt()?;
+                add_outer(&mut j, &inv(&r.mul(&norm))?, &self.world(&around(&r)?));
+            }
+            Kind::Torus {
+                centre, outward, ..
+            } => {
+                let r = rho()?;
+                let radial = r.sub(&centre);
+                let q = radial.sqr().add(&h.sqr()).sqrt()?;
+                let c = radial.div(&q)?;
+                let hq = h.div(&q)?;
+                let e = Interval::point(if outward { 1.0 } else { -1.0 });
+                let t = [hq.mul(&a.div(&r)?), hq.mul(&b.div(&r)?), c.neg()];
+                add_outer(&mut j, &c.div(&r)?.mul(&e), &self.world(&around(&r)?));
+                add_outer(&mut j, &inv(&q)?.mul(&e), &self.world(&t));
+            }
+        }
+        Some(j)
+    }
+}
+
+/// `1/x`.
+fn inv(x: &Interval) -> Option<Interval> {
+    Interval::point(1.0).div(x)
+}
+
+/// `j += k u uᵀ`.
+fn add_outer(j: &mut IMat3, k: &Interval, u: &[Interval]) {
+    for (row, ui) in j.iter_mut().zip(u) {
+        let kui = k.mul(ui);
+        for (x, uj) in row.iter_mut().zip(u) {
+            *x = x.add(&kui.mul(uj));
+        }
     }
 }
 
@@ -354,8 +446,9 @@ mod tests {
         }
         .gradient(&[1, 0, 0].map(|n| BigRational::from_integer(n.into())));
         assert!(g[0] < BigRational::from_integer(0.into()));
-        // The apple's formula is refused where its foot is past the axis.
-        assert!(torus(1, 2).distance(&at(0.5, 0.0, 3.0)).is_none());
+        // The apple's formula is refused where its foot is past the axis:
+        // at (0.1, 0, 0.5) the foot is at ρ = 1 + 2(−0.9)/√1.06 < 0.
+        assert!(torus(1, 2).distance(&at(0.1, 0.0, 0.5)).is_none());
     }
 
     /// The horn torus `R = r = 1`: `(3, 0, 1)` is `√5 − 1` from the circle
@@ -374,5 +467,32 @@ mod tests {
             3
         ];
         assert!(torus(1, 1).distance(&near).is_none());
+    }
+
+    /// The normal's Jacobian of the spindle torus's lemon and apple against
+    /// central differences of [`DistanceField::distance`]'s normal.
+    #[test]
+    fn a_spindle_torus_normal_jacobian_is_the_normals_derivative() {
+        for p in [[0.5, 0.1, 0.2], [3.5, -0.4, 0.6]] {
+            let s = torus(1, 2).nearer_part(&at(p[0], p[1], p[2]));
+            let j = s.normal_jacobian(&at(p[0], p[1], p[2])).unwrap();
+            let d = 1e-6;
+            for k in 0..3 {
+                let mut lo = p;
+                let mut hi = p;
+                lo[k] -= d;
+                hi[k] += d;
+                let n = |q: [f64; 3]| s.distance(&at(q[0], q[1], q[2])).unwrap().normal;
+                let (a, b) = (n(lo), n(hi));
+                for i in 0..3 {
+                    let fd = (b[i].mid() - a[i].mid()) / (2.0 * d);
+                    assert!(
+                        (j[i][k].mid() - fd).abs() < 1e-6,
+                        "{p:?} J[{i}][{k}] {:?} vs {fd}",
+                        j[i][k]
+                    );
+                }
+            }
+        }
     }
 }

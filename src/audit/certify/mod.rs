@@ -48,6 +48,7 @@ pub mod angle;
 pub mod bezier;
 pub mod closed_form;
 pub mod curvature;
+pub mod field;
 pub mod foot;
 pub mod gap;
 pub mod ivec;
