@@ -27,6 +27,7 @@
 use super::frame::Frame;
 use super::{add, scale};
 use crate::algebra::scalar::Scalar;
+use num_rational::BigRational;
 
 /// An elementary surface by its closed form.
 #[derive(Clone, Debug, PartialEq)]
@@ -153,5 +154,43 @@ impl<T: Scalar> Implicit<T> {
             &add(&scale(&f.x, &ga), &scale(&f.y, &gb)),
             &scale(&f.z, &gh),
         )
+    }
+}
+
+/// The closed form of a surface entity as far as it is known: exactly, or
+/// (a cone whose `semi_angle` is not a multiple of 15°, [`cone_slope`])
+/// with its slope known within a bound; and how the entity's normal
+/// `σ_u × σ_v` relates to [`Implicit::gradient`].
+///
+/// [`cone_slope`]: super::cone_slope
+#[derive(Clone, Debug, PartialEq)]
+pub struct ClosedForm<T> {
+    /// The surface: exactly it when `slope_error` is `None`; else a cone
+    /// whose slope is a rational within `slope_error` of `tan α`.
+    pub implicit: Implicit<T>,
+    /// An exact bound `≥ |slope − tan α|` ([`Slope::error`]) for a cone
+    /// whose slope is not exact; `None` when `implicit` is exact.
+    ///
+    /// [`Slope::error`]: super::Slope::error
+    pub slope_error: Option<BigRational>,
+    /// Does the entity's normal point against [`Implicit::gradient`]?
+    /// False for the elementary surfaces (module docs); a surface of
+    /// extrusion or revolution recognised as one may be reversed.
+    pub reversed: bool,
+}
+
+impl<T> ClosedForm<T> {
+    /// An elementary surface known exactly, with ISO's normal.
+    pub fn exact(implicit: Implicit<T>) -> Self {
+        ClosedForm {
+            implicit,
+            slope_error: None,
+            reversed: false,
+        }
+    }
+
+    /// The closed form when it is exactly the surface.
+    pub fn exact_implicit(&self) -> Option<&Implicit<T>> {
+        self.slope_error.is_none().then_some(&self.implicit)
     }
 }

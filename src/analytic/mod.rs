@@ -48,7 +48,7 @@ pub mod trim;
 pub use angle::{cone_slope, AngleUnit, Slope};
 pub use curves::{circle, ellipse, line_segment, polyline, quarter_arcs};
 pub use frame::{Frame, Frame2};
-pub use implicit::Implicit;
+pub use implicit::{ClosedForm, Implicit};
 pub use range::{covering_range, Unbounded};
 pub use surfaces::{cone, cylinder, extrusion, plane, revolution, sphere, torus};
 pub use trim::{locate_vertex, split_between, trim_between, Trimmed};

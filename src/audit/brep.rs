@@ -13,16 +13,18 @@
 //!
 //! Every shared and seam edge is measured ([`super::joint`]): certified
 //! gaps, angle and curvature difference with G0/G1/G2 verdicts against the
-//! tolerances, where both
-//! faces are elementary surfaces with an exact closed form; other edges are
-//! *not measured*, with the reason counted.
+//! tolerances, where both faces have a closed form (elementary surfaces, a
+//! cone's slope exact or enclosed, and extrusions of a line or of a circle
+//! along its axis: [`crate::analytic::ClosedForm`]); other edges are *not
+//! measured*, with the reason counted.
 //!
 //! The length tolerance is `--tol` when given, else the declared
 //! `UNCERTAINTY_MEASURE_WITH_UNIT` of the model's representation contexts
 //! (the largest when they differ), in the model's length unit.
 
+use super::certify::closed_form::ISurface;
 use super::certify::Verdict;
-use super::joint::{measure_joint, JointFace, JointMeasures, JointTolerances};
+use super::joint::{measure_joint, JointFace, JointMeasures, JointSurface, JointTolerances};
 use super::knots::{knot_lines, KnotLine};
 use crate::algebra::{Interval, Ordered, RealAlgebraic, Scalar};
 use crate::curve::RationalCurve;
@@ -298,12 +300,26 @@ fn edge_pieces(e: &Edge) -> Result<Vec<RationalCurve<RealAlgebraic>>, String> {
 /// The face as a [`JointFace`], or why not.
 fn joint_face(f: &Face) -> Result<JointFace<'_>, String> {
     match &f.surface.geometry {
-        Geometry::Analytic(a) => match &a.implicit {
-            Some(s) => Ok(JointFace {
-                surface: s,
-                same_sense: f.same_sense,
-            }),
-            None => Err(format!("{} face has no exact closed form", f.surface.kind)),
+        Geometry::Analytic(a) => match &a.closed_form {
+            Some(c) => {
+                let surface = match c.exact_implicit() {
+                    Some(s) => JointSurface::Exact(s),
+                    None => JointSurface::Enclosed(ISurface::enclosing(c).ok_or_else(|| {
+                        format!("{} face: a torus whose major radius is negative", f.surface.kind)
+                    })?),
+                };
+                Ok(JointFace {
+                    surface,
+                    same_sense: f.same_sense != c.reversed,
+                })
+            }
+            None if f.surface.kind == "SURFACE_OF_LINEAR_EXTRUSION" => Err(
+                "SURFACE_OF_LINEAR_EXTRUSION face of a curve other than a line or a circle along its axis (no closed form)".into(),
+            ),
+            None => Err(format!(
+                "{} face (no closed form: swept surfaces of revolution are not recognised)",
+                f.surface.kind
+            )),
         },
         Geometry::Pieces(_) => Err(format!(
             "{} face (certified foot points on B-spline faces not wired in)",

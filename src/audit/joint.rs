@@ -1,9 +1,10 @@
 //! Certified measures and verdicts of one B-rep edge between its two faces
 //! (a shared edge), or between a face and itself (a seam), where both faces
-//! are elementary surfaces with an exact closed form ([`Implicit`]). See
-//! `docs/audit.md`, "STEP B-rep input".
+//! are elementary surfaces with a closed form: exact ([`Implicit`]), or
+//! enclosed ([`ISurface`]: a cone whose slope is known within a bound).
+//! See `docs/audit.md`, "STEP B-rep input".
 //!
-//! **Exact paths first.** With `F` a face's implicit equation of degree `d`
+//! **Exact paths first** (where the faces are exact). With `F` a face's implicit equation of degree `d`
 //! and a curve piece of degree `n` with positive weights, `w(t)^d F(C(t))`
 //! is a polynomial of degree `≤ d·n` in `t`; it vanishes identically iff it
 //! vanishes at `d·n + 1` distinct parameters. So `F(C(t_j)) = 0` at
@@ -81,12 +82,42 @@ fn length_resolution(curves: &[ICurve]) -> Result<f64, Error> {
 /// charged 4.4 times its time).
 const EXACT_POINT_WORK: u64 = 10_000;
 
+/// A face's surface, as far as it is known.
+#[derive(Clone, Debug)]
+pub enum JointSurface<'a> {
+    /// Exactly: the exact tests (a gap exactly 0, tangent planes exactly
+    /// the same) run before the enclosures.
+    Exact(&'a Implicit<RealAlgebraic>),
+    /// By enclosures of its data only (a cone whose slope is known within
+    /// a bound): every measure is an enclosure.
+    Enclosed(ISurface),
+}
+
+impl JointSurface<'_> {
+    /// The exact closed form, if known.
+    fn exact(&self) -> Option<&Implicit<RealAlgebraic>> {
+        match self {
+            JointSurface::Exact(s) => Some(s),
+            JointSurface::Enclosed(_) => None,
+        }
+    }
+
+    /// The enclosed closed form; `None` as [`ISurface::new`].
+    fn enclosed(&self) -> Option<ISurface> {
+        match self {
+            JointSurface::Exact(s) => ISurface::new(*s),
+            JointSurface::Enclosed(s) => Some(s.clone()),
+        }
+    }
+}
+
 /// One face along the edge: its closed form and orientation.
 #[derive(Clone, Debug)]
 pub struct JointFace<'a> {
     /// The face's surface.
-    pub surface: &'a Implicit<RealAlgebraic>,
-    /// Does the face's normal agree with the surface's (`same_sense`)?
+    pub surface: JointSurface<'a>,
+    /// Does the face's normal agree with the surface's normal (the way of
+    /// [`Implicit::gradient`] and [`ISurface`]'s `n̂`)?
     pub same_sense: bool,
 }
 
@@ -154,9 +185,12 @@ fn sample_params(m: usize) -> Result<Vec<RealAlgebraic>, Error> {
 }
 
 /// The oriented gradient of a face at `p`.
-fn oriented(face: &JointFace<'_>, p: &[RealAlgebraic]) -> Vec<RealAlgebraic> {
-    let g = face.surface.gradient(p);
-    if face.same_sense {
+fn oriented(
+    (surface, same_sense): (&Implicit<RealAlgebraic>, bool),
+    p: &[RealAlgebraic],
+) -> Vec<RealAlgebraic> {
+    let g = surface.gradient(p);
+    if same_sense {
         g
     } else {
         g.into_iter().map(|x| -x).collect()
@@ -166,13 +200,16 @@ fn oriented(face: &JointFace<'_>, p: &[RealAlgebraic]) -> Vec<RealAlgebraic> {
 /// Are the faces' tangent planes the same all along the edge (exactly)?
 /// `Some(0)` when the oriented normals agree, `Some(π)` at a fold, `None`
 /// when not proved parallel.
-fn exact_angle(pieces: &[Curve], faces: &[JointFace<'_>; 2]) -> Result<Option<bool>, Error> {
-    let g = faces[0].surface.gradient_degree() + faces[1].surface.gradient_degree();
+fn exact_angle(
+    pieces: &[Curve],
+    faces: [(&Implicit<RealAlgebraic>, bool); 2],
+) -> Result<Option<bool>, Error> {
+    let g = faces[0].0.gradient_degree() + faces[1].0.gradient_degree();
     let mut sign = None;
     for c in pieces {
         for t in sample_params(g * c.degree())? {
             let p = c.eval(&t)?;
-            let (n1, n2) = (oriented(&faces[0], &p), oriented(&faces[1], &p));
+            let (n1, n2) = (oriented(faces[0], &p), oriented(faces[1], &p));
             if !exact_cross(&n1, &n2).iter().all(Zero::is_zero) {
                 return Ok(None);
             }
@@ -443,7 +480,7 @@ fn verdict(ms: &[Measure], tol: Option<Interval>) -> Verdict {
 /// use exact_bezier::algebra::{Interval, RealAlgebraic, Scalar};
 /// use exact_bezier::analytic::{Frame, Implicit};
 /// use exact_bezier::audit::certify::Verdict;
-/// use exact_bezier::audit::joint::{measure_joint, JointFace, JointTolerances, Measure};
+/// use exact_bezier::audit::joint::{measure_joint, JointFace, JointSurface, JointTolerances, Measure};
 /// use exact_bezier::RationalCurve;
 /// let q = |n: i64| RealAlgebraic::from_i64(n);
 /// let o = vec![q(0), q(0), q(0)];
@@ -453,8 +490,8 @@ fn verdict(ms: &[Measure], tol: Option<Interval>) -> Verdict {
 /// let wall = Implicit::Plane { frame: Frame::from_axes(o.clone(), vec![q(1), q(0), q(0)], vec![q(0), q(1), q(0)]) };
 /// let edge = RationalCurve::polynomial(vec![o, vec![q(1), q(0), q(0)]]).unwrap();
 /// let faces = [
-///     JointFace { surface: &floor, same_sense: false },
-///     JointFace { surface: &wall, same_sense: false },
+///     JointFace { surface: JointSurface::Exact(&floor), same_sense: false },
+///     JointFace { surface: JointSurface::Exact(&wall), same_sense: false },
 /// ];
 /// let tol = JointTolerances {
 ///     length: Some(Interval::point(1e-6)),
@@ -508,12 +545,15 @@ fn measure_capped(
         .iter()
         .map(ICurve::new)
         .collect::<Result<Vec<_>, _>>()?;
-    let surfaces = faces.clone().map(|f| ISurface::new(f.surface));
+    let surfaces = faces.clone().map(|f| f.surface.enclosed());
     let [Some(s0), Some(s1)] = surfaces else {
         return Err(Error::Domain(
-            "a torus whose minor radius is not below its major radius".into(),
+            "a torus whose major radius is negative".into(),
         ));
     };
+    // A self-intersecting torus: its part (apple or lemon) the edge is on.
+    let mid = curves[0].jet(Interval::point(0.5))?.x;
+    let (s0, s1) = (s0.nearer_part(&mid), s1.nearer_part(&mid));
     let fields: Fields<'_> = [&s0, &s1];
     let signs = faces
         .clone()
@@ -546,14 +586,25 @@ fn measure_capped(
     );
     let mut gap = [Measure::Unproved; 2];
     for (k, g) in gap.iter_mut().enumerate() {
-        *g = match within_cap(lies_on(pieces, faces[k].surface))? {
+        let on = match faces[k].surface.exact() {
+            Some(f) => within_cap(lies_on(pieces, f))?,
+            None => Some(false),
+        };
+        *g = match on {
             Some(true) => Measure::Exact,
             Some(false) => settle(along(&curves, fields, length, |a| Some(gap_bound(a, k))))?,
             None => Measure::Unproved,
         };
     }
     let face_gap = face_gap(&gap);
-    let angle = match within_cap(exact_angle(pieces, faces))? {
+    let exact = match (faces[0].surface.exact(), faces[1].surface.exact()) {
+        (Some(f0), Some(f1)) => exact_angle(
+            pieces,
+            [(f0, faces[0].same_sense), (f1, faces[1].same_sense)],
+        ),
+        _ => Ok(None),
+    };
+    let angle = match within_cap(exact)? {
         Some(Some(true)) => Measure::Exact,
         Some(Some(false)) => fold(),
         Some(None) => settle(along(&curves, fields, angular, |a| {
@@ -567,7 +618,12 @@ fn measure_capped(
     );
     let curvature = if holds(&g0) && holds(&g1) {
         Some(
-            if angle == Measure::Exact && faces[0].surface == faces[1].surface {
+            if angle == Measure::Exact
+                && matches!(
+                    (faces[0].surface.exact(), faces[1].surface.exact()),
+                    (Some(a), Some(b)) if a == b
+                )
+            {
                 Measure::Exact
             } else {
                 let target = (
@@ -657,11 +713,11 @@ mod tests {
         .unwrap();
         let faces = [
             JointFace {
-                surface: &floor,
+                surface: JointSurface::Exact(&floor),
                 same_sense: true,
             },
             JointFace {
-                surface: &tilted,
+                surface: JointSurface::Exact(&tilted),
                 same_sense,
             },
         ];
@@ -720,11 +776,11 @@ mod tests {
         let rim = circle(&axes, &q(2, 1));
         let faces = [
             JointFace {
-                surface: &cylinder,
+                surface: JointSurface::Exact(&cylinder),
                 same_sense: true,
             },
             JointFace {
-                surface: &floor,
+                surface: JointSurface::Exact(&floor),
                 same_sense: false,
             },
         ];
@@ -752,11 +808,11 @@ mod tests {
                 .unwrap();
         let faces = [
             JointFace {
-                surface: &cylinder,
+                surface: JointSurface::Exact(&cylinder),
                 same_sense: true,
             },
             JointFace {
-                surface: &side,
+                surface: JointSurface::Exact(&side),
                 same_sense: true,
             },
         ];

@@ -27,7 +27,7 @@
 use super::parser::{Instance, Param, Reader, Record};
 use super::{cartesian, Collector, StepModel};
 use crate::algebra::{parse_rational, RealAlgebraic};
-use crate::analytic::Implicit;
+use crate::analytic::ClosedForm;
 use crate::error::Error;
 use crate::nurbs::{Nurbs, SpannedPatch};
 use crate::patch::Patch;
@@ -66,9 +66,10 @@ pub struct AnalyticPieces {
     /// last point|²`, exact (the vertices are rounded decimals; the pieces
     /// end exactly on the curve at rational parameters nearest to them).
     pub vertex_distance_sq: Option<[RealAlgebraic; 2]>,
-    /// For a face: the closed form of its elementary surface, when its
-    /// pieces are exactly it ([`crate::analytic::Implicit`]).
-    pub implicit: Option<Box<Implicit<RealAlgebraic>>>,
+    /// For a face: the closed form of its surface, when it is an
+    /// elementary one ([`crate::analytic::ClosedForm`]: exact, or a cone
+    /// whose slope is known within a bound).
+    pub closed_form: Option<Box<ClosedForm<RealAlgebraic>>>,
 }
 
 /// A referenced geometric entity: its id, type name and geometry.

@@ -40,9 +40,10 @@ use crate::algebra::scalar::{Field, Ordered, Roots};
 use crate::analytic::trim::dyadic;
 use crate::analytic::{
     circle, cone, cone_slope, covering_range, ellipse, extrusion, line_segment, locate_vertex,
-    plane, polyline, revolution, sphere, split_between, torus, AngleUnit, Frame, Frame2, Implicit,
-    Unbounded,
+    plane, polyline, revolution, sphere, split_between, torus, AngleUnit, ClosedForm, Frame,
+    Frame2, Implicit, Unbounded,
 };
+use crate::analytic::{cross, dot};
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::rect::RectPatch;
@@ -96,9 +97,10 @@ pub struct SurfacePieces<T> {
     pub patches: Vec<RectPatch<T>>,
     /// Why the pieces are not exactly the entity (a cone's slope), if not.
     pub approximate: Option<String>,
-    /// The closed form of an elementary surface whose pieces are exact
-    /// (plane, cylinder, cone of exact slope, sphere, torus).
-    pub implicit: Option<Implicit<T>>,
+    /// The closed form of an elementary surface (plane, cylinder, cone,
+    /// sphere, torus; a cone's slope exact or within a bound), or of a
+    /// surface of extrusion recognised as one ([`extruded_closed_form`]).
+    pub closed_form: Option<ClosedForm<T>>,
 }
 
 /// What a curve id is.
@@ -744,14 +746,15 @@ pub fn surface_pieces<T: Field + Ordered + Roots>(
             covering_range(u, boundary).map_err(|x| e.err(x))
         }
     };
-    let pieces = |patches, approximate, implicit| {
+    let pieces = |patches, approximate, closed_form| {
         Ok(Surface::Pieces(SurfacePieces {
             entity: e.rec.name.clone(),
             patches,
             approximate,
-            implicit,
+            closed_form,
         }))
     };
+    let exact = |i| Some(ClosedForm::exact(i));
     let frame = || placement::<T>(table, e.reference(1)?);
     match e.rec.name.as_str() {
         "PLANE" => {
@@ -760,7 +763,7 @@ pub fn surface_pieces<T: Field + Ordered + Roots>(
             pieces(
                 vec![plane(&f, [&r[0][0], &r[0][1]], [&r[1][0], &r[1][1]])],
                 None,
-                Some(Implicit::Plane { frame: f }),
+                exact(Implicit::Plane { frame: f }),
             )
         }
         "CYLINDRICAL_SURFACE" | "CONICAL_SURFACE" => {
@@ -770,7 +773,11 @@ pub fn surface_pieces<T: Field + Ordered + Roots>(
             let radius: T = e.number(2)?;
             if e.rec.name == "CYLINDRICAL_SURFACE" {
                 let patches = crate::analytic::cylinder(&f, &radius, v);
-                return pieces(patches, None, Some(Implicit::Cylinder { frame: f, radius }));
+                return pieces(
+                    patches,
+                    None,
+                    exact(Implicit::Cylinder { frame: f, radius }),
+                );
             }
             let text = e.text(3)?;
             let s = cone_slope::<T>(text, &ctx.angle_unit).map_err(|x| e.err(x))?;
@@ -781,17 +788,21 @@ pub fn surface_pieces<T: Field + Ordered + Roots>(
                 )
             });
             let patches = cone(&f, &radius, &s.tan, v);
-            let implicit = s.exact.then(|| Implicit::Cone {
-                frame: f,
-                radius,
-                slope: s.tan,
-            });
-            pieces(patches, why, implicit)
+            let closed_form = ClosedForm {
+                implicit: Implicit::Cone {
+                    frame: f,
+                    radius,
+                    slope: s.tan,
+                },
+                slope_error: (!s.exact).then_some(s.error),
+                reversed: false,
+            };
+            pieces(patches, why, Some(closed_form))
         }
         "SPHERICAL_SURFACE" => {
             let (frame, radius) = (frame()?, e.number(2)?);
             let patches = sphere(&frame, &radius);
-            pieces(patches, None, Some(Implicit::Sphere { frame, radius }))
+            pieces(patches, None, exact(Implicit::Sphere { frame, radius }))
         }
         "TOROIDAL_SURFACE" | "DEGENERATE_TOROIDAL_SURFACE" => {
             let (frame, major, minor) = (frame()?, e.number(2)?, e.number(3)?);
@@ -799,7 +810,7 @@ pub fn surface_pieces<T: Field + Ordered + Roots>(
             pieces(
                 patches,
                 None,
-                Some(Implicit::Torus {
+                exact(Implicit::Torus {
                     frame,
                     major,
                     minor,
@@ -816,7 +827,12 @@ pub fn surface_pieces<T: Field + Ordered + Roots>(
                 curve: &curve,
                 vector: &v,
             })?;
-            pieces(extrusion(&curve, &v, [&r[0][0], &r[0][1]])?, None, None)
+            let closed_form = extruded_closed_form(table, e.reference(1)?, &v)?;
+            pieces(
+                extrusion(&curve, &v, [&r[0][0], &r[0][1]])?,
+                None,
+                closed_form,
+            )
         }
         "SURFACE_OF_REVOLUTION" => {
             let (origin, axis) = axis1::<T>(table, e.reference(2)?)?;
@@ -829,6 +845,65 @@ pub fn surface_pieces<T: Field + Ordered + Roots>(
             pieces(revolution(&curve, &origin, &axis)?, None, None)
         }
         _ => Ok(unsupported_surface(table, id)),
+    }
+}
+
+/// The elementary surface that the linear extrusion of the curve `swept`
+/// (a `LINE` or `CIRCLE`, or the basis of a `TRIMMED_CURVE` of one) along
+/// `v` is, decided exactly; `None` for other curves (a B-spline's, an
+/// ellipse's) and for a circle not extruded along its axis (an elliptic
+/// cylinder). With `σ(u, w) = C(u) + w·v`, the entity's normal is
+/// `σ_u × σ_w = C'(u) × v`:
+///
+/// - a line `C = p + u·d` (`d × v ≠ 0`) sweeps the plane through `p` with
+///   normal `d × v` (the plane's own `ẑ`);
+/// - a circle `C = c + r(cos u x̂ + sin u ŷ)` with `v = λẑ` sweeps the
+///   cylinder of its frame and radius: `C' × v = λ r (cos u x̂ + sin u ŷ)`,
+///   outward (the cylinder's gradient) when `λ > 0`, else reversed.
+///
+/// # Errors
+///
+/// [`Error::Format`] for a malformed line or circle.
+pub fn extruded_closed_form<T: Field + Ordered + Roots>(
+    table: &Table,
+    swept: u64,
+    v: &[T],
+) -> Result<Option<ClosedForm<T>>, Error> {
+    let mut id = swept;
+    let e = loop {
+        let Some(e) = entity(table, id)? else {
+            return Ok(None);
+        };
+        match e.rec.name.as_str() {
+            "TRIMMED_CURVE" => id = e.reference(1)?,
+            _ => break e,
+        }
+    };
+    match e.rec.name.as_str() {
+        "LINE" => {
+            let p: Vec<T> = point(table, e.reference(1)?)?;
+            let d: Vec<T> = vector(table, e.reference(2)?)?;
+            let n = cross(&d, v);
+            if p.len() != 3 || n.iter().all(Zero::is_zero) {
+                return Ok(None);
+            }
+            let frame = Frame::from_placement(&p, Some(&n), Some(&d)).map_err(|x| e.err(x))?;
+            Ok(Some(ClosedForm::exact(Implicit::Plane { frame })))
+        }
+        "CIRCLE" => {
+            let frame: Frame<T> = placement(table, e.reference(1)?)?;
+            let radius: T = e.number(2)?;
+            if frame.z.len() != 3 || !cross(&frame.z, v).iter().all(Zero::is_zero) {
+                return Ok(None);
+            }
+            let reversed = dot(&frame.z, v) < T::zero();
+            Ok(Some(ClosedForm {
+                implicit: Implicit::Cylinder { frame, radius },
+                slope_error: None,
+                reversed,
+            }))
+        }
+        _ => Ok(None),
     }
 }
 

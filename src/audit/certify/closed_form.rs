@@ -12,39 +12,53 @@
 //! sphere     s = |P − C| − R                    n̂ = (a, b, h)/|P − C|
 //! cone       s = (ρ − m)/√(1 + k²), m = R + k h n̂ = (a/ρ, b/ρ, −k)/√(1 + k²)     (m > 0)
 //!            s = (ρ + m)/√(1 + k²)              n̂ = (a/ρ, b/ρ, k)/√(1 + k²)      (m < 0)
-//! torus      s = q − r, q = √((ρ − R)² + h²)    n̂ = ((ρ − R)a/ρ, (ρ − R)b/ρ, h)/q  (r < R)
+//! torus      s = ε(q − r), q = √((ρ − c)² + h²)  n̂ = ε((ρ − c)a/ρ, (ρ − c)b/ρ, h)/q
 //! ```
 //!
 //! Each surface is a surface of revolution (the plane trivially), so the
-//! distance from a point is the distance, in the point's meridian plane,
-//! from the meridian section: a line (cylinder, cone: two lines, the
-//! nearer being the one with `m` of the sign shown), a circle (sphere,
-//! torus: two circles, the nearer one centred at `ρ = R` because their
-//! centres are `2R > 2r` apart). `n̂` is `∇s`, it points the way of
-//! [`Implicit::gradient`], and along a curve `P(t)`:
-//! `d s(P(t))/dt = n̂·P'(t)` — the slope [`super::gap`] uses.
+//! distance from a point is the distance, in the point's meridian
+//! half-plane `ρ ≥ 0`, from the meridian section: a line (cylinder, cone:
+//! two lines, the nearer being the one with `m` of the sign shown), a
+//! circle (sphere), arcs of the two circles of radius `r` centred at
+//! `ρ = ±R` (torus). For a ring torus (`r < R`) the nearer is the one
+//! centred at `c = R` (their centres are `2R > 2r` apart), `ε = 1`. When
+//! `r ≥ R` the torus intersects itself: the part of the circle at `c = R`
+//! with `ρ ≥ 0` is the outer part (the apple), that of the circle at
+//! `c = −R` the inner part (the lemon, when `r > R`), whose ISO normal
+//! `σ_u × σ_v = (R + r cos v)·r·(cos v, sin v)` (in `(ρ, h)`, with
+//! `R + r cos v < 0` there) points into its circle: `ε = −1`. The formula
+//! holds where the foot point `c + r(ρ − c)/q` has `ρ > 0` (it is then on
+//! the part). [`ISurface::nearer_part`] picks the part.
+//!
+//! `n̂` is `∇s`, it points the way of [`Implicit::gradient`], and along a
+//! curve `P(t)`: `d s(P(t))/dt = n̂·P'(t)` — the slope [`super::gap`] uses.
+//! A cone whose slope is known only within a bound ([`ClosedForm`]) is
+//! enclosed with its slope widened by the bound: the formulas hold for
+//! every slope in the interval, so they enclose the true cone's.
 //!
 //! The normal's Jacobian `J = ∂n̂/∂P` ([`DistanceField::normal_jacobian`])
 //! is a sum of rank-one terms in the unit vectors `e = (a, b, 0)/ρ`,
 //! `e_φ = (−b, a, 0)/ρ` (around the axis) and, for the torus,
-//! `t̂ = (h/q) e − c ẑ` with `c = (ρ − R)/q` (along the meridian circle):
+//! `t̂ = (h/q) e − c ẑ` with `c = (ρ − C)/q` (along the meridian circle of
+//! centre `ρ = C`, `C = ±R`):
 //!
 //! ```text
 //! plane      J = 0
 //! cylinder   J = e_φ e_φᵀ / ρ
 //! sphere     J = (I − n̂ n̂ᵀ) / |P − C|
 //! cone       J = e_φ e_φᵀ / (ρ √(1 + k²))
-//! torus      J = c e_φ e_φᵀ / ρ + t̂ t̂ᵀ / q
+//! torus      J = ε(c e_φ e_φᵀ / ρ + t̂ t̂ᵀ / q)
 //! ```
 //!
 //! (`n̂` turns about the axis at the rate `1/ρ` times its radial part, and
 //! in the meridian plane about the meridian's centre of curvature.)
 
 use super::field::{DistanceField, IMat3};
+use super::gap::abs_lower;
 use super::ivec::{add, dot, scale, sub, IVec};
 use super::Enclose;
 use crate::algebra::{Interval, Scalar};
-use crate::analytic::Implicit;
+use crate::analytic::{ClosedForm, Implicit};
 
 /// An [`Implicit`] surface with enclosed data.
 #[derive(Clone, Debug)]
@@ -57,10 +71,24 @@ pub struct ISurface {
 #[derive(Clone, Copy, Debug)]
 enum Kind {
     Plane,
-    Cylinder { radius: Interval },
-    Sphere { radius: Interval },
-    Cone { radius: Interval, slope: Interval },
-    Torus { major: Interval, minor: Interval },
+    Cylinder {
+        radius: Interval,
+    },
+    Sphere {
+        radius: Interval,
+    },
+    Cone {
+        radius: Interval,
+        slope: Interval,
+    },
+    /// The part on the circles of radius `minor` centred at `ρ = centre`
+    /// (module docs), with `ε = 1` when `outward`.
+    Torus {
+        major: Interval,
+        minor: Interval,
+        centre: Interval,
+        outward: bool,
+    },
 }
 
 /// The signed distance and foot normal over a box.
@@ -77,8 +105,8 @@ fn enclose_all<T: Enclose>(v: &[T]) -> IVec {
 }
 
 impl ISurface {
-    /// Enclose `s`; `None` for a torus with `r ≥ R` (its inner part is
-    /// not the nearer circle's).
+    /// Enclose `s` (a torus: its ring, or when `r ≥ R` its outer part;
+    /// see [`ISurface::nearer_part`]); `None` for a torus with `R < 0`.
     pub fn new<T: Scalar + Enclose>(s: &Implicit<T>) -> Option<ISurface> {
         let kind = match s {
             Implicit::Plane { .. } => Kind::Plane,
@@ -94,10 +122,15 @@ impl ISurface {
             },
             Implicit::Torus { major, minor, .. } => {
                 let (major, minor) = (major.enclose(), minor.enclose());
-                if minor.hi >= major.lo {
+                if major.lo < 0.0 {
                     return None;
                 }
-                Kind::Torus { major, minor }
+                Kind::Torus {
+                    major,
+                    minor,
+                    centre: major,
+                    outward: true,
+                }
             }
         };
         let f = s.frame();
@@ -106,6 +139,60 @@ impl ISurface {
             origin: enclose_all(&f.origin),
             axes: [enclose_all(&f.x), enclose_all(&f.y), enclose_all(&f.z)],
         })
+    }
+
+    /// Enclose a surface known by its [`ClosedForm`]: a cone whose slope
+    /// is within `slope_error` of the true `tan α` gets the slope interval
+    /// widened by that bound (outward), so it encloses the true cone's
+    /// slope. The entity's orientation (`reversed`) is the caller's.
+    pub fn enclosing<T: Scalar + Enclose>(form: &ClosedForm<T>) -> Option<ISurface> {
+        let mut s = ISurface::new(&form.implicit)?;
+        if let (Kind::Cone { slope, .. }, Some(e)) = (&mut s.kind, &form.slope_error) {
+            let e = Interval::enclose(e).hi;
+            *slope = slope.add(&Interval { lo: -e, hi: e });
+        }
+        Some(s)
+    }
+
+    /// For a torus with `r > R`, the part (apple or lemon) nearer the box
+    /// `p` when that is proved (`|q' − r| < |q − r|` over `p`, with `q`,
+    /// `q'` the distances from the circles at `ρ = R` and `ρ = −R`): the
+    /// distance from the whole surface near `p`. Otherwise `self`.
+    pub fn nearer_part(self, p: &[Interval]) -> ISurface {
+        let Kind::Torus { major, minor, .. } = self.kind else {
+            return self;
+        };
+        if minor.lo <= major.hi {
+            return self;
+        }
+        let (rho, h) = self.meridian(p);
+        let off = |c: Interval| {
+            let q = rho.sub(&c).sqr().add(&h.sqr()).sqrt()?;
+            Some(q.sub(&minor))
+        };
+        let lemon = matches!((off(major), off(major.neg())),
+            (Some(apple), Some(lemon)) if lemon.mag() < abs_lower(&apple));
+        let (centre, outward) = if lemon {
+            (major.neg(), false)
+        } else {
+            (major, true)
+        };
+        ISurface {
+            kind: Kind::Torus {
+                major,
+                minor,
+                centre,
+                outward,
+            },
+            ..self
+        }
+    }
+
+    /// `(ρ, h)` of the box `p`.
+    fn meridian(&self, p: &[Interval]) -> (Interval, Interval) {
+        let [a, b, h] = self.local(p);
+        let rho = a.sqr().add(&b.sqr()).sqrt().expect("a sum of squares");
+        (rho, h)
     }
 
     /// The point's frame coordinates `(a, b, h)`.
@@ -168,17 +255,31 @@ impl DistanceField for ISurface {
                     ],
                 )
             }
-            Kind::Torus { major, minor } => {
+            Kind::Torus {
+                minor,
+                centre,
+                outward,
+                ..
+            } => {
                 let r = rho()?;
-                let radial = r.sub(&major);
+                let radial = r.sub(&centre);
                 let q = radial.sqr().add(&h.sqr()).sqrt()?;
                 if q.lo <= 0.0 {
                     return None;
                 }
                 let c = radial.div(&q)?;
+                // The foot point's ρ: on the part only when positive.
+                if centre.add(&minor.mul(&c)).lo <= 0.0 {
+                    return None;
+                }
+                let e = Interval::point(if outward { 1.0 } else { -1.0 });
                 (
-                    q.sub(&minor),
-                    [c.mul(&a.div(&r)?), c.mul(&b.div(&r)?), h.div(&q)?],
+                    q.sub(&minor).mul(&e),
+                    [
+                        c.mul(&a.div(&r)?).mul(&e),
+                        c.mul(&b.div(&r)?).mul(&e),
+                        h.div(&q)?.mul(&e),
+                    ],
                 )
             }
         };
@@ -217,15 +318,18 @@ impl DistanceField for ISurface {
                 let norm = Interval::point(1.0).add(&slope.sqr()).sqrt()?;
                 add_outer(&mut j, &inv(&r.mul(&norm))?, &self.world(&around(&r)?));
             }
-            Kind::Torus { major, .. } => {
+            Kind::Torus {
+                centre, outward, ..
+            } => {
                 let r = rho()?;
-                let radial = r.sub(&major);
+                let radial = r.sub(&centre);
                 let q = radial.sqr().add(&h.sqr()).sqrt()?;
                 let c = radial.div(&q)?;
                 let hq = h.div(&q)?;
+                let e = Interval::point(if outward { 1.0 } else { -1.0 });
                 let t = [hq.mul(&a.div(&r)?), hq.mul(&b.div(&r)?), c.neg()];
-                add_outer(&mut j, &c.div(&r)?, &self.world(&around(&r)?));
-                add_outer(&mut j, &inv(&q)?, &self.world(&t));
+                add_outer(&mut j, &c.div(&r)?.mul(&e), &self.world(&around(&r)?));
+                add_outer(&mut j, &inv(&q)?.mul(&e), &self.world(&t));
             }
         }
         Some(j)
@@ -243,6 +347,152 @@ fn add_outer(j: &mut IMat3, k: &Interval, u: &[Interval]) {
         let kui = k.mul(ui);
         for (x, uj) in row.iter_mut().zip(u) {
             *x = x.add(&kui.mul(uj));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::scalar::Roots;
+    use crate::algebra::RealAlgebraic;
+    use crate::analytic::{cone_slope, AngleUnit, Frame};
+    use num_rational::BigRational;
+
+    fn frame<T: Scalar>() -> Frame<T> {
+        let (o, l) = (T::zero(), T::one());
+        Frame::from_axes(
+            vec![o.clone(), o.clone(), o.clone()],
+            vec![l.clone(), o.clone(), o.clone()],
+            vec![o.clone(), o, l],
+        )
+    }
+
+    fn at(x: f64, y: f64, z: f64) -> Vec<Interval> {
+        vec![Interval::point(x), Interval::point(y), Interval::point(z)]
+    }
+
+    fn holds(i: Interval, x: f64, width: f64) {
+        assert!(i.lo <= x && x <= i.hi && i.hi - i.lo < width, "{i:?} ∌ {x}");
+    }
+
+    /// The 30° cone of radius 1 at `h = 0`: exactly (slope `√3/3`), and
+    /// from the decimal angle "30." in rationals (no `√3`: the slope is a
+    /// dyadic within a proved bound). At `(3, 0, 0)` the distance from the
+    /// line `ρ = 1 + h/√3` of the meridian plane is `2/√(4/3) = √3`, the
+    /// foot normal `(1, 0, −1/√3)/√(4/3) = (√3/2, 0, −1/2)`.
+    #[test]
+    fn a_cone_from_a_decimal_angle_encloses_the_exact_cone() {
+        let exact = Implicit::Cone {
+            frame: frame::<RealAlgebraic>(),
+            radius: RealAlgebraic::from_i64(1),
+            slope: RealAlgebraic::from_i64(3).nth_root(2).unwrap() / RealAlgebraic::from_i64(3),
+        };
+        let s = cone_slope::<BigRational>("30.", &AngleUnit::Degree).unwrap();
+        assert!(!s.exact);
+        let form = ClosedForm {
+            implicit: Implicit::Cone {
+                frame: frame::<BigRational>(),
+                radius: BigRational::from_integer(1.into()),
+                slope: s.tan,
+            },
+            slope_error: Some(s.error),
+            reversed: false,
+        };
+        let p = at(3.0, 0.0, 0.0);
+        let e = ISurface::new(&exact).unwrap().distance(&p).unwrap();
+        let d = ISurface::enclosing(&form).unwrap().distance(&p).unwrap();
+        let root3 = 3f64.sqrt();
+        for x in [&e, &d] {
+            holds(x.signed, root3, 1e-12);
+            holds(x.normal[0], root3 / 2.0, 1e-12);
+            holds(x.normal[2], -0.5, 1e-12);
+        }
+        assert!(d.signed.lo <= e.signed.lo && e.signed.hi <= d.signed.hi);
+    }
+
+    fn torus(major: i64, minor: i64) -> ISurface {
+        ISurface::new(&Implicit::Torus {
+            frame: frame::<BigRational>(),
+            major: BigRational::from_integer(major.into()),
+            minor: BigRational::from_integer(minor.into()),
+        })
+        .unwrap()
+    }
+
+    /// The spindle torus `R = 1, r = 2`: in the half-plane `y = 0, x > 0`
+    /// its apple is the arc of the circle of radius 2 about `(1, 0)`
+    /// through `x = 3`, its lemon that of the circle about `(−1, 0)`
+    /// through `x = 1`. `(4, 0, 0)` is 1 outside the apple (normal `+x`);
+    /// `(1/2, 0, 0)` is 1/2 inside the lemon, whose ISO normal points to
+    /// the axis (`−x`), so `s = +1/2` with `n̂ = (−1, 0, 0)`.
+    #[test]
+    fn a_spindle_torus_apple_and_lemon() {
+        let p = at(4.0, 0.0, 0.0);
+        let s = torus(1, 2).nearer_part(&p);
+        let d = s.distance(&p).unwrap();
+        holds(d.signed, 1.0, 1e-12);
+        holds(d.normal[0], 1.0, 1e-12);
+        let p = at(0.5, 0.0, 0.0);
+        let s = torus(1, 2).nearer_part(&p);
+        let d = s.distance(&p).unwrap();
+        holds(d.signed, 0.5, 1e-12);
+        holds(d.normal[0], -1.0, 1e-12);
+        // Its gradient's way: F's ∇ at the lemon point (1, 0, 0).
+        let g = Implicit::Torus {
+            frame: frame::<BigRational>(),
+            major: BigRational::from_integer(1.into()),
+            minor: BigRational::from_integer(2.into()),
+        }
+        .gradient(&[1, 0, 0].map(|n| BigRational::from_integer(n.into())));
+        assert!(g[0] < BigRational::from_integer(0.into()));
+        // The apple's formula is refused where its foot is past the axis:
+        // at (0.1, 0, 0.5) the foot is at ρ = 1 + 2(−0.9)/√1.06 < 0.
+        assert!(torus(1, 2).distance(&at(0.1, 0.0, 0.5)).is_none());
+    }
+
+    /// The horn torus `R = r = 1`: `(3, 0, 1)` is `√5 − 1` from the circle
+    /// of radius 1 about `(1, 0)`; near its cusp (the centre) nothing is
+    /// proved.
+    #[test]
+    fn a_horn_torus() {
+        let p = at(3.0, 0.0, 1.0);
+        let d = torus(1, 1).nearer_part(&p).distance(&p).unwrap();
+        holds(d.signed, 5f64.sqrt() - 1.0, 1e-12);
+        let near = vec![
+            Interval {
+                lo: -1e-3,
+                hi: 1e-3
+            };
+            3
+        ];
+        assert!(torus(1, 1).distance(&near).is_none());
+    }
+
+    /// The normal's Jacobian of the spindle torus's lemon and apple against
+    /// central differences of [`DistanceField::distance`]'s normal.
+    #[test]
+    fn a_spindle_torus_normal_jacobian_is_the_normals_derivative() {
+        for p in [[0.5, 0.1, 0.2], [3.5, -0.4, 0.6]] {
+            let s = torus(1, 2).nearer_part(&at(p[0], p[1], p[2]));
+            let j = s.normal_jacobian(&at(p[0], p[1], p[2])).unwrap();
+            let d = 1e-6;
+            for k in 0..3 {
+                let mut lo = p;
+                let mut hi = p;
+                lo[k] -= d;
+                hi[k] += d;
+                let n = |q: [f64; 3]| s.distance(&at(q[0], q[1], q[2])).unwrap().normal;
+                let (a, b) = (n(lo), n(hi));
+                for i in 0..3 {
+                    let fd = (b[i].mid() - a[i].mid()) / (2.0 * d);
+                    assert!(
+                        (j[i][k].mid() - fd).abs() < 1e-6,
+                        "{p:?} J[{i}][{k}] {:?} vs {fd}",
+                        j[i][k]
+                    );
+                }
+            }
         }
     }
 }

@@ -147,7 +147,7 @@ impl Builder<'_> {
             pieces: t.pieces.into_iter().map(Patch::Curve).collect(),
             approximate: c.approximate,
             vertex_distance_sq: Some([t.start_distance_sq, t.end_distance_sq]),
-            implicit: None,
+            closed_form: None,
         }))
     }
 
@@ -164,7 +164,7 @@ impl Builder<'_> {
                             format!("the pieces cover the vertices of edge #{e}, whose curve is not converted, not the curve")
                         })),
                         vertex_distance_sq: None,
-                        implicit: s.implicit.map(Box::new),
+                        closed_form: s.closed_form.map(Box::new),
                     }),
                     Ok(Surface::BSpline(_) | Surface::Unsupported { .. }) => Geometry::NotConverted,
                     Err(e) => Geometry::Invalid(e.to_string()),
