@@ -100,7 +100,7 @@ pub struct SurfacePieces<T> {
     /// The closed form of an elementary surface (plane, cylinder, cone,
     /// sphere, torus; a cone's slope exact or within a bound), or of a
     /// surface of extrusion recognised as one ([`extruded_closed_form`]).
-    pub closed_form: Option<ClosedForm<T>>,
+    pub closed_form: Option<Box<ClosedForm<T>>>,
 }
 
 /// What a curve id is.
@@ -746,12 +746,12 @@ pub fn surface_pieces<T: Field + Ordered + Roots>(
             covering_range(u, boundary).map_err(|x| e.err(x))
         }
     };
-    let pieces = |patches, approximate, closed_form| {
+    let pieces = |patches, approximate, closed_form: Option<ClosedForm<T>>| {
         Ok(Surface::Pieces(SurfacePieces {
             entity: e.rec.name.clone(),
             patches,
             approximate,
-            closed_form,
+            closed_form: closed_form.map(Box::new),
         }))
     };
     let exact = |i| Some(ClosedForm::exact(i));

@@ -164,7 +164,7 @@ impl Builder<'_> {
                             format!("the pieces cover the vertices of edge #{e}, whose curve is not converted, not the curve")
                         })),
                         vertex_distance_sq: None,
-                        closed_form: s.closed_form.map(Box::new),
+                        closed_form: s.closed_form,
                     }),
                     Ok(Surface::BSpline(_) | Surface::Unsupported { .. }) => Geometry::NotConverted,
                     Err(e) => Geometry::Invalid(e.to_string()),
