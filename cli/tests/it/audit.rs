@@ -469,8 +469,8 @@ fn brep_verdicts_are_stable_under_f64_rounding() {
 }
 
 /// `audit --plot` of a STEP B-rep colours each edge by its verdict: every
-/// grade the summary counts shows in its colour, and no grade it does not
-/// count: the vase-like part `sg1-c5-214.stp` (G2 seams between its
+/// grade the summary counts shows in its colour (over 50 pixels), and no
+/// grade it does not count (under 20: a few blended pixels): the vase-like part `sg1-c5-214.stp` (G2 seams between its
 /// cylinders and G0 creases), the red cube with its cylinder (only G0
 /// edges). The counts come from the summary, the colours from the decoded
 /// picture.
@@ -496,7 +496,11 @@ fn brep_plot_colours_edges_by_verdict() {
         for (grade, rgb) in COLOURS {
             let pixels = crate::plot::pixels(&png, 800, 600, rgb).1;
             match c[grade].as_u64() {
-                Some(0) => assert_eq!(pixels, 0, "{model}: no {grade} edge, yet {grade} pixels"),
+                // Anti-aliased edges blend into a few pixels of any colour.
+                Some(0) => assert!(
+                    pixels < 20,
+                    "{model}: no {grade} edge, yet {pixels} {grade} pixels"
+                ),
                 Some(_) => assert!(
                     pixels > 50,
                     "{model}: {grade} edges drawn in {pixels} pixels"
