@@ -301,26 +301,27 @@ def continuity_of_faces(edge, faces, use, tol):
     return None
 
 
+def edge_and_faces(ancestors, i):
+    """The i-th edge of an edge-to-faces map and its distinct faces."""
+    edge = TopoDS.Edge(ancestors.FindKey(i))
+    distinct = occt_step.ShapeMap()
+    for face in ancestors.FindFromIndex(i):
+        distinct.Add(face)
+    return edge, occt_step.distinct_faces(distinct)
+
+
 def occt_edges(shape, label, angle_tol):
     """Per matched EDGE_CURVE id, its Open CASCADE edge occurrences; and the unmatched ones by use."""
     ancestors = ShapeToShapes()
     TopExp.MapShapesAndAncestors_s(shape, TopAbs_EDGE, TopAbs_FACE, ancestors)
     flagged = {}
     for i in range(1, ancestors.Extent() + 1):
-        edge = TopoDS.Edge(ancestors.FindKey(i))
-        distinct = occt_step.ShapeMap()
-        for face in ancestors.FindFromIndex(i):
-            distinct.Add(face)
-        faces = occt_step.distinct_faces(distinct)
+        edge, faces = edge_and_faces(ancestors, i)
         flagged[i] = reader_flagged(edge, faces, occt_step.classify_use(edge, faces))
     BRepLib.EncodeRegularity_s(shape, OCCT_REGULARITY_ANGLE)
     records, unmatched = [], {}
     for i in range(1, ancestors.Extent() + 1):
-        edge = TopoDS.Edge(ancestors.FindKey(i))
-        distinct = occt_step.ShapeMap()
-        for face in ancestors.FindFromIndex(i):
-            distinct.Add(face)
-        faces = occt_step.distinct_faces(distinct)
+        edge, faces = edge_and_faces(ancestors, i)
         use = occt_step.classify_use(edge, faces)
         ident = label(edge)
         if ident is None:
