@@ -29,31 +29,51 @@ use crate::algebra::{Interval, Scalar};
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::{RationalCurve, RectPatch};
+use smallvec::SmallVec;
 
-/// The coefficients of the piece over `[a, b]` of the Bernstein polynomial
-/// with coefficients `c` (blossom values `c[a^{n−k}, b^k]`).
-fn piece(c: &[Interval], a: f64, b: f64) -> Vec<Interval> {
+/// Scratch space for one row or column of coefficients: on the stack up
+/// to degree 15.
+type Row = SmallVec<[Interval; 16]>;
+
+/// De Casteljau's step applied `levels` times in place at `t`:
+/// `c_i ← (1 − t) c_i + t c_{i+1}` on the first `len − level − 1` entries.
+fn de_casteljau(c: &mut [Interval], t: f64, levels: std::ops::Range<usize>) {
+    let (t, s) = (
+        Interval::point(t),
+        Interval::point(1.0).sub(&Interval::point(t)),
+    );
     let n = c.len() - 1;
-    let one = Interval::point(1.0);
-    (0..=n)
-        .map(|k| {
-            let mut v = c.to_vec();
-            for level in 0..n {
-                let t = Interval::point(if level < k { b } else { a });
-                let s = one.sub(&t);
-                v = v
-                    .windows(2)
-                    .map(|w| w[0].mul(&s).add(&w[1].mul(&t)))
-                    .collect();
-            }
-            v[0]
-        })
-        .collect()
+    for level in levels {
+        for i in 0..n - level {
+            c[i] = c[i].mul(&s).add(&c[i + 1].mul(&t));
+        }
+    }
 }
 
-fn hull(values: impl IntoIterator<Item = Interval>) -> Interval {
+/// The coefficients of the piece over `[a, b]` of the Bernstein polynomial
+/// with coefficients `c` (blossom values `c[a^{n−k}, b^k]`), written to
+/// `out`. For `a = b` every blossom value is `p(a)`: one evaluation.
+fn piece(c: &[Interval], a: f64, b: f64, out: &mut Row) {
+    let n = c.len() - 1;
+    out.clear();
+    let mut v: Row = c.iter().copied().collect();
+    if a == b {
+        de_casteljau(&mut v, a, 0..n);
+        out.extend(std::iter::repeat_n(v[0], n + 1));
+        return;
+    }
+    for k in 0..=n {
+        v.copy_from_slice(c);
+        de_casteljau(&mut v, b, 0..k);
+        de_casteljau(&mut v, a, k..n);
+        out.push(v[0]);
+    }
+}
+
+fn hull(values: &[Interval]) -> Interval {
     values
-        .into_iter()
+        .iter()
+        .copied()
         .reduce(|a, b| a.hull(&b))
         .expect("a Bézier net is never empty")
 }
@@ -62,25 +82,58 @@ fn enclose_hpoint<T: Enclose>(p: &HPoint<T>) -> IVec {
     p.coords.iter().map(Enclose::enclose).collect()
 }
 
-/// Homogeneous control nets, `net[i][j][coord]`.
-type Net = Vec<Vec<IVec>>;
+/// A homogeneous control net with `rows × cols` points, stored per
+/// coordinate: `coords[d][i·cols + j]` is coordinate `d` of point `(i, j)`.
+#[derive(Clone, Debug)]
+struct Net {
+    rows: usize,
+    cols: usize,
+    coords: Vec<Vec<Interval>>,
+}
 
-/// Range of a net over `[u0, u1] × [v0, v1]`, per homogeneous coordinate.
-fn net_range(net: &Net, u: Interval, v: Interval) -> IVec {
-    let dims = net[0][0].len();
-    (0..dims)
-        .map(|d| {
-            let rows: Vec<Vec<Interval>> = net
-                .iter()
-                .map(|row| piece(&row.iter().map(|p| p[d]).collect::<Vec<_>>(), v.lo, v.hi))
-                .collect();
-            hull(
-                (0..rows[0].len()).flat_map(|j| {
-                    piece(&rows.iter().map(|r| r[j]).collect::<Vec<_>>(), u.lo, u.hi)
-                }),
-            )
-        })
-        .collect()
+impl Net {
+    /// The net of the points `net[i][j]` (each a homogeneous `IVec`).
+    fn new(net: &[Vec<IVec>]) -> Net {
+        let dims = net[0][0].len();
+        Net {
+            rows: net.len(),
+            cols: net[0].len(),
+            coords: (0..dims)
+                .map(|d| net.iter().flatten().map(|p| p[d]).collect())
+                .collect(),
+        }
+    }
+
+    /// Every point's homogeneous coordinates.
+    fn points(&self) -> impl Iterator<Item = IVec> + '_ {
+        (0..self.rows * self.cols).map(|k| self.coords.iter().map(|c| c[k]).collect())
+    }
+
+    /// Range over `[u0, u1] × [v0, v1]`, per homogeneous coordinate: the
+    /// hull of the piece's net (the piece in `v` of every row, then in `u`
+    /// of every column).
+    fn range(&self, u: Interval, v: Interval) -> IVec {
+        let (mut rows, mut column, mut out) = (Vec::new(), Row::new(), Row::new());
+        self.coords
+            .iter()
+            .map(|c| {
+                rows.clear();
+                for row in c.chunks(self.cols) {
+                    piece(row, v.lo, v.hi, &mut out);
+                    rows.extend_from_slice(&out);
+                }
+                let mut range: Option<Interval> = None;
+                for j in 0..self.cols {
+                    column.clear();
+                    column.extend(rows.iter().skip(j).step_by(self.cols).copied());
+                    piece(&column, u.lo, u.hi, &mut out);
+                    let h = hull(&out);
+                    range = Some(range.map_or(h, |r| r.hull(&h)));
+                }
+                range.expect("a Bézier net is never empty")
+            })
+            .collect()
+    }
 }
 
 /// Split the homogeneous `h` into `(P, w)`.
@@ -102,7 +155,7 @@ fn positive(w: &Interval) -> Result<(), Error> {
 }
 
 /// Refuse non-positive weights (their enclosures must be positive).
-fn check_weights<'a>(weights: impl IntoIterator<Item = &'a IVec>) -> Result<(), Error> {
+fn check_weights(weights: impl IntoIterator<Item = IVec>) -> Result<(), Error> {
     for (k, h) in weights.into_iter().enumerate() {
         let w = h[h.len() - 1];
         if w.lo <= 0.0 {
@@ -131,8 +184,8 @@ fn quotient(p: &[Interval], terms: &[(Interval, &[Interval])], w: &Interval) -> 
 /// A rational Bézier curve with enclosed control points of `H` and `H'`.
 #[derive(Clone, Debug)]
 pub struct ICurve {
-    h: Vec<IVec>,
-    dh: Vec<IVec>,
+    h: Net,
+    dh: Net,
 }
 
 /// A curve's point and tangent enclosed over a parameter interval.
@@ -160,16 +213,22 @@ impl ICurve {
             )));
         }
         let dh = c.hodograph(1);
-        let h: Vec<IVec> = c.ctrl().iter().map(enclose_hpoint).collect();
-        check_weights(&h)?;
-        Ok(ICurve {
-            h,
-            dh: if dh.is_empty() {
-                vec![vec![Interval::point(0.0); 4]]
-            } else {
-                dh.iter().map(enclose_hpoint).collect()
-            },
-        })
+        let column = |points: &[HPoint<T>]| {
+            Net::new(
+                &points
+                    .iter()
+                    .map(|p| vec![enclose_hpoint(p)])
+                    .collect::<Vec<_>>(),
+            )
+        };
+        let h = column(c.ctrl());
+        check_weights(h.points())?;
+        let dh = if dh.is_empty() {
+            Net::new(&[vec![vec![Interval::point(0.0); 4]]])
+        } else {
+            column(&dh)
+        };
+        Ok(ICurve { h, dh })
     }
 
     /// `C` and `C'` over all parameters in `t` (enclosures).
@@ -178,11 +237,8 @@ impl ICurve {
     ///
     /// [`Error::Domain`] when the weight's enclosure reaches 0 there.
     pub fn jet(&self, t: Interval) -> Result<CurveJet, Error> {
-        let range = |net: &[IVec]| {
-            let column: Net = net.iter().map(|p| vec![p.clone()]).collect();
-            net_range(&column, t, Interval::point(0.0))
-        };
-        let (h, dh) = (range(&self.h), range(&self.dh));
+        let point = Interval::point(0.0);
+        let (h, dh) = (self.h.range(t, point), self.dh.range(t, point));
         let ((p, w), (dp, dw)) = (split(&h), split(&dh));
         positive(&w)?;
         let x = quotient(p, &[], &w);
@@ -235,16 +291,17 @@ impl IPatch {
         }
         let net = |(a, b): (usize, usize)| -> Net {
             match r.derivative_patch(a, b) {
-                Some(d) => d
-                    .ctrl()
-                    .iter()
-                    .map(|row| row.iter().map(enclose_hpoint).collect())
-                    .collect(),
-                None => vec![vec![vec![Interval::point(0.0); 4]]],
+                Some(d) => Net::new(
+                    &d.ctrl()
+                        .iter()
+                        .map(|row| row.iter().map(enclose_hpoint).collect())
+                        .collect::<Vec<_>>(),
+                ),
+                None => Net::new(&[vec![vec![Interval::point(0.0); 4]]]),
             }
         };
         let nets = ORDERS.map(net);
-        check_weights(nets[0].iter().flatten())?;
+        check_weights(nets[0].points())?;
         Ok(IPatch { nets })
     }
 
@@ -254,7 +311,7 @@ impl IPatch {
     ///
     /// [`Error::Domain`] when the weight's enclosure reaches 0 there.
     pub fn jet(&self, u: Interval, v: Interval) -> Result<PatchJet, Error> {
-        let [h, hu, hv, huu, huv, hvv] = self.nets.each_ref().map(|n| net_range(n, u, v));
+        let [h, hu, hv, huu, huv, hvv] = self.nets.each_ref().map(|n| n.range(u, v));
         let (p, w) = split(&h);
         positive(&w)?;
         let [(pu, wu), (pv, wv), (puu, wuu), (puv, wuv), (pvv, wvv)] =
