@@ -29,7 +29,9 @@
 //!   ([`f64_work`]).
 //!
 //! The limits are per thread ([`with_limits`]): the command line sets them
-//! from `--max-digits`, `--max-input-bytes` and `--max-work`. No limit turns
+//! from `--max-digits`, `--max-input-bytes` and `--max-work`; work spread
+//! over threads runs [`detached`] under a share of what is left, and is
+//! [`absorb`]ed back. No limit turns
 //! an exact answer into an approximate one: an exact request over a limit is
 //! refused, never rounded.
 
@@ -149,6 +151,40 @@ pub fn with_limits<R>(limits: Limits, f: impl FnOnce() -> R) -> R {
     CHARGED.with(|c| c.set(old_charged));
     METERED.with(|c| c.set(old_metered));
     r
+}
+
+/// Work done on another thread for this one: the result of [`detached`],
+/// the work it was charged and the work it metered.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Detached<R> {
+    /// What the work returned.
+    pub result: R,
+    /// The work [`charge`]d while it ran.
+    pub charged: u64,
+    /// The work [`meter`]ed while it ran.
+    pub metered: u64,
+}
+
+/// Run `f` under `limits` with fresh counters, on any thread (a parallel
+/// worker's limits are not the spawning thread's): its result and the work
+/// it was charged and metered, for the spawning thread to [`absorb`].
+pub fn detached<R>(limits: Limits, f: impl FnOnce() -> R) -> Detached<R> {
+    with_limits(limits, || {
+        let result = f();
+        Detached {
+            result,
+            charged: charged(),
+            metered: metered(),
+        }
+    })
+}
+
+/// Add the work of a [`detached`] run to this thread's counters. The caller
+/// gave each run a share of what was left of [`Limits::max_work`], so that
+/// their sum stays within it; the total saturates rather than fails.
+pub fn absorb<R>(run: &Detached<R>) {
+    CHARGED.with(|c| c.set(c.get().saturating_add(run.charged)));
+    METERED.with(|c| c.set(c.get().saturating_add(run.metered)));
 }
 
 /// Record `ops` coefficient operations actually done on rationals of up to

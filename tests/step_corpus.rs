@@ -890,3 +890,42 @@ fn certified_measures_contain_samples_on_every_model() {
     assert!(names.len() >= 19, "{} models sampled", names.len());
     check_sampled_models(&names);
 }
+
+/// The audit measures edges in parallel: its findings do not depend on the
+/// number of threads, with the full budget or a scarce one, and a scarce
+/// budget is never overrun (the edges it cannot afford are undecided).
+#[test]
+fn audit_is_the_same_on_any_number_of_threads_and_keeps_to_its_budget() {
+    use exact_bezier::audit::brep::{audit_brep, Grade, ToleranceRequest};
+    use exact_bezier::limits::{self, Limits};
+    let m = read("sg1-c5-214.stp", true);
+    let run = |threads: usize, max_work: u64| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            let budget = Limits {
+                max_work,
+                ..Limits::DEFAULT
+            };
+            limits::with_limits(budget, || {
+                let a = audit_brep(&m, &ToleranceRequest::default());
+                (a, limits::charged())
+            })
+        })
+    };
+    let scarce = 20_000_000;
+    for max_work in [Limits::DEFAULT.max_work, scarce] {
+        let (one, charged_one) = run(1, max_work);
+        let (four, charged_four) = run(4, max_work);
+        assert_eq!(format!("{:?}", one.edges), format!("{:?}", four.edges));
+        assert_eq!(charged_one, charged_four);
+        assert!(charged_one <= max_work, "{charged_one} > {max_work}");
+    }
+    let undecided = |max_work| {
+        let grades = run(2, max_work).0.grades();
+        grades.get(&Grade::Undecided).map_or(0, |c| c[0])
+    };
+    assert!(undecided(scarce) > undecided(Limits::DEFAULT.max_work));
+}

@@ -24,15 +24,19 @@
 
 use super::certify::closed_form::ISurface;
 use super::certify::Verdict;
-use super::joint::{measure_joint, JointFace, JointMeasures, JointSurface, JointTolerances};
+use super::joint::{
+    measure_joint, JointFace, JointMeasures, JointSurface, JointTolerances, EDGE_WORK,
+};
 use super::knots::{knot_lines, KnotLine};
 use crate::algebra::{Interval, Ordered, RealAlgebraic, Scalar};
 use crate::curve::RationalCurve;
+use crate::limits::{self, Limits};
 use crate::patch::Patch;
 use crate::step::brep::{Edge, EdgeUse, Face, Geometry};
 use crate::step::BrepModel;
 use crate::Tolerance;
 use num_rational::BigRational;
+use rayon::prelude::*;
 use std::collections::BTreeMap;
 
 type Q = BigRational;
@@ -352,6 +356,34 @@ fn measure(m: &BrepModel, e: &Edge, tol: &JointTolerances) -> Measured {
     }
 }
 
+/// Edges measured together, on all cores. Each gets a work cap fixed when
+/// its batch starts: [`EDGE_WORK`], or an equal share of what is left of the
+/// budget when that is less. The verdicts do not depend on the number of
+/// threads, and the batches' work stays within the budget.
+const EDGE_BATCH: usize = 64;
+
+/// [`measure`] every edge of `edges`, in order, in parallel batches.
+fn measure_all(m: &BrepModel, edges: &[&Edge], tol: &JointTolerances) -> Vec<Measured> {
+    let outer = limits::current();
+    let mut out = Vec::with_capacity(edges.len());
+    for batch in edges.chunks(EDGE_BATCH) {
+        let left = outer.max_work.saturating_sub(limits::charged());
+        let cap = Limits {
+            max_work: EDGE_WORK.min(left / batch.len() as u64),
+            ..outer
+        };
+        let runs: Vec<_> = batch
+            .par_iter()
+            .map(|e| limits::detached(cap, || measure(m, e, tol)))
+            .collect();
+        for run in runs {
+            limits::absorb(&run);
+            out.push(run.result);
+        }
+    }
+    out
+}
+
 /// The length tolerance: `given`, else the largest declared one; the
 /// curvature tolerance: `given`, else the default for the model's unit.
 fn tolerances(m: &BrepModel, asked: &ToleranceRequest) -> Tolerances {
@@ -407,32 +439,43 @@ fn audit_with(m: &BrepModel, asked: &ToleranceRequest, measured: bool) -> BrepAu
         angle: Interval::enclose(&tolerance.angle),
         curvature: Interval::enclose(&tolerance.curvature),
     };
-    let edges = m
-        .edges
-        .values()
-        .map(|e| {
-            let class = classify(e);
-            let measured = match class {
-                EdgeClass::Shared | EdgeClass::Seam if measured => measure(m, e, &joint),
+    let edges: Vec<&Edge> = m.edges.values().collect();
+    let classes: Vec<EdgeClass> = edges.iter().map(|e| classify(e)).collect();
+    let to_measure: Vec<&Edge> = edges
+        .iter()
+        .zip(&classes)
+        .filter(|(_, c)| measured && matches!(c, EdgeClass::Shared | EdgeClass::Seam))
+        .map(|(e, _)| *e)
+        .collect();
+    let mut results = measure_all(m, &to_measure, &joint).into_iter();
+    let edges = edges
+        .into_iter()
+        .zip(classes)
+        .map(|(e, class)| BrepEdge {
+            id: e.id,
+            curve: e.curve.kind.clone(),
+            faces: e.used_by.clone(),
+            measured: match class {
+                EdgeClass::Shared | EdgeClass::Seam if measured => {
+                    results.next().expect("one result per edge measured")
+                }
                 _ => Measured::NotApplicable,
-            };
-            BrepEdge {
-                id: e.id,
-                curve: e.curve.kind.clone(),
-                faces: e.used_by.clone(),
-                class,
-                measured,
-            }
+            },
+            class,
         })
         .collect();
     let knot_lines = m
         .faces
         .values()
+        .collect::<Vec<_>>()
+        .par_iter()
         .filter_map(|f| match &f.surface.geometry {
             Geometry::Pieces(pieces) => Some((f.id, knot_lines(pieces))),
             _ => None,
         })
         .filter(|(_, lines)| !lines.is_empty())
+        .collect::<Vec<_>>()
+        .into_iter()
         .collect();
     BrepAudit {
         faces_by_surface: m.summary.faces_by_surface.clone(),

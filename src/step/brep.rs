@@ -33,6 +33,7 @@ use crate::nurbs::{Nurbs, SpannedPatch};
 use crate::patch::Patch;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
+use rayon::prelude::*;
 use std::collections::{BTreeMap, HashMap};
 use std::io::BufRead;
 
@@ -373,12 +374,42 @@ fn one_of<'a>(store: &'a Store, id: u64, names: &[&str]) -> Result<&'a Record, S
 /// Exact B-spline geometry of the file, and the entities found invalid.
 struct Converted<'a> {
     nurbs: HashMap<u64, &'a Nurbs>,
+    /// The Bézier pieces of every B-spline surface and 3D curve, converted
+    /// once, up front, on all cores (the costliest step of reading most
+    /// models; 2D curves, the p-curves, are converted when used).
+    converted: HashMap<u64, Vec<SpannedPatch>>,
     invalid: HashMap<u64, &'a str>,
 }
 
-impl Converted<'_> {
+impl<'a> Converted<'a> {
+    fn new(geometry: &'a StepModel) -> Converted<'a> {
+        let nurbs: HashMap<u64, &Nurbs> =
+            geometry.entities.iter().map(|e| (e.id, &e.nurbs)).collect();
+        let converted = geometry
+            .entities
+            .par_iter()
+            .filter(|e| match &e.nurbs {
+                Nurbs::Surface(_) => true,
+                Nurbs::Curve(c) => c.control_points().first().is_some_and(|p| p.dim() == 3),
+            })
+            .map(|e| (e.id, e.nurbs.pieces()))
+            .collect();
+        Converted {
+            nurbs,
+            converted,
+            invalid: geometry
+                .invalid
+                .iter()
+                .map(|(id, why)| (*id, why.as_str()))
+                .collect(),
+        }
+    }
+
     fn bspline(&self, id: u64) -> Geometry {
         match (self.nurbs.get(&id), self.invalid.get(&id)) {
+            (Some(_), _) if self.converted.contains_key(&id) => {
+                Geometry::Pieces(self.converted[&id].clone())
+            }
             (Some(n), _) => Geometry::Pieces(n.pieces()),
             (None, Some(why)) => Geometry::Invalid((*why).to_owned()),
             (None, None) => Geometry::Invalid(format!("#{id} was not read")),
@@ -886,14 +917,7 @@ pub fn read_brep_with(input: impl BufRead, options: BrepOptions) -> Result<BrepM
         store.insert(inst.id, inst);
     }
     let geometry = collector.finish();
-    let conv = Converted {
-        nurbs: geometry.entities.iter().map(|e| (e.id, &e.nurbs)).collect(),
-        invalid: geometry
-            .invalid
-            .iter()
-            .map(|(id, why)| (*id, why.as_str()))
-            .collect(),
-    };
+    let conv = Converted::new(&geometry);
     let mut b = Builder {
         store: &store,
         conv,
