@@ -35,38 +35,54 @@ use smallvec::SmallVec;
 /// to degree 15.
 type Row = SmallVec<[Interval; 16]>;
 
-/// De Casteljau's step applied `levels` times in place at `t`:
-/// `c_i ← (1 − t) c_i + t c_{i+1}` on the first `len − level − 1` entries.
-fn de_casteljau(c: &mut [Interval], t: f64, levels: std::ops::Range<usize>) {
-    let (t, s) = (
-        Interval::point(t),
-        Interval::point(1.0).sub(&Interval::point(t)),
-    );
+/// De Casteljau's algorithm at `t` in place, keeping one side: afterwards
+/// `c` holds the coefficients of the piece over `[0, t]` (`left`) or over
+/// `[t, 1]`, each step `d_i^r = (1 − t) d_i^{r−1} + t d_{i+1}^{r−1}`. The
+/// left piece is `d_0^r`, `r = 0..n` (kept in place by storing `d_{i−r}^r`
+/// at `c[i]`), the right piece `d_i^{n−i}`.
+fn subdivide(c: &mut [Interval], t: Interval, left: bool) {
+    let s = Interval::point(1.0).sub(&t);
     let n = c.len() - 1;
-    for level in levels {
-        for i in 0..n - level {
-            c[i] = c[i].mul(&s).add(&c[i + 1].mul(&t));
+    for level in 1..=n {
+        if left {
+            for i in (level..=n).rev() {
+                c[i] = c[i - 1].mul(&s).add(&c[i].mul(&t));
+            }
+        } else {
+            for i in 0..=n - level {
+                c[i] = c[i].mul(&s).add(&c[i + 1].mul(&t));
+            }
         }
     }
 }
 
-/// The coefficients of the piece over `[a, b]` of the Bernstein polynomial
-/// with coefficients `c` (blossom values `c[a^{n−k}, b^k]`), written to
-/// `out`. For `a = b` every blossom value is `p(a)`: one evaluation.
+/// The coefficients of the piece over `[a, b]` (`a ≤ b`, any reals) of the
+/// Bernstein polynomial with coefficients `c` (blossom values
+/// `c[a^{n−k}, b^k]`), written to `out`, in two subdivisions: the piece
+/// over `[0, b]`, then its part over `[a/b, 1]`; or, for `b < 1/2`, the
+/// piece over `[a, 1]`, then its part over `[0, (b − a)/(1 − a)]` (the
+/// divisor at least 1/2 either way). The parameters are enclosed: the exact
+/// blossom values lie in the result (inclusion isotonicity). For `a = b`,
+/// every coefficient is the value at `a`.
 fn piece(c: &[Interval], a: f64, b: f64, out: &mut Row) {
-    let n = c.len() - 1;
+    let point = Interval::point;
     out.clear();
-    let mut v: Row = c.iter().copied().collect();
+    out.extend_from_slice(c);
     if a == b {
-        de_casteljau(&mut v, a, 0..n);
-        out.extend(std::iter::repeat_n(v[0], n + 1));
-        return;
-    }
-    for k in 0..=n {
-        v.copy_from_slice(c);
-        de_casteljau(&mut v, b, 0..k);
-        de_casteljau(&mut v, a, k..n);
-        out.push(v[0]);
+        subdivide(out, point(a), false);
+        let value = out[0];
+        out.fill(value);
+    } else if b >= 0.5 {
+        subdivide(out, point(b), true);
+        let ratio = point(a).div(&point(b)).expect("b ≥ 1/2");
+        subdivide(out, ratio, false);
+    } else {
+        subdivide(out, point(a), false);
+        let ratio = point(b)
+            .sub(&point(a))
+            .div(&point(1.0).sub(&point(a)))
+            .expect("1 − a > 1/2");
+        subdivide(out, ratio, true);
     }
 }
 
@@ -331,5 +347,54 @@ impl IPatch {
             xuv,
             xvv,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_rational::BigRational;
+    use proptest::prelude::*;
+
+    /// The blossom `c[a^{n−k}, b^k]` exactly: de Casteljau's recursion with
+    /// the arguments `a` first, then `b` (the route [`piece`] does not take).
+    fn blossom(c: &[i64], a: &BigRational, b: &BigRational, k: usize) -> BigRational {
+        let n = c.len() - 1;
+        let mut v: Vec<BigRational> = c
+            .iter()
+            .map(|&x| BigRational::from_integer(x.into()))
+            .collect();
+        for level in 0..n {
+            let t = if level < n - k { a } else { b };
+            let s = BigRational::from_integer(1.into()) - t;
+            v = v.windows(2).map(|w| &w[0] * &s + &w[1] * t).collect();
+        }
+        v.swap_remove(0)
+    }
+
+    proptest! {
+        /// Every coefficient of the piece encloses the exact blossom value,
+        /// for parameters inside and outside `[0, 1]`, and a point piece is
+        /// the value there.
+        #[test]
+        fn piece_encloses_the_exact_blossom_values(
+            c in proptest::collection::vec(-1000i64..=1000, 1..=9),
+            ends in (-64i64..=128, -64i64..=128),
+        ) {
+            let (lo, hi) = (ends.0.min(ends.1), ends.0.max(ends.1));
+            let (a, b) = (lo as f64 / 64.0, hi as f64 / 64.0);
+            let exact = |x: i64| BigRational::new(x.into(), 64.into());
+            let coefficients: Vec<Interval> = c.iter().map(|&x| Interval::point(x as f64)).collect();
+            let mut out = Row::new();
+            piece(&coefficients, a, b, &mut out);
+            prop_assert_eq!(out.len(), c.len());
+            for (k, got) in out.iter().enumerate() {
+                let want = blossom(&c, &exact(lo), &exact(hi), k);
+                let inside = BigRational::from_float(got.lo).unwrap() <= want
+                    && want <= BigRational::from_float(got.hi).unwrap();
+                prop_assert!(inside, "k = {}: {:?} misses {}", k, got, want);
+                prop_assert!(got.width() <= 1e-9 * (1.0 + got.hi.abs()), "{:?}", got);
+            }
+        }
     }
 }
