@@ -234,7 +234,8 @@ struct Around {
     mid: [Distance; 2],
     /// Normals over `T`.
     over: [Distance; 2],
-    /// `s` over `T` (mean-value form).
+    /// `s` over `T`: the mean-value form, intersected with the Taylor form
+    /// of order 2 where the face's normal Jacobian is enclosed.
     signed: [Interval; 2],
 }
 
@@ -246,10 +247,21 @@ fn around(curve: &ICurve, fields: Fields<'_>, t: Interval) -> Result<Option<Arou
         return Ok(None);
     };
     let dt = t.sub(&m);
-    let signed =
-        |mid: &Distance, over: &Distance| mid.signed.add(&dot(&over.normal, &co.dx).mul(&dt));
+    let signed = |k: usize, mid: &Distance, over: &Distance| {
+        let mean_value = mid.signed.add(&dot(&over.normal, &co.dx).mul(&dt));
+        let Some(j) = fields[k].normal_jacobian(&co.x) else {
+            return mean_value;
+        };
+        // g(t) = s(C(t)): g' = n̂·C', g'' = C'ᵀ J C' + n̂·C''.
+        let second = dot(&co.dx, &apply(&j, &co.dx)).add(&dot(&over.normal, &co.ddx));
+        let taylor = mid
+            .signed
+            .add(&dot(&mid.normal, &cm.dx).mul(&dt))
+            .add(&second.mul(&dt.sqr()).mul(&Interval::point(0.5)));
+        mean_value.intersect(&taylor).unwrap_or(mean_value)
+    };
     Ok(Some(Around {
-        signed: [signed(&m0, &o0), signed(&m1, &o1)],
+        signed: [signed(0, &m0, &o0), signed(1, &m1, &o1)],
         mid: [m0, m1],
         over: [o0, o1],
         cm,

@@ -202,20 +202,25 @@ fn quotient(p: &[Interval], terms: &[(Interval, &[Interval])], w: &Interval) -> 
 pub struct ICurve {
     h: Net,
     dh: Net,
+    ddh: Net,
 }
 
-/// A curve's point and tangent enclosed over a parameter interval.
+/// A curve's point, tangent and second derivative enclosed over a parameter
+/// interval.
 #[derive(Clone, Debug)]
 pub struct CurveJet {
     /// `C(t)`.
     pub x: IVec,
     /// `C'(t)`.
     pub dx: IVec,
+    /// `C''(t)`.
+    pub ddx: IVec,
 }
 
 impl ICurve {
     /// Enclose `c` (dimension 3, positive weights): its homogeneous control
-    /// points and those of its hodograph, formed exactly then enclosed.
+    /// points and those of its first and second hodographs, formed exactly
+    /// then enclosed.
     ///
     /// # Errors
     ///
@@ -228,38 +233,37 @@ impl ICurve {
                 c.dim()
             )));
         }
-        let dh = c.hodograph(1);
         let column = |points: &[HPoint<T>]| {
-            Net::new(
-                &points
-                    .iter()
-                    .map(|p| vec![enclose_hpoint(p)])
-                    .collect::<Vec<_>>(),
-            )
+            if points.is_empty() {
+                Net::new(&[vec![vec![Interval::point(0.0); 4]]])
+            } else {
+                Net::new(&points.iter().map(|p| vec![enclose_hpoint(p)]).collect::<Vec<_>>())
+            }
         };
         let h = column(c.ctrl());
         check_weights(h.points())?;
-        let dh = if dh.is_empty() {
-            Net::new(&[vec![vec![Interval::point(0.0); 4]]])
-        } else {
-            column(&dh)
-        };
-        Ok(ICurve { h, dh })
+        Ok(ICurve {
+            h,
+            dh: column(&c.hodograph(1)),
+            ddh: column(&c.hodograph(2)),
+        })
     }
 
-    /// `C` and `C'` over all parameters in `t` (enclosures).
+    /// `C`, `C'` and `C''` over all parameters in `t` (enclosures):
+    /// `C'' = (P'' − 2w'C' − w''C)/w`.
     ///
     /// # Errors
     ///
     /// [`Error::Domain`] when the weight's enclosure reaches 0 there.
     pub fn jet(&self, t: Interval) -> Result<CurveJet, Error> {
         let point = Interval::point(0.0);
-        let (h, dh) = (self.h.range(t, point), self.dh.range(t, point));
-        let ((p, w), (dp, dw)) = (split(&h), split(&dh));
+        let [h, dh, ddh] = [&self.h, &self.dh, &self.ddh].map(|n| n.range(t, point));
+        let ((p, w), (dp, dw), (ddp, ddw)) = (split(&h), split(&dh), split(&ddh));
         positive(&w)?;
         let x = quotient(p, &[], &w);
         let dx = quotient(dp, &[(dw, &x)], &w);
-        Ok(CurveJet { x, dx })
+        let ddx = quotient(ddp, &[(dw.mul(&Interval::point(2.0)), &dx), (ddw, &x)], &w);
+        Ok(CurveJet { x, dx, ddx })
     }
 }
 
