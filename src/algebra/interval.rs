@@ -82,6 +82,26 @@ impl Interval {
         Interval::rounded(lo, hi)
     }
 
+    /// `self · o` for a non-negative `o` (`o.lo ≥ 0`, checked): two
+    /// products instead of four (`min = a·c` or `a·d` by the sign of `a`,
+    /// `max = b·d` or `b·c` by the sign of `b`, for `[a, b]·[c, d]`).
+    pub fn mul_nonneg(&self, o: &Interval) -> Interval {
+        if o.lo < 0.0 {
+            return self.mul(o);
+        }
+        let lo = if self.lo >= 0.0 {
+            self.lo * o.lo
+        } else {
+            self.lo * o.hi
+        };
+        let hi = if self.hi >= 0.0 {
+            self.hi * o.hi
+        } else {
+            self.hi * o.lo
+        };
+        Interval::rounded(lo, hi)
+    }
+
     /// `self / o`, or `None` when `o` contains 0.
     pub fn div(&self, o: &Interval) -> Option<Interval> {
         if o.lo <= 0.0 && o.hi >= 0.0 {
@@ -181,5 +201,31 @@ impl Interval {
     /// Do the intervals have no point in common (so the exact values differ)?
     pub fn disjoint(&self, o: &Interval) -> bool {
         self.hi < o.lo || o.hi < self.lo
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn interval(a: f64, b: f64) -> Interval {
+        Interval {
+            lo: a.min(b),
+            hi: a.max(b),
+        }
+    }
+
+    proptest! {
+        /// With a non-negative factor, the two-product form picks the same
+        /// extreme products as the four-product one.
+        #[test]
+        fn mul_nonneg_is_mul_for_non_negative_factors(
+            x in (-1e6f64..1e6, -1e6f64..1e6),
+            y in (0f64..1e6, 0f64..1e6),
+        ) {
+            let (a, o) = (interval(x.0, x.1), interval(y.0, y.1));
+            prop_assert_eq!(a.mul_nonneg(&o), a.mul(&o));
+        }
     }
 }

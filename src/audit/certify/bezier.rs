@@ -46,11 +46,11 @@ fn subdivide(c: &mut [Interval], t: Interval, left: bool) {
     for level in 1..=n {
         if left {
             for i in (level..=n).rev() {
-                c[i] = c[i - 1].mul(&s).add(&c[i].mul(&t));
+                c[i] = c[i - 1].mul_nonneg(&s).add(&c[i].mul_nonneg(&t));
             }
         } else {
             for i in 0..=n - level {
-                c[i] = c[i].mul(&s).add(&c[i + 1].mul(&t));
+                c[i] = c[i].mul_nonneg(&s).add(&c[i + 1].mul_nonneg(&t));
             }
         }
     }
@@ -237,7 +237,12 @@ impl ICurve {
             if points.is_empty() {
                 Net::new(&[vec![vec![Interval::point(0.0); 4]]])
             } else {
-                Net::new(&points.iter().map(|p| vec![enclose_hpoint(p)]).collect::<Vec<_>>())
+                Net::new(
+                    &points
+                        .iter()
+                        .map(|p| vec![enclose_hpoint(p)])
+                        .collect::<Vec<_>>(),
+                )
             }
         };
         let h = column(c.ctrl());
