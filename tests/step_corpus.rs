@@ -801,9 +801,9 @@ fn check_against_samples(name: &str, sampled: &Value) -> SampleCheck {
         faces.sort_by_key(|f| f.as_str());
         theirs.sort_by_key(|f| f.as_str());
         assert_eq!(faces, theirs, "{name} {id}: faces");
-        // Rounding level of an exact 0: the sampler's model differs from
-        // ours only by a cone's semi-angle (ours the exact k·15° the
-        // decimal rounds, ≤ 5e-16 rad away) and 50-digit arithmetic.
+        // Rounding level of an exact 0: the sampler reads the file by the
+        // same rules (a cone's semi-angle that rounds k·15° to its printed
+        // digits is k·15°), so only 50-digit arithmetic separates them.
         let length_zero = 1e-12 * s["scale"].as_f64().unwrap();
         for (kind, ours) in measures {
             let pairs: Vec<(String, &Value, &Value)> = if kind == "gap" {

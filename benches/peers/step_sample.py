@@ -55,6 +55,7 @@ against which rounding is judged).
 
 import json
 import os
+from decimal import Decimal
 import sys
 from collections import Counter, defaultdict
 
@@ -151,6 +152,19 @@ class Model:
             return mpf(1) if u.get("prefix") is None else {"MILLI": mpf("0.001")}[u["prefix"]]
         return mpf(1)
 
+    def cone_slope(self, text):
+        """tan of a cone's semi-angle written as ``text`` in the model's angle
+        unit, by the reading rule of docs/nurbs_step.md ("The cone angle"):
+        a decimal that is a multiple k*15 degrees (k = 1..5) rounded to its
+        printed digits is that angle exactly; any other decimal is itself."""
+        written = num(text)
+        half_unit = mpf(10) ** Decimal(text).as_tuple().exponent / 2
+        for k in range(1, 6):
+            exact = k * PI / 12
+            if abs(written - exact / self.degree) <= half_unit:
+                return tan(exact)
+        return tan(written * self.degree)
+
     def point(self, ref):
         return [num(x) for x in self.params(ref, "CARTESIAN_POINT")[1]]
 
@@ -185,7 +199,7 @@ class Model:
         if name == "SPHERICAL_SURFACE":
             return Sphere(frame, num(p[2]))
         if name == "CONICAL_SURFACE":
-            return Cone(frame, num(p[2]), tan(num(p[3]) * self.degree))
+            return Cone(frame, num(p[2]), self.cone_slope(str(p[3])))
         major, minor = num(p[2]), num(p[3])
         if not minor < major:
             raise Skip("degenerate torus")
