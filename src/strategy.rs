@@ -32,7 +32,7 @@ pub fn open_unit_parameter() -> impl Strategy<Value = BigRational> {
 }
 
 /// A positive weight `p/q` with `1 ≤ p, q ≤ 1000`.
-pub fn positive_weight() -> impl Strategy<Value = BigRational> {
+pub fn positive_weight() -> impl Strategy<Value = BigRational> + Clone {
     (1i64..=1000, 1i64..=1000).prop_map(|(p, q)| BigRational::new(p.into(), q.into()))
 }
 
@@ -52,9 +52,21 @@ pub fn curve(degree: usize, dim: usize) -> impl Strategy<Value = RationalCurve<B
 
 /// A rational tensor-product patch of bidegree `(m, n)`, positive weights.
 pub fn rect(m: usize, n: usize, dim: usize) -> impl Strategy<Value = RectPatch<BigRational>> {
+    rect_weighted(m, n, dim, positive_weight())
+}
+
+/// [`rect`] with its weights drawn from `weight` (e.g. a narrower range,
+/// for tests of the `f64` path whose round-off grows with the weights'
+/// spread).
+pub fn rect_weighted<W: Strategy<Value = BigRational> + Clone>(
+    m: usize,
+    n: usize,
+    dim: usize,
+    weight: W,
+) -> impl Strategy<Value = RectPatch<BigRational>> {
     (
         vec(vec(point(dim), n + 1), m + 1),
-        vec(vec(positive_weight(), n + 1), m + 1),
+        vec(vec(weight, n + 1), m + 1),
     )
         .prop_map(|(p, w)| RectPatch::new(p, w).expect("shapes match"))
 }

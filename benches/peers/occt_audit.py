@@ -285,20 +285,14 @@ def sampled(edge, ours_sides, ts):
 
 def reader_flagged(edge, faces, use):
     """Did the reader already encode a regularity (its own EncodeRegularity, read.encoderegularity.angle)?"""
-    if use == "shared":
-        return bool(BRep_Tool.HasContinuity_s(edge, faces[0], faces[1]))
-    if use == "seam":
-        return bool(BRep_Tool.HasContinuity_s(edge, faces[0], faces[0]))
-    return None
+    pair = occt_step.face_pair(faces, use)
+    return None if pair is None else bool(BRep_Tool.HasContinuity_s(edge, *pair))
 
 
 def continuity_of_faces(edge, faces, use, tol):
     """BRepLib::ContinuityOfFaces at ``tol``: computed afresh, whatever flags the edge carries."""
-    if use == "shared":
-        return occt_step.enum_name(BRepLib.ContinuityOfFaces_s(edge, faces[0], faces[1], tol))
-    if use == "seam":
-        return occt_step.enum_name(BRepLib.ContinuityOfFaces_s(edge, faces[0], faces[0], tol))
-    return None
+    pair = occt_step.face_pair(faces, use)
+    return None if pair is None else occt_step.enum_name(BRepLib.ContinuityOfFaces_s(edge, *pair, tol))
 
 
 def edge_and_faces(ancestors, i):

@@ -163,13 +163,18 @@ def classify_use(edge, faces):
     return "non_manifold"
 
 
+def face_pair(faces, use):
+    """The two faces across a shared edge, the face twice across a seam,
+    else None."""
+    if use == "shared":
+        return faces[0], faces[1]
+    return (faces[0], faces[0]) if use == "seam" else None
+
+
 def continuity(edge, faces, use):
     """BRep_Tool::Continuity across a shared edge or a seam, else None."""
-    if use == "shared":
-        return enum_name(BRep_Tool.Continuity_s(edge, faces[0], faces[1]))
-    if use == "seam":
-        return enum_name(BRep_Tool.Continuity_s(edge, faces[0], faces[0]))
-    return None
+    pair = face_pair(faces, use)
+    return None if pair is None else enum_name(BRep_Tool.Continuity_s(edge, *pair))
 
 
 def edge_records(shape):

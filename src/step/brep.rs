@@ -34,6 +34,7 @@ use crate::patch::Patch;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use rayon::prelude::*;
+use std::cell::RefCell;
 use std::collections::{BTreeMap, HashMap};
 use std::io::BufRead;
 
@@ -375,9 +376,11 @@ fn one_of<'a>(store: &'a Store, id: u64, names: &[&str]) -> Result<&'a Record, S
 struct Converted<'a> {
     nurbs: HashMap<u64, &'a Nurbs>,
     /// The Bézier pieces of every B-spline surface and 3D curve, converted
-    /// once, up front, on all cores (the costliest step of reading most
-    /// models; 2D curves, the p-curves, are converted when used).
-    converted: HashMap<u64, Vec<SpannedPatch>>,
+    /// up front, on all cores (the costliest step of reading most models;
+    /// 2D curves, the p-curves, are converted when used). Each is moved out
+    /// at its first use, not copied: an entity used again is converted
+    /// again.
+    converted: RefCell<HashMap<u64, Vec<SpannedPatch>>>,
     invalid: HashMap<u64, &'a str>,
 }
 
@@ -385,7 +388,7 @@ impl<'a> Converted<'a> {
     fn new(geometry: &'a StepModel) -> Converted<'a> {
         let nurbs: HashMap<u64, &Nurbs> =
             geometry.entities.iter().map(|e| (e.id, &e.nurbs)).collect();
-        let converted = geometry
+        let converted: HashMap<u64, Vec<SpannedPatch>> = geometry
             .entities
             .par_iter()
             .filter(|e| match &e.nurbs {
@@ -396,7 +399,7 @@ impl<'a> Converted<'a> {
             .collect();
         Converted {
             nurbs,
-            converted,
+            converted: RefCell::new(converted),
             invalid: geometry
                 .invalid
                 .iter()
@@ -406,10 +409,10 @@ impl<'a> Converted<'a> {
     }
 
     fn bspline(&self, id: u64) -> Geometry {
+        if let Some(pieces) = self.converted.borrow_mut().remove(&id) {
+            return Geometry::Pieces(pieces);
+        }
         match (self.nurbs.get(&id), self.invalid.get(&id)) {
-            (Some(_), _) if self.converted.contains_key(&id) => {
-                Geometry::Pieces(self.converted[&id].clone())
-            }
             (Some(n), _) => Geometry::Pieces(n.pieces()),
             (None, Some(why)) => Geometry::Invalid((*why).to_owned()),
             (None, None) => Geometry::Invalid(format!("#{id} was not read")),

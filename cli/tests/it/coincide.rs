@@ -36,8 +36,7 @@ fn maps() -> impl Strategy<Value = Maps> {
 /// `[1/10, 10]`: the f64 path's round-off then stays well below its
 /// tolerance (α = 1/744 with weights from 1/3 to 868 loses 5 digits).
 fn moderate_maps() -> impl Strategy<Value = Maps> {
-    let k = (1i64..=10, 1i64..=10).prop_map(|(p, q)| ratio(p, q));
-    maps_with(|| rational_in(1, 19, 20), k)
+    maps_with(|| rational_in(1, 19, 20), moderate_weight())
 }
 
 fn maps_with<P: Strategy<Value = Q>>(
@@ -88,17 +87,14 @@ fn bidegree() -> impl Strategy<Value = RectPatch<Q>> {
     (1usize..=3, 1usize..=2).prop_flat_map(|(m, n)| rect(m, n, 3))
 }
 
+/// Weights `p/q` with `1 ≤ p, q ≤ 10`.
+fn moderate_weight() -> impl Strategy<Value = Q> + Clone {
+    (1i64..=10, 1i64..=10).prop_map(|(p, q)| ratio(p, q))
+}
+
 /// A patch like [`bidegree`] with weights in `[1/10, 10]`, for the f64 path.
 fn moderate_bidegree() -> impl Strategy<Value = RectPatch<Q>> {
-    use proptest::collection::vec;
-    let weight = || (1i64..=10, 1i64..=10).prop_map(|(p, q)| ratio::<Q>(p, q));
-    (1usize..=3, 1usize..=2).prop_flat_map(move |(m, n)| {
-        (
-            vec(vec(point(3), n + 1), m + 1),
-            vec(vec(weight(), n + 1), m + 1),
-        )
-            .prop_map(|(p, w)| RectPatch::new(p, w).expect("shapes match"))
-    })
+    (1usize..=3, 1usize..=2).prop_flat_map(|(m, n)| rect_weighted(m, n, 3, moderate_weight()))
 }
 
 fn value(p: &MobiusParam<Q>) -> Q {
