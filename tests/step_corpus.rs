@@ -121,7 +121,7 @@ fn analytic_models_are_converted_whole_and_edges_meet_their_vertices() {
             assert!(
                 matches!(
                     f.surface.geometry,
-                    Geometry::Analytic(_) | Geometry::Pieces(_)
+                    Geometry::Analytic(_) | Geometry::BSpline(_)
                 ),
                 "{name}: face #{} {:?}",
                 f.id,
@@ -139,7 +139,7 @@ fn analytic_models_are_converted_whole_and_edges_meet_their_vertices() {
                         assert_eq!(end, first_point(&w[1]), "{name}: edge #{}", e.id);
                     }
                 }
-                Geometry::Pieces(_) => {}
+                Geometry::BSpline(_) => {}
                 g => panic!("{name}: edge #{} {g:?}", e.id),
             }
         }

@@ -209,7 +209,7 @@ fn plot_brep(m: &BrepModel, report: &BrepAudit, out: &str) -> Result<(), Error> 
     let lift = |p: &Patch<BigRational>| p.map(RealAlgebraic::from_rational);
     let pieces = |g: &Geometry| -> Vec<Patch<RealAlgebraic>> {
         match g {
-            Geometry::Pieces(p) => p.iter().map(|s| lift(&s.patch)).collect(),
+            Geometry::BSpline(b) => b.pieces().iter().map(|s| lift(&s.patch)).collect(),
             Geometry::Analytic(a) => a.pieces.clone(),
             Geometry::NotConverted | Geometry::Invalid(_) => Vec::new(),
         }

@@ -254,7 +254,7 @@ fn zero_length(g: &Geometry) -> bool {
         }) && first.is_some()
     }
     match g {
-        Geometry::Pieces(p) => one_point(p.iter().map(|s| &s.patch)),
+        Geometry::BSpline(b) => one_point(b.pieces().iter().map(|s| &s.patch)),
         Geometry::Analytic(a) => one_point(a.pieces.iter()),
         Geometry::NotConverted | Geometry::Invalid(_) => false,
     }
@@ -290,8 +290,9 @@ fn edge_pieces(e: &Edge) -> Result<Vec<RationalCurve<RealAlgebraic>>, String> {
             Err(format!("{} edge converted approximately", e.curve.kind))
         }
         Geometry::Analytic(a) => curves(a.pieces.clone()),
-        Geometry::Pieces(ps) => curves(
-            ps.iter()
+        Geometry::BSpline(b) => curves(
+            b.pieces()
+                .iter()
                 .map(|p| p.patch.map(RealAlgebraic::from_rational))
                 .collect(),
         ),
@@ -325,7 +326,7 @@ fn joint_face(f: &Face) -> Result<JointFace<'_>, String> {
                 f.surface.kind
             )),
         },
-        Geometry::Pieces(_) => Err(format!(
+        Geometry::BSpline(_) => Err(format!(
             "{} face (certified foot points on B-spline faces not wired in)",
             f.surface.kind
         )),
@@ -470,7 +471,7 @@ fn audit_with(m: &BrepModel, asked: &ToleranceRequest, measured: bool) -> BrepAu
         .collect::<Vec<_>>()
         .par_iter()
         .filter_map(|f| match &f.surface.geometry {
-            Geometry::Pieces(pieces) => Some((f.id, knot_lines(pieces))),
+            Geometry::BSpline(b) => Some((f.id, knot_lines(b.pieces()))),
             _ => None,
         })
         .filter(|(_, lines)| !lines.is_empty())

@@ -11,7 +11,7 @@ use crate::audit::Origin;
 use crate::error::Error;
 use crate::patch::Patch;
 use crate::step::brep::{
-    AngleUnit, Bound, Edge, EdgeUse, Face, Geometry, GeometryRef, Loop, Shell,
+    AngleUnit, BSpline, Bound, Edge, EdgeUse, Face, Geometry, GeometryRef, Loop, Shell,
 };
 use crate::step::BrepModel;
 use serde_json::{json, Map, Value};
@@ -37,9 +37,10 @@ fn geometry_json(g: &GeometryRef, faces: &[u64], write: PieceWriter) -> Result<V
     o.insert("entity".into(), id(g.entity));
     o.insert("type".into(), json!(g.kind));
     match &g.geometry {
-        Geometry::Pieces(pieces) => {
+        Geometry::BSpline(b) => {
             o.insert("status".into(), json!("converted"));
-            let written = pieces
+            let written = b
+                .pieces()
                 .iter()
                 .map(|p| {
                     let origin = Origin {
@@ -192,7 +193,7 @@ fn message(m: &BrepModel) -> Option<String> {
         .filter(|f| {
             matches!(
                 f.surface.geometry,
-                Geometry::Pieces(_) | Geometry::Analytic(_)
+                Geometry::BSpline(_) | Geometry::Analytic(_)
             )
         })
         .count();
@@ -267,7 +268,7 @@ pub fn brep_model_json(m: &BrepModel, write: PieceWriter) -> Result<Value, Error
         let g = GeometryRef {
             entity: e.id,
             kind: e.name.clone(),
-            geometry: Geometry::Pieces(e.nurbs.pieces()),
+            geometry: Geometry::BSpline(BSpline::new(e.nurbs.clone())),
         };
         unattached.push(geometry_json(&g, &e.faces, write)?);
     }
@@ -298,6 +299,7 @@ pub fn brep_model_json(m: &BrepModel, write: PieceWriter) -> Result<Value, Error
 }
 
 fn parts(m: &BrepModel, write: PieceWriter) -> Result<[Vec<Value>; 3], Error> {
+    m.convert_pieces();
     let faces = m
         .faces
         .values()

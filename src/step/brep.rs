@@ -18,8 +18,9 @@
 //! ```
 //!
 //! Geometry is produced by [`surface_geometry`] and [`curve_geometry`], one
-//! `match` on the entity type each: B-spline entities become exact Bézier
-//! pieces ([`super::read_step`]'s conversion); every other type is kept as
+//! `match` on the entity type each: B-spline entities are kept as read,
+//! their exact Bézier pieces ([`super::read_step`]'s conversion) computed
+//! at their first use ([`BSpline`]); every other type is kept as
 //! [`Geometry::NotConverted`] with its name, counted in the summary, never
 //! dropped. Anything of the topology that cannot be read (a dangling
 //! reference, a wrong type) is listed in [`Summary::invalid`] with its id.
@@ -34,15 +35,15 @@ use crate::patch::Patch;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use rayon::prelude::*;
-use std::cell::RefCell;
 use std::collections::{BTreeMap, HashMap};
 use std::io::BufRead;
+use std::sync::OnceLock;
 
 /// The exact geometry of a face's surface or an edge's curve.
 #[derive(Clone, Debug)]
 pub enum Geometry {
-    /// Exact rational Bézier pieces with their parameter spans.
-    Pieces(Vec<SpannedPatch>),
+    /// A B-spline entity, with its exact rational Bézier pieces.
+    BSpline(BSpline),
     /// Exact pieces of an analytic curve or surface, over the real
     /// algebraic numbers (see [`AnalyticPieces`]).
     Analytic(AnalyticPieces),
@@ -50,6 +51,61 @@ pub enum Geometry {
     NotConverted,
     /// The entity could not be read: why.
     Invalid(String),
+}
+
+/// A B-spline curve or surface as read, and its exact rational Bézier
+/// pieces with their knot spans ([`Nurbs::pieces`]), converted at the
+/// first call of [`BSpline::pieces`] and kept. A reader that needs only
+/// the B-spline's own data (the audit's knot lines and enclosures) never
+/// pays for the conversion, the costliest step of most models.
+///
+/// ```
+/// use exact_bezier::nurbs::{Knots, Nurbs, NurbsCurve};
+/// use exact_bezier::hpoint::HPoint;
+/// use exact_bezier::step::brep::BSpline;
+/// use exact_bezier::{ratio, BigRational};
+/// let q = |n: i64| ratio::<BigRational>(n, 1);
+/// let knots = Knots::from_multiplicities(1, &[q(0), q(1), q(2)], &[2, 1, 2], 3).unwrap();
+/// let points = [0, 1, 0].map(|y| HPoint::from_cartesian(&[q(y), q(0)]));
+/// let b = BSpline::new(Nurbs::Curve(NurbsCurve::new(knots, points.to_vec()).unwrap()));
+/// assert_eq!(b.pieces().len(), 2);
+/// assert_eq!(b.pieces()[1].u, [q(1), q(2)]);
+/// ```
+#[derive(Debug)]
+pub struct BSpline {
+    nurbs: Nurbs,
+    pieces: OnceLock<Vec<SpannedPatch>>,
+}
+
+impl BSpline {
+    /// The entity `nurbs`, not converted yet.
+    pub fn new(nurbs: Nurbs) -> BSpline {
+        BSpline {
+            nurbs,
+            pieces: OnceLock::new(),
+        }
+    }
+
+    /// The B-spline as read.
+    pub fn nurbs(&self) -> &Nurbs {
+        &self.nurbs
+    }
+
+    /// Its exact Bézier pieces with their knot spans, converted on the
+    /// first call.
+    pub fn pieces(&self) -> &[SpannedPatch] {
+        self.pieces.get_or_init(|| self.nurbs.pieces())
+    }
+}
+
+impl Clone for BSpline {
+    /// A copy, with the pieces if they are converted already.
+    fn clone(&self) -> BSpline {
+        BSpline {
+            nurbs: self.nurbs.clone(),
+            pieces: self.pieces.clone(),
+        }
+    }
 }
 
 /// The exact pieces of an analytic face surface or edge curve
@@ -310,6 +366,25 @@ pub struct BrepModel {
     pub geometry: StepModel,
 }
 
+impl BrepModel {
+    /// Convert every face's and edge's B-spline to its Bézier pieces now,
+    /// on all cores ([`BSpline::pieces`] then returns them at once): for
+    /// writers that need them all.
+    pub fn convert_pieces(&self) {
+        let geometries: Vec<&Geometry> = self
+            .faces
+            .values()
+            .map(|f| &f.surface.geometry)
+            .chain(self.edges.values().map(|e| &e.curve.geometry))
+            .collect();
+        geometries.par_iter().for_each(|g| {
+            if let Geometry::BSpline(b) = g {
+                b.pieces();
+            }
+        });
+    }
+}
+
 /// The instances of a file by id.
 type Store = HashMap<u64, Instance>;
 
@@ -372,34 +447,16 @@ fn one_of<'a>(store: &'a Store, id: u64, names: &[&str]) -> Result<&'a Record, S
         })
 }
 
-/// Exact B-spline geometry of the file, and the entities found invalid.
+/// The B-spline geometry of the file, and the entities found invalid.
 struct Converted<'a> {
     nurbs: HashMap<u64, &'a Nurbs>,
-    /// The Bézier pieces of every B-spline surface and 3D curve, converted
-    /// up front, on all cores (the costliest step of reading most models;
-    /// 2D curves, the p-curves, are converted when used). Each is moved out
-    /// at its first use, not copied: an entity used again is converted
-    /// again.
-    converted: RefCell<HashMap<u64, Vec<SpannedPatch>>>,
     invalid: HashMap<u64, &'a str>,
 }
 
 impl<'a> Converted<'a> {
     fn new(geometry: &'a StepModel) -> Converted<'a> {
-        let nurbs: HashMap<u64, &Nurbs> =
-            geometry.entities.iter().map(|e| (e.id, &e.nurbs)).collect();
-        let converted: HashMap<u64, Vec<SpannedPatch>> = geometry
-            .entities
-            .par_iter()
-            .filter(|e| match &e.nurbs {
-                Nurbs::Surface(_) => true,
-                Nurbs::Curve(c) => c.control_points().first().is_some_and(|p| p.dim() == 3),
-            })
-            .map(|e| (e.id, e.nurbs.pieces()))
-            .collect();
         Converted {
-            nurbs,
-            converted: RefCell::new(converted),
+            nurbs: geometry.entities.iter().map(|e| (e.id, &e.nurbs)).collect(),
             invalid: geometry
                 .invalid
                 .iter()
@@ -409,19 +466,16 @@ impl<'a> Converted<'a> {
     }
 
     fn bspline(&self, id: u64) -> Geometry {
-        if let Some(pieces) = self.converted.borrow_mut().remove(&id) {
-            return Geometry::Pieces(pieces);
-        }
         match (self.nurbs.get(&id), self.invalid.get(&id)) {
-            (Some(n), _) => Geometry::Pieces(n.pieces()),
+            (Some(n), _) => Geometry::BSpline(BSpline::new((*n).clone())),
             (None, Some(why)) => Geometry::Invalid((*why).to_owned()),
             (None, None) => Geometry::Invalid(format!("#{id} was not read")),
         }
     }
 }
 
-/// The exact geometry of surface `id` of type `kind`: B-spline surfaces as
-/// their Bézier pieces; every other type not converted (yet).
+/// The exact geometry of surface `id` of type `kind`: B-spline surfaces
+/// ([`BSpline`]); every other type not converted (yet).
 fn surface_geometry(kind: &str, id: u64, conv: &Converted) -> Geometry {
     match kind {
         "B_SPLINE_SURFACE_WITH_KNOTS"
@@ -433,7 +487,7 @@ fn surface_geometry(kind: &str, id: u64, conv: &Converted) -> Geometry {
 }
 
 /// The exact geometry of curve `id` of type `kind` (3D or 2D): B-spline
-/// curves as their Bézier pieces; every other type not converted (yet).
+/// curves ([`BSpline`]); every other type not converted (yet).
 fn curve_geometry(kind: &str, id: u64, conv: &Converted) -> Geometry {
     match kind {
         "B_SPLINE_CURVE_WITH_KNOTS" | "BEZIER_CURVE" | "UNIFORM_CURVE" | "QUASI_UNIFORM_CURVE" => {

@@ -194,8 +194,9 @@ impl Builder<'_> {
                         };
                         match &edge.curve.geometry {
                             Geometry::Analytic(a) => points.extend(control_points(&a.pieces)),
-                            Geometry::Pieces(ps) => points.extend(control_points(
-                                &ps.iter()
+                            Geometry::BSpline(b) => points.extend(control_points(
+                                &b.pieces()
+                                    .iter()
                                     .map(|p| p.patch.map(RealAlgebraic::from_rational))
                                     .collect::<Vec<_>>(),
                             )),

@@ -286,9 +286,10 @@ fn complex_parts_in_any_order_and_a_bspline_edge() {
     assert!(m.summary.invalid.is_empty(), "{:?}", m.summary.invalid);
     let e = &m.edges[&21];
     assert_eq!(e.curve.kind, "QUASI_UNIFORM_CURVE");
-    let Geometry::Pieces(p) = &e.curve.geometry else {
+    let Geometry::BSpline(b) = &e.curve.geometry else {
         panic!("{:?}", e.curve.geometry)
     };
+    let p = b.pieces();
     assert_eq!(p.len(), 1);
     let Patch::Curve(c) = &p[0].patch else {
         panic!("a curve")
@@ -390,9 +391,10 @@ fn reader_counts(m: &BrepModel) -> (BTreeMap<String, usize>, BTreeMap<String, us
 /// (start when `at_start`), exactly: a Bézier piece's ends are its end
 /// control points.
 fn end_gap(m: &BrepModel, e: &Edge) -> Option<Q> {
-    let Geometry::Pieces(p) = &e.curve.geometry else {
+    let Geometry::BSpline(b) = &e.curve.geometry else {
         return None;
     };
+    let p = b.pieces();
     let end = |k: usize, t: Q| match &p[k].patch {
         Patch::Curve(c) => c.eval(&t).unwrap(),
         _ => unreachable!("a curve's pieces are curves"),
@@ -481,7 +483,7 @@ fn nist_ctc_02_faces_edges_shells_and_vertices() {
     let converted = m
         .faces
         .values()
-        .filter(|f| matches!(f.surface.geometry, Geometry::Pieces(_)))
+        .filter(|f| matches!(f.surface.geometry, Geometry::BSpline(_)))
         .count();
     assert_eq!(converted, 28);
     let c = m.contexts.values().next().unwrap();
