@@ -1,15 +1,13 @@
-//! Knot lines of B-spline faces: the continuity of a face's own surface
-//! across each interior knot, which is not a seam between faces (issue 28,
-//! "knot lines are not seams").
+//! Knot lines from Bézier pieces: the continuity across each interior knot
+//! read off the exact rational Bézier pieces of a surface
+//! ([`crate::nurbs::SpannedPatch`]). It serves inputs that are already
+//! pieces and is the independent check of the knot-removal method of the
+//! parent module, which needs no conversion to pieces.
 //!
-//! A B-spline surface of degree `p` in u is `C^{p−μ}` across a u-knot of
-//! multiplicity μ; its control net may make it smoother (a removable
-//! knot). The order is decided exactly on the Bézier pieces
-//! ([`crate::nurbs::SpannedPatch`]): pieces `L` on `[a, k]` and `R` on
-//! `[k, b]` (the same v span, the same degree `n` in u) join `C^r` when,
-//! for every `i ≤ r`, their i-th u-derivatives agree along the whole knot
-//! line. In Bernstein form those derivatives are, up to the common factor
-//! `n!/(n−i)!`,
+//! Pieces `L` on `[a, k]` and `R` on `[k, b]` (the same v span, the same
+//! degree `n` in u) join `C^r` when, for every `i ≤ r`, their i-th
+//! u-derivatives agree along the whole knot line. In Bernstein form those
+//! derivatives are, up to the common factor `n!/(n−i)!`,
 //!
 //! ```text
 //! ∂ᵢL(k, v) ∝ Δⁱ L_{n−i}(v) / (k − a)ⁱ,   ∂ᵢR(k, v) ∝ Δⁱ R₀(v) / (b − k)ⁱ,
@@ -18,12 +16,11 @@
 //!
 //! (rows of homogeneous control points `ω·(P, 1)`, compared coefficient by
 //! coefficient in the v direction's Bernstein basis), so the test is
-//! rational arithmetic on the control net: no evaluation, no tolerance. The
-//! continuity is that of the homogeneous surface in the file's own
-//! parameters, the one knot multiplicities control; its projection to
-//! space is at least as smooth. Reference: Piegl & Tiller, *The NURBS
-//! Book* (1997), §2.5 (continuity at a knot) and §5.4 (knot removal).
+//! rational arithmetic on the control net: no evaluation, no tolerance.
+//! Reference: Piegl & Tiller, *The NURBS Book* (1997), §2.5 (continuity at
+//! a knot).
 
+use super::{Direction, KnotLine};
 use crate::algebra::scalar::{binomial_scalar, pow};
 use crate::hpoint::HPoint;
 use crate::nurbs::SpannedPatch;
@@ -33,42 +30,6 @@ use num_rational::BigRational;
 use num_traits::One;
 
 type Q = BigRational;
-
-/// The parameter direction a knot line runs across.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Direction {
-    /// A u-knot: the line `u = k`.
-    U,
-    /// A v-knot: the line `v = k`.
-    V,
-}
-
-impl Direction {
-    /// `"u"` or `"v"`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Direction::U => "u",
-            Direction::V => "v",
-        }
-    }
-}
-
-/// The continuity of a face's surface across one interior knot.
-#[derive(Clone, Debug, PartialEq)]
-pub struct KnotLine {
-    /// Across which parameter.
-    pub direction: Direction,
-    /// The knot value, in the file's parameters.
-    pub knot: Q,
-    /// The degree in that direction.
-    pub degree: usize,
-    /// `Some(r)`: the pieces join `C^r` and no smoother (`r < degree`);
-    /// `None`: every derivative agrees, the pieces are one polynomial and
-    /// the knot could be removed. `Some(0)` is a line where the surface
-    /// only meets itself; pieces that do not meet at all are not listed
-    /// (a broken net is reported by the reader, not here).
-    pub continuity: Option<usize>,
-}
 
 /// The interior knot lines of a B-spline surface's Bézier pieces, u-knots
 /// first, each in increasing order; the least order over the line's v (or
@@ -194,7 +155,7 @@ fn order_across(left: &Spanned, right: &Spanned) -> Option<Option<usize>> {
             l == r
         });
         if !agree {
-            return (i > 0).then_some(Some(i - 1));
+            return (i > 0).then(|| Some(i - 1));
         }
         order = Some(i);
     }
