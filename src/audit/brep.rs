@@ -27,10 +27,11 @@ use super::certify::Verdict;
 use super::joint::{
     measure_joint, JointFace, JointMeasures, JointSurface, JointTolerances, EDGE_WORK,
 };
-use super::knots::{knot_lines, KnotLine};
+use super::knots::{surface_knot_lines, KnotLine};
 use crate::algebra::{Interval, Ordered, RealAlgebraic, Scalar};
 use crate::curve::RationalCurve;
 use crate::limits::{self, Limits};
+use crate::nurbs::Nurbs;
 use crate::patch::Patch;
 use crate::step::brep::{Edge, EdgeUse, Face, Geometry};
 use crate::step::BrepModel;
@@ -471,7 +472,10 @@ fn audit_with(m: &BrepModel, asked: &ToleranceRequest, measured: bool) -> BrepAu
         .collect::<Vec<_>>()
         .par_iter()
         .filter_map(|f| match &f.surface.geometry {
-            Geometry::BSpline(b) => Some((f.id, knot_lines(b.pieces()))),
+            Geometry::BSpline(b) => match b.nurbs() {
+                Nurbs::Surface(s) => Some((f.id, surface_knot_lines(s))),
+                Nurbs::Curve(_) => None,
+            },
             _ => None,
         })
         .filter(|(_, lines)| !lines.is_empty())

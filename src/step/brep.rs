@@ -37,7 +37,7 @@ use num_traits::{One, Zero};
 use rayon::prelude::*;
 use std::collections::{BTreeMap, HashMap};
 use std::io::BufRead;
-use std::sync::OnceLock;
+use std::sync::{Mutex, OnceLock};
 
 /// The exact geometry of a face's surface or an edge's curve.
 #[derive(Clone, Debug)]
@@ -450,13 +450,33 @@ fn one_of<'a>(store: &'a Store, id: u64, names: &[&str]) -> Result<&'a Record, S
 /// The B-spline geometry of the file, and the entities found invalid.
 struct Converted<'a> {
     nurbs: HashMap<u64, &'a Nurbs>,
+    /// Every 3D B-spline curve with its Bézier pieces, converted up front
+    /// on all cores (nearly all are edge curves, whose pieces the reader
+    /// and the audit need); each is moved out at its first use, an entity
+    /// used again is a fresh [`BSpline`]. Surfaces are converted only when
+    /// their pieces are asked for.
+    curves: Mutex<HashMap<u64, BSpline>>,
     invalid: HashMap<u64, &'a str>,
 }
 
 impl<'a> Converted<'a> {
     fn new(geometry: &'a StepModel) -> Converted<'a> {
+        let curves = geometry
+            .entities
+            .par_iter()
+            .filter(|e| match &e.nurbs {
+                Nurbs::Surface(_) => false,
+                Nurbs::Curve(c) => c.control_points().first().is_some_and(|p| p.dim() == 3),
+            })
+            .map(|e| {
+                let b = BSpline::new(e.nurbs.clone());
+                b.pieces();
+                (e.id, b)
+            })
+            .collect();
         Converted {
             nurbs: geometry.entities.iter().map(|e| (e.id, &e.nurbs)).collect(),
+            curves: Mutex::new(curves),
             invalid: geometry
                 .invalid
                 .iter()
@@ -466,6 +486,10 @@ impl<'a> Converted<'a> {
     }
 
     fn bspline(&self, id: u64) -> Geometry {
+        let taken = self.curves.lock().map(|mut c| c.remove(&id));
+        if let Ok(Some(b)) = taken {
+            return Geometry::BSpline(b);
+        }
         match (self.nurbs.get(&id), self.invalid.get(&id)) {
             (Some(n), _) => Geometry::BSpline(BSpline::new((*n).clone())),
             (None, Some(why)) => Geometry::Invalid((*why).to_owned()),
@@ -497,6 +521,17 @@ fn curve_geometry(kind: &str, id: u64, conv: &Converted) -> Geometry {
     }
 }
 
+/// An edge whose curve is still to be read ([`Builder::read_geometry`]).
+struct PendingEdge {
+    edge: u64,
+    curve: u64,
+    /// Its start and end vertices.
+    ends: (u64, u64),
+    same_sense: bool,
+    /// The units of its body.
+    units: analytic::Units,
+}
+
 /// Reads the topology out of the store.
 struct Builder<'a> {
     store: &'a Store,
@@ -506,6 +541,11 @@ struct Builder<'a> {
     analytic: bool,
     /// The units of the body being read ([`analytic::Units`]).
     units: analytic::Units,
+    /// Edges whose curve is read after the topology, on all cores.
+    pending_edges: Vec<PendingEdge>,
+    /// Faces whose surface is read after their edges' curves: the face,
+    /// its surface, the units of its body.
+    pending_faces: Vec<(u64, u64, analytic::Units)>,
 }
 
 impl Builder<'_> {
@@ -520,6 +560,47 @@ impl Builder<'_> {
             entity: id,
             kind,
             geometry,
+        }
+    }
+
+    /// Entity `id` with its geometry still to be read
+    /// ([`Builder::read_geometry`]).
+    fn placeholder(&self, id: u64) -> GeometryRef {
+        GeometryRef {
+            entity: id,
+            kind: type_name(self.store, id),
+            geometry: Geometry::NotConverted,
+        }
+    }
+
+    /// Read the curves of the edges, then the surfaces of the faces (whose
+    /// analytic pieces cover their edges' curves), each on all cores.
+    fn read_geometry(&mut self) {
+        let edges = std::mem::take(&mut self.pending_edges);
+        let curves: Vec<(u64, GeometryRef)> = edges
+            .par_iter()
+            .map(|p| {
+                let curve = self.edge_curve(&p.units, p.curve, p.ends, p.same_sense);
+                (p.edge, curve)
+            })
+            .collect();
+        for (edge, curve) in curves {
+            if let Some(e) = self.model.edges.get_mut(&edge) {
+                e.curve = curve;
+            }
+        }
+        let faces = std::mem::take(&mut self.pending_faces);
+        let surfaces: Vec<(u64, GeometryRef)> = faces
+            .par_iter()
+            .filter_map(|(face, surface, units)| {
+                let bounds = &self.model.faces.get(face)?.bounds;
+                Some((*face, self.face_surface(units, *surface, bounds)))
+            })
+            .collect();
+        for (face, surface) in surfaces {
+            if let Some(f) = self.model.faces.get_mut(&face) {
+                f.surface = surface;
+            }
         }
     }
 
@@ -579,7 +660,14 @@ impl Builder<'_> {
             }
             curve = reference(sc.params.get(1), "curve_3d")?;
         }
-        let curve = self.edge_curve(curve, (start, end), same_sense);
+        self.pending_edges.push(PendingEdge {
+            edge: id,
+            curve,
+            ends: (start, end),
+            same_sense,
+            units: self.units.clone(),
+        });
+        let curve = self.placeholder(curve);
         self.model.edges.insert(
             id,
             Edge {
@@ -644,7 +732,9 @@ impl Builder<'_> {
                 edges: self.edge_loop(loop_id, id)?,
             });
         }
-        let surface = self.face_surface(surface_id, &bounds);
+        self.pending_faces
+            .push((id, surface_id, self.units.clone()));
+        let surface = self.placeholder(surface_id);
         self.model.faces.insert(
             id,
             Face {
@@ -981,6 +1071,8 @@ pub fn read_brep_with(input: impl BufRead, options: BrepOptions) -> Result<BrepM
         model: BrepModel::default(),
         analytic: options.analytic,
         units: analytic::Units::of(None),
+        pending_edges: Vec::new(),
+        pending_faces: Vec::new(),
     };
     b.bodies(&order);
     let mut summary_extra = BTreeMap::new();
@@ -1013,6 +1105,7 @@ pub fn read_brep_with(input: impl BufRead, options: BrepOptions) -> Result<BrepM
             }
         }
     }
+    b.read_geometry();
     let mut model = b.model;
     model.summary.not_applied = summary_extra;
     model.geometry = geometry;

@@ -91,8 +91,12 @@ fn control_points(pieces: &[Patch<RealAlgebraic>]) -> Vec<Vec<RealAlgebraic>> {
 }
 
 impl Builder<'_> {
-    /// The geometry readers over this file, in the current body's units.
-    fn with_readers<R>(&self, f: impl FnOnce(&Readers<'_, RealAlgebraic>) -> R) -> R {
+    /// The geometry readers over this file, in `units`.
+    fn with_readers<R>(
+        &self,
+        units: &Units,
+        f: impl FnOnce(&Readers<'_, RealAlgebraic>) -> R,
+    ) -> R {
         let bspline = |id: u64| -> Result<Vec<RationalCurve<RealAlgebraic>>, Error> {
             match self.conv.nurbs.get(&id) {
                 Some(n) => Ok(bspline_pieces(n)),
@@ -101,7 +105,7 @@ impl Builder<'_> {
         };
         f(&Readers {
             table: self.store,
-            angle_unit: self.units.angle.clone(),
+            angle_unit: units.angle.clone(),
             bspline_curve: Some(&bspline),
         })
     }
@@ -109,6 +113,7 @@ impl Builder<'_> {
     /// The curve of an edge, trimmed from its start to its end vertex.
     pub(super) fn edge_curve(
         &self,
+        units: &Units,
         id: u64,
         (start, end): (u64, u64),
         same_sense: bool,
@@ -118,7 +123,7 @@ impl Builder<'_> {
             Geometry::NotConverted if self.analytic => {
                 let a = lift(&self.model.vertices[&start]);
                 let b = lift(&self.model.vertices[&end]);
-                self.trimmed_curve(id, &a, &b, same_sense)
+                self.trimmed_curve(units, id, &a, &b, same_sense)
                     .unwrap_or_else(|e| Geometry::Invalid(e.to_string()))
             }
             g => g,
@@ -132,17 +137,18 @@ impl Builder<'_> {
 
     fn trimmed_curve(
         &self,
+        units: &Units,
         id: u64,
         start: &[RealAlgebraic],
         end: &[RealAlgebraic],
         same_sense: bool,
     ) -> Result<Geometry, Error> {
         let cover = [start.to_vec(), end.to_vec()];
-        let curve = self.with_readers(|r| curve_pieces(r, id, &cover))?;
+        let curve = self.with_readers(units, |r| curve_pieces(r, id, &cover))?;
         let Curve::Pieces(c) = curve else {
             return Ok(Geometry::NotConverted);
         };
-        let t = trim_between(&c.pieces, start, end, same_sense, self.units.snap)?;
+        let t = trim_between(&c.pieces, start, end, same_sense, units.snap)?;
         Ok(Geometry::Analytic(AnalyticPieces {
             pieces: t.pieces.into_iter().map(Patch::Curve).collect(),
             approximate: c.approximate,
@@ -152,12 +158,12 @@ impl Builder<'_> {
     }
 
     /// The surface of a face, covering its bounds.
-    pub(super) fn face_surface(&self, id: u64, bounds: &[Bound]) -> GeometryRef {
+    pub(super) fn face_surface(&self, units: &Units, id: u64, bounds: &[Bound]) -> GeometryRef {
         let kind = type_name(self.store, id);
         let geometry = match surface_geometry(&kind, id, &self.conv) {
             Geometry::NotConverted if self.analytic => {
                 let (boundary, unconverted) = self.boundary_points(bounds);
-                match self.with_readers(|r| surface_pieces(r, id, &boundary)) {
+                match self.with_readers(units, |r| surface_pieces(r, id, &boundary)) {
                     Ok(Surface::Pieces(s)) => Geometry::Analytic(AnalyticPieces {
                         pieces: s.patches.into_iter().map(Patch::Rect).collect(),
                         approximate: s.approximate.or(unconverted.map(|e| {
