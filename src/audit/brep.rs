@@ -242,6 +242,23 @@ pub struct BrepAudit {
     pub invalid: usize,
 }
 
+/// Does a B-spline curve visibly run between two points: clamped ends
+/// (its first and last control points are its ends) that are not the
+/// same projective point? (No conversion to pieces needed.)
+fn distinct_ends(n: &Nurbs) -> bool {
+    let Nurbs::Curve(c) = n else {
+        return false;
+    };
+    let (k, p) = (c.knots().knots(), c.knots().degree());
+    let clamped = k.len() > 2 * p + 1
+        && k[..=p].iter().all(|x| *x == k[0])
+        && k[k.len() - 1 - p..].iter().all(|x| *x == k[k.len() - 1]);
+    match (c.control_points().first(), c.control_points().last()) {
+        (Some(a), Some(b)) if clamped => !a.same_projective_point(b, Tolerance::EXACT),
+        _ => false,
+    }
+}
+
 /// Do all pieces of `g` collapse to one point?
 fn zero_length(g: &Geometry) -> bool {
     fn one_point<'a, T: Ordered>(mut pieces: impl Iterator<Item = &'a Patch<T>>) -> bool {
@@ -255,6 +272,7 @@ fn zero_length(g: &Geometry) -> bool {
         }) && first.is_some()
     }
     match g {
+        Geometry::BSpline(b) if distinct_ends(b.nurbs()) => false,
         Geometry::BSpline(b) => one_point(b.pieces().iter().map(|s| &s.patch)),
         Geometry::Analytic(a) => one_point(a.pieces.iter()),
         Geometry::NotConverted | Geometry::Invalid(_) => false,

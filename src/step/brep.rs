@@ -37,7 +37,7 @@ use num_traits::{One, Zero};
 use rayon::prelude::*;
 use std::collections::{BTreeMap, HashMap};
 use std::io::BufRead;
-use std::sync::{Mutex, OnceLock};
+use std::sync::OnceLock;
 
 /// The exact geometry of a face's surface or an edge's curve.
 #[derive(Clone, Debug)]
@@ -450,33 +450,13 @@ fn one_of<'a>(store: &'a Store, id: u64, names: &[&str]) -> Result<&'a Record, S
 /// The B-spline geometry of the file, and the entities found invalid.
 struct Converted<'a> {
     nurbs: HashMap<u64, &'a Nurbs>,
-    /// Every 3D B-spline curve with its Bézier pieces, converted up front
-    /// on all cores (nearly all are edge curves, whose pieces the reader
-    /// and the audit need); each is moved out at its first use, an entity
-    /// used again is a fresh [`BSpline`]. Surfaces are converted only when
-    /// their pieces are asked for.
-    curves: Mutex<HashMap<u64, BSpline>>,
     invalid: HashMap<u64, &'a str>,
 }
 
 impl<'a> Converted<'a> {
     fn new(geometry: &'a StepModel) -> Converted<'a> {
-        let curves = geometry
-            .entities
-            .par_iter()
-            .filter(|e| match &e.nurbs {
-                Nurbs::Surface(_) => false,
-                Nurbs::Curve(c) => c.control_points().first().is_some_and(|p| p.dim() == 3),
-            })
-            .map(|e| {
-                let b = BSpline::new(e.nurbs.clone());
-                b.pieces();
-                (e.id, b)
-            })
-            .collect();
         Converted {
             nurbs: geometry.entities.iter().map(|e| (e.id, &e.nurbs)).collect(),
-            curves: Mutex::new(curves),
             invalid: geometry
                 .invalid
                 .iter()
@@ -485,11 +465,10 @@ impl<'a> Converted<'a> {
         }
     }
 
+    /// Entity `id` as a [`BSpline`], its pieces converted when first
+    /// asked for (on whichever core asks: the reader reads faces and
+    /// edges on all cores).
     fn bspline(&self, id: u64) -> Geometry {
-        let taken = self.curves.lock().map(|mut c| c.remove(&id));
-        if let Ok(Some(b)) = taken {
-            return Geometry::BSpline(b);
-        }
         match (self.nurbs.get(&id), self.invalid.get(&id)) {
             (Some(n), _) => Geometry::BSpline(BSpline::new((*n).clone())),
             (None, Some(why)) => Geometry::Invalid((*why).to_owned()),
