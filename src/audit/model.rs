@@ -7,6 +7,7 @@ use crate::nurbs::Nurbs;
 use crate::patch::Patch;
 use crate::step::StepModel;
 use num_rational::BigRational;
+use rayon::prelude::*;
 use std::collections::BTreeMap;
 
 /// Where a piece came from.
@@ -89,12 +90,13 @@ pub fn nurbs_pieces(n: &Nurbs, base: Origin) -> impl Iterator<Item = Piece> + '_
 
 impl Model {
     /// The model of a STEP file: the Bézier pieces of every B-spline surface
-    /// entity, with the entity and its faces as origin.
+    /// entity, with the entity and its faces as origin (converted on all
+    /// cores, in the file's order).
     pub fn from_step(step: StepModel) -> Model {
         let pieces = step
             .entities
-            .iter()
-            .flat_map(|e| {
+            .par_iter()
+            .map(|e| {
                 let base = Origin {
                     entity: Some(e.id),
                     faces: e.faces.clone(),
@@ -102,6 +104,9 @@ impl Model {
                 };
                 nurbs_pieces(&e.nurbs, base).collect::<Vec<_>>()
             })
+            .collect::<Vec<_>>()
+            .into_iter()
+            .flatten()
             .collect();
         Model {
             pieces,
