@@ -46,6 +46,9 @@ use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::limits::{self, Limits};
 use num_traits::Zero;
+use std::cell::RefCell;
+use std::collections::HashMap;
+use std::rc::Rc;
 
 type Curve = RationalCurve<RealAlgebraic>;
 
@@ -386,9 +389,41 @@ fn face_gap(gap: &[Measure; 2]) -> Measure {
 }
 
 /// The maximum of one measure over all pieces, with its piece.
+/// What the pieces `T` of an edge's curves prove, kept for the edge's
+/// other measures: gap, angle and curvature bisect the same dyadic pieces
+/// (the work charged per piece is the same either way, so the caps, and
+/// the results, are as without it).
+#[derive(Default)]
+struct Proved {
+    boxes: RefCell<HashMap<PieceKey, Option<Rc<Around>>>>,
+}
+
+/// A curve's index and the bits of `T`'s ends.
+type PieceKey = (usize, u64, u64);
+
+impl Proved {
+    /// [`around`] piece `t` of curve `k`, once.
+    fn around(
+        &self,
+        k: usize,
+        curve: &ICurve,
+        fields: Fields<'_>,
+        t: Interval,
+    ) -> Result<Option<Rc<Around>>, Error> {
+        let key = (k, t.lo.to_bits(), t.hi.to_bits());
+        if let Some(a) = self.boxes.borrow().get(&key) {
+            return Ok(a.clone());
+        }
+        let a = around(curve, fields, t)?.map(Rc::new);
+        self.boxes.borrow_mut().insert(key, a.clone());
+        Ok(a)
+    }
+}
+
 fn along(
     curves: &[ICurve],
     fields: Fields<'_>,
+    proved: &Proved,
     (target, enough): (Target, f64),
     f: impl Fn(&Around) -> Option<Bound> + Copy,
 ) -> Result<Measure, Error> {
@@ -400,7 +435,7 @@ fn along(
                 Interval { lo: 0.0, hi: 1.0 },
                 target,
                 |u| u < enough,
-                |t| Ok(around(c, fields, t)?.and_then(|a| f(&a))),
+                |t| Ok(proved.around(k, c, fields, t)?.and_then(|a| f(&a))),
             )
         })?;
         best = Some(match best {
@@ -596,6 +631,7 @@ fn measure_capped(
         },
         tol.angle.lo,
     );
+    let proved = Proved::default();
     let mut gap = [Measure::Unproved; 2];
     for (k, g) in gap.iter_mut().enumerate() {
         let on = match faces[k].surface.exact() {
@@ -604,7 +640,9 @@ fn measure_capped(
         };
         *g = match on {
             Some(true) => Measure::Exact,
-            Some(false) => settle(along(&curves, fields, length, |a| Some(gap_bound(a, k))))?,
+            Some(false) => settle(along(&curves, fields, &proved, length, |a| {
+                Some(gap_bound(a, k))
+            }))?,
             None => Measure::Unproved,
         };
     }
@@ -619,7 +657,7 @@ fn measure_capped(
     let angle = match within_cap(exact)? {
         Some(Some(true)) => Measure::Exact,
         Some(Some(false)) => fold(),
-        Some(None) => settle(along(&curves, fields, angular, |a| {
+        Some(None) => settle(along(&curves, fields, &proved, angular, |a| {
             Some(angle_bound(a, fields, signs))
         }))?,
         None => Measure::Unproved,
@@ -645,7 +683,7 @@ fn measure_capped(
                     },
                     tol.curvature.lo,
                 );
-                settle(along(&curves, fields, target, |a| {
+                settle(along(&curves, fields, &proved, target, |a| {
                     curvature_bound(a, fields, signs)
                 }))?
             },
