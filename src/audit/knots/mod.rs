@@ -26,13 +26,11 @@
 //! (homogeneous points scaled apart describe the same rational surface).
 //! Spans where they do not meet are left out of the line's order; a line
 //! that meets nowhere is not listed (a broken net is reported by the
-//! reader, not here). [`knot_lines`] computes the same on Bézier pieces
-//! (module `pieces`).
+//! reader, not here). The tests compute the same on the surface's Bézier
+//! pieces (module `pieces`, the independent oracle).
 //!
 //! Reference: Piegl & Tiller, *The NURBS Book* (2nd ed., 1997), §2.5
 //! (continuity at a knot), §5.4 (knot removal, algorithm A5.8).
-
-pub use pieces::knot_lines;
 
 use crate::hpoint::HPoint;
 use crate::nurbs::{Knots, NurbsSurface};
@@ -40,6 +38,7 @@ use num_rational::BigRational;
 use num_traits::{One, Zero};
 use removal::Near;
 
+#[cfg(test)]
 mod pieces;
 mod removal;
 
@@ -91,8 +90,8 @@ pub struct KnotLine {
 ///              None when every column loses all μ copies.
 /// ```
 ///
-/// The result equals [`knot_lines`] of the surface's Bézier pieces,
-/// without computing them. Exact. A knot of multiplicity μ ≥ p + 1 needs
+/// The result equals the order read off the surface's Bézier pieces
+/// (the tests' oracle), without computing them. Exact. A knot of multiplicity μ ≥ p + 1 needs
 /// nonzero weights at the control points on both sides of it to be seen
 /// as met (readers give positive weights).
 ///

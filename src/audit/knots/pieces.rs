@@ -1,8 +1,8 @@
 //! Knot lines from Bézier pieces: the continuity across each interior knot
 //! read off the exact rational Bézier pieces of a surface
-//! ([`crate::nurbs::SpannedPatch`]). It serves inputs that are already
-//! pieces and is the independent check of the knot-removal method of the
-//! parent module, which needs no conversion to pieces.
+//! ([`crate::nurbs::SpannedPatch`]): the tests' independent check of the
+//! knot-removal method of the parent module, which needs no conversion to
+//! pieces.
 //!
 //! Pieces `L` on `[a, k]` and `R` on `[k, b]` (the same v span, the same
 //! degree `n` in u) join `C^r` when, for every `i ≤ r`, their i-th
@@ -34,28 +34,7 @@ type Q = BigRational;
 /// The interior knot lines of a B-spline surface's Bézier pieces, u-knots
 /// first, each in increasing order; the least order over the line's v (or
 /// u) spans. Curves, and pieces without a v span, have none.
-///
-/// # Examples
-///
-/// A bilinear sheet split at u = 1/2 is one polynomial across the knot:
-///
-/// ```
-/// use exact_bezier::audit::knots::{knot_lines, Direction};
-/// use exact_bezier::hpoint::HPoint;
-/// use exact_bezier::nurbs::{Knots, Nurbs, NurbsSurface};
-/// use exact_bezier::{ratio, BigRational};
-/// let q = |n: i64, d: i64| ratio::<BigRational>(n, d);
-/// let pt = |x: i64, y: i64| HPoint::from_cartesian(&[q(x, 1), q(y, 1), q(0, 1)]);
-/// let u = Knots::new(1, vec![q(0, 1), q(0, 1), q(1, 2), q(1, 1), q(1, 1)], 3).unwrap();
-/// let v = Knots::new(1, vec![q(0, 1), q(0, 1), q(1, 1), q(1, 1)], 2).unwrap();
-/// let net = vec![vec![pt(0, 0), pt(0, 1)], vec![pt(1, 0), pt(1, 1)], vec![pt(2, 0), pt(2, 1)]];
-/// let s = NurbsSurface::new(u, v, net).unwrap();
-/// let lines = knot_lines(&Nurbs::Surface(s).pieces());
-/// assert_eq!(lines.len(), 1);
-/// assert_eq!((lines[0].direction, lines[0].knot.clone()), (Direction::U, q(1, 2)));
-/// assert_eq!(lines[0].continuity, None);
-/// ```
-pub fn knot_lines(pieces: &[SpannedPatch]) -> Vec<KnotLine> {
+pub(super) fn knot_lines(pieces: &[SpannedPatch]) -> Vec<KnotLine> {
     let rects: Vec<Spanned> = pieces
         .iter()
         .filter_map(|s| match (&s.patch, &s.v) {

@@ -1,6 +1,7 @@
 //! [`surface_knot_lines`] on hand-derived cases, and against the
-//! Bézier-piece method [`knot_lines`] on random and planted surfaces.
+//! Bézier-piece method `pieces::knot_lines` on random and planted surfaces.
 
+use super::pieces::knot_lines;
 use super::*;
 use crate::nurbs::Nurbs;
 use proptest::prelude::*;
