@@ -346,7 +346,7 @@ fn joint_face(f: &Face) -> Result<JointFace<'_>, String> {
             )),
         },
         Geometry::BSpline(_) => Err(format!(
-            "{} face (certified foot points on B-spline faces not wired in)",
+            "{} face (certified measures on B-spline faces, certify::spline, do not converge within an edge's work cap yet)",
             f.surface.kind
         )),
         Geometry::NotConverted | Geometry::Invalid(_) => {

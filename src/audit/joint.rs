@@ -37,8 +37,9 @@ use super::certify::bezier::CurveJet;
 use super::certify::closed_form::{Distance, ISurface};
 use super::certify::field::{apply, normal_curvature, DistanceField};
 use super::certify::gap::abs_lower;
-use super::certify::ivec::{add, cross, dot, norm2, scale, sub, IVec};
+use super::certify::ivec::{add, cross, dot, norm2, scale, IVec};
 use super::certify::maximize::{maximize_until, Bound, Enclosure, Target};
+use super::certify::spline::SplineField;
 use super::certify::{ICurve, Verdict};
 use crate::algebra::{Interval, RealAlgebraic, Scalar};
 use crate::analytic::{cross as exact_cross, dot as exact_dot, Implicit};
@@ -94,6 +95,9 @@ pub enum JointSurface<'a> {
     /// By enclosures of its data only (a cone whose slope is known within
     /// a bound): every measure is an enclosure.
     Enclosed(ISurface),
+    /// A B-spline surface, through certified foot points: every measure is
+    /// an enclosure.
+    Spline(Box<SplineField<'a>>),
 }
 
 impl JointSurface<'_> {
@@ -101,15 +105,27 @@ impl JointSurface<'_> {
     fn exact(&self) -> Option<&Implicit<RealAlgebraic>> {
         match self {
             JointSurface::Exact(s) => Some(s),
-            JointSurface::Enclosed(_) => None,
+            JointSurface::Enclosed(_) | JointSurface::Spline(_) => None,
         }
     }
 
-    /// The enclosed closed form; `None` as [`ISurface::new`].
-    fn enclosed(&self) -> Option<ISurface> {
+    /// The surface as a distance field near the point `near` (a torus
+    /// that meets itself: its part nearer `near`).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Domain`] for a torus whose major radius is negative.
+    fn field(&self, near: &[Interval]) -> Result<Box<dyn DistanceField + '_>, Error> {
+        let closed = |s: Option<ISurface>| match s {
+            Some(s) => Ok(Box::new(s.nearer_part(near)) as Box<dyn DistanceField>),
+            None => Err(Error::Domain(
+                "a torus whose major radius is negative".into(),
+            )),
+        };
         match self {
-            JointSurface::Exact(s) => ISurface::new(*s),
-            JointSurface::Enclosed(s) => Some(s.clone()),
+            JointSurface::Exact(s) => closed(ISurface::new(*s)),
+            JointSurface::Enclosed(s) => closed(Some(s.clone())),
+            JointSurface::Spline(s) => Ok(Box::new(&**s)),
         }
     }
 }
@@ -240,6 +256,9 @@ struct Around {
     /// `s` over `T`: the mean-value form, intersected with the Taylor form
     /// of order 2 where the face's normal Jacobian is enclosed.
     signed: [Interval; 2],
+    /// How much farther than `|s|` each face may be along `T`
+    /// ([`DistanceField::border_excess`]).
+    excess: [f64; 2],
 }
 
 fn around(curve: &ICurve, fields: Fields<'_>, t: Interval) -> Result<Option<Around>, Error> {
@@ -263,8 +282,13 @@ fn around(curve: &ICurve, fields: Fields<'_>, t: Interval) -> Result<Option<Arou
             .add(&second.mul(&dt.sqr()).mul(&Interval::point(0.5)));
         mean_value.intersect(&taylor).unwrap_or(mean_value)
     };
+    let excess = |k: usize| fields[k].border_excess(&cm.x, &co.x, &co.dx, dt);
+    let (Some(e0), Some(e1)) = (excess(0), excess(1)) else {
+        return Ok(None);
+    };
     Ok(Some(Around {
         signed: [signed(0, &m0, &o0), signed(1, &m1, &o1)],
+        excess: [e0, e1],
         mid: [m0, m1],
         over: [o0, o1],
         cm,
@@ -327,8 +351,7 @@ fn narrower(a: Interval, b: Interval) -> Interval {
 /// the upper bound, at `t_m` for the lower.
 fn curvature_bound(a: &Around, fields: Fields<'_>, signs: [Interval; 2]) -> Option<Bound> {
     let kappa = |k: usize, c: &CurveJet, d: &Distance, s: &Interval| {
-        let foot = sub(&c.x, &scale(&d.normal, s));
-        let j = fields[k].normal_jacobian(&foot)?;
+        let j = fields[k].normal_jacobian_at_foot(&c.x, &d.normal, s)?;
         let w = cross(&d.normal, &c.dx);
         Some(normal_curvature(&j, &w)?.mul(&signs[k]))
     };
@@ -343,9 +366,12 @@ fn curvature_bound(a: &Around, fields: Fields<'_>, signs: [Interval; 2]) -> Opti
     })
 }
 
+/// The gap to face `k`: at most `|s| + excess`, at least `|s(C(t_m))|`.
 fn gap_bound(a: &Around, k: usize) -> Bound {
     Bound {
-        upper: a.signed[k].mag(),
+        upper: Interval::point(a.signed[k].mag())
+            .add(&Interval::point(a.excess[k]))
+            .hi,
         lower: abs_lower(&a.mid[k].signed),
     }
 }
@@ -592,16 +618,10 @@ fn measure_capped(
         .iter()
         .map(ICurve::new)
         .collect::<Result<Vec<_>, _>>()?;
-    let surfaces = faces.clone().map(|f| f.surface.enclosed());
-    let [Some(s0), Some(s1)] = surfaces else {
-        return Err(Error::Domain(
-            "a torus whose major radius is negative".into(),
-        ));
-    };
     // A self-intersecting torus: its part (apple or lemon) the edge is on.
     let mid = curves[0].jet(Interval::point(0.5))?.x;
-    let (s0, s1) = (s0.nearer_part(&mid), s1.nearer_part(&mid));
-    let fields: Fields<'_> = [&s0, &s1];
+    let (s0, s1) = (faces[0].surface.field(&mid)?, faces[1].surface.field(&mid)?);
+    let fields: Fields<'_> = [&*s0, &*s1];
     let signs = faces
         .clone()
         .map(|f| Interval::point(if f.same_sense { 1.0 } else { -1.0 }));

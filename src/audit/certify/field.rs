@@ -15,10 +15,11 @@
 //!   tangent direction `w`, relative to `n̂`, is `κ = −wᵀ J w / |w|²`.
 //!
 //! Closed forms implement it for the elementary surfaces
-//! ([`super::closed_form::ISurface`]).
+//! ([`super::closed_form::ISurface`]), certified foot points for B-spline
+//! surfaces ([`super::spline::SplineField`]).
 
 use super::closed_form::Distance;
-use super::ivec::IVec;
+use super::ivec::{scale, sub, IVec};
 use crate::algebra::Interval;
 
 /// A 3×3 matrix of intervals (rows).
@@ -34,6 +35,65 @@ pub trait DistanceField {
     /// `J = ∂n̂/∂P` enclosed for every point of the box `p`; `None` where
     /// not proved.
     fn normal_jacobian(&self, p: &[Interval]) -> Option<IMat3>;
+
+    /// `J` at the foot points `P − s n̂` of the points `p` whose normal
+    /// and signed distance are enclosed by `normal` and `signed` (the
+    /// surface's own points, where `J` gives its curvatures). The default
+    /// takes [`DistanceField::normal_jacobian`] of that box.
+    fn normal_jacobian_at_foot(
+        &self,
+        p: &[Interval],
+        normal: &[Interval],
+        signed: &Interval,
+    ) -> Option<IMat3> {
+        self.normal_jacobian(&sub(p, &scale(normal, signed)))
+    }
+
+    /// A length `e ≥ 0` such that along a piece `T` of an edge `C` the
+    /// surface is nowhere farther from `C(t)` than `|s(C(t))| + e`: 0 for a
+    /// surface that has a foot point for every point near it (the default:
+    /// the closed forms, unbounded), and for a bounded surface the way back
+    /// from a foot on its continuation to the surface itself. `mid` is
+    /// `C(t_m)`, `over` and `velocity` enclose `C(T)` and `C'(T)`, and
+    /// `dt = T − t_m`. `None` where not proved.
+    fn border_excess(
+        &self,
+        _mid: &[Interval],
+        _over: &[Interval],
+        _velocity: &[Interval],
+        _dt: Interval,
+    ) -> Option<f64> {
+        Some(0.0)
+    }
+}
+
+impl<F: DistanceField + ?Sized> DistanceField for &F {
+    fn distance(&self, p: &[Interval]) -> Option<Distance> {
+        (**self).distance(p)
+    }
+
+    fn normal_jacobian(&self, p: &[Interval]) -> Option<IMat3> {
+        (**self).normal_jacobian(p)
+    }
+
+    fn normal_jacobian_at_foot(
+        &self,
+        p: &[Interval],
+        normal: &[Interval],
+        signed: &Interval,
+    ) -> Option<IMat3> {
+        (**self).normal_jacobian_at_foot(p, normal, signed)
+    }
+
+    fn border_excess(
+        &self,
+        mid: &[Interval],
+        over: &[Interval],
+        velocity: &[Interval],
+        dt: Interval,
+    ) -> Option<f64> {
+        (**self).border_excess(mid, over, velocity, dt)
+    }
 }
 
 /// `J v`.

@@ -17,7 +17,7 @@
 
 use super::bezier::{ICurve, IPatch, PatchJet};
 use super::ivec::dot;
-use super::krawczyk::{krawczyk, mid_inverse, system, IMat};
+use super::krawczyk::{krawczyk, mid_inverse, system, IMat, Jets};
 use crate::algebra::Interval;
 use crate::error::Error;
 
@@ -35,8 +35,11 @@ pub struct Foot {
     pub dsigma: [Interval; 2],
 }
 
-/// `f64` Newton on the foot-point system from `start`, if it converges.
-fn newton(patch: &IPatch, c: &[Interval], start: [f64; 2]) -> Option<[f64; 2]> {
+/// `f64` Newton on the foot-point system from `start`, each step clamped
+/// into [`Jets::reach`] (a foot on the border of a face is a border point
+/// whatever the first steps overshoot); `None` if a step is not finite.
+pub fn newton<S: Jets + ?Sized>(patch: &S, c: &[Interval], start: [f64; 2]) -> Option<[f64; 2]> {
+    let far = patch.reach();
     let mut g = start;
     for _ in 0..40 {
         let (f, j) = system(
@@ -51,10 +54,10 @@ fn newton(patch: &IPatch, c: &[Interval], start: [f64; 2]) -> Option<[f64; 2]> {
             y[0][0] * f[0] + y[0][1] * f[1],
             y[1][0] * f[0] + y[1][1] * f[1],
         ];
-        g = [g[0] - step[0], g[1] - step[1]];
-        if !(g[0].is_finite() && g[1].is_finite()) || g[0].abs() > 4.0 || g[1].abs() > 4.0 {
+        if !(step[0].is_finite() && step[1].is_finite()) {
             return None;
         }
+        g = [0, 1].map(|k| (g[k] - step[k]).clamp(far[k][0], far[k][1]));
         if step[0].abs().max(step[1].abs()) < 1e-15 {
             break;
         }
@@ -92,7 +95,7 @@ fn inside(b: &[Interval; 2]) -> bool {
 }
 
 /// `−J⁻¹ F_t` by Cramer's rule, `None` when `det J`'s enclosure holds 0.
-fn derivative(j: &IMat, ft: [Interval; 2]) -> Option<[Interval; 2]> {
+pub fn derivative(j: &IMat, ft: [Interval; 2]) -> Option<[Interval; 2]> {
     let det = j[0][0].mul(&j[1][1]).sub(&j[0][1].mul(&j[1][0]));
     let a = j[1][1].mul(&ft[0]).sub(&j[0][1].mul(&ft[1]));
     let b = j[0][0].mul(&ft[1]).sub(&j[1][0].mul(&ft[0]));

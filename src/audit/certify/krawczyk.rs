@@ -25,6 +25,39 @@ use crate::error::Error;
 /// A 2 × 2 interval matrix.
 pub type IMat = [[Interval; 2]; 2];
 
+/// A parametric surface whose point and derivatives up to order 2 can be
+/// enclosed over boxes of its parameters: a Bézier patch ([`IPatch`]) or a
+/// B-spline surface ([`super::spline::SplineField`]).
+pub trait Jets {
+    /// `S` and its derivatives over all `(u, v)` in the box `u × v`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Domain`] where they are not enclosed (a weight's enclosure
+    /// reaches 0, the box leaves where the surface is defined).
+    fn jet(&self, u: Interval, v: Interval) -> Result<PatchJet, Error>;
+
+    /// The parameter domain `[[u₀, u₁], [v₀, v₁]]`.
+    fn domain(&self) -> [[f64; 2]; 2];
+
+    /// Where Newton may search (its steps are clamped into it): by
+    /// default the domain widened threefold on each side.
+    fn reach(&self) -> [[f64; 2]; 2] {
+        self.domain()
+            .map(|[a, b]| [a - 3.0 * (b - a), b + 3.0 * (b - a)])
+    }
+}
+
+impl Jets for IPatch {
+    fn jet(&self, u: Interval, v: Interval) -> Result<PatchJet, Error> {
+        IPatch::jet(self, u, v)
+    }
+
+    fn domain(&self) -> [[f64; 2]; 2] {
+        [[0.0, 1.0]; 2]
+    }
+}
+
 /// `F` and `J` of the foot-point system over a patch jet and point box `c`.
 pub fn system(s: &PatchJet, c: &[Interval]) -> ([Interval; 2], IMat) {
     let r = sub(&s.x, c);
@@ -49,9 +82,9 @@ pub fn mid_inverse(j: &IMat) -> Option<[[f64; 2]; 2]> {
 ///
 /// # Errors
 ///
-/// Those of [`IPatch::jet`].
-pub fn krawczyk(
-    patch: &IPatch,
+/// Those of [`Jets::jet`].
+pub fn krawczyk<S: Jets + ?Sized>(
+    patch: &S,
     b: [Interval; 2],
     c: &[Interval],
 ) -> Result<Option<[Interval; 2]>, Error> {

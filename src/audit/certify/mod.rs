@@ -56,6 +56,7 @@ pub mod krawczyk;
 pub mod local;
 pub mod maximize;
 pub mod measure;
+pub mod spline;
 pub mod verdict;
 
 pub use bezier::{ICurve, IPatch};

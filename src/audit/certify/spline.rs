@@ -1,0 +1,629 @@
+//! A B-spline face as a [`DistanceField`]: the signed distance from points
+//! to a (rational) B-spline surface, its unit normal and the normal's
+//! derivative, through certified foot points.
+//!
+//! **Jets over boxes of the surface's parameters.** The surface is held as
+//! its exact Bézier pieces with their knot spans (each enclosed at first
+//! use, [`IPatch`]). Over a box `U × V` of the surface's own parameters,
+//! [`SplineField`]'s [`Jets::jet`] is the hull of the jets of every piece the
+//! box meets, each taken in the piece's local parameter `(u − a)/(b − a)`
+//! with the derivatives scaled by `1/(b − a)` per order in `u` (likewise in
+//! `v`). The hull is a valid slope enclosure for Krawczyk's operator
+//! ([`super::krawczyk`]) and for the mean-value forms when `S` is `C¹`
+//! across the knots the box crosses: the foot-point system is then
+//! continuous and piecewise `C¹`, and the mean value theorem holds piece by
+//! piece along a segment. A box that crosses a knot where the knot vector
+//! only guarantees `C⁰` (multiplicity equal to the degree) is refused.
+//!
+//! **Beyond the border.** An edge along a face's border has foot points a
+//! rounding error on either side of it. The surface is continued past its
+//! border by its border pieces' own polynomials (a box may reach a quarter
+//! of the border piece's span beyond it). A distance measured at a foot
+//! point outside the domain is to the continuation;
+//! [`DistanceField::border_excess`] bounds how much farther the surface
+//! itself can be: with `σ = (u, v)` the foot and `σ̄` its clamp into the
+//! domain, `|S(σ) − S(σ̄)| ≤ max|S_u| |u − ū| + max|S_v| |v − v̄|`, and
+//! along a piece `T` of an edge `C` the foot is enclosed tightly by the
+//! mean-value form `σ(T) ⊆ σ(t_m) + (∂σ/∂P · C'(T)) (T − t_m)`.
+//!
+//! **Foot points.** For a box `P` of points the foot `σ(P)` solves the
+//! foot-point system ([`super::krawczyk`]) in the surface's parameters:
+//! `f64` Newton from the last foot found (else from the nearest of a grid
+//! of points of every piece), then ε-inflated Krawczyk boxes until one is
+//! proved. There, with `n = S_u × S_v` and `N = n/|n|` (the surface's own
+//! normal, ISO 10303-42), `s = (P − S(σ))·N`, and by the implicit function
+//! theorem `∂σ/∂P = −F_σ⁻¹ F_P` with `F_P = −(S_u, S_v)ᵀ`, so that
+//! `J = ∂N/∂P = N_u ⊗ ∇u + N_v ⊗ ∇v`, where
+//! `N_u = (n_u − N (N·n_u))/|n|`, `n_u = S_uu × S_v + S_u × S_uv` and
+//! likewise in `v` (do Carmo, *Differential Geometry of Curves and
+//! Surfaces*, 1976, §3-3). The foot proved is the unique stationary point of
+//! `|P − S|²` in its box; near the surface (gaps far below its radii of
+//! curvature) it is the nearest point.
+//!
+//! ```
+//! use exact_bezier::audit::certify::field::DistanceField;
+//! use exact_bezier::audit::certify::spline::SplineField;
+//! use exact_bezier::algebra::Interval;
+//! use exact_bezier::hpoint::HPoint;
+//! use exact_bezier::nurbs::{Knots, NurbsSurface, Nurbs};
+//! use exact_bezier::{ratio, BigRational};
+//! let q = |n: i64| ratio::<BigRational>(n, 1);
+//! // The plane z = 0 over [0, 2] × [0, 1], two linear pieces in u.
+//! let pt = |x: i64, y: i64| HPoint::from_cartesian(&[q(x), q(y), q(0)]);
+//! let u = Knots::new(1, vec![q(0), q(0), q(1), q(2), q(2)], 3).unwrap();
+//! let v = Knots::new(1, vec![q(0), q(0), q(1), q(1)], 2).unwrap();
+//! let net = vec![vec![pt(0, 0), pt(0, 1)], vec![pt(1, 0), pt(1, 1)], vec![pt(2, 0), pt(2, 1)]];
+//! let s = NurbsSurface::new(u, v, net).unwrap();
+//! let pieces = Nurbs::Surface(s.clone()).pieces();
+//! let field = SplineField::new(&s, &pieces).unwrap();
+//! // A point 1/8 above the plane, over the knot line u = 1.
+//! let p = [1.0, 0.5, 0.125].map(Interval::point);
+//! let d = field.distance(&p).unwrap();
+//! assert!(d.signed.lo <= 0.125 && 0.125 <= d.signed.hi && d.signed.width() < 1e-14);
+//! assert!(d.normal[2].lo > 0.999_999);
+//! ```
+
+use super::bezier::{IPatch, PatchJet};
+use super::closed_form::Distance;
+use super::field::{DistanceField, IMat3};
+use super::foot::{derivative, newton};
+use super::ivec::{add, cross, dot, norm2, scale, sub, IVec};
+use super::krawczyk::{krawczyk, system, Jets};
+use crate::algebra::Interval;
+use crate::error::Error;
+use crate::hpoint::HPoint;
+use crate::limits;
+use crate::nurbs::{Knots, NurbsSurface, SpannedPatch};
+use crate::patch::Patch;
+use crate::rect::RectPatch;
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
+use std::cell::{Cell, OnceCell, RefCell};
+use std::rc::Rc;
+
+type Q = BigRational;
+
+/// How many foot boxes a field remembers (the measures of one piece of an
+/// edge ask for the same boxes several times).
+const RECENT: usize = 8;
+
+/// Points per side of the grid of each piece that seeds Newton.
+const SEEDS: usize = 5;
+
+/// Work units charged per control point of a piece whose jet is enclosed
+/// (calibrated against [`super::maximize::WORK_PER_PIECE`]: a bicubic
+/// piece's jet, 16 points, takes about twice as long as a piece of an edge
+/// between elementary faces).
+const JET_WORK: u64 = 250;
+
+/// One parameter direction of the surface: the knots bounding its pieces
+/// and the smoothness across them.
+#[derive(Clone, Debug)]
+struct Axis {
+    /// The distinct knots `b₀ < … < b_n` bounding the pieces, enclosed.
+    breaks: Vec<Interval>,
+    /// `smooth[k]`: is the surface `C¹` across `b_{k+1}` by its knot
+    /// vector (multiplicity below the degree)?
+    smooth: Vec<bool>,
+    /// How far a box may reach beyond `b₀` and beyond `b_n`.
+    reach: [f64; 2],
+}
+
+/// A piece a parameter interval meets: its index, the interval's part in
+/// the piece's local parameter, and `1/(b − a)`.
+type Part = (usize, Interval, Interval);
+
+impl Axis {
+    /// The axis of the pieces bounded by `breaks` (sorted, distinct) of a
+    /// knot vector `knots`.
+    fn new(breaks: &[Q], knots: &Knots) -> Axis {
+        let enclosed: Vec<Interval> = breaks.iter().map(Interval::enclose).collect();
+        let multiplicity = |b: &Q| knots.knots().iter().filter(|k| *k == b).count();
+        let smooth = breaks[1..breaks.len() - 1]
+            .iter()
+            .map(|b| multiplicity(b) < knots.degree())
+            .collect();
+        let n = enclosed.len() - 1;
+        let quarter = |a: &Interval, b: &Interval| (b.lo - a.hi) / 4.0;
+        Axis {
+            reach: [
+                quarter(&enclosed[0], &enclosed[1]),
+                quarter(&enclosed[n - 1], &enclosed[n]),
+            ],
+            breaks: enclosed,
+            smooth,
+        }
+    }
+
+    /// `[b₀, b_n]`.
+    fn domain(&self) -> [f64; 2] {
+        [self.breaks[0].lo, self.breaks[self.breaks.len() - 1].hi]
+    }
+
+    /// The pieces `x` meets, with its part in each; `None` when `x` is not
+    /// finite, reaches beyond the border's reach, or crosses a knot where
+    /// the surface is only `C⁰`.
+    fn parts(&self, x: Interval) -> Option<Vec<Part>> {
+        let [first, last] = self.domain();
+        let inside = x.lo >= first - self.reach[0] && x.hi <= last + self.reach[1];
+        if !(x.lo.is_finite() && x.hi.is_finite() && inside) {
+            return None;
+        }
+        let n = self.breaks.len() - 1;
+        let mut out: Vec<Part> = Vec::new();
+        for i in 0..n {
+            let (a, b) = (self.breaks[i], self.breaks[i + 1]);
+            let lo = if i == 0 { x.lo } else { x.lo.max(a.lo) };
+            let hi = if i == n - 1 { x.hi } else { x.hi.min(b.hi) };
+            if lo > hi {
+                continue;
+            }
+            if let Some(&(prev, ..)) = out.last() {
+                if prev + 1 == i && !self.smooth[prev] && x.lo < a.lo && x.hi > a.hi {
+                    return None;
+                }
+            }
+            let span = b.sub(&a);
+            let local = Interval { lo, hi }.sub(&a).div(&span)?;
+            out.push((i, local, Interval::point(1.0).div(&span)?));
+        }
+        (!out.is_empty()).then_some(out)
+    }
+}
+
+/// A foot box proved for a box of points, with what the measures take
+/// from it.
+#[derive(Clone, Debug)]
+struct FootBox {
+    /// The box of `(u, v)` holding the foot of every point.
+    uv: [Interval; 2],
+    /// The surface's jet over `uv`.
+    jet: PatchJet,
+    /// `s` and `N`.
+    distance: Distance,
+    /// `∇u`, `∇v`: the rows of `∂σ/∂P`.
+    gradient: [IVec; 2],
+}
+
+/// A box of points, by the bits of its ends, and its foot box if proved.
+type Remembered = (Vec<[u64; 2]>, Option<Rc<FootBox>>);
+
+/// A B-spline surface seen from the points around it (see the module
+/// documentation).
+#[derive(Clone, Debug)]
+pub struct SplineField<'a> {
+    axes: [Axis; 2],
+    /// The pieces by `(i, j)`: `grid[i·n_v + j]`.
+    grid: Vec<&'a RectPatch<Q>>,
+    /// Their enclosures, made at first use (`None`: a weight not proved
+    /// positive).
+    enclosed: Vec<OnceCell<Option<IPatch>>>,
+    /// Points of every piece with their parameters: Newton's starts when
+    /// no nearby foot is known.
+    seeds: OnceCell<Vec<([f64; 3], [f64; 2])>>,
+    /// The last foot found.
+    guess: Cell<Option<[f64; 2]>>,
+    /// The last boxes of points asked for, by their bits, and their feet.
+    recent: RefCell<Vec<Remembered>>,
+    /// The jet at the last parameter point asked for (Newton's last step
+    /// is Krawczyk's first centre).
+    last_point: RefCell<Option<([u64; 2], PatchJet)>>,
+}
+
+/// The index of `x` among the sorted `breaks`.
+fn index_of(breaks: &[Q], x: &Q) -> Result<usize, Error> {
+    breaks
+        .binary_search(x)
+        .map_err(|_| Error::Shape("a Bézier piece's span is not between knots".into()))
+}
+
+impl<'a> SplineField<'a> {
+    /// The field of the surface `s` whose Bézier pieces with their spans are
+    /// `pieces` (as [`crate::nurbs::Nurbs::pieces`] gives them).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Shape`] unless the pieces are rectangular patches tiling a
+    /// grid of spans, one per cell.
+    pub fn new(s: &NurbsSurface<Q>, pieces: &'a [SpannedPatch]) -> Result<SplineField<'a>, Error> {
+        let spans = |pick: fn(&SpannedPatch) -> Option<&[Q; 2]>| -> Result<Vec<Q>, Error> {
+            let mut b: Vec<Q> = Vec::new();
+            for p in pieces {
+                let span =
+                    pick(p).ok_or_else(|| Error::Shape("a curve piece in a surface".into()))?;
+                b.extend(span.iter().cloned());
+            }
+            b.sort();
+            b.dedup();
+            if b.len() < 2 {
+                return Err(Error::Shape("a B-spline surface with no pieces".into()));
+            }
+            Ok(b)
+        };
+        let (bu, bv) = (spans(|p| Some(&p.u))?, spans(|p| p.v.as_ref())?);
+        let (nu, nv) = (bu.len() - 1, bv.len() - 1);
+        let mut grid: Vec<Option<&'a RectPatch<Q>>> = vec![None; nu * nv];
+        for p in pieces {
+            let (Patch::Rect(r), Some(v)) = (&p.patch, &p.v) else {
+                return Err(Error::Shape(
+                    "a B-spline surface piece that is not a rectangular patch".into(),
+                ));
+            };
+            let cell = index_of(&bu, &p.u[0])? * nv + index_of(&bv, &v[0])?;
+            if grid[cell].replace(r).is_some() {
+                return Err(Error::Shape("two Bézier pieces on one knot span".into()));
+            }
+        }
+        let grid = grid
+            .into_iter()
+            .collect::<Option<Vec<_>>>()
+            .ok_or_else(|| Error::Shape("a knot span with no Bézier piece".into()))?;
+        let (ku, kv) = s.knots();
+        Ok(SplineField {
+            axes: [Axis::new(&bu, ku), Axis::new(&bv, kv)],
+            enclosed: grid.iter().map(|_| OnceCell::new()).collect(),
+            grid,
+            seeds: OnceCell::new(),
+            guess: Cell::new(None),
+            recent: RefCell::new(Vec::new()),
+            last_point: RefCell::new(None),
+        })
+    }
+
+    fn columns(&self) -> usize {
+        self.axes[1].breaks.len() - 1
+    }
+
+    /// Piece `k`, enclosed.
+    fn piece(&self, k: usize) -> Result<&IPatch, Error> {
+        self.enclosed[k]
+            .get_or_init(|| IPatch::new(self.grid[k]).ok())
+            .as_ref()
+            .ok_or_else(|| {
+                Error::Domain("a B-spline piece whose weights are not proved positive".into())
+            })
+    }
+
+    /// Points of every piece on a `SEEDS × SEEDS` grid of its local
+    /// parameters, in `f64`, with their surface parameters.
+    fn seeds(&self) -> &[([f64; 3], [f64; 2])] {
+        self.seeds.get_or_init(|| {
+            let nv = self.columns();
+            let mut out = Vec::new();
+            for (k, patch) in self.grid.iter().enumerate() {
+                let (a, b) = (
+                    &self.axes[0].breaks[k / nv],
+                    &self.axes[0].breaks[k / nv + 1],
+                );
+                let (c, d) = (
+                    &self.axes[1].breaks[k % nv],
+                    &self.axes[1].breaks[k % nv + 1],
+                );
+                for i in 0..SEEDS {
+                    for j in 0..SEEDS {
+                        let (s, t) = (i as f64 / (SEEDS - 1) as f64, j as f64 / (SEEDS - 1) as f64);
+                        if let Some(x) = eval_f64(patch.ctrl(), s, t) {
+                            let at = [
+                                a.mid() + s * (b.mid() - a.mid()),
+                                c.mid() + t * (d.mid() - c.mid()),
+                            ];
+                            out.push((x, at));
+                        }
+                    }
+                }
+            }
+            out
+        })
+    }
+
+    /// The parameters of the seed nearest to `c`.
+    fn nearest_seed(&self, c: &[Interval]) -> Option<[f64; 2]> {
+        let d = |x: &[f64; 3]| -> f64 { x.iter().zip(c).map(|(a, b)| (a - b.mid()).powi(2)).sum() };
+        self.seeds()
+            .iter()
+            .min_by(|a, b| d(&a.0).total_cmp(&d(&b.0)))
+            .map(|s| s.1)
+    }
+
+    /// The foot box of the points `p`, remembered among the last few.
+    fn foot(&self, p: &[Interval]) -> Option<Rc<FootBox>> {
+        let key: Vec<[u64; 2]> = p.iter().map(|x| [x.lo.to_bits(), x.hi.to_bits()]).collect();
+        if let Some((_, f)) = self.recent.borrow().iter().find(|(k, _)| *k == key) {
+            return f.clone();
+        }
+        let f = self.prove_foot(p).map(Rc::new);
+        let mut recent = self.recent.borrow_mut();
+        if recent.len() == RECENT {
+            recent.remove(0);
+        }
+        recent.push((key, f.clone()));
+        f
+    }
+
+    /// Newton for a guess, then ε-inflation (Rump) until Krawczyk's
+    /// operator maps a box `g ± r` into its interior.
+    fn prove_foot(&self, p: &[Interval]) -> Option<FootBox> {
+        let c: IVec = p.iter().map(|x| Interval::point(x.mid())).collect();
+        let g = match self.guess.get().and_then(|g| newton(self, &c, g)) {
+            Some(g) => g,
+            None => newton(self, &c, self.nearest_seed(&c)?)?,
+        };
+        self.guess.set(Some(g));
+        let at = self
+            .jet(Interval::point(g[0]), Interval::point(g[1]))
+            .ok()?;
+        let width = p.iter().map(Interval::width).fold(0.0, f64::max);
+        let domain = self.domain();
+        let mut r = [&at.xu, &at.xv].map(|d| {
+            let speed = norm2(d).mid().sqrt();
+            (4.0 * width / speed).min(f64::MAX)
+        });
+        for (k, rk) in r.iter_mut().enumerate() {
+            let scale = domain[k][1] - domain[k][0];
+            *rk = if rk.is_finite() { *rk } else { scale } + 1e-13 * scale;
+        }
+        for _ in 0..10 {
+            let b = [0, 1].map(|k| Interval {
+                lo: g[k] - r[k],
+                hi: g[k] + r[k],
+            });
+            if let Ok(Some(k)) = krawczyk(self, b, p) {
+                if b[0].interior_contains(&k[0]) && b[1].interior_contains(&k[1]) {
+                    return self.finish(p, b);
+                }
+            }
+            r = r.map(|x| 4.0 * x);
+        }
+        None
+    }
+
+    /// Shrink a proved box by two Krawczyk steps, then take `s`, `N` and
+    /// `∂σ/∂P` over it.
+    fn finish(&self, p: &[Interval], mut b: [Interval; 2]) -> Option<FootBox> {
+        let shrinks = if p.iter().all(|x| x.width() == 0.0) {
+            0
+        } else {
+            2
+        };
+        for _ in 0..shrinks {
+            if let Ok(Some(k)) = krawczyk(self, b, p) {
+                match (b[0].intersect(&k[0]), b[1].intersect(&k[1])) {
+                    (Some(u), Some(v)) => b = [u, v],
+                    _ => break,
+                }
+            }
+        }
+        let jet = self.jet(b[0], b[1]).ok()?;
+        let gradient = foot_gradient(&jet, p)?;
+        let n = cross(&jet.xu, &jet.xv);
+        let length = norm2(&n).sqrt()?;
+        if length.lo <= 0.0 {
+            return None;
+        }
+        let normal: IVec = n.iter().map(|x| x.div(&length)).collect::<Option<_>>()?;
+        let signed = dot(&sub(p, &jet.x), &normal);
+        Some(FootBox {
+            uv: b,
+            jet,
+            distance: Distance { signed, normal },
+            gradient,
+        })
+    }
+}
+
+/// `H(s, t)` of a net of exact homogeneous points, in `f64` (de
+/// Casteljau), as a Cartesian point; `None` if not finite.
+fn eval_f64(ctrl: &[Vec<HPoint<Q>>], s: f64, t: f64) -> Option<[f64; 3]> {
+    let lerp = |a: &[f64], b: &[f64], x: f64| -> Vec<f64> {
+        a.iter().zip(b).map(|(p, q)| p + x * (q - p)).collect()
+    };
+    let reduce = |mut v: Vec<Vec<f64>>, x: f64| -> Vec<f64> {
+        while v.len() > 1 {
+            v = v.windows(2).map(|w| lerp(&w[0], &w[1], x)).collect();
+        }
+        v.swap_remove(0)
+    };
+    let rows: Vec<Vec<f64>> = ctrl
+        .iter()
+        .map(|row| {
+            let pts = row
+                .iter()
+                .map(|h| {
+                    h.coords
+                        .iter()
+                        .map(|c| c.to_f64().unwrap_or(f64::NAN))
+                        .collect()
+                })
+                .collect();
+            reduce(pts, t)
+        })
+        .collect();
+    let h = reduce(rows, s);
+    let x = [h[0] / h[3], h[1] / h[3], h[2] / h[3]];
+    x.iter().all(|c| c.is_finite()).then_some(x)
+}
+
+/// `x · k` for each derivative's scale.
+fn scaled(j: PatchJet, su: &Interval, sv: &Interval) -> PatchJet {
+    PatchJet {
+        x: j.x,
+        xu: scale(&j.xu, su),
+        xv: scale(&j.xv, sv),
+        xuu: scale(&j.xuu, &su.sqr()),
+        xuv: scale(&j.xuv, &su.mul(sv)),
+        xvv: scale(&j.xvv, &sv.sqr()),
+    }
+}
+
+/// The hull of two jets, part by part.
+fn hull(a: &PatchJet, b: &PatchJet) -> PatchJet {
+    let h = |x: &IVec, y: &IVec| -> IVec { x.iter().zip(y).map(|(p, q)| p.hull(q)).collect() };
+    PatchJet {
+        x: h(&a.x, &b.x),
+        xu: h(&a.xu, &b.xu),
+        xv: h(&a.xv, &b.xv),
+        xuu: h(&a.xuu, &b.xuu),
+        xuv: h(&a.xuv, &b.xuv),
+        xvv: h(&a.xvv, &b.xvv),
+    }
+}
+
+impl Jets for SplineField<'_> {
+    /// The hull of the jets of the pieces `u × v` meets (see the module
+    /// documentation).
+    fn jet(&self, u: Interval, v: Interval) -> Result<PatchJet, Error> {
+        let point =
+            (u.width() == 0.0 && v.width() == 0.0).then(|| [u.lo.to_bits(), v.lo.to_bits()]);
+        if let (Some(key), Some((at, jet))) = (point, &*self.last_point.borrow()) {
+            if key == *at {
+                return Ok(jet.clone());
+            }
+        }
+        let jet = self.jet_uncached(u, v)?;
+        if let Some(key) = point {
+            *self.last_point.borrow_mut() = Some((key, jet.clone()));
+        }
+        Ok(jet)
+    }
+
+    fn domain(&self) -> [[f64; 2]; 2] {
+        self.axes.each_ref().map(Axis::domain)
+    }
+
+    /// The domain and the border pieces' reach beyond it.
+    fn reach(&self) -> [[f64; 2]; 2] {
+        self.axes.each_ref().map(|a| {
+            let [lo, hi] = a.domain();
+            [lo - a.reach[0], hi + a.reach[1]]
+        })
+    }
+}
+
+impl SplineField<'_> {
+    /// [`Jets::jet`] without the cache, charged [`JET_WORK`] per piece
+    /// control point.
+    fn jet_uncached(&self, u: Interval, v: Interval) -> Result<PatchJet, Error> {
+        let refused = || {
+            Error::Domain("a box beyond a B-spline surface's border, or across a C⁰ knot".into())
+        };
+        let pu = self.axes[0].parts(u).ok_or_else(refused)?;
+        let pv = self.axes[1].parts(v).ok_or_else(refused)?;
+        let nv = self.columns();
+        let mut out: Option<PatchJet> = None;
+        for (i, lu, su) in &pu {
+            for (j, lv, sv) in &pv {
+                let patch = self.grid[i * nv + j];
+                let points = patch.ctrl().len() * patch.ctrl()[0].len();
+                limits::charge("a B-spline face's jet", JET_WORK * points as u64)?;
+                let jet = scaled(self.piece(i * nv + j)?.jet(*lu, *lv)?, su, sv);
+                out = Some(match out {
+                    Some(o) => hull(&o, &jet),
+                    None => jet,
+                });
+            }
+        }
+        out.ok_or_else(refused)
+    }
+}
+
+/// How far `x` lies outside `[lo, hi]` at most (0 inside), rounded up.
+fn overshoot(x: &Interval, [lo, hi]: [f64; 2]) -> f64 {
+    let below = Interval::point(lo).sub(&Interval::point(x.lo)).hi;
+    let above = Interval::point(x.hi).sub(&Interval::point(hi)).hi;
+    below.max(above).max(0.0)
+}
+
+/// `∂σ/∂P = −F_σ⁻¹ F_P` over the jet `s` for the points `p`: its rows
+/// `∇u`, `∇v`; `None` where `F_σ` is not proved regular.
+fn foot_gradient(s: &PatchJet, p: &[Interval]) -> Option<[IVec; 2]> {
+    let (_, j) = system(s, p);
+    let mut gradient = [IVec::new(), IVec::new()];
+    for axis in 0..3 {
+        let d = derivative(&j, [s.xu[axis].neg(), s.xv[axis].neg()])?;
+        gradient[0].push(d[0]);
+        gradient[1].push(d[1]);
+    }
+    Some(gradient)
+}
+
+/// `J = N_u ⊗ ∇u + N_v ⊗ ∇v` from the jet `s`, the unit normal over it and
+/// `∂σ/∂P`.
+fn jacobian(s: &PatchJet, normal: &[Interval], [du, dv]: &[IVec; 2]) -> Option<IMat3> {
+    let length = norm2(&cross(&s.xu, &s.xv)).sqrt()?;
+    let rate = |dn: IVec| -> Option<IVec> {
+        let along = dot(normal, &dn);
+        sub(&dn, &scale(normal, &along))
+            .iter()
+            .map(|x| x.div(&length))
+            .collect()
+    };
+    let nu = rate(add(&cross(&s.xuu, &s.xv), &cross(&s.xu, &s.xuv)))?;
+    let nv = rate(add(&cross(&s.xuv, &s.xv), &cross(&s.xu, &s.xvv)))?;
+    Some(std::array::from_fn(|a| {
+        std::array::from_fn(|b| nu[a].mul(&du[b]).add(&nv[a].mul(&dv[b])))
+    }))
+}
+
+impl DistanceField for SplineField<'_> {
+    fn distance(&self, p: &[Interval]) -> Option<Distance> {
+        Some(self.foot(p)?.distance.clone())
+    }
+
+    /// `J = N_u ⊗ ∇u + N_v ⊗ ∇v` at the feet of `p`.
+    fn normal_jacobian(&self, p: &[Interval]) -> Option<IMat3> {
+        let f = self.foot(p)?;
+        jacobian(&f.jet, &f.distance.normal, &f.gradient)
+    }
+
+    /// `J` at the foot points themselves (`P = S(σ)`, the same foot box):
+    /// `∂σ/∂P` from the foot-point system with `S − P` enclosed by
+    /// `S(X) − S(X)`.
+    fn normal_jacobian_at_foot(
+        &self,
+        p: &[Interval],
+        _: &[Interval],
+        _: &Interval,
+    ) -> Option<IMat3> {
+        let f = self.foot(p)?;
+        let gradient = foot_gradient(&f.jet, &f.jet.x)?;
+        jacobian(&f.jet, &f.distance.normal, &gradient)
+    }
+
+    /// `max|S_u| · (how far u(T) is outside) + max|S_v| · (likewise v)`,
+    /// with `σ(T) ⊆ σ(t_m) + (∂σ/∂P(C(T)) · C'(T)) (T − t_m)`.
+    fn border_excess(
+        &self,
+        mid: &[Interval],
+        over: &[Interval],
+        velocity: &[Interval],
+        dt: Interval,
+    ) -> Option<f64> {
+        let (m, o) = (self.foot(mid)?, self.foot(over)?);
+        let domain = self.domain();
+        let feet: [Interval; 2] = std::array::from_fn(|k| {
+            let mean_value = m.uv[k].add(&dot(&o.gradient[k], velocity).mul(&dt));
+            mean_value.intersect(&o.uv[k]).unwrap_or(mean_value)
+        });
+        let out = [0, 1].map(|k| overshoot(&feet[k], domain[k]));
+        if out == [0.0, 0.0] {
+            return Some(0.0);
+        }
+        let way = [0, 1].map(|k| {
+            let [lo, hi] = domain[k];
+            let clamp = |x: f64| x.clamp(lo, hi);
+            feet[k].hull(&Interval {
+                lo: clamp(feet[k].lo),
+                hi: clamp(feet[k].hi),
+            })
+        });
+        let jet = self.jet(way[0], way[1]).ok()?;
+        let speed = |d: &IVec| norm2(d).sqrt().map(|x| x.hi);
+        let excess = Interval::point(speed(&jet.xu)?)
+            .mul(&Interval::point(out[0]))
+            .add(&Interval::point(speed(&jet.xv)?).mul(&Interval::point(out[1])));
+        excess.hi.is_finite().then_some(excess.hi)
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,257 @@
+use super::*;
+use crate::algebra::{RealAlgebraic, Scalar};
+use crate::audit::certify::field::normal_curvature;
+use crate::audit::certify::Verdict;
+use crate::audit::joint::{measure_joint, JointFace, JointSurface, JointTolerances, Measure};
+use crate::curve::RationalCurve;
+use crate::nurbs::Nurbs;
+use crate::ratio;
+
+fn q(n: i64, d: i64) -> Q {
+    ratio(n, d)
+}
+
+/// The homogeneous point `(w·x, w·y, w·z, w)`.
+fn h(x: Q, y: Q, z: Q, w: Q) -> HPoint<Q> {
+    HPoint {
+        coords: vec![&x * &w, &y * &w, &z * &w, w],
+    }
+}
+
+/// The quarter cylinder `x² + y² = 1`, `0 ≤ z ≤ 2`: in `u` the quarter
+/// circle `((1 − u²), 2u)/(1 + u²)` written in Bernstein form (control
+/// points `(1, 0)`, `(1, 1)`, `(0, 1)` with weights 1, 1, 2), in `v` the
+/// line `z = 2v` as a quadratic B-spline with knots `0, 0, 0, ½, 1, 1, 1`
+/// (control values `2 × ` the Greville abscissae `0, ¼, ¾, 1`): two pieces,
+/// `C¹` across `v = ½`. `S_u × S_v` points away from the axis.
+fn quarter_cylinder() -> NurbsSurface<Q> {
+    let zs = [q(0, 1), q(1, 2), q(3, 2), q(2, 1)];
+    let circle = [
+        (q(1, 1), q(0, 1), q(1, 1)),
+        (q(1, 1), q(1, 1), q(1, 1)),
+        (q(0, 1), q(1, 1), q(2, 1)),
+    ];
+    let net = circle
+        .iter()
+        .map(|(x, y, w)| {
+            zs.iter()
+                .map(|z| h(x.clone(), y.clone(), z.clone(), w.clone()))
+                .collect()
+        })
+        .collect();
+    let u = Knots::new(2, [0, 0, 0, 1, 1, 1].map(|k| q(k, 1)).to_vec(), 3).unwrap();
+    let v = Knots::new(
+        2,
+        vec![
+            q(0, 1),
+            q(0, 1),
+            q(0, 1),
+            q(1, 2),
+            q(1, 1),
+            q(1, 1),
+            q(1, 1),
+        ],
+        4,
+    )
+    .unwrap();
+    NurbsSurface::new(u, v, net).unwrap()
+}
+
+/// The plane `x = 1` for `−1 ≤ y ≤ 0`, `0 ≤ z ≤ 2`: `(1, −u, 2v)`, bilinear,
+/// with an interior knot in `u` (multiplicity 1 of degree 1: only `C⁰` by
+/// its knot vector). `S_u × S_v = (−2, 0, 0)`, toward the cylinder's axis.
+fn tangent_plane() -> NurbsSurface<Q> {
+    let net = [0, 1, 2]
+        .iter()
+        .map(|&i| {
+            [0, 1]
+                .iter()
+                .map(|&j| h(q(1, 1), q(-i, 2), q(2 * j, 1), q(1, 1)))
+                .collect()
+        })
+        .collect();
+    let u = Knots::new(1, vec![q(0, 1), q(0, 1), q(1, 2), q(1, 1), q(1, 1)], 3).unwrap();
+    let v = Knots::new(1, vec![q(0, 1), q(0, 1), q(1, 1), q(1, 1)], 2).unwrap();
+    NurbsSurface::new(u, v, net).unwrap()
+}
+
+fn pieces(s: &NurbsSurface<Q>) -> Vec<SpannedPatch> {
+    Nurbs::Surface(s.clone()).pieces()
+}
+
+fn contains(x: &Interval, value: f64, width: f64) -> bool {
+    x.lo <= value && value <= x.hi && x.width() <= width
+}
+
+/// A point `3/2` from the axis, on the knot line `z = 1`: `s = 1/2` (the
+/// cylinder's closed form), `N` radial, and the normal curvatures at the
+/// foot those of the unit cylinder: `−1` around it, 0 along it.
+#[test]
+fn a_point_off_a_b_spline_cylinder_has_the_cylinder_s_distance_and_curvatures() {
+    let s = quarter_cylinder();
+    let ps = pieces(&s);
+    let field = SplineField::new(&s, &ps).unwrap();
+    let (c, sn) = (0.6f64, 0.8f64);
+    let p = [1.5 * c, 1.5 * sn, 1.0].map(Interval::point);
+    let d = field.distance(&p).unwrap();
+    assert!(contains(&d.signed, 0.5, 1e-12), "{:?}", d.signed);
+    for (n, want) in d.normal.iter().zip([c, sn, 0.0]) {
+        assert!(contains(n, want, 1e-12), "{n:?} ≠ {want}");
+    }
+    let j = field
+        .normal_jacobian_at_foot(&p, &d.normal, &d.signed)
+        .unwrap();
+    let around = [-sn, c, 0.0].map(Interval::point);
+    let along = [0.0, 0.0, 1.0].map(Interval::point);
+    assert!(contains(
+        &normal_curvature(&j, &around).unwrap(),
+        -1.0,
+        1e-9
+    ));
+    assert!(contains(&normal_curvature(&j, &along).unwrap(), 0.0, 1e-9));
+    // Off the surface, J is that of the distance field: 1/ρ around.
+    let j = field.normal_jacobian(&p).unwrap();
+    assert!(contains(
+        &normal_curvature(&j, &around).unwrap(),
+        -1.0 / 1.5,
+        1e-9
+    ));
+    // A box of points: every point's distance lies in the enclosure.
+    let b: Vec<Interval> = p
+        .iter()
+        .map(|x| Interval {
+            lo: x.lo - 1e-3,
+            hi: x.hi + 1e-3,
+        })
+        .collect();
+    let wide = field.distance(&b).unwrap();
+    assert!(
+        wide.signed.lo <= 0.5 - 1e-3 && 0.5 + 1e-3 <= wide.signed.hi,
+        "{:?}",
+        wide.signed
+    );
+}
+
+/// Boxes across a knot the knot vector makes only `C⁰` are refused, boxes
+/// that only touch it are not; nor are boxes a little beyond the border,
+/// while boxes beyond a quarter of the border span are.
+#[test]
+fn jets_are_refused_across_a_c0_knot_and_far_beyond_the_border() {
+    let s = tangent_plane();
+    let ps = pieces(&s);
+    let field = SplineField::new(&s, &ps).unwrap();
+    let v = Interval { lo: 0.25, hi: 0.5 };
+    let across = Interval { lo: 0.25, hi: 0.75 };
+    assert!(matches!(field.jet(across, v), Err(Error::Domain(_))));
+    assert!(field.jet(Interval { lo: 0.25, hi: 0.5 }, v).is_ok());
+    assert!(field.jet(Interval { lo: 0.5, hi: 0.75 }, v).is_ok());
+    assert!(field.jet(Interval::point(0.5), v).is_ok());
+    let near = field.jet(Interval { lo: -0.1, hi: 0.0 }, v).unwrap();
+    // y = −u, continued: over u ∈ [−0.1, 0], y ∈ [0, 0.1].
+    assert!(near.x[1].lo <= 0.0 && 0.1 <= near.x[1].hi && near.x[1].width() < 0.1 + 1e-9);
+    assert!(matches!(
+        field.jet(Interval { lo: -0.2, hi: 0.0 }, v),
+        Err(Error::Domain(_))
+    ));
+    // The cylinder is C¹ across v = ½: boxes across it are taken (S_v = (0, 0, 2)
+    // is enclosed, loosely over a wide box: the quotient rule's terms do not cancel).
+    let c = quarter_cylinder();
+    let cp = pieces(&c);
+    let cyl = SplineField::new(&c, &cp).unwrap();
+    let j = cyl.jet(Interval { lo: 0.2, hi: 0.3 }, across).unwrap();
+    assert!(contains(&j.xv[2], 2.0, 1.0), "{:?}", j.xv[2]);
+}
+
+/// A point over the `C⁰` knot line of the plane: its foot box straddles the
+/// line, so it is not proved (and no wrong answer is given); points beside
+/// it are.
+#[test]
+fn feet_on_a_c0_knot_line_are_not_proved() {
+    let s = tangent_plane();
+    let ps = pieces(&s);
+    let field = SplineField::new(&s, &ps).unwrap();
+    let on = [1.25, -0.5, 1.0].map(Interval::point);
+    assert!(field.distance(&on).is_none());
+    let beside = [1.25, -0.25, 1.0].map(Interval::point);
+    let d = field.distance(&beside).unwrap();
+    // S_u × S_v points to −x: the point at x = 1.25 is on the negative side.
+    assert!(contains(&d.signed, -0.25, 1e-12), "{:?}", d.signed);
+}
+
+/// The edge `(1, 0, z)` between the quarter cylinder and its tangent plane,
+/// both B-spline faces and both along their borders: gap 0, the tangent
+/// planes agree (G1; the plane's face is reversed so that both normals
+/// point away from the axis), and the normal curvatures across the edge
+/// are `−1` and `0` (independent: the cylinder's radius), so G2 fails by 1.
+#[test]
+fn a_b_spline_cylinder_and_its_tangent_plane_are_g1_not_g2() {
+    let (c, p) = (quarter_cylinder(), tangent_plane());
+    let (cp, pp) = (pieces(&c), pieces(&p));
+    let faces = [
+        JointFace {
+            surface: JointSurface::Spline(Box::new(SplineField::new(&c, &cp).unwrap())),
+            same_sense: true,
+        },
+        JointFace {
+            surface: JointSurface::Spline(Box::new(SplineField::new(&p, &pp).unwrap())),
+            same_sense: false,
+        },
+    ];
+    let r = |n: i64| RealAlgebraic::from_i64(n);
+    let edge =
+        RationalCurve::polynomial(vec![vec![r(1), r(0), r(0)], vec![r(1), r(0), r(2)]]).unwrap();
+    // A length tolerance of 10⁻⁴: the cylinder's feet along its border
+    // are proved to lie within the face to that within the edge's work cap
+    // (at 10⁻⁶ the cap runs out: the bound on how far a foot may be outside
+    // the domain is only of second order in the piece's length).
+    let tol = JointTolerances {
+        length: Some(Interval::point(1e-4)),
+        angle: Interval::point(1e-6),
+        curvature: Interval::point(1e-3),
+    };
+    let m = measure_joint(&[edge], &faces, &tol).unwrap();
+    assert_eq!(m.g0, Verdict::WithinTolerance, "{m:?}");
+    assert_eq!(m.g1, Verdict::WithinTolerance, "{m:?}");
+    let Some(Measure::Enclosed { value, .. }) = m.curvature else {
+        panic!("{m:?}")
+    };
+    assert!(
+        value.lo <= 1.0 && 1.0 <= value.hi && value.hi - value.lo < 1e-2,
+        "{value:?}"
+    );
+    assert!(matches!(m.g2, Some(Verdict::Fails { .. })), "{m:?}");
+}
+
+/// An edge a known distance off a B-spline face: the line
+/// `(1 + 10⁻⁷, y, 1)` against the plane `x = 1` (both faces): the gap
+/// enclosure holds `10⁻⁷` and is tight.
+#[test]
+fn a_gap_to_a_b_spline_face_is_measured_right() {
+    let p = tangent_plane();
+    let pp = pieces(&p);
+    let face = || JointFace {
+        surface: JointSurface::Spline(Box::new(SplineField::new(&p, &pp).unwrap())),
+        same_sense: false,
+    };
+    let faces = [face(), face()];
+    let off = RealAlgebraic::from_rational(&(q(1, 1) + q(1, 10_000_000)));
+    let r = |n: i64, d: i64| RealAlgebraic::from_rational(&q(n, d));
+    let edge = RationalCurve::polynomial(vec![
+        vec![off.clone(), r(-1, 8), r(1, 1)],
+        vec![off, r(-3, 8), r(1, 1)],
+    ])
+    .unwrap();
+    let tol = JointTolerances {
+        length: None,
+        angle: Interval::point(1e-6),
+        curvature: Interval::point(1e-3),
+    };
+    let m = measure_joint(&[edge], &faces, &tol).unwrap();
+    let Measure::Enclosed { value, .. } = m.gap[0] else {
+        panic!("{m:?}")
+    };
+    assert!(
+        value.lo <= 1e-7 && 1e-7 <= value.hi && value.hi - value.lo < 1e-9,
+        "{value:?}"
+    );
+}
