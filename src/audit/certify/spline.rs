@@ -56,11 +56,14 @@
 //! let s = NurbsSurface::new(u, v, net).unwrap();
 //! let pieces = Nurbs::Surface(s.clone()).pieces();
 //! let field = SplineField::new(&s, &pieces).unwrap();
-//! // A point 1/8 above the plane, over the knot line u = 1.
-//! let p = [1.0, 0.5, 0.125].map(Interval::point);
+//! // A point 1/8 above the plane, over the first piece.
+//! let p = [0.5, 0.5, 0.125].map(Interval::point);
 //! let d = field.distance(&p).unwrap();
 //! assert!(d.signed.lo <= 0.125 && 0.125 <= d.signed.hi && d.signed.width() < 1e-14);
 //! assert!(d.normal[2].lo > 0.999_999);
+//! // Over the knot line u = 1, where the linear pieces meet only C⁰ by the
+//! // knot vector, the foot is not proved.
+//! assert!(field.distance(&[1.0, 0.5, 0.125].map(Interval::point)).is_none());
 //! ```
 
 use super::bezier::{IPatch, PatchJet};
