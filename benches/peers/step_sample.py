@@ -54,7 +54,11 @@ Newton stops after a step below 1e-25 of the domain's width (converging
 quadratically, the foot is then off by about the square of that step).
 This is a local search: ``--check-feet`` compares its feet with Newton
 from the 6 nearest points of a dense 61 x 61 grid over the domain at
-every 8th sample of each B-spline edge.
+every 8th sample of each B-spline edge.  On the corpus (1 319 B-spline
+edges, 118 105 feet: 96 850 of them on tail_section_asm.stp, 17 minutes)
+no foot was nearer by brute force; before the seam and degenerate-point
+searches were added it found feet stuck at a closed surface's seam
+(nist_ctc_02 and dm1-id, up to 10 mm off).
 
 The curve is trimmed between the edge's vertices: each vertex is projected
 on the curve (best of dense samples, then Newton on ``C'.(C - V) = 0``),
@@ -478,7 +482,8 @@ class BSplineSurface(Surface):
     (S - q).S_v = 0 from the previous foot of the same edge and from the
     best point of a coarse grid, a parameter that reaches the domain's
     border held there while the gradient pushes outward (a 1-D Newton along
-    the border curve, or a corner)."""
+    the border curve, or a corner); then across a closed surface's seam and
+    away from degenerate points (the module's docstring)."""
 
     def __init__(self, degrees, points, weights, knots):
         self.degrees, self.knots = degrees, knots
@@ -502,10 +507,11 @@ class BSplineSurface(Surface):
         self.memo, self.last = {}, None
 
     def derivatives(self, u, v, n=2):
-        """[S, S_u, S_v, S_uu, S_uv, S_vv] at (u, v) in the domain (up to
-        order n: [S] when n = 0, [S, S_u, S_v] when n = 1): the homogeneous partial derivatives A^(k,l) summed
-        over the (p+1)(q+1) control points of the span, then the quotient
-        rule for S = A / w (Piegl & Tiller, eq. 4.20)."""
+        """[S, S_u, S_v, S_uu, S_uv, S_vv] at (u, v) in the domain, up to
+        order n ([S] when n = 0, [S, S_u, S_v] when n = 1): the homogeneous
+        partial derivatives A^(k,l) summed over the (p+1)(q+1) control
+        points of the span, then the quotient rule for S = A / w (Piegl &
+        Tiller, eq. 4.20)."""
         (p, q), (U, V) = self.degrees, self.knots
         ku = knot_span(U, p, self.counts[0], u)
         kv = knot_span(V, q, self.counts[1], v)
