@@ -115,9 +115,9 @@ impl JointSurface<'_> {
     /// # Errors
     ///
     /// [`Error::Domain`] for a torus whose major radius is negative.
-    fn field(&self, near: &[Interval]) -> Result<Box<dyn DistanceField + '_>, Error> {
+    fn field(&self, near: &[Interval]) -> Result<Field<'_>, Error> {
         let closed = |s: Option<ISurface>| match s {
-            Some(s) => Ok(Box::new(s.nearer_part(near)) as Box<dyn DistanceField>),
+            Some(s) => Ok(Field::Closed(s.nearer_part(near))),
             None => Err(Error::Domain(
                 "a torus whose major radius is negative".into(),
             )),
@@ -125,7 +125,23 @@ impl JointSurface<'_> {
         match self {
             JointSurface::Exact(s) => closed(ISurface::new(*s)),
             JointSurface::Enclosed(s) => closed(Some(s.clone())),
-            JointSurface::Spline(s) => Ok(Box::new(&**s)),
+            JointSurface::Spline(s) => Ok(Field::Spline(s)),
+        }
+    }
+}
+
+/// A face's distance field for one edge: a closed form made for it, or the
+/// face's B-spline field.
+enum Field<'s> {
+    Closed(ISurface),
+    Spline(&'s SplineField<'s>),
+}
+
+impl Field<'_> {
+    fn get(&self) -> &dyn DistanceField {
+        match self {
+            Field::Closed(s) => s,
+            Field::Spline(s) => *s,
         }
     }
 }
@@ -369,9 +385,15 @@ fn curvature_bound(a: &Around, fields: Fields<'_>, signs: [Interval; 2]) -> Opti
 /// The gap to face `k`: at most `|s| + excess`, at least `|s(C(t_m))|`.
 fn gap_bound(a: &Around, k: usize) -> Bound {
     Bound {
-        upper: Interval::point(a.signed[k].mag())
-            .add(&Interval::point(a.excess[k]))
-            .hi,
+        upper: match a.excess[k] {
+            // Outward rounding would move the bound by an ulp for nothing.
+            0.0 => a.signed[k].mag(),
+            e => {
+                Interval::point(a.signed[k].mag())
+                    .add(&Interval::point(e))
+                    .hi
+            }
+        },
         lower: abs_lower(&a.mid[k].signed),
     }
 }
@@ -621,7 +643,7 @@ fn measure_capped(
     // A self-intersecting torus: its part (apple or lemon) the edge is on.
     let mid = curves[0].jet(Interval::point(0.5))?.x;
     let (s0, s1) = (faces[0].surface.field(&mid)?, faces[1].surface.field(&mid)?);
-    let fields: Fields<'_> = [&*s0, &*s1];
+    let fields: Fields<'_> = [s0.get(), s1.get()];
     let signs = faces
         .clone()
         .map(|f| Interval::point(if f.same_sense { 1.0 } else { -1.0 }));

@@ -67,35 +67,6 @@ pub trait DistanceField {
     }
 }
 
-impl<F: DistanceField + ?Sized> DistanceField for &F {
-    fn distance(&self, p: &[Interval]) -> Option<Distance> {
-        (**self).distance(p)
-    }
-
-    fn normal_jacobian(&self, p: &[Interval]) -> Option<IMat3> {
-        (**self).normal_jacobian(p)
-    }
-
-    fn normal_jacobian_at_foot(
-        &self,
-        p: &[Interval],
-        normal: &[Interval],
-        signed: &Interval,
-    ) -> Option<IMat3> {
-        (**self).normal_jacobian_at_foot(p, normal, signed)
-    }
-
-    fn border_excess(
-        &self,
-        mid: &[Interval],
-        over: &[Interval],
-        velocity: &[Interval],
-        dt: Interval,
-    ) -> Option<f64> {
-        (**self).border_excess(mid, over, velocity, dt)
-    }
-}
-
 /// `J v`.
 pub fn apply(j: &IMat3, v: &[Interval]) -> IVec {
     j.iter()
