@@ -47,6 +47,7 @@
 pub mod angle;
 pub mod bezier;
 pub mod closed_form;
+pub mod compose;
 pub mod curvature;
 pub mod field;
 pub mod foot;
