@@ -657,8 +657,10 @@ fn certified_gaps_contain_independent_samples() {
                 continue;
             };
             for (k, g) in j.gap.iter().enumerate() {
+                // B-spline faces: checked against the sampler's values in
+                // certified_measures_contain_samples_on_every_model.
                 let Geometry::Analytic(face) = &m.faces[&e.faces[k]].surface.geometry else {
-                    panic!("{name}: a measured face without a closed form");
+                    continue;
                 };
                 let surface = &face.closed_form.as_ref().unwrap().implicit;
                 let mut worst: f64 = 0.0;

@@ -23,6 +23,7 @@
 //! (the largest when they differ), in the model's length unit.
 
 use super::certify::closed_form::ISurface;
+use super::certify::spline::{SplineField, SplineSurface};
 use super::certify::Verdict;
 use super::joint::{
     measure_joint, JointFace, JointMeasures, JointSurface, JointTolerances, EDGE_WORK,
@@ -38,7 +39,7 @@ use crate::step::BrepModel;
 use crate::Tolerance;
 use num_rational::BigRational;
 use rayon::prelude::*;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 
 type Q = BigRational;
 
@@ -322,7 +323,7 @@ fn edge_pieces(e: &Edge) -> Result<Vec<RationalCurve<RealAlgebraic>>, String> {
 }
 
 /// The face as a [`JointFace`], or why not.
-fn joint_face(f: &Face) -> Result<JointFace<'_>, String> {
+fn joint_face<'a>(f: &'a Face, splines: &'a Splines<'a>) -> Result<JointFace<'a>, String> {
     match &f.surface.geometry {
         Geometry::Analytic(a) => match &a.closed_form {
             Some(c) => {
@@ -345,10 +346,14 @@ fn joint_face(f: &Face) -> Result<JointFace<'_>, String> {
                 f.surface.kind
             )),
         },
-        Geometry::BSpline(_) => Err(format!(
-            "{} face (certified measures on B-spline faces, certify::spline, do not converge within an edge's work cap yet)",
-            f.surface.kind
-        )),
+        Geometry::BSpline(_) => match splines.get(&f.id) {
+            Some(Ok(s)) => Ok(JointFace {
+                surface: JointSurface::Spline(Box::new(SplineField::new(s))),
+                same_sense: f.same_sense,
+            }),
+            Some(Err(why)) => Err(format!("{} face: {why}", f.surface.kind)),
+            None => Err(format!("{} face not read", f.surface.kind)),
+        },
         Geometry::NotConverted | Geometry::Invalid(_) => {
             Err(format!("{} face not converted", f.surface.kind))
         }
@@ -356,13 +361,36 @@ fn joint_face(f: &Face) -> Result<JointFace<'_>, String> {
 }
 
 /// Measure a shared or seam edge.
-fn measure(m: &BrepModel, e: &Edge, tol: &JointTolerances) -> Measured {
+/// The B-spline faces' surfaces by face id, or why not.
+type Splines<'a> = HashMap<u64, Result<SplineSurface<'a>, String>>;
+
+/// The surface of every B-spline face of `m`, its pieces enclosed at
+/// first use by any of its edges.
+fn spline_surfaces(m: &BrepModel) -> Splines<'_> {
+    m.faces
+        .values()
+        .filter_map(|f| match &f.surface.geometry {
+            Geometry::BSpline(b) => Some((
+                f.id,
+                match b.nurbs() {
+                    Nurbs::Surface(s) => {
+                        SplineSurface::new(s, b.pieces()).map_err(|e| e.to_string())
+                    }
+                    Nurbs::Curve(_) => Err("its geometry is a curve".into()),
+                },
+            )),
+            _ => None,
+        })
+        .collect()
+}
+
+fn measure(m: &BrepModel, splines: &Splines<'_>, e: &Edge, tol: &JointTolerances) -> Measured {
     let faces = || -> Result<[JointFace<'_>; 2], String> {
         let face = |id: &u64| {
             m.faces
                 .get(id)
                 .ok_or_else(|| format!("face #{id} not read"))
-                .and_then(joint_face)
+                .and_then(|f| joint_face(f, splines))
         };
         Ok([face(&e.used_by[0])?, face(&e.used_by[1])?])
     };
@@ -384,6 +412,7 @@ const EDGE_BATCH: usize = 64;
 
 /// [`measure`] every edge of `edges`, in order, in parallel batches.
 fn measure_all(m: &BrepModel, edges: &[&Edge], tol: &JointTolerances) -> Vec<Measured> {
+    let splines = spline_surfaces(m);
     let outer = limits::current();
     let mut out = Vec::with_capacity(edges.len());
     for batch in edges.chunks(EDGE_BATCH) {
@@ -394,7 +423,7 @@ fn measure_all(m: &BrepModel, edges: &[&Edge], tol: &JointTolerances) -> Vec<Mea
         };
         let runs: Vec<_> = batch
             .par_iter()
-            .map(|e| limits::detached(cap, || measure(m, e, tol)))
+            .map(|e| limits::detached(cap, || measure(m, &splines, e, tol)))
             .collect();
         for run in runs {
             limits::absorb(&run);

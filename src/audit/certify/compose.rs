@@ -181,7 +181,9 @@ pub fn distance_bound(c: &[Scaled], s: &[Scaled]) -> Option<f64> {
         if e.lo.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
-        let sq = diff.iter().fold(Interval::point(0.0), |a, d| a.add(&d[l].sqr()));
+        let sq = diff
+            .iter()
+            .fold(Interval::point(0.0), |a, d| a.add(&d[l].sqr()));
         let ratio = sq.sqrt()?.div(&Interval::point(e.lo))?;
         bound = bound.max(ratio.hi);
     }
@@ -212,11 +214,12 @@ pub fn interpolate(values: &[f64]) -> Option<Vec<f64>> {
         if a[col][col] == 0.0 {
             return None;
         }
-        for r in 0..=k {
+        let pivot_row = a[col].clone();
+        for (r, row) in a.iter_mut().enumerate() {
             if r != col {
-                let f = a[r][col] / a[col][col];
-                for c in col..=k + 1 {
-                    a[r][c] -= f * a[col][c];
+                let f = row[col] / pivot_row[col];
+                for (x, p) in row[col..].iter_mut().zip(&pivot_row[col..]) {
+                    *x -= f * p;
                 }
             }
         }

@@ -48,23 +48,6 @@ pub trait DistanceField {
     ) -> Option<IMat3> {
         self.normal_jacobian(&sub(p, &scale(normal, signed)))
     }
-
-    /// A length `e ≥ 0` such that along a piece `T` of an edge `C` the
-    /// surface is nowhere farther from `C(t)` than `|s(C(t))| + e`: 0 for a
-    /// surface that has a foot point for every point near it (the default:
-    /// the closed forms, unbounded), and for a bounded surface the way back
-    /// from a foot on its continuation to the surface itself. `mid` is
-    /// `C(t_m)`, `over` and `velocity` enclose `C(T)` and `C'(T)`, and
-    /// `dt = T − t_m`. `None` where not proved.
-    fn border_excess(
-        &self,
-        _mid: &[Interval],
-        _over: &[Interval],
-        _velocity: &[Interval],
-        _dt: Interval,
-    ) -> Option<f64> {
-        Some(0.0)
-    }
 }
 
 /// `J v`.

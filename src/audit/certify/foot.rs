@@ -42,12 +42,7 @@ pub fn newton<S: Jets + ?Sized>(patch: &S, c: &[Interval], start: [f64; 2]) -> O
     let far = patch.reach();
     let mut g = start;
     for _ in 0..40 {
-        let (f, j) = system(
-            &patch
-                .jet(Interval::point(g[0]), Interval::point(g[1]))
-                .ok()?,
-            c,
-        );
+        let (f, j) = system(&patch.approximate_jet(g[0], g[1]).ok()?, c);
         let y = mid_inverse(&j)?;
         let f = f.map(|x| x.mid());
         let step = [

@@ -37,6 +37,17 @@ pub trait Jets {
     /// reaches 0, the box leaves where the surface is defined).
     fn jet(&self, u: Interval, v: Interval) -> Result<PatchJet, Error>;
 
+    /// `S` and its derivatives near `(u, v)` in `f64` arithmetic: *not*
+    /// an enclosure, only Newton's guesses take it. By default the jet
+    /// over the point.
+    ///
+    /// # Errors
+    ///
+    /// Those of [`Jets::jet`].
+    fn approximate_jet(&self, u: f64, v: f64) -> Result<PatchJet, Error> {
+        self.jet(Interval::point(u), Interval::point(v))
+    }
+
     /// The parameter domain `[[u₀, u₁], [v₀, v₁]]`.
     fn domain(&self) -> [[f64; 2]; 2];
 
@@ -51,6 +62,10 @@ pub trait Jets {
 impl Jets for IPatch {
     fn jet(&self, u: Interval, v: Interval) -> Result<PatchJet, Error> {
         IPatch::jet(self, u, v)
+    }
+
+    fn approximate_jet(&self, u: f64, v: f64) -> Result<PatchJet, Error> {
+        IPatch::approximate_jet(self, u, v)
     }
 
     fn domain(&self) -> [[f64; 2]; 2] {

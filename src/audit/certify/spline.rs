@@ -18,13 +18,15 @@
 //! **Beyond the border.** An edge along a face's border has foot points a
 //! rounding error on either side of it. The surface is continued past its
 //! border by its border pieces' own polynomials (a box may reach a quarter
-//! of the border piece's span beyond it). A distance measured at a foot
-//! point outside the domain is to the continuation;
-//! [`DistanceField::border_excess`] bounds how much farther the surface
-//! itself can be: with `σ = (u, v)` the foot and `σ̄` its clamp into the
-//! domain, `|S(σ) − S(σ̄)| ≤ max|S_u| |u − ū| + max|S_v| |v − v̄|`, and
-//! along a piece `T` of an edge `C` the foot is enclosed tightly by the
-//! mean-value form `σ(T) ⊆ σ(t_m) + (∂σ/∂P · C'(T)) (T − t_m)`.
+//! of the border piece's span beyond it), so that such feet are proved;
+//! the distance, normal and curvature there are those of the continuation.
+//!
+//! **Gaps by composition.** The distance from an edge to the face itself
+//! is bounded by [`SplineField::gap_over`]: `|C − S∘p|` for a cubic `p` in
+//! the face's parameters fitted to the edge's feet and clamped into the
+//! domain (see [`super::compose`]). Being the distance to points of the
+//! face, it needs no foot proved and holds at the border; its error
+//! shrinks like the fourth power of the edge piece's length.
 //!
 //! **Foot points.** For a box `P` of points the foot `σ(P)` solves the
 //! foot-point system ([`super::krawczyk`]) in the surface's parameters:
@@ -42,7 +44,7 @@
 //!
 //! ```
 //! use exact_bezier::audit::certify::field::DistanceField;
-//! use exact_bezier::audit::certify::spline::SplineField;
+//! use exact_bezier::audit::certify::spline::{SplineField, SplineSurface};
 //! use exact_bezier::algebra::Interval;
 //! use exact_bezier::hpoint::HPoint;
 //! use exact_bezier::nurbs::{Knots, NurbsSurface, Nurbs};
@@ -55,7 +57,8 @@
 //! let net = vec![vec![pt(0, 0), pt(0, 1)], vec![pt(1, 0), pt(1, 1)], vec![pt(2, 0), pt(2, 1)]];
 //! let s = NurbsSurface::new(u, v, net).unwrap();
 //! let pieces = Nurbs::Surface(s.clone()).pieces();
-//! let field = SplineField::new(&s, &pieces).unwrap();
+//! let surface = SplineSurface::new(&s, &pieces).unwrap();
+//! let field = SplineField::new(&surface);
 //! // A point 1/8 above the plane, over the first piece.
 //! let p = [0.5, 0.5, 0.125].map(Interval::point);
 //! let d = field.distance(&p).unwrap();
@@ -66,8 +69,9 @@
 //! assert!(field.distance(&[1.0, 0.5, 0.125].map(Interval::point)).is_none());
 //! ```
 
-use super::bezier::{IPatch, PatchJet};
+use super::bezier::{ICurve, IPatch, PatchJet};
 use super::closed_form::Distance;
+use super::compose::{compose, distance_bound, interpolate, scale as scaled_form, Scaled};
 use super::field::{DistanceField, IMat3};
 use super::foot::{derivative, newton};
 use super::ivec::{add, cross, dot, norm2, scale, sub, IVec};
@@ -81,8 +85,9 @@ use crate::patch::Patch;
 use crate::rect::RectPatch;
 use num_rational::BigRational;
 use num_traits::ToPrimitive;
-use std::cell::{Cell, OnceCell, RefCell};
+use std::cell::{Cell, RefCell};
 use std::rc::Rc;
+use std::sync::OnceLock;
 
 type Q = BigRational;
 
@@ -98,6 +103,20 @@ const SEEDS: usize = 5;
 /// audit of wavy-cube.stp: about 100 000 jets in 4 s), 10 ns a unit, near
 /// the cost model's mean of 7 ns a unit (docs/limits.md).
 const JET_WORK: u64 = 250;
+
+/// The degree of the curves `p` in the surface's parameters that
+/// [`SplineField::gap_over`] fits to the feet of an edge.
+const FIT_DEGREE: usize = 3;
+
+/// Work units charged per control point of a piece composed with a fitted
+/// curve (a bicubic composition with a cubic makes about 6 000 interval
+/// products, near a jet's cost).
+const COMPOSE_WORK: u64 = 250;
+
+/// The `j`-th of the [`FIT_DEGREE`]` + 1` equally spaced parameters of `t`.
+fn node(t: Interval, j: usize) -> f64 {
+    t.lo + (t.hi - t.lo) * j as f64 / FIT_DEGREE as f64
+}
 
 /// One parameter direction of the surface: the knots bounding its pieces
 /// and the smoothness across them.
@@ -136,6 +155,16 @@ impl Axis {
             breaks: enclosed,
             smooth,
         }
+    }
+
+    /// The piece whose span holds `x` (the first or last for `x` beyond
+    /// the border).
+    fn index(&self, x: f64) -> usize {
+        let above = self.breaks[1..self.breaks.len() - 1]
+            .iter()
+            .take_while(|b| b.mid() <= x)
+            .count();
+        above.min(self.breaks.len() - 2)
     }
 
     /// `[b₀, b_n]`.
@@ -178,8 +207,6 @@ impl Axis {
 /// from it.
 #[derive(Clone, Debug)]
 struct FootBox {
-    /// The box of `(u, v)` holding the foot of every point.
-    uv: [Interval; 2],
     /// The surface's jet over `uv`.
     jet: PatchJet,
     /// `s` and `N`.
@@ -191,19 +218,27 @@ struct FootBox {
 /// A box of points, by the bits of its ends, and its foot box if proved.
 type Remembered = (Vec<[u64; 2]>, Option<Rc<FootBox>>);
 
-/// A B-spline surface seen from the points around it (see the module
-/// documentation).
-#[derive(Clone, Debug)]
-pub struct SplineField<'a> {
+/// A B-spline surface held for certified measures: its pieces on the
+/// grid of knot spans, enclosed at first use. Shared by the fields of
+/// every edge of its face (and across threads).
+#[derive(Debug)]
+pub struct SplineSurface<'a> {
     axes: [Axis; 2],
     /// The pieces by `(i, j)`: `grid[i·n_v + j]`.
     grid: Vec<&'a RectPatch<Q>>,
     /// Their enclosures, made at first use (`None`: a weight not proved
     /// positive).
-    enclosed: Vec<OnceCell<Option<IPatch>>>,
+    enclosed: Vec<OnceLock<Option<IPatch>>>,
     /// Points of every piece with their parameters: Newton's starts when
     /// no nearby foot is known.
-    seeds: OnceCell<Vec<([f64; 3], [f64; 2])>>,
+    seeds: OnceLock<Vec<([f64; 3], [f64; 2])>>,
+}
+
+/// A B-spline surface seen from the points around it (see the module
+/// documentation): the surface, and what one edge's measures remember.
+#[derive(Clone, Debug)]
+pub struct SplineField<'a> {
+    surface: &'a SplineSurface<'a>,
     /// The last foot found.
     guess: Cell<Option<[f64; 2]>>,
     /// The last boxes of points asked for, by their bits, and their feet.
@@ -220,15 +255,18 @@ fn index_of(breaks: &[Q], x: &Q) -> Result<usize, Error> {
         .map_err(|_| Error::Shape("a Bézier piece's span is not between knots".into()))
 }
 
-impl<'a> SplineField<'a> {
-    /// The field of the surface `s` whose Bézier pieces with their spans are
+impl<'a> SplineSurface<'a> {
+    /// The surface `s` whose Bézier pieces with their spans are
     /// `pieces` (as [`crate::nurbs::Nurbs::pieces`] gives them).
     ///
     /// # Errors
     ///
     /// [`Error::Shape`] unless the pieces are rectangular patches tiling a
     /// grid of spans, one per cell.
-    pub fn new(s: &NurbsSurface<Q>, pieces: &'a [SpannedPatch]) -> Result<SplineField<'a>, Error> {
+    pub fn new(
+        s: &NurbsSurface<Q>,
+        pieces: &'a [SpannedPatch],
+    ) -> Result<SplineSurface<'a>, Error> {
         let spans = |pick: fn(&SpannedPatch) -> Option<&[Q; 2]>| -> Result<Vec<Q>, Error> {
             let mut b: Vec<Q> = Vec::new();
             for p in pieces {
@@ -262,14 +300,11 @@ impl<'a> SplineField<'a> {
             .collect::<Option<Vec<_>>>()
             .ok_or_else(|| Error::Shape("a knot span with no Bézier piece".into()))?;
         let (ku, kv) = s.knots();
-        Ok(SplineField {
+        Ok(SplineSurface {
             axes: [Axis::new(&bu, ku), Axis::new(&bv, kv)],
-            enclosed: grid.iter().map(|_| OnceCell::new()).collect(),
+            enclosed: grid.iter().map(|_| OnceLock::new()).collect(),
             grid,
-            seeds: OnceCell::new(),
-            guess: Cell::new(None),
-            recent: RefCell::new(Vec::new()),
-            last_point: RefCell::new(None),
+            seeds: OnceLock::new(),
         })
     }
 
@@ -280,7 +315,7 @@ impl<'a> SplineField<'a> {
     /// Piece `k`, enclosed.
     fn piece(&self, k: usize) -> Result<&IPatch, Error> {
         self.enclosed[k]
-            .get_or_init(|| IPatch::new(self.grid[k]).ok())
+            .get_or_init(|| IPatch::with_enclosed_derivatives(self.grid[k]).ok())
             .as_ref()
             .ok_or_else(|| {
                 Error::Domain("a B-spline piece whose weights are not proved positive".into())
@@ -319,13 +354,32 @@ impl<'a> SplineField<'a> {
         })
     }
 
-    /// The parameters of the seed nearest to `c`.
-    fn nearest_seed(&self, c: &[Interval]) -> Option<[f64; 2]> {
-        let d = |x: &[f64; 3]| -> f64 { x.iter().zip(c).map(|(a, b)| (a - b.mid()).powi(2)).sum() };
+    /// The parameters of the seed nearest to `c`, with its squared
+    /// distance.
+    fn nearest_seed(&self, c: &[Interval]) -> Option<([f64; 2], f64)> {
         self.seeds()
             .iter()
-            .min_by(|a, b| d(&a.0).total_cmp(&d(&b.0)))
-            .map(|s| s.1)
+            .map(|s| (s.1, squared_distance(&s.0, c)))
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+    }
+
+    /// The piece (its index in the grid) whose span holds the parameters
+    /// `g`, the border pieces holding what lies beyond the border.
+    fn cell(&self, g: [f64; 2]) -> usize {
+        let [i, j] = [0, 1].map(|k| self.axes[k].index(g[k]));
+        i * self.columns() + j
+    }
+}
+
+impl<'a> SplineField<'a> {
+    /// The field of `surface`, remembering nothing yet.
+    pub fn new(surface: &'a SplineSurface<'a>) -> SplineField<'a> {
+        SplineField {
+            surface,
+            guess: Cell::new(None),
+            recent: RefCell::new(Vec::new()),
+            last_point: RefCell::new(None),
+        }
     }
 
     /// The foot box of the points `p`, remembered among the last few.
@@ -347,11 +401,7 @@ impl<'a> SplineField<'a> {
     /// operator maps a box `g ± r` into its interior.
     fn prove_foot(&self, p: &[Interval]) -> Option<FootBox> {
         let c: IVec = p.iter().map(|x| Interval::point(x.mid())).collect();
-        let g = match self.guess.get().and_then(|g| newton(self, &c, g)) {
-            Some(g) => g,
-            None => newton(self, &c, self.nearest_seed(&c)?)?,
-        };
-        self.guess.set(Some(g));
+        let g = self.foot_f64(&c)?;
         let at = self
             .jet(Interval::point(g[0]), Interval::point(g[1]))
             .ok()?;
@@ -380,6 +430,149 @@ impl<'a> SplineField<'a> {
         None
     }
 
+    /// An `f64` foot of the point `c` by Newton: from the last foot found,
+    /// else from the nearest seed.
+    fn foot_f64(&self, c: &[Interval]) -> Option<[f64; 2]> {
+        let near = |g: [f64; 2]| -> Option<([f64; 2], f64)> {
+            let x = self.approximate_jet(g[0], g[1]).ok()?.x;
+            let x: Vec<f64> = x.iter().map(Interval::mid).collect();
+            Some((g, squared_distance(&[x[0], x[1], x[2]], c)))
+        };
+        let seed = self.surface.nearest_seed(c)?;
+        let from_guess = self.guess.get().and_then(|g| near(newton(self, c, g)?));
+        // A foot farther than the nearest seed is another stationary point.
+        let g = match from_guess {
+            Some((g, d)) if d <= seed.1 => g,
+            other => {
+                let from_seed = newton(self, c, seed.0).and_then(near);
+                match (other, from_seed) {
+                    (Some(a), Some(b)) => {
+                        if a.1 <= b.1 {
+                            a.0
+                        } else {
+                            b.0
+                        }
+                    }
+                    (a, b) => a.or(b)?.0,
+                }
+            }
+        };
+        self.guess.set(Some(g));
+        Some(g)
+    }
+
+    /// A proved upper bound of the distance from every point of `curve`
+    /// over `t` to the surface within its domain: `|C − S∘p|` bounded by
+    /// [`distance_bound`] for a cubic `p` through the `f64` feet at four
+    /// equally spaced parameters, its control points clamped into the
+    /// piece most of them lie in (see [`super::compose`]). Where the feet
+    /// cross a knot line, `t` is cut where they cross it (found in `f64`;
+    /// any cut is valid) and each side bounded on its own piece. `None`
+    /// when a foot is not found or the bound is not finite (the caller
+    /// splits `t`).
+    pub fn gap_over(&self, curve: &ICurve, t: Interval) -> Option<f64> {
+        let feet = self.feet_along(curve, t)?;
+        let cells: Vec<usize> = feet.iter().map(|g| self.surface.cell(*g)).collect();
+        let Some(j) = cells.windows(2).position(|w| w[0] != w[1]) else {
+            return self.composed(curve, t, &feet, cells[0]);
+        };
+        let x = self.crossing(curve, node(t, j), node(t, j + 1), [feet[j], feet[j + 1]])?;
+        let part = |part: Interval| {
+            let feet = self.feet_along(curve, part)?;
+            self.composed(curve, part, &feet, self.common_cell(&feet))
+        };
+        let left = part(Interval { lo: t.lo, hi: x })?;
+        Some(left.max(part(Interval { lo: x, hi: t.hi })?))
+    }
+
+    /// The `f64` feet of the curve at the [`FIT_DEGREE`]` + 1` equally
+    /// spaced parameters of `t`.
+    fn feet_along(&self, curve: &ICurve, t: Interval) -> Option<Vec<[f64; 2]>> {
+        (0..=FIT_DEGREE)
+            .map(|j| self.foot_f64(&curve.approximate_point(node(t, j))?))
+            .collect()
+    }
+
+    /// The piece most of `feet` lie in (ties: the first).
+    fn common_cell(&self, feet: &[[f64; 2]]) -> usize {
+        let cells: Vec<usize> = feet.iter().map(|g| self.surface.cell(*g)).collect();
+        let count = |c: &usize| cells.iter().filter(|x| *x == c).count();
+        cells
+            .iter()
+            .copied()
+            .rev()
+            .max_by_key(count)
+            .expect("feet at four parameters")
+    }
+
+    /// Where between `a` and `b` the feet (`ends`, in different pieces)
+    /// cross the first knot line between their pieces: regula falsi
+    /// (Illinois) on the foot's parameter minus the knot, in `f64`.
+    fn crossing(&self, curve: &ICurve, a: f64, b: f64, ends: [[f64; 2]; 2]) -> Option<f64> {
+        let [i, j] = ends.map(|g| [0, 1].map(|k| self.surface.axes[k].index(g[k])));
+        let k = usize::from(i[0] == j[0]);
+        let knot = self.surface.axes[k].breaks[i[k].max(j[k])].mid();
+        let (mut x, mut fx) = ([a, b], [ends[0][k] - knot, ends[1][k] - knot]);
+        let mut side = 2;
+        for _ in 0..30 {
+            if fx[0] == fx[1] {
+                break;
+            }
+            let m = x[1] - fx[1] * (x[1] - x[0]) / (fx[1] - fx[0]);
+            if !(m > x[0].min(x[1]) && m < x[0].max(x[1])) {
+                break;
+            }
+            let fm = self.foot_f64(&curve.approximate_point(m)?)?[k] - knot;
+            let keep = usize::from(fm.signum() == fx[1].signum());
+            x[keep] = m;
+            fx[keep] = fm;
+            if side == keep {
+                fx[1 - keep] /= 2.0;
+            }
+            side = keep;
+            if fm == 0.0 || (x[1] - x[0]).abs() < 1e-15 * (1.0 + x[0].abs()) {
+                break;
+            }
+        }
+        let m = if fx[0].abs() < fx[1].abs() {
+            x[0]
+        } else {
+            x[1]
+        };
+        m.is_finite().then_some(m)
+    }
+
+    /// [`distance_bound`] of the curve over `t` against `S∘p` on piece
+    /// `cell`, `p` the cubic through `feet` in the piece's local
+    /// parameters with its control points clamped into `[0, 1]²`.
+    fn composed(&self, curve: &ICurve, t: Interval, feet: &[[f64; 2]], cell: usize) -> Option<f64> {
+        let ij = [cell / self.surface.columns(), cell % self.surface.columns()];
+        let fit = |k: usize| -> Option<Vec<f64>> {
+            let (a, b) = (
+                self.surface.axes[k].breaks[ij[k]].mid(),
+                self.surface.axes[k].breaks[ij[k] + 1].mid(),
+            );
+            let local: Vec<f64> = feet.iter().map(|g| (g[k] - a) / (b - a)).collect();
+            Some(
+                interpolate(&local)?
+                    .iter()
+                    .map(|x| x.clamp(0.0, 1.0))
+                    .collect(),
+            )
+        };
+        let (u, v) = (fit(0)?, fit(1)?);
+        let patch = self.surface.piece(cell).ok()?;
+        let points = self.surface.grid[cell].ctrl().len() * self.surface.grid[cell].ctrl()[0].len();
+        limits::charge(
+            "a B-spline face's composition",
+            COMPOSE_WORK * points as u64,
+        )
+        .ok()?;
+        let s = compose(&patch.homogeneous(), &u, &v);
+        let c: Vec<Scaled> = curve.piece_over(t).iter().map(|x| scaled_form(x)).collect();
+        distance_bound(&c, &s)
+    }
+
     /// Shrink a proved box by two Krawczyk steps, then take `s`, `N` and
     /// `∂σ/∂P` over it.
     fn finish(&self, p: &[Interval], mut b: [Interval; 2]) -> Option<FootBox> {
@@ -406,12 +599,16 @@ impl<'a> SplineField<'a> {
         let normal: IVec = n.iter().map(|x| x.div(&length)).collect::<Option<_>>()?;
         let signed = dot(&sub(p, &jet.x), &normal);
         Some(FootBox {
-            uv: b,
             jet,
             distance: Distance { signed, normal },
             gradient,
         })
     }
+}
+
+/// `|x − c|²` in `f64`, `c` by its midpoints.
+fn squared_distance(x: &[f64; 3], c: &[Interval]) -> f64 {
+    x.iter().zip(c).map(|(a, b)| (a - b.mid()).powi(2)).sum()
 }
 
 /// `H(s, t)` of a net of exact homogeneous points, in `f64` (de
@@ -489,13 +686,29 @@ impl Jets for SplineField<'_> {
         Ok(jet)
     }
 
+    /// The jet of the piece whose span holds `(u, v)` (the border pieces
+    /// beyond the border), in its local parameters, derivatives scaled.
+    fn approximate_jet(&self, u: f64, v: f64) -> Result<PatchJet, Error> {
+        let cell = self.surface.cell([u, v]);
+        let ij = [cell / self.surface.columns(), cell % self.surface.columns()];
+        let [(lu, su), (lv, sv)] = [0, 1].map(|k| {
+            let (a, b) = (
+                self.surface.axes[k].breaks[ij[k]].mid(),
+                self.surface.axes[k].breaks[ij[k] + 1].mid(),
+            );
+            ((if k == 0 { u } else { v } - a) / (b - a), 1.0 / (b - a))
+        });
+        let jet = self.surface.piece(cell)?.approximate_jet(lu, lv)?;
+        Ok(scaled(jet, &Interval::point(su), &Interval::point(sv)))
+    }
+
     fn domain(&self) -> [[f64; 2]; 2] {
-        self.axes.each_ref().map(Axis::domain)
+        self.surface.axes.each_ref().map(Axis::domain)
     }
 
     /// The domain and the border pieces' reach beyond it.
     fn reach(&self) -> [[f64; 2]; 2] {
-        self.axes.each_ref().map(|a| {
+        self.surface.axes.each_ref().map(|a| {
             let [lo, hi] = a.domain();
             [lo - a.reach[0], hi + a.reach[1]]
         })
@@ -509,16 +722,16 @@ impl SplineField<'_> {
         let refused = || {
             Error::Domain("a box beyond a B-spline surface's border, or across a C⁰ knot".into())
         };
-        let pu = self.axes[0].parts(u).ok_or_else(refused)?;
-        let pv = self.axes[1].parts(v).ok_or_else(refused)?;
-        let nv = self.columns();
+        let pu = self.surface.axes[0].parts(u).ok_or_else(refused)?;
+        let pv = self.surface.axes[1].parts(v).ok_or_else(refused)?;
+        let nv = self.surface.columns();
         let mut out: Option<PatchJet> = None;
         for (i, lu, su) in &pu {
             for (j, lv, sv) in &pv {
-                let patch = self.grid[i * nv + j];
+                let patch = self.surface.grid[i * nv + j];
                 let points = patch.ctrl().len() * patch.ctrl()[0].len();
                 limits::charge("a B-spline face's jet", JET_WORK * points as u64)?;
-                let jet = scaled(self.piece(i * nv + j)?.jet(*lu, *lv)?, su, sv);
+                let jet = scaled(self.surface.piece(i * nv + j)?.jet(*lu, *lv)?, su, sv);
                 out = Some(match out {
                     Some(o) => hull(&o, &jet),
                     None => jet,
@@ -527,13 +740,6 @@ impl SplineField<'_> {
         }
         out.ok_or_else(refused)
     }
-}
-
-/// How far `x` lies outside `[lo, hi]` at most (0 inside), rounded up.
-fn overshoot(x: &Interval, [lo, hi]: [f64; 2]) -> f64 {
-    let below = Interval::point(lo).sub(&Interval::point(x.lo)).hi;
-    let above = Interval::point(x.hi).sub(&Interval::point(hi)).hi;
-    below.max(above).max(0.0)
 }
 
 /// `∂σ/∂P = −F_σ⁻¹ F_P` over the jet `s` for the points `p`: its rows
@@ -590,41 +796,6 @@ impl DistanceField for SplineField<'_> {
         let f = self.foot(p)?;
         let gradient = foot_gradient(&f.jet, &f.jet.x)?;
         jacobian(&f.jet, &f.distance.normal, &gradient)
-    }
-
-    /// `max|S_u| · (how far u(T) is outside) + max|S_v| · (likewise v)`,
-    /// with `σ(T) ⊆ σ(t_m) + (∂σ/∂P(C(T)) · C'(T)) (T − t_m)`.
-    fn border_excess(
-        &self,
-        mid: &[Interval],
-        over: &[Interval],
-        velocity: &[Interval],
-        dt: Interval,
-    ) -> Option<f64> {
-        let (m, o) = (self.foot(mid)?, self.foot(over)?);
-        let domain = self.domain();
-        let feet: [Interval; 2] = std::array::from_fn(|k| {
-            let mean_value = m.uv[k].add(&dot(&o.gradient[k], velocity).mul(&dt));
-            mean_value.intersect(&o.uv[k]).unwrap_or(mean_value)
-        });
-        let out = [0, 1].map(|k| overshoot(&feet[k], domain[k]));
-        if out == [0.0, 0.0] {
-            return Some(0.0);
-        }
-        let way = [0, 1].map(|k| {
-            let [lo, hi] = domain[k];
-            let clamp = |x: f64| x.clamp(lo, hi);
-            feet[k].hull(&Interval {
-                lo: clamp(feet[k].lo),
-                hi: clamp(feet[k].hi),
-            })
-        });
-        let jet = self.jet(way[0], way[1]).ok()?;
-        let speed = |d: &IVec| norm2(d).sqrt().map(|x| x.hi);
-        let excess = Interval::point(speed(&jet.xu)?)
-            .mul(&Interval::point(out[0]))
-            .add(&Interval::point(speed(&jet.xv)?).mul(&Interval::point(out[1])));
-        excess.hi.is_finite().then_some(excess.hi)
     }
 }
 

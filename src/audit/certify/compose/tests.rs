@@ -22,7 +22,12 @@ fn twisted_cubic(delta: f64) -> Vec<Scaled> {
 
 /// The bilinear patch `(u, v, uv)`, rows along `u`.
 fn saddle() -> Vec<Vec<Interval>> {
-    let p = [[0.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 1.0]];
+    let p = [
+        [0.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 1.0],
+    ];
     (0..4)
         .map(|d| {
             p.iter()
