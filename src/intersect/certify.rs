@@ -24,6 +24,7 @@
 //! mit Fehlerschranken*, Computing 4 (1969) 187–201; Moore, Kearfott &
 //! Cloud, *Introduction to Interval Analysis* (2009), §8.
 
+use crate::algebra::interval_bernstein::bernstein_product;
 use crate::algebra::Interval;
 
 /// One planar curve: homogeneous control points `[x, y, w]` as boxes.
@@ -96,29 +97,6 @@ fn hull(v: &[Interval]) -> Interval {
             hi: h.hi.max(x.hi),
         },
     )
-}
-
-/// `C(n, k)` as an `f64` (exact for the degrees that occur).
-fn binomial(n: usize, k: usize) -> f64 {
-    (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
-}
-
-/// The Bernstein coefficients of the product of two Bernstein polynomials
-/// of degrees `p.len() − 1` and `q.len() − 1`:
-/// `c_m = Σ_{i+j=m} C(n₁,i) C(n₂,j) / C(n₁+n₂,m) · p_i q_j`.
-fn bernstein_product(p: &[Interval], q: &[Interval]) -> Vec<Interval> {
-    let (n1, n2) = (p.len() - 1, q.len() - 1);
-    (0..=n1 + n2)
-        .map(|m| {
-            let terms: Vec<Interval> = (m.saturating_sub(n2)..=m.min(n1))
-                .map(|i| {
-                    let k = binomial(n1, i) * binomial(n2, m - i) / binomial(n1 + n2, m);
-                    scale(k, &p[i].mul(&q[m - i]))
-                })
-                .collect();
-            terms[1..].iter().fold(terms[0], |acc, t| acc.add(t))
-        })
-        .collect()
 }
 
 /// An enclosure of `A'(s)` over a piece's parameter range of width

@@ -33,49 +33,8 @@
 //! `|C − S∘p| ≤ max_l |D_l| / e_l` over their Bernstein coefficients
 //! (the rational convex hull property, [`distance_bound`]).
 
+use crate::algebra::interval_bernstein::{binomials, mul, scale, unscale, Scaled};
 use crate::algebra::Interval;
-
-/// Polynomials in scaled Bernstein form (see the module documentation),
-/// one per homogeneous coordinate.
-pub type Scaled = Vec<Interval>;
-
-/// `C(n, i)` for `i = 0..=n`, enclosed (Pascal's triangle in interval
-/// arithmetic: exact while below 2⁵³).
-fn binomials(n: usize) -> Vec<Interval> {
-    let mut row = vec![Interval::point(1.0)];
-    for _ in 0..n {
-        let mut next = Vec::with_capacity(row.len() + 1);
-        next.push(Interval::point(1.0));
-        next.extend(row.windows(2).map(|w| w[0].add(&w[1])));
-        next.push(Interval::point(1.0));
-        row = next;
-    }
-    row
-}
-
-/// The scaled form of Bernstein coefficients `c`.
-pub fn scale(c: &[Interval]) -> Scaled {
-    let b = binomials(c.len() - 1);
-    c.iter().zip(&b).map(|(x, k)| x.mul(k)).collect()
-}
-
-/// The Bernstein coefficients of a scaled form (`None` never happens for
-/// a nonempty form: binomials are at least 1).
-pub fn unscale(c: &[Interval]) -> Option<Vec<Interval>> {
-    let b = binomials(c.len() - 1);
-    c.iter().zip(&b).map(|(x, k)| x.div(k)).collect()
-}
-
-/// The product of two scaled forms (a convolution).
-pub fn mul(a: &[Interval], b: &[Interval]) -> Scaled {
-    let mut out = vec![Interval::point(0.0); a.len() + b.len() - 1];
-    for (i, x) in a.iter().enumerate() {
-        for (j, y) in b.iter().enumerate() {
-            out[i + j] = out[i + j].add(&x.mul(y));
-        }
-    }
-    out
-}
 
 /// `Σ c_k f_k` of scaled forms of one degree.
 fn combination(terms: impl Iterator<Item = (Interval, Scaled)>, len: usize) -> Scaled {

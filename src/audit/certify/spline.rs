@@ -71,11 +71,12 @@
 
 use super::bezier::{ICurve, IPatch, PatchJet};
 use super::closed_form::Distance;
-use super::compose::{compose, distance_bound, interpolate, scale as scaled_form, Scaled};
+use super::compose::{compose, distance_bound, interpolate};
 use super::field::{DistanceField, IMat3};
 use super::foot::{derivative, newton};
 use super::ivec::{add, cross, dot, norm2, scale, sub, IVec};
 use super::krawczyk::{krawczyk, system, Jets};
+use crate::algebra::interval_bernstein::{scale as scaled_form, Scaled};
 use crate::algebra::Interval;
 use crate::error::Error;
 use crate::hpoint::HPoint;

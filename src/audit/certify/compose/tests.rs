@@ -1,4 +1,5 @@
 use super::*;
+use crate::algebra::interval_bernstein::{scale, unscale, Scaled};
 
 fn pts(c: &[f64]) -> Vec<Interval> {
     c.iter().map(|&x| Interval::point(x)).collect()
@@ -37,16 +38,21 @@ fn saddle() -> Vec<Vec<Interval>> {
         .collect()
 }
 
-#[test]
-fn the_saddle_along_u_t_v_t2_is_the_twisted_cubic() {
+/// The saddle composed with `u = t`, `v = t²` (as quadratics: `[0, ½, 1]`
+/// and `[0, 0, 1]`).
+fn saddle_along_t_t2() -> Vec<Scaled> {
     let coords = saddle();
     let net = NetRef {
         rows: 2,
         cols: 2,
         coords: &coords,
     };
-    // u = t and v = t² as quadratics: [0, ½, 1] and [0, 0, 1].
-    let s = compose(&net, &[0.0, 0.5, 1.0], &[0.0, 0.0, 1.0]);
+    compose(&net, &[0.0, 0.5, 1.0], &[0.0, 0.0, 1.0])
+}
+
+#[test]
+fn the_saddle_along_u_t_v_t2_is_the_twisted_cubic() {
+    let s = saddle_along_t_t2();
     // Degree (1 + 1)·2 = 4; the quartic blossoms of t, t², t³ and 1.
     let want: [fn(f64) -> f64; 4] = [
         |i| i / 4.0,
@@ -66,13 +72,7 @@ fn the_saddle_along_u_t_v_t2_is_the_twisted_cubic() {
 
 #[test]
 fn a_curve_delta_above_the_saddle_is_bounded_by_delta() {
-    let coords = saddle();
-    let net = NetRef {
-        rows: 2,
-        cols: 2,
-        coords: &coords,
-    };
-    let s = compose(&net, &[0.0, 0.5, 1.0], &[0.0, 0.0, 1.0]);
+    let s = saddle_along_t_t2();
     for delta in [0.0, 1e-7, 0.25] {
         let b = distance_bound(&twisted_cubic(delta), &s).unwrap();
         assert!(delta <= b && b <= delta + 1e-13, "{delta}: {b}");
