@@ -301,7 +301,10 @@ fn curve_jets(curve: &ICurve, t: Interval) -> Result<(CurveJet, CurveJet, Interv
 /// mean-value form, intersected with the Taylor form of order 2 where the
 /// face's normal Jacobian is enclosed).
 fn side(field: &dyn DistanceField, cm: &CurveJet, co: &CurveJet, dt: Interval) -> Option<Side> {
-    let (mid, over) = (field.distance(&cm.x)?, field.distance(&co.x)?);
+    // Over `T` first: where it is not proved, the point at `t_m` is not
+    // needed.
+    let over = field.distance(&co.x)?;
+    let mid = field.distance(&cm.x)?;
     let mean_value = mid.signed.add(&dot(&over.normal, &co.dx).mul(&dt));
     let signed = match field.normal_jacobian(&co.x) {
         // g(t) = s(C(t)): g' = n̂·C', g'' = C'ᵀ J C' + n̂·C''.

@@ -105,6 +105,16 @@ const SEEDS: usize = 5;
 /// the cost model's mean of 7 ns a unit (docs/limits.md).
 const JET_WORK: u64 = 250;
 
+/// The most pieces along each axis a foot box may meet.
+const FOOT_PIECES: usize = 2;
+
+/// A first foot box's half-widths, in units of the foot's linearized
+/// spread over the box of points ([`spread`]).
+const START_SPREAD: f64 = 1.5;
+
+/// How many times a foot box is doubled before the foot is given up.
+const INFLATIONS: usize = 8;
+
 /// The degree of the curves `p` in the surface's parameters that
 /// [`SplineField::gap_over`] fits to the feet of an edge.
 const FIT_DEGREE: usize = 3;
@@ -366,6 +376,16 @@ impl<'a> SplineSurface<'a> {
 
     /// The piece (its index in the grid) whose span holds the parameters
     /// `g`, the border pieces holding what lies beyond the border.
+    /// Does the box `b` meet at most [`FOOT_PIECES`] pieces along each
+    /// axis, within the border's reach?
+    fn few_pieces(&self, b: [Interval; 2]) -> bool {
+        (0..2).all(|k| {
+            self.axes[k]
+                .parts(b[k])
+                .is_some_and(|p| p.len() <= FOOT_PIECES)
+        })
+    }
+
     fn cell(&self, g: [f64; 2]) -> usize {
         let [i, j] = [0, 1].map(|k| self.axes[k].index(g[k]));
         i * self.columns() + j
@@ -399,34 +419,33 @@ impl<'a> SplineField<'a> {
     }
 
     /// Newton for a guess, then ε-inflation (Rump) until Krawczyk's
-    /// operator maps a box `g ± r` into its interior.
+    /// operator maps a box `g ± r` into its interior: `r` starts at
+    /// [`START_SPREAD`] times the foot's linearized spread over `p` and
+    /// doubles, while the box meets at most [`FOOT_PIECES`] pieces per
+    /// axis (a wider box is not worth its jets: the caller splits `p`).
     fn prove_foot(&self, p: &[Interval]) -> Option<FootBox> {
         let c: IVec = p.iter().map(|x| Interval::point(x.mid())).collect();
         let g = self.foot_f64(&c)?;
-        let at = self
-            .jet(Interval::point(g[0]), Interval::point(g[1]))
-            .ok()?;
-        let width = p.iter().map(Interval::width).fold(0.0, f64::max);
+        let at = self.approximate_jet(g[0], g[1]).ok()?;
         let domain = self.domain();
-        let mut r = [&at.xu, &at.xv].map(|d| {
-            let speed = norm2(d).mid().sqrt();
-            (4.0 * width / speed).min(f64::MAX)
-        });
+        let mut r = spread(&at, p)?;
         for (k, rk) in r.iter_mut().enumerate() {
-            let scale = domain[k][1] - domain[k][0];
-            *rk = if rk.is_finite() { *rk } else { scale } + 1e-13 * scale;
+            *rk = START_SPREAD * *rk + 1e-13 * (domain[k][1] - domain[k][0]);
         }
-        for _ in 0..10 {
+        for _ in 0..INFLATIONS {
             let b = [0, 1].map(|k| Interval {
                 lo: g[k] - r[k],
                 hi: g[k] + r[k],
             });
+            if !self.surface.few_pieces(b) {
+                return None;
+            }
             if let Ok(Some(k)) = krawczyk(self, b, p) {
                 if b[0].interior_contains(&k[0]) && b[1].interior_contains(&k[1]) {
                     return self.finish(p, b);
                 }
             }
-            r = r.map(|x| 4.0 * x);
+            r = r.map(|x| 2.0 * x);
         }
         None
     }
@@ -605,6 +624,31 @@ impl<'a> SplineField<'a> {
             gradient,
         })
     }
+}
+
+/// How far, to first order, the foot moves in each parameter as the point
+/// ranges over the box `p`, from the `f64` jet `at` near the foot of its
+/// centre: `Σ_j |A_kj| h_j`, with `h` the box's half-widths and
+/// `A = (MᵀM)⁻¹Mᵀ` the least-squares inverse of `M = (S_u S_v)`; `None`
+/// where `MᵀM` is singular. An estimate only: Krawczyk's operator proves
+/// the box it starts.
+fn spread(at: &PatchJet, p: &[Interval]) -> Option<[f64; 2]> {
+    let m = [&at.xu, &at.xv].map(|d| d.iter().map(Interval::mid).collect::<Vec<f64>>());
+    let g = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
+    let (a, b, d) = (g(&m[0], &m[0]), g(&m[0], &m[1]), g(&m[1], &m[1]));
+    let det = a * d - b * b;
+    if !(det.is_finite() && det > 0.0) {
+        return None;
+    }
+    let inverse = [[d / det, -b / det], [-b / det, a / det]];
+    Some([0, 1].map(|k| {
+        (0..3)
+            .map(|j| {
+                let row = inverse[k][0] * m[0][j] + inverse[k][1] * m[1][j];
+                row.abs() * p[j].width() / 2.0
+            })
+            .sum()
+    }))
 }
 
 /// `|x − c|²` in `f64`, `c` by its midpoints.
