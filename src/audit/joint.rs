@@ -39,7 +39,8 @@ use super::certify::field::{apply, normal_curvature, DistanceField};
 use super::certify::gap::abs_lower;
 use super::certify::ivec::{add, cross, dot, norm2, scale, IVec};
 use super::certify::maximize::{maximize_until, Bound, Enclosure, Target};
-use super::certify::spline::SplineField;
+use super::certify::normal_path;
+use super::certify::spline::{curve_over, parts, NormalPath, SplineField};
 use super::certify::{ICurve, Verdict};
 use crate::algebra::{Interval, RealAlgebraic, Scalar};
 use crate::analytic::{cross as exact_cross, dot as exact_dot, Implicit};
@@ -148,6 +149,28 @@ enum Field<'s> {
 }
 
 impl Field<'_> {
+    /// Is the face's normal along an edge a polynomial
+    /// ([`Field::normal_path`])?
+    fn has_polynomial_normal(&self) -> bool {
+        match self {
+            Field::Closed(s) => s.has_polynomial_normal(),
+            Field::Spline(_) => true,
+        }
+    }
+
+    /// The face's normal along part `t` of the curve as a polynomial: a
+    /// closed form's at the foot points themselves (no slack), a B-spline's
+    /// by composition ([`SplineField::normal_over`]).
+    fn normal_path(&self, curve: &ICurve, t: Interval) -> Option<NormalPath> {
+        match self {
+            Field::Closed(s) => Some(NormalPath {
+                normal: s.normal_along(&curve_over(curve, t))?,
+                slack: 0.0,
+            }),
+            Field::Spline(s) => s.normal_over(curve, t),
+        }
+    }
+
     fn get(&self) -> &dyn DistanceField {
         match self {
             Field::Closed(s) => s,
@@ -515,6 +538,45 @@ fn spline_gap(
     })
 }
 
+/// The angle between the faces over piece `t` of `curve` from their
+/// normal paths ([`super::certify::normal_path`]), on each part between
+/// the knot lines the feet cross on either face: at most the paths' angle
+/// plus both slacks, at least its value at a part's midpoint less them.
+/// `reversed` when one face's orientation is opposite its surface's.
+/// `None` when a part is not proved (the caller splits `t`).
+fn composed_angle(
+    fields: [&Field<'_>; 2],
+    reversed: bool,
+    curve: &ICurve,
+    t: Interval,
+) -> Option<Bound> {
+    let mut cuts = Vec::new();
+    for f in fields {
+        if let Field::Spline(s) = f {
+            cuts.extend(s.cuts(curve, t)?);
+        }
+    }
+    cuts.sort_by(f64::total_cmp);
+    let mut bound = Bound {
+        upper: 0.0,
+        lower: 0.0,
+    };
+    for part in parts(t, &cuts) {
+        let [a, b] = [0, 1].map(|k| fields[k].normal_path(curve, part));
+        let (a, b) = (a?, b?);
+        let second = if reversed {
+            normal_path::reversed(&b.normal)
+        } else {
+            b.normal
+        };
+        let (upper, mid) = normal_path::angle_between(&a.normal, &second)?;
+        let slack = Interval::point(a.slack).add(&Interval::point(b.slack));
+        bound.upper = bound.upper.max(Interval::point(upper).add(&slack).hi);
+        bound.lower = bound.lower.max(Interval::point(mid.lo).sub(&slack).lo);
+    }
+    Some(bound)
+}
+
 /// The maximum over all the edge's curves of a measure bounded on piece
 /// `t` of curve `k` by `bound(k, curve, t)`, each curve's share of
 /// `work` its cap.
@@ -757,6 +819,20 @@ fn measure_capped(
     let angle = match within_cap(exact)? {
         Some(Some(true)) => Measure::Exact,
         Some(Some(false)) => fold(),
+        Some(None) if [&s0, &s1].iter().all(|f| f.has_polynomial_normal()) => {
+            let reversed = faces[0].same_sense != faces[1].same_sense;
+            settle(along_by(
+                &curves,
+                angular,
+                work,
+                |k, c, t| match composed_angle([&s0, &s1], reversed, c, t) {
+                    Some(b) => Ok(Some(b)),
+                    None => Ok(proved
+                        .around(k, c, fields, t)?
+                        .map(|a| angle_bound(&a, fields, signs))),
+                },
+            ))?
+        }
         Some(None) => settle(along(&curves, fields, &proved, (angular, work), |a| {
             Some(angle_bound(a, fields, signs))
         }))?,

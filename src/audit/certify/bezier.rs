@@ -418,12 +418,20 @@ impl IPatch {
 
     /// The enclosed homogeneous control net (rows along `u`).
     pub fn homogeneous(&self) -> NetRef<'_> {
-        let h = &self.nets[0];
-        NetRef {
-            rows: h.rows,
-            cols: h.cols,
-            coords: &h.coords,
-        }
+        let [h, ..] = self.first_order_nets();
+        h
+    }
+
+    /// The enclosed homogeneous nets of `H`, `H_u` and `H_v`.
+    pub fn first_order_nets(&self) -> [NetRef<'_>; 3] {
+        [0, 1, 2].map(|k| {
+            let h = &self.nets[k];
+            NetRef {
+                rows: h.rows,
+                cols: h.cols,
+                coords: &h.coords,
+            }
+        })
     }
 
     /// Enclose `r` (dimension 3) as [`IPatch::new`] does, but form the

@@ -56,7 +56,9 @@
 use super::field::{DistanceField, IMat3};
 use super::gap::abs_lower;
 use super::ivec::{add, dot, scale, sub, IVec};
+use super::normal_path::ScaledVec;
 use super::Enclose;
+use crate::algebra::interval_bernstein::Scaled;
 use crate::algebra::{Interval, Scalar};
 use crate::analytic::{ClosedForm, Implicit};
 
@@ -207,6 +209,61 @@ impl ISurface {
             &add(&scale(&self.axes[0], &v[0]), &scale(&self.axes[1], &v[1])),
             &scale(&self.axes[2], &v[2]),
         )
+    }
+
+    /// Is `n̂` a polynomial in the point, up to a positive factor (a
+    /// plane, cylinder or sphere; [`ISurface::normal_along`])?
+    pub fn has_polynomial_normal(&self) -> bool {
+        matches!(
+            self.kind,
+            Kind::Plane | Kind::Cylinder { .. } | Kind::Sphere { .. }
+        )
+    }
+
+    /// The foot normal `n̂(C(t))` times a positive polynomial, along the
+    /// curve whose homogeneous coordinates `(X, W)` are the scaled forms
+    /// `c` ([`super::normal_path`]): with `r = X − W o` (`o` the frame's
+    /// origin or the sphere's centre), the plane's `ẑ`, the cylinder's
+    /// radial part `(r·x̂) x̂ + (r·ŷ) ŷ` (`W ρ n̂`) and the sphere's `r`
+    /// (`W |P − C| n̂`); `None` for a cone or a torus, whose `n̂` is not a
+    /// polynomial in the point.
+    pub fn normal_along(&self, c: &[Scaled]) -> Option<ScaledVec> {
+        if !self.has_polynomial_normal() {
+            return None;
+        }
+        let r = |k: usize| -> Scaled {
+            c[k].iter()
+                .zip(&c[3])
+                .map(|(x, w)| x.sub(&w.mul(&self.origin[k])))
+                .collect()
+        };
+        let r = [r(0), r(1), r(2)];
+        let along = |e: &IVec| -> Scaled {
+            (0..c[3].len())
+                .map(|i| (0..3).fold(Interval::point(0.0), |a, k| a.add(&r[k][i].mul(&e[k]))))
+                .collect()
+        };
+        match self.kind {
+            Kind::Plane => Some(
+                self.axes[2]
+                    .iter()
+                    .map(|x| vec![*x])
+                    .collect::<Vec<_>>()
+                    .try_into()
+                    .ok()?,
+            ),
+            Kind::Cylinder { .. } => {
+                let (a, b) = (along(&self.axes[0]), along(&self.axes[1]));
+                Some([0, 1, 2].map(|k| {
+                    a.iter()
+                        .zip(&b)
+                        .map(|(x, y)| x.mul(&self.axes[0][k]).add(&y.mul(&self.axes[1][k])))
+                        .collect()
+                }))
+            }
+            Kind::Sphere { .. } => Some(r),
+            Kind::Cone { .. } | Kind::Torus { .. } => None,
+        }
     }
 }
 

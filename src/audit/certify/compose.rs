@@ -37,10 +37,10 @@ use crate::algebra::interval_bernstein::{binomials, mul, scale, unscale, Scaled}
 use crate::algebra::Interval;
 
 /// `Σ c_k f_k` of scaled forms of one degree.
-fn combination(terms: impl Iterator<Item = (Interval, Scaled)>, len: usize) -> Scaled {
+fn combination<'f>(terms: impl Iterator<Item = (Interval, &'f Scaled)>, len: usize) -> Scaled {
     let mut out = vec![Interval::point(0.0); len];
     for (c, f) in terms {
-        for (o, x) in out.iter_mut().zip(&f) {
+        for (o, x) in out.iter_mut().zip(f) {
             *o = o.add(&c.mul(x));
         }
     }
@@ -102,7 +102,7 @@ pub fn compose(net: &NetRef<'_>, u: &[f64], v: &[f64]) -> Vec<Scaled> {
         .map(|c| {
             let rows: Vec<Scaled> = (0..net.rows)
                 .map(|i| {
-                    let terms = (0..net.cols).map(|j| (c[i * net.cols + j], bv[j].clone()));
+                    let terms = (0..net.cols).map(|j| (c[i * net.cols + j], &bv[j]));
                     combination(terms, len_v)
                 })
                 .collect();

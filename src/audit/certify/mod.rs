@@ -57,6 +57,7 @@ pub mod krawczyk;
 pub mod local;
 pub mod maximize;
 pub mod measure;
+pub mod normal_path;
 pub mod spline;
 pub mod verdict;
 

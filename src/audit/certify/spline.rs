@@ -76,6 +76,7 @@ use super::field::{DistanceField, IMat3};
 use super::foot::{derivative, newton};
 use super::ivec::{add, cross, dot, norm2, scale, sub, IVec};
 use super::krawczyk::{krawczyk, system, Jets};
+use super::normal_path::{patch_normal, ScaledVec};
 use crate::algebra::interval_bernstein::{scale as scaled_form, Scaled};
 use crate::algebra::Interval;
 use crate::error::Error;
@@ -257,7 +258,13 @@ pub struct SplineField<'a> {
     /// The jet at the last parameter point asked for (Newton's last step
     /// is Krawczyk's first centre).
     last_point: RefCell<Option<([u64; 2], PatchJet)>>,
+    /// The last pieces of an edge whose feet were found, by the bits of
+    /// their ends, with the feet.
+    recent_feet: RefCell<Vec<RememberedFeet>>,
 }
+
+/// A piece of an edge, by the bits of its ends, and its feet if found.
+type RememberedFeet = ([u64; 2], Option<Vec<[f64; 2]>>);
 
 /// The index of `x` among the sorted `breaks`.
 fn index_of(breaks: &[Q], x: &Q) -> Result<usize, Error> {
@@ -400,6 +407,7 @@ impl<'a> SplineField<'a> {
             guess: Cell::new(None),
             recent: RefCell::new(Vec::new()),
             last_point: RefCell::new(None),
+            recent_feet: RefCell::new(Vec::new()),
         }
     }
 
@@ -485,32 +493,217 @@ impl<'a> SplineField<'a> {
     /// over `t` to the surface within its domain: `|C − S∘p|` bounded by
     /// [`distance_bound`] for a cubic `p` through the `f64` feet at four
     /// equally spaced parameters, its control points clamped into the
-    /// piece most of them lie in (see [`super::compose`]). Where the feet
-    /// cross a knot line, `t` is cut where they cross it (found in `f64`;
-    /// any cut is valid) and each side bounded on its own piece. `None`
-    /// when a foot is not found or the bound is not finite (the caller
-    /// splits `t`).
+    /// piece most of them lie in (see [`super::compose`]), on each part of
+    /// `t` between the [`SplineField::cuts`]. `None` when a foot is not
+    /// found or the bound is not finite (the caller splits `t`).
     pub fn gap_over(&self, curve: &ICurve, t: Interval) -> Option<f64> {
+        let cuts = self.cuts(curve, t)?;
+        let mut most = 0.0_f64;
+        for part in parts(t, &cuts) {
+            let fit = self.fit_over(curve, part)?;
+            self.charge_compositions(fit.cell, 1)?;
+            let s = compose(
+                &self.surface.piece(fit.cell).ok()?.homogeneous(),
+                &fit.u,
+                &fit.v,
+            );
+            most = most.max(distance_bound(&curve_over(curve, part), &s)?);
+        }
+        Some(most)
+    }
+
+    /// Where in `t` the curve's feet cross a knot line of the surface:
+    /// empty when the feet at the [`FIT_DEGREE`]` + 1` equally spaced
+    /// parameters lie in one piece, else the first crossing (found in
+    /// `f64`: any cut is valid, a good one only keeps each part's feet in
+    /// one piece). `None` when a foot is not found.
+    pub fn cuts(&self, curve: &ICurve, t: Interval) -> Option<Vec<f64>> {
         let feet = self.feet_along(curve, t)?;
         let cells: Vec<usize> = feet.iter().map(|g| self.surface.cell(*g)).collect();
         let Some(j) = cells.windows(2).position(|w| w[0] != w[1]) else {
-            return self.composed(curve, t, &feet, cells[0]);
+            return Some(Vec::new());
         };
         let x = self.crossing(curve, node(t, j), node(t, j + 1), [feet[j], feet[j + 1]])?;
-        let part = |part: Interval| {
-            let feet = self.feet_along(curve, part)?;
-            self.composed(curve, part, &feet, self.common_cell(&feet))
+        Some(if x > t.lo && x < t.hi {
+            vec![x]
+        } else {
+            Vec::new()
+        })
+    }
+
+    /// The face's normal along the curve over `t`, a part of an edge
+    /// between [`SplineField::cuts`]: the normal of `S` along the fitted
+    /// cubic `p` ([`super::normal_path::patch_normal`]), and how far, in
+    /// radians, it may turn from there to the normal at the foot points.
+    ///
+    /// With `g` the bound of `|C − S∘p|` over `t` and `Q` a box of
+    /// parameters around `p`'s control points where every `(S_u S_v)`
+    /// stretches by at least `σ` and the unit normal turns at most
+    /// `L = sup √(|N_u|² + |N_v|²)` per unit of parameter: the nearest
+    /// point `S(q)` to `C(t)` within `Q` is no farther than `S(p(t))`, so
+    /// `|S(q) − S(p)| ≤ 2g`, `|q − p| ≤ ε = 2g/σ` (mean value theorem), and
+    /// where `ε` is within `Q`'s margin `q` is a foot point (stationary,
+    /// inside `Q`) whose normal is within `L ε` radians of `p`'s (the
+    /// length of its path on the unit sphere). `None` when not proved.
+    pub fn normal_over(&self, curve: &ICurve, t: Interval) -> Option<NormalPath> {
+        let fit = self.fit_over(curve, t)?;
+        self.charge_compositions(fit.cell, 1)?;
+        let [h, hu, hv] = self.surface.piece(fit.cell).ok()?.first_order_nets();
+        let s = compose(&h, &fit.u, &fit.v);
+        let gap = distance_bound(&curve_over(curve, t), &s)?;
+        let slack = self.turn_near(&fit, gap)?;
+        self.charge_compositions(fit.cell, 2)?;
+        let normal = patch_normal(&s, &[hu, hv], &fit.u, &fit.v);
+        Some(NormalPath { normal, slack })
+    }
+
+    /// `L ε` of [`SplineField::normal_over`] for the fitted `p` and the
+    /// gap bound `gap`. `Q` is covered by boxes around the hulls of `p`'s
+    /// control points widened by a margin of `8 g / σ̃` (`σ̃` estimated in
+    /// `f64` at the centre: the margin holds `ε` while `σ ≥ σ̃/4`), halving
+    /// `p` where a box does not prove that much ([`SplineField::bounds_near`]).
+    fn turn_near(&self, fit: &Fit, gap: f64) -> Option<f64> {
+        let spans = [0, 1].map(|k| self.span(fit.cell, k));
+        let domain = self.domain();
+        let place = |c: [&[f64]; 2], margin: [f64; 2]| -> [Interval; 2] {
+            [0, 1].map(|k| {
+                let (lo, hi) = c[k]
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+                        (a.min(*x), b.max(*x))
+                    });
+                // f64 de Casteljau halves are within a few ulps of the
+                // true control points.
+                let local = Interval {
+                    lo: lo - 1e-14,
+                    hi: hi + 1e-14,
+                };
+                let (a, s) = spans[k];
+                let g = local.mul(&s).add(&a);
+                Interval {
+                    lo: g.lo - margin[k],
+                    hi: g.hi + margin[k],
+                }
+            })
         };
-        let left = part(Interval { lo: t.lo, hi: x })?;
-        Some(left.max(part(Interval { lo: x, hi: t.hi })?))
+        let centre = place([&fit.u, &fit.v], [0.0; 2]);
+        let estimate = least_stretch(
+            &self
+                .approximate_jet(centre[0].mid(), centre[1].mid())
+                .ok()?,
+        )?;
+        let margin = [0, 1].map(|k| 8.0 * gap / estimate + 1e-12 * (domain[k][1] - domain[k][0]));
+        let need = Interval::point(2.0)
+            .mul(&Interval::point(gap))
+            .div(&Interval::point(margin[0].min(margin[1])))?
+            .hi;
+        let (stretch, turn) =
+            self.bounds_near([&fit.u, &fit.v], &|c| place(c, margin), need, HALVINGS)?;
+        let eps = Interval::point(2.0)
+            .mul(&Interval::point(gap))
+            .div(&Interval::point(stretch))?;
+        let slack = Interval::point(turn).mul(&eps).hi;
+        slack.is_finite().then_some(slack)
+    }
+
+    /// The least stretch `σ` (at least `need`) and the greatest turn `L`
+    /// of the unit normal over the box `place(p)` of the curve `p` with
+    /// Bernstein coefficients `c`, or over the boxes of its halves (de
+    /// Casteljau) down to `depth` halvings; `None` when not proved.
+    fn bounds_near(
+        &self,
+        c: [&[f64]; 2],
+        place: &dyn Fn([&[f64]; 2]) -> [Interval; 2],
+        need: f64,
+        depth: usize,
+    ) -> Option<(f64, f64)> {
+        let q = place(c);
+        if let Ok(jet) = self.jet(q[0], q[1]) {
+            if let Some(stretch) = least_stretch(&jet).filter(|s| *s >= need) {
+                let [nu, nv] = normal_rates(&jet, &unit_normal(&jet)?)?;
+                return Some((stretch, norm2(&nu).add(&norm2(&nv)).sqrt()?.hi));
+            }
+        }
+        if depth == 0 {
+            return None;
+        }
+        let [(u0, u1), (v0, v1)] = c.map(halves);
+        let a = self.bounds_near([&u0, &v0], place, need, depth - 1)?;
+        let b = self.bounds_near([&u1, &v1], place, need, depth - 1)?;
+        Some((a.0.min(b.0), a.1.max(b.1)))
+    }
+
+    /// The start `a` of piece `cell`'s span along axis `k` and its length
+    /// `b − a`, enclosed.
+    fn span(&self, cell: usize, k: usize) -> (Interval, Interval) {
+        let i = if k == 0 {
+            cell / self.surface.columns()
+        } else {
+            cell % self.surface.columns()
+        };
+        let (a, b) = (
+            self.surface.axes[k].breaks[i],
+            self.surface.axes[k].breaks[i + 1],
+        );
+        (a, b.sub(&a))
+    }
+
+    /// Charge `count` compositions of piece `cell` with a fitted curve.
+    fn charge_compositions(&self, cell: usize, count: u64) -> Option<()> {
+        let net = self.surface.grid[cell].ctrl();
+        let points = (net.len() * net[0].len()) as u64;
+        limits::charge(
+            "a B-spline face's composition",
+            COMPOSE_WORK * points * count,
+        )
+        .ok()
+    }
+
+    /// The cubic `p` through the curve's feet over `t`, in the local
+    /// parameters of the piece most of them lie in, its control points
+    /// clamped into `[0, 1]²`.
+    fn fit_over(&self, curve: &ICurve, t: Interval) -> Option<Fit> {
+        let feet = self.feet_along(curve, t)?;
+        let cell = self.common_cell(&feet);
+        let ij = [cell / self.surface.columns(), cell % self.surface.columns()];
+        let fit = |k: usize| -> Option<Vec<f64>> {
+            let (a, b) = (
+                self.surface.axes[k].breaks[ij[k]].mid(),
+                self.surface.axes[k].breaks[ij[k] + 1].mid(),
+            );
+            let local: Vec<f64> = feet.iter().map(|g| (g[k] - a) / (b - a)).collect();
+            Some(
+                interpolate(&local)?
+                    .iter()
+                    .map(|x| x.clamp(0.0, 1.0))
+                    .collect(),
+            )
+        };
+        Some(Fit {
+            cell,
+            u: fit(0)?,
+            v: fit(1)?,
+        })
     }
 
     /// The `f64` feet of the curve at the [`FIT_DEGREE`]` + 1` equally
     /// spaced parameters of `t`.
+    /// The last few are remembered (the gap and the angle ask for the
+    /// same pieces).
     fn feet_along(&self, curve: &ICurve, t: Interval) -> Option<Vec<[f64; 2]>> {
-        (0..=FIT_DEGREE)
+        let key = [t.lo.to_bits(), t.hi.to_bits()];
+        if let Some((_, f)) = self.recent_feet.borrow().iter().find(|(k, _)| *k == key) {
+            return f.clone();
+        }
+        let feet: Option<Vec<[f64; 2]>> = (0..=FIT_DEGREE)
             .map(|j| self.foot_f64(&curve.approximate_point(node(t, j))?))
-            .collect()
+            .collect();
+        let mut recent = self.recent_feet.borrow_mut();
+        if recent.len() == RECENT {
+            recent.remove(0);
+        }
+        recent.push((key, feet.clone()));
+        feet
     }
 
     /// The piece most of `feet` lie in (ties: the first).
@@ -562,37 +755,6 @@ impl<'a> SplineField<'a> {
         m.is_finite().then_some(m)
     }
 
-    /// [`distance_bound`] of the curve over `t` against `S∘p` on piece
-    /// `cell`, `p` the cubic through `feet` in the piece's local
-    /// parameters with its control points clamped into `[0, 1]²`.
-    fn composed(&self, curve: &ICurve, t: Interval, feet: &[[f64; 2]], cell: usize) -> Option<f64> {
-        let ij = [cell / self.surface.columns(), cell % self.surface.columns()];
-        let fit = |k: usize| -> Option<Vec<f64>> {
-            let (a, b) = (
-                self.surface.axes[k].breaks[ij[k]].mid(),
-                self.surface.axes[k].breaks[ij[k] + 1].mid(),
-            );
-            let local: Vec<f64> = feet.iter().map(|g| (g[k] - a) / (b - a)).collect();
-            Some(
-                interpolate(&local)?
-                    .iter()
-                    .map(|x| x.clamp(0.0, 1.0))
-                    .collect(),
-            )
-        };
-        let (u, v) = (fit(0)?, fit(1)?);
-        let patch = self.surface.piece(cell).ok()?;
-        let points = self.surface.grid[cell].ctrl().len() * self.surface.grid[cell].ctrl()[0].len();
-        limits::charge(
-            "a B-spline face's composition",
-            COMPOSE_WORK * points as u64,
-        )
-        .ok()?;
-        let s = compose(&patch.homogeneous(), &u, &v);
-        let c: Vec<Scaled> = curve.piece_over(t).iter().map(|x| scaled_form(x)).collect();
-        distance_bound(&c, &s)
-    }
-
     /// Shrink a proved box by two Krawczyk steps, then take `s`, `N` and
     /// `∂σ/∂P` over it.
     fn finish(&self, p: &[Interval], mut b: [Interval; 2]) -> Option<FootBox> {
@@ -611,12 +773,7 @@ impl<'a> SplineField<'a> {
         }
         let jet = self.jet(b[0], b[1]).ok()?;
         let gradient = foot_gradient(&jet, p)?;
-        let n = cross(&jet.xu, &jet.xv);
-        let length = norm2(&n).sqrt()?;
-        if length.lo <= 0.0 {
-            return None;
-        }
-        let normal: IVec = n.iter().map(|x| x.div(&length)).collect::<Option<_>>()?;
+        let normal = unit_normal(&jet)?;
         let signed = dot(&sub(p, &jet.x), &normal);
         Some(FootBox {
             jet,
@@ -649,6 +806,57 @@ fn spread(at: &PatchJet, p: &[Interval]) -> Option<[f64; 2]> {
             })
             .sum()
     }))
+}
+
+/// A cubic `p` in the local parameters of piece `cell`, by its Bernstein
+/// coefficients.
+struct Fit {
+    cell: usize,
+    u: Vec<f64>,
+    v: Vec<f64>,
+}
+
+/// A face's normal along a part of an edge ([`SplineField::normal_over`]).
+#[derive(Clone, Debug)]
+pub struct NormalPath {
+    /// A positive multiple of the normal along a curve of the face near
+    /// the edge, a polynomial in the part's parameter (scaled form).
+    pub normal: ScaledVec,
+    /// At most the angle, in radians, between that normal and the normal
+    /// at the foot point of each point of the edge.
+    pub slack: f64,
+}
+
+/// How many times [`SplineField::turn_near`] may halve a fitted curve.
+const HALVINGS: usize = 3;
+
+/// The Bernstein coefficients of the two halves of a polynomial (de
+/// Casteljau at `1/2`, in `f64`).
+fn halves(c: &[f64]) -> (Vec<f64>, Vec<f64>) {
+    let mut row = c.to_vec();
+    let (mut left, mut right) = (vec![row[0]], vec![row[row.len() - 1]]);
+    while row.len() > 1 {
+        row = row.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect();
+        left.push(row[0]);
+        right.push(row[row.len() - 1]);
+    }
+    right.reverse();
+    (left, right)
+}
+
+/// The parts of `t` between the sorted `cuts`.
+pub fn parts(t: Interval, cuts: &[f64]) -> Vec<Interval> {
+    let mut ends = vec![t.lo];
+    ends.extend(cuts.iter().copied().filter(|x| *x > t.lo && *x < t.hi));
+    ends.push(t.hi);
+    ends.windows(2)
+        .map(|w| Interval { lo: w[0], hi: w[1] })
+        .collect()
+}
+
+/// The curve over `t` as scaled forms of its homogeneous coordinates.
+pub fn curve_over(curve: &ICurve, t: Interval) -> Vec<Scaled> {
+    curve.piece_over(t).iter().map(|x| scaled_form(x)).collect()
 }
 
 /// `|x − c|²` in `f64`, `c` by its midpoints.
@@ -800,9 +1008,10 @@ fn foot_gradient(s: &PatchJet, p: &[Interval]) -> Option<[IVec; 2]> {
     Some(gradient)
 }
 
-/// `J = N_u ⊗ ∇u + N_v ⊗ ∇v` from the jet `s`, the unit normal over it and
-/// `∂σ/∂P`.
-fn jacobian(s: &PatchJet, normal: &[Interval], [du, dv]: &[IVec; 2]) -> Option<IMat3> {
+/// `N_u`, `N_v`: the rates of the unit normal `N` (enclosed over the jet
+/// `s` by `normal`) along the parameters, `(n_u − N (N·n_u))/|n|` with
+/// `n = S_u × S_v`, `n_u = S_uu × S_v + S_u × S_uv` (likewise in `v`).
+fn normal_rates(s: &PatchJet, normal: &[Interval]) -> Option<[IVec; 2]> {
     let length = norm2(&cross(&s.xu, &s.xv)).sqrt()?;
     let rate = |dn: IVec| -> Option<IVec> {
         let along = dot(normal, &dn);
@@ -811,11 +1020,41 @@ fn jacobian(s: &PatchJet, normal: &[Interval], [du, dv]: &[IVec; 2]) -> Option<I
             .map(|x| x.div(&length))
             .collect()
     };
-    let nu = rate(add(&cross(&s.xuu, &s.xv), &cross(&s.xu, &s.xuv)))?;
-    let nv = rate(add(&cross(&s.xuv, &s.xv), &cross(&s.xu, &s.xvv)))?;
+    Some([
+        rate(add(&cross(&s.xuu, &s.xv), &cross(&s.xu, &s.xuv)))?,
+        rate(add(&cross(&s.xuv, &s.xv), &cross(&s.xu, &s.xvv)))?,
+    ])
+}
+
+/// `J = N_u ⊗ ∇u + N_v ⊗ ∇v` from the jet `s`, the unit normal over it and
+/// `∂σ/∂P`.
+fn jacobian(s: &PatchJet, normal: &[Interval], [du, dv]: &[IVec; 2]) -> Option<IMat3> {
+    let [nu, nv] = normal_rates(s, normal)?;
     Some(std::array::from_fn(|a| {
         std::array::from_fn(|b| nu[a].mul(&du[b]).add(&nv[a].mul(&dv[b])))
     }))
+}
+
+/// The unit normal `n/|n|`, `n = S_u × S_v`, over the jet `s`; `None`
+/// where `|n|`'s enclosure reaches 0.
+fn unit_normal(s: &PatchJet) -> Option<IVec> {
+    let n = cross(&s.xu, &s.xv);
+    let length = norm2(&n).sqrt()?;
+    if length.lo <= 0.0 {
+        return None;
+    }
+    n.iter().map(|x| x.div(&length)).collect()
+}
+
+/// A lower bound of the least singular value of every matrix `(S_u S_v)`
+/// over the jet `s`: `√λ_min` of the Gram matrix `[[a, b], [b, d]]`,
+/// `λ_min = (a + d)/2 − √(((a − d)/2)² + b²)`; `None` unless positive.
+fn least_stretch(s: &PatchJet) -> Option<f64> {
+    let (a, b, d) = (dot(&s.xu, &s.xu), dot(&s.xu, &s.xv), dot(&s.xv, &s.xv));
+    let half = Interval::point(0.5);
+    let spread = a.sub(&d).mul(&half).sqr().add(&b.sqr()).sqrt()?;
+    let least = a.add(&d).mul(&half).sub(&spread).lo;
+    (least > 0.0).then(|| Interval::point(least).sqrt().map(|x| x.lo))?
 }
 
 impl DistanceField for SplineField<'_> {

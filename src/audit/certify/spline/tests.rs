@@ -291,3 +291,39 @@ fn a_composed_gap_bound_crosses_a_knot_line_and_holds_the_border() {
         .unwrap();
     assert!((1e-7..1e-7 + 1e-9).contains(&b), "{b}");
 }
+
+/// The normal of the quarter cylinder along the line `(1 + 10⁻⁷, 0, z)`,
+/// `0 ≤ z ≤ 2`, on each side of its knot line: the foot normal is
+/// `(1, 0, 0)` all along (independently: radial at `y = 0`). The path's
+/// angle to it plus the slack (the foot is within `2g/σ` of the fitted
+/// curve, `g ≈ 10⁻⁷`, and the unit cylinder's normal turns at rate 2 per
+/// unit of `u` where `|S_u| = 2`) stays under `10⁻⁶`.
+#[test]
+fn a_normal_path_along_a_b_spline_cylinder_is_radial() {
+    let c = quarter_cylinder();
+    let cp = pieces(&c);
+    let surface = SplineSurface::new(&c, &cp).unwrap();
+    let field = SplineField::new(&surface);
+    let x = q(1, 1) + q(1, 10_000_000);
+    let line = RationalCurve::polynomial(vec![
+        vec![x.clone(), q(0, 1), q(0, 1)],
+        vec![x, q(0, 1), q(2, 1)],
+    ])
+    .unwrap();
+    let curve = ICurve::new(&line).unwrap();
+    let t = Interval { lo: 0.0, hi: 1.0 };
+    let cuts = field.cuts(&curve, t).unwrap();
+    assert_eq!(cuts.len(), 1, "{cuts:?}");
+    assert!((cuts[0] - 0.5).abs() < 1e-9, "{cuts:?}");
+    let radial = [1.0, 0.0, 0.0].map(|x| vec![Interval::point(x)]);
+    for part in parts(t, &cuts) {
+        let path = field.normal_over(&curve, part).unwrap();
+        let (upper, _) =
+            crate::audit::certify::normal_path::angle_between(&path.normal, &radial).unwrap();
+        assert!(
+            path.slack > 0.0 && upper + path.slack < 1e-6,
+            "{upper} {}",
+            path.slack
+        );
+    }
+}
