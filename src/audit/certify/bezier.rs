@@ -492,6 +492,15 @@ impl IPatch {
     pub fn approximate_jet(&self, u: f64, v: f64) -> Result<PatchJet, Error> {
         cartesian(self.nets.each_ref().map(|n| n.value_f64(u, v)))
     }
+
+    /// `S(u, v)` in `f64` arithmetic: *not* an enclosure; `None` where the
+    /// weight is not positive or the point not finite.
+    pub fn approximate_point(&self, u: f64, v: f64) -> Option<[f64; 3]> {
+        let h = self.nets[0].value_f64(u, v);
+        let w = h[3].mid();
+        let x = [0, 1, 2].map(|k| h[k].mid() / w);
+        (w > 0.0 && x.iter().all(|c| c.is_finite())).then_some(x)
+    }
 }
 
 /// The Cartesian jet from the homogeneous `H`, `H_u`, `H_v`, `H_uu`,

@@ -35,12 +35,16 @@ pub struct Foot {
     pub dsigma: [Interval; 2],
 }
 
+/// Below this, a Newton step that does not shrink is rounding noise.
+const NOISE: f64 = 1e-9;
+
 /// `f64` Newton on the foot-point system from `start`, each step clamped
 /// into [`Jets::reach`] (a foot on the border of a face is a border point
 /// whatever the first steps overshoot); `None` if a step is not finite.
 pub fn newton<S: Jets + ?Sized>(patch: &S, c: &[Interval], start: [f64; 2]) -> Option<[f64; 2]> {
     let far = patch.reach();
     let mut g = start;
+    let mut last = f64::INFINITY;
     for _ in 0..40 {
         let (f, j) = system(&patch.approximate_jet(g[0], g[1]).ok()?, c);
         let y = mid_inverse(&j)?;
@@ -53,9 +57,13 @@ pub fn newton<S: Jets + ?Sized>(patch: &S, c: &[Interval], start: [f64; 2]) -> O
             return None;
         }
         g = [0, 1].map(|k| (g[k] - step[k]).clamp(far[k][0], far[k][1]));
-        if step[0].abs().max(step[1].abs()) < 1e-15 {
+        let size = step[0].abs().max(step[1].abs());
+        // Converged, or at rounding's noise floor (near a solution, a step
+        // no shorter than the last).
+        if size < 1e-15 || (size < NOISE && size >= last) {
             break;
         }
+        last = size;
     }
     Some(g)
 }

@@ -80,13 +80,11 @@ use super::normal_path::{patch_normal, ScaledVec};
 use crate::algebra::interval_bernstein::{scale as scaled_form, Scaled};
 use crate::algebra::Interval;
 use crate::error::Error;
-use crate::hpoint::HPoint;
 use crate::limits;
 use crate::nurbs::{Knots, NurbsSurface, SpannedPatch};
 use crate::patch::Patch;
 use crate::rect::RectPatch;
 use num_rational::BigRational;
-use num_traits::ToPrimitive;
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
 use std::sync::OnceLock;
@@ -346,7 +344,8 @@ impl<'a> SplineSurface<'a> {
         self.seeds.get_or_init(|| {
             let nv = self.columns();
             let mut out = Vec::new();
-            for (k, patch) in self.grid.iter().enumerate() {
+            for k in 0..self.grid.len() {
+                let Ok(patch) = self.piece(k) else { continue };
                 let (a, b) = (
                     &self.axes[0].breaks[k / nv],
                     &self.axes[0].breaks[k / nv + 1],
@@ -358,7 +357,7 @@ impl<'a> SplineSurface<'a> {
                 for i in 0..SEEDS {
                     for j in 0..SEEDS {
                         let (s, t) = (i as f64 / (SEEDS - 1) as f64, j as f64 / (SEEDS - 1) as f64);
-                        if let Some(x) = eval_f64(patch.ctrl(), s, t) {
+                        if let Some(x) = patch.approximate_point(s, t) {
                             let at = [
                                 a.mid() + s * (b.mid() - a.mid()),
                                 c.mid() + t * (d.mid() - c.mid()),
@@ -864,38 +863,6 @@ fn squared_distance(x: &[f64; 3], c: &[Interval]) -> f64 {
     x.iter().zip(c).map(|(a, b)| (a - b.mid()).powi(2)).sum()
 }
 
-/// `H(s, t)` of a net of exact homogeneous points, in `f64` (de
-/// Casteljau), as a Cartesian point; `None` if not finite.
-fn eval_f64(ctrl: &[Vec<HPoint<Q>>], s: f64, t: f64) -> Option<[f64; 3]> {
-    let lerp = |a: &[f64], b: &[f64], x: f64| -> Vec<f64> {
-        a.iter().zip(b).map(|(p, q)| p + x * (q - p)).collect()
-    };
-    let reduce = |mut v: Vec<Vec<f64>>, x: f64| -> Vec<f64> {
-        while v.len() > 1 {
-            v = v.windows(2).map(|w| lerp(&w[0], &w[1], x)).collect();
-        }
-        v.swap_remove(0)
-    };
-    let rows: Vec<Vec<f64>> = ctrl
-        .iter()
-        .map(|row| {
-            let pts = row
-                .iter()
-                .map(|h| {
-                    h.coords
-                        .iter()
-                        .map(|c| c.to_f64().unwrap_or(f64::NAN))
-                        .collect()
-                })
-                .collect();
-            reduce(pts, t)
-        })
-        .collect();
-    let h = reduce(rows, s);
-    let x = [h[0] / h[3], h[1] / h[3], h[2] / h[3]];
-    x.iter().all(|c| c.is_finite()).then_some(x)
-}
-
 /// `x · k` for each derivative's scale.
 fn scaled(j: PatchJet, su: &Interval, sv: &Interval) -> PatchJet {
     PatchJet {
@@ -1047,13 +1014,21 @@ fn unit_normal(s: &PatchJet) -> Option<IVec> {
 }
 
 /// A lower bound of the least singular value of every matrix `(S_u S_v)`
-/// over the jet `s`: `√λ_min` of the Gram matrix `[[a, b], [b, d]]`,
-/// `λ_min = (a + d)/2 − √(((a − d)/2)² + b²)`; `None` unless positive.
+/// over the jet `s`: `√λ`, `λ` the greater of two lower bounds of the least
+/// eigenvalue of the Gram matrix `[[a, b], [b, d]]`: its closed form
+/// `(a + d)/2 − √(((a − d)/2)² + b²)` (tight for a box of nearly equal
+/// columns) and Gershgorin's `min(a, d) − |b|` (tight where `a` and `d`
+/// differ, which the closed form's cancellation loses over a wide box);
+/// `None` unless positive.
 fn least_stretch(s: &PatchJet) -> Option<f64> {
     let (a, b, d) = (dot(&s.xu, &s.xu), dot(&s.xu, &s.xv), dot(&s.xv, &s.xv));
     let half = Interval::point(0.5);
     let spread = a.sub(&d).mul(&half).sqr().add(&b.sqr()).sqrt()?;
-    let least = a.add(&d).mul(&half).sub(&spread).lo;
+    let closed = a.add(&d).mul(&half).sub(&spread).lo;
+    let gershgorin = Interval::point(a.lo.min(d.lo))
+        .sub(&Interval::point(b.mag()))
+        .lo;
+    let least = closed.max(gershgorin);
     (least > 0.0).then(|| Interval::point(least).sqrt().map(|x| x.lo))?
 }
 

@@ -4,6 +4,7 @@ use crate::audit::certify::field::normal_curvature;
 use crate::audit::certify::Verdict;
 use crate::audit::joint::{measure_joint, JointFace, JointSurface, JointTolerances, Measure};
 use crate::curve::RationalCurve;
+use crate::hpoint::HPoint;
 use crate::nurbs::Nurbs;
 use crate::ratio;
 
