@@ -151,22 +151,24 @@ enum Field<'s> {
 impl Field<'_> {
     /// Is the face's normal along an edge a polynomial
     /// ([`Field::normal_path`])?
-    fn has_polynomial_normal(&self) -> bool {
+    fn has_normal_path(&self) -> bool {
         match self {
-            Field::Closed(s) => s.has_polynomial_normal(),
+            Field::Closed(s) => s.has_normal_path(),
             Field::Spline(_) => true,
         }
     }
 
     /// The face's normal along part `t` of the curve as a polynomial: a
     /// closed form's at the foot points themselves (no slack), a B-spline's
-    /// by composition ([`SplineField::normal_over`]).
-    fn normal_path(&self, curve: &ICurve, t: Interval) -> Option<NormalPath> {
+    /// by composition ([`SplineField::normal_over`]); `gap` bounds the
+    /// distance from the curve to the face (the cone's slack needs it).
+    fn normal_path(&self, curve: &ICurve, t: Interval, gap: f64) -> Option<NormalPath> {
         match self {
-            Field::Closed(s) => Some(NormalPath {
-                normal: s.normal_along(&curve_over(curve, t))?,
-                slack: 0.0,
-            }),
+            Field::Closed(s) => {
+                let over = curve.jet(t).ok()?.x;
+                let (normal, slack) = s.normal_along(&curve_over(curve, t), &over, gap)?;
+                Some(NormalPath { normal, slack })
+            }
             Field::Spline(s) => s.normal_over(curve, t),
         }
     }
@@ -542,10 +544,12 @@ fn spline_gap(
 /// normal paths ([`super::certify::normal_path`]), on each part between
 /// the knot lines the feet cross on either face: at most the paths' angle
 /// plus both slacks, at least its value at a part's midpoint less them.
-/// `reversed` when one face's orientation is opposite its surface's.
+/// `gaps` bound the distances from the edge to the faces; `reversed` when
+/// one face's orientation is opposite its surface's.
 /// `None` when a part is not proved (the caller splits `t`).
 fn composed_angle(
     fields: [&Field<'_>; 2],
+    gaps: [f64; 2],
     reversed: bool,
     curve: &ICurve,
     t: Interval,
@@ -562,7 +566,7 @@ fn composed_angle(
         lower: 0.0,
     };
     for part in parts(t, &cuts) {
-        let [a, b] = [0, 1].map(|k| fields[k].normal_path(curve, part));
+        let [a, b] = [0, 1].map(|k| fields[k].normal_path(curve, part, gaps[k]));
         let (a, b) = (a?, b?);
         let second = if reversed {
             normal_path::reversed(&b.normal)
@@ -819,13 +823,18 @@ fn measure_capped(
     let angle = match within_cap(exact)? {
         Some(Some(true)) => Measure::Exact,
         Some(Some(false)) => fold(),
-        Some(None) if [&s0, &s1].iter().all(|f| f.has_polynomial_normal()) => {
+        Some(None) if [&s0, &s1].iter().all(|f| f.has_normal_path()) => {
             let reversed = faces[0].same_sense != faces[1].same_sense;
+            let gaps = gap.map(|g| match g {
+                Measure::Exact => 0.0,
+                Measure::Enclosed { value, .. } => value.hi,
+                Measure::Unproved => f64::INFINITY,
+            });
             settle(along_by(
                 &curves,
                 angular,
                 work,
-                |k, c, t| match composed_angle([&s0, &s1], reversed, c, t) {
+                |k, c, t| match composed_angle([&s0, &s1], gaps, reversed, c, t) {
                     Some(b) => Ok(Some(b)),
                     None => Ok(proved
                         .around(k, c, fields, t)?

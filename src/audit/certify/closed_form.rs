@@ -211,26 +211,30 @@ impl ISurface {
         )
     }
 
-    /// Is `n̂` a polynomial in the point, up to a positive factor (a
-    /// plane, cylinder or sphere; [`ISurface::normal_along`])?
-    pub fn has_polynomial_normal(&self) -> bool {
-        matches!(
-            self.kind,
-            Kind::Plane | Kind::Cylinder { .. } | Kind::Sphere { .. }
-        )
+    /// Does [`ISurface::normal_along`] give the normal along a curve (a
+    /// plane, cylinder, sphere or cone)?
+    pub fn has_normal_path(&self) -> bool {
+        !matches!(self.kind, Kind::Torus { .. })
     }
 
     /// The foot normal `n̂(C(t))` times a positive polynomial, along the
     /// curve whose homogeneous coordinates `(X, W)` are the scaled forms
-    /// `c` ([`super::normal_path`]): with `r = X − W o` (`o` the frame's
-    /// origin or the sphere's centre), the plane's `ẑ`, the cylinder's
-    /// radial part `(r·x̂) x̂ + (r·ŷ) ŷ` (`W ρ n̂`) and the sphere's `r`
-    /// (`W |P − C| n̂`); `None` for a cone or a torus, whose `n̂` is not a
-    /// polynomial in the point.
-    pub fn normal_along(&self, c: &[Scaled]) -> Option<ScaledVec> {
-        if !self.has_polynomial_normal() {
-            return None;
-        }
+    /// `c` ([`super::normal_path`]), with the angle it may be off by. With
+    /// `r = X − W o` (`o` the frame's origin or the sphere's centre) and
+    /// `(a, b, h)` its frame coordinates: the plane's `ẑ`, the cylinder's
+    /// radial part `a x̂ + b ŷ` (`W ρ n̂`) and the sphere's `r`
+    /// (`W |P − C| n̂`), exactly. The cone's `n̂ ∝ (a, b, ∓kρ)` is not a
+    /// polynomial; `a x̂ + b ŷ − k m ẑ` with `m W = R W + k h` is, and
+    /// differs from it only in `|ρ − |m|| = |s| √(1 + k²)`, so by an angle
+    /// of at most `|k| √(1 + k²) g / ρ` for a curve within `g` of the cone
+    /// whose points over the piece are the box `over`. `None` for a torus,
+    /// or a cone piece that reaches its axis.
+    pub fn normal_along(
+        &self,
+        c: &[Scaled],
+        over: &[Interval],
+        g: f64,
+    ) -> Option<(ScaledVec, f64)> {
         let r = |k: usize| -> Scaled {
             c[k].iter()
                 .zip(&c[3])
@@ -243,26 +247,49 @@ impl ISurface {
                 .map(|i| (0..3).fold(Interval::point(0.0), |a, k| a.add(&r[k][i].mul(&e[k]))))
                 .collect()
         };
+        let frame = |v: [&Scaled; 3]| -> ScaledVec {
+            [0, 1, 2].map(|k| {
+                (0..c[3].len())
+                    .map(|i| {
+                        (0..3).fold(Interval::point(0.0), |acc, j| {
+                            acc.add(&v[j][i].mul(&self.axes[j][k]))
+                        })
+                    })
+                    .collect()
+            })
+        };
         match self.kind {
-            Kind::Plane => Some(
-                self.axes[2]
-                    .iter()
-                    .map(|x| vec![*x])
-                    .collect::<Vec<_>>()
-                    .try_into()
-                    .ok()?,
-            ),
+            Kind::Plane => Some(([0, 1, 2].map(|k| vec![self.axes[2][k]]), 0.0)),
             Kind::Cylinder { .. } => {
-                let (a, b) = (along(&self.axes[0]), along(&self.axes[1]));
-                Some([0, 1, 2].map(|k| {
-                    a.iter()
-                        .zip(&b)
-                        .map(|(x, y)| x.mul(&self.axes[0][k]).add(&y.mul(&self.axes[1][k])))
-                        .collect()
-                }))
+                let zero = vec![Interval::point(0.0); c[3].len()];
+                Some((
+                    frame([&along(&self.axes[0]), &along(&self.axes[1]), &zero]),
+                    0.0,
+                ))
             }
-            Kind::Sphere { .. } => Some(r),
-            Kind::Cone { .. } | Kind::Torus { .. } => None,
+            Kind::Sphere { .. } => Some((r, 0.0)),
+            Kind::Cone { radius, slope } => {
+                let [a, b, _] = self.local(over);
+                let rho = a.sqr().add(&b.sqr()).sqrt()?.lo;
+                if rho <= 0.0 {
+                    return None;
+                }
+                let height = along(&self.axes[2]);
+                let vertical: Scaled = height
+                    .iter()
+                    .zip(&c[3])
+                    .map(|(h, w)| slope.mul(&radius.mul(w).add(&slope.mul(h))).neg())
+                    .collect();
+                let norm = Interval::point(1.0).add(&slope.sqr()).sqrt()?;
+                let slack = Interval::point(slope.mag())
+                    .mul(&norm)
+                    .mul(&Interval::point(g))
+                    .div(&Interval::point(rho))?
+                    .hi;
+                let n = frame([&along(&self.axes[0]), &along(&self.axes[1]), &vertical]);
+                slack.is_finite().then_some((n, slack))
+            }
+            Kind::Torus { .. } => None,
         }
     }
 }
@@ -466,6 +493,52 @@ mod tests {
             holds(x.normal[2], -0.5, 1e-12);
         }
         assert!(d.signed.lo <= e.signed.lo && e.signed.hi <= d.signed.hi);
+    }
+
+    /// The cone `ρ = 1 + h/2` along the line `(1 + t/2 + δ, 0, t)`,
+    /// `t ∈ [0, 1]`: radially `δ` outside its generator, so at distance
+    /// `g = δ/√(1 + ¼)` from it, where the foot normal is
+    /// `(1, 0, −½)/√(1 + ¼)` all along (independently: the generator's
+    /// direction `(½, 0, 1)` is perpendicular to it). The normal path is
+    /// exact on the generator (`δ = 0`) and within its slack off it.
+    #[test]
+    fn a_cone_s_normal_path_is_within_its_slack() {
+        use crate::algebra::interval_bernstein::scale as scaled;
+        let cone = ISurface::new(&Implicit::Cone {
+            frame: frame::<BigRational>(),
+            radius: BigRational::from_integer(1.into()),
+            slope: BigRational::new(1.into(), 2.into()),
+        })
+        .unwrap();
+        let normal = [1.0, 0.0, -0.5].map(|x| vec![Interval::point(x)]);
+        for delta in [0.0, 1e-3] {
+            let x0 = 1.0 + delta;
+            let line: Vec<Scaled> = [[x0, x0 + 0.5], [0.0, 0.0], [0.0, 1.0], [1.0, 1.0]]
+                .iter()
+                .map(|c| scaled(&c.map(Interval::point)))
+                .collect();
+            let over = vec![
+                Interval {
+                    lo: x0,
+                    hi: x0 + 0.5,
+                },
+                Interval::point(0.0),
+                Interval { lo: 0.0, hi: 1.0 },
+            ];
+            let g = delta / 1.25f64.sqrt() * (1.0 + 1e-12);
+            let (path, slack) = cone.normal_along(&line, &over, g).unwrap();
+            let (upper, _) = super::super::normal_path::angle_between(&path, &normal).unwrap();
+            if delta == 0.0 {
+                assert!(slack < 1e-300 && upper < 1e-14, "{upper} {slack}");
+            } else {
+                // Off by about kδ/(ρ(1 + k²)) = 4·10⁻⁴ at t = 0; the slack,
+                // k√(1 + k²)·g/ρ = 5·10⁻⁴, covers it.
+                assert!(
+                    upper > 3.9e-4 && upper <= slack && slack < 5.1e-4,
+                    "{upper} {slack}"
+                );
+            }
+        }
     }
 
     fn torus(major: i64, minor: i64) -> ISurface {
