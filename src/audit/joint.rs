@@ -26,7 +26,11 @@
 //!   `C − s₁n̂₁` and `C − s₂n̂₂`, is enclosed from the two gaps by the
 //!   triangle inequality ([`face_gap`]);
 //! - the angle between the oriented foot normals `±n̂₁`, `±n̂₂` is
-//!   [`polar_angle`] of `(|N₁ × N₂|, N₁·N₂)`, over `T` and at `t_m`;
+//!   [`polar_angle`] of `(|N₁ × N₂|, N₁·N₂)`: where both faces have a
+//!   normal path (plane, cylinder, sphere, cone, B-spline;
+//!   [`normal_path`]) from the rational hull of the two paths over `T`
+//!   and their value at `t_m`, each less its slack;
+//!   else over `T` by mean-value forms and at `t_m`;
 //!
 //! and [`maximize`] refines to the target width. Each edge has its own work
 //! cap ([`EDGE_WORK`]); a measure not proved within it is *unproved* and
@@ -66,13 +70,12 @@ pub const EDGE_WORK: u64 = 100_000_000;
 const MEASURE_WORK: u64 = EDGE_WORK / 4;
 
 /// The work cap of an angle or curvature measure on a B-spline face,
-/// whose foot boxes Krawczyk's operator proves one piece of the edge at a
-/// time (a few jets each, where a closed form takes one evaluation):
-/// a tenth of [`MEASURE_WORK`], so that an audit of a model with a
-/// thousand such edges ends in seconds (tail_section_asm.stp: 17.5 s,
-/// where the full cap took 38 s and ran the command's budget out before
-/// the elementary edges). Most G1 seams on B-spline faces do not converge
-/// within it and stay undecided (docs/audit.md).
+/// whose normal paths and foot boxes cost a few compositions or jets per
+/// piece of the edge, where a closed form takes one evaluation: a tenth of
+/// [`MEASURE_WORK`], so that an audit of a model with a thousand such
+/// edges ends in seconds (tail_section_asm.stp: 18.5 s, 551 of its 1 423
+/// edges undecided; with a quarter, 50 s and 452). Measures not proved
+/// within it are unproved, their verdicts undecided (docs/audit.md).
 const SPLINE_MEASURE_WORK: u64 = MEASURE_WORK / 10;
 
 /// The finest length f64 interval arithmetic resolves on an edge whose

@@ -512,7 +512,7 @@ impl<'a> SplineField<'a> {
     }
 
     /// Where in `t` the curve's feet cross a knot line of the surface:
-    /// empty when the feet at the [`FIT_DEGREE`]` + 1` equally spaced
+    /// empty when the feet at four equally spaced
     /// parameters lie in one piece, else the first crossing (found in
     /// `f64`: any cut is valid, a good one only keeps each part's feet in
     /// one piece). `None` when a foot is not found.
