@@ -73,8 +73,8 @@ const MEASURE_WORK: u64 = EDGE_WORK / 4;
 /// whose normal paths and foot boxes cost a few compositions or jets per
 /// piece of the edge, where a closed form takes one evaluation: a tenth of
 /// [`MEASURE_WORK`], so that an audit of a model with a thousand such
-/// edges ends in seconds (tail_section_asm.stp: 18.5 s, 551 of its 1 423
-/// edges undecided; with a quarter, 50 s and 452). Measures not proved
+/// edges ends in seconds (tail_section_asm.stp: 19.7 s, 537 of its 1 423
+/// edges undecided; with a quarter, 50 s and 452 before the cones' paths). Measures not proved
 /// within it are unproved, their verdicts undecided (docs/audit.md).
 const SPLINE_MEASURE_WORK: u64 = MEASURE_WORK / 10;
 
@@ -164,12 +164,16 @@ impl Field<'_> {
     /// The face's normal along part `t` of the curve as a polynomial: a
     /// closed form's at the foot points themselves (no slack), a B-spline's
     /// by composition ([`SplineField::normal_over`]); `gap` bounds the
-    /// distance from the curve to the face (the cone's slack needs it).
+    /// distance from the curve to the face (the cone's slack needs it; the
+    /// part's own bound is taken where smaller).
     fn normal_path(&self, curve: &ICurve, t: Interval, gap: f64) -> Option<NormalPath> {
         match self {
             Field::Closed(s) => {
-                let over = curve.jet(t).ok()?.x;
-                let (normal, slack) = s.normal_along(&curve_over(curve, t), &over, gap)?;
+                // The distance over this part, tight like |t|³ (the gap
+                // measure's own bound stops at a third of the tolerance).
+                let (cm, co, dt) = curve_jets(curve, t).ok()?;
+                let near = side(s, &cm, &co, dt).map_or(gap, |d| d.signed.mag().min(gap));
+                let (normal, slack) = s.normal_along(&curve_over(curve, t), &co.x, near)?;
                 Some(NormalPath { normal, slack })
             }
             Field::Spline(s) => s.normal_over(curve, t),
