@@ -79,6 +79,7 @@ use super::krawczyk::{krawczyk, system, Jets};
 use super::normal_path::{patch_normal, ScaledVec};
 use crate::algebra::interval_bernstein::{scale as scaled_form, Scaled};
 use crate::algebra::Interval;
+use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::limits;
 use crate::nurbs::{Knots, NurbsSurface, SpannedPatch};
@@ -626,7 +627,7 @@ impl<'a> SplineField<'a> {
         if depth == 0 {
             return None;
         }
-        let [(u0, u1), (v0, v1)] = c.map(halves);
+        let [(u0, v0), (u1, v1)] = halves(c)?;
         let a = self.bounds_near([&u0, &v0], place, need, depth - 1)?;
         let b = self.bounds_near([&u1, &v1], place, need, depth - 1)?;
         Some((a.0.min(b.0), a.1.max(b.1)))
@@ -829,18 +830,19 @@ pub struct NormalPath {
 /// How many times [`SplineField::turn_near`] may halve a fitted curve.
 const HALVINGS: usize = 3;
 
-/// The Bernstein coefficients of the two halves of a polynomial (de
-/// Casteljau at `1/2`, in `f64`).
-fn halves(c: &[f64]) -> (Vec<f64>, Vec<f64>) {
-    let mut row = c.to_vec();
-    let (mut left, mut right) = (vec![row[0]], vec![row[row.len() - 1]]);
-    while row.len() > 1 {
-        row = row.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect();
-        left.push(row[0]);
-        right.push(row[row.len() - 1]);
-    }
-    right.reverse();
-    (left, right)
+/// The Bernstein coefficients `(u, v)` of the two halves of the curve
+/// `p = (u, v)` with coefficients `c` ([`RationalCurve::subdivide`] at
+/// `1/2`, in `f64`); `None` when a coefficient is not finite.
+fn halves(c: [&[f64]; 2]) -> Option<[(Vec<f64>, Vec<f64>); 2]> {
+    let points = c[0].iter().zip(c[1]).map(|(u, v)| vec![*u, *v]).collect();
+    let (left, right) = RationalCurve::polynomial(points).ok()?.subdivide(&0.5);
+    let coords = |half: &RationalCurve<f64>, k: usize| -> Vec<f64> {
+        half.ctrl()
+            .iter()
+            .map(|h| h.coords[k] / h.coords[2])
+            .collect()
+    };
+    Some([&left, &right].map(|h| (coords(h, 0), coords(h, 1))))
 }
 
 /// The parts of `t` between the sorted `cuts`.

@@ -270,23 +270,28 @@ fn a_gap_to_a_b_spline_face_is_measured_right() {
     );
 }
 
-/// `gap_over` along the whole height of the quarter cylinder, across its
-/// interior knot line, for the line `(1 + 10⁻⁷, 0, z)`, radially `10⁻⁷`
-/// outside its border `u = 0`: the bound holds `10⁻⁷` and is within
-/// `10⁻⁹` of it, in one piece of the edge.
-#[test]
-fn a_composed_gap_bound_crosses_a_knot_line_and_holds_the_border() {
-    let c = quarter_cylinder();
-    let cp = pieces(&c);
-    let surface = SplineSurface::new(&c, &cp).unwrap();
-    let field = SplineField::new(&surface);
+/// The line `(1 + 10⁻⁷, 0, z)`, `0 ≤ z ≤ 2`: radially `10⁻⁷` outside the
+/// quarter cylinder's border `u = 0`, along its whole height.
+fn line_off_the_border() -> ICurve {
     let x = q(1, 1) + q(1, 10_000_000);
     let line = RationalCurve::polynomial(vec![
         vec![x.clone(), q(0, 1), q(0, 1)],
         vec![x, q(0, 1), q(2, 1)],
     ])
     .unwrap();
-    let curve = ICurve::new(&line).unwrap();
+    ICurve::new(&line).unwrap()
+}
+
+/// `gap_over` along the whole height of the quarter cylinder, across its
+/// interior knot line, for the line `(1 + 10⁻⁷, 0, z)`, radially `10⁻⁷`
+/// outside its border `u = 0`: the bound holds `10⁻⁷` and is within
+/// `10⁻⁹` of it, in one piece of the edge.
+#[test]
+fn a_composed_gap_bound_crosses_a_knot_line_and_holds_the_border() {
+    let (c, curve) = (quarter_cylinder(), line_off_the_border());
+    let cp = pieces(&c);
+    let surface = SplineSurface::new(&c, &cp).unwrap();
+    let field = SplineField::new(&surface);
     let b = field
         .gap_over(&curve, Interval { lo: 0.0, hi: 1.0 })
         .unwrap();
@@ -301,17 +306,10 @@ fn a_composed_gap_bound_crosses_a_knot_line_and_holds_the_border() {
 /// unit of `u` where `|S_u| = 2`) stays under `10⁻⁶`.
 #[test]
 fn a_normal_path_along_a_b_spline_cylinder_is_radial() {
-    let c = quarter_cylinder();
+    let (c, curve) = (quarter_cylinder(), line_off_the_border());
     let cp = pieces(&c);
     let surface = SplineSurface::new(&c, &cp).unwrap();
     let field = SplineField::new(&surface);
-    let x = q(1, 1) + q(1, 10_000_000);
-    let line = RationalCurve::polynomial(vec![
-        vec![x.clone(), q(0, 1), q(0, 1)],
-        vec![x, q(0, 1), q(2, 1)],
-    ])
-    .unwrap();
-    let curve = ICurve::new(&line).unwrap();
     let t = Interval { lo: 0.0, hi: 1.0 };
     let cuts = field.cuts(&curve, t).unwrap();
     assert_eq!(cuts.len(), 1, "{cuts:?}");
