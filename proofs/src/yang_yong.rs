@@ -13,7 +13,7 @@
 use super::{Claim, Verdict};
 use exact_bezier::algebra::Poly;
 use exact_bezier::algebra::{binomial_scalar, ratio};
-use exact_bezier::bernstein::{bernstein, bernstein_all};
+use exact_bezier::bernstein::bernstein;
 use exact_bezier::hpoint::HPoint;
 use exact_bezier::rect::RectPatch;
 use exact_bezier::reparam::standard::corner_weights;
@@ -300,11 +300,17 @@ fn sym_quadratic() -> Quadratic<Poly> {
 /// How it is established (every (m, n) ≤ (5, 5), or (8, 8) with `prove --deep`): α1, α2, β1,
 /// β2 are symbols. The map from the net to either side is linear and acts on
 /// each homogeneous coordinate alike, so it suffices to check each basis net
-/// (one weight 1 at (i, j), everything else 0); the old side is definition
-/// (1) at the homogeneous parameters of the map. Both sides are polynomials of
-/// degree ≤ m + n in s and in t, so agreement on the (m+n+1)² grid of
-/// rational (s, t) = (k/(m+n), l/(m+n)) proves them equal for all s, t (the
-/// degree bound is computed by [`grid_suffices`]).
+/// (one weight 1 at (i, j), everything else 0); the new side's net for it is
+/// the coefficient of that weight's symbol in one run on the symbolic weight
+/// net. The old side, definition (1) at the homogeneous parameters of the
+/// map, is for that basis net
+/// `[C(m,i) s^i (1−s)^(m−i) (1−β(s))^j β(s)^(n−j)] · [C(n,j) t^j (1−t)^(n−j) (1−α(t))^i α(t)^(m−i)]`
+/// with `α(t) = α1·t + α2·(1−t)` and `β(s) = β1·s + β2·(1−s)`: a product of
+/// m + n linear factors in s and m + n in t, whose Bernstein coefficients of
+/// degree (m+n, m+n) [`linear_product`] builds factor by factor. Two
+/// polynomials in Bernstein form of one bidegree are equal iff their
+/// coefficients are, so the identity is m+n+1 squared coefficient equalities
+/// per basis net — no evaluation at all.
 fn quadratic_keeps_points() -> Claim {
     for_all_bidegrees(
         max_symbolic(),
@@ -314,44 +320,29 @@ fn quadratic_keeps_points() -> Claim {
         |m, n| {
             let q = sym_quadratic();
             let d = m + n;
-            if let Some(why) = grid_suffices(&q, m, n) {
-                return Some(why);
-            }
-            let grid: Vec<BigRational> = (0..=d).map(|k| ratio(k as i64, d as i64)).collect();
-            let basis: Vec<Vec<BigRational>> = grid.iter().map(|x| bernstein_all(d, x)).collect();
-            // Definition (1) at homogeneous parameters, per grid point:
-            // U_i = C(m,i) u1^i u0^(m−i), V_j = C(n,j) v1^j v0^(n−j).
-            let old_factors: Vec<Vec<(Vec<Poly>, Vec<Poly>)>> = grid
-                .iter()
-                .map(|t| {
-                    grid.iter()
-                        .map(|s| {
-                            let (hu, hv) = q.param_hom(&Poly::constant(s.clone()), &Poly::constant(t.clone()));
-                            (homogeneous_bernstein(m, &hu), homogeneous_bernstein(n, &hv))
-                        })
-                        .collect()
-                })
-                .collect();
-            // One run on the symbolic weight net; the part of each basis net is
-            // the coefficient of its weight symbol (the map is linear).
             let r = weight_net(m, n).quadratic_reparam(&q);
             if r.degree() != (d, d) {
                 return Some(format!("bidegree {:?}", r.degree()));
             }
             let w = r.weights();
+            let (s, one_minus_s) = ([Poly::zero(), one()], [one(), Poly::zero()]);
+            let alpha = [q.alpha2.clone(), q.alpha1.clone()];
+            let beta = [q.beta2.clone(), q.beta1.clone()];
+            let complement = |x: &[Poly; 2]| [one() - &x[0], one() - &x[1]];
             for (i0, j0) in (0..=m).flat_map(|i| (0..=n).map(move |j| (i, j))) {
+                let s_side = linear_product(
+                    binomial_scalar::<Poly>(m, i0),
+                    &[(&s, i0), (&one_minus_s, m - i0), (&complement(&beta), j0), (&beta, n - j0)],
+                );
+                let t_side = linear_product(
+                    binomial_scalar::<Poly>(n, j0),
+                    &[(&s, j0), (&one_minus_s, n - j0), (&complement(&alpha), i0), (&alpha, m - i0)],
+                );
                 let name = format!("w{i0}{j0}");
-                let wb: Vec<Vec<Poly>> = w
-                    .iter()
-                    .map(|row| row.iter().map(|x| x.coeff_of(&name, 1)).collect())
-                    .collect();
-                for (it, bt) in basis.iter().enumerate() {
-                    let rows: Vec<Poly> = wb.iter().map(|row| combination(row, bt)).collect();
-                    for (is, bs) in basis.iter().enumerate() {
-                        let new = combination(&rows, bs);
-                        let (uf, vf) = &old_factors[it][is];
-                        if new != uf[i0].clone() * &vf[j0] {
-                            return Some(format!("basis net ({i0},{j0}) at (s, t) = ({}, {})", grid[is], grid[it]));
+                for (k1, a) in s_side.iter().enumerate() {
+                    for (k2, b) in t_side.iter().enumerate() {
+                        if w[k1][k2].coeff_of(&name, 1) != a.clone() * b {
+                            return Some(format!("basis net ({i0},{j0}): Bernstein coefficient ({k1}, {k2})"));
                         }
                     }
                 }
@@ -361,30 +352,32 @@ fn quadratic_keeps_points() -> Claim {
     )
 }
 
-/// Why the (m+n+1)² grid of [`quadratic_keeps_points`] decides the
-/// identity, computed: the new side is a (d, d) patch (d = m + n, checked
-/// there), the old side `U_i(hu)·V_j(hv)` has degree at most
-/// `m·deg(hu) + n·deg(hv)` in s and in t; `None` when both are ≤ d.
-fn grid_suffices(q: &Quadratic<Poly>, m: usize, n: usize) -> Option<String> {
-    let (hu, hv) = q.param_hom(&v("s"), &v("t"));
-    let deg = |h: &[Poly; 2], x: &str| h.iter().map(|p| p.degree_in(x)).max().unwrap_or(0) as usize;
-    ["s", "t"].into_iter().find_map(|x| {
-        let bound = m * deg(&hu, x) + n * deg(&hv, x);
-        (bound > m + n).then(|| {
-            format!(
-                "the old side may have degree {bound} > {} in {x}: the grid would not suffice",
-                m + n
-            )
-        })
-    })
-}
-
-/// `C(m,i) x1^i x0^(m−i)`, `i = 0…m`: the Bernstein basis at the homogeneous
-/// parameter `(x0, x1)`.
-fn homogeneous_bernstein(m: usize, x: &[Poly; 2]) -> Vec<Poly> {
-    (0..=m)
-        .map(|i| binomial_scalar::<Poly>(m, i) * &x[1].pow(i as u32) * &x[0].pow((m - i) as u32))
-        .collect()
+/// The Bernstein coefficients of `c · Π f_k^e_k` for linear factors
+/// `f = f[0]·(1 − x) + f[1]·x` given by their two Bernstein coefficients:
+/// multiplying `Σ_k g_k B^p_k` by `f` gives
+/// `Σ_k [(p+1−k)·g_k·f[0] + k·g_(k−1)·f[1]]/(p+1) · B^(p+1)_k`
+/// (from `(1 − x)B^p_k = (p+1−k)/(p+1)·B^(p+1)_k` and
+/// `x·B^p_(k−1) = k/(p+1)·B^(p+1)_k`).
+fn linear_product(c: Poly, factors: &[(&[Poly; 2], usize)]) -> Vec<Poly> {
+    let times = |g: &[Poly], f: &[Poly; 2]| -> Vec<Poly> {
+        let p = g.len() - 1;
+        (0..=p + 1)
+            .map(|k| {
+                let low = (k <= p).then(|| {
+                    g[k].clone() * &f[0] * ratio::<Poly>((p + 1 - k) as i64, (p + 1) as i64)
+                });
+                let high = (k > 0)
+                    .then(|| g[k - 1].clone() * &f[1] * ratio::<Poly>(k as i64, (p + 1) as i64));
+                low.into_iter()
+                    .chain(high)
+                    .fold(Poly::zero(), |acc, x| acc + &x)
+            })
+            .collect()
+    };
+    factors
+        .iter()
+        .flat_map(|(f, e)| std::iter::repeat(*f).take(*e))
+        .fold(vec![c], |g, f| times(&g, f))
 }
 
 /// The net with homogeneous coordinates (0, w_ij): symbolic weights only.
@@ -399,12 +392,6 @@ fn weight_net(m: usize, n: usize) -> RectPatch<Poly> {
         })
         .collect();
     RectPatch::from_hom(ctrl).expect("a symbolic net")
-}
-
-/// `Σ_k c_k·x_k` with rational `c_k`: one merge over a common denominator
-/// ([`Poly::linear_combination`]).
-fn combination(x: &[Poly], c: &[BigRational]) -> Poly {
-    Poly::linear_combination(x.iter().zip(c))
 }
 
 /// The corner weights printed before (18) (bicubic), generalized:
