@@ -324,7 +324,14 @@ fn quadratic_keeps_points() -> Claim {
             if r.degree() != (d, d) {
                 return Some(format!("bidegree {:?}", r.degree()));
             }
-            let w = r.weights();
+            let names = weight_names(m, n);
+            let names: Vec<&str> = names.iter().map(String::as_str).collect();
+            // parts[k1][k2][i·(n+1) + j]: the coefficient of w_ij in weight (k1, k2).
+            let parts: Vec<Vec<Vec<Poly>>> = r
+                .weights()
+                .iter()
+                .map(|row| row.iter().map(|x| x.linear_coefficients(&names)).collect())
+                .collect();
             let (s, one_minus_s) = ([Poly::zero(), one()], [one(), Poly::zero()]);
             let alpha = [q.alpha2.clone(), q.alpha1.clone()];
             let beta = [q.beta2.clone(), q.beta1.clone()];
@@ -338,10 +345,9 @@ fn quadratic_keeps_points() -> Claim {
                     binomial_scalar::<Poly>(n, j0),
                     &[(&s, j0), (&one_minus_s, n - j0), (&complement(&alpha), i0), (&alpha, m - i0)],
                 );
-                let name = format!("w{i0}{j0}");
                 for (k1, a) in s_side.iter().enumerate() {
                     for (k2, b) in t_side.iter().enumerate() {
-                        if w[k1][k2].coeff_of(&name, 1) != a.clone() * b {
+                        if parts[k1][k2][i0 * (n + 1) + j0] != a.clone() * b {
                             return Some(format!("basis net ({i0},{j0}): Bernstein coefficient ({k1}, {k2})"));
                         }
                     }
@@ -380,6 +386,13 @@ fn linear_product(c: Poly, factors: &[(&[Poly; 2], usize)]) -> Vec<Poly> {
         .fold(vec![c], |g, f| times(&g, f))
 }
 
+/// The names of [`weight_net`]'s weights, `w_ij` at index `i·(n+1) + j`.
+fn weight_names(m: usize, n: usize) -> Vec<String> {
+    (0..=m)
+        .flat_map(|i| (0..=n).map(move |j| format!("w{i}{j}")))
+        .collect()
+}
+
 /// The net with homogeneous coordinates (0, w_ij): symbolic weights only.
 fn weight_net(m: usize, n: usize) -> RectPatch<Poly> {
     let ctrl = (0..=m)
@@ -404,7 +417,7 @@ fn quadratic_corner_weights() -> Claim {
         &format!("{SRC} §2, before eq. (18)"),
         Verdict::Proved,
         |m, n| {
-            let p = sym_net(m, n);
+            let p = weight_net(m, n);
             let r = p.quadratic_reparam(&sym_quadratic());
             let (mu, nu) = (m as u32, n as u32);
             let (a1, a2, b1, b2) = (v("α1"), v("α2"), v("β1"), v("β2"));
@@ -451,7 +464,7 @@ fn eq19_equal_corners() -> Claim {
             if !roots_ok {
                 return Some("the parametrization does not solve (19)".into());
             }
-            let p = set_corners(&sym_net(m, n), w);
+            let p = set_corners(&weight_net(m, n), w);
             let q = Quadratic { alpha1: a1.clone(), alpha2: a2.clone(), beta1: b.clone(), beta2: b.clone() };
             let c = corner_weights(&p.quadratic_reparam(&q));
             (c.iter().any(|x| *x != c[0])).then(|| "corners differ".into())
@@ -489,7 +502,10 @@ fn paper_c(m: usize, at0: &Poly, at1: &Poly) -> Vec<Vec<Poly>> {
 }
 
 /// (17) evaluated literally (with corrected c and e) for the weights, compared
-/// with ours: equal up to the common sign (−1)^{m+n}.
+/// with ours: equal up to the common sign (−1)^{m+n}. Both are linear in
+/// the input weights, so they are compared weight by weight: the
+/// coefficient of each ω_ij in our weight (k1, k2) against (17)'s term for
+/// it (zero where (i, j) is outside (17)'s sum).
 fn eq17_matches() -> Claim {
     for_all_bidegrees(
         max_symbolic(),
@@ -497,29 +513,33 @@ fn eq17_matches() -> Claim {
         &format!("{SRC} eqs. (15)-(17)"),
         Verdict::Proved,
         |m, n| {
-            let p = sym_net(m, n);
             let q = sym_quadratic();
-            let r = p.quadratic_reparam(&q);
+            let r = weight_net(m, n).quadratic_reparam(&q);
             let c = paper_c(m, &q.alpha2, &q.alpha1);
             let e = paper_c(n, &q.beta2, &q.beta1);
             let d = m + n;
-            let sign = if d % 2 == 0 { one() } else { -one() };
+            let sign = if d % 2 == 0 { 1 } else { -1 };
+            let names = weight_names(m, n);
+            let names: Vec<&str> = names.iter().map(String::as_str).collect();
             for k1 in 0..=d {
                 for k2 in 0..=d {
-                    let mut acc = Poly::zero();
-                    for i in k1.saturating_sub(n)..=k1.min(m) {
-                        for j in k2.saturating_sub(m)..=k2.min(n) {
-                            let num = binomial_scalar::<Poly>(m, k2 - j)
-                                * binomial_scalar::<Poly>(n, j)
-                                * binomial_scalar::<Poly>(n, k1 - i)
-                                * binomial_scalar::<Poly>(m, i);
+                    let ours = r.ctrl()[k1][k2].weight().linear_coefficients(&names);
+                    for (i, j) in (0..=m).flat_map(|i| (0..=n).map(move |j| (i, j))) {
+                        let term = if (k1.saturating_sub(n)..=k1.min(m)).contains(&i)
+                            && (k2.saturating_sub(m)..=k2.min(n)).contains(&j)
+                        {
+                            let num = exact_bezier::algebra::binomial(m, k2 - j)
+                                * exact_bezier::algebra::binomial(n, j)
+                                * exact_bezier::algebra::binomial(n, k1 - i)
+                                * exact_bezier::algebra::binomial(m, i);
                             let den = exact_bezier::algebra::binomial(d, k2) * exact_bezier::algebra::binomial(d, k1);
-                            let f = num * Poly::constant(BigRational::new(1.into(), den));
-                            acc = acc + c[k2 - j][i].clone() * &e[k1 - i][j] * &f * p.ctrl()[i][j].weight();
+                            c[k2 - j][i].clone() * &e[k1 - i][j] * &Poly::constant(BigRational::new(num * sign, den))
+                        } else {
+                            Poly::zero()
+                        };
+                        if ours[i * (n + 1) + j] != term {
+                            return Some(format!("weight ({k1},{k2}), the part of ω_{i}{j}"));
                         }
-                    }
-                    if acc != r.ctrl()[k1][k2].weight().clone() * &sign {
-                        return Some(format!("weight ({k1},{k2})"));
                     }
                 }
             }

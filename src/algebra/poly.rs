@@ -274,6 +274,36 @@ impl Poly {
         Poly::normalized(terms, self.den.clone())
     }
 
+    /// `coeff_of(name, 1)` for every name at once, in one pass over the
+    /// terms: for a polynomial linear in those variables,
+    /// `self = c_0 + Σ_k out[k]·names[k]` (the coefficients of a map that is
+    /// linear in symbolic inputs, without one scan per input).
+    ///
+    /// ```
+    /// use exact_bezier::Poly;
+    /// let (x, y, z) = (Poly::var("x"), Poly::var("y"), Poly::var("z"));
+    /// let p = x.clone() * &z + y.clone() * Poly::from_int(3) + z.clone();
+    /// assert_eq!(p.linear_coefficients(&["x", "y"]), vec![z, Poly::from_int(3)]);
+    /// ```
+    pub fn linear_coefficients(&self, names: &[&str]) -> Vec<Poly> {
+        let index: HashMap<u32, usize> = names
+            .iter()
+            .enumerate()
+            .map(|(k, n)| (intern(n), k))
+            .collect();
+        let mut out: Vec<Terms> = vec![Vec::new(); names.len()];
+        for (m, c) in &self.terms {
+            for (id, e) in m.factors() {
+                if let (1, Some(&k)) = (e, index.get(&id)) {
+                    out[k].push((m.with_exponent(id, 0), c.clone()));
+                }
+            }
+        }
+        out.into_iter()
+            .map(|t| Poly::normalized(t, self.den.clone()))
+            .collect()
+    }
+
     /// Multiply by the monomial `x_id^e` (keeps the order).
     fn shift(mut self, id: u32, e: u32) -> Poly {
         if e > 0 {
