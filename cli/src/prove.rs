@@ -17,8 +17,8 @@ pub struct Args {
     #[arg(long, value_name = "NAME")]
     family: Option<String>,
     /// Check the costly bounded claims to their deep bounds (yang_yong's
-    /// symbolic-evaluation and quadratic-map claims to m, n ≤ 8 instead of
-    /// 5): minutes, not a second.
+    /// Möbius and scaling point identities to m, n ≤ 10 and its
+    /// quadratic-map claims to m, n ≤ 8, instead of 5): seconds, not one.
     #[arg(long)]
     deep: bool,
 }

@@ -8,7 +8,7 @@
 //! `w_{ij}` = ω_{ij}) is a symbol. Every algorithm involved acts on the
 //! homogeneous coordinates linearly and coordinate by coordinate, so an
 //! identity for this net holds for nets of any dimension. Bidegrees: every
-//! (m, n) up to a per-claim bound (8, 5 or 4) that each claim's text states.
+//! (m, n) up to a per-claim bound (8 or 5; 10 or 8 with `prove --deep`) that each claim's text states.
 
 use super::{Claim, Verdict};
 use exact_bezier::algebra::Poly;
@@ -24,14 +24,25 @@ use num_traits::Zero;
 const SRC: &str = "000 Yang & Yong";
 /// The largest m and n checked by the cheap claims (weights, corners).
 const MAX: usize = 8;
-/// The largest m and n of the costly claims — those that evaluate the
-/// patch symbolically at (s, t) (time growing like m^7) and the
-/// quadratic-map claims (an (m+n, m+n) result; 4 → 5 quadrupled the point
-/// identity, 187 → 758 ms in release): 5 by default (was 4), 8 with
-/// `prove --deep` ([`super::deep`], about a minute).
+/// The largest m and n of the costly claims — the quadratic-map claims
+/// other than the point identity (an (m+n, m+n) result on a symbolic
+/// weight net): 5 by default, 8 with `prove --deep` ([`super::deep`]).
 fn max_symbolic() -> usize {
     if super::deep() {
         8
+    } else {
+        5
+    }
+}
+
+/// The largest m and n of the point identities — the Möbius maps (2)(3),
+/// the scaling (5) and the quadratic map (9)–(17), which compare whole
+/// patches: 5 by default, 10 with `prove --deep` (raised from 8 when the
+/// quadratic map's identity moved from a grid of values to Bernstein
+/// coefficients, 2026-11-27).
+fn max_point_identity() -> usize {
+    if super::deep() {
+        10
     } else {
         5
     }
@@ -126,7 +137,7 @@ pub fn claims() -> Vec<Claim> {
 fn mobius_keeps_points(in_u: bool) -> Claim {
     let (dir, eq) = if in_u { ("u", "(2)") } else { ("v", "(3)") };
     for_all_bidegrees(
-        max_symbolic(),
+        max_point_identity(),
         &format!("Möbius map {eq} in {dir} keeps every point: new(s, t) = old at u(s) (resp. v(t)), for all α, s, t"),
         &format!("{SRC} eq. {eq}, (4)"),
         Verdict::Proved,
@@ -202,7 +213,7 @@ fn weight_rule_with(factor: impl Fn(usize, usize, usize, usize) -> Poly + Sync) 
 /// (5): scaling every weight by k multiplies H by k (same point).
 fn scaling_keeps_points() -> Claim {
     for_all_bidegrees(
-        max_symbolic(),
+        max_point_identity(),
         "uniform weight scaling (5) keeps every point: H̃(u, v) = k·H(u, v)",
         &format!("{SRC} eq. (5)"),
         Verdict::Proved,
