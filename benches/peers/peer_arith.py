@@ -5,9 +5,13 @@ Writes the polynomial cases, runs our side (the `peer_arith` bench target,
 ``--rounds`` times interleaved, checks that every result is identical term
 by term, and prints a table of medians and a final JSON line::
 
-    {"symbolic_vs_flint": worst ours/FLINT, "prove_seconds": s, ...}
+    {"symbolic_vs_flint": worst ours/FLINT, "exact_vs_gmp": worst ours/GMP,
+     "prove_seconds": s, ...}
 
 ``--prove EXE`` times ``EXE prove`` (the release CLI) once per round.
+``--gmp EXE`` runs the GMP harness (``benches/peers/gmp``: exact evaluation
+by rug next to ours, results checked identical there) once per round and
+takes each case's median.
 """
 
 import argparse
@@ -75,6 +79,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--ours", required=True)
     ap.add_argument("--prove", help="the release exact-bezier executable")
+    ap.add_argument("--gmp", help="the GMP harness executable (benches/peers/gmp)")
     ap.add_argument("--rounds", type=int, default=5)
     ap.add_argument("--repeat", type=int, default=9)
     args = ap.parse_args()
@@ -87,7 +92,13 @@ def main():
     t_flint = {n: [] for n, _, _ in cs}
     sizes = {}
     prove = []
+    gmp = {}
     for _ in range(args.rounds):
+        if args.gmp:
+            run = subprocess.run([args.gmp, "--repeat", str(args.repeat)], check=True,
+                                 capture_output=True, text=True).stdout
+            for name, case in json.loads(run.splitlines()[-1])["cases"].items():
+                gmp.setdefault(name, []).append((case["ours_ns"], case["gmp_ns"]))
         mine = ours(args.ours, path, args.repeat)
         for n, t, k in cs:
             ns, theirs = flint_power(t, k, args.repeat)
@@ -110,6 +121,16 @@ def main():
         worst = max(worst, a / b)
         print(f"{n:<22} {sizes[n]:>7} {a:>9.3f} {b:>9.3f} {a / b:>10.2f}")
     line = {"symbolic_vs_flint": round(worst, 3), "ratios": ratios}
+    if gmp:
+        print(f"\n{'exact evaluation, per point':<44} {'ours ns':>9} {'GMP ns':>9} {'ours/GMP':>9}")
+        exact = {}
+        for name, runs in gmp.items():
+            a = statistics.median(o for o, _ in runs)
+            b = statistics.median(g for _, g in runs)
+            exact[name] = round(a / b, 3)
+            print(f"{name:<44} {a:>9.0f} {b:>9.0f} {a / b:>9.2f}")
+        line["exact_vs_gmp"] = max(exact.values())
+        line["exact_ratios"] = exact
     if prove:
         line["prove_seconds"] = round(statistics.median(prove), 3)
         print(f"exact-bezier prove: {line['prove_seconds']} s (median of {len(prove)})")
