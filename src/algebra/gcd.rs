@@ -37,7 +37,12 @@ use num_traits::{One, Zero};
 /// assert_eq!(gcd(&a, &b), x);
 /// ```
 pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
-    let (mut a, mut b) = (a.to_u64_digits(), b.to_u64_digits());
+    from_limbs(&gcd_limbs(a.to_u64_digits(), b.to_u64_digits()))
+}
+
+/// [`gcd`] on little-endian 64-bit limbs (the form a fixed-size integer
+/// such as [`Wide`](crate::algebra::Wide) has without a big integer).
+pub(crate) fn gcd_limbs(mut a: Vec<u64>, mut b: Vec<u64>) -> Vec<u64> {
     if a.len() < b.len() || (a.len() == b.len() && a.iter().rev().lt(b.iter().rev())) {
         std::mem::swap(&mut a, &mut b);
     }
@@ -45,10 +50,11 @@ pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
     loop {
         trim(&mut a, &mut b);
         if b.is_empty() {
-            return from_limbs(&a);
+            return a;
         }
         if a.len() <= 2 {
-            return BigUint::from(gcd_u128(to_u128(&a), to_u128(&b)));
+            let g = gcd_u128(to_u128(&a), to_u128(&b));
+            return vec![g as u64, (g >> 64) as u64];
         }
         let shift = bits(&a) - LEAD_BITS;
         let cofactors = cosequence(leading(&a, shift), leading(&b, shift));
@@ -162,8 +168,10 @@ fn cosequence(x: u64, y: u64) -> [i64; 4] {
 }
 
 /// `gcd(x, y)` on machine words, by Stein's binary algorithm (shifts and
-/// subtractions: no 128-bit division), on 64-bit words when both fit (the
-/// common case, several times faster).
+/// subtractions), on 64-bit words when both fit (the common case, several
+/// times faster). Where they do not, one remainder first: a coordinate is
+/// often far larger than its weight, and the binary algorithm would
+/// spend a subtraction per bit of the difference.
 pub(crate) fn gcd_u128(x: u128, y: u128) -> u128 {
     if x == 0 || y == 0 {
         return x | y;
@@ -171,7 +179,15 @@ pub(crate) fn gcd_u128(x: u128, y: u128) -> u128 {
     if let (Ok(a), Ok(b)) = (u64::try_from(x), u64::try_from(y)) {
         return u128::from(binary_gcd(a, b));
     }
-    binary_gcd(x, y)
+    let (big, small) = if x < y { (y, x) } else { (x, y) };
+    let rest = big % small;
+    if rest == 0 {
+        return small;
+    }
+    match u64::try_from(small) {
+        Ok(s) => u128::from(binary_gcd(s, rest as u64)),
+        Err(_) => binary_gcd(small, rest),
+    }
 }
 
 /// Stein's binary gcd of non-zero words (`u64` or `u128`): strip the common
@@ -292,6 +308,15 @@ mod tests {
             prop_assert_eq!(gcd(&a, &b), a.gcd(&b));
             let (fa, fb) = (&a * &f, &b * &f);
             prop_assert_eq!(gcd(&fa, &fb), fa.gcd(&fb));
+        }
+
+        /// The word gcd equals `num-integer`'s, on words of any sizes (one
+        /// far larger than the other takes the remainder first).
+        #[test]
+        fn word_gcd_equals_binary_gcd(x in any::<u128>(), y in any::<u64>(), shift in 0u32..64, f in 1..u32::MAX) {
+            let (x, y) = (x.saturating_mul(u128::from(f)), u128::from(y) << shift);
+            prop_assert_eq!(gcd_u128(x, y), x.gcd(&y));
+            prop_assert_eq!(gcd_u128(y, x), x.gcd(&y));
         }
     }
 

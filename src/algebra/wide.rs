@@ -11,7 +11,7 @@
 //! words); `Wide` adds the `num-traits` identities that make it a
 //! [`Ring`](crate::Ring).
 
-use ethnum::I256;
+use ethnum::{I256, U256};
 use num_bigint::{BigInt, BigUint, Sign};
 use num_traits::{One, Zero};
 use std::ops::{Add, Mul, Neg, Sub};
@@ -46,6 +46,46 @@ impl Wide {
             (word >> (32 * (k % 4))) as u32
         });
         BigInt::from_biguint(sign, BigUint::from_slice(&digits))
+    }
+
+    /// `gcd(|self|, |other|)` by Lehmer's algorithm on the four 64-bit limbs
+    /// ([`gcd`](crate::algebra::gcd::gcd)), with no big integer.
+    ///
+    /// ```
+    /// use exact_bezier::algebra::Wide;
+    /// let a = Wide::from(i128::MAX) * &Wide::from(6);
+    /// let b = Wide::from(i128::MAX) * &Wide::from(-4);
+    /// assert_eq!(a.gcd(&b), Wide::from(i128::MAX) * &Wide::from(2));
+    /// ```
+    pub fn gcd(&self, other: &Wide) -> Wide {
+        let (a, b) = (self.0.unsigned_abs(), other.0.unsigned_abs());
+        let (a, b) = if a < b { (b, a) } else { (a, b) };
+        if b == U256::ZERO {
+            return Wide(a.as_i256());
+        }
+        // One remainder in 256 bits first: the quotient of a coordinate by
+        // the weight is usually far beyond what Lehmer's leading words
+        // certify, and would cost a big-integer division there.
+        let limbs = |x: U256| {
+            let (hi, lo) = x.into_words();
+            vec![lo as u64, (lo >> 64) as u64, hi as u64, (hi >> 64) as u64]
+        };
+        let g = crate::algebra::gcd::gcd_limbs(limbs(b), limbs(a % b));
+        let word = |k: usize| u128::from(g.get(k).copied().unwrap_or(0));
+        Wide(I256::from_words(
+            (word(2) | word(3) << 64) as i128,
+            (word(0) | word(1) << 64) as i128,
+        ))
+    }
+
+    /// Is `self < 0`?
+    pub fn is_negative(&self) -> bool {
+        self.0 < I256::ZERO
+    }
+
+    /// `self / d` for a divisor `d ≠ 0` of `self`.
+    pub fn div_exact(&self, d: &Wide) -> Wide {
+        Wide(self.0 / d.0)
     }
 
     /// The number of bits of `|self|` (0 for zero).
@@ -133,6 +173,20 @@ mod tests {
             let n = &ba * &bb - &bc * &bc + &ba;
             prop_assert_eq!(w.to_bigint(), n.clone());
             prop_assert_eq!(Wide::from_bigint(&n), Some(w));
+        }
+
+        /// `gcd` and `div_exact` agree with big integers, on operands of
+        /// very different sizes (a coordinate and its weight) and with a
+        /// planted common factor.
+        #[test]
+        fn gcd_agrees_with_bigint(a in any::<i128>(), b in any::<i128>(), c in any::<i64>(), f in 1..u64::MAX) {
+            use num_integer::Integer;
+            let (x, y) = (Wide::from(a) * Wide::from(i128::from(f)), Wide::from(i128::from(c)) * Wide::from(b));
+            let g = x.gcd(&y);
+            prop_assert_eq!(g.to_bigint(), x.to_bigint().gcd(&y.to_bigint()));
+            if !g.is_zero() {
+                prop_assert_eq!(x.div_exact(&g).to_bigint(), x.to_bigint() / g.to_bigint());
+            }
         }
     }
 

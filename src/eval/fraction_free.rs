@@ -89,8 +89,12 @@ impl KernelInt for Wide {
         }
     }
 
+    /// Reduced in 256 bits (Lehmer's gcd on the limbs, one division), so
+    /// the only big integers are the two of the result.
     fn fraction(num: &Wide, den: &Wide) -> BigRational {
-        fraction(num.to_bigint(), den.to_bigint())
+        let g = num.gcd(den);
+        let g = if den.is_negative() { -g } else { g };
+        BigRational::new_raw(num.div_exact(&g).to_bigint(), den.div_exact(&g).to_bigint())
     }
 }
 
