@@ -13,7 +13,8 @@
 //!
 //! Prints a table on standard error and one JSON line on standard output:
 //! `{"exact_vs_gmp": worst ours/GMP, "cases": {name: {"ours_ns", "gmp_ns", "ratio"}}}`,
-//! nanoseconds per point, the best of `--repeat` passes over the batch.
+//! nanoseconds per point, the best of `--repeat` passes over the batch
+//! (the two sides alternately).
 //! `--only TEXT` runs the cases whose name contains `TEXT`.
 
 use exact_bezier::algebra::parse_rational;
@@ -30,7 +31,10 @@ struct Lcg(u64);
 
 impl Lcg {
     fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         self.0 >> 33
     }
 
@@ -46,7 +50,7 @@ impl Lcg {
 
     /// A signed decimal of `n` significant digits, four after the point.
     fn coordinate(&mut self, n: usize) -> String {
-        let sign = if self.next() % 2 == 0 { "" } else { "-" };
+        let sign = if self.next().is_multiple_of(2) { "" } else { "-" };
         format!("{sign}{}/10000", self.digits(n))
     }
 
@@ -94,17 +98,31 @@ impl Case {
             Shape::Tri => (DEGREE + 1) * (DEGREE + 2) / 2,
         };
         let net = (0..count)
-            .map(|_| [rng.coordinate(digits), rng.coordinate(digits), rng.coordinate(digits), rng.weight()])
+            .map(|_| {
+                [
+                    rng.coordinate(digits),
+                    rng.coordinate(digits),
+                    rng.coordinate(digits),
+                    rng.weight(),
+                ]
+            })
             .collect();
         let per_point = if matches!(shape, Shape::Curve) { 1 } else { 2 };
-        let params = (0..points * per_point).map(|_| rng.parameter(long)).collect();
+        let params = (0..points * per_point)
+            .map(|_| rng.parameter(long))
+            .collect();
         let kind = match shape {
             Shape::Curve => "curve",
             Shape::Rect => "bicubic",
             Shape::Tri => "triangle",
         };
         let param = if long { "60-digit" } else { "k/1000" };
-        Case { name: format!("{kind}, {digits}-digit points, {param}"), shape, points: net, params }
+        Case {
+            name: format!("{kind}, {digits}-digit points, {param}"),
+            shape,
+            points: net,
+            params,
+        }
     }
 
     /// The patch in our JSON format.
@@ -119,9 +137,18 @@ impl Case {
             ),
             Shape::Rect => {
                 let rows = |f: &dyn Fn(&[String; 4]) -> Value| {
-                    json!(self.points.chunks(DEGREE + 1).map(|r| r.iter().map(f).collect::<Vec<_>>()).collect::<Vec<_>>())
+                    json!(self
+                        .points
+                        .chunks(DEGREE + 1)
+                        .map(|r| r.iter().map(f).collect::<Vec<_>>())
+                        .collect::<Vec<_>>())
                 };
-                ("rect", json!([DEGREE, DEGREE]), rows(&point), rows(&|p| json!(p[3])))
+                (
+                    "rect",
+                    json!([DEGREE, DEGREE]),
+                    rows(&point),
+                    rows(&|p| json!(p[3])),
+                )
             }
             Shape::Tri => {
                 let rows = |f: &dyn Fn(&[String; 4]) -> Value| {
@@ -158,7 +185,9 @@ impl GmpNet {
                 .collect(),
             Shape::Tri => (0..=DEGREE)
                 .flat_map(|i| (0..=DEGREE - i).map(move |j| (i, j)))
-                .map(|(i, j)| factorial(DEGREE) / (factorial(i) * factorial(j) * factorial(DEGREE - i - j)))
+                .map(|(i, j)| {
+                    factorial(DEGREE) / (factorial(i) * factorial(j) * factorial(DEGREE - i - j))
+                })
                 .collect(),
         };
         let hom: Vec<[Rational; 4]> = case
@@ -168,17 +197,30 @@ impl GmpNet {
             .map(|(p, f)| {
                 let w = rational(&p[3]);
                 let scaled = |x: &str| rational(x) * &w * Integer::from(*f);
-                [scaled(&p[0]), scaled(&p[1]), scaled(&p[2]), w.clone() * Integer::from(*f)]
+                [
+                    scaled(&p[0]),
+                    scaled(&p[1]),
+                    scaled(&p[2]),
+                    w.clone() * Integer::from(*f),
+                ]
             })
             .collect();
-        let lcm = hom.iter().flatten().fold(Integer::from(1), |l, q| l.lcm(q.denom()));
+        let lcm = hom
+            .iter()
+            .flatten()
+            .fold(Integer::from(1), |l, q| l.lcm(q.denom()));
         let coords = hom
             .iter()
             .map(|h| {
-                std::array::from_fn(|k| Integer::from(h[k].numer() * Integer::from(&lcm / h[k].denom())))
+                std::array::from_fn(|k| {
+                    h[k].numer() * Integer::from(&lcm / h[k].denom())
+                })
             })
             .collect();
-        GmpNet { shape: case.shape, coords }
+        GmpNet {
+            shape: case.shape,
+            coords,
+        }
     }
 
     /// The homogeneous Horner sum `Σ_i c_i x^i y^(n−i)` of four coordinates.
@@ -216,8 +258,8 @@ impl GmpNet {
             }
             Shape::Tri => {
                 let d = Integer::from(t[0].denom().lcm_ref(t[1].denom()));
-                let u = Integer::from(t[0].numer() * Integer::from(&d / t[0].denom()));
-                let v = Integer::from(t[1].numer() * Integer::from(&d / t[1].denom()));
+                let u = t[0].numer() * Integer::from(&d / t[0].denom());
+                let v = t[1].numer() * Integer::from(&d / t[1].denom());
                 let w = Integer::from(&d - &u) - &v;
                 // Row j holds the points of v-exponent j, by u-exponent i:
                 // Σ_j v^j·Σ_i u^i w^(n−i−j) c_ij.
@@ -239,7 +281,11 @@ impl GmpNet {
             }
         };
         let [x, y, z, w] = h;
-        [Rational::from((x, &w)), Rational::from((y, &w)), Rational::from((z, w))]
+        [
+            Rational::from((x, &w)),
+            Rational::from((y, &w)),
+            Rational::from((z, w)),
+        ]
     }
 }
 
@@ -251,15 +297,23 @@ fn rational(text: &str) -> Rational {
     Rational::from(Rational::parse(text).expect("an exact fraction"))
 }
 
-/// Nanoseconds per point of the fastest of `repeat` runs of `f`.
-fn best_of(repeat: usize, points: usize, mut f: impl FnMut()) -> f64 {
-    (0..repeat)
-        .map(|_| {
-            let start = Instant::now();
-            f();
-            start.elapsed().as_nanos() as f64 / points as f64
-        })
-        .fold(f64::INFINITY, f64::min)
+/// Nanoseconds per point of the fastest of `repeat` runs of `ours` and of
+/// `theirs`, run alternately so that a change of machine speed during the
+/// measurement falls on both sides.
+fn interleaved(
+    repeat: usize,
+    points: usize,
+    mut ours: impl FnMut(),
+    mut theirs: impl FnMut(),
+) -> (f64, f64) {
+    let time = |f: &mut dyn FnMut()| {
+        let start = Instant::now();
+        f();
+        start.elapsed().as_nanos() as f64 / points as f64
+    };
+    (0..repeat).fold((f64::INFINITY, f64::INFINITY), |(a, b), _| {
+        (a.min(time(&mut ours)), b.min(time(&mut theirs)))
+    })
 }
 
 fn arg(args: &[String], name: &str, default: usize) -> usize {
@@ -271,7 +325,10 @@ fn arg(args: &[String], name: &str, default: usize) -> usize {
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let (points, repeat) = (arg(&args, "--points", 256), arg(&args, "--repeat", 7));
-    let only = args.iter().position(|a| a == "--only").map(|i| args[i + 1].clone());
+    let only = args
+        .iter()
+        .position(|a| a == "--only")
+        .map(|i| args[i + 1].clone());
     let mut rng = Lcg(30);
     let mut cases = Map::new();
     let mut worst = 0.0f64;
@@ -279,18 +336,27 @@ fn main() {
         for digits in [10, 30] {
             for long in [false, true] {
                 let case = Case::new(shape, digits, long, points, &mut rng);
-                if only.as_ref().is_some_and(|o| !case.name.contains(o.as_str())) {
+                if only
+                    .as_ref()
+                    .is_some_and(|o| !case.name.contains(o.as_str()))
+                {
                     continue;
                 }
                 let (ours, gmp) = run(&case, points, repeat);
                 let ratio = ours / gmp;
                 worst = worst.max(ratio);
-                eprintln!("{:<44} ours {:>9.0} ns  GMP {:>9.0} ns  ours/GMP {:.2}", case.name, ours, gmp, ratio);
+                eprintln!(
+                    "{:<44} ours {:>9.0} ns  GMP {:>9.0} ns  ours/GMP {:.2}",
+                    case.name, ours, gmp, ratio
+                );
                 cases.insert(case.name, json!({"ours_ns": ours.round(), "gmp_ns": gmp.round(), "ratio": (ratio * 1000.0).round() / 1000.0}));
             }
         }
     }
-    println!("{}", json!({"exact_vs_gmp": (worst * 1000.0).round() / 1000.0, "cases": cases}));
+    println!(
+        "{}",
+        json!({"exact_vs_gmp": (worst * 1000.0).round() / 1000.0, "cases": cases})
+    );
 }
 
 /// Both sides on one case, results checked identical: (ours, GMP) in ns per point.
@@ -301,19 +367,30 @@ fn run(case: &Case, points: usize, repeat: usize) -> (f64, f64) {
         Patch::Rect(r) => Evaluator::rect(r),
         Patch::Tri(t) => Evaluator::tri(t),
     };
-    let params: Vec<BigRational> = case.params.iter().map(|p| parse_rational(p).expect("exact")).collect();
+    let params: Vec<BigRational> = case
+        .params
+        .iter()
+        .map(|p| parse_rational(p).expect("exact"))
+        .collect();
     let mut out = vec![BigRational::from_integer(0.into()); points * 3];
-    let ours = best_of(repeat, points, || ev.eval_batch(&params, &mut out).expect("finite points"));
     let net = GmpNet::new(case);
     let gmp_params: Vec<Rational> = case.params.iter().map(|p| rational(p)).collect();
     let per_point = gmp_params.len() / points;
     let mut theirs = Vec::with_capacity(points);
-    let gmp = best_of(repeat, points, || {
-        theirs = gmp_params.chunks(per_point).map(|t| net.eval(t)).collect();
-    });
+    let (ours, gmp) = interleaved(
+        repeat,
+        points,
+        || ev.eval_batch(&params, &mut out).expect("finite points"),
+        || theirs = gmp_params.chunks(per_point).map(|t| net.eval(t)).collect(),
+    );
     for (k, (o, g)) in out.chunks(3).zip(&theirs).enumerate() {
         for (x, y) in o.iter().zip(g) {
-            assert_eq!(x.to_string(), y.to_string(), "{}: point {k} differs", case.name);
+            assert_eq!(
+                x.to_string(),
+                y.to_string(),
+                "{}: point {k} differs",
+                case.name
+            );
         }
     }
     (ours, gmp)
