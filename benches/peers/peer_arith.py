@@ -1,6 +1,7 @@
 """The arithmetic peer benchmark of issue 30 (run by benches/peers/arith).
 
-Writes the polynomial cases, runs our side (the `peer_arith` bench target,
+Writes the polynomial cases (powers, and the Möbius identity of proofs/
+written once in each engine), runs our side (the `peer_arith` bench target,
 ``--ours``) and FLINT's ``fmpq_mpoly`` (python-flint) on the same inputs,
 ``--rounds`` times interleaved, checks that every result is identical term
 by term, and prints a table of medians and a final JSON line::
@@ -51,6 +52,60 @@ def cases():
     ]
 
 
+MOBIUS = [3, 5, 6]
+
+
+def flint_mobius(m, repeat):
+    """The Möbius identity of proofs/ (yang_yong::mobius_uv_sides) on FLINT,
+    the same steps as ours: the weights of the fully symbolic (m, m) net
+    times (1−α)^i α^(m−i) (1−β)^j β^(m−j) (maps (2)(3) by rule (4)), de
+    Casteljau in t on each row then in s at (s, t); the old net by de
+    Casteljau at the homogeneous parameters (α(1−s), (1−α)s; β(1−t),
+    (1−β)t); the two checked equal. Returns the median ns and the new
+    side's weight coordinate as {((name, e), …): Fraction}."""
+    names = ([f"p{i}{j}" for i in range(m + 1) for j in range(m + 1)]
+             + [f"w{i}{j}" for i in range(m + 1) for j in range(m + 1)] + ["alpha", "beta", "s", "t"])
+    ctx = flint.fmpq_mpoly_ctx.get(tuple(names), "lex")
+    g = dict(zip(names, ctx.gens()))
+    a, b, s, t = g["alpha"], g["beta"], g["s"], g["t"]
+
+    def casteljau(points, h0, h1):
+        row = [list(p) for p in points]
+        for k in range(len(row) - 1, 0, -1):
+            for i in range(k):
+                row[i] = [h0 * x + h1 * y for x, y in zip(row[i], row[i + 1])]
+        return row[0]
+
+    def identity():
+        c = [[(g[f"p{i}{j}"], g[f"w{i}{j}"]) for j in range(m + 1)] for i in range(m + 1)]
+        fu = [(1 - a) ** i * a ** (m - i) for i in range(m + 1)]
+        fv = [(1 - b) ** j * b ** (m - j) for j in range(m + 1)]
+        moved = [[[x * fu[i] * fv[j] for x in c[i][j]] for j in range(m + 1)] for i in range(m + 1)]
+        new = casteljau([casteljau(row, 1 - t, t) for row in moved], 1 - s, s)
+        old = casteljau([casteljau(row, b * (1 - t), (1 - b) * t) for row in c], a * (1 - s), (1 - a) * s)
+        if new != old:
+            sys.exit(f"FLINT: the Möbius identity fails at m = {m}")
+        return new[1]
+
+    times = []
+    for _ in range(repeat):
+        start = time.perf_counter_ns()
+        w = identity()
+        times.append(time.perf_counter_ns() - start)
+    result = {tuple(sorted((names[k], e) for k, e in enumerate(exps) if e)): Fraction(str(c))
+              for exps, c in w.to_dict().items()}
+    return statistics.median(times), result
+
+
+ASCII = {"α": "alpha", "β": "beta"}  # FLINT's variable names are ASCII
+
+
+def named(terms):
+    """Our named terms [[[name, e], …], "p/q"] as FLINT's dictionary."""
+    return {tuple(sorted((ASCII.get(v, v), e) for v, e in vars_ if e)): Fraction(c)
+            for vars_, c in terms}
+
+
 def to_json(terms):
     return [[list(e), str(c)] for e, c in terms.items()]
 
@@ -71,8 +126,13 @@ def ours(exe, path, repeat):
     out = subprocess.run([exe, path, "--repeat", str(repeat)], check=True,
                          capture_output=True, text=True).stdout
     data = json.loads(out)
-    return {name: (v["ns"], {tuple(e): Fraction(c) for e, c in v["terms"]})
+    return {name: (v["ns"], named(v["terms"]) if name.startswith("Möbius")
+                   else {tuple(e): Fraction(c) for e, c in v["terms"]})
             for name, v in data.items()}
+
+
+def mobius_name(m):
+    return f"Möbius identity ({m}, {m})"
 
 
 def main():
@@ -85,11 +145,12 @@ def main():
     args = ap.parse_args()
     cs = cases()
     with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
-        json.dump([{"name": n, "vars": 4, "terms": to_json(t), "power": k}
-                   for n, t, k in cs], f)
+        json.dump([{"name": n, "vars": 4, "terms": to_json(t), "power": k} for n, t, k in cs]
+                  + [{"name": mobius_name(m), "mobius": m} for m in MOBIUS], f)
         path = f.name
-    t_ours = {n: [] for n, _, _ in cs}
-    t_flint = {n: [] for n, _, _ in cs}
+    names = [n for n, _, _ in cs] + [mobius_name(m) for m in MOBIUS]
+    t_ours = {n: [] for n in names}
+    t_flint = {n: [] for n in names}
     sizes = {}
     prove = []
     gmp = {}
@@ -100,8 +161,10 @@ def main():
             for name, case in json.loads(run.splitlines()[-1])["cases"].items():
                 gmp.setdefault(name, []).append((case["ours_ns"], case["gmp_ns"]))
         mine = ours(args.ours, path, args.repeat)
-        for n, t, k in cs:
-            ns, theirs = flint_power(t, k, args.repeat)
+        runs = [(n, lambda t=t, k=k: flint_power(t, k, args.repeat)) for n, t, k in cs]
+        runs += [(mobius_name(m), lambda m=m: flint_mobius(m, args.repeat)) for m in MOBIUS]
+        for n, run in runs:
+            ns, theirs = run()
             ns_ours, result = mine[n]
             if result != theirs:
                 sys.exit(f"{n}: results differ ({len(result)} terms against {len(theirs)})")
@@ -112,14 +175,14 @@ def main():
             start = time.perf_counter()
             subprocess.run([args.prove, "prove"], check=True, capture_output=True)
             prove.append(time.perf_counter() - start)
-    print(f"{'case':<22} {'terms':>7} {'ours ms':>9} {'FLINT ms':>9} {'ours/FLINT':>10}")
+    print(f"{'case':<26} {'terms':>7} {'ours ms':>9} {'FLINT ms':>9} {'ours/FLINT':>10}")
     worst = 0.0
     ratios = {}
-    for n, _, _ in cs:
+    for n in names:
         a, b = statistics.median(t_ours[n]) / 1e6, statistics.median(t_flint[n]) / 1e6
         ratios[n] = round(a / b, 3)
         worst = max(worst, a / b)
-        print(f"{n:<22} {sizes[n]:>7} {a:>9.3f} {b:>9.3f} {a / b:>10.2f}")
+        print(f"{n:<26} {sizes[n]:>7} {a:>9.3f} {b:>9.3f} {a / b:>10.2f}")
     line = {"symbolic_vs_flint": round(worst, 3), "ratios": ratios}
     if gmp:
         print(f"\n{'exact evaluation, per point':<44} {'ours ns':>9} {'GMP ns':>9} {'ours/GMP':>9}")

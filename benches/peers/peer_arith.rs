@@ -1,19 +1,23 @@
 //! Our side of the arithmetic peer benchmark `benches/peers/arith` (issue
-//! 30): reads the polynomial cases that `benches/peers/peer_arith.py`
-//! wrote, raises each polynomial to its power with [`Poly::pow`] and prints
-//! one JSON object: per case the median nanoseconds of `--repeat` runs and
-//! the expanded result (exponent vectors and exact coefficients), which the
-//! script compares term by term with FLINT's.
+//! 30): reads the cases that `benches/peers/peer_arith.py` wrote, runs
+//! each and prints one JSON object: per case the median nanoseconds of
+//! `--repeat` runs and the expanded result (exponent vectors and exact
+//! coefficients), which the script compares term by term with FLINT's.
 //!
 //! ```text
-//! cargo bench --bench peer_arith -- CASES.json [--repeat 9]
+//! cargo bench -p exact-bezier-proofs --bench peer_arith -- CASES.json [--repeat 9]
 //! ```
 //!
-//! Each case is `{"name", "vars": n, "terms": [[[e_0, …, e_{n−1}], "p/q"], …],
-//! "power": k}` in the variables `x0 … x{n−1}`.
+//! A case is either a power, `{"name", "vars": n, "terms": [[[e_0, …,
+//! e_{n−1}], "p/q"], …], "power": k}` in the variables `x0 … x{n−1}`,
+//! raised with [`Poly::pow`]; or the Möbius identity of `proofs/`,
+//! `{"name", "mobius": m}`: both sides of the maps (2)(3) on the fully
+//! symbolic (m, m) net ([`mobius_uv_sides`]), checked equal, the result
+//! being the new side's weight coordinate, with variables by name.
 
 use exact_bezier::algebra::parse_rational;
 use exact_bezier::Poly;
+use exact_bezier_proofs::yang_yong::mobius_uv_sides;
 use serde_json::{json, Map, Value};
 use std::time::Instant;
 
@@ -33,23 +37,49 @@ fn main() {
     let mut out = Map::new();
     for case in &cases {
         let name = case["name"].as_str().expect("a case name");
-        let n = case["vars"].as_u64().expect("vars") as usize;
-        let k = case["power"].as_u64().expect("power") as u32;
-        let p = read_poly(&case["terms"], n);
-        let mut times = Vec::with_capacity(repeat);
-        let mut result = Poly::default();
-        for _ in 0..repeat {
-            let start = Instant::now();
-            result = std::hint::black_box(&p).pow(k);
-            times.push(start.elapsed().as_nanos() as u64);
-        }
-        times.sort_unstable();
-        out.insert(
-            name.to_string(),
-            json!({"ns": times[times.len() / 2], "terms": write_poly(&result, n)}),
-        );
+        let (ns, terms) = match case["mobius"].as_u64() {
+            Some(m) => {
+                let identity = || {
+                    let (new, old) = mobius_uv_sides(m as usize, m as usize);
+                    assert_eq!(new, old, "the Möbius identity fails at m = {m}");
+                    new.coords[1].clone()
+                };
+                let (ns, weight) = median_time(repeat, identity);
+                (ns, write_named(&weight))
+            }
+            None => {
+                let n = case["vars"].as_u64().expect("vars") as usize;
+                let k = case["power"].as_u64().expect("power") as u32;
+                let p = read_poly(&case["terms"], n);
+                let (ns, result) = median_time(repeat, || std::hint::black_box(&p).pow(k));
+                (ns, write_poly(&result, n))
+            }
+        };
+        out.insert(name.to_string(), json!({"ns": ns, "terms": terms}));
     }
     println!("{}", Value::Object(out));
+}
+
+/// The median nanoseconds of `repeat` runs of `f`, and its last result.
+fn median_time<R>(repeat: usize, mut f: impl FnMut() -> R) -> (u64, R) {
+    let mut times = Vec::with_capacity(repeat);
+    let mut result = None;
+    for _ in 0..repeat.max(1) {
+        let start = Instant::now();
+        result = Some(f());
+        times.push(start.elapsed().as_nanos() as u64);
+    }
+    times.sort_unstable();
+    (times[times.len() / 2], result.expect("one run at least"))
+}
+
+/// The terms as `[[[name, exponent], …], "p/q"]` (variables by name).
+fn write_named(p: &Poly) -> Value {
+    Value::Array(
+        p.terms()
+            .map(|(vars, c)| json!([vars, c.to_string()]))
+            .collect(),
+    )
 }
 
 /// The polynomial `Σ c·x0^e0⋯` from `[[exponents], "p/q"]` pairs.
