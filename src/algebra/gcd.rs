@@ -19,7 +19,7 @@
 
 use num_bigint::{BigInt, BigUint, Sign};
 use num_rational::BigRational;
-use num_traits::{One, Zero};
+use num_traits::{One, ToPrimitive, Zero};
 
 /// `gcd(a, b)` by Lehmer's algorithm (`gcd(0, 0) = 0`).
 ///
@@ -37,6 +37,10 @@ use num_traits::{One, Zero};
 /// assert_eq!(gcd(&a, &b), x);
 /// ```
 pub fn gcd(a: &BigUint, b: &BigUint) -> BigUint {
+    if let (Some(x), Some(y)) = (a.to_u128(), b.to_u128()) {
+        // Machine words: no limb vectors.
+        return BigUint::from(gcd_u128(x, y));
+    }
     from_limbs(&gcd_limbs(a.to_u64_digits(), b.to_u64_digits()))
 }
 
@@ -186,8 +190,26 @@ pub(crate) fn gcd_u128(x: u128, y: u128) -> u128 {
     }
     match u64::try_from(small) {
         Ok(s) => u128::from(binary_gcd(s, rest as u64)),
-        Err(_) => binary_gcd(small, rest),
+        Err(_) => binary_gcd_wide(small, rest),
     }
+}
+
+/// [`binary_gcd`] on 128-bit words that moves to 64-bit words as soon as
+/// both operands fit one (each 64-bit step is about twice as fast).
+fn binary_gcd_wide(x: u128, y: u128) -> u128 {
+    let twos = (x | y).trailing_zeros();
+    let (mut x, mut y) = (x >> x.trailing_zeros(), y);
+    while y != 0 {
+        if (x | y) >> 64 == 0 {
+            return u128::from(binary_gcd(x as u64, y as u64)) << twos;
+        }
+        y >>= y.trailing_zeros();
+        if x > y {
+            std::mem::swap(&mut x, &mut y);
+        }
+        y -= x;
+    }
+    x << twos
 }
 
 /// Stein's binary gcd of non-zero words (`u64` or `u128`): strip the common

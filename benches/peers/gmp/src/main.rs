@@ -11,8 +11,10 @@
 //! cargo run --release --manifest-path benches/peers/gmp/Cargo.toml -- [--points 256] [--repeat 7] [--only TEXT]
 //! ```
 //!
+//! Then our Lehmer gcd against `mpz_gcd` on operands of 64 to 1 024 bits.
 //! Prints a table on standard error and one JSON line on standard output:
-//! `{"exact_vs_gmp": worst ours/GMP, "cases": {name: {"ours_ns", "gmp_ns", "ratio"}}}`,
+//! `{"exact_vs_gmp": worst ours/GMP, "cases": {name: {"ours_ns", "gmp_ns", "ratio"}},
+//! "gcd_vs_gmp": worst, "gcd": {…}}`,
 //! nanoseconds per point, the best of `--repeat` passes over the batch
 //! (the two sides alternately).
 //! `--only TEXT` runs the cases whose name contains `TEXT`.
@@ -21,6 +23,7 @@ use exact_bezier::algebra::parse_rational;
 use exact_bezier::eval::Evaluator;
 use exact_bezier::io::read_patches;
 use exact_bezier::Patch;
+use num_bigint::BigUint;
 use num_rational::BigRational;
 use rug::{Integer, Rational};
 use serde_json::{json, Map, Value};
@@ -50,7 +53,11 @@ impl Lcg {
 
     /// A signed decimal of `n` significant digits, four after the point.
     fn coordinate(&mut self, n: usize) -> String {
-        let sign = if self.next().is_multiple_of(2) { "" } else { "-" };
+        let sign = if self.next().is_multiple_of(2) {
+            ""
+        } else {
+            "-"
+        };
         format!("{sign}{}/10000", self.digits(n))
     }
 
@@ -211,11 +218,7 @@ impl GmpNet {
             .fold(Integer::from(1), |l, q| l.lcm(q.denom()));
         let coords = hom
             .iter()
-            .map(|h| {
-                std::array::from_fn(|k| {
-                    h[k].numer() * Integer::from(&lcm / h[k].denom())
-                })
-            })
+            .map(|h| std::array::from_fn(|k| h[k].numer() * Integer::from(&lcm / h[k].denom())))
             .collect();
         GmpNet {
             shape: case.shape,
@@ -349,14 +352,80 @@ fn main() {
                     "{:<44} ours {:>9.0} ns  GMP {:>9.0} ns  ours/GMP {:.2}",
                     case.name, ours, gmp, ratio
                 );
-                cases.insert(case.name, json!({"ours_ns": ours.round(), "gmp_ns": gmp.round(), "ratio": (ratio * 1000.0).round() / 1000.0}));
+                cases.insert(
+                    case.name,
+                    json!({"ours_ns": ours.round(), "gmp_ns": gmp.round(), "ratio": round3(ratio)}),
+                );
             }
         }
     }
+    let gcds = gcd_cases(repeat, &mut rng);
+    let gcd_worst = gcds
+        .values()
+        .filter_map(|c| c["ratio"].as_f64())
+        .fold(0.0, f64::max);
     println!(
         "{}",
-        json!({"exact_vs_gmp": (worst * 1000.0).round() / 1000.0, "cases": cases})
+        json!({"exact_vs_gmp": round3(worst), "cases": cases, "gcd_vs_gmp": gcd_worst, "gcd": gcds})
     );
+}
+
+fn round3(x: f64) -> f64 {
+    (x * 1000.0).round() / 1000.0
+}
+
+/// Our Lehmer gcd ([`exact_bezier::algebra::gcd::gcd`]) against GMP's
+/// `mpz_gcd` on 2 000 pairs of random operands of 64 to 1 024 bits with a
+/// planted common factor of 20 bits, results checked equal: ns per gcd.
+fn gcd_cases(repeat: usize, rng: &mut Lcg) -> Map<String, Value> {
+    let mut out = Map::new();
+    for bits in [64, 128, 256, 512, 1024] {
+        let number = |rng: &mut Lcg| rng.digits(bits * 3 / 10 - 6);
+        let pairs: Vec<(String, String)> = (0..2000)
+            .map(|_| {
+                let f = rng.digits(6);
+                (format!("{}{f}", number(rng)), format!("{}{f}", number(rng)))
+            })
+            .collect();
+        let ours: Vec<(BigUint, BigUint)> = pairs
+            .iter()
+            .map(|(a, b)| (a.parse().unwrap(), b.parse().unwrap()))
+            .collect();
+        let theirs: Vec<(Integer, Integer)> = pairs
+            .iter()
+            .map(|(a, b)| (a.parse().unwrap(), b.parse().unwrap()))
+            .collect();
+        let (mut g_ours, mut g_gmp) = (Vec::new(), Vec::new());
+        let (a, b) = interleaved(
+            repeat,
+            pairs.len(),
+            || {
+                g_ours = ours
+                    .iter()
+                    .map(|(a, b)| exact_bezier::algebra::gcd::gcd(a, b))
+                    .collect()
+            },
+            || {
+                g_gmp = theirs
+                    .iter()
+                    .map(|(a, b)| Integer::from(a.gcd_ref(b)))
+                    .collect()
+            },
+        );
+        for (x, y) in g_ours.iter().zip(&g_gmp) {
+            assert_eq!(x.to_string(), y.to_string(), "gcds differ");
+        }
+        let name = format!("gcd, {bits}-bit operands");
+        eprintln!(
+            "{name:<44} ours {a:>9.0} ns  GMP {b:>9.0} ns  ours/GMP {:.2}",
+            a / b
+        );
+        out.insert(
+            name,
+            json!({"ours_ns": a.round(), "gmp_ns": b.round(), "ratio": round3(a / b)}),
+        );
+    }
+    out
 }
 
 /// Both sides on one case, results checked identical: (ours, GMP) in ns per point.
