@@ -7,7 +7,7 @@ written once in each engine), runs our side (the `peer_arith` bench target,
 by term, and prints a table of medians and a final JSON line::
 
     {"symbolic_vs_flint": worst ours/FLINT, "exact_vs_gmp": worst ours/GMP,
-     "prove_seconds": s, ...}
+     "gcd_vs_gmp": worst ours/GMP, "prove_seconds": s, ...}
 
 ``--prove EXE`` times ``EXE prove`` (the release CLI) once per round.
 ``--gmp EXE`` runs the GMP harness (``benches/peers/gmp``: exact evaluation
@@ -158,7 +158,8 @@ def main():
         if args.gmp:
             run = subprocess.run([args.gmp, "--repeat", str(args.repeat)], check=True,
                                  capture_output=True, text=True).stdout
-            for name, case in json.loads(run.splitlines()[-1])["cases"].items():
+            line = json.loads(run.splitlines()[-1])
+            for name, case in {**line["cases"], **line["gcd"]}.items():
                 gmp.setdefault(name, []).append((case["ours_ns"], case["gmp_ns"]))
         mine = ours(args.ours, path, args.repeat)
         runs = [(n, lambda t=t, k=k: flint_power(t, k, args.repeat)) for n, t, k in cs]
@@ -192,8 +193,12 @@ def main():
             b = statistics.median(g for _, g in runs)
             exact[name] = round(a / b, 3)
             print(f"{name:<44} {a:>9.0f} {b:>9.0f} {a / b:>9.2f}")
+        gcd = {n: r for n, r in exact.items() if n.startswith("gcd")}
+        exact = {n: r for n, r in exact.items() if n not in gcd}
         line["exact_vs_gmp"] = max(exact.values())
         line["exact_ratios"] = exact
+        line["gcd_vs_gmp"] = max(gcd.values())
+        line["gcd_ratios"] = gcd
     if prove:
         line["prove_seconds"] = round(statistics.median(prove), 3)
         print(f"exact-bezier prove: {line['prove_seconds']} s (median of {len(prove)})")
