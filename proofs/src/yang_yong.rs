@@ -393,7 +393,7 @@ fn linear_product(c: Poly, factors: &[(&[Poly; 2], usize)]) -> Vec<Poly> {
     };
     factors
         .iter()
-        .flat_map(|(f, e)| std::iter::repeat(*f).take(*e))
+        .flat_map(|(f, e)| std::iter::repeat_n(*f, *e))
         .fold(vec![c], |g, f| times(&g, f))
 }
 
