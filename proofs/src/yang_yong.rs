@@ -798,4 +798,25 @@ mod tests {
         };
         assert_eq!(weight_rule_with(flipped).verdict, Verdict::Refuted);
     }
+
+    /// `linear_product`'s Bernstein coefficients, summed against the
+    /// Bernstein basis, give the product expanded directly in x.
+    #[test]
+    fn linear_product_is_the_product_in_bernstein_form() {
+        let (x, a, b) = (v("x"), v("a"), v("b"));
+        let f = [a.clone(), b.clone()]; // a(1 − x) + b·x
+        let s = [Poly::zero(), one()]; // x
+        let coeffs = linear_product(ratio(3, 2), &[(&f, 2), (&s, 1)]);
+        assert_eq!(coeffs.len(), 4);
+        let in_x: Poly = coeffs
+            .iter()
+            .enumerate()
+            .map(|(k, c)| c.clone() * &bernstein::<Poly>(k, 3, &x))
+            .sum();
+        let linear = a.clone() * &(one() - &x) + &(b * &x);
+        assert_eq!(in_x, linear.pow(2) * &x * ratio::<Poly>(3, 2));
+        // By hand: the coefficients of (3/2)·x·(a(1 − x) + b x)² are
+        // (0, a²/2, ab, 3b²/2).
+        assert_eq!(coeffs[1], a.pow(2) * ratio::<Poly>(1, 2));
+    }
 }
