@@ -1,7 +1,7 @@
 """The arithmetic peer benchmark of issue 30 (run by benches/peers/arith).
 
-Writes the polynomial cases (powers, and the Möbius identity of proofs/
-written once in each engine), runs our side (the `peer_arith` bench target,
+Writes the polynomial cases (powers, and the Möbius and quadratic-map
+identities of proofs/ written once in each engine), runs our side (the `peer_arith` bench target,
 ``--ours``) and FLINT's ``fmpq_mpoly`` (python-flint) on the same inputs,
 ``--rounds`` times interleaved, checks that every result is identical term
 by term, and prints a table of medians and a final JSON line::
@@ -17,6 +17,7 @@ takes each case's median.
 
 import argparse
 import json
+import math
 import random
 import statistics
 import subprocess
@@ -97,7 +98,92 @@ def flint_mobius(m, repeat):
     return statistics.median(times), result
 
 
-ASCII = {"α": "alpha", "β": "beta"}  # FLINT's variable names are ASCII
+# FLINT's variable names are ASCII
+ASCII = {"α": "alpha", "β": "beta", "α1": "alpha1", "α2": "alpha2", "β1": "beta1", "β2": "beta2"}
+
+
+QUADRATIC = [2, 3, 4]
+
+
+def bernstein_times_linear(g, f):
+    """Bernstein coefficients of g·(f0(1 − x) + f1 x), degree p → p + 1."""
+    p = len(g) - 1
+    out = []
+    for k in range(p + 2):
+        acc = 0
+        if k <= p:
+            acc += g[k] * f[0] * flint.fmpq(p + 1 - k, p + 1)
+        if k > 0:
+            acc += g[k - 1] * f[1] * flint.fmpq(k, p + 1)
+        out.append(acc)
+    return out
+
+
+def linear_product(c, factors):
+    """Bernstein coefficients of c·Π f^e for linear factors f = (f0, f1)."""
+    g = [c]
+    for f, e in factors:
+        for _ in range(e):
+            g = bernstein_times_linear(g, f)
+    return g
+
+
+def flint_quadratic(m, repeat):
+    """The quadratic map's point identity of proofs/ (yang_yong::
+    quadratic_identity) on FLINT, the same steps as ours: the map (9)–(17)
+    on the (m, m) net of symbolic weights w_ij (c′ and e′ by Bernstein
+    products, then eq. (17)'s sums), the coefficient of each w_ij (a
+    derivative: the result is linear in them), the old side's Bernstein
+    coefficients built factor by factor, and every coefficient compared.
+    Returns the median ns and the weight (m, m) of the map's output."""
+    n, d = m, 2 * m
+    ws = [f"w{i}{j}" for i in range(m + 1) for j in range(n + 1)]
+    names = ws + ["alpha1", "alpha2", "beta1", "beta2"]
+    ctx = flint.fmpq_mpoly_ctx.get(tuple(names), "lex")
+    g = dict(zip(names, ctx.gens()))
+    one, zero = ctx.from_dict({(0,) * len(names): 1}), ctx.from_dict({})
+    alpha, beta = (g["alpha2"], g["alpha1"]), (g["beta2"], g["beta1"])
+    comp = lambda x: (1 - x[0], 1 - x[1])
+    C = math.comb
+
+    def coefficients(k, a):
+        return [linear_product(one, [(a, k - i), (comp(a), i)]) for i in range(k + 1)]
+
+    def identity():
+        c, e = coefficients(m, alpha), coefficients(n, beta)
+        weights = [[zero] * (d + 1) for _ in range(d + 1)]
+        for k1 in range(d + 1):
+            for k2 in range(d + 1):
+                acc = zero
+                for i in range(m + 1):
+                    for j in range(n + 1):
+                        l2, l1 = k1 - i, k2 - j
+                        if 0 <= l2 <= n and 0 <= l1 <= m:
+                            f = flint.fmpq(C(m, i) * C(n, l2) * C(m, l1) * C(n, j), C(d, k1) * C(d, k2))
+                            acc += g[f"w{i}{j}"] * e[j][l2] * c[i][l1] * f
+                weights[k1][k2] = acc
+        s, one_minus_s = (zero, one), (one, zero)
+        for i0 in range(m + 1):
+            for j0 in range(n + 1):
+                w = f"w{i0}{j0}"
+                a = linear_product(one * C(m, i0), [(s, i0), (one_minus_s, m - i0),
+                                                   (comp(beta), j0), (beta, n - j0)])
+                b = linear_product(one * C(n, j0), [(s, j0), (one_minus_s, n - j0),
+                                                   (comp(alpha), i0), (alpha, m - i0)])
+                for k1 in range(d + 1):
+                    for k2 in range(d + 1):
+                        if weights[k1][k2].derivative(w) != a[k1] * b[k2]:
+                            sys.exit(f"FLINT: the quadratic identity fails at m = {m}")
+        return weights[m][m]
+
+    times = []
+    for _ in range(repeat):
+        start = time.perf_counter_ns()
+        w = identity()
+        times.append(time.perf_counter_ns() - start)
+    result = {tuple(sorted((names[k], e) for k, e in enumerate(exps) if e)): Fraction(str(c))
+              for exps, c in w.to_dict().items()}
+    return statistics.median(times), result
 
 
 def named(terms):
@@ -126,13 +212,17 @@ def ours(exe, path, repeat):
     out = subprocess.run([exe, path, "--repeat", str(repeat)], check=True,
                          capture_output=True, text=True).stdout
     data = json.loads(out)
-    return {name: (v["ns"], named(v["terms"]) if name.startswith("Möbius")
+    return {name: (v["ns"], named(v["terms"]) if name.startswith(("Möbius", "quadratic"))
                    else {tuple(e): Fraction(c) for e, c in v["terms"]})
             for name, v in data.items()}
 
 
 def mobius_name(m):
     return f"Möbius identity ({m}, {m})"
+
+
+def quadratic_name(m):
+    return f"quadratic identity ({m}, {m})"
 
 
 def main():
@@ -146,9 +236,11 @@ def main():
     cs = cases()
     with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
         json.dump([{"name": n, "vars": 4, "terms": to_json(t), "power": k} for n, t, k in cs]
-                  + [{"name": mobius_name(m), "mobius": m} for m in MOBIUS], f)
+                  + [{"name": mobius_name(m), "mobius": m} for m in MOBIUS]
+                  + [{"name": quadratic_name(m), "quadratic": m} for m in QUADRATIC], f)
         path = f.name
-    names = [n for n, _, _ in cs] + [mobius_name(m) for m in MOBIUS]
+    names = ([n for n, _, _ in cs] + [mobius_name(m) for m in MOBIUS]
+             + [quadratic_name(m) for m in QUADRATIC])
     t_ours = {n: [] for n in names}
     t_flint = {n: [] for n in names}
     sizes = {}
@@ -164,6 +256,7 @@ def main():
         mine = ours(args.ours, path, args.repeat)
         runs = [(n, lambda t=t, k=k: flint_power(t, k, args.repeat)) for n, t, k in cs]
         runs += [(mobius_name(m), lambda m=m: flint_mobius(m, args.repeat)) for m in MOBIUS]
+        runs += [(quadratic_name(m), lambda m=m: flint_quadratic(m, args.repeat)) for m in QUADRATIC]
         for n, run in runs:
             ns, theirs = run()
             ns_ours, result = mine[n]

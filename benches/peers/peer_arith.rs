@@ -13,11 +13,14 @@
 //! raised with [`Poly::pow`]; or the Möbius identity of `proofs/`,
 //! `{"name", "mobius": m}`: both sides of the maps (2)(3) on the fully
 //! symbolic (m, m) net ([`mobius_uv_sides`]), checked equal, the result
-//! being the new side's weight coordinate, with variables by name.
+//! being the new side's weight coordinate, with variables by name; or the
+//! quadratic map's point identity, `{"name", "quadratic": m}`
+//! ([`quadratic_identity`] at (m, m)), the result being the map's weight
+//! (m, m) on the net of symbolic weights ([`quadratic_weights`]).
 
 use exact_bezier::algebra::parse_rational;
 use exact_bezier::Poly;
-use exact_bezier_proofs::yang_yong::mobius_uv_sides;
+use exact_bezier_proofs::yang_yong::{mobius_uv_sides, quadratic_identity, quadratic_weights};
 use serde_json::{json, Map, Value};
 use std::time::Instant;
 
@@ -37,8 +40,14 @@ fn main() {
     let mut out = Map::new();
     for case in &cases {
         let name = case["name"].as_str().expect("a case name");
-        let (ns, terms) = match case["mobius"].as_u64() {
-            Some(m) => {
+        let (ns, terms) = match (case["mobius"].as_u64(), case["quadratic"].as_u64()) {
+            (_, Some(m)) => {
+                let m = m as usize;
+                let (ns, failure) = median_time(repeat, || quadratic_identity(m, m));
+                assert_eq!(failure, None, "the quadratic identity fails at m = {m}");
+                (ns, write_named(&quadratic_weights(m, m)[m][m]))
+            }
+            (Some(m), None) => {
                 let identity = || {
                     let (new, old) = mobius_uv_sides(m as usize, m as usize);
                     assert_eq!(new, old, "the Möbius identity fails at m = {m}");
@@ -47,7 +56,7 @@ fn main() {
                 let (ns, weight) = median_time(repeat, identity);
                 (ns, write_named(&weight))
             }
-            None => {
+            (None, None) => {
                 let n = case["vars"].as_u64().expect("vars") as usize;
                 let k = case["power"].as_u64().expect("power") as u32;
                 let p = read_poly(&case["terms"], n);

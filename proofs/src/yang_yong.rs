@@ -328,45 +328,71 @@ fn quadratic_keeps_points() -> Claim {
         "quadratic reparameterization (9)-(17) keeps every point: new(s, t) = old(u(s,t), v(s,t)) (homogeneous identity, common factor E^m F^n), for all α1, α2, β1, β2, s, t",
         &format!("{SRC} eqs. (9)-(17)"),
         Verdict::Proved,
-        |m, n| {
-            let q = sym_quadratic();
-            let d = m + n;
-            let r = weight_net(m, n).quadratic_reparam(&q);
-            if r.degree() != (d, d) {
-                return Some(format!("bidegree {:?}", r.degree()));
-            }
-            let names = weight_names(m, n);
-            let names: Vec<&str> = names.iter().map(String::as_str).collect();
-            // parts[k1][k2][i·(n+1) + j]: the coefficient of w_ij in weight (k1, k2).
-            let parts: Vec<Vec<Vec<Poly>>> = r
-                .weights()
-                .iter()
-                .map(|row| row.iter().map(|x| x.linear_coefficients(&names)).collect())
-                .collect();
-            let (s, one_minus_s) = ([Poly::zero(), one()], [one(), Poly::zero()]);
-            let alpha = [q.alpha2.clone(), q.alpha1.clone()];
-            let beta = [q.beta2.clone(), q.beta1.clone()];
-            let complement = |x: &[Poly; 2]| [one() - &x[0], one() - &x[1]];
-            for (i0, j0) in (0..=m).flat_map(|i| (0..=n).map(move |j| (i, j))) {
-                let s_side = linear_product(
-                    binomial_scalar::<Poly>(m, i0),
-                    &[(&s, i0), (&one_minus_s, m - i0), (&complement(&beta), j0), (&beta, n - j0)],
-                );
-                let t_side = linear_product(
-                    binomial_scalar::<Poly>(n, j0),
-                    &[(&s, j0), (&one_minus_s, n - j0), (&complement(&alpha), i0), (&alpha, m - i0)],
-                );
-                for (k1, a) in s_side.iter().enumerate() {
-                    for (k2, b) in t_side.iter().enumerate() {
-                        if parts[k1][k2][i0 * (n + 1) + j0] != a.clone() * b {
-                            return Some(format!("basis net ({i0},{j0}): Bernstein coefficient ({k1}, {k2})"));
-                        }
-                    }
+        quadratic_identity,
+    )
+}
+
+/// The check of [`quadratic_keeps_points`] at one bidegree: `None` when the
+/// identity holds, else what differs. Public for the FLINT peer benchmark
+/// (`benches/peers/arith`), which runs the same steps in FLINT.
+pub fn quadratic_identity(m: usize, n: usize) -> Option<String> {
+    let q = sym_quadratic();
+    let d = m + n;
+    let r = weight_net(m, n).quadratic_reparam(&q);
+    if r.degree() != (d, d) {
+        return Some(format!("bidegree {:?}", r.degree()));
+    }
+    let names = weight_names(m, n);
+    let names: Vec<&str> = names.iter().map(String::as_str).collect();
+    // parts[k1][k2][i·(n+1) + j]: the coefficient of w_ij in weight (k1, k2).
+    let parts: Vec<Vec<Vec<Poly>>> = r
+        .weights()
+        .iter()
+        .map(|row| row.iter().map(|x| x.linear_coefficients(&names)).collect())
+        .collect();
+    let (s, one_minus_s) = ([Poly::zero(), one()], [one(), Poly::zero()]);
+    let alpha = [q.alpha2.clone(), q.alpha1.clone()];
+    let beta = [q.beta2.clone(), q.beta1.clone()];
+    let complement = |x: &[Poly; 2]| [one() - &x[0], one() - &x[1]];
+    for (i0, j0) in (0..=m).flat_map(|i| (0..=n).map(move |j| (i, j))) {
+        let s_side = linear_product(
+            binomial_scalar::<Poly>(m, i0),
+            &[
+                (&s, i0),
+                (&one_minus_s, m - i0),
+                (&complement(&beta), j0),
+                (&beta, n - j0),
+            ],
+        );
+        let t_side = linear_product(
+            binomial_scalar::<Poly>(n, j0),
+            &[
+                (&s, j0),
+                (&one_minus_s, n - j0),
+                (&complement(&alpha), i0),
+                (&alpha, m - i0),
+            ],
+        );
+        for (k1, a) in s_side.iter().enumerate() {
+            for (k2, b) in t_side.iter().enumerate() {
+                if parts[k1][k2][i0 * (n + 1) + j0] != a.clone() * b {
+                    return Some(format!(
+                        "basis net ({i0},{j0}): Bernstein coefficient ({k1}, {k2})"
+                    ));
                 }
             }
-            None
-        },
-    )
+        }
+    }
+    None
+}
+
+/// The weights of the quadratic map (9)–(17) applied to the (m, n) net of
+/// symbolic weights `w_ij` (points 0), with symbolic α1, α2, β1, β2: the
+/// output the FLINT peer benchmark compares term by term.
+pub fn quadratic_weights(m: usize, n: usize) -> Vec<Vec<Poly>> {
+    weight_net(m, n)
+        .quadratic_reparam(&sym_quadratic())
+        .weights()
 }
 
 /// The Bernstein coefficients of `c · Π f_k^e_k` for linear factors
