@@ -88,14 +88,7 @@ def flint_mobius(m, repeat):
             sys.exit(f"FLINT: the Möbius identity fails at m = {m}")
         return new[1]
 
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter_ns()
-        w = identity()
-        times.append(time.perf_counter_ns() - start)
-    result = {tuple(sorted((names[k], e) for k, e in enumerate(exps) if e)): Fraction(str(c))
-              for exps, c in w.to_dict().items()}
-    return statistics.median(times), result
+    return timed_identity(identity, names, repeat)
 
 
 # FLINT's variable names are ASCII
@@ -176,6 +169,12 @@ def flint_quadratic(m, repeat):
                             sys.exit(f"FLINT: the quadratic identity fails at m = {m}")
         return weights[m][m]
 
+    return timed_identity(identity, names, repeat)
+
+
+def timed_identity(identity, names, repeat):
+    """The median ns of `repeat` runs of `identity`, and its polynomial
+    result as {((name, e), …): Fraction}."""
     times = []
     for _ in range(repeat):
         start = time.perf_counter_ns()
