@@ -332,7 +332,8 @@ mod tests {
         /// time, `eval_into`) bit for bit — the documented tolerance is
         /// zero — for points and jets of random rational curves, rect and
         /// tri patches, on batches of every length (full groups and a
-        /// padded last group).
+        /// padded last group; batches of fewer than four points take the
+        /// scalar kernel itself).
         #[test]
         fn lanes_equal_the_scalar_kernel((shape, points, params) in case()) {
             let (mut ev, mut jets) = kernels(shape, points);

@@ -591,6 +591,12 @@ pub struct Evaluator<T> {
 /// Curve points evaluated together in a batch ([`horner_lanes`]).
 const LANES: usize = 4;
 
+/// The fewest points of an `f64` batch that go to the lane kernels of
+/// `lanes` (which evaluate a whole group of points at once): a single
+/// `eval` call took 20–70 % longer through them than through the scalar
+/// kernel (criterion, 2026-11-27).
+const FEWEST_FOR_LANES: usize = 4;
+
 impl<T: Field> Evaluator<T> {
     /// An evaluator of `net` (of a curve or a patch:
     /// [`Evaluator::curve`], [`Evaluator::rect`], [`Evaluator::tri`]).
@@ -647,8 +653,15 @@ impl<T: Field> Evaluator<T> {
             self.net.dim(),
             out.len(),
         )?;
+        let points = params.len() / self.net.shape.params();
         fraction_free::eval_batch(self, params, out)
-            .or_else(|| lanes::eval_batch(&self.net, params, out, &mut self.lane_rows))
+            .or_else(|| {
+                // The lanes compute a whole group of points: for one to
+                // three the scalar kernel is cheaper (same values).
+                (points >= FEWEST_FOR_LANES)
+                    .then(|| lanes::eval_batch(&self.net, params, out, &mut self.lane_rows))
+                    .flatten()
+            })
             .unwrap_or_else(|| self.eval_batch_generic(params, out))
     }
 
