@@ -89,8 +89,9 @@ impl KernelInt for Wide {
         }
     }
 
-    /// Reduced in 256 bits (Lehmer's gcd on the limbs, one division), so
-    /// the only big integers are the two of the result.
+    /// Reduced in 256 bits ([`Wide::gcd`]: one remainder, then Lehmer's
+    /// gcd on the limbs; then two exact divisions), so the only big
+    /// integers are the two of the result.
     fn fraction(num: &Wide, den: &Wide) -> BigRational {
         let g = num.gcd(den);
         let g = if den.is_negative() { -g } else { g };

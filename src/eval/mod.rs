@@ -636,10 +636,11 @@ impl<T: Field> Evaluator<T> {
     /// The points at a batch of parameters: `params` holds one parameter
     /// (curve) or two (patch) per point, back to back; `out` receives `dim`
     /// coordinates per point. `BigRational` takes the fraction-free path
-    /// of the module documentation, `f64` nets of stride 3 or 4 the
-    /// lane-major kernels of `lanes` (several points at once in vector
-    /// registers, the same values bit for bit), every other scalar the
-    /// generic kernel (the values are the same).
+    /// of the module documentation, batches of four or more points on
+    /// `f64` nets of stride 3 or 4 the lane-major kernels of `lanes`
+    /// (several points at once in vector registers, the same values bit
+    /// for bit), everything else the generic kernel (the values are the
+    /// same).
     ///
     /// # Errors
     ///
