@@ -29,6 +29,7 @@ use super::joint::{
     measure_joint, JointFace, JointMeasures, JointSurface, JointTolerances, EDGE_WORK,
 };
 use super::knots::{surface_knot_lines, KnotLine};
+use super::swept::{swept_grid, SweptGrid};
 use crate::algebra::{Interval, Ordered, RealAlgebraic, Scalar};
 use crate::curve::RationalCurve;
 use crate::limits::{self, Limits};
@@ -330,7 +331,10 @@ fn joint_face<'a>(f: &'a Face, splines: &'a Splines<'a>) -> Result<JointFace<'a>
                 let surface = match c.exact_implicit() {
                     Some(s) => JointSurface::Exact(s),
                     None => JointSurface::Enclosed(ISurface::enclosing(c).ok_or_else(|| {
-                        format!("{} face: a torus whose major radius is negative", f.surface.kind)
+                        format!(
+                            "{} face: a torus whose major radius is negative",
+                            f.surface.kind
+                        )
                     })?),
                 };
                 Ok(JointFace {
@@ -338,52 +342,68 @@ fn joint_face<'a>(f: &'a Face, splines: &'a Splines<'a>) -> Result<JointFace<'a>
                     same_sense: f.same_sense != c.reversed,
                 })
             }
-            None if f.surface.kind == "SURFACE_OF_LINEAR_EXTRUSION" => Err(
-                "SURFACE_OF_LINEAR_EXTRUSION face of a curve other than a line or a circle along its axis (no closed form)".into(),
-            ),
-            None => Err(format!(
-                "{} face (no closed form: swept surfaces of revolution are not recognised)",
-                f.surface.kind
-            )),
+            None => spline_face(f, splines),
         },
-        Geometry::BSpline(_) => match splines.get(&f.id) {
-            Some(Ok(s)) => Ok(JointFace {
-                surface: JointSurface::Spline(Box::new(SplineField::new(s))),
-                same_sense: f.same_sense,
-            }),
-            Some(Err(why)) => Err(format!("{} face: {why}", f.surface.kind)),
-            None => Err(format!("{} face not read", f.surface.kind)),
-        },
+        Geometry::BSpline(_) => spline_face(f, splines),
         Geometry::NotConverted | Geometry::Invalid(_) => {
             Err(format!("{} face not converted", f.surface.kind))
         }
     }
 }
 
-/// Measure a shared or seam edge.
-/// The B-spline faces' surfaces by face id, or why not.
+/// A face measured through its Bézier pieces: a B-spline face, or a swept
+/// one with no closed form ([`super::swept`]).
+fn spline_face<'a>(f: &'a Face, splines: &'a Splines<'a>) -> Result<JointFace<'a>, String> {
+    match splines.get(&f.id) {
+        Some(Ok(s)) => Ok(JointFace {
+            surface: JointSurface::Spline(Box::new(SplineField::new(s))),
+            same_sense: f.same_sense,
+        }),
+        Some(Err(why)) => Err(format!("{} face: {why}", f.surface.kind)),
+        None => Err(format!("{} face not read", f.surface.kind)),
+    }
+}
+
+/// The surfaces of the faces measured through their pieces, by face id,
+/// or why not.
 type Splines<'a> = HashMap<u64, Result<SplineSurface<'a>, String>>;
 
-/// The surface of every B-spline face of `m`, its pieces enclosed at
-/// first use by any of its edges.
-fn spline_surfaces(m: &BrepModel) -> Splines<'_> {
+/// The grids of the swept faces with no closed form, by face id, or why
+/// not.
+type SweptGrids = HashMap<u64, Result<SweptGrid, String>>;
+
+fn swept_grids(m: &BrepModel) -> SweptGrids {
     m.faces
         .values()
-        .filter_map(|f| match &f.surface.geometry {
-            Geometry::BSpline(b) => Some((
-                f.id,
-                match b.nurbs() {
-                    Nurbs::Surface(s) => {
-                        SplineSurface::new(s, b.pieces()).map_err(|e| e.to_string())
-                    }
-                    Nurbs::Curve(_) => Err("its geometry is a curve".into()),
-                },
-            )),
-            _ => None,
-        })
+        .filter_map(|f| Some((f.id, swept_grid(f)?)))
         .collect()
 }
 
+/// The surface of every B-spline face of `m` and of every swept face of
+/// `swept`, its pieces enclosed at first use by any of its edges.
+fn spline_surfaces<'a>(m: &'a BrepModel, swept: &'a SweptGrids) -> Splines<'a> {
+    let splines = m.faces.values().filter_map(|f| match &f.surface.geometry {
+        Geometry::BSpline(b) => Some((
+            f.id,
+            match b.nurbs() {
+                Nurbs::Surface(s) => SplineSurface::new(s, b.pieces()).map_err(|e| e.to_string()),
+                Nurbs::Curve(_) => Err("its geometry is a curve".into()),
+            },
+        )),
+        _ => None,
+    });
+    let swept = swept.iter().map(|(id, g)| {
+        let surface = g.as_ref().map_err(Clone::clone).and_then(|g| {
+            let [su, sv] = &g.smooth;
+            SplineSurface::from_pieces(&g.pieces, |b| su.contains(b), |b| sv.contains(b))
+                .map_err(|e| e.to_string())
+        });
+        (*id, surface)
+    });
+    splines.chain(swept).collect()
+}
+
+/// Measure a shared or seam edge.
 fn measure(m: &BrepModel, splines: &Splines<'_>, e: &Edge, tol: &JointTolerances) -> Measured {
     let faces = || -> Result<[JointFace<'_>; 2], String> {
         let face = |id: &u64| {
@@ -412,7 +432,8 @@ const EDGE_BATCH: usize = 64;
 
 /// [`measure`] every edge of `edges`, in order, in parallel batches.
 fn measure_all(m: &BrepModel, edges: &[&Edge], tol: &JointTolerances) -> Vec<Measured> {
-    let splines = spline_surfaces(m);
+    let swept = swept_grids(m);
+    let splines = spline_surfaces(m, &swept);
     let outer = limits::current();
     let mut out = Vec::with_capacity(edges.len());
     for batch in edges.chunks(EDGE_BATCH) {

@@ -26,6 +26,7 @@ pub mod joint;
 pub mod knots;
 pub mod model;
 pub mod seam;
+pub mod swept;
 
 pub use model::{nurbs_pieces, ExactModel, Model, Origin, Piece};
 pub use seam::{seam_continuity, Continuity, SeamScalar, SeamVerdict};

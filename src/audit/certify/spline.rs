@@ -147,15 +147,10 @@ struct Axis {
 type Part = (usize, Interval, Interval);
 
 impl Axis {
-    /// The axis of the pieces bounded by `breaks` (sorted, distinct) of a
-    /// knot vector `knots`.
-    fn new(breaks: &[Q], knots: &Knots) -> Axis {
+    /// The axis of the pieces bounded by `breaks` (sorted, distinct),
+    /// `C¹` across `breaks[k + 1]` where `smooth[k]`.
+    fn new(breaks: &[Q], smooth: Vec<bool>) -> Axis {
         let enclosed: Vec<Interval> = breaks.iter().map(Interval::enclose).collect();
-        let multiplicity = |b: &Q| knots.knots().iter().filter(|k| *k == b).count();
-        let smooth = breaks[1..breaks.len() - 1]
-            .iter()
-            .map(|b| multiplicity(b) < knots.degree())
-            .collect();
         let n = enclosed.len() - 1;
         let quarter = |a: &Interval, b: &Interval| (b.lo - a.hi) / 4.0;
         Axis {
@@ -265,6 +260,12 @@ pub struct SplineField<'a> {
 /// A piece of an edge, by the bits of its ends, and its feet if found.
 type RememberedFeet = ([u64; 2], Option<Vec<[f64; 2]>>);
 
+/// Is a B-spline with knot vector `knots` `C¹` across its knot `b`
+/// (multiplicity below the degree)?
+fn knot_smooth(b: &Q, knots: &Knots) -> bool {
+    knots.knots().iter().filter(|k| *k == b).count() < knots.degree()
+}
+
 /// The index of `x` among the sorted `breaks`.
 fn index_of(breaks: &[Q], x: &Q) -> Result<usize, Error> {
     breaks
@@ -283,6 +284,25 @@ impl<'a> SplineSurface<'a> {
     pub fn new(
         s: &NurbsSurface<Q>,
         pieces: &'a [SpannedPatch],
+    ) -> Result<SplineSurface<'a>, Error> {
+        let (ku, kv) = s.knots();
+        SplineSurface::from_pieces(pieces, |b| knot_smooth(b, ku), |b| knot_smooth(b, kv))
+    }
+
+    /// The surface tiled by `pieces` (rectangular patches, one per cell of
+    /// the grid of their spans), `C¹` across an inner break `b` of the
+    /// spans in `u` where `smooth_u(b)` (likewise in `v`): the caller
+    /// vouches for it, as a knot vector does for a B-spline. A break where
+    /// the surface is not `C¹` must answer `false` (boxes do not cross it).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Shape`] unless the pieces tile a grid of spans, one per
+    /// cell.
+    pub fn from_pieces(
+        pieces: &'a [SpannedPatch],
+        smooth_u: impl Fn(&Q) -> bool,
+        smooth_v: impl Fn(&Q) -> bool,
     ) -> Result<SplineSurface<'a>, Error> {
         let spans = |pick: fn(&SpannedPatch) -> Option<&[Q; 2]>| -> Result<Vec<Q>, Error> {
             let mut b: Vec<Q> = Vec::new();
@@ -316,9 +336,14 @@ impl<'a> SplineSurface<'a> {
             .into_iter()
             .collect::<Option<Vec<_>>>()
             .ok_or_else(|| Error::Shape("a knot span with no Bézier piece".into()))?;
-        let (ku, kv) = s.knots();
+        let inner = |b: &[Q], smooth: &dyn Fn(&Q) -> bool| -> Vec<bool> {
+            b[1..b.len() - 1].iter().map(smooth).collect()
+        };
         Ok(SplineSurface {
-            axes: [Axis::new(&bu, ku), Axis::new(&bv, kv)],
+            axes: [
+                Axis::new(&bu, inner(&bu, &smooth_u)),
+                Axis::new(&bv, inner(&bv, &smooth_v)),
+            ],
             enclosed: grid.iter().map(|_| OnceLock::new()).collect(),
             grid,
             seeds: OnceLock::new(),
