@@ -26,6 +26,7 @@
 
 use crate::algebra::interval_bernstein::bernstein_product;
 use crate::algebra::Interval;
+use smallvec::SmallVec;
 
 /// One planar curve: homogeneous control points `[x, y, w]` as boxes.
 pub(super) type PlanarBoxes = [[Interval; 3]];
@@ -47,12 +48,12 @@ pub(super) fn point_and_velocity(
 ) -> Option<([Interval; 2], [Interval; 2])> {
     let n = ctrl.len() - 1;
     let one_minus = point(1.0).sub(&s);
-    let mut rows: Vec<[Interval; 3]> = ctrl.to_vec();
-    while rows.len() > 2 {
-        rows = rows
-            .windows(2)
-            .map(|w| std::array::from_fn(|k| one_minus.mul(&w[0][k]).add(&s.mul(&w[1][k]))))
-            .collect();
+    let mut rows: SmallVec<[[Interval; 3]; 16]> = SmallVec::from_slice(ctrl);
+    for len in (3..=rows.len()).rev() {
+        for i in 0..len - 1 {
+            rows[i] =
+                std::array::from_fn(|k| one_minus.mul(&rows[i][k]).add(&s.mul(&rows[i + 1][k])));
+        }
     }
     let (h, dh): ([Interval; 3], [Interval; 3]) = if n == 0 {
         (rows[0], [point(0.0); 3])
@@ -99,31 +100,94 @@ fn hull(v: &[Interval]) -> Interval {
     )
 }
 
-/// An enclosure of `A'(s)` over a piece's parameter range of width
-/// `width`, from the piece's control polygon (parameter `u ∈ [0, 1]`):
-/// `A' = (X'W − XW') / (W² · width)`, numerator and `W²` bounded by their
-/// Bernstein coefficients (the convex hull property; tight for small
-/// pieces, unlike interval de Casteljau).
-pub(super) fn velocity_hull(ctrl: &PlanarBoxes, width: f64) -> Option<[Interval; 2]> {
-    let n = ctrl.len() - 1;
-    if n == 0 {
-        return Some([point(0.0); 2]);
+/// A control polygon of boxes, flat: point `i` is `ctrl[i·stride …]`,
+/// the Cartesian coordinates times the weight, then the weight when
+/// `weighted` (else the weight is 1 exactly: a polynomial curve).
+pub(super) struct Net<'a> {
+    /// The boxes, point after point.
+    pub ctrl: &'a [Interval],
+    /// Boxes per point.
+    pub stride: usize,
+    /// Whether the last box of a point is its weight.
+    pub weighted: bool,
+}
+
+impl Net<'_> {
+    fn len(&self) -> usize {
+        self.ctrl.len() / self.stride
     }
-    let coord = |k: usize| ctrl.iter().map(|h| h[k]).collect::<Vec<_>>();
-    let diff = |k: usize| {
-        ctrl.windows(2)
-            .map(|w| scale(n as f64, &w[1][k].sub(&w[0][k])))
-            .collect::<Vec<_>>()
-    };
-    let (w, dw) = (coord(2), diff(2));
-    let w2 = hull(&bernstein_product(&w, &w));
-    let v = |k: usize| {
-        let a = bernstein_product(&diff(k), &w);
-        let b = bernstein_product(&coord(k), &dw);
-        let num: Vec<Interval> = a.iter().zip(&b).map(|(x, y)| x.sub(y)).collect();
-        hull(&num).div(&w2)?.div(&point(width))
-    };
-    Some([v(0)?, v(1)?])
+
+    fn coord(&self, i: usize, k: usize) -> Interval {
+        self.ctrl[i * self.stride + k]
+    }
+
+    fn weight(&self, i: usize) -> Interval {
+        match self.weighted {
+            true => self.coord(i, self.stride - 1),
+            false => point(1.0),
+        }
+    }
+
+    /// Coordinate `k` of the Cartesian point `i`, `X_k / W`.
+    fn cartesian(&self, i: usize, k: usize) -> Option<Interval> {
+        match self.weighted {
+            true => self.coord(i, k).div(&self.weight(i)),
+            false => Some(self.coord(i, k)),
+        }
+    }
+
+    /// The planar point `i`, `None` when its weight box contains 0.
+    pub fn projected(&self, i: usize) -> Option<[Interval; 2]> {
+        Some([self.cartesian(i, 0)?, self.cartesian(i, 1)?])
+    }
+
+    /// Push the bounding box of the projected control points (`dim`
+    /// intervals) onto `out`; `None` when a weight box contains 0.
+    pub fn bounding_box(&self, dim: usize, out: &mut Vec<Interval>) -> Option<()> {
+        for k in 0..dim {
+            let mut b = self.cartesian(0, k)?;
+            for i in 1..self.len() {
+                b = b.hull(&self.cartesian(i, k)?);
+            }
+            out.push(b);
+        }
+        Some(())
+    }
+
+    /// An enclosure of the planar `A'(s)` over the piece's parameter range
+    /// of width `width`, from its control polygon (parameter
+    /// `u ∈ [0, 1]`): for a polynomial curve the hull of the hodograph's
+    /// control points `n ΔP_i / width`; for a rational one
+    /// `A' = (X'W − XW') / (W² · width)`, numerator and `W²` bounded by
+    /// their Bernstein coefficients. Both are the convex hull property
+    /// (tight for small pieces, unlike interval de Casteljau).
+    pub fn velocity_hull(&self, width: f64) -> Option<[Interval; 2]> {
+        let n = self.len() - 1;
+        if n == 0 {
+            return Some([point(0.0); 2]);
+        }
+        let diff = |k: usize| {
+            (0..n)
+                .map(|i| scale(n as f64, &self.coord(i + 1, k).sub(&self.coord(i, k))))
+                .collect::<SmallVec<[Interval; 16]>>()
+        };
+        if !self.weighted {
+            return Some([
+                hull(&diff(0)).div(&point(width))?,
+                hull(&diff(1)).div(&point(width))?,
+            ]);
+        }
+        let coord = |k: usize| (0..=n).map(|i| self.coord(i, k)).collect::<Vec<_>>();
+        let (w, dw) = (coord(2), diff(2));
+        let w2 = hull(&bernstein_product(&w, &w));
+        let v = |k: usize| {
+            let a = bernstein_product(&diff(k), &w);
+            let b = bernstein_product(&coord(k), &dw);
+            let num: Vec<Interval> = a.iter().zip(&b).map(|(x, y)| x.sub(y)).collect();
+            hull(&num).div(&w2)?.div(&point(width))
+        };
+        Some([v(0)?, v(1)?])
+    }
 }
 
 /// The Jacobian enclosure `[[A'_x, −B'_x], [A'_y, −B'_y]]` from velocity
@@ -134,21 +198,17 @@ pub(super) fn jacobian(va: [Interval; 2], vb: [Interval; 2]) -> [[Interval; 2]; 
 }
 
 /// The Krawczyk test of `f(s, t) = A(s) − B(t)` on the box `x = [S, T]`,
-/// with `j` an enclosure of the Jacobian over the box.
+/// with `c` a point of `x`, `f` an enclosure of `f(c)` and `j` an
+/// enclosure of the Jacobian over the box.
 pub(super) fn krawczyk(
-    a: &PlanarBoxes,
-    b: &PlanarBoxes,
     x: [Interval; 2],
+    c: [f64; 2],
+    f: [Interval; 2],
     j: [[Interval; 2]; 2],
 ) -> Krawczyk {
-    let c = [mid(&x[0]), mid(&x[1])];
-    let (Some((pa, _)), Some((pb, _))) = (
-        point_and_velocity(a, point(c[0])),
-        point_and_velocity(b, point(c[1])),
-    ) else {
+    if !(0..2).all(|i| x[i].lo <= c[i] && c[i] <= x[i].hi) {
         return Krawczyk::Unknown;
-    };
-    let f = [pa[0].sub(&pb[0]), pa[1].sub(&pb[1])];
+    }
     let m = [
         [mid(&j[0][0]), mid(&j[0][1])],
         [mid(&j[1][0]), mid(&j[1][1])],
@@ -185,13 +245,22 @@ pub(super) fn krawczyk(
     Krawczyk::Unknown
 }
 
-/// The Krawczyk test on `x` with the Jacobian from interval de Casteljau
-/// (adequate for small boxes).
+/// The Krawczyk test on `x` with `f(c)` at the midpoint and the Jacobian
+/// from interval de Casteljau on the whole curves (adequate for small
+/// boxes).
 fn krawczyk_small(a: &PlanarBoxes, b: &PlanarBoxes, x: [Interval; 2]) -> Krawczyk {
-    match (point_and_velocity(a, x[0]), point_and_velocity(b, x[1])) {
-        (Some((_, va)), Some((_, vb))) => krawczyk(a, b, x, jacobian(va, vb)),
-        _ => Krawczyk::Unknown,
-    }
+    let c = [mid(&x[0]), mid(&x[1])];
+    let parts = (
+        point_and_velocity(a, x[0]),
+        point_and_velocity(b, x[1]),
+        point_and_velocity(a, point(c[0])),
+        point_and_velocity(b, point(c[1])),
+    );
+    let (Some((_, va)), Some((_, vb)), Some((pa, _)), Some((pb, _))) = parts else {
+        return Krawczyk::Unknown;
+    };
+    let f = [pa[0].sub(&pb[0]), pa[1].sub(&pb[1])];
+    krawczyk(x, c, f, jacobian(va, vb))
 }
 
 /// Newton steps in `f64` on `A(s) − B(t) = 0` from `z` (midpoints of the
@@ -210,8 +279,14 @@ fn newton(a: &PlanarBoxes, b: &PlanarBoxes, mut z: [f64; 2]) -> [f64; 2] {
         if !det.is_finite() || det == 0.0 {
             break;
         }
-        z[0] -= (j[1][1] * f[0] - j[0][1] * f[1]) / det;
-        z[1] -= (j[0][0] * f[1] - j[1][0] * f[0]) / det;
+        let step = [
+            (j[1][1] * f[0] - j[0][1] * f[1]) / det,
+            (j[0][0] * f[1] - j[1][0] * f[0]) / det,
+        ];
+        z = [z[0] - step[0], z[1] - step[1]];
+        if step[0].abs() <= 1e-12 && step[1].abs() <= 1e-12 {
+            break;
+        }
     }
     z
 }
@@ -246,6 +321,20 @@ mod tests {
 
     fn boxes(pts: &[[f64; 3]]) -> Vec<[Interval; 3]> {
         pts.iter().map(|p| p.map(point)).collect()
+    }
+
+    fn flat(c: &[[Interval; 3]]) -> Vec<Interval> {
+        c.iter().flatten().copied().collect()
+    }
+
+    fn velocity_hull(c: &[[Interval; 3]], width: f64) -> Option<[Interval; 2]> {
+        let ctrl = flat(c);
+        let net = Net {
+            ctrl: &ctrl,
+            stride: 3,
+            weighted: true,
+        };
+        net.velocity_hull(width)
     }
 
     #[test]
@@ -308,8 +397,11 @@ mod tests {
             velocity_hull(&a, 1.0).unwrap(),
             velocity_hull(&b, 1.0).unwrap(),
         );
+        let (pa, _) = point_and_velocity(&a, point(0.5)).unwrap();
+        let (pb, _) = point_and_velocity(&b, point(0.5)).unwrap();
+        let f = [pa[0].sub(&pb[0]), pa[1].sub(&pb[1])];
         assert!(!matches!(
-            krawczyk(&a, &b, [unit, unit], jacobian(va, vb)),
+            krawczyk([unit, unit], [0.5, 0.5], f, jacobian(va, vb)),
             Krawczyk::Unique(_)
         ));
     }
