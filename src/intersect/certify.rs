@@ -136,6 +136,11 @@ impl Net<'_> {
         }
     }
 
+    /// Point `i` as `[X, Y, W]` (planar).
+    pub fn homogeneous(&self, i: usize) -> [Interval; 3] {
+        [self.coord(i, 0), self.coord(i, 1), self.weight(i)]
+    }
+
     /// The planar point `i`, `None` when its weight box contains 0.
     pub fn projected(&self, i: usize) -> Option<[Interval; 2]> {
         Some([self.cartesian(i, 0)?, self.cartesian(i, 1)?])
@@ -166,17 +171,17 @@ impl Net<'_> {
         if n == 0 {
             return Some([point(0.0); 2]);
         }
+        let delta = |i: usize, k: usize| self.coord(i + 1, k).sub(&self.coord(i, k));
+        if !self.weighted {
+            let speed = point(n as f64).div(&point(width))?;
+            let v = |k: usize| (1..n).fold(delta(0, k), |h, i| h.hull(&delta(i, k)));
+            return Some([v(0).mul_nonneg(&speed), v(1).mul_nonneg(&speed)]);
+        }
         let diff = |k: usize| {
             (0..n)
-                .map(|i| scale(n as f64, &self.coord(i + 1, k).sub(&self.coord(i, k))))
+                .map(|i| scale(n as f64, &delta(i, k)))
                 .collect::<SmallVec<[Interval; 16]>>()
         };
-        if !self.weighted {
-            return Some([
-                hull(&diff(0)).div(&point(width))?,
-                hull(&diff(1)).div(&point(width))?,
-            ]);
-        }
         let coord = |k: usize| (0..=n).map(|i| self.coord(i, k)).collect::<Vec<_>>();
         let (w, dw) = (coord(2), diff(2));
         let w2 = hull(&bernstein_product(&w, &w));
@@ -263,18 +268,35 @@ fn krawczyk_small(a: &PlanarBoxes, b: &PlanarBoxes, x: [Interval; 2]) -> Krawczy
     krawczyk(x, c, f, jacobian(va, vb))
 }
 
-/// Newton steps in `f64` on `A(s) − B(t) = 0` from `z` (midpoints of the
-/// interval enclosures).
+/// `A(s)` and `A'(s)` in plain `f64` from the midpoints of the control
+/// boxes, by de Casteljau: an estimate for Newton's method, not an
+/// enclosure.
+fn estimate(ctrl: &PlanarBoxes, s: f64) -> ([f64; 2], [f64; 2]) {
+    let mut rows: SmallVec<[[f64; 3]; 16]> = ctrl.iter().map(|h| h.map(|v| mid(&v))).collect();
+    let n = rows.len() - 1;
+    for len in (3..=rows.len()).rev() {
+        for i in 0..len - 1 {
+            rows[i] = std::array::from_fn(|k| (1.0 - s) * rows[i][k] + s * rows[i + 1][k]);
+        }
+    }
+    let (h, dh): ([f64; 3], [f64; 3]) = match n {
+        0 => (rows[0], [0.0; 3]),
+        _ => (
+            std::array::from_fn(|k| (1.0 - s) * rows[0][k] + s * rows[1][k]),
+            std::array::from_fn(|k| n as f64 * (rows[1][k] - rows[0][k])),
+        ),
+    };
+    let v = |k: usize| (dh[k] * h[2] - h[k] * dh[2]) / (h[2] * h[2]);
+    ([h[0] / h[2], h[1] / h[2]], [v(0), v(1)])
+}
+
+/// Newton steps in `f64` on `A(s) − B(t) = 0` from `z`, until a step is
+/// below `10⁻¹²` (the next one is at rounding level) or for 8 steps.
 fn newton(a: &PlanarBoxes, b: &PlanarBoxes, mut z: [f64; 2]) -> [f64; 2] {
     for _ in 0..8 {
-        let (Some((pa, va)), Some((pb, vb))) = (
-            point_and_velocity(a, point(z[0])),
-            point_and_velocity(b, point(z[1])),
-        ) else {
-            break;
-        };
-        let f = [mid(&pa[0]) - mid(&pb[0]), mid(&pa[1]) - mid(&pb[1])];
-        let j = [[mid(&va[0]), -mid(&vb[0])], [mid(&va[1]), -mid(&vb[1])]];
+        let ((pa, va), (pb, vb)) = (estimate(a, z[0]), estimate(b, z[1]));
+        let f = [pa[0] - pb[0], pa[1] - pb[1]];
+        let j = [[va[0], -vb[0]], [va[1], -vb[1]]];
         let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
         if !det.is_finite() || det == 0.0 {
             break;

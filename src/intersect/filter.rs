@@ -23,6 +23,7 @@ use crate::algebra::Interval;
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use num_rational::BigRational;
+use num_traits::One;
 
 /// A transversal crossing of two planar curves certified by interval
 /// arithmetic: exactly one intersection has its parameters in `s × t`.
@@ -72,7 +73,7 @@ impl Pieces {
                 } else {
                     &h.coords[..dim]
                 };
-                coords.iter().map(move |x| match weighted {
+                coords.iter().map(move |x| match weighted || w0.is_one() {
                     true => Interval::enclose(x),
                     false => Interval::enclose(&(x / w0)),
                 })
@@ -116,7 +117,7 @@ impl Pieces {
             for r in 0..len {
                 if r > 0 {
                     for j in 0..(len - r) * stride {
-                        row[j] = row[j].add(&row[j + stride]).mul(&half);
+                        row[j] = row[j].add(&row[j + stride]).mul_nonneg(&half);
                     }
                 }
                 let (first, last) = (0..stride, (len - 1 - r) * stride..(len - r) * stride);
@@ -157,61 +158,68 @@ impl Pieces {
 /// its velocity over the range (`None` when a weight box contains 0).
 type PieceFacts = Option<([Interval; 2], [Interval; 2])>;
 
-/// What a level knows of each piece: its bounding box (`dim` intervals,
-/// side by side) and, in the plane, enclosures of its point at the middle
-/// of its range and of its velocity.
-struct Facts {
-    boxes: Vec<Interval>,
-    planar: Vec<PieceFacts>,
-}
-
-impl Facts {
-    /// The facts of `p`'s pieces, `halves` being `p.halves()`; `None` when
-    /// a weight box contains 0.
-    fn of(p: &Pieces, halves: &Pieces) -> Option<Facts> {
-        let dim = p.dim();
-        let mut boxes = Vec::with_capacity(p.range.len() * dim);
-        let mut planar = Vec::new();
-        for i in 0..p.range.len() {
-            let net = p.net(i);
-            net.bounding_box(dim, &mut boxes)?;
-            if dim == 2 {
-                let width = p.range[i].hi - p.range[i].lo;
-                let mid = halves.net(2 * i + 1).projected(0);
-                planar.push(mid.zip(net.velocity_hull(width)));
-            }
+impl Pieces {
+    /// The bounding boxes of the pieces (`dim` intervals each, side by
+    /// side), `None` when a weight box contains 0.
+    fn bounding_boxes(&self) -> Option<Vec<Interval>> {
+        let mut boxes = Vec::with_capacity(self.range.len() * self.dim());
+        for i in 0..self.range.len() {
+            self.net(i).bounding_box(self.dim(), &mut boxes)?;
         }
-        Some(Facts { boxes, planar })
+        Some(boxes)
     }
 
-    fn bounding_box(&self, i: usize, dim: usize) -> &[Interval] {
-        &self.boxes[i * dim..(i + 1) * dim]
+    /// The midpoint and velocity enclosures of planar pieces, `halves`
+    /// being `self.halves()` (the midpoint is where the halves meet).
+    fn planar_facts(&self, halves: &Pieces) -> Vec<PieceFacts> {
+        (0..self.range.len())
+            .map(|i| {
+                let width = self.range[i].hi - self.range[i].lo;
+                let mid = halves.net(2 * i + 1).projected(0);
+                mid.zip(self.net(i).velocity_hull(width))
+            })
+            .collect()
+    }
+
+    /// The whole planar curve's control boxes as `[x, y, w]`.
+    fn planar(&self) -> Vec<[Interval; 3]> {
+        let net = self.net(0);
+        (0..self.len).map(|i| net.homogeneous(i)).collect()
     }
 }
 
 /// The certified crossings when interval arithmetic decides every box
 /// pair of a subdivision (separated hulls, or a Krawczyk verdict in the
-/// plane), `None` when some pair stays undecided.
+/// plane), `None` when some pair stays undecided. The halves and the
+/// planar facts of a level are computed only when a pair survives the
+/// boxes.
 fn decide(
     a: &RationalCurve<BigRational>,
     b: &RationalCurve<BigRational>,
 ) -> Option<Vec<CertifiedCrossing>> {
-    let curves = (a.dim() == 2).then(|| (planar(a), planar(b)));
     let (mut pa, mut pb) = (Pieces::whole(a), Pieces::whole(b));
     let dim = pa.dim();
+    let curves = (dim == 2).then(|| (pa.planar(), pb.planar()));
     let mut pairs = vec![(0, 0)];
     let mut found = Vec::new();
     for _ in 0..FILTER_DEPTH {
+        let (ba, bb) = (pa.bounding_boxes()?, pb.bounding_boxes()?);
+        pairs.retain(|&(i, j)| {
+            let (x, y) = (&ba[i * dim..(i + 1) * dim], &bb[j * dim..(j + 1) * dim]);
+            !x.iter().zip(y).any(|(u, v)| u.disjoint(v))
+        });
+        if pairs.is_empty() {
+            return Some(found);
+        }
         let (ha, hb) = (pa.halves(), pb.halves());
-        let (fa, fb) = (Facts::of(&pa, &ha)?, Facts::of(&pb, &hb)?);
-        let mut next = Vec::new();
+        let facts = curves
+            .as_ref()
+            .map(|_| (pa.planar_facts(&ha), pb.planar_facts(&hb)));
+        let mut next = Vec::with_capacity(4 * pairs.len());
         for &(i, j) in &pairs {
-            if disjoint(fa.bounding_box(i, dim), fb.bounding_box(j, dim)) {
-                continue;
-            }
-            if let Some((ca, cb)) = &curves {
+            if let (Some((ca, cb)), Some((fa, fb))) = (&curves, &facts) {
                 let x = [pa.range[i], pb.range[j]];
-                match krawczyk_pair(x, fa.planar[i], fb.planar[j]) {
+                match krawczyk_pair(x, fa[i], fb[j]) {
                     Krawczyk::Unique(_) => {
                         found.push(crossing(ca, cb, contract(ca, cb, x))?);
                         continue;
@@ -258,18 +266,6 @@ fn krawczyk_pair(x: [Interval; 2], a: PieceFacts, b: PieceFacts) -> Krawczyk {
     let c = x.map(|r| 0.5 * (r.lo + r.hi));
     let f = [ma[0].sub(&mb[0]), ma[1].sub(&mb[1])];
     krawczyk(x, c, f, jacobian(va, vb))
-}
-
-/// The control boxes of a planar curve as `[x, y, w]`.
-fn planar(c: &RationalCurve<BigRational>) -> Vec<[Interval; 3]> {
-    c.ctrl()
-        .iter()
-        .map(|h| std::array::from_fn(|k| Interval::enclose(&h.coords[k])))
-        .collect()
-}
-
-fn disjoint(a: &[Interval], b: &[Interval]) -> bool {
-    a.iter().zip(b).any(|(x, y)| x.disjoint(y))
 }
 
 /// The crossing in the certified box `x`, with the point box `A(S) ∩ B(T)`.
