@@ -410,6 +410,34 @@ mod tests {
     }
 
     #[test]
+    fn the_hodograph_hull_of_a_polynomial_net_encloses_its_velocity() {
+        // The cubic with x-controls 0, 1, 3, 2 and y-controls 0, 2, −1, 1 (W ≡ 1):
+        // x' = 3[(1 − s)² + 4s(1 − s) − s²], y' = 3[2(1 − s)² − 6s(1 − s) + 2s²].
+        let ctrl: Vec<Interval> = [0.0, 0.0, 1.0, 2.0, 3.0, -1.0, 2.0, 1.0]
+            .map(point)
+            .to_vec();
+        let net = Net {
+            ctrl: &ctrl,
+            stride: 2,
+            weighted: false,
+        };
+        let v = net.velocity_hull(0.25).unwrap();
+        for k in 0..=20 {
+            let s = k as f64 / 20.0;
+            let (a, b, c) = ((1.0 - s) * (1.0 - s), 2.0 * s * (1.0 - s), s * s);
+            // On a piece of width 1/4, d/ds of the whole curve is 4 × d/du.
+            let d = [
+                12.0 * (a + 2.0 * b - c),
+                12.0 * (2.0 * a - 3.0 * b + 2.0 * c),
+            ];
+            assert!((0..2).all(|i| v[i].lo <= d[i] && d[i] <= v[i].hi), "{s}");
+        }
+        // The hull of 4·3·ΔP: x ∈ [−12, 24], y ∈ [−36, 24], tight.
+        assert!(v[0].lo >= -12.0 - 1e-12 && v[0].hi <= 24.0 + 1e-12);
+        assert!(v[1].lo >= -36.0 - 1e-12 && v[1].hi <= 24.0 + 1e-12);
+    }
+
+    #[test]
     fn a_tangency_is_not_certified() {
         // y = x² (x from −1 to 1) against the line y = 0: J is singular.
         let a = boxes(&[[-1.0, 1.0, 1.0], [0.0, -1.0, 1.0], [1.0, 1.0, 1.0]]);
