@@ -41,6 +41,16 @@ fn next_down(x: f64) -> f64 {
     -next_up(-x)
 }
 
+/// The least of four values, NaNs ignored (`+∞` when all are NaN).
+fn min4(p: [f64; 4]) -> f64 {
+    f64::INFINITY.min(p[0]).min(p[1]).min(p[2]).min(p[3])
+}
+
+/// The greatest of four values, NaNs ignored (`−∞` when all are NaN).
+fn max4(p: [f64; 4]) -> f64 {
+    f64::NEG_INFINITY.max(p[0]).max(p[1]).max(p[2]).max(p[3])
+}
+
 impl Interval {
     /// `[lo, hi]` widened outward by one ulp (the rounding of one operation).
     fn rounded(lo: f64, hi: f64) -> Interval {
@@ -77,9 +87,7 @@ impl Interval {
             self.hi * o.lo,
             self.hi * o.hi,
         ];
-        let lo = p.iter().copied().fold(f64::INFINITY, f64::min);
-        let hi = p.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        Interval::rounded(lo, hi)
+        Interval::rounded(min4(p), max4(p))
     }
 
     /// `self · o` for a non-negative `o` (`o.lo ≥ 0`, checked): two
@@ -113,9 +121,7 @@ impl Interval {
             self.hi / o.lo,
             self.hi / o.hi,
         ];
-        let lo = p.iter().copied().fold(f64::INFINITY, f64::min);
-        let hi = p.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        Some(Interval::rounded(lo, hi))
+        Some(Interval::rounded(min4(p), max4(p)))
     }
 
     /// `self^e` by repeated multiplication (`[1, 1]` for e = 0).

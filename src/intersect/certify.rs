@@ -26,6 +26,7 @@
 
 use crate::algebra::interval_bernstein::bernstein_product;
 use crate::algebra::Interval;
+use smallvec::SmallVec;
 
 /// One planar curve: homogeneous control points `[x, y, w]` as boxes.
 pub(super) type PlanarBoxes = [[Interval; 3]];
@@ -47,12 +48,12 @@ pub(super) fn point_and_velocity(
 ) -> Option<([Interval; 2], [Interval; 2])> {
     let n = ctrl.len() - 1;
     let one_minus = point(1.0).sub(&s);
-    let mut rows: Vec<[Interval; 3]> = ctrl.to_vec();
-    while rows.len() > 2 {
-        rows = rows
-            .windows(2)
-            .map(|w| std::array::from_fn(|k| one_minus.mul(&w[0][k]).add(&s.mul(&w[1][k]))))
-            .collect();
+    let mut rows: SmallVec<[[Interval; 3]; 16]> = SmallVec::from_slice(ctrl);
+    for len in (3..=rows.len()).rev() {
+        for i in 0..len - 1 {
+            rows[i] =
+                std::array::from_fn(|k| one_minus.mul(&rows[i][k]).add(&s.mul(&rows[i + 1][k])));
+        }
     }
     let (h, dh): ([Interval; 3], [Interval; 3]) = if n == 0 {
         (rows[0], [point(0.0); 3])
@@ -99,31 +100,99 @@ fn hull(v: &[Interval]) -> Interval {
     )
 }
 
-/// An enclosure of `A'(s)` over a piece's parameter range of width
-/// `width`, from the piece's control polygon (parameter `u ∈ [0, 1]`):
-/// `A' = (X'W − XW') / (W² · width)`, numerator and `W²` bounded by their
-/// Bernstein coefficients (the convex hull property; tight for small
-/// pieces, unlike interval de Casteljau).
-pub(super) fn velocity_hull(ctrl: &PlanarBoxes, width: f64) -> Option<[Interval; 2]> {
-    let n = ctrl.len() - 1;
-    if n == 0 {
-        return Some([point(0.0); 2]);
+/// A control polygon of boxes, flat: point `i` is `ctrl[i·stride …]`,
+/// the Cartesian coordinates times the weight, then the weight when
+/// `weighted` (else the weight is 1 exactly: a polynomial curve).
+pub(super) struct Net<'a> {
+    /// The boxes, point after point.
+    pub ctrl: &'a [Interval],
+    /// Boxes per point.
+    pub stride: usize,
+    /// Whether the last box of a point is its weight.
+    pub weighted: bool,
+}
+
+impl Net<'_> {
+    fn len(&self) -> usize {
+        self.ctrl.len() / self.stride
     }
-    let coord = |k: usize| ctrl.iter().map(|h| h[k]).collect::<Vec<_>>();
-    let diff = |k: usize| {
-        ctrl.windows(2)
-            .map(|w| scale(n as f64, &w[1][k].sub(&w[0][k])))
-            .collect::<Vec<_>>()
-    };
-    let (w, dw) = (coord(2), diff(2));
-    let w2 = hull(&bernstein_product(&w, &w));
-    let v = |k: usize| {
-        let a = bernstein_product(&diff(k), &w);
-        let b = bernstein_product(&coord(k), &dw);
-        let num: Vec<Interval> = a.iter().zip(&b).map(|(x, y)| x.sub(y)).collect();
-        hull(&num).div(&w2)?.div(&point(width))
-    };
-    Some([v(0)?, v(1)?])
+
+    fn coord(&self, i: usize, k: usize) -> Interval {
+        self.ctrl[i * self.stride + k]
+    }
+
+    fn weight(&self, i: usize) -> Interval {
+        match self.weighted {
+            true => self.coord(i, self.stride - 1),
+            false => point(1.0),
+        }
+    }
+
+    /// Coordinate `k` of the Cartesian point `i`, `X_k / W`.
+    fn cartesian(&self, i: usize, k: usize) -> Option<Interval> {
+        match self.weighted {
+            true => self.coord(i, k).div(&self.weight(i)),
+            false => Some(self.coord(i, k)),
+        }
+    }
+
+    /// Point `i` as `[X, Y, W]` (planar).
+    pub fn homogeneous(&self, i: usize) -> [Interval; 3] {
+        [self.coord(i, 0), self.coord(i, 1), self.weight(i)]
+    }
+
+    /// The planar point `i`, `None` when its weight box contains 0.
+    pub fn projected(&self, i: usize) -> Option<[Interval; 2]> {
+        Some([self.cartesian(i, 0)?, self.cartesian(i, 1)?])
+    }
+
+    /// Push the bounding box of the projected control points (`dim`
+    /// intervals) onto `out`; `None` when a weight box contains 0.
+    pub fn bounding_box(&self, dim: usize, out: &mut Vec<Interval>) -> Option<()> {
+        for k in 0..dim {
+            let mut b = self.cartesian(0, k)?;
+            for i in 1..self.len() {
+                b = b.hull(&self.cartesian(i, k)?);
+            }
+            out.push(b);
+        }
+        Some(())
+    }
+
+    /// An enclosure of the planar `A'(s)` over the piece's parameter range
+    /// of width `width`, from its control polygon (parameter
+    /// `u ∈ [0, 1]`): for a polynomial curve the hull of the hodograph's
+    /// control points `n ΔP_i / width`; for a rational one
+    /// `A' = (X'W − XW') / (W² · width)`, numerator and `W²` bounded by
+    /// their Bernstein coefficients. Both are the convex hull property
+    /// (tight for small pieces, unlike interval de Casteljau).
+    pub fn velocity_hull(&self, width: f64) -> Option<[Interval; 2]> {
+        let n = self.len() - 1;
+        if n == 0 {
+            return Some([point(0.0); 2]);
+        }
+        let delta = |i: usize, k: usize| self.coord(i + 1, k).sub(&self.coord(i, k));
+        if !self.weighted {
+            let speed = point(n as f64).div(&point(width))?;
+            let v = |k: usize| (1..n).fold(delta(0, k), |h, i| h.hull(&delta(i, k)));
+            return Some([v(0).mul_nonneg(&speed), v(1).mul_nonneg(&speed)]);
+        }
+        let diff = |k: usize| {
+            (0..n)
+                .map(|i| scale(n as f64, &delta(i, k)))
+                .collect::<SmallVec<[Interval; 16]>>()
+        };
+        let coord = |k: usize| (0..=n).map(|i| self.coord(i, k)).collect::<Vec<_>>();
+        let (w, dw) = (coord(2), diff(2));
+        let w2 = hull(&bernstein_product(&w, &w));
+        let v = |k: usize| {
+            let a = bernstein_product(&diff(k), &w);
+            let b = bernstein_product(&coord(k), &dw);
+            let num: Vec<Interval> = a.iter().zip(&b).map(|(x, y)| x.sub(y)).collect();
+            hull(&num).div(&w2)?.div(&point(width))
+        };
+        Some([v(0)?, v(1)?])
+    }
 }
 
 /// The Jacobian enclosure `[[A'_x, −B'_x], [A'_y, −B'_y]]` from velocity
@@ -134,21 +203,17 @@ pub(super) fn jacobian(va: [Interval; 2], vb: [Interval; 2]) -> [[Interval; 2]; 
 }
 
 /// The Krawczyk test of `f(s, t) = A(s) − B(t)` on the box `x = [S, T]`,
-/// with `j` an enclosure of the Jacobian over the box.
+/// with `c` a point of `x`, `f` an enclosure of `f(c)` and `j` an
+/// enclosure of the Jacobian over the box.
 pub(super) fn krawczyk(
-    a: &PlanarBoxes,
-    b: &PlanarBoxes,
     x: [Interval; 2],
+    c: [f64; 2],
+    f: [Interval; 2],
     j: [[Interval; 2]; 2],
 ) -> Krawczyk {
-    let c = [mid(&x[0]), mid(&x[1])];
-    let (Some((pa, _)), Some((pb, _))) = (
-        point_and_velocity(a, point(c[0])),
-        point_and_velocity(b, point(c[1])),
-    ) else {
+    if !(0..2).all(|i| x[i].lo <= c[i] && c[i] <= x[i].hi) {
         return Krawczyk::Unknown;
-    };
-    let f = [pa[0].sub(&pb[0]), pa[1].sub(&pb[1])];
+    }
     let m = [
         [mid(&j[0][0]), mid(&j[0][1])],
         [mid(&j[1][0]), mid(&j[1][1])],
@@ -185,33 +250,65 @@ pub(super) fn krawczyk(
     Krawczyk::Unknown
 }
 
-/// The Krawczyk test on `x` with the Jacobian from interval de Casteljau
-/// (adequate for small boxes).
+/// The Krawczyk test on `x` with `f(c)` at the midpoint and the Jacobian
+/// from interval de Casteljau on the whole curves (adequate for small
+/// boxes).
 fn krawczyk_small(a: &PlanarBoxes, b: &PlanarBoxes, x: [Interval; 2]) -> Krawczyk {
-    match (point_and_velocity(a, x[0]), point_and_velocity(b, x[1])) {
-        (Some((_, va)), Some((_, vb))) => krawczyk(a, b, x, jacobian(va, vb)),
-        _ => Krawczyk::Unknown,
-    }
+    let c = [mid(&x[0]), mid(&x[1])];
+    let parts = (
+        point_and_velocity(a, x[0]),
+        point_and_velocity(b, x[1]),
+        point_and_velocity(a, point(c[0])),
+        point_and_velocity(b, point(c[1])),
+    );
+    let (Some((_, va)), Some((_, vb)), Some((pa, _)), Some((pb, _))) = parts else {
+        return Krawczyk::Unknown;
+    };
+    let f = [pa[0].sub(&pb[0]), pa[1].sub(&pb[1])];
+    krawczyk(x, c, f, jacobian(va, vb))
 }
 
-/// Newton steps in `f64` on `A(s) − B(t) = 0` from `z` (midpoints of the
-/// interval enclosures).
+/// `A(s)` and `A'(s)` in plain `f64` from the midpoints of the control
+/// boxes, by de Casteljau: an estimate for Newton's method, not an
+/// enclosure.
+fn estimate(ctrl: &PlanarBoxes, s: f64) -> ([f64; 2], [f64; 2]) {
+    let mut rows: SmallVec<[[f64; 3]; 16]> = ctrl.iter().map(|h| h.map(|v| mid(&v))).collect();
+    let n = rows.len() - 1;
+    for len in (3..=rows.len()).rev() {
+        for i in 0..len - 1 {
+            rows[i] = std::array::from_fn(|k| (1.0 - s) * rows[i][k] + s * rows[i + 1][k]);
+        }
+    }
+    let (h, dh): ([f64; 3], [f64; 3]) = match n {
+        0 => (rows[0], [0.0; 3]),
+        _ => (
+            std::array::from_fn(|k| (1.0 - s) * rows[0][k] + s * rows[1][k]),
+            std::array::from_fn(|k| n as f64 * (rows[1][k] - rows[0][k])),
+        ),
+    };
+    let v = |k: usize| (dh[k] * h[2] - h[k] * dh[2]) / (h[2] * h[2]);
+    ([h[0] / h[2], h[1] / h[2]], [v(0), v(1)])
+}
+
+/// Newton steps in `f64` on `A(s) − B(t) = 0` from `z`, until a step is
+/// below `10⁻¹²` (the next one is at rounding level) or for 8 steps.
 fn newton(a: &PlanarBoxes, b: &PlanarBoxes, mut z: [f64; 2]) -> [f64; 2] {
     for _ in 0..8 {
-        let (Some((pa, va)), Some((pb, vb))) = (
-            point_and_velocity(a, point(z[0])),
-            point_and_velocity(b, point(z[1])),
-        ) else {
-            break;
-        };
-        let f = [mid(&pa[0]) - mid(&pb[0]), mid(&pa[1]) - mid(&pb[1])];
-        let j = [[mid(&va[0]), -mid(&vb[0])], [mid(&va[1]), -mid(&vb[1])]];
+        let ((pa, va), (pb, vb)) = (estimate(a, z[0]), estimate(b, z[1]));
+        let f = [pa[0] - pb[0], pa[1] - pb[1]];
+        let j = [[va[0], -vb[0]], [va[1], -vb[1]]];
         let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
         if !det.is_finite() || det == 0.0 {
             break;
         }
-        z[0] -= (j[1][1] * f[0] - j[0][1] * f[1]) / det;
-        z[1] -= (j[0][0] * f[1] - j[1][0] * f[0]) / det;
+        let step = [
+            (j[1][1] * f[0] - j[0][1] * f[1]) / det,
+            (j[0][0] * f[1] - j[1][0] * f[0]) / det,
+        ];
+        z = [z[0] - step[0], z[1] - step[1]];
+        if step[0].abs() <= 1e-12 && step[1].abs() <= 1e-12 {
+            break;
+        }
     }
     z
 }
@@ -246,6 +343,20 @@ mod tests {
 
     fn boxes(pts: &[[f64; 3]]) -> Vec<[Interval; 3]> {
         pts.iter().map(|p| p.map(point)).collect()
+    }
+
+    fn flat(c: &[[Interval; 3]]) -> Vec<Interval> {
+        c.iter().flatten().copied().collect()
+    }
+
+    fn velocity_hull(c: &[[Interval; 3]], width: f64) -> Option<[Interval; 2]> {
+        let ctrl = flat(c);
+        let net = Net {
+            ctrl: &ctrl,
+            stride: 3,
+            weighted: true,
+        };
+        net.velocity_hull(width)
     }
 
     #[test]
@@ -299,6 +410,34 @@ mod tests {
     }
 
     #[test]
+    fn the_hodograph_hull_of_a_polynomial_net_encloses_its_velocity() {
+        // The cubic with x-controls 0, 1, 3, 2 and y-controls 0, 2, −1, 1 (W ≡ 1):
+        // x' = 3[(1 − s)² + 4s(1 − s) − s²], y' = 3[2(1 − s)² − 6s(1 − s) + 2s²].
+        let ctrl: Vec<Interval> = [0.0, 0.0, 1.0, 2.0, 3.0, -1.0, 2.0, 1.0]
+            .map(point)
+            .to_vec();
+        let net = Net {
+            ctrl: &ctrl,
+            stride: 2,
+            weighted: false,
+        };
+        let v = net.velocity_hull(0.25).unwrap();
+        for k in 0..=20 {
+            let s = k as f64 / 20.0;
+            let (a, b, c) = ((1.0 - s) * (1.0 - s), 2.0 * s * (1.0 - s), s * s);
+            // On a piece of width 1/4, d/ds of the whole curve is 4 × d/du.
+            let d = [
+                12.0 * (a + 2.0 * b - c),
+                12.0 * (2.0 * a - 3.0 * b + 2.0 * c),
+            ];
+            assert!((0..2).all(|i| v[i].lo <= d[i] && d[i] <= v[i].hi), "{s}");
+        }
+        // The hull of 4·3·ΔP: x ∈ [−12, 24], y ∈ [−36, 24], tight.
+        assert!(v[0].lo >= -12.0 - 1e-12 && v[0].hi <= 24.0 + 1e-12);
+        assert!(v[1].lo >= -36.0 - 1e-12 && v[1].hi <= 24.0 + 1e-12);
+    }
+
+    #[test]
     fn a_tangency_is_not_certified() {
         // y = x² (x from −1 to 1) against the line y = 0: J is singular.
         let a = boxes(&[[-1.0, 1.0, 1.0], [0.0, -1.0, 1.0], [1.0, 1.0, 1.0]]);
@@ -308,8 +447,11 @@ mod tests {
             velocity_hull(&a, 1.0).unwrap(),
             velocity_hull(&b, 1.0).unwrap(),
         );
+        let (pa, _) = point_and_velocity(&a, point(0.5)).unwrap();
+        let (pb, _) = point_and_velocity(&b, point(0.5)).unwrap();
+        let f = [pa[0].sub(&pb[0]), pa[1].sub(&pb[1])];
         assert!(!matches!(
-            krawczyk(&a, &b, [unit, unit], jacobian(va, vb)),
+            krawczyk([unit, unit], [0.5, 0.5], f, jacobian(va, vb)),
             Krawczyk::Unique(_)
         ));
     }

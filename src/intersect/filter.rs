@@ -1,27 +1,29 @@
-//! The `f64` paths: a rigorous interval filter in front of the exact
-//! intersection, and an approximate intersection with a caller's tolerance.
+//! The rigorous interval filter in front of the exact intersection.
 //!
-//! Filter: the control polygons are subdivided at `1/2` in interval
-//! arithmetic with outward rounding ([`Interval`]); by the convex hull
-//! property (positive weights), each piece lies in the box of its
-//! projected control points. Pairs of pieces with disjoint boxes are
-//! dropped; in the plane, the Krawczyk test (module `certify`) certifies a
-//! unique transversal crossing in a pair's parameter box or excludes one.
-//! When every pair is decided by some depth, the answer is certified
-//! without the exact path.
+//! The control polygons are subdivided at `1/2` in interval arithmetic
+//! with outward rounding ([`Interval`]); by the convex hull property
+//! (positive weights), each piece lies in the box of its projected control
+//! points. The subdivision runs level by level: each piece of a level is
+//! halved once, whatever the number of pairs it is in, and its bounding
+//! box, its midpoint (the point the halving shares between the halves)
+//! and, in the plane, its velocity hull are computed once. Pairs of pieces
+//! with disjoint boxes are dropped; in the plane, the Krawczyk test
+//! (module `certify`) certifies a unique transversal crossing in a pair's
+//! parameter box or excludes one. When every pair is decided by some
+//! depth, the answer is certified without the exact path.
 //!
-//! Approximate: the same subdivision in plain `f64` down to pieces whose
-//! boxes are below the tolerance, Newton steps on `A(s) − B(t)` from each
-//! surviving pair, and clustering in `(s, t)`.
+//! A curve whose weights are all equal is a polynomial curve: its pieces
+//! carry no weight (`W ≡ 1` exactly after dividing by it), which makes
+//! the boxes and velocities cheaper and tighter.
 
 use super::certify::{
-    contract, jacobian, krawczyk, point_and_velocity, velocity_hull, Krawczyk, PlanarBoxes,
+    contract, jacobian, krawczyk, point_and_velocity, Krawczyk, Net, PlanarBoxes,
 };
 use crate::algebra::Interval;
 use crate::curve::RationalCurve;
 use crate::error::Error;
-use crate::hpoint::HPoint;
 use num_rational::BigRational;
+use num_traits::One;
 
 /// A transversal crossing of two planar curves certified by interval
 /// arithmetic: exactly one intersection has its parameters in `s × t`.
@@ -42,149 +44,192 @@ const FILTER_DEPTH: usize = 16;
 /// not decided within 64).
 const FILTER_PAIRS: usize = 1024;
 
-/// A homogeneous control polygon of `f64` boxes.
-type Boxes = Vec<Vec<Interval>>;
+/// One curve's pieces at one level of the subdivision, side by side in one
+/// buffer: piece `i` holds the control points `i·len … (i+1)·len − 1`,
+/// each `stride` boxes (the Cartesian coordinates times the weight, then
+/// the weight; without the weight for a polynomial curve), and has the
+/// exact (dyadic) parameter range `range[i]`.
+struct Pieces {
+    len: usize,
+    stride: usize,
+    weighted: bool,
+    ctrl: Vec<Interval>,
+    range: Vec<Interval>,
+}
 
-/// Split a polygon at `1/2` (de Casteljau; halving is exact in `f64`, the
-/// sums are rounded outward).
-fn halve_boxes(ctrl: &Boxes) -> (Boxes, Boxes) {
-    let half = Interval { lo: 0.5, hi: 0.5 };
-    let mut rows = ctrl.clone();
-    let (mut left, mut right) = (vec![rows[0].clone()], vec![rows[rows.len() - 1].clone()]);
-    while rows.len() > 1 {
-        rows = rows
-            .windows(2)
-            .map(|w| {
-                w[0].iter()
-                    .zip(&w[1])
-                    .map(|(a, b)| a.add(b).mul(&half))
-                    .collect()
+impl Pieces {
+    /// The whole curve, its control points enclosed; a curve with equal
+    /// weights is divided by them exactly first (`W ≡ 1`).
+    fn whole(c: &RationalCurve<BigRational>) -> Pieces {
+        let dim = c.dim();
+        let w0 = &c.ctrl()[0].coords[dim];
+        let weighted = c.ctrl().iter().any(|h| h.coords[dim] != *w0);
+        let ctrl = c
+            .ctrl()
+            .iter()
+            .flat_map(|h| {
+                let coords = if weighted {
+                    &h.coords[..]
+                } else {
+                    &h.coords[..dim]
+                };
+                coords.iter().map(move |x| match weighted || w0.is_one() {
+                    true => Interval::enclose(x),
+                    false => Interval::enclose(&(x / w0)),
+                })
             })
             .collect();
-        left.push(rows[0].clone());
-        right.push(rows[rows.len() - 1].clone());
+        Pieces {
+            len: c.ctrl().len(),
+            stride: dim + usize::from(weighted),
+            weighted,
+            ctrl,
+            range: vec![Interval { lo: 0.0, hi: 1.0 }],
+        }
     }
-    right.reverse();
-    (left, right)
-}
 
-/// The bounding box of the projected control points, or `None` when a
-/// weight box contains 0.
-fn bounding_box(ctrl: &Boxes) -> Option<Vec<Interval>> {
-    let dim = ctrl[0].len() - 1;
-    let mut hull: Option<Vec<Interval>> = None;
-    for h in ctrl {
-        let p: Vec<Interval> = (0..dim).map(|k| h[k].div(&h[dim])).collect::<Option<_>>()?;
-        hull = Some(match hull {
-            None => p,
-            Some(b) => b
+    /// The number of Cartesian coordinates.
+    fn dim(&self) -> usize {
+        self.stride - usize::from(self.weighted)
+    }
+
+    /// The control boxes of piece `i`, flat.
+    fn net(&self, i: usize) -> Net<'_> {
+        let n = self.len * self.stride;
+        Net {
+            ctrl: &self.ctrl[i * n..(i + 1) * n],
+            stride: self.stride,
+            weighted: self.weighted,
+        }
+    }
+
+    /// Both halves of every piece (de Casteljau at `1/2`; halving is exact
+    /// in `f64`, the sums are rounded outward): piece `i` becomes pieces
+    /// `2i` (left) and `2i + 1` (right).
+    fn halves(&self) -> Pieces {
+        let (len, stride) = (self.len, self.stride);
+        let half = Interval::point(0.5);
+        let mut ctrl = vec![Interval::point(0.0); 2 * self.ctrl.len()];
+        let mut row = vec![Interval::point(0.0); len * stride];
+        for (i, out) in ctrl.chunks_exact_mut(2 * len * stride).enumerate() {
+            row.copy_from_slice(self.net(i).ctrl);
+            let (left, right) = out.split_at_mut(len * stride);
+            for r in 0..len {
+                if r > 0 {
+                    for j in 0..(len - r) * stride {
+                        row[j] = row[j].add(&row[j + stride]).mul_nonneg(&half);
+                    }
+                }
+                let (first, last) = (0..stride, (len - 1 - r) * stride..(len - r) * stride);
+                left[r * stride..(r + 1) * stride].copy_from_slice(&row[first]);
+                right[(len - 1 - r) * stride..(len - r) * stride].copy_from_slice(&row[last]);
+            }
+        }
+        let range = self
+            .range
+            .iter()
+            .flat_map(|r| {
+                let m = 0.5 * (r.lo + r.hi);
+                [Interval { lo: r.lo, hi: m }, Interval { lo: m, hi: r.hi }]
+            })
+            .collect();
+        Pieces {
+            ctrl,
+            range,
+            ..*self
+        }
+    }
+
+    /// The pieces `keep` (increasing), renumbered `0, 1, …`.
+    fn select(&self, keep: &[usize]) -> Pieces {
+        Pieces {
+            ctrl: keep
                 .iter()
-                .zip(&p)
-                .map(|(x, y)| Interval {
-                    lo: x.lo.min(y.lo),
-                    hi: x.hi.max(y.hi),
-                })
+                .flat_map(|&i| self.net(i).ctrl)
+                .copied()
                 .collect(),
-        });
-    }
-    hull
-}
-
-fn boxes_of(c: &RationalCurve<BigRational>) -> Boxes {
-    c.ctrl()
-        .iter()
-        .map(|h: &HPoint<BigRational>| h.coords.iter().map(Interval::enclose).collect())
-        .collect()
-}
-
-fn disjoint(a: &[Interval], b: &[Interval]) -> bool {
-    a.iter().zip(b).any(|(x, y)| x.disjoint(y))
-}
-
-/// A subdivided piece: its control polygon of boxes and its exact
-/// (dyadic) parameter range.
-struct BoxPiece {
-    ctrl: Boxes,
-    range: Interval,
-}
-
-impl BoxPiece {
-    fn halves(&self) -> [BoxPiece; 2] {
-        let (l, r) = halve_boxes(&self.ctrl);
-        let m = 0.5 * (self.range.lo + self.range.hi);
-        [
-            BoxPiece {
-                ctrl: l,
-                range: Interval {
-                    lo: self.range.lo,
-                    hi: m,
-                },
-            },
-            BoxPiece {
-                ctrl: r,
-                range: Interval {
-                    lo: m,
-                    hi: self.range.hi,
-                },
-            },
-        ]
+            range: keep.iter().map(|&i| self.range[i]).collect(),
+            ..*self
+        }
     }
 }
 
-/// The control boxes of a planar curve as `[x, y, w]`.
-fn planar(b: &Boxes) -> Vec<[Interval; 3]> {
-    b.iter().map(|h| [h[0], h[1], h[2]]).collect()
+/// Enclosures of a planar piece's point at the middle of its range and of
+/// its velocity over the range (`None` when a weight box contains 0).
+type PieceFacts = Option<([Interval; 2], [Interval; 2])>;
+
+impl Pieces {
+    /// The bounding boxes of the pieces (`dim` intervals each, side by
+    /// side), `None` when a weight box contains 0.
+    fn bounding_boxes(&self) -> Option<Vec<Interval>> {
+        let mut boxes = Vec::with_capacity(self.range.len() * self.dim());
+        for i in 0..self.range.len() {
+            self.net(i).bounding_box(self.dim(), &mut boxes)?;
+        }
+        Some(boxes)
+    }
+
+    /// The midpoint and velocity enclosures of planar pieces, `halves`
+    /// being `self.halves()` (the midpoint is where the halves meet).
+    fn planar_facts(&self, halves: &Pieces) -> Vec<PieceFacts> {
+        (0..self.range.len())
+            .map(|i| {
+                let width = self.range[i].hi - self.range[i].lo;
+                let mid = halves.net(2 * i + 1).projected(0);
+                mid.zip(self.net(i).velocity_hull(width))
+            })
+            .collect()
+    }
+
+    /// The whole planar curve's control boxes as `[x, y, w]`.
+    fn planar(&self) -> Vec<[Interval; 3]> {
+        let net = self.net(0);
+        (0..self.len).map(|i| net.homogeneous(i)).collect()
+    }
 }
 
 /// The certified crossings when interval arithmetic decides every box
 /// pair of a subdivision (separated hulls, or a Krawczyk verdict in the
-/// plane), `None` when some pair stays undecided.
+/// plane), `None` when some pair stays undecided. The halves and the
+/// planar facts of a level are computed only when a pair survives the
+/// boxes.
 fn decide(
     a: &RationalCurve<BigRational>,
     b: &RationalCurve<BigRational>,
 ) -> Option<Vec<CertifiedCrossing>> {
-    let (ba, bb) = (boxes_of(a), boxes_of(b));
-    let curves = (a.dim() == 2).then(|| (planar(&ba), planar(&bb)));
-    let unit = Interval { lo: 0.0, hi: 1.0 };
-    let mut pairs = vec![(
-        BoxPiece {
-            ctrl: ba,
-            range: unit,
-        },
-        BoxPiece {
-            ctrl: bb,
-            range: unit,
-        },
-    )];
+    let (mut pa, mut pb) = (Pieces::whole(a), Pieces::whole(b));
+    let dim = pa.dim();
+    let curves = (dim == 2).then(|| (pa.planar(), pb.planar()));
+    let mut pairs = vec![(0, 0)];
     let mut found = Vec::new();
     for _ in 0..FILTER_DEPTH {
-        let mut next = Vec::new();
-        for (pa, pb) in &pairs {
-            let (ha, hb) = (bounding_box(&pa.ctrl)?, bounding_box(&pb.ctrl)?);
-            if disjoint(&ha, &hb) {
-                continue;
-            }
-            if let Some((ca, cb)) = &curves {
-                match certify_pair(ca, cb, pa, pb) {
+        let (ba, bb) = (pa.bounding_boxes()?, pb.bounding_boxes()?);
+        pairs.retain(|&(i, j)| {
+            let (x, y) = (&ba[i * dim..(i + 1) * dim], &bb[j * dim..(j + 1) * dim]);
+            !x.iter().zip(y).any(|(u, v)| u.disjoint(v))
+        });
+        if pairs.is_empty() {
+            return Some(found);
+        }
+        let (ha, hb) = (pa.halves(), pb.halves());
+        let facts = curves
+            .as_ref()
+            .map(|_| (pa.planar_facts(&ha), pb.planar_facts(&hb)));
+        let mut next = Vec::with_capacity(4 * pairs.len());
+        for &(i, j) in &pairs {
+            if let (Some((ca, cb)), Some((fa, fb))) = (&curves, &facts) {
+                let x = [pa.range[i], pb.range[j]];
+                match krawczyk_pair(x, fa[i], fb[j]) {
                     Krawczyk::Unique(_) => {
-                        found.push(crossing(ca, cb, contract(ca, cb, [pa.range, pb.range]))?);
+                        found.push(crossing(ca, cb, contract(ca, cb, x))?);
                         continue;
                     }
                     Krawczyk::None => continue,
                     Krawczyk::Unknown => {}
                 }
             }
-            for x in pa.halves() {
-                for y in pb.halves() {
-                    next.push((
-                        BoxPiece {
-                            ctrl: x.ctrl.clone(),
-                            range: x.range,
-                        },
-                        y,
-                    ));
-                }
-            }
+            next.extend([(2 * i, 2 * j), (2 * i, 2 * j + 1)]);
+            next.extend([(2 * i + 1, 2 * j), (2 * i + 1, 2 * j + 1)]);
         }
         if next.is_empty() {
             return Some(found);
@@ -192,22 +237,35 @@ fn decide(
         if next.len() > FILTER_PAIRS {
             return None;
         }
-        pairs = next;
+        let (keep_a, keep_b) = (renumber(&mut next, 0), renumber(&mut next, 1));
+        (pa, pb, pairs) = (ha.select(&keep_a), hb.select(&keep_b), next);
     }
     None
 }
 
-/// The Krawczyk test on the parameter box of two pieces, with the
-/// Jacobian bounded by the pieces' Bernstein hulls.
-fn certify_pair(a: &PlanarBoxes, b: &PlanarBoxes, pa: &BoxPiece, pb: &BoxPiece) -> Krawczyk {
-    let width = |p: &BoxPiece| p.range.hi - p.range.lo;
-    match (
-        velocity_hull(&planar(&pa.ctrl), width(pa)),
-        velocity_hull(&planar(&pb.ctrl), width(pb)),
-    ) {
-        (Some(va), Some(vb)) => krawczyk(a, b, [pa.range, pb.range], jacobian(va, vb)),
-        _ => Krawczyk::Unknown,
+/// The distinct piece numbers in position `side` of the pairs, increasing;
+/// the pairs are rewritten to their ranks in that list.
+fn renumber(pairs: &mut [(usize, usize)], side: usize) -> Vec<usize> {
+    let get = |p: &(usize, usize)| if side == 0 { p.0 } else { p.1 };
+    let mut keep: Vec<usize> = pairs.iter().map(get).collect();
+    keep.sort_unstable();
+    keep.dedup();
+    for p in pairs.iter_mut() {
+        let rank = keep.binary_search(&get(p)).expect("listed");
+        *(if side == 0 { &mut p.0 } else { &mut p.1 }) = rank;
     }
+    keep
+}
+
+/// The Krawczyk test on the parameter box `x` of two pieces, from their
+/// midpoint and velocity enclosures ([`Facts`]).
+fn krawczyk_pair(x: [Interval; 2], a: PieceFacts, b: PieceFacts) -> Krawczyk {
+    let (Some((ma, va)), Some((mb, vb))) = (a, b) else {
+        return Krawczyk::Unknown;
+    };
+    let c = x.map(|r| 0.5 * (r.lo + r.hi));
+    let f = [ma[0].sub(&mb[0]), ma[1].sub(&mb[1])];
+    krawczyk(x, c, f, jacobian(va, vb))
 }
 
 /// The crossing in the certified box `x`, with the point box `A(S) ∩ B(T)`.
@@ -237,7 +295,7 @@ fn crossing(a: &PlanarBoxes, b: &PlanarBoxes, x: [Interval; 2]) -> Option<Certif
 /// intersections at curve ends or on a dyadic split line, curves in 3D
 /// that come close, or curves not of one dimension ≥ 2). Its cost is
 /// bounded whatever the degrees: at most 16 levels of 1024 piece pairs,
-/// each a de Casteljau split of interval nets.
+/// each piece of a level split once by interval de Casteljau.
 pub(crate) fn certify_crossings(
     a: &RationalCurve<BigRational>,
     b: &RationalCurve<BigRational>,
@@ -248,304 +306,4 @@ pub(crate) fn certify_crossings(
     a.check_positive_weights()?;
     b.check_positive_weights()?;
     Ok(decide(a, b))
-}
-
-/// An approximate intersection: the `f64` answer of [`intersect`](super::intersect).
-#[derive(Clone, Debug, PartialEq)]
-pub struct ApproxIntersection {
-    /// Parameter on the first curve (for an overlap, its start).
-    pub s: f64,
-    /// Parameter on the second curve (for an overlap, its start).
-    pub t: f64,
-    /// `A(s)`.
-    pub point: Vec<f64>,
-    /// `|A(s) − B(t)|` after refinement (≤ the tolerance).
-    pub distance: f64,
-    /// For a suspected overlap, the parameter ranges `(s0, s1, t0, t1)` of
-    /// the cluster of close pieces; `None` for an isolated point.
-    pub overlap: Option<[f64; 4]>,
-}
-
-/// A curve piece in `f64`: its homogeneous control points and parameter
-/// range.
-#[derive(Clone)]
-struct Piece {
-    ctrl: Vec<Vec<f64>>,
-    lo: f64,
-    hi: f64,
-}
-
-impl Piece {
-    fn halves(&self) -> (Piece, Piece) {
-        let mut rows = self.ctrl.clone();
-        let (mut left, mut right) = (vec![rows[0].clone()], vec![rows[rows.len() - 1].clone()]);
-        while rows.len() > 1 {
-            rows = rows
-                .windows(2)
-                .map(|w| w[0].iter().zip(&w[1]).map(|(a, b)| 0.5 * (a + b)).collect())
-                .collect();
-            left.push(rows[0].clone());
-            right.push(rows[rows.len() - 1].clone());
-        }
-        right.reverse();
-        let mid = 0.5 * (self.lo + self.hi);
-        (
-            Piece {
-                ctrl: left,
-                lo: self.lo,
-                hi: mid,
-            },
-            Piece {
-                ctrl: right,
-                lo: mid,
-                hi: self.hi,
-            },
-        )
-    }
-
-    /// `(min, max)` per coordinate of the projected control points.
-    fn bounds(&self) -> Vec<(f64, f64)> {
-        let dim = self.ctrl[0].len() - 1;
-        (0..dim)
-            .map(|k| {
-                self.ctrl
-                    .iter()
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), h| {
-                        let x = h[k] / h[dim];
-                        (lo.min(x), hi.max(x))
-                    })
-            })
-            .collect()
-    }
-}
-
-fn piece(c: &RationalCurve<f64>) -> Piece {
-    Piece {
-        ctrl: c.ctrl().iter().map(|h| h.coords.clone()).collect(),
-        lo: 0.0,
-        hi: 1.0,
-    }
-}
-
-/// Newton steps (least squares in 3D and above) on `A(s) − B(t) = 0`.
-fn refine(a: &RationalCurve<f64>, b: &RationalCurve<f64>, mut s: f64, mut t: f64) -> (f64, f64) {
-    for _ in 0..20 {
-        let (Ok(da), Ok(db)) = (a.derivs(&s, 1), b.derivs(&t, 1)) else {
-            break;
-        };
-        let r: Vec<f64> = da[0].iter().zip(&db[0]).map(|(x, y)| x - y).collect();
-        // J = [A'(s), −B'(t)]; normal equations JᵀJ δ = −Jᵀr.
-        let dot = |u: &[f64], v: &[f64]| u.iter().zip(v).map(|(x, y)| x * y).sum::<f64>();
-        let (aa, ab, bb) = (
-            dot(&da[1], &da[1]),
-            -dot(&da[1], &db[1]),
-            dot(&db[1], &db[1]),
-        );
-        let (ra, rb) = (-dot(&da[1], &r), dot(&db[1], &r));
-        let det = aa * bb - ab * ab;
-        if det.abs() <= f64::EPSILON * aa * bb || !det.is_finite() {
-            break;
-        }
-        let (ds, dt) = ((ra * bb - ab * rb) / det, (aa * rb - ab * ra) / det);
-        s = (s + ds).clamp(0.0, 1.0);
-        t = (t + dt).clamp(0.0, 1.0);
-        if ds.abs() + dt.abs() < 1e-16 {
-            break;
-        }
-    }
-    (s, t)
-}
-
-/// The most leaf pairs the approximate path keeps before refusing.
-const APPROX_PAIRS: usize = 100_000;
-/// A cluster of more leaves than this is reported as a suspected overlap.
-const OVERLAP_LEAVES: usize = 64;
-
-/// Intersections in `f64` within the tolerance `tol` (absolute, in model
-/// units): subdivision to pieces of size `L = max(tol, √(tol·D))` (`D` the
-/// diameter of both curves' boxes), Newton refinement from each cluster of
-/// touching piece pairs, kept when `|A(s) − B(t)| ≤ tol`. A cluster of more
-/// than 64 piece pairs is reported as a suspected overlap with its
-/// parameter ranges (a heuristic: the exact path decides overlaps).
-///
-/// # Errors
-///
-/// [`Error::Domain`] for a tolerance that is not finite and positive,
-/// [`Error::Shape`] for different dimensions, [`Error::Weight`] for
-/// non-positive weights, [`Error::Limit`] when more than 100 000 piece
-/// pairs stay close.
-pub(crate) fn intersect_approx(
-    a: &RationalCurve<f64>,
-    b: &RationalCurve<f64>,
-    tol: f64,
-) -> Result<Vec<ApproxIntersection>, Error> {
-    if !(tol.is_finite() && tol > 0.0) {
-        return Err(Error::Domain(format!(
-            "the tolerance {tol} must be finite and > 0"
-        )));
-    }
-    if a.dim() != b.dim() {
-        return Err(Error::Shape(format!(
-            "the curves have dimensions {} and {}",
-            a.dim(),
-            b.dim()
-        )));
-    }
-    a.check_positive_weights()?;
-    b.check_positive_weights()?;
-    let (pa, pb) = (piece(a), piece(b));
-    let diameter = pa
-        .bounds()
-        .iter()
-        .zip(pb.bounds())
-        .map(|(x, y)| (x.1.max(y.1) - x.0.min(y.0)).powi(2))
-        .sum::<f64>()
-        .sqrt();
-    let leaf = tol.max((tol * diameter).sqrt());
-    let leaves = close_leaves(pa, pb, tol, leaf)?;
-    let found = clusters(&leaves)
-        .into_iter()
-        .filter_map(|c| cluster_result(a, b, &c, tol).map(|x| (x, c.range)))
-        .collect();
-    Ok(distinct(found))
-}
-
-/// Drop an intersection that Newton refined onto the root of an earlier
-/// one — two clusters that do not touch can still converge to one root —
-/// judged in parameters, at the resolution of the search: `s` and `t`
-/// each within the wider of the two clusters' extents. Overlaps are kept.
-fn distinct(found: Vec<(ApproxIntersection, [f64; 4])>) -> Vec<ApproxIntersection> {
-    let mut kept: Vec<(ApproxIntersection, [f64; 4])> = Vec::new();
-    for (x, r) in found {
-        let same = |(y, q): &(ApproxIntersection, [f64; 4])| {
-            let near = |d: f64, w: f64| d.abs() <= w;
-            x.overlap.is_none()
-                && y.overlap.is_none()
-                && near(x.s - y.s, (r[1] - r[0]).max(q[1] - q[0]))
-                && near(x.t - y.t, (r[3] - r[2]).max(q[3] - q[2]))
-        };
-        if !kept.iter().any(same) {
-            kept.push((x, r));
-        }
-    }
-    kept.into_iter().map(|(x, _)| x).collect()
-}
-
-/// Leaf pairs `(s0, s1, t0, t1)` whose boxes stay within `tol` of each
-/// other, subdivided to box diagonals of at most `leaf`.
-fn close_leaves(a: Piece, b: Piece, tol: f64, leaf: f64) -> Result<Vec<[f64; 4]>, Error> {
-    let near = |x: &[(f64, f64)], y: &[(f64, f64)]| {
-        x.iter()
-            .zip(y)
-            .all(|(p, q)| p.0 <= q.1 + tol && q.0 <= p.1 + tol)
-    };
-    let small = |x: &[(f64, f64)]| {
-        x.iter()
-            .map(|(lo, hi)| (hi - lo).powi(2))
-            .sum::<f64>()
-            .sqrt()
-            <= leaf
-    };
-    let mut stack = vec![(a, b)];
-    let mut leaves = Vec::new();
-    while let Some((pa, pb)) = stack.pop() {
-        let (ba, bb) = (pa.bounds(), pb.bounds());
-        if !near(&ba, &bb) {
-            continue;
-        }
-        let splittable = pa.hi - pa.lo > f64::EPSILON && pb.hi - pb.lo > f64::EPSILON;
-        if (small(&ba) && small(&bb)) || !splittable {
-            leaves.push([pa.lo, pa.hi, pb.lo, pb.hi]);
-            if leaves.len() > APPROX_PAIRS {
-                return Err(Error::Limit(format!(
-                    "over {APPROX_PAIRS} piece pairs within {tol} of each other: use the exact path"
-                )));
-            }
-            continue;
-        }
-        let (a0, a1) = pa.halves();
-        let (b0, b1) = pb.halves();
-        stack.extend([
-            (a0.clone(), b0.clone()),
-            (a0, b1.clone()),
-            (a1.clone(), b0),
-            (a1, b1),
-        ]);
-    }
-    Ok(leaves)
-}
-
-/// A group of touching leaves: its parameter rectangle and leaf count.
-struct Cluster {
-    range: [f64; 4],
-    leaves: usize,
-}
-
-/// Group leaves whose parameter rectangles touch (merging as they come).
-fn clusters(leaves: &[[f64; 4]]) -> Vec<Cluster> {
-    let touch =
-        |x: &[f64; 4], y: &[f64; 4]| x[0] <= y[1] && y[0] <= x[1] && x[2] <= y[3] && y[2] <= x[3];
-    let mut groups: Vec<Cluster> = Vec::new();
-    for leaf in leaves {
-        let mut merged = Cluster {
-            range: *leaf,
-            leaves: 1,
-        };
-        groups.retain(|g| {
-            if touch(&g.range, &merged.range) {
-                let (x, y) = (&g.range, &merged.range);
-                merged.range = [
-                    x[0].min(y[0]),
-                    x[1].max(y[1]),
-                    x[2].min(y[2]),
-                    x[3].max(y[3]),
-                ];
-                merged.leaves += g.leaves;
-                false
-            } else {
-                true
-            }
-        });
-        groups.push(merged);
-    }
-    groups
-}
-
-/// A cluster as an intersection (refined from its centre), or as a
-/// suspected overlap when it has many leaves.
-fn cluster_result(
-    a: &RationalCurve<f64>,
-    b: &RationalCurve<f64>,
-    c: &Cluster,
-    tol: f64,
-) -> Option<ApproxIntersection> {
-    let r = &c.range;
-    if c.leaves > OVERLAP_LEAVES {
-        let (pa, pb) = (a.eval(&r[0]).ok()?, b.eval(&r[2]).ok()?);
-        return Some(ApproxIntersection {
-            s: r[0],
-            t: r[2],
-            distance: distance(&pa, &pb),
-            point: pa,
-            overlap: Some(*r),
-        });
-    }
-    let (s, t) = refine(a, b, 0.5 * (r[0] + r[1]), 0.5 * (r[2] + r[3]));
-    let (pa, pb) = (a.eval(&s).ok()?, b.eval(&t).ok()?);
-    let d = distance(&pa, &pb);
-    (d <= tol).then_some(ApproxIntersection {
-        s,
-        t,
-        point: pa,
-        distance: d,
-        overlap: None,
-    })
-}
-
-fn distance(p: &[f64], q: &[f64]) -> f64 {
-    p.iter()
-        .zip(q)
-        .map(|(x, y)| (x - y).powi(2))
-        .sum::<f64>()
-        .sqrt()
 }

@@ -44,18 +44,21 @@
 //! Sederberg & Nishita, *Curve intersection using Bézier clipping*, CAD 22
 //! (1990) (convex hull culling).
 
+mod approx;
 mod certify;
 mod filter;
 mod overlap;
 mod system;
 
-pub use filter::{ApproxIntersection, CertifiedCrossing};
+pub use approx::ApproxIntersection;
+pub use filter::CertifiedCrossing;
 pub use overlap::Mobius;
 
 use crate::algebra::{BPoly, RealAlgebraic, Scalar, Tolerance};
 use crate::curve::RationalCurve;
 use crate::error::Error;
-use filter::{certify_crossings, intersect_approx};
+use approx::intersect_approx;
+use filter::certify_crossings;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use system::{combine, solve, PointCache, PowerCurve, Solution, Unsolved};

@@ -246,16 +246,13 @@ fn filtered(a: &RationalCurve<Q>, b: &RationalCurve<Q>) -> Found {
     intersect(a, Some(b), options).unwrap()
 }
 
-/// Certified crossings hold the exact intersections, one each, and the
-/// filter leaves a tangency and an overlap to the exact path.
-#[test]
-fn certified_crossings_hold_the_exact_ones() {
-    let a = rational_cubic();
-    let b = curve(&[&[q(0, 1), q(3, 4)], &[q(3, 1), q(1, 4)]], &[1, 1]);
-    let exact = two_curves(&a, &b).unwrap();
+/// The filter certifies `a × b`, and each exact crossing lies in exactly
+/// one certified box, of width below `10⁻¹²`.
+fn assert_certified(a: &RationalCurve<Q>, b: &RationalCurve<Q>) {
+    let exact = two_curves(a, b).unwrap();
     assert!(!exact.points.is_empty());
-    let Found::Certified(boxes) = filtered(&a, &b) else {
-        panic!("two transversal crossings in the plane are certified");
+    let Found::Certified(boxes) = filtered(a, b) else {
+        panic!("transversal crossings in the plane are certified");
     };
     assert_eq!(boxes.len(), exact.points.len());
     let inside = |x: &RealAlgebraic, i: &crate::algebra::Interval| {
@@ -270,6 +267,37 @@ fn certified_crossings_hold_the_exact_ones() {
         assert_eq!(holding.len(), 1, "one box per exact crossing");
         assert!(holding[0].s.hi - holding[0].s.lo < 1e-12);
     }
+}
+
+/// A planar cubic with control points `k/100` and equal weights `w`.
+fn cubic_100(points: [(i64, i64); 4], w: i64) -> RationalCurve<Q> {
+    let p: Vec<Vec<Q>> = points
+        .iter()
+        .map(|&(x, y)| vec![q(x, 100), q(y, 100)])
+        .collect();
+    curve(&p.iter().map(Vec::as_slice).collect::<Vec<_>>(), &[w; 4])
+}
+
+/// Certified crossings hold the exact intersections, one each — for a
+/// rational cubic and a line, for two polynomial cubics that cross three
+/// times (the criterion benchmark's pair), and for the same pair with
+/// equal weights other than 1 (the filter divides them out) — and the
+/// filter leaves a tangency and an overlap to the exact path.
+#[test]
+fn certified_crossings_hold_the_exact_ones() {
+    let a = rational_cubic();
+    let b = curve(&[&[q(0, 1), q(3, 4)], &[q(3, 1), q(1, 4)]], &[1, 1]);
+    assert_certified(&a, &b);
+    let (p, r) = (
+        [(20, 78), (94, 83), (54, 0), (65, 71)],
+        [(71, 58), (70, 12), (1, 98), (77, 98)],
+    );
+    assert_certified(&cubic_100(p, 1), &cubic_100(r, 1));
+    assert_certified(&cubic_100(p, 3), &cubic_100(r, 7));
+    assert_certified(
+        &cubic_100(p, 3),
+        &rational_cubic().subsegment(&q(0, 1), &q(1, 5)),
+    );
     // A tangency (two parabolas touching at a rational point) is exact.
     let f = curve(
         &[
