@@ -660,7 +660,15 @@ impl<T: Field> Evaluator<T> {
                 // The lanes compute a whole group of points: for one to
                 // three the scalar kernel is cheaper (same values).
                 (points >= FEWEST_FOR_LANES)
-                    .then(|| lanes::eval_batch(&self.net, params, out, &mut self.lane_rows))
+                    .then(|| {
+                        lanes::eval_batch(
+                            lanes::Isa::detect(),
+                            &self.net,
+                            params,
+                            out,
+                            &mut self.lane_rows,
+                        )
+                    })
                     .flatten()
             })
             .unwrap_or_else(|| self.eval_batch_generic(params, out))
