@@ -34,8 +34,9 @@
 //!
 //! `f64` batches of nets of stride 3 or 4 run the kernel lane-major
 //! (`lanes`): eight points at once, each value an array of eight `f64`
-//! that the compiler vectorises, with the scalar kernel's operations in its
-//! order, so the values are the same bit for bit.
+//! that the compiler vectorises (also compiled for AVX2 and chosen at run
+//! time, with the feature `simd`), with the scalar kernel's operations in
+//! its order, so the values are the same bit for bit.
 //!
 //! For `f64` the scheme is the one of dhermes/bezier's `evaluate_multi`;
 //! its rounding differs from de Casteljau's by a few ulps times the size of
