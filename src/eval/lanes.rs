@@ -158,11 +158,17 @@ fn project<const S: usize, T: Any>(
     let (k, d) = (net.shape().params(), S - 1);
     for (p, o) in params.chunks(LANES * k).zip(out.chunks_mut(LANES * d)) {
         let h = hom_net::<S>(net, &hom_lanes(net.shape(), p), rows);
-        // The divides of all lanes in one straight block (whole vectors),
-        // then the points up to the first at infinity (none in a group
-        // whose weights are all non-zero: the common case, written by a
-        // loop of fixed length).
-        let x: [Lane; S] = std::array::from_fn(|c| std::array::from_fn(|l| h[c][l] / h[d][l]));
+        // The divides of all lanes in one straight block, kept whole
+        // vectors by `black_box` (which holds `x` in memory: otherwise the
+        // compiler splits them to fit the interleaved stores below, half
+        // as wide; 15 % on a cubic triangle), then the points up to the
+        // first at infinity (none in a group whose weights are all
+        // non-zero: the common case, written by a loop of fixed length).
+        // `x[d]` is the weight itself, not written.
+        let mut x: [Lane; S] = std::array::from_fn(|c| {
+            std::array::from_fn(|l| if c < d { h[c][l] / h[d][l] } else { h[d][l] })
+        });
+        std::hint::black_box(&mut x);
         let at_infinity = h[d][..o.len() / d].contains(&0.0);
         let o = if at_infinity {
             let finite = h[d].iter().position(|w| *w == 0.0).unwrap_or(LANES);
