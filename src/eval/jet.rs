@@ -54,7 +54,7 @@ pub struct Jet<T> {
 #[derive(Clone, Debug)]
 pub struct Jets<T> {
     /// `H`, then one derivative net per parameter.
-    nets: Vec<Net<T>>,
+    pub(super) nets: Vec<Net<T>>,
     workspaces: Vec<Workspace<T>>,
     /// The homogeneous parameters of the point being evaluated.
     hom: [T; 4],
@@ -152,7 +152,15 @@ impl<T: Scalar> Jets<T> {
     pub fn eval_batch(&mut self, params: &[T], out: &mut [T]) -> Result<(), Error> {
         let (k, per_point) = (self.params(), self.nets.len() * self.stride());
         super::check_batch(params.len(), k, per_point, out.len())?;
-        if super::lanes::jets_batch(&self.nets, params, out, &mut self.lane_rows).is_some() {
+        if super::lanes::jets_batch(
+            super::lanes::Isa::detect(),
+            &self.nets,
+            params,
+            out,
+            &mut self.lane_rows,
+        )
+        .is_some()
+        {
             return Ok(());
         }
         for (p, o) in params.chunks_exact(k).zip(out.chunks_exact_mut(per_point)) {

@@ -34,8 +34,9 @@
 //!
 //! `f64` batches of nets of stride 3 or 4 run the kernel lane-major
 //! (`lanes`): eight points at once, each value an array of eight `f64`
-//! that the compiler vectorises, with the scalar kernel's operations in its
-//! order, so the values are the same bit for bit.
+//! that the compiler vectorises (also compiled for AVX2 and chosen at run
+//! time, with the feature `simd`), with the scalar kernel's operations in
+//! its order, so the values are the same bit for bit.
 //!
 //! For `f64` the scheme is the one of dhermes/bezier's `evaluate_multi`;
 //! its rounding differs from de Casteljau's by a few ulps times the size of
@@ -660,7 +661,15 @@ impl<T: Field> Evaluator<T> {
                 // The lanes compute a whole group of points: for one to
                 // three the scalar kernel is cheaper (same values).
                 (points >= FEWEST_FOR_LANES)
-                    .then(|| lanes::eval_batch(&self.net, params, out, &mut self.lane_rows))
+                    .then(|| {
+                        lanes::eval_batch(
+                            lanes::Isa::detect(),
+                            &self.net,
+                            params,
+                            out,
+                            &mut self.lane_rows,
+                        )
+                    })
                     .flatten()
             })
             .unwrap_or_else(|| self.eval_batch_generic(params, out))
