@@ -65,8 +65,14 @@ pub fn bernstein_all<T: Scalar>(n: usize, t: &T) -> Vec<T> {
 /// assert_eq!(bernstein_to_power(&[q(1), q(2), q(4)]), vec![q(1), q(2), q(1)]);
 /// ```
 pub fn bernstein_to_power<T: Scalar>(b: &[T]) -> Vec<T> {
+    bernstein_to_power_with(b, &binomial_rows(b.len().saturating_sub(1)))
+}
+
+/// [`bernstein_to_power`] with Pascal's triangle of its degree given
+/// (`c = binomial_rows(b.len() − 1)`), for callers that convert many
+/// sequences of one length.
+pub(crate) fn bernstein_to_power_with<T: Scalar>(b: &[T], c: &[Vec<T>]) -> Vec<T> {
     let n = b.len().saturating_sub(1);
-    let c = binomial_rows::<T>(n);
     (0..b.len())
         .map(|k| {
             let sum = (0..=k).fold(T::zero(), |acc, i| {
@@ -86,7 +92,7 @@ pub fn bernstein_to_power<T: Scalar>(b: &[T]) -> Vec<T> {
 /// additions (`C(k, i) = C(k−1, i−1) + C(k−1, i)`) for a whole change of
 /// basis, instead of a product and a division per coefficient. The values
 /// are those of [`binomial_scalar`] (exact integers, each converted once).
-fn binomial_rows<T: Scalar>(n: usize) -> Vec<Vec<T>> {
+pub(crate) fn binomial_rows<T: Scalar>(n: usize) -> Vec<Vec<T>> {
     let mut ints: Vec<Vec<Option<u128>>> = vec![vec![Some(1)]];
     for k in 1..=n {
         let prev = &ints[k - 1];

@@ -29,7 +29,7 @@ use crate::algebra::modp::Fp;
 use crate::algebra::scalar::{Field, Ordered, Scalar, Tolerance};
 use crate::algebra::upoly::{BPoly, UPoly};
 use crate::algebra::RealAlgebraic;
-use crate::bernstein::{bernstein_to_power, power_to_bernstein, reduce_elevated};
+use crate::bernstein::{binomial_rows, bernstein_to_power_with, power_to_bernstein, reduce_elevated};
 use crate::coincide::coprime::coprime_by_intervals;
 use crate::curve::RationalCurve;
 use crate::error::Error;
@@ -46,12 +46,16 @@ pub(crate) fn curve_net<T: Scalar>(c: &RationalCurve<T>) -> Net<T> {
     c.ctrl().iter().map(|p| vec![p.clone()]).collect()
 }
 
-/// Apply `f` to every row and then to every column of a grid.
-fn both_directions<T: Clone>(grid: &[Vec<T>], f: impl Fn(&[T]) -> Vec<T>) -> Vec<Vec<T>> {
-    let rows: Vec<Vec<T>> = grid.iter().map(|r| f(r)).collect();
+/// Apply `on_row` to every row and then `on_col` to every column of a grid.
+fn both_directions<T: Clone>(
+    grid: &[Vec<T>],
+    on_row: impl Fn(&[T]) -> Vec<T>,
+    on_col: impl Fn(&[T]) -> Vec<T>,
+) -> Vec<Vec<T>> {
+    let rows: Vec<Vec<T>> = grid.iter().map(|r| on_row(r)).collect();
     let cols = rows.first().map_or(0, Vec::len);
     let transposed: Vec<Vec<T>> = (0..cols)
-        .map(|j| f(&rows.iter().map(|r| r[j].clone()).collect::<Vec<_>>()))
+        .map(|j| on_col(&rows.iter().map(|r| r[j].clone()).collect::<Vec<_>>()))
         .collect();
     (0..transposed.first().map_or(0, Vec::len))
         .map(|i| transposed.iter().map(|c| c[i].clone()).collect())
@@ -62,13 +66,20 @@ fn both_directions<T: Clone>(grid: &[Vec<T>], f: impl Fn(&[T]) -> Vec<T>) -> Vec
 /// `out[c][p][q]` is the coefficient of `u^p v^q` in `F_c`.
 pub(crate) fn power_components<T: Scalar>(net: &Net<T>) -> Vec<Vec<Vec<T>>> {
     let len = net[0][0].coords.len();
+    // Pascal's triangles of the row length (v) and column length (u), once.
+    let by_row = binomial_rows::<T>(net[0].len() - 1);
+    let by_col = binomial_rows::<T>(net.len() - 1);
     (0..len)
         .map(|c| {
             let grid: Vec<Vec<T>> = net
                 .iter()
                 .map(|row| row.iter().map(|h| h.coords[c].clone()).collect())
                 .collect();
-            both_directions(&grid, bernstein_to_power)
+            both_directions(
+                &grid,
+                |r| bernstein_to_power_with(r, &by_row),
+                |c| bernstein_to_power_with(c, &by_col),
+            )
         })
         .collect()
 }

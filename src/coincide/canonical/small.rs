@@ -11,7 +11,7 @@
 //! ((b/g₂)(d/g₁))` with `g₁ = gcd(a, d)`, `g₂ = gcd(c, b)`).
 
 use crate::algebra::gcd::gcd_u128;
-use crate::algebra::modp::{Fp, MODULUS};
+use crate::algebra::modp::Fp;
 use crate::coincide::minimal::{certified_image, Net};
 use crate::coincide::Symmetry;
 use crate::curve::RationalCurve;
@@ -22,6 +22,7 @@ use crate::rect::RectPatch;
 use crate::Patch;
 use num_rational::BigRational;
 use num_traits::{ToPrimitive, Zero};
+use std::borrow::Cow;
 use std::cmp::Ordering;
 
 /// A rational `p/q` in lowest terms with `q > 0`, in machine integers.
@@ -85,14 +86,38 @@ impl Small {
         Some(self.p.checked_mul(o.q)?.cmp(&o.p.checked_mul(self.q)?))
     }
 
+    /// `p` or `p/q` in decimal, as `BigRational`'s text.
     fn write(self, out: &mut String) {
-        use std::fmt::Write;
-        let _ = if self.q == 1 {
-            write!(out, "{}", self.p)
-        } else {
-            write!(out, "{}/{}", self.p, self.q)
-        };
+        push_int(out, self.p);
+        if self.q != 1 {
+            out.push('/');
+            push_int(out, self.q);
+        }
     }
+}
+
+/// `v` in decimal, on 64-bit words when it fits one (the common case: the
+/// formatter's 128-bit path divides in software).
+fn push_int(out: &mut String, v: i128) {
+    let Ok(mut u) = u64::try_from(v.unsigned_abs()) else {
+        use std::fmt::Write;
+        let _ = write!(out, "{v}");
+        return;
+    };
+    if v < 0 {
+        out.push('-');
+    }
+    let mut digits = [0u8; 20];
+    let mut at = digits.len();
+    loop {
+        at -= 1;
+        digits[at] = b'0' + (u % 10) as u8;
+        u /= 10;
+        if u == 0 {
+            break;
+        }
+    }
+    out.extend(digits[at..].iter().map(|&d| char::from(d)));
 }
 
 /// Lexicographic order of two equally long sequences; `None` on overflow.
@@ -106,32 +131,43 @@ fn cmp_seq(a: impl Iterator<Item = Small>, b: impl Iterator<Item = Small>) -> Op
     Some(Ordering::Equal)
 }
 
-/// The net split into normalized points (row-major, each with its trailing
-/// 1) and weights, in its own orientation.
-struct Split {
+/// The net split into Cartesian points (row-major, `dim` numbers each;
+/// the normalized point `Ĥ` is the point and a trailing 1) and weights, in
+/// its own orientation; borrowed from a [`SmallPatch`], owned from a net.
+struct Split<'a> {
     m: usize,
     n: usize,
-    hat: Vec<Vec<Small>>,
-    weight: Vec<Small>,
+    dim: usize,
+    coords: Cow<'a, [Small]>,
+    weight: Cow<'a, [Small]>,
 }
 
-impl Split {
-    fn new(net: &Net<BigRational>) -> Option<Split> {
+impl Split<'_> {
+    fn new(net: &Net<BigRational>) -> Option<Split<'static>> {
         let (m, n) = (net.len() - 1, net[0].len() - 1);
-        let mut hat = Vec::with_capacity((m + 1) * (n + 1));
-        let mut weight = Vec::with_capacity(hat.capacity());
+        let dim = net[0][0].coords.len() - 1;
+        let mut coords = Vec::with_capacity((m + 1) * (n + 1) * dim);
+        let mut weight = Vec::with_capacity((m + 1) * (n + 1));
         for h in net.iter().flatten() {
             let w = Small::of(h.weight())?;
             let inv = w.recip_positive();
-            let coords = h.coords[..h.coords.len() - 1]
-                .iter()
-                .map(|c| Small::of(c)?.mul(inv))
-                .chain(std::iter::once(Some(Small::ONE)))
-                .collect::<Option<Vec<Small>>>()?;
-            hat.push(coords);
+            for c in &h.coords[..dim] {
+                coords.push(Small::of(c)?.mul(inv)?);
+            }
             weight.push(w);
         }
-        Some(Split { m, n, hat, weight })
+        Some(Split {
+            m,
+            n,
+            dim,
+            coords: Cow::Owned(coords),
+            weight: Cow::Owned(weight),
+        })
+    }
+
+    /// The Cartesian coordinates of the point of row-major index `k`.
+    fn point(&self, k: usize) -> &[Small] {
+        &self.coords[k * self.dim..(k + 1) * self.dim]
     }
 
     /// Row-major index, in this net, of position (i, j) of its view under
@@ -145,8 +181,10 @@ impl Split {
 
     /// The normalized points of the view, row by row.
     fn points(&self, sym: Symmetry, dims: (usize, usize)) -> impl Iterator<Item = Small> + '_ {
-        positions(dims)
-            .flat_map(move |(i, j)| self.hat[self.source(sym, dims, i, j)].iter().copied())
+        positions(dims).flat_map(move |(i, j)| {
+            let x = self.point(self.source(sym, dims, i, j));
+            x.iter().copied().chain(std::iter::once(Small::ONE))
+        })
     }
 
     /// The weight invariants of the view, `I_{i,j} = (ω_{i,j}/ω_{0,0}) A^i B^j`
@@ -223,16 +261,17 @@ fn split_key_text(s: &Split, curve: bool) -> Option<String> {
 /// The text of [`CanonicalKey::text`](super::CanonicalKey::text) from the chosen view.
 fn text(curve: bool, dims: (usize, usize), s: &Split, sym: Symmetry, inv: &[Small]) -> String {
     let mut out = super::text_head(curve, dims);
+    // Room for the usual short numbers: one growth, not several.
+    out.reserve(8 * (s.coords.len() + s.weight.len()) + 4 * inv.len());
     for (k, (i, j)) in positions(dims).enumerate() {
         if k > 0 {
             out.push(';');
         }
-        for (c, x) in s.hat[s.source(sym, dims, i, j)].iter().enumerate() {
-            if c > 0 {
-                out.push(',');
-            }
+        for x in s.point(s.source(sym, dims, i, j)) {
             x.write(&mut out);
+            out.push(',');
         }
+        out.push('1');
     }
     out.push_str(";I=");
     for (k, x) in inv.iter().enumerate() {
@@ -253,16 +292,12 @@ fn rows<T: Clone>(v: &[T], cols: usize) -> Vec<Vec<T>> {
 /// `x mod p` for a machine fraction, or `None` when `p` divides its
 /// denominator (`p = 2⁶¹ − 1`, as [`Fp::from_rational_checked`]).
 fn mod_p(x: Small) -> Option<Fp> {
-    let reduce = |v: i128| {
-        let r = Fp::new((v.unsigned_abs() % u128::from(MODULUS)) as u64);
-        if v < 0 {
-            -r
-        } else {
-            r
-        }
-    };
-    let q = reduce(x.q);
-    (!q.is_zero()).then(|| reduce(x.p) / q)
+    let p = Fp::from_i128(x.p);
+    if x.q == 1 {
+        return Some(p);
+    }
+    let q = Fp::from_i128(x.q);
+    (!q.is_zero()).then(|| p / q)
 }
 
 /// Bits of a machine fraction as [`limits::bits`](crate::limits::bits)
@@ -428,17 +463,9 @@ impl SmallPatch {
         let split = || Split {
             m: self.shape.0,
             n: self.shape.1,
-            hat: self
-                .coords
-                .chunks_exact(self.dim)
-                .map(|x| {
-                    x.iter()
-                        .copied()
-                        .chain(std::iter::once(Small::ONE))
-                        .collect()
-                })
-                .collect(),
-            weight: self.weights.clone(),
+            dim: self.dim,
+            coords: Cow::Borrowed(&self.coords),
+            weight: Cow::Borrowed(&self.weights),
         };
         match self
             .certified
