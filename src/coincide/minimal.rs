@@ -499,20 +499,21 @@ fn coprime_in(comps: &[Vec<Vec<Fp>>], deg: usize, spec: impl Fn(&[Vec<Fp>]) -> U
 }
 
 fn specialize_v(grid: &[Vec<Fp>], v0: Fp) -> UPoly<Fp> {
-    UPoly::new(
-        grid.iter()
-            .map(|row| UPoly::new(row.clone()).eval(&v0))
-            .collect(),
-    )
+    UPoly::new(grid.iter().map(|row| horner(row.iter(), v0)).collect())
 }
 
 fn specialize_u(grid: &[Vec<Fp>], u0: Fp) -> UPoly<Fp> {
     let n = grid.first().map_or(0, Vec::len);
     UPoly::new(
         (0..n)
-            .map(|q| UPoly::new(grid.iter().map(|r| r[q]).collect()).eval(&u0))
+            .map(|q| horner(grid.iter().map(|r| &r[q]), u0))
             .collect(),
     )
+}
+
+/// `Σ_k c_k x^k` for the coefficients `c_0, c_1, …` (Horner's rule).
+fn horner<'a>(coeffs: impl DoubleEndedIterator<Item = &'a Fp>, x: Fp) -> Fp {
+    coeffs.rev().fold(Fp::zero(), |acc, &c| acc * x + c)
 }
 
 /// Multiply every homogeneous component of `r` (bidegree (m, n)) by the

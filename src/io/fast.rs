@@ -233,7 +233,11 @@ impl Cursor<'_> {
     /// Nested non-empty arrays of numbers, every array at one depth of the
     /// same length, at most 3 deep.
     fn grid(&mut self) -> Option<Grid> {
-        let mut g = Grid::default();
+        let mut g = Grid {
+            // A bicubic's points in 3D: one allocation, no regrowth.
+            numbers: Vec::with_capacity(64),
+            lens: Vec::with_capacity(3),
+        };
         self.array(&mut g, 0)?;
         Some(g)
     }

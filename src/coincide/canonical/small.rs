@@ -427,7 +427,12 @@ impl SmallPatch {
                 Some(HPoint { coords })
             })
             .collect::<Option<Vec<_>>>()?;
-        Some(rows(&points, cols))
+        let mut points = points.into_iter();
+        Some(
+            (0..=self.shape.0)
+                .map(|_| points.by_ref().take(cols).collect())
+                .collect(),
+        )
     }
 
     /// The same patch over `BigRational`.
