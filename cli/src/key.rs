@@ -73,7 +73,9 @@ fn keys(a: &Args) -> Result<(), Error> {
             let index = a.first_index + (first + k) as u64;
             let line = match text {
                 None => format!("{{\"index\":{index},\"key\":\"{digest}\"}}"),
-                Some(t) => json!({"index": index, "key": digest.to_string(), "text": t}).to_string(),
+                Some(t) => {
+                    json!({"index": index, "key": digest.to_string(), "text": t}).to_string()
+                }
             };
             out.line(&line);
         }

@@ -29,7 +29,9 @@ use crate::algebra::modp::Fp;
 use crate::algebra::scalar::{Field, Ordered, Scalar, Tolerance};
 use crate::algebra::upoly::{BPoly, UPoly};
 use crate::algebra::RealAlgebraic;
-use crate::bernstein::{binomial_rows, bernstein_to_power_with, power_to_bernstein, reduce_elevated};
+use crate::bernstein::{
+    bernstein_to_power_with, binomial_rows, power_to_bernstein, reduce_elevated,
+};
 use crate::coincide::coprime::coprime_by_intervals;
 use crate::curve::RationalCurve;
 use crate::error::Error;

@@ -65,11 +65,33 @@ impl Small {
 
     /// The product, reduced by cross gcds; `None` on overflow.
     fn mul(self, o: Small) -> Option<Small> {
+        if let Some(product) = self.mul_words(o) {
+            return Some(product);
+        }
         let g1 = gcd_u128(self.p.unsigned_abs(), o.q.unsigned_abs()) as i128;
         let g2 = gcd_u128(o.p.unsigned_abs(), self.q.unsigned_abs()) as i128;
         Some(Small {
             p: div_exact(self.p, g1).checked_mul(div_exact(o.p, g2))?,
             q: div_exact(self.q, g2).checked_mul(div_exact(o.q, g1))?,
+        })
+    }
+
+    /// [`mul`](Small::mul) when all four integers fit 64-bit words (the
+    /// common case): gcds and quotients on words, and products of two words
+    /// cannot overflow `i128`. `None` when they do not fit.
+    fn mul_words(self, o: Small) -> Option<Small> {
+        let word = |v: i128| i64::try_from(v).ok();
+        let (a, b, c, d) = (word(self.p)?, word(self.q)?, word(o.p)?, word(o.q)?);
+        let gcd =
+            |x: i64, y: i64| gcd_u128(x.unsigned_abs().into(), y.unsigned_abs().into()) as i64;
+        let (g1, g2) = (gcd(a, d), gcd(c, b));
+        // A gcd of 2⁶³ (both i64::MIN) does not fit: the general path.
+        if g1 <= 0 || g2 <= 0 {
+            return None;
+        }
+        Some(Small {
+            p: i128::from(a / g1) * i128::from(c / g2),
+            q: i128::from(b / g2) * i128::from(d / g1),
         })
     }
 
@@ -479,6 +501,89 @@ impl SmallPatch {
         {
             Some(text) => Ok(text),
             None => super::canonical_text(&self.to_patch()?),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::coincide::canonical::canonical_key;
+    use proptest::prelude::*;
+
+    fn big(x: Small) -> BigRational {
+        BigRational::new(x.p.into(), x.q.into())
+    }
+
+    /// Integers of every size up to 2¹²⁶: on words, at the word limits,
+    /// and beyond them.
+    fn integer() -> impl Strategy<Value = i128> {
+        prop_oneof![
+            -1000i128..1000,
+            any::<i64>().prop_map(i128::from),
+            Just(i128::from(i64::MIN)),
+            Just(i128::from(i64::MAX) + 1),
+            (any::<i64>(), 1i128..1 << 62).prop_map(|(a, b)| i128::from(a) * b),
+        ]
+    }
+
+    fn fraction() -> impl Strategy<Value = Small> {
+        (integer(), integer()).prop_filter_map("q > 0", |(p, q)| {
+            Small::reduced((p, q.checked_abs()?.max(1)))
+        })
+    }
+
+    /// A bicubic or curve of small machine fractions, positive weights.
+    fn small_patch() -> impl Strategy<Value = SmallPatch> {
+        let number = (-30i128..30, 1i128..12);
+        (any::<bool>(), 1usize..4, 1usize..4, 1usize..4).prop_flat_map(move |(curve, m, n, dim)| {
+            let n = if curve { 0 } else { n };
+            let count = (m + 1) * (n + 1);
+            (
+                prop::collection::vec(number.clone(), count * dim),
+                prop::collection::vec((1i128..30, 1i128..12), count),
+            )
+                .prop_filter_map("a patch", move |(coords, weights)| {
+                    SmallPatch::new(curve, (m, n), dim, &coords, &weights)
+                })
+        })
+    }
+
+    proptest! {
+        #[test]
+        fn products_are_exact_or_refused_when_they_leave_128_bits(a in fraction(), b in fraction()) {
+            let exact = big(a) * big(b);
+            match a.mul(b) {
+                Some(x) => prop_assert_eq!(big(x), exact),
+                None => prop_assert!(Small::of(&exact).is_none()),
+            }
+        }
+
+        #[test]
+        fn certified_key_texts_are_those_of_the_general_path(mut s in small_patch()) {
+            if s.certify() {
+                let patch = s.to_patch().unwrap();
+                prop_assert_eq!(s.key_text().unwrap(), canonical_key(&patch).unwrap().text());
+            }
+        }
+    }
+
+    #[test]
+    fn integers_are_written_as_the_formatter_writes_them() {
+        for v in [
+            0,
+            7,
+            -7,
+            10,
+            i128::from(u64::MAX),
+            -i128::from(u64::MAX),
+            i128::from(u64::MAX) + 1,
+            i128::MIN,
+            i128::MAX,
+        ] {
+            let mut out = String::new();
+            push_int(&mut out, v);
+            assert_eq!(out, v.to_string());
         }
     }
 }
