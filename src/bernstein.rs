@@ -72,20 +72,27 @@ pub fn bernstein_to_power<T: Scalar>(b: &[T]) -> Vec<T> {
 /// (`c = binomial_rows(b.len() − 1)`), for callers that convert many
 /// sequences of one length.
 pub(crate) fn bernstein_to_power_with<T: Scalar>(b: &[T], c: &[Vec<T>]) -> Vec<T> {
+    let mut out = Vec::with_capacity(b.len());
+    bernstein_to_power_into(b, c, &mut out);
+    out
+}
+
+/// [`bernstein_to_power_with`] written into `out` (cleared first), so that
+/// a caller converting many sequences reuses one buffer.
+pub(crate) fn bernstein_to_power_into<T: Scalar>(b: &[T], c: &[Vec<T>], out: &mut Vec<T>) {
     let n = b.len().saturating_sub(1);
-    (0..b.len())
-        .map(|k| {
-            let sum = (0..=k).fold(T::zero(), |acc, i| {
-                let term = c[k][i].clone() * &b[i];
-                if (k - i) % 2 == 0 {
-                    acc + term
-                } else {
-                    acc - term
-                }
-            });
-            c[n][k].clone() * &sum
-        })
-        .collect()
+    out.clear();
+    out.extend((0..b.len()).map(|k| {
+        let sum = (0..=k).fold(T::zero(), |acc, i| {
+            let term = c[k][i].clone() * &b[i];
+            if (k - i) % 2 == 0 {
+                acc + term
+            } else {
+                acc - term
+            }
+        });
+        c[n][k].clone() * &sum
+    }));
 }
 
 /// Pascal's triangle `C(k, i)` for `k ≤ n` as scalars: `O(n²)` integer

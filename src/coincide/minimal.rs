@@ -30,7 +30,8 @@ use crate::algebra::scalar::{Field, Ordered, Scalar, Tolerance};
 use crate::algebra::upoly::{BPoly, UPoly};
 use crate::algebra::RealAlgebraic;
 use crate::bernstein::{
-    bernstein_to_power_with, binomial_rows, power_to_bernstein, reduce_elevated,
+    bernstein_to_power_into, bernstein_to_power_with, binomial_rows, power_to_bernstein,
+    reduce_elevated,
 };
 use crate::coincide::coprime::coprime_by_intervals;
 use crate::curve::RationalCurve;
@@ -48,40 +49,36 @@ pub(crate) fn curve_net<T: Scalar>(c: &RationalCurve<T>) -> Net<T> {
     c.ctrl().iter().map(|p| vec![p.clone()]).collect()
 }
 
-/// Apply `on_row` to every row and then `on_col` to every column of a grid.
-fn both_directions<T: Clone>(
-    grid: &[Vec<T>],
-    on_row: impl Fn(&[T]) -> Vec<T>,
-    on_col: impl Fn(&[T]) -> Vec<T>,
-) -> Vec<Vec<T>> {
-    let rows: Vec<Vec<T>> = grid.iter().map(|r| on_row(r)).collect();
-    let cols = rows.first().map_or(0, Vec::len);
-    let transposed: Vec<Vec<T>> = (0..cols)
-        .map(|j| on_col(&rows.iter().map(|r| r[j].clone()).collect::<Vec<_>>()))
-        .collect();
-    (0..transposed.first().map_or(0, Vec::len))
-        .map(|i| transposed.iter().map(|c| c[i].clone()).collect())
-        .collect()
-}
-
 /// The power-basis grids of the `d + 1` homogeneous components:
 /// `out[c][p][q]` is the coefficient of `u^p v^q` in `F_c`.
 pub(crate) fn power_components<T: Scalar>(net: &Net<T>) -> Vec<Vec<Vec<T>>> {
-    let len = net[0][0].coords.len();
-    // Pascal's triangles of the row length (v) and column length (u), once.
-    let by_row = binomial_rows::<T>(net[0].len() - 1);
-    let by_col = binomial_rows::<T>(net.len() - 1);
-    (0..len)
+    let (m, n) = (net.len() - 1, net[0].len() - 1);
+    // Pascal's triangles of the row (v) and column (u) degrees, once.
+    let by_row = binomial_rows::<T>(n);
+    let by_col = (m != n).then(|| binomial_rows::<T>(m));
+    let by_col = by_col.as_deref().unwrap_or(&by_row);
+    // One line (row or column) and its conversion at a time, in two reused buffers.
+    let cap = m.max(n) + 1;
+    let (mut column, mut power) = (Vec::with_capacity(cap), Vec::with_capacity(cap));
+    (0..net[0][0].coords.len())
         .map(|c| {
-            let grid: Vec<Vec<T>> = net
+            let mut grid: Vec<Vec<T>> = net
                 .iter()
-                .map(|row| row.iter().map(|h| h.coords[c].clone()).collect())
+                .map(|row| {
+                    column.clear();
+                    column.extend(row.iter().map(|h| h.coords[c].clone()));
+                    bernstein_to_power_with(&column, &by_row)
+                })
                 .collect();
-            both_directions(
-                &grid,
-                |r| bernstein_to_power_with(r, &by_row),
-                |c| bernstein_to_power_with(c, &by_col),
-            )
+            for j in 0..=n {
+                column.clear();
+                column.extend(grid.iter().map(|r| r[j].clone()));
+                bernstein_to_power_into(&column, by_col, &mut power);
+                for (r, x) in grid.iter_mut().zip(power.drain(..)) {
+                    r[j] = x;
+                }
+            }
+            grid
         })
         .collect()
 }

@@ -105,6 +105,10 @@ impl Small {
 
     /// Exact order by cross products; `None` on overflow.
     fn cmp(self, o: Small) -> Option<Ordering> {
+        if self.q == o.q {
+            // One denominator (q > 0): the numerators decide.
+            return Some(self.p.cmp(&o.p));
+        }
         Some(self.p.checked_mul(o.q)?.cmp(&o.p.checked_mul(self.q)?))
     }
 
