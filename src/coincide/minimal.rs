@@ -655,6 +655,7 @@ fn check_finite_points<T: Scalar>(net: &Net<T>) -> Result<(), Error> {
 mod tests {
     use super::*;
     use crate::algebra::scalar::ratio;
+    use crate::bernstein::bernstein_to_power;
     use crate::samples::rect_1x2 as sample;
     type Q = BigRational;
 
