@@ -65,28 +65,41 @@ pub fn bernstein_all<T: Scalar>(n: usize, t: &T) -> Vec<T> {
 /// assert_eq!(bernstein_to_power(&[q(1), q(2), q(4)]), vec![q(1), q(2), q(1)]);
 /// ```
 pub fn bernstein_to_power<T: Scalar>(b: &[T]) -> Vec<T> {
+    bernstein_to_power_with(b, &binomial_rows(b.len().saturating_sub(1)))
+}
+
+/// [`bernstein_to_power`] with Pascal's triangle of its degree given
+/// (`c = binomial_rows(b.len() − 1)`), for callers that convert many
+/// sequences of one length.
+pub(crate) fn bernstein_to_power_with<T: Scalar>(b: &[T], c: &[Vec<T>]) -> Vec<T> {
+    let mut out = Vec::with_capacity(b.len());
+    bernstein_to_power_into(b, c, &mut out);
+    out
+}
+
+/// [`bernstein_to_power_with`] written into `out` (cleared first), so that
+/// a caller converting many sequences reuses one buffer.
+pub(crate) fn bernstein_to_power_into<T: Scalar>(b: &[T], c: &[Vec<T>], out: &mut Vec<T>) {
     let n = b.len().saturating_sub(1);
-    let c = binomial_rows::<T>(n);
-    (0..b.len())
-        .map(|k| {
-            let sum = (0..=k).fold(T::zero(), |acc, i| {
-                let term = c[k][i].clone() * &b[i];
-                if (k - i) % 2 == 0 {
-                    acc + term
-                } else {
-                    acc - term
-                }
-            });
-            c[n][k].clone() * &sum
-        })
-        .collect()
+    out.clear();
+    out.extend((0..b.len()).map(|k| {
+        let sum = (0..=k).fold(T::zero(), |acc, i| {
+            let term = c[k][i].clone() * &b[i];
+            if (k - i) % 2 == 0 {
+                acc + term
+            } else {
+                acc - term
+            }
+        });
+        c[n][k].clone() * &sum
+    }));
 }
 
 /// Pascal's triangle `C(k, i)` for `k ≤ n` as scalars: `O(n²)` integer
 /// additions (`C(k, i) = C(k−1, i−1) + C(k−1, i)`) for a whole change of
 /// basis, instead of a product and a division per coefficient. The values
 /// are those of [`binomial_scalar`] (exact integers, each converted once).
-fn binomial_rows<T: Scalar>(n: usize) -> Vec<Vec<T>> {
+pub(crate) fn binomial_rows<T: Scalar>(n: usize) -> Vec<Vec<T>> {
     let mut ints: Vec<Vec<Option<u128>>> = vec![vec![Some(1)]];
     for k in 1..=n {
         let prev = &ints[k - 1];

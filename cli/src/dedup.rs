@@ -66,7 +66,7 @@ impl Witnesses {
     ) -> Result<(), Error> {
         for (k, (r, &id)) in records.iter().zip(ids).enumerate() {
             if d.representative(id) == first + k {
-                self.reps.push(r.text().into_boxed_str());
+                self.reps.push(r.text().into_owned().into_boxed_str());
             }
         }
         let read: Vec<Result<Member, Error>> = records.par_iter().map(Member::read).collect();

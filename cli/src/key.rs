@@ -67,14 +67,15 @@ fn keys(a: &Args) -> Result<(), Error> {
     let n = for_each_chunk(reader, CHUNK, |first, records| {
         let lines = key_chunk("key", first, &records, &mut cache, |p| {
             let text = member_text(&p)?;
-            let digest = KeyDigest::of_text(&text).to_string();
-            Ok((digest, a.text.then_some(text)))
+            Ok((KeyDigest::of_text(&text), a.text.then_some(text)))
         })?;
         for (k, (digest, text)) in lines.into_iter().enumerate() {
             let index = a.first_index + (first + k) as u64;
             let line = match text {
                 None => format!("{{\"index\":{index},\"key\":\"{digest}\"}}"),
-                Some(t) => json!({"index": index, "key": digest, "text": t}).to_string(),
+                Some(t) => {
+                    json!({"index": index, "key": digest.to_string(), "text": t}).to_string()
+                }
             };
             out.line(&line);
         }

@@ -180,6 +180,10 @@ pub(crate) fn gcd_u128(x: u128, y: u128) -> u128 {
     if x == 0 || y == 0 {
         return x | y;
     }
+    if x == 1 || y == 1 {
+        // An integer denominator: the binary algorithm would take a step per bit.
+        return 1;
+    }
     if let (Ok(a), Ok(b)) = (u64::try_from(x), u64::try_from(y)) {
         return u128::from(binary_gcd(a, b));
     }

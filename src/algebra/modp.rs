@@ -35,6 +35,22 @@ impl Fp {
         Fp(x % MODULUS)
     }
 
+    /// `x mod p`, by folding: `2⁶¹ ≡ 1 (mod p)`, so the bits above 61 are
+    /// added onto the low ones (no division).
+    pub fn from_i128(x: i128) -> Fp {
+        let fold = |v: u128| (v & u128::from(MODULUS)) + (v >> 61);
+        // |x| < 2¹²⁷ → below 2⁶⁷ → below 2⁶² after two folds.
+        let mut r = fold(fold(x.unsigned_abs())) as u64;
+        while r >= MODULUS {
+            r -= MODULUS;
+        }
+        if x < 0 {
+            -Fp(r)
+        } else {
+            Fp(r)
+        }
+    }
+
     /// The representative in `[0, p)`.
     pub fn value(self) -> u64 {
         self.0
@@ -54,22 +70,24 @@ impl Fp {
         Some(num / den)
     }
 
-    /// `self⁻¹` by the extended Euclidean algorithm (`None` for 0).
+    /// `self⁻¹` by the extended Euclidean algorithm (`None` for 0), on
+    /// 64-bit words: the remainders stay below `p < 2⁶¹` and the cofactors
+    /// `|t| ≤ p` (Knuth, TAOCP vol. 2, §4.5.2), so nothing overflows `i64`.
     fn inverse(self) -> Option<Fp> {
-        let (mut r0, mut r1) = (MODULUS as i128, self.0 as i128);
-        let (mut t0, mut t1) = (0i128, 1i128);
+        let (mut r0, mut r1) = (MODULUS as i64, self.0 as i64);
+        let (mut t0, mut t1) = (0i64, 1i64);
         while r1 != 0 {
             let q = r0 / r1;
             (r0, r1) = (r1, r0 - q * r1);
             (t0, t1) = (t1, t0 - q * t1);
         }
-        (r0 == 1).then(|| Fp(t0.rem_euclid(MODULUS as i128) as u64))
+        (r0 == 1).then(|| Fp(t0.rem_euclid(MODULUS as i64) as u64))
     }
 }
 
 fn reduce(n: &BigInt) -> Fp {
     if let Some(small) = n.to_i128() {
-        return Fp(small.rem_euclid(MODULUS as i128) as u64);
+        return Fp::from_i128(small);
     }
     let r = n.mod_floor(&BigInt::from(MODULUS));
     Fp(r.to_u64().expect("a residue below p fits in u64"))
@@ -188,5 +206,24 @@ mod tests {
         assert_eq!(-Fp::new(0), Fp::new(0));
         let big = BigRational::from_integer(BigInt::from(MODULUS) * 4);
         assert_eq!(Fp::from_rational_checked(&big.recip()), None);
+    }
+
+    #[test]
+    fn inverses_and_folded_residues_agree_with_division() {
+        let p = i128::from(MODULUS);
+        let mut x: i128 = 0x1234_5678_9abc_def0_1122_3344;
+        for k in 0..2000i128 {
+            // A walk over all magnitudes, both signs, and the edges.
+            x = x.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(k) >> (k % 120);
+            for v in [x, -x, p * k, p * k - 1, i128::MAX - k, i128::MIN + 1 + k] {
+                assert_eq!(Fp::from_i128(v).value() as i128, v.rem_euclid(p), "{v}");
+            }
+            let a = Fp::from_i128(x);
+            match a.inverse() {
+                None => assert!(a.is_zero()),
+                Some(inv) => assert_eq!(a * inv, Fp::new(1), "{x}"),
+            }
+        }
+        assert_eq!(Fp::new(MODULUS - 1).inverse(), Some(Fp::new(MODULUS - 1)));
     }
 }

@@ -137,8 +137,10 @@ impl<T: Field> UPoly<T> {
             return Some((Self::zero(), self.clone()));
         }
         let mut q = vec![T::zero(); r.len() - dd];
+        // One inversion, then products (exact fields: the same quotients).
+        let inv = lead.recip();
         for k in (0..q.len()).rev() {
-            let c = r[k + dd].clone() / lead;
+            let c = r[k + dd].clone() * &inv;
             for (i, di) in d.coeffs.iter().enumerate() {
                 r[k + i] = r[k + i].clone() - &(c.clone() * di);
             }

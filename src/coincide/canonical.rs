@@ -374,9 +374,15 @@ impl KeyDigest {
 impl fmt::Display for KeyDigest {
     /// `eb1:` and the digest in lowercase hex.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        const HEX: &[u8; 16] = b"0123456789abcdef";
+        let mut hex = String::with_capacity(64);
+        for b in self.0 {
+            hex.push(char::from(HEX[usize::from(b >> 4)]));
+            hex.push(char::from(HEX[usize::from(b & 15)]));
+        }
         f.write_str(KEY_VERSION)?;
         f.write_str(":")?;
-        self.0.iter().try_for_each(|b| write!(f, "{b:02x}"))
+        f.write_str(&hex)
     }
 }
 

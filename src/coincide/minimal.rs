@@ -29,7 +29,10 @@ use crate::algebra::modp::Fp;
 use crate::algebra::scalar::{Field, Ordered, Scalar, Tolerance};
 use crate::algebra::upoly::{BPoly, UPoly};
 use crate::algebra::RealAlgebraic;
-use crate::bernstein::{bernstein_to_power, power_to_bernstein, reduce_elevated};
+use crate::bernstein::{
+    bernstein_to_power_into, bernstein_to_power_with, binomial_rows, power_to_bernstein,
+    reduce_elevated,
+};
 use crate::coincide::coprime::coprime_by_intervals;
 use crate::curve::RationalCurve;
 use crate::error::Error;
@@ -46,29 +49,36 @@ pub(crate) fn curve_net<T: Scalar>(c: &RationalCurve<T>) -> Net<T> {
     c.ctrl().iter().map(|p| vec![p.clone()]).collect()
 }
 
-/// Apply `f` to every row and then to every column of a grid.
-fn both_directions<T: Clone>(grid: &[Vec<T>], f: impl Fn(&[T]) -> Vec<T>) -> Vec<Vec<T>> {
-    let rows: Vec<Vec<T>> = grid.iter().map(|r| f(r)).collect();
-    let cols = rows.first().map_or(0, Vec::len);
-    let transposed: Vec<Vec<T>> = (0..cols)
-        .map(|j| f(&rows.iter().map(|r| r[j].clone()).collect::<Vec<_>>()))
-        .collect();
-    (0..transposed.first().map_or(0, Vec::len))
-        .map(|i| transposed.iter().map(|c| c[i].clone()).collect())
-        .collect()
-}
-
 /// The power-basis grids of the `d + 1` homogeneous components:
 /// `out[c][p][q]` is the coefficient of `u^p v^q` in `F_c`.
 pub(crate) fn power_components<T: Scalar>(net: &Net<T>) -> Vec<Vec<Vec<T>>> {
-    let len = net[0][0].coords.len();
-    (0..len)
+    let (m, n) = (net.len() - 1, net[0].len() - 1);
+    // Pascal's triangles of the row (v) and column (u) degrees, once.
+    let by_row = binomial_rows::<T>(n);
+    let by_col = (m != n).then(|| binomial_rows::<T>(m));
+    let by_col = by_col.as_deref().unwrap_or(&by_row);
+    // One line (row or column) and its conversion at a time, in two reused buffers.
+    let cap = m.max(n) + 1;
+    let (mut column, mut power) = (Vec::with_capacity(cap), Vec::with_capacity(cap));
+    (0..net[0][0].coords.len())
         .map(|c| {
-            let grid: Vec<Vec<T>> = net
+            let mut grid: Vec<Vec<T>> = net
                 .iter()
-                .map(|row| row.iter().map(|h| h.coords[c].clone()).collect())
+                .map(|row| {
+                    column.clear();
+                    column.extend(row.iter().map(|h| h.coords[c].clone()));
+                    bernstein_to_power_with(&column, &by_row)
+                })
                 .collect();
-            both_directions(&grid, bernstein_to_power)
+            for j in 0..=n {
+                column.clear();
+                column.extend(grid.iter().map(|r| r[j].clone()));
+                bernstein_to_power_into(&column, by_col, &mut power);
+                for (r, x) in grid.iter_mut().zip(power.drain(..)) {
+                    r[j] = x;
+                }
+            }
+            grid
         })
         .collect()
 }
@@ -488,20 +498,21 @@ fn coprime_in(comps: &[Vec<Vec<Fp>>], deg: usize, spec: impl Fn(&[Vec<Fp>]) -> U
 }
 
 fn specialize_v(grid: &[Vec<Fp>], v0: Fp) -> UPoly<Fp> {
-    UPoly::new(
-        grid.iter()
-            .map(|row| UPoly::new(row.clone()).eval(&v0))
-            .collect(),
-    )
+    UPoly::new(grid.iter().map(|row| horner(row.iter(), v0)).collect())
 }
 
 fn specialize_u(grid: &[Vec<Fp>], u0: Fp) -> UPoly<Fp> {
     let n = grid.first().map_or(0, Vec::len);
     UPoly::new(
         (0..n)
-            .map(|q| UPoly::new(grid.iter().map(|r| r[q]).collect()).eval(&u0))
+            .map(|q| horner(grid.iter().map(|r| &r[q]), u0))
             .collect(),
     )
+}
+
+/// `Σ_k c_k x^k` for the coefficients `c_0, c_1, …` (Horner's rule).
+fn horner<'a>(coeffs: impl DoubleEndedIterator<Item = &'a Fp>, x: Fp) -> Fp {
+    coeffs.rev().fold(Fp::zero(), |acc, &c| acc * x + c)
 }
 
 /// Multiply every homogeneous component of `r` (bidegree (m, n)) by the
@@ -644,6 +655,7 @@ fn check_finite_points<T: Scalar>(net: &Net<T>) -> Result<(), Error> {
 mod tests {
     use super::*;
     use crate::algebra::scalar::ratio;
+    use crate::bernstein::bernstein_to_power;
     use crate::samples::rect_1x2 as sample;
     type Q = BigRational;
 

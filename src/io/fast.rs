@@ -233,7 +233,11 @@ impl Cursor<'_> {
     /// Nested non-empty arrays of numbers, every array at one depth of the
     /// same length, at most 3 deep.
     fn grid(&mut self) -> Option<Grid> {
-        let mut g = Grid::default();
+        let mut g = Grid {
+            // A bicubic's points in 3D: one allocation, no regrowth.
+            numbers: Vec::with_capacity(64),
+            lens: Vec::with_capacity(3),
+        };
         self.array(&mut g, 0)?;
         Some(g)
     }
@@ -336,13 +340,29 @@ impl Cursor<'_> {
             }
         }
         let mut mantissa: i128 = 0;
+        // Up to 18 digits on a 64-bit word (below 10¹⁸ < 2⁶³), the rest, if
+        // any, on 128 bits with overflow checks.
+        let mut word: u64 = 0;
+        let mut in_word = 0;
         for &d in self.bytes[start..self.at]
             .iter()
             .filter(|b| b.is_ascii_digit())
         {
+            if in_word < 18 {
+                word = 10 * word + u64::from(d - b'0');
+                in_word += 1;
+                continue;
+            }
+            if in_word == 18 {
+                mantissa = i128::from(word);
+                in_word += 1;
+            }
             mantissa = mantissa
                 .checked_mul(10)?
                 .checked_add(i128::from(d - b'0'))?;
+        }
+        if in_word <= 18 {
+            mantissa = i128::from(word);
         }
         let scale = 10i128.checked_pow(u32::try_from(frac).ok()?)?;
         Some((if negative { -mantissa } else { mantissa }, scale))

@@ -17,6 +17,7 @@ use crate::patch::Patch;
 use num_rational::BigRational;
 use serde::de::{DeserializeSeed, Error as _, SeqAccess, Visitor};
 use serde_json::Value;
+use std::borrow::Cow;
 use std::cell::RefCell;
 use std::fmt;
 use std::io::{BufRead, Read};
@@ -76,11 +77,11 @@ impl Record {
         }
     }
 
-    /// The record as compact JSON text (a line as it was read).
-    pub fn text(&self) -> String {
+    /// The record as compact JSON text (a line as it was read, borrowed).
+    pub fn text(&self) -> Cow<'_, str> {
         match self {
-            Record::Line(_, text) => text.clone(),
-            Record::Element(_, v) => v.to_string(),
+            Record::Line(_, text) => Cow::Borrowed(text),
+            Record::Element(_, v) => Cow::Owned(v.to_string()),
         }
     }
 }
@@ -119,6 +120,14 @@ pub fn for_each_chunk<R: BufRead>(
 
 fn read_error(e: std::io::Error) -> Error {
     Error::Io(format!("cannot read the input: {e}"))
+}
+
+/// The error `BufRead::read_line` gives for bytes that are not UTF-8.
+fn invalid_utf8() -> std::io::Error {
+    std::io::Error::new(
+        std::io::ErrorKind::InvalidData,
+        "stream did not contain valid UTF-8",
+    )
 }
 
 /// Skip leading whitespace; the first other byte, left unread.
@@ -188,11 +197,17 @@ impl<'a> Chunker<'a> {
 fn read_lines<R: BufRead>(mut input: R, chunk: usize, f: Sink<'_>) -> Result<usize, Error> {
     let mut line_no = 0;
     let mut out = Chunker::new(chunk, f);
+    // One buffer for the bytes of every line; each line then gets one
+    // allocation of its own length (not a doubling per line).
+    let mut bytes = Vec::new();
     loop {
-        let mut line = String::new();
-        if input.read_line(&mut line).map_err(read_error)? == 0 {
+        bytes.clear();
+        if input.read_until(b'\n', &mut bytes).map_err(read_error)? == 0 {
             break;
         }
+        let line = std::str::from_utf8(&bytes)
+            .map_err(|_| read_error(invalid_utf8()))?
+            .to_owned();
         line_no += 1;
         if line.trim().is_empty() {
             continue;

@@ -11,7 +11,7 @@
 //! ((b/g₂)(d/g₁))` with `g₁ = gcd(a, d)`, `g₂ = gcd(c, b)`).
 
 use crate::algebra::gcd::gcd_u128;
-use crate::algebra::modp::{Fp, MODULUS};
+use crate::algebra::modp::Fp;
 use crate::coincide::minimal::{certified_image, Net};
 use crate::coincide::Symmetry;
 use crate::curve::RationalCurve;
@@ -22,6 +22,7 @@ use crate::rect::RectPatch;
 use crate::Patch;
 use num_rational::BigRational;
 use num_traits::{ToPrimitive, Zero};
+use std::borrow::Cow;
 use std::cmp::Ordering;
 
 /// A rational `p/q` in lowest terms with `q > 0`, in machine integers.
@@ -64,11 +65,33 @@ impl Small {
 
     /// The product, reduced by cross gcds; `None` on overflow.
     fn mul(self, o: Small) -> Option<Small> {
+        if let Some(product) = self.mul_words(o) {
+            return Some(product);
+        }
         let g1 = gcd_u128(self.p.unsigned_abs(), o.q.unsigned_abs()) as i128;
         let g2 = gcd_u128(o.p.unsigned_abs(), self.q.unsigned_abs()) as i128;
         Some(Small {
             p: div_exact(self.p, g1).checked_mul(div_exact(o.p, g2))?,
             q: div_exact(self.q, g2).checked_mul(div_exact(o.q, g1))?,
+        })
+    }
+
+    /// [`mul`](Small::mul) when all four integers fit 64-bit words (the
+    /// common case): gcds and quotients on words, and products of two words
+    /// cannot overflow `i128`. `None` when they do not fit.
+    fn mul_words(self, o: Small) -> Option<Small> {
+        let word = |v: i128| i64::try_from(v).ok();
+        let (a, b, c, d) = (word(self.p)?, word(self.q)?, word(o.p)?, word(o.q)?);
+        let gcd =
+            |x: i64, y: i64| gcd_u128(x.unsigned_abs().into(), y.unsigned_abs().into()) as i64;
+        let (g1, g2) = (gcd(a, d), gcd(c, b));
+        // A gcd of 2⁶³ (both i64::MIN) does not fit: the general path.
+        if g1 <= 0 || g2 <= 0 {
+            return None;
+        }
+        Some(Small {
+            p: i128::from(a / g1) * i128::from(c / g2),
+            q: i128::from(b / g2) * i128::from(d / g1),
         })
     }
 
@@ -82,17 +105,45 @@ impl Small {
 
     /// Exact order by cross products; `None` on overflow.
     fn cmp(self, o: Small) -> Option<Ordering> {
+        if self.q == o.q {
+            // One denominator (q > 0): the numerators decide.
+            return Some(self.p.cmp(&o.p));
+        }
         Some(self.p.checked_mul(o.q)?.cmp(&o.p.checked_mul(self.q)?))
     }
 
+    /// `p` or `p/q` in decimal, as `BigRational`'s text.
     fn write(self, out: &mut String) {
-        use std::fmt::Write;
-        let _ = if self.q == 1 {
-            write!(out, "{}", self.p)
-        } else {
-            write!(out, "{}/{}", self.p, self.q)
-        };
+        push_int(out, self.p);
+        if self.q != 1 {
+            out.push('/');
+            push_int(out, self.q);
+        }
     }
+}
+
+/// `v` in decimal, on 64-bit words when it fits one (the common case: the
+/// formatter's 128-bit path divides in software).
+fn push_int(out: &mut String, v: i128) {
+    let Ok(mut u) = u64::try_from(v.unsigned_abs()) else {
+        use std::fmt::Write;
+        let _ = write!(out, "{v}");
+        return;
+    };
+    if v < 0 {
+        out.push('-');
+    }
+    let mut digits = [0u8; 20];
+    let mut at = digits.len();
+    loop {
+        at -= 1;
+        digits[at] = b'0' + (u % 10) as u8;
+        u /= 10;
+        if u == 0 {
+            break;
+        }
+    }
+    out.extend(digits[at..].iter().map(|&d| char::from(d)));
 }
 
 /// Lexicographic order of two equally long sequences; `None` on overflow.
@@ -106,32 +157,43 @@ fn cmp_seq(a: impl Iterator<Item = Small>, b: impl Iterator<Item = Small>) -> Op
     Some(Ordering::Equal)
 }
 
-/// The net split into normalized points (row-major, each with its trailing
-/// 1) and weights, in its own orientation.
-struct Split {
+/// The net split into Cartesian points (row-major, `dim` numbers each;
+/// the normalized point `Ĥ` is the point and a trailing 1) and weights, in
+/// its own orientation; borrowed from a [`SmallPatch`], owned from a net.
+struct Split<'a> {
     m: usize,
     n: usize,
-    hat: Vec<Vec<Small>>,
-    weight: Vec<Small>,
+    dim: usize,
+    coords: Cow<'a, [Small]>,
+    weight: Cow<'a, [Small]>,
 }
 
-impl Split {
-    fn new(net: &Net<BigRational>) -> Option<Split> {
+impl Split<'_> {
+    fn new(net: &Net<BigRational>) -> Option<Split<'static>> {
         let (m, n) = (net.len() - 1, net[0].len() - 1);
-        let mut hat = Vec::with_capacity((m + 1) * (n + 1));
-        let mut weight = Vec::with_capacity(hat.capacity());
+        let dim = net[0][0].coords.len() - 1;
+        let mut coords = Vec::with_capacity((m + 1) * (n + 1) * dim);
+        let mut weight = Vec::with_capacity((m + 1) * (n + 1));
         for h in net.iter().flatten() {
             let w = Small::of(h.weight())?;
             let inv = w.recip_positive();
-            let coords = h.coords[..h.coords.len() - 1]
-                .iter()
-                .map(|c| Small::of(c)?.mul(inv))
-                .chain(std::iter::once(Some(Small::ONE)))
-                .collect::<Option<Vec<Small>>>()?;
-            hat.push(coords);
+            for c in &h.coords[..dim] {
+                coords.push(Small::of(c)?.mul(inv)?);
+            }
             weight.push(w);
         }
-        Some(Split { m, n, hat, weight })
+        Some(Split {
+            m,
+            n,
+            dim,
+            coords: Cow::Owned(coords),
+            weight: Cow::Owned(weight),
+        })
+    }
+
+    /// The Cartesian coordinates of the point of row-major index `k`.
+    fn point(&self, k: usize) -> &[Small] {
+        &self.coords[k * self.dim..(k + 1) * self.dim]
     }
 
     /// Row-major index, in this net, of position (i, j) of its view under
@@ -145,8 +207,10 @@ impl Split {
 
     /// The normalized points of the view, row by row.
     fn points(&self, sym: Symmetry, dims: (usize, usize)) -> impl Iterator<Item = Small> + '_ {
-        positions(dims)
-            .flat_map(move |(i, j)| self.hat[self.source(sym, dims, i, j)].iter().copied())
+        positions(dims).flat_map(move |(i, j)| {
+            let x = self.point(self.source(sym, dims, i, j));
+            x.iter().copied().chain(std::iter::once(Small::ONE))
+        })
     }
 
     /// The weight invariants of the view, `I_{i,j} = (ω_{i,j}/ω_{0,0}) A^i B^j`
@@ -223,16 +287,17 @@ fn split_key_text(s: &Split, curve: bool) -> Option<String> {
 /// The text of [`CanonicalKey::text`](super::CanonicalKey::text) from the chosen view.
 fn text(curve: bool, dims: (usize, usize), s: &Split, sym: Symmetry, inv: &[Small]) -> String {
     let mut out = super::text_head(curve, dims);
+    // Room for the usual short numbers: one growth, not several.
+    out.reserve(8 * (s.coords.len() + s.weight.len()) + 4 * inv.len());
     for (k, (i, j)) in positions(dims).enumerate() {
         if k > 0 {
             out.push(';');
         }
-        for (c, x) in s.hat[s.source(sym, dims, i, j)].iter().enumerate() {
-            if c > 0 {
-                out.push(',');
-            }
+        for x in s.point(s.source(sym, dims, i, j)) {
             x.write(&mut out);
+            out.push(',');
         }
+        out.push('1');
     }
     out.push_str(";I=");
     for (k, x) in inv.iter().enumerate() {
@@ -253,16 +318,12 @@ fn rows<T: Clone>(v: &[T], cols: usize) -> Vec<Vec<T>> {
 /// `x mod p` for a machine fraction, or `None` when `p` divides its
 /// denominator (`p = 2⁶¹ − 1`, as [`Fp::from_rational_checked`]).
 fn mod_p(x: Small) -> Option<Fp> {
-    let reduce = |v: i128| {
-        let r = Fp::new((v.unsigned_abs() % u128::from(MODULUS)) as u64);
-        if v < 0 {
-            -r
-        } else {
-            r
-        }
-    };
-    let q = reduce(x.q);
-    (!q.is_zero()).then(|| reduce(x.p) / q)
+    let p = Fp::from_i128(x.p);
+    if x.q == 1 {
+        return Some(p);
+    }
+    let q = Fp::from_i128(x.q);
+    (!q.is_zero()).then(|| p / q)
 }
 
 /// Bits of a machine fraction as [`limits::bits`](crate::limits::bits)
@@ -392,7 +453,12 @@ impl SmallPatch {
                 Some(HPoint { coords })
             })
             .collect::<Option<Vec<_>>>()?;
-        Some(rows(&points, cols))
+        let mut points = points.into_iter();
+        Some(
+            (0..=self.shape.0)
+                .map(|_| points.by_ref().take(cols).collect())
+                .collect(),
+        )
     }
 
     /// The same patch over `BigRational`.
@@ -428,17 +494,9 @@ impl SmallPatch {
         let split = || Split {
             m: self.shape.0,
             n: self.shape.1,
-            hat: self
-                .coords
-                .chunks_exact(self.dim)
-                .map(|x| {
-                    x.iter()
-                        .copied()
-                        .chain(std::iter::once(Small::ONE))
-                        .collect()
-                })
-                .collect(),
-            weight: self.weights.clone(),
+            dim: self.dim,
+            coords: Cow::Borrowed(&self.coords),
+            weight: Cow::Borrowed(&self.weights),
         };
         match self
             .certified
@@ -447,6 +505,89 @@ impl SmallPatch {
         {
             Some(text) => Ok(text),
             None => super::canonical_text(&self.to_patch()?),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::coincide::canonical::canonical_key;
+    use proptest::prelude::*;
+
+    fn big(x: Small) -> BigRational {
+        BigRational::new(x.p.into(), x.q.into())
+    }
+
+    /// Integers of every size up to 2¹²⁶: on words, at the word limits,
+    /// and beyond them.
+    fn integer() -> impl Strategy<Value = i128> {
+        prop_oneof![
+            -1000i128..1000,
+            any::<i64>().prop_map(i128::from),
+            Just(i128::from(i64::MIN)),
+            Just(i128::from(i64::MAX) + 1),
+            (any::<i64>(), 1i128..1 << 62).prop_map(|(a, b)| i128::from(a) * b),
+        ]
+    }
+
+    fn fraction() -> impl Strategy<Value = Small> {
+        (integer(), integer()).prop_filter_map("q > 0", |(p, q)| {
+            Small::reduced((p, q.checked_abs()?.max(1)))
+        })
+    }
+
+    /// A bicubic or curve of small machine fractions, positive weights.
+    fn small_patch() -> impl Strategy<Value = SmallPatch> {
+        let number = (-30i128..30, 1i128..12);
+        (any::<bool>(), 1usize..4, 1usize..4, 1usize..4).prop_flat_map(move |(curve, m, n, dim)| {
+            let n = if curve { 0 } else { n };
+            let count = (m + 1) * (n + 1);
+            (
+                prop::collection::vec(number.clone(), count * dim),
+                prop::collection::vec((1i128..30, 1i128..12), count),
+            )
+                .prop_filter_map("a patch", move |(coords, weights)| {
+                    SmallPatch::new(curve, (m, n), dim, &coords, &weights)
+                })
+        })
+    }
+
+    proptest! {
+        #[test]
+        fn products_are_exact_or_refused_when_they_leave_128_bits(a in fraction(), b in fraction()) {
+            let exact = big(a) * big(b);
+            match a.mul(b) {
+                Some(x) => prop_assert_eq!(big(x), exact),
+                None => prop_assert!(Small::of(&exact).is_none()),
+            }
+        }
+
+        #[test]
+        fn certified_key_texts_are_those_of_the_general_path(mut s in small_patch()) {
+            if s.certify() {
+                let patch = s.to_patch().unwrap();
+                prop_assert_eq!(s.key_text().unwrap(), canonical_key(&patch).unwrap().text());
+            }
+        }
+    }
+
+    #[test]
+    fn integers_are_written_as_the_formatter_writes_them() {
+        for v in [
+            0,
+            7,
+            -7,
+            10,
+            i128::from(u64::MAX),
+            -i128::from(u64::MAX),
+            i128::from(u64::MAX) + 1,
+            i128::MIN,
+            i128::MAX,
+        ] {
+            let mut out = String::new();
+            push_int(&mut out, v);
+            assert_eq!(out, v.to_string());
         }
     }
 }
