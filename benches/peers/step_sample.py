@@ -24,7 +24,8 @@ Which edges: every EDGE_CURVE used twice by the face loops (a shared edge
 between two faces, or a seam used twice by one face) whose faces are
 ADVANCED_FACE/FACE_SURFACE on a PLANE, CYLINDRICAL_SURFACE,
 CONICAL_SURFACE, SPHERICAL_SURFACE, TOROIDAL_SURFACE (minor radius below
-the major) or B_SPLINE_SURFACE_WITH_KNOTS (the simple entity, or the
+the major), SURFACE_OF_REVOLUTION (of a curve below, not a line) or
+B_SPLINE_SURFACE_WITH_KNOTS (the simple entity, or the
 complex entity with B_SPLINE_SURFACE and, rational, RATIONAL_B_SPLINE_SURFACE)
 and whose 3D curve (through SURFACE_CURVE / SEAM_CURVE / INTERSECTION_CURVE)
 is a LINE, CIRCLE, ELLIPSE or B_SPLINE_CURVE_WITH_KNOTS (rational or not);
@@ -234,6 +235,14 @@ class Model:
             if ref.id not in self.patches:  # parsed once, its grid made once
                 self.patches[ref.id] = self.bspline_surface(parts)
             return self.patches[ref.id]
+        if name == "SURFACE_OF_REVOLUTION":
+            p = parts[name]
+            axis = self.params(p[2], "AXIS1_PLACEMENT")
+            direction = self.direction(axis[2]) if axis[2] is not None else [mpf(0), mpf(0), mpf(1)]
+            profile = self.curve(p[1])
+            if profile.lo is None:
+                raise Skip("surface of revolution of a line")
+            return Revolution(profile, self.point(axis[1]), direction)
         if name not in SURFACES:
             raise Skip("surface " + name)
         p = parts[name]
@@ -413,6 +422,92 @@ class Torus(Surface):
         n = scale(add(scale(er, a), scale(self.z, h)), 1 / m)
         centre = add(self.c, scale(er, self.major))
         return abs(m - self.minor), add(centre, scale(n, self.minor)), n
+
+
+class Revolution:
+    """sigma(u, v) = A + ((C(v) - A).a) a + cos u rho + sin u (a x rho),
+    rho = (C(v) - A) - ((C(v) - A).a) a (ISO 10303-42 surface_of_revolution:
+    u the angle, v the swept curve's parameter).  The circle through C(v)
+    is nearest to p in p's half-plane about the axis, so
+    |p - surface|^2 = min over v of (rho_p - r(v))^2 + (h_p - z(v))^2 with
+    z(v) = (C(v) - A).a and r(v) = |C(v) - A - z(v) a|: a 1-D search over the
+    curve's domain (129 grid points and the previous foot, then Newton with
+    central differences at 50 digits; golden section within two grid steps
+    of the curve's ends, where C is clamped).  With e the radial unit vector of p,
+    sigma_u x sigma_v = r (a x e) x (z' a + r' e + ...) = r (z' e - r' a)."""
+
+    def __init__(self, curve, origin, axis):
+        self.curve, self.a, self.o = curve, axis, origin
+        self.last = None
+
+    def meridian(self, v):
+        q = sub(self.curve.at(v), self.o)
+        z = dot(q, self.a)
+        return norm(sub(q, scale(self.a, z))), z
+
+    def foot(self, p):
+        d = sub(p, self.o)
+        h = dot(d, self.a)
+        radial = sub(d, scale(self.a, h))
+        rho = norm(radial)
+        if rho == 0:
+            raise Skip("point on a revolution's axis")
+        e = scale(radial, 1 / rho)
+        lo, hi = self.curve.lo, self.curve.hi
+
+        def f(v):
+            r, z = self.meridian(min(max(v, lo), hi))
+            return (rho - r) ** 2 + (h - z) ** 2
+
+        starts = [lo + (hi - lo) * i / 128 for i in range(129)]
+        if self.last is not None:
+            starts.append(self.last)
+        v = min(starts, key=f)
+        step = mpf(10) ** -18
+        grid = (hi - lo) / 128
+        if v - lo < 2 * grid or hi - v < 2 * grid:
+            # Near the curve's ends, where the curve is clamped and the
+            # differences below are one-sided: golden section instead.
+            v = golden(f, max(lo, v - grid), min(hi, v + grid))
+        for _ in range(60):
+            f0, fp, fm = f(v), f(v + step), f(v - step)
+            d1, d2 = (fp - fm) / (2 * step), (fp - 2 * f0 + fm) / (step * step)
+            if d2 <= 0:
+                break
+            nv = min(max(v - d1 / d2, lo), hi)
+            if f(nv) > f0:
+                break
+            done = abs(nv - v) < mpf(10) ** -40
+            v = nv
+            if done:
+                break
+        self.last = v
+        r, z = self.meridian(v)
+        if r == 0:
+            raise Skip("foot on a revolution's axis")
+        (r1, z1), (r0, z0) = self.meridian(min(v + step, hi)), self.meridian(max(v - step, lo))
+        width = min(v + step, hi) - max(v - step, lo)
+        n = sub(scale(e, (z1 - z0) / width), scale(self.a, (r1 - r0) / width))
+        foot = add(self.o, add(scale(self.a, z), scale(e, r)))
+        return sqrt(f(v)), foot, scale(n, 1 / norm(n))
+
+
+def golden(f, a, b, steps=170):
+    """The minimum of a unimodal f on [a, b] by golden-section search
+    (0.618^170: about 1e-35 of the interval)."""
+    k = (sqrt(mpf(5)) - 1) / 2
+    c, d = b - k * (b - a), a + k * (b - a)
+    fc, fd = f(c), f(d)
+    for _ in range(steps):
+        if fc <= fd:
+            b, d, fd = d, c, fc
+            c = b - k * (b - a)
+            fc = f(c)
+        else:
+            a, c, fc = c, d, fd
+            d = a + k * (b - a)
+            fd = f(d)
+    return min((a, b, c, d), key=f)
 
 
 def knot_span(knots, degree, count, t):
