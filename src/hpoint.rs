@@ -138,6 +138,23 @@ impl<T> HPoint<T> {
             coords: self.coords.iter().map(f).collect(),
         }
     }
+
+    /// Apply `f` to every coordinate, `None` if it fails on any (e.g. a
+    /// real algebraic point to a rational one).
+    ///
+    /// ```
+    /// use exact_bezier::{hpoint::HPoint, ratio, BigRational};
+    /// let p: HPoint<i64> = HPoint { coords: vec![1, 2, 4] };
+    /// let halves = p.try_map(&|x| (x % 2 == 0).then(|| ratio::<BigRational>(*x, 2)));
+    /// assert!(halves.is_none());
+    /// let q = HPoint { coords: vec![2, 4] }.try_map(&|x| Some(*x / 2));
+    /// assert_eq!(q.unwrap().coords, vec![1, 2]);
+    /// ```
+    pub fn try_map<U>(&self, f: &impl Fn(&T) -> Option<U>) -> Option<HPoint<U>> {
+        Some(HPoint {
+            coords: self.coords.iter().map(f).collect::<Option<_>>()?,
+        })
+    }
 }
 
 impl<T: Field> HPoint<T> {

@@ -230,11 +230,7 @@ fn rational_rect(p: &Patch<RealAlgebraic>) -> Option<RectPatch<Q>> {
         .iter()
         .map(|row| {
             row.iter()
-                .map(|h| {
-                    let coords: Option<Vec<Q>> =
-                        h.coords.iter().map(RealAlgebraic::as_rational).collect();
-                    coords.map(|coords| HPoint { coords })
-                })
+                .map(|h| h.try_map(&RealAlgebraic::as_rational))
                 .collect::<Option<Vec<_>>>()
         })
         .collect::<Option<Vec<_>>>()?;

@@ -408,11 +408,7 @@ fn net_mod_p(net: &Net<BigRational>) -> Option<Net<Fp>> {
     net.iter()
         .map(|row| {
             row.iter()
-                .map(|h| {
-                    let coords: Option<Vec<Fp>> =
-                        h.coords.iter().map(Fp::from_rational_checked).collect();
-                    coords.map(|coords| HPoint { coords })
-                })
+                .map(|h| h.try_map(&Fp::from_rational_checked))
                 .collect()
         })
         .collect()
