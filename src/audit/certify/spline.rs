@@ -18,8 +18,18 @@
 //! **Beyond the border.** An edge along a face's border has foot points a
 //! rounding error on either side of it. The surface is continued past its
 //! border by its border pieces' own polynomials (a box may reach a quarter
-//! of the border piece's span beyond it), so that such feet are proved;
-//! the distance, normal and curvature there are those of the continuation.
+//! of the border piece's span beyond it, which lets Newton and Krawczyk's
+//! boxes straddle the border), so that such feet are proved. A foot
+//! counts only when Krawczyk's image, which holds it, lies within
+//! [`BORDER_SLACK`] (10⁻⁹ of the domain's width) of the domain: farther
+//! out, the continuation is not the face — its normal there has turned
+//! away from the border's, while the face's nearest point is on its
+//! border — and the foot is refused (the measure is then taken from the
+//! composed bounds below, which stay on the face, or left unproved). In a
+//! direction where the surface is closed (its two borders are one curve,
+//! compared exactly: proportional rows of control points) a foot found
+//! past the seam is moved by a period to the other side, where the
+//! surface really is, and proved there.
 //!
 //! **Gaps by composition.** The distance from an edge to the face itself
 //! is bounded by [`SplineField::gap_over`]: `|C − S∘p|` for a cubic `p` in
@@ -81,11 +91,13 @@ use crate::algebra::interval_bernstein::{scale as scaled_form, Scaled};
 use crate::algebra::Interval;
 use crate::curve::RationalCurve;
 use crate::error::Error;
+use crate::hpoint::HPoint;
 use crate::limits;
 use crate::nurbs::{Knots, NurbsSurface, SpannedPatch};
 use crate::patch::Patch;
 use crate::rect::RectPatch;
 use num_rational::BigRational;
+use num_traits::Zero;
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
 use std::sync::OnceLock;
@@ -115,6 +127,12 @@ const START_SPREAD: f64 = 1.5;
 /// How many times a foot box is doubled before the foot is given up.
 const INFLATIONS: usize = 8;
 
+/// How far beyond its border, relative to the domain's width, a foot
+/// point proved on the surface's continuation still counts as the face's
+/// (a rounding error of an edge along the border): farther out, the
+/// continuation is not the face, and the foot is refused.
+const BORDER_SLACK: f64 = 1e-9;
+
 /// The degree of the curves `p` in the surface's parameters that
 /// [`SplineField::gap_over`] fits to the feet of an edge.
 const FIT_DEGREE: usize = 3;
@@ -140,6 +158,9 @@ struct Axis {
     smooth: Vec<bool>,
     /// How far a box may reach beyond `b₀` and beyond `b_n`.
     reach: [f64; 2],
+    /// Whether the surface is closed in this parameter: its borders at
+    /// `b₀` and `b_n` are one curve (a periodic surface's seam).
+    closed: bool,
 }
 
 /// A piece a parameter interval meets: its index, the interval's part in
@@ -160,7 +181,28 @@ impl Axis {
             ],
             breaks: enclosed,
             smooth,
+            closed: false,
         }
+    }
+
+    /// `x` moved by whole periods into the domain where the axis is
+    /// closed (a foot found past the seam is the same point of the
+    /// surface on the other side); `x` itself otherwise.
+    fn wrap(&self, x: f64) -> f64 {
+        let [lo, hi] = [0, self.breaks.len() - 1].map(|k| self.breaks[k].mid());
+        let period = hi - lo;
+        if !self.closed || (lo..=hi).contains(&x) || !period.is_finite() || period <= 0.0 {
+            return x;
+        }
+        lo + (x - lo).rem_euclid(period)
+    }
+
+    /// Does the enclosure `x` lie within the domain widened on each side by
+    /// [`BORDER_SLACK`] of its width?
+    fn holds(&self, x: Interval) -> bool {
+        let [lo, hi] = self.domain();
+        let slack = BORDER_SLACK * (hi - lo);
+        x.lo >= lo - slack && x.hi <= hi + slack
     }
 
     /// The piece whose span holds `x` (the first or last for `x` beyond
@@ -260,6 +302,26 @@ pub struct SplineField<'a> {
 /// A piece of an edge, by the bits of its ends, and its feet if found.
 type RememberedFeet = ([u64; 2], Option<Vec<[f64; 2]>>);
 
+/// Are two rows of homogeneous control points one border curve: `b_j =
+/// λ a_j` for one `λ ≠ 0` (proportional rows give the same rational
+/// curve, point by point)?
+fn same_border(a: &[HPoint<Q>], b: &[HPoint<Q>]) -> bool {
+    let (Some(pa), Some(pb)) = (a.first(), b.first()) else {
+        return false;
+    };
+    if a.len() != b.len() || pa.weight().is_zero() {
+        return false;
+    }
+    let lambda = pb.weight() / pa.weight();
+    !lambda.is_zero()
+        && a.iter().zip(b).all(|(x, y)| {
+            x.coords
+                .iter()
+                .zip(&y.coords)
+                .all(|(p, q)| &(p * &lambda) == q)
+        })
+}
+
 /// Is a B-spline with knot vector `knots` `C¹` across its knot `b`
 /// (multiplicity below the degree)?
 fn knot_smooth(b: &Q, knots: &Knots) -> bool {
@@ -339,11 +401,28 @@ impl<'a> SplineSurface<'a> {
         let inner = |b: &[Q], smooth: &dyn Fn(&Q) -> bool| -> Vec<bool> {
             b[1..b.len() - 1].iter().map(smooth).collect()
         };
+        let mut axes = [
+            Axis::new(&bu, inner(&bu, &smooth_u)),
+            Axis::new(&bv, inner(&bv, &smooth_v)),
+        ];
+        axes[0].closed = (0..nv).all(|j| {
+            let (first, last) = (grid[j].ctrl(), grid[(nu - 1) * nv + j].ctrl());
+            same_border(&first[0], &last[last.len() - 1])
+        });
+        axes[1].closed = (0..nu).all(|i| {
+            let column = |p: &RectPatch<Q>, last: bool| -> Vec<HPoint<Q>> {
+                p.ctrl()
+                    .iter()
+                    .map(|row| row[if last { row.len() - 1 } else { 0 }].clone())
+                    .collect()
+            };
+            same_border(
+                &column(grid[i * nv], false),
+                &column(grid[i * nv + nv - 1], true),
+            )
+        });
         Ok(SplineSurface {
-            axes: [
-                Axis::new(&bu, inner(&bu, &smooth_u)),
-                Axis::new(&bv, inner(&bv, &smooth_v)),
-            ],
+            axes,
             enclosed: grid.iter().map(|_| OnceLock::new()).collect(),
             grid,
             seeds: OnceLock::new(),
@@ -459,6 +538,14 @@ impl<'a> SplineField<'a> {
     fn prove_foot(&self, p: &[Interval]) -> Option<FootBox> {
         let c: IVec = p.iter().map(|x| Interval::point(x.mid())).collect();
         let g = self.foot_f64(&c)?;
+        let wrapped = [0, 1].map(|k| self.surface.axes[k].wrap(g[k]));
+        let g = if wrapped == g {
+            g
+        } else {
+            let g = newton(self, &c, wrapped)?;
+            self.guess.set(Some(g));
+            g
+        };
         let at = self.approximate_jet(g[0], g[1]).ok()?;
         let domain = self.domain();
         let mut r = spread(&at, p)?;
@@ -475,6 +562,9 @@ impl<'a> SplineField<'a> {
             }
             if let Ok(Some(k)) = krawczyk(self, b, p) {
                 if b[0].interior_contains(&k[0]) && b[1].interior_contains(&k[1]) {
+                    if !(0..2).all(|a| self.surface.axes[a].holds(k[a])) {
+                        return None;
+                    }
                     return self.finish(p, b);
                 }
             }
@@ -1041,11 +1131,14 @@ fn unit_normal(s: &PatchJet) -> Option<IVec> {
 }
 
 /// A lower bound of the least singular value of every matrix `(S_u S_v)`
-/// over the jet `s`: `√λ`, `λ` the greater of two lower bounds of the least
-/// eigenvalue of the Gram matrix `[[a, b], [b, d]]`: its closed form
+/// over the jet `s`: `√λ`, `λ` the greatest of three lower bounds of the
+/// least eigenvalue of the Gram matrix `[[a, b], [b, d]]`: its closed form
 /// `(a + d)/2 − √(((a − d)/2)² + b²)` (tight for a box of nearly equal
-/// columns) and Gershgorin's `min(a, d) − |b|` (tight where `a` and `d`
-/// differ, which the closed form's cancellation loses over a wide box);
+/// columns), Gershgorin's `min(a, d) − |b|` (tight where `a` and `d`
+/// differ, which the closed form's cancellation loses over a wide box),
+/// and `det/trace = |S_u × S_v|²/(a + d)` (the product of the two
+/// eigenvalues over their sum is at most the lesser; Lagrange's identity
+/// `ad − b² = |S_u × S_v|²` keeps it free of the cancellation);
 /// `None` unless positive.
 fn least_stretch(s: &PatchJet) -> Option<f64> {
     let (a, b, d) = (dot(&s.xu, &s.xu), dot(&s.xu, &s.xv), dot(&s.xv, &s.xv));
@@ -1055,7 +1148,10 @@ fn least_stretch(s: &PatchJet) -> Option<f64> {
     let gershgorin = Interval::point(a.lo.min(d.lo))
         .sub(&Interval::point(b.mag()))
         .lo;
-    let least = closed.max(gershgorin);
+    let quotient = norm2(&cross(&s.xu, &s.xv))
+        .div(&a.add(&d))
+        .map_or(f64::NEG_INFINITY, |q| q.lo);
+    let least = closed.max(gershgorin).max(quotient);
     (least > 0.0).then(|| Interval::point(least).sqrt().map(|x| x.lo))?
 }
 

@@ -326,3 +326,85 @@ fn a_normal_path_along_a_b_spline_cylinder_is_radial() {
         );
     }
 }
+
+/// Points a little beyond the plane's border `u = 0` (`y > 0`): their feet
+/// on the plane's continuation are refused, since the face's nearest point
+/// is on its border, not there; a foot beyond it by a rounding error
+/// (10⁻¹² of the domain) is the face's, with the plane's distance.
+#[test]
+fn feet_on_the_continuation_past_the_border_are_refused() {
+    let s = tangent_plane();
+    let ps = pieces(&s);
+    let field_surface = SplineSurface::new(&s, &ps).unwrap();
+    let field = SplineField::new(&field_surface);
+    // Within the border's reach (a quarter of the span 1/2): Newton finds
+    // the foot u = −0.1, −10⁻⁸, which is not on the face.
+    for y in [0.1, 1e-8] {
+        assert!(field
+            .distance(&[1.25, y, 1.0].map(Interval::point))
+            .is_none());
+    }
+    let d = field
+        .distance(&[1.25, 1e-12, 1.0].map(Interval::point))
+        .unwrap();
+    assert!(contains(&d.signed, -0.25, 1e-12), "{:?}", d.signed);
+}
+
+/// The unit cylinder `x² + y² = 1`, `0 ≤ z ≤ 2`, closed in `u`: four
+/// rational quadratic quarter arcs on the spans `[k, k + 1]` (the first
+/// with control points `(1, 0)`, `(1, 1)`, `(0, 1)` and weights 1, 1, 2, each
+/// next one turned by a quarter and its weights doubled, so that the
+/// homogeneous nets join), linear in `v`. The last arc ends at `(1, 0)`
+/// with weight 16: its border row is 16 times the first's.
+fn closed_cylinder() -> Vec<SpannedPatch> {
+    let arc = [(1, 0, 1), (1, 1, 1), (0, 1, 2)];
+    (0..4)
+        .map(|k: i64| {
+            let turn = |(x, y): (i64, i64)| match k {
+                0 => (x, y),
+                1 => (-y, x),
+                2 => (-x, -y),
+                _ => (y, -x),
+            };
+            let (points, weights): (Vec<Vec<Vec<Q>>>, Vec<Vec<Q>>) = arc
+                .iter()
+                .map(|&(x, y, w)| {
+                    let (x, y) = turn((x, y));
+                    let row = [0, 2].map(|z| vec![q(x, 1), q(y, 1), q(z, 1)]).to_vec();
+                    (row, vec![q(w << k, 1); 2])
+                })
+                .unzip();
+            SpannedPatch {
+                patch: Patch::Rect(RectPatch::new(points, weights).unwrap()),
+                u: [q(k, 1), q(k + 1, 1)],
+                v: Some([q(0, 1), q(1, 1)]),
+            }
+        })
+        .collect()
+}
+
+/// The cylinder is seen closed in `u` (not in `v`), and a point just
+/// before its seam, asked right after one just past it (so that Newton
+/// starts from the first arc and lands on its continuation below `u = 0`),
+/// gets its foot on the last arc, where the surface is: the cylinder's
+/// distance and radial normal.
+#[test]
+fn feet_past_a_closed_surface_s_seam_are_proved_on_the_other_side() {
+    let ps = closed_cylinder();
+    let surface = SplineSurface::from_pieces(&ps, |_| false, |_| false).unwrap();
+    assert!(surface.axes[0].closed && !surface.axes[1].closed);
+    assert!((surface.axes[0].wrap(-0.25) - 3.75).abs() < 1e-15);
+    assert_eq!(surface.axes[1].wrap(-0.25), -0.25);
+    let field = SplineField::new(&surface);
+    for angle in [0.01f64, -0.01] {
+        let (c, s) = (angle.cos(), angle.sin());
+        let d = field
+            .distance(&[2.0 * c, 2.0 * s, 1.0].map(Interval::point))
+            .unwrap();
+        assert!(contains(&d.signed, 1.0, 1e-12), "{angle}: {:?}", d.signed);
+        for (n, want) in d.normal.iter().zip([c, s, 0.0]) {
+            assert!(contains(n, want, 1e-12), "{angle}: {n:?} ≠ {want}");
+        }
+    }
+    assert!(field.guess.get().unwrap()[0] > 3.9);
+}
