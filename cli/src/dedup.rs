@@ -16,14 +16,15 @@
 //! which re-checks every grouping exactly; it keeps each representative's
 //! text and each witness until the end.
 
-use super::bulk::{key_chunk, BulkArgs, KeyCache, Member, Out, Progress, CHUNK};
+use super::bulk::{for_each_chunk_ahead, key_chunk, BulkArgs, Member, Out, Progress};
+use crate::recent::{RecentKeys, RECENT_SLOTS_LOG2};
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::coincide::canonical::{
     canonical_key, key_digest, CanonicalKey, Deduper, KeyDigest,
 };
 use exact_bezier::coincide::{coincide, Coincidence, Options};
 use exact_bezier::io::coincidence_to_json;
-use exact_bezier::io::{for_each_chunk, JsonScalar, Record};
+use exact_bezier::io::{JsonScalar, Record};
 use exact_bezier::limits;
 use exact_bezier::Error;
 use rayon::prelude::*;
@@ -140,9 +141,9 @@ fn dedup(a: &Args) -> Result<(), Error> {
     let progress = Progress::new(&a.bulk, &input);
     let mut d = Deduper::default();
     let mut witnesses = a.witness.then(Witnesses::default);
-    let mut cache = KeyCache::default();
-    for_each_chunk(reader, CHUNK, |first, records| {
-        let keyed = key_chunk("dedup", first, &records, &mut cache, |p| {
+    let mut recent = RecentKeys::new(RECENT_SLOTS_LOG2);
+    for_each_chunk_ahead(reader, |first, records| {
+        let keyed = key_chunk("dedup", first, &records, &mut recent, |p| {
             Ok(match &p {
                 Member::Small(s) => Keyed::Digest(KeyDigest::of_text(&s.key_text()?)),
                 Member::Rational(q) => Keyed::Digest(key_digest(q)?),

@@ -4,9 +4,9 @@
 //! DuckDB, Spark, `sort`) gives the classes of `dedup`; see
 //! `docs/bulk_dedup.md`.
 
-use super::bulk::{key_chunk, BulkArgs, KeyCache, Member, Out, Progress, CHUNK};
+use super::bulk::{for_each_chunk_ahead, key_chunk, BulkArgs, Member, Out, Progress};
+use crate::recent::{RecentKeys, RECENT_SLOTS_LOG2};
 use exact_bezier::coincide::canonical::{canonical_key, canonical_text, KeyDigest};
-use exact_bezier::io::for_each_chunk;
 use exact_bezier::Error;
 use serde_json::json;
 
@@ -63,9 +63,9 @@ fn keys(a: &Args) -> Result<(), Error> {
     let progress = Progress::new(&a.bulk, &input);
     let mut out = Out::new();
     let mut done = 0;
-    let mut cache = KeyCache::default();
-    let n = for_each_chunk(reader, CHUNK, |first, records| {
-        let lines = key_chunk("key", first, &records, &mut cache, |p| {
+    let mut recent = RecentKeys::new(RECENT_SLOTS_LOG2);
+    let n = for_each_chunk_ahead(reader, |first, records| {
+        let lines = key_chunk("key", first, &records, &mut recent, |p| {
             let text = member_text(&p)?;
             Ok((KeyDigest::of_text(&text), a.text.then_some(text)))
         })?;
