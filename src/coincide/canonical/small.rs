@@ -21,7 +21,7 @@ use crate::limits::Size;
 use crate::rect::RectPatch;
 use crate::Patch;
 use num_rational::BigRational;
-use num_traits::{ToPrimitive, Zero};
+use num_traits::ToPrimitive;
 use std::borrow::Cow;
 use std::cmp::Ordering;
 
@@ -315,17 +315,6 @@ fn rows<T: Clone>(v: &[T], cols: usize) -> Vec<Vec<T>> {
     v.chunks(cols).map(<[T]>::to_vec).collect()
 }
 
-/// `x mod p` for a machine fraction, or `None` when `p` divides its
-/// denominator (`p = 2⁶¹ − 1`, as [`Fp::from_rational_checked`]).
-fn mod_p(x: Small) -> Option<Fp> {
-    let p = Fp::from_i128(x.p);
-    if x.q == 1 {
-        return Some(p);
-    }
-    let q = Fp::from_i128(x.q);
-    (!q.is_zero()).then(|| p / q)
-}
-
 /// Bits of a machine fraction as [`limits::bits`](crate::limits::bits)
 /// counts them: the numerator's and the denominator's bit lengths.
 fn bit_len(x: Small) -> u64 {
@@ -436,24 +425,27 @@ impl SmallPatch {
     }
 
     /// The image modulo `p` of the homogeneous net, or `None` when `p`
-    /// divides a denominator.
+    /// divides a denominator (the denominators inverted together,
+    /// [`Fp::invert_all`]).
     fn homogeneous_mod_p(&self) -> Option<Net<Fp>> {
+        let numbers = || self.weights.iter().chain(&self.coords);
+        let mut inverse: Vec<Fp> = numbers().map(|x| Fp::from_i128(x.q)).collect();
+        if !Fp::invert_all(&mut inverse) {
+            return None;
+        }
+        let mut image = numbers()
+            .zip(&inverse)
+            .map(|(x, &inv)| Fp::from_i128(x.p) * inv);
+        let weights: Vec<Fp> = image.by_ref().take(self.weights.len()).collect();
         let cols = self.shape.1 + 1;
-        let points = self
-            .weights
-            .iter()
-            .zip(self.coords.chunks_exact(self.dim))
-            .map(|(&w, x)| {
-                let w = mod_p(w)?;
-                let coords = x
-                    .iter()
-                    .map(|&c| mod_p(c).map(|c| c * w))
-                    .chain(std::iter::once(Some(w)))
-                    .collect::<Option<Vec<Fp>>>()?;
-                Some(HPoint { coords })
-            })
-            .collect::<Option<Vec<_>>>()?;
-        let mut points = points.into_iter();
+        let mut points = weights.iter().map(|&w| HPoint {
+            coords: image
+                .by_ref()
+                .take(self.dim)
+                .map(|c| c * w)
+                .chain(std::iter::once(w))
+                .collect(),
+        });
         Some(
             (0..=self.shape.0)
                 .map(|_| points.by_ref().take(cols).collect())
@@ -561,6 +553,12 @@ mod tests {
                 Some(x) => prop_assert_eq!(big(x), exact),
                 None => prop_assert!(Small::of(&exact).is_none()),
             }
+        }
+
+        #[test]
+        fn the_machine_certificate_is_that_of_the_net_over_q(mut s in small_patch()) {
+            let (net, _) = crate::coincide::net_of(&s.to_patch().unwrap()).unwrap();
+            prop_assert_eq!(s.certify(), crate::coincide::minimal::certified_minimal(&net));
         }
 
         #[test]
