@@ -229,14 +229,23 @@ impl Split<'_> {
         let a = powers(vm, if vm > 0 { w(1, 0) } else { w00 })?;
         let b = powers(vn, if vn > 0 { w(0, 1) } else { w00 })?;
         let inv00 = w00.recip_positive();
-        let rows = a
-            .iter()
-            .map(|ai| inv00.mul(*ai))
-            .collect::<Option<Vec<Small>>>()?;
-        positions((vm, vn))
-            .map(|(i, j)| w(i, j).mul(rows[i])?.mul(b[j]))
-            .collect()
+        let rows = try_collect(a.len(), a.iter().map(|ai| inv00.mul(*ai)))?;
+        try_collect(
+            (vm + 1) * (vn + 1),
+            positions((vm, vn)).map(|(i, j)| w(i, j).mul(rows[i])?.mul(b[j])),
+        )
     }
+}
+
+/// The values of `items` (`len` of them) if none is `None`: one allocation
+/// of `len` (collecting into `Option<Vec>` cannot size its vector ahead and
+/// grows it step by step).
+fn try_collect<T>(len: usize, items: impl Iterator<Item = Option<T>>) -> Option<Vec<T>> {
+    let mut out = Vec::with_capacity(len);
+    for x in items {
+        out.push(x?);
+    }
+    Some(out)
 }
 
 fn positions((m, n): (usize, usize)) -> impl Iterator<Item = (usize, usize)> {
@@ -372,14 +381,11 @@ impl SmallPatch {
         if !fits {
             return None;
         }
-        let coords = coords
-            .iter()
-            .map(|&x| Small::reduced(x))
-            .collect::<Option<Vec<_>>>()?;
-        let weights = weights
-            .iter()
-            .map(|&w| Small::reduced(w).filter(|w| w.p > 0))
-            .collect::<Option<Vec<_>>>()?;
+        let coords = try_collect(coords.len(), coords.iter().map(|&x| Small::reduced(x)))?;
+        let weights = try_collect(
+            weights.len(),
+            weights.iter().map(|&w| Small::reduced(w).filter(|w| w.p > 0)),
+        )?;
         Some(SmallPatch {
             curve,
             shape,
@@ -429,20 +435,27 @@ impl SmallPatch {
     /// [`Fp::invert_all`]).
     fn homogeneous_mod_p(&self) -> Option<Net<Fp>> {
         let numbers = || self.weights.iter().chain(&self.coords);
-        let mut inverse: Vec<Fp> = numbers().map(|x| Fp::from_i128(x.q)).collect();
+        let mut image: Vec<Fp> = numbers().map(|x| Fp::from_i128(x.p)).collect();
+        // The denominators other than 1, inverted together.
+        let (at, mut inverse): (Vec<usize>, Vec<Fp>) = numbers()
+            .enumerate()
+            .filter(|(_, x)| x.q != 1)
+            .map(|(k, x)| (k, Fp::from_i128(x.q)))
+            .unzip();
         if !Fp::invert_all(&mut inverse) {
             return None;
         }
-        let mut image = numbers()
-            .zip(&inverse)
-            .map(|(x, &inv)| Fp::from_i128(x.p) * inv);
-        let weights: Vec<Fp> = image.by_ref().take(self.weights.len()).collect();
+        for (k, inv) in at.into_iter().zip(inverse) {
+            image[k] = image[k] * inv;
+        }
+        let (weights, coords) = image.split_at(self.weights.len());
+        let mut coords = coords.iter();
         let cols = self.shape.1 + 1;
         let mut points = weights.iter().map(|&w| HPoint {
-            coords: image
+            coords: coords
                 .by_ref()
                 .take(self.dim)
-                .map(|c| c * w)
+                .map(|&c| c * w)
                 .chain(std::iter::once(w))
                 .collect(),
         });
