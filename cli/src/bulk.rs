@@ -439,6 +439,18 @@ impl Out {
     /// Write one line.
     pub fn line(&mut self, text: &str) {
         self.buffer.push_str(text);
+        self.end_line();
+    }
+
+    /// Write one line formatted from `args`, straight into the block.
+    pub fn line_args(&mut self, args: std::fmt::Arguments<'_>) {
+        use std::fmt::Write as _;
+        // Writing into a String cannot fail.
+        let _ = self.buffer.write_fmt(args);
+        self.end_line();
+    }
+
+    fn end_line(&mut self) {
         self.buffer.push('\n');
         if self.buffer.len() >= OUT_BLOCK {
             self.flush();

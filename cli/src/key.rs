@@ -71,13 +71,12 @@ fn keys(a: &Args) -> Result<(), Error> {
         })?;
         for (k, (digest, text)) in lines.into_iter().enumerate() {
             let index = a.first_index + (first + k) as u64;
-            let line = match text {
-                None => format!("{{\"index\":{index},\"key\":\"{digest}\"}}"),
-                Some(t) => {
-                    json!({"index": index, "key": digest.to_string(), "text": t}).to_string()
-                }
-            };
-            out.line(&line);
+            match text {
+                None => out.line_args(format_args!("{{\"index\":{index},\"key\":\"{digest}\"}}")),
+                Some(t) => out.line(
+                    &json!({"index": index, "key": digest.to_string(), "text": t}).to_string(),
+                ),
+            }
         }
         done += records.len();
         progress.update(&input, done);

@@ -384,7 +384,9 @@ impl SmallPatch {
         let coords = try_collect(coords.len(), coords.iter().map(|&x| Small::reduced(x)))?;
         let weights = try_collect(
             weights.len(),
-            weights.iter().map(|&w| Small::reduced(w).filter(|w| w.p > 0)),
+            weights
+                .iter()
+                .map(|&w| Small::reduced(w).filter(|w| w.p > 0)),
         )?;
         Some(SmallPatch {
             curve,
