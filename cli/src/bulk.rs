@@ -253,16 +253,21 @@ pub(crate) fn key_chunk<K: Clone + Send + Sync>(
             })),
         })
         .collect();
+    let command_limits = limits::current();
     let read: Vec<Result<(Member, u64), Error>> = fresh
         .par_iter()
         .map(|&k| {
             let r = &records[k];
-            if let Some(fast) = Member::read_fast(r) {
-                return Ok(fast);
-            }
-            let p = Member::read(r)?;
-            let work = key_work(&p).map_err(|e| r.locate(e))?;
-            Ok((p, work))
+            // A worker's own limits are the defaults: the command's
+            // (`--max-digits`) are this thread's.
+            limits::with_limits(command_limits, || {
+                if let Some(fast) = Member::read_fast(r) {
+                    return Ok(fast);
+                }
+                let p = Member::read(r)?;
+                let work = key_work(&p).map_err(|e| r.locate(e))?;
+                Ok((p, work))
+            })
         })
         .collect();
     let mut members = Vec::with_capacity(read.len());

@@ -70,7 +70,12 @@ impl Witnesses {
                 self.reps.push(r.text().into_owned().into_boxed_str());
             }
         }
-        let read: Vec<Result<Member, Error>> = records.par_iter().map(Member::read).collect();
+        // Read under the command's limits (a worker's own are the defaults).
+        let command_limits = limits::current();
+        let read: Vec<Result<Member, Error>> = records
+            .par_iter()
+            .map(|r| limits::with_limits(command_limits, || Member::read(r)))
+            .collect();
         let mut patches = Vec::with_capacity(read.len());
         for (k, (p, &id)) in read.into_iter().zip(ids).enumerate() {
             let p = p?;
@@ -96,7 +101,8 @@ impl Witnesses {
                 if rep == first + k {
                     return Ok(None);
                 }
-                let a = Member::read(&Record::Line(rep + 1, reps[id].to_string()))?;
+                let rep_record = Record::Line(rep + 1, reps[id].to_string());
+                let a = limits::with_limits(command_limits, || Member::read(&rep_record))?;
                 let (coincident, reason, witness) = match (&a, p) {
                     (Member::Rational(a), Member::Rational(p)) => {
                         summary(coincide(a, p, Options::default())?)
