@@ -1,17 +1,18 @@
 //! What `key` and `dedup` share: the input as a counted byte stream, keys
 //! of a chunk of records on all cores, the progress bar, the exit code.
 
+use crate::recent::{RecentKeys, RecordHash};
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::algebra::Scalar;
 use exact_bezier::coincide::canonical::{key_plan, KeyDigest, KeyPlan, SmallPatch};
-use exact_bezier::io::Record;
+use exact_bezier::io::{for_each_chunk, Record};
 use exact_bezier::limits::{self, Size};
 use exact_bezier::patch::Patch;
 use exact_bezier::Error;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle, TermLike};
 use num_rational::BigRational;
 use rayon::prelude::*;
-use std::collections::{HashMap, HashSet};
+use std::collections::HashMap;
 use std::io::{BufRead, BufReader, IsTerminal, Read, Write};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
@@ -57,7 +58,7 @@ pub(crate) struct Input {
 
 impl BulkArgs {
     /// Set the thread count and open the input.
-    pub fn open(&self) -> Result<(Box<dyn BufRead>, Input), Error> {
+    pub fn open(&self) -> Result<(Box<dyn BufRead + Send>, Input), Error> {
         if let Some(n) = self.threads {
             // Fails only if the pool was already built (tests in one process).
             let _ = rayon::ThreadPoolBuilder::new()
@@ -65,7 +66,7 @@ impl BulkArgs {
                 .build_global();
         }
         let bytes = Arc::new(AtomicU64::new(0));
-        let (inner, size): (Box<dyn Read>, Option<u64>) = if self.file == "-" {
+        let (inner, size): (Box<dyn Read + Send>, Option<u64>) = if self.file == "-" {
             (super::stdin_reader(), None)
         } else {
             let f = std::fs::File::open(&self.file)
@@ -124,13 +125,6 @@ impl Member {
             .then(|| (Member::Small(s), minimal_key_work(&size)))
     }
 }
-
-/// SHA-256 of a record's text: byte-identical records are keyed once.
-type RecordHash = [u8; 32];
-
-/// The keys already computed, by record text ([`key_chunk`]): 32 bytes and
-/// one key per distinct record.
-pub(crate) type KeyCache<K> = HashMap<RecordHash, K>;
 
 /// The estimated work of one record's canonical key (docs/limits.md),
 /// before it is computed. Over Q it follows the record's [`KeyPlan`], read
@@ -225,48 +219,64 @@ fn minimal_key_work(s: &Size) -> u64 {
     modp_work(s).saturating_add(exact)
 }
 
-/// `key` on every record of a chunk, results in input order: each distinct
-/// record text is keyed once (`cache` keeps the keys across chunks), and
-/// each record keyed is first charged its [`key_work`] against the work
-/// budget as `what`, in input order on this thread (so `--max-work` refuses
-/// at the same record whatever the thread count; the refusal names the
-/// 0-based index of that record, `first` being the chunk's first). The records are read and
-/// keyed on all cores. The error reported is that of the first failing
-/// record in input order, located.
+/// `key` on every record of a chunk, results in input order: a record
+/// whose text the chunk has already had, or `recent` still holds, is not
+/// keyed again ([`RecentKeys`]); every other record is first charged its
+/// [`key_work`] against the work budget as `what`, in input order on this
+/// thread (so `--max-work` refuses at the same record whatever the thread
+/// count; the refusal names the 0-based index of that record, `first`
+/// being the chunk's first). The records are read and keyed on all cores,
+/// and their keys kept in `recent`. The error reported is that of the
+/// first failing record in input order, located.
 pub(crate) fn key_chunk<K: Clone + Send + Sync>(
     what: &str,
     first: usize,
     records: &[Record],
-    cache: &mut KeyCache<K>,
+    recent: &mut RecentKeys<K>,
     key: impl Fn(Member) -> Result<K, Error> + Sync,
 ) -> Result<Vec<K>, Error> {
     let hashes: Vec<RecordHash> = records
         .par_iter()
         .map(|r| KeyDigest::of_text(&r.text()).0)
         .collect();
+    // Each record's key: one `recent` holds, or that of a fresh record.
     let mut fresh = Vec::new();
-    let mut in_chunk = HashSet::new();
-    for (k, h) in hashes.iter().enumerate() {
-        if !cache.contains_key(h) && in_chunk.insert(*h) {
-            fresh.push(k);
-        }
-    }
+    let mut in_chunk = HashMap::new();
+    let source: Vec<Result<K, usize>> = hashes
+        .iter()
+        .enumerate()
+        .map(|(k, h)| match recent.get(h) {
+            Some(key) => Ok(key.clone()),
+            None => Err(*in_chunk.entry(*h).or_insert_with(|| {
+                fresh.push(k);
+                fresh.len() - 1
+            })),
+        })
+        .collect();
+    let command_limits = limits::current();
     let read: Vec<Result<(Member, u64), Error>> = fresh
         .par_iter()
         .map(|&k| {
             let r = &records[k];
-            if let Some(fast) = Member::read_fast(r) {
-                return Ok(fast);
-            }
-            let p = Member::read(r)?;
-            let work = key_work(&p).map_err(|e| r.locate(e))?;
-            Ok((p, work))
+            // A worker's own limits are the defaults: the command's
+            // (`--max-digits`) are this thread's.
+            limits::with_limits(command_limits, || {
+                if let Some(fast) = Member::read_fast(r) {
+                    return Ok(fast);
+                }
+                let p = Member::read(r)?;
+                let work = key_work(&p).map_err(|e| r.locate(e))?;
+                Ok((p, work))
+            })
         })
         .collect();
     let mut members = Vec::with_capacity(read.len());
     for (&k, done) in fresh.iter().zip(read) {
         let (p, work) = done?;
-        limits::charge(&format!("{what} (through record {})", first + k), work)?;
+        // Nothing is charged on a refusal: the second charge refuses too,
+        // naming the record (a name not formatted for every record).
+        limits::charge(what, work)
+            .or_else(|_| limits::charge(&format!("{what} (through record {})", first + k), work))?;
         members.push(p);
     }
     let keyed: Vec<Result<K, Error>> = members
@@ -274,10 +284,49 @@ pub(crate) fn key_chunk<K: Clone + Send + Sync>(
         .zip(&fresh)
         .map(|(p, &k)| key(p).map_err(|e| records[k].locate(e)))
         .collect();
-    for (&k, done) in fresh.iter().zip(keyed) {
-        cache.insert(hashes[k], done?);
+    let keyed = keyed.into_iter().collect::<Result<Vec<K>, Error>>()?;
+    for (&k, key) in fresh.iter().zip(&keyed) {
+        recent.put(hashes[k], key.clone());
     }
-    Ok(hashes.iter().map(|h| cache[h].clone()).collect())
+    Ok(source
+        .into_iter()
+        .map(|s| s.unwrap_or_else(|i| keyed[i].clone()))
+        .collect())
+}
+
+/// Chunks read ahead of the one being keyed ([`for_each_chunk_ahead`]).
+const READ_AHEAD: usize = 2;
+
+/// [`for_each_chunk`] of `reader` in chunks of [`CHUNK`] with the reading
+/// on a thread of its own, up to [`READ_AHEAD`] chunks ahead of `f` (which
+/// runs on this thread): reading overlaps keying. The same chunks in the
+/// same order, and the same first error: an error of `f` stops the
+/// reading; a read error is returned once `f` has had every chunk before
+/// it. The reader runs under this thread's limits.
+pub(crate) fn for_each_chunk_ahead(
+    reader: Box<dyn BufRead + Send>,
+    mut f: impl FnMut(usize, Vec<Record>) -> Result<(), Error>,
+) -> Result<usize, Error> {
+    let limits = limits::current();
+    let (tx, rx) = std::sync::mpsc::sync_channel(READ_AHEAD);
+    std::thread::scope(|scope| {
+        let reading = scope.spawn(move || {
+            limits::with_limits(limits, || {
+                for_each_chunk(reader, CHUNK, |first, records| {
+                    // Fails only when `f` failed and the receiver is gone.
+                    tx.send((first, records))
+                        .map_err(|_| Error::Io("the keying stopped".into()))
+                })
+            })
+        });
+        let consumed = rx.iter().try_for_each(|(first, records)| f(first, records));
+        // Unblock a reader waiting for room before joining it.
+        drop(rx);
+        let read = reading
+            .join()
+            .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+        consumed.and(read)
+    })
 }
 
 /// A progress bar on standard error: bytes read against the input size
@@ -395,6 +444,18 @@ impl Out {
     /// Write one line.
     pub fn line(&mut self, text: &str) {
         self.buffer.push_str(text);
+        self.end_line();
+    }
+
+    /// Write one line formatted from `args`, straight into the block.
+    pub fn line_args(&mut self, args: std::fmt::Arguments<'_>) {
+        use std::fmt::Write as _;
+        // Writing into a String cannot fail.
+        let _ = self.buffer.write_fmt(args);
+        self.end_line();
+    }
+
+    fn end_line(&mut self) {
         self.buffer.push('\n');
         if self.buffer.len() >= OUT_BLOCK {
             self.flush();
@@ -405,5 +466,87 @@ impl Out {
     pub fn flush(&mut self) {
         super::emit_raw(&self.buffer);
         self.buffer.clear();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use exact_bezier::coincide::canonical::canonical_text;
+    use exact_bezier::limits::Limits;
+    use proptest::prelude::*;
+
+    /// The key text of a member over Q (the pool has no other).
+    fn text_of(p: Member) -> Result<String, Error> {
+        match p {
+            Member::Small(s) => s.key_text(),
+            Member::Rational(q) => canonical_text(&q),
+            Member::Algebraic(_) => Err(Error::Domain("not a rational record".into())),
+        }
+    }
+
+    /// Quadratic curves of small integers: some certified minimal, some
+    /// not (equal points, collinear ones).
+    fn pool() -> impl Strategy<Value = Vec<String>> {
+        let curve = (prop::array::uniform3(-2i32..3), 1i32..4).prop_map(|(x, w)| {
+            format!(
+                r#"{{"kind": "curve", "points": [[{}], [{}], [{}]], "weights": [1, {w}, 1]}}"#,
+                x[0], x[1], x[2]
+            )
+        });
+        prop::collection::vec(curve, 1..6)
+    }
+
+    /// `key_chunk` over `records` in chunks of `chunk`, with a table of
+    /// `2^log2` slots: the keys and the work charged.
+    fn keyed(records: &[Record], chunk: usize, log2: u32) -> (Vec<String>, u64) {
+        limits::with_limits(Limits::DEFAULT, || {
+            let mut recent = RecentKeys::new(log2);
+            let mut keys = Vec::new();
+            for (c, part) in records.chunks(chunk).enumerate() {
+                keys.extend(key_chunk("key", c * chunk, part, &mut recent, text_of).unwrap());
+            }
+            (keys, limits::charged())
+        })
+    }
+
+    proptest! {
+        #[test]
+        fn a_small_table_gives_every_record_its_own_key(
+            pool in pool(),
+            picks in prop::collection::vec(any::<prop::sample::Index>(), 1..40),
+            chunk in 1usize..9,
+            log2 in 0u32..3,
+        ) {
+            let records: Vec<Record> = picks
+                .iter()
+                .enumerate()
+                .map(|(k, i)| Record::Line(k + 1, i.get(&pool).clone()))
+                .collect();
+            let plain: Vec<String> = records
+                .iter()
+                .map(|r| text_of(Member::read(r).unwrap()).unwrap())
+                .collect();
+            let work = |r: &Record| key_work(&Member::read(r).unwrap()).unwrap();
+            let every: u64 = records.iter().map(work).sum();
+            let distinct: HashMap<String, u64> =
+                records.iter().map(|r| (r.text().into_owned(), work(r))).collect();
+            let (keys, charged) = keyed(&records, chunk, log2);
+            prop_assert_eq!(keys, plain);
+            // Each record is charged at most once, each distinct text at least once.
+            prop_assert!(charged <= every);
+            prop_assert!(charged >= distinct.values().sum::<u64>());
+        }
+    }
+
+    #[test]
+    fn a_repeated_record_is_keyed_and_charged_once() {
+        let text = r#"{"kind": "curve", "points": [[0], [1], [3]], "weights": [1, 2, 1]}"#;
+        let records: Vec<Record> = (1..=50).map(|n| Record::Line(n, text.into())).collect();
+        let one = key_work(&Member::read(&records[0]).unwrap()).unwrap();
+        // Across chunks (through the table) and within one chunk.
+        for chunk in [1, 7, 50] {
+            assert_eq!(keyed(&records, chunk, 0).1, one);
+        }
     }
 }

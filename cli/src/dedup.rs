@@ -16,14 +16,15 @@
 //! which re-checks every grouping exactly; it keeps each representative's
 //! text and each witness until the end.
 
-use super::bulk::{key_chunk, BulkArgs, KeyCache, Member, Out, Progress, CHUNK};
+use super::bulk::{for_each_chunk_ahead, key_chunk, BulkArgs, Member, Out, Progress};
+use crate::recent::{RecentKeys, RECENT_SLOTS_LOG2};
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::coincide::canonical::{
     canonical_key, key_digest, CanonicalKey, Deduper, KeyDigest,
 };
 use exact_bezier::coincide::{coincide, Coincidence, Options};
 use exact_bezier::io::coincidence_to_json;
-use exact_bezier::io::{for_each_chunk, JsonScalar, Record};
+use exact_bezier::io::{JsonScalar, Record};
 use exact_bezier::limits;
 use exact_bezier::Error;
 use rayon::prelude::*;
@@ -69,7 +70,12 @@ impl Witnesses {
                 self.reps.push(r.text().into_owned().into_boxed_str());
             }
         }
-        let read: Vec<Result<Member, Error>> = records.par_iter().map(Member::read).collect();
+        // Read under the command's limits (a worker's own are the defaults).
+        let command_limits = limits::current();
+        let read: Vec<Result<Member, Error>> = records
+            .par_iter()
+            .map(|r| limits::with_limits(command_limits, || Member::read(r)))
+            .collect();
         let mut patches = Vec::with_capacity(read.len());
         for (k, (p, &id)) in read.into_iter().zip(ids).enumerate() {
             let p = p?;
@@ -95,7 +101,8 @@ impl Witnesses {
                 if rep == first + k {
                     return Ok(None);
                 }
-                let a = Member::read(&Record::Line(rep + 1, reps[id].to_string()))?;
+                let rep_record = Record::Line(rep + 1, reps[id].to_string());
+                let a = limits::with_limits(command_limits, || Member::read(&rep_record))?;
                 let (coincident, reason, witness) = match (&a, p) {
                     (Member::Rational(a), Member::Rational(p)) => {
                         summary(coincide(a, p, Options::default())?)
@@ -140,9 +147,9 @@ fn dedup(a: &Args) -> Result<(), Error> {
     let progress = Progress::new(&a.bulk, &input);
     let mut d = Deduper::default();
     let mut witnesses = a.witness.then(Witnesses::default);
-    let mut cache = KeyCache::default();
-    for_each_chunk(reader, CHUNK, |first, records| {
-        let keyed = key_chunk("dedup", first, &records, &mut cache, |p| {
+    let mut recent = RecentKeys::new(RECENT_SLOTS_LOG2);
+    for_each_chunk_ahead(reader, |first, records| {
+        let keyed = key_chunk("dedup", first, &records, &mut recent, |p| {
             Ok(match &p {
                 Member::Small(s) => Keyed::Digest(KeyDigest::of_text(&s.key_text()?)),
                 Member::Rational(q) => Keyed::Digest(key_digest(q)?),

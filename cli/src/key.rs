@@ -4,9 +4,9 @@
 //! DuckDB, Spark, `sort`) gives the classes of `dedup`; see
 //! `docs/bulk_dedup.md`.
 
-use super::bulk::{key_chunk, BulkArgs, KeyCache, Member, Out, Progress, CHUNK};
+use super::bulk::{for_each_chunk_ahead, key_chunk, BulkArgs, Member, Out, Progress};
+use crate::recent::{RecentKeys, RECENT_SLOTS_LOG2};
 use exact_bezier::coincide::canonical::{canonical_key, canonical_text, KeyDigest};
-use exact_bezier::io::for_each_chunk;
 use exact_bezier::Error;
 use serde_json::json;
 
@@ -63,21 +63,20 @@ fn keys(a: &Args) -> Result<(), Error> {
     let progress = Progress::new(&a.bulk, &input);
     let mut out = Out::new();
     let mut done = 0;
-    let mut cache = KeyCache::default();
-    let n = for_each_chunk(reader, CHUNK, |first, records| {
-        let lines = key_chunk("key", first, &records, &mut cache, |p| {
+    let mut recent = RecentKeys::new(RECENT_SLOTS_LOG2);
+    let n = for_each_chunk_ahead(reader, |first, records| {
+        let lines = key_chunk("key", first, &records, &mut recent, |p| {
             let text = member_text(&p)?;
             Ok((KeyDigest::of_text(&text), a.text.then_some(text)))
         })?;
         for (k, (digest, text)) in lines.into_iter().enumerate() {
             let index = a.first_index + (first + k) as u64;
-            let line = match text {
-                None => format!("{{\"index\":{index},\"key\":\"{digest}\"}}"),
-                Some(t) => {
-                    json!({"index": index, "key": digest.to_string(), "text": t}).to_string()
-                }
-            };
-            out.line(&line);
+            match text {
+                None => out.line_args(format_args!("{{\"index\":{index},\"key\":\"{digest}\"}}")),
+                Some(t) => out.line(
+                    &json!({"index": index, "key": digest.to_string(), "text": t}).to_string(),
+                ),
+            }
         }
         done += records.len();
         progress.update(&input, done);

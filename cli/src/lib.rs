@@ -42,6 +42,7 @@ mod mesh;
 mod patch_ops;
 mod plot;
 mod prove;
+mod recent;
 mod reduce;
 mod session;
 mod standardize;

@@ -278,7 +278,7 @@ pub(crate) fn emit_raw(text: &str) {
 
 /// This run's standard input as a reader: the given bytes of an in-process
 /// run, or the process's standard input.
-pub(crate) fn stdin_reader() -> Box<dyn Read> {
+pub(crate) fn stdin_reader() -> Box<dyn Read + Send> {
     let given = SESSION.with(|s| {
         s.borrow_mut()
             .last_mut()

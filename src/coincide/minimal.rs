@@ -475,35 +475,79 @@ fn coprime_mod_p(polys: &[BPoly<BigRational>]) -> bool {
 
 /// No common factor of positive degree in the direction whose specialized
 /// components `spec` gives (degree `deg` expected).
-fn coprime_in(comps: &[Vec<Vec<Fp>>], deg: usize, spec: impl Fn(&[Vec<Fp>]) -> UPoly<Fp>) -> bool {
+fn coprime_in(comps: &[Vec<Vec<Fp>>], deg: usize, spec: impl Fn(&[Vec<Fp>]) -> Vec<Fp>) -> bool {
     if deg == 0 {
         return true;
     }
-    let polys: Vec<UPoly<Fp>> = comps.iter().map(|g| spec(g)).collect();
-    if !polys.iter().any(|p| p.degree() == Some(deg)) {
+    let polys: Vec<Vec<Fp>> = comps.iter().map(|g| spec(g)).collect();
+    if !polys.iter().any(|p| p.len() == deg + 1) {
         return false;
     }
-    let mut g = UPoly::zero();
-    for p in &polys {
-        g = g.gcd(p);
-        if g.degree() == Some(0) {
+    let mut g = Vec::new();
+    for p in polys {
+        g = pseudo_gcd(g, p);
+        if g.len() == 1 {
             return true;
         }
     }
     false
 }
 
-fn specialize_v(grid: &[Vec<Fp>], v0: Fp) -> UPoly<Fp> {
-    UPoly::new(grid.iter().map(|row| horner(row.iter(), v0)).collect())
+/// A polynomial over F_p (coefficients from the constant up, no trailing
+/// zeros) with the degree of `gcd(a, b)`: Euclid's algorithm with pseudo-
+/// remainders ([`pseudo_rem`]), which need no inverse modulo p (each is a
+/// remainder times a nonzero constant, so the sequence's degrees are those
+/// of the monic one; von zur Gathen & Gerhard, *Modern Computer Algebra*,
+/// §6.12).
+fn pseudo_gcd(mut a: Vec<Fp>, mut b: Vec<Fp>) -> Vec<Fp> {
+    while !b.is_empty() {
+        pseudo_rem(&mut a, &b);
+        std::mem::swap(&mut a, &mut b);
+    }
+    a
 }
 
-fn specialize_u(grid: &[Vec<Fp>], u0: Fp) -> UPoly<Fp> {
+/// `a ← lc(b)^k · (a mod b)` for `b ≠ 0`: while `deg a ≥ deg b`,
+/// `a ← lc(b)·a − lc(a)·x^(deg a − deg b)·b` (the leading term cancels).
+fn pseudo_rem(a: &mut Vec<Fp>, b: &[Fp]) {
+    let lb = b[b.len() - 1];
+    while a.len() >= b.len() {
+        let la = a[a.len() - 1];
+        let shift = a.len() - b.len();
+        for x in a.iter_mut() {
+            *x = *x * lb;
+        }
+        for (x, &y) in a[shift..].iter_mut().zip(b) {
+            *x = *x - la * y;
+        }
+        trim(a);
+    }
+}
+
+/// The coefficients of `grid` at `v = v0`, as a polynomial in `u` (no
+/// trailing zeros).
+fn specialize_v(grid: &[Vec<Fp>], v0: Fp) -> Vec<Fp> {
+    let mut c = grid.iter().map(|row| horner(row.iter(), v0)).collect();
+    trim(&mut c);
+    c
+}
+
+/// The coefficients of `grid` at `u = u0`, as a polynomial in `v` (no
+/// trailing zeros).
+fn specialize_u(grid: &[Vec<Fp>], u0: Fp) -> Vec<Fp> {
     let n = grid.first().map_or(0, Vec::len);
-    UPoly::new(
-        (0..n)
-            .map(|q| horner(grid.iter().map(|r| &r[q]), u0))
-            .collect(),
-    )
+    let mut c = (0..n)
+        .map(|q| horner(grid.iter().map(|r| &r[q]), u0))
+        .collect();
+    trim(&mut c);
+    c
+}
+
+/// Drop the trailing zeros of `c`.
+fn trim(c: &mut Vec<Fp>) {
+    while c.last().is_some_and(Fp::is_zero) {
+        c.pop();
+    }
 }
 
 /// `Σ_k c_k x^k` for the coefficients `c_0, c_1, …` (Horner's rule).
@@ -654,6 +698,43 @@ mod tests {
     use crate::bernstein::bernstein_to_power;
     use crate::samples::rect_1x2 as sample;
     type Q = BigRational;
+
+    /// Polynomials over F_p of degree < 4, from small coefficients (so
+    /// that common factors are frequent), times a planted factor of degree
+    /// `planted`.
+    fn fp_polys() -> impl proptest::strategy::Strategy<Value = Vec<Vec<Fp>>> {
+        use proptest::prelude::*;
+        let poly = || prop::collection::vec(0u64..3, 0..4);
+        (prop::collection::vec(poly(), 1..4), poly()).prop_map(|(ps, factor)| {
+            let f = UPoly::new(factor.into_iter().map(Fp::new).collect());
+            let f = if f.is_zero() {
+                UPoly::constant(Fp::new(1))
+            } else {
+                f
+            };
+            ps.into_iter()
+                .map(|p| {
+                    UPoly::new(p.into_iter().map(Fp::new).collect())
+                        .mul(&f)
+                        .coeffs()
+                        .to_vec()
+                })
+                .collect()
+        })
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn pseudo_remainders_find_the_gcd_degree_of_monic_euclid(polys in fp_polys()) {
+            let mut monic = UPoly::zero();
+            let mut pseudo = Vec::new();
+            for p in &polys {
+                monic = monic.gcd(&UPoly::new(p.clone()));
+                pseudo = pseudo_gcd(pseudo, p.clone());
+                proptest::prop_assert_eq!(monic.degree(), pseudo.len().checked_sub(1));
+            }
+        }
+    }
 
     #[test]
     fn round_trip_power_bernstein() {

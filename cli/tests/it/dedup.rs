@@ -350,3 +350,42 @@ fn bad_records_are_located_and_stop_with_code_2() {
     );
     std::fs::remove_file(&empty).unwrap();
 }
+
+/// `--max-digits` reaches the readers on every worker thread: a record of
+/// 300 digits among others is refused under 20 and accepted under 5000,
+/// and one of 2000 digits (over the default) is accepted under 5000.
+#[test]
+fn max_digits_holds_on_every_thread() {
+    let plain = r#"{"kind": "curve", "points": [[0], [1], [3]], "weights": [1, 2, 1]}"#;
+    let long = |digits: usize| {
+        format!(
+            r#"{{"kind": "curve", "points": [[0], [1], [{}]], "weights": [1, 2, 1]}}"#,
+            "9".repeat(digits)
+        )
+    };
+    for digits in [300, 2000] {
+        let path = temp(&format!("digits-{digits}.jsonl"));
+        std::fs::write(&path, format!("{plain}\n{}\n{plain}\n", long(digits))).unwrap();
+        let p = path.to_str().unwrap();
+        for command in ["key", "dedup"] {
+            for threads in ["1", "2"] {
+                let (code, _, err) = run_with_threads(&["--max-digits", "20", command, p], threads);
+                assert_eq!(code, 2, "{command} {digits} digits: {err}");
+                assert!(
+                    err.contains(&format!(
+                        "line 2: over a limit: a number of {digits} digits"
+                    )),
+                    "{err}"
+                );
+                // `dedup --witness` also re-reads the representatives on the workers.
+                let (args, lines) = match command {
+                    "key" => (vec!["--max-digits", "5000", "key", p], 3),
+                    _ => (vec!["--max-digits", "5000", "dedup", p, "--witness"], 2),
+                };
+                let (code, out, err) = run_with_threads(&args, threads);
+                assert_eq!((code, out.lines().count()), (0, lines), "{err}");
+            }
+        }
+        std::fs::remove_file(&path).unwrap();
+    }
+}

@@ -21,7 +21,7 @@ use crate::limits::Size;
 use crate::rect::RectPatch;
 use crate::Patch;
 use num_rational::BigRational;
-use num_traits::{ToPrimitive, Zero};
+use num_traits::ToPrimitive;
 use std::borrow::Cow;
 use std::cmp::Ordering;
 
@@ -229,14 +229,23 @@ impl Split<'_> {
         let a = powers(vm, if vm > 0 { w(1, 0) } else { w00 })?;
         let b = powers(vn, if vn > 0 { w(0, 1) } else { w00 })?;
         let inv00 = w00.recip_positive();
-        let rows = a
-            .iter()
-            .map(|ai| inv00.mul(*ai))
-            .collect::<Option<Vec<Small>>>()?;
-        positions((vm, vn))
-            .map(|(i, j)| w(i, j).mul(rows[i])?.mul(b[j]))
-            .collect()
+        let rows = try_collect(a.len(), a.iter().map(|ai| inv00.mul(*ai)))?;
+        try_collect(
+            (vm + 1) * (vn + 1),
+            positions((vm, vn)).map(|(i, j)| w(i, j).mul(rows[i])?.mul(b[j])),
+        )
     }
+}
+
+/// The values of `items` (`len` of them) if none is `None`: one allocation
+/// of `len` (collecting into `Option<Vec>` cannot size its vector ahead and
+/// grows it step by step).
+fn try_collect<T>(len: usize, items: impl Iterator<Item = Option<T>>) -> Option<Vec<T>> {
+    let mut out = Vec::with_capacity(len);
+    for x in items {
+        out.push(x?);
+    }
+    Some(out)
 }
 
 fn positions((m, n): (usize, usize)) -> impl Iterator<Item = (usize, usize)> {
@@ -315,17 +324,6 @@ fn rows<T: Clone>(v: &[T], cols: usize) -> Vec<Vec<T>> {
     v.chunks(cols).map(<[T]>::to_vec).collect()
 }
 
-/// `x mod p` for a machine fraction, or `None` when `p` divides its
-/// denominator (`p = 2⁶¹ − 1`, as [`Fp::from_rational_checked`]).
-fn mod_p(x: Small) -> Option<Fp> {
-    let p = Fp::from_i128(x.p);
-    if x.q == 1 {
-        return Some(p);
-    }
-    let q = Fp::from_i128(x.q);
-    (!q.is_zero()).then(|| p / q)
-}
-
 /// Bits of a machine fraction as [`limits::bits`](crate::limits::bits)
 /// counts them: the numerator's and the denominator's bit lengths.
 fn bit_len(x: Small) -> u64 {
@@ -383,14 +381,13 @@ impl SmallPatch {
         if !fits {
             return None;
         }
-        let coords = coords
-            .iter()
-            .map(|&x| Small::reduced(x))
-            .collect::<Option<Vec<_>>>()?;
-        let weights = weights
-            .iter()
-            .map(|&w| Small::reduced(w).filter(|w| w.p > 0))
-            .collect::<Option<Vec<_>>>()?;
+        let coords = try_collect(coords.len(), coords.iter().map(|&x| Small::reduced(x)))?;
+        let weights = try_collect(
+            weights.len(),
+            weights
+                .iter()
+                .map(|&w| Small::reduced(w).filter(|w| w.p > 0)),
+        )?;
         Some(SmallPatch {
             curve,
             shape,
@@ -436,24 +433,34 @@ impl SmallPatch {
     }
 
     /// The image modulo `p` of the homogeneous net, or `None` when `p`
-    /// divides a denominator.
+    /// divides a denominator (the denominators inverted together,
+    /// [`Fp::invert_all`]).
     fn homogeneous_mod_p(&self) -> Option<Net<Fp>> {
+        let numbers = || self.weights.iter().chain(&self.coords);
+        let mut image: Vec<Fp> = numbers().map(|x| Fp::from_i128(x.p)).collect();
+        // The denominators other than 1, inverted together.
+        let (at, mut inverse): (Vec<usize>, Vec<Fp>) = numbers()
+            .enumerate()
+            .filter(|(_, x)| x.q != 1)
+            .map(|(k, x)| (k, Fp::from_i128(x.q)))
+            .unzip();
+        if !Fp::invert_all(&mut inverse) {
+            return None;
+        }
+        for (k, inv) in at.into_iter().zip(inverse) {
+            image[k] = image[k] * inv;
+        }
+        let (weights, coords) = image.split_at(self.weights.len());
+        let mut coords = coords.iter();
         let cols = self.shape.1 + 1;
-        let points = self
-            .weights
-            .iter()
-            .zip(self.coords.chunks_exact(self.dim))
-            .map(|(&w, x)| {
-                let w = mod_p(w)?;
-                let coords = x
-                    .iter()
-                    .map(|&c| mod_p(c).map(|c| c * w))
-                    .chain(std::iter::once(Some(w)))
-                    .collect::<Option<Vec<Fp>>>()?;
-                Some(HPoint { coords })
-            })
-            .collect::<Option<Vec<_>>>()?;
-        let mut points = points.into_iter();
+        let mut points = weights.iter().map(|&w| HPoint {
+            coords: coords
+                .by_ref()
+                .take(self.dim)
+                .map(|&c| c * w)
+                .chain(std::iter::once(w))
+                .collect(),
+        });
         Some(
             (0..=self.shape.0)
                 .map(|_| points.by_ref().take(cols).collect())
@@ -561,6 +568,12 @@ mod tests {
                 Some(x) => prop_assert_eq!(big(x), exact),
                 None => prop_assert!(Small::of(&exact).is_none()),
             }
+        }
+
+        #[test]
+        fn the_machine_certificate_is_that_of_the_net_over_q(mut s in small_patch()) {
+            let (net, _) = crate::coincide::net_of(&s.to_patch().unwrap()).unwrap();
+            prop_assert_eq!(s.certify(), crate::coincide::minimal::certified_minimal(&net));
         }
 
         #[test]
