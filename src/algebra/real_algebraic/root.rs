@@ -1,7 +1,8 @@
 //! The general representation: a root of a square-free polynomial over Q
 //! given by an isolating interval with rational endpoints, refined by
 //! bisection on demand (the refinement is cached behind a mutex, so clones
-//! share it).
+//! share it). The Sturm sequence is built only when the root's index among
+//! all real roots is asked for.
 //!
 //! Invariant: `poly` is monic and square-free, `lo < hi`, neither endpoint
 //! is a root, `poly` has exactly one root in `(lo, hi)`, and that root is
@@ -10,34 +11,26 @@
 use super::polys::{count_roots, split_point, sturm_sequence, QPoly, SignPoly};
 use num_rational::BigRational;
 use num_traits::Signed;
-use std::sync::Mutex;
+use std::sync::{Mutex, OnceLock};
 
 /// An irrational real root of a square-free polynomial, isolated.
 #[derive(Debug)]
 pub(crate) struct RootNum {
     poly: QPoly,
-    /// The Sturm sequence; its first term is `poly` as a [`SignPoly`].
-    sturm: Vec<SignPoly>,
+    /// `poly` as primitive integers, for signs at the bisection points.
+    sign: SignPoly,
+    /// The Sturm sequence of `poly`, built on first use ([`RootNum::index`]).
+    sturm: OnceLock<Vec<SignPoly>>,
     interval: Mutex<(BigRational, BigRational)>,
 }
 
 impl RootNum {
     /// The root of `poly` (monic, square-free) isolated in `(lo, hi)`.
     pub(crate) fn new(poly: QPoly, lo: BigRational, hi: BigRational) -> Self {
-        let sturm = sturm_sequence(&poly);
-        Self::with_sturm(poly, sturm, lo, hi)
-    }
-
-    /// As [`RootNum::new`] with the Sturm sequence of `poly` already known.
-    pub(crate) fn with_sturm(
-        poly: QPoly,
-        sturm: Vec<SignPoly>,
-        lo: BigRational,
-        hi: BigRational,
-    ) -> Self {
         RootNum {
+            sign: SignPoly::new(&poly),
             poly,
-            sturm,
+            sturm: OnceLock::new(),
             interval: Mutex::new((lo, hi)),
         }
     }
@@ -56,7 +49,7 @@ impl RootNum {
     fn bisect(&self) {
         let mut guard = self.interval.lock().expect("not poisoned");
         let (lo, hi) = guard.clone();
-        let p = &self.sturm[0];
+        let p = &self.sign;
         let mid = split_point(p, &lo, &hi);
         *guard = if p.sign_at(&lo) == p.sign_at(&mid) {
             (mid, hi)
@@ -96,6 +89,7 @@ impl RootNum {
     pub(crate) fn index(&self) -> usize {
         let bound = super::polys::cauchy_bound(&self.poly);
         let (lo, _) = self.interval();
-        count_roots(&self.sturm, &-bound, &lo)
+        let sturm = self.sturm.get_or_init(|| sturm_sequence(&self.poly));
+        count_roots(sturm, &-bound, &lo)
     }
 }
