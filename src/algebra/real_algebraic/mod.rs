@@ -43,6 +43,7 @@ pub(crate) mod radical;
 pub(crate) mod root;
 pub mod text;
 
+use crate::algebra::int::common_denominator;
 use crate::algebra::scalar::{Field, Ordered, Roots, Scalar};
 use crate::algebra::upoly::UPoly;
 use crate::error::Error;
@@ -298,7 +299,7 @@ impl RealAlgebraic {
             return Vec::new();
         }
         let known = polys::Isolator::new(p);
-        let bound = BigRational::from_integer(polys::cauchy_bound(&known.sf).ceil().to_integer());
+        let bound = BigRational::from_integer(known.sign.root_bound());
         let lo = if *a > -bound.clone() {
             a.clone()
         } else {
@@ -689,9 +690,8 @@ impl RealAlgebraic {
         Ok(self.rational_function_root(&Self::value_polynomial(&p, num, den), num, den))
     }
 
-    /// `R(x) = Res_y(p(y), x·den(y) − num(y)) = ∏_{p(α) = 0} (x·den(α) −
-    /// num(α))` (Poisson's formula, `p` made monic), prepared for
-    /// isolation: its roots are the values `num(α)/den(α)` at the roots `α`
+    /// `R(x) = ∏_{p(α) = 0} (x·den(α) − num(α))` (a resultant by Poisson's
+    /// formula, up to a constant), prepared for isolation: its roots are the values `num(α)/den(α)` at the roots `α`
     /// of `p`, which must be coprime to `den`. `num` and `den` are first
     /// reduced modulo `p`; `R` is interpolated from its values at `x = 0 …
     /// deg p`, each a norm modulo `p` ([`polys::norm`]: one pseudo-division
@@ -703,15 +703,21 @@ impl RealAlgebraic {
         num: &UPoly<BigRational>,
         den: &UPoly<BigRational>,
     ) -> polys::Isolator {
-        let p = p.monic();
-        // num(α), den(α) only depend on num, den modulo p.
-        let reduce = |c: &UPoly<BigRational>| c.div_rem(&p).expect("p is non-zero").1;
+        // num(α), den(α) only depend on num, den modulo p; one denominator
+        // for both scales R by a constant.
+        let reduce = |c: &UPoly<BigRational>| c.div_rem(p).expect("p is non-zero").1;
         let (num_p, den_p) = (reduce(num), reduce(den));
-        let d = p.degree().unwrap_or(0);
-        let samples: Vec<BigRational> = (0..=d)
+        let len = num_p.coeffs().len().max(den_p.coeffs().len());
+        let both: Vec<BigRational> = (0..len)
+            .flat_map(|i| [&num_p, &den_p].map(|c| c.coeffs().get(i).cloned().unwrap_or_default()))
+            .collect();
+        let (ints, _): (Vec<BigInt>, _) = common_denominator(&both);
+        let big = polys::primitive_integer(p);
+        let samples: Vec<BigRational> = (0..=p.degree().unwrap_or(0))
             .map(|x| {
-                let x = BigRational::from_integer(x.into());
-                polys::norm(&p, &den_p.scale(&x).sub(&num_p))
+                let x = BigInt::from(x);
+                let h: Vec<BigInt> = ints.chunks(2).map(|c| &x * &c[1] - &c[0]).collect();
+                polys::norm(&big, &h)
             })
             .collect();
         polys::Isolator::new(&polys::interpolate(&samples))

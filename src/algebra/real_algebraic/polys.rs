@@ -207,6 +207,14 @@ impl SignPoly {
         )
     }
 
+    /// An integer `B` with every real root in `(−B, B)`: Cauchy's bound
+    /// `1 + max |c_i / c_d|`, rounded up.
+    pub(crate) fn root_bound(&self) -> BigInt {
+        let lead = self.0.last().map(BigInt::abs).unwrap_or_else(BigInt::one);
+        let max = self.0.iter().map(BigInt::abs).max().unwrap_or_default();
+        max / lead + 2
+    }
+
     /// The sign of `p(x)`: −1, 0 or 1.
     pub(crate) fn sign_at(&self, x: &BigRational) -> i32 {
         let (a, b) = (x.numer(), x.denom());
@@ -358,39 +366,39 @@ pub(crate) fn resultant(a: &QPoly, b: &QPoly) -> BigRational {
     sign * b.lead().expect("non-zero").pow((m - k) as i32) * resultant(b, &r)
 }
 
-/// The norm `N(h) = ∏_{p(α) = 0} h(α)` (roots with multiplicity, over C)
-/// of `h` modulo the monic `p` of degree `d`, which is `Res(p, h)`
-/// (Poisson's formula). In integers, with `P = L·p` primitive, `H = D·h`
-/// of degree `k ≥ 1` and the pseudo-remainder `R = lc(H)^{d−k+1}·P − Q·H`
-/// (equal to `lc(H)^{d−k+1}·P(β)` at each root `β` of `H`):
+/// The norm `∏_{p(α) = 0} H(α)` (roots with multiplicity, over C) of the
+/// integer polynomial `H` modulo the integer polynomial `P` of degree `d`
+/// with leading coefficient `L` (coefficients lowest power first), which is
+/// `Res(P, H) / L^k` for `k = deg H` (Poisson's formula). With the
+/// pseudo-remainder `R = lc(H)^{d−k+1}·P − Q·H` (equal to
+/// `lc(H)^{d−k+1}·P(β)` at each root `β` of `H`):
 ///
 /// ```text
 /// Res(H, R) = lc(H)^{deg R + k(d−k+1)} ∏_β P(β),   Res(P, H) = (−1)^{dk} lc(H)^d ∏_β P(β)
-/// N(h) = Res(P, H) / (L^k D^d)
 /// ```
 ///
 /// so only one pseudo-division of `P` by the (low-degree) `H` and a
 /// Sylvester determinant of size below `2k` are needed, not one of size
 /// `d + k`.
-pub(crate) fn norm(p: &QPoly, h: &QPoly) -> BigRational {
-    let d = p.degree().unwrap_or(0);
-    let Some(k) = h.degree() else {
+pub(crate) fn norm(p: &[BigInt], h: &[BigInt]) -> BigRational {
+    let d = p.len() - 1;
+    let Some(k) = h.iter().rposition(|c| !c.is_zero()) else {
         return BigRational::zero();
     };
+    let lc = &h[k];
+    let lead = BigRational::from_integer(p[d].clone());
     if k == 0 {
-        return h.coeffs()[0].pow(d as i32);
+        return BigRational::from_integer(lc.pow(d as u32));
     }
-    let big = primitive_integer(p);
-    let (hs, den): (Vec<BigInt>, _) = common_denominator(h.coeffs());
-    let lc = hs[k].clone();
-    meter((d + 1 - k.min(d)) * (k + 1), &[p, h]);
-    let mut r = big.clone();
+    let bits = p.iter().chain(h).map(BigInt::bits).max().unwrap_or(0);
+    crate::limits::meter(((d + 1).saturating_sub(k) * (k + 1)) as u64, bits);
+    let mut r = p.to_vec();
     for top in (k..=d).rev() {
         let lead = std::mem::take(&mut r[top]);
         for c in r[..top].iter_mut() {
-            *c *= &lc;
+            *c *= lc;
         }
-        for (j, b) in hs[..k].iter().enumerate() {
+        for (j, b) in h[..k].iter().enumerate() {
             r[top - k + j] -= &lead * b;
         }
     }
@@ -401,18 +409,15 @@ pub(crate) fn norm(p: &QPoly, h: &QPoly) -> BigRational {
     let Some(deg_r) = r.len().checked_sub(1) else {
         return BigRational::zero();
     };
-    let rat = |v: &[BigInt]| -> Vec<BigRational> {
-        v.iter()
-            .map(|c| BigRational::from_integer(c.clone()))
-            .collect()
-    };
-    let res_hr = crate::algebra::sylvester::rational_resultant(&rat(&hs), &rat(&r));
-    let steps = if d >= k { d - k + 1 } else { 0 };
+    let res_hr = crate::algebra::sylvester::integer_determinant(
+        crate::algebra::sylvester::sylvester_rows(&h[..=k], &r),
+    );
+    let steps = (d + 1).saturating_sub(k);
     let lc_pow = d as i64 - deg_r as i64 - (k * steps) as i64;
     let sign = if (d * k) % 2 == 1 { q(-1) } else { q(1) };
-    let lead = BigRational::from_integer(big[d].clone());
-    sign * res_hr * BigRational::from_integer(lc).pow(lc_pow as i32)
-        / (lead.pow(k as i32) * BigRational::from_integer(den).pow(d as i32))
+    sign * BigRational::from_integer(res_hr)
+        * BigRational::from_integer(lc.clone()).pow(lc_pow as i32)
+        / lead.pow(k as i32)
 }
 
 /// The polynomial of degree ≤ `D = values.len() − 1` through
@@ -609,26 +614,20 @@ mod tests {
     }
 
     #[test]
-    fn norm_is_the_resultant_with_a_monic_modulus() {
-        // p = (x − 1)(x − 2)(x + 3), h = 2x² − x + 5 and h = x/3 − 1/2.
-        let p = poly(&[6, -7, 0, 1]);
-        for h in [
-            poly(&[5, -1, 2]),
-            UPoly::new(vec![
-                BigRational::new((-1).into(), 2.into()),
-                BigRational::new(1.into(), 3.into()),
-            ]),
-        ] {
-            let want = [q(1), q(2), q(-3)]
-                .iter()
-                .fold(q(1), |acc, a| acc * h.eval(a));
-            assert_eq!(norm(&p, &h), want);
-            assert_eq!(norm(&p, &h), resultant(&p, &h));
+    fn norm_is_the_product_over_the_roots() {
+        // P = 2(x − 1)(x − 2)(x + 3), H = 2x² − x + 5 and H = 2x − 3.
+        let ints = |v: &[i64]| v.iter().map(|&x| BigInt::from(x)).collect::<Vec<_>>();
+        let p = ints(&[12, -14, 0, 2]);
+        for h in [ints(&[5, -1, 2]), ints(&[-3, 2])] {
+            let want = [1, 2, -3].iter().fold(BigInt::one(), |acc, &a| {
+                acc * h.iter().rev().fold(BigInt::zero(), |v, c| v * a + c)
+            });
+            assert_eq!(norm(&p, &h), BigRational::from_integer(want));
         }
-        // A modulus of lower degree than h, a constant h, a common root.
-        assert_eq!(norm(&poly(&[-2, 1]), &poly(&[1, 0, 0, 1])), q(9));
-        assert_eq!(norm(&p, &poly(&[3])), q(27));
-        assert_eq!(norm(&p, &poly(&[-2, 1])), q(0));
+        // A modulus of lower degree than H, a constant H, a common root.
+        assert_eq!(norm(&ints(&[-2, 1]), &ints(&[1, 0, 0, 1])), q(9));
+        assert_eq!(norm(&p, &ints(&[3])), q(27));
+        assert_eq!(norm(&p, &ints(&[-2, 1])), q(0));
     }
 
     #[test]

@@ -1,17 +1,17 @@
 //! The general representation: a root of a square-free polynomial over Q
 //! given by an isolating interval with rational endpoints, refined by
 //! bisection on demand (the refinement is cached behind a mutex, so clones
-//! share it). The Sturm sequence is built only when the root's index among
-//! all real roots is asked for.
+//! share it). Signs at rationals only: no Sturm sequence (the index counts
+//! the roots below by Descartes isolation).
 //!
 //! Invariant: `poly` is monic and square-free, `lo < hi`, neither endpoint
 //! is a root, `poly` has exactly one root in `(lo, hi)`, and that root is
 //! irrational (rational values are kept in the radical form).
 
-use super::polys::{count_roots, split_point, sturm_sequence, QPoly, SignPoly};
+use super::polys::{split_point, QPoly, SignPoly};
 use num_rational::BigRational;
 use num_traits::Signed;
-use std::sync::{Mutex, OnceLock};
+use std::sync::Mutex;
 
 /// An irrational real root of a square-free polynomial, isolated.
 #[derive(Debug)]
@@ -19,8 +19,6 @@ pub(crate) struct RootNum {
     poly: QPoly,
     /// `poly` as primitive integers, for signs at the bisection points.
     sign: SignPoly,
-    /// The Sturm sequence of `poly`, built on first use ([`RootNum::index`]).
-    sturm: OnceLock<Vec<SignPoly>>,
     interval: Mutex<(BigRational, BigRational)>,
 }
 
@@ -30,7 +28,6 @@ impl RootNum {
         RootNum {
             sign: SignPoly::new(&poly),
             poly,
-            sturm: OnceLock::new(),
             interval: Mutex::new((lo, hi)),
         }
     }
@@ -85,11 +82,11 @@ impl RootNum {
     }
 
     /// How many real roots of `poly` are smaller than this one (the `k` of
-    /// `CRootOf(poly, k)`).
+    /// `CRootOf(poly, k)`): the roots isolated in `(−B, lo)` by Descartes
+    /// counts, `B` a root bound (neither end is a root).
     pub(crate) fn index(&self) -> usize {
-        let bound = super::polys::cauchy_bound(&self.poly);
+        let bound = num_rational::BigRational::from_integer(-self.sign.root_bound());
         let (lo, _) = self.interval();
-        let sturm = self.sturm.get_or_init(|| sturm_sequence(&self.poly));
-        count_roots(sturm, &-bound, &lo)
+        super::descartes::isolate(&self.sign, &bound, &lo).len()
     }
 }
