@@ -123,4 +123,30 @@ mod tests {
         assert_eq!(isolate(&sign, &ratio(0, 1), &ratio(1, 1)).len(), 2);
         assert_eq!(variations(sign.coeffs(), &ratio(3, 1), &ratio(9, 1)), 0);
     }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+        /// Descartes isolation finds the roots Sturm's theorem counts, one
+        /// per interval, on random integer polynomials of degree ≤ 8.
+        #[test]
+        fn descartes_isolation_matches_sturm_counts(
+            c in proptest::collection::vec(-20i64..=20, 2..=9),
+            a in -4i64..=3,
+            width in 1i64..=5,
+        ) {
+            let p = poly(&c);
+            proptest::prop_assume!(p.degree().unwrap_or(0) > 0);
+            let sf = crate::algebra::real_algebraic::polys::square_free_part(&p);
+            let sign = SignPoly::new(&sf);
+            let (a, b) = (ratio(a, 1), ratio(a + width, 1));
+            proptest::prop_assume!(sign.sign_at(&a) != 0 && sign.sign_at(&b) != 0);
+            let seq = sturm_sequence(&sf);
+            let found = isolate(&sign, &a, &b);
+            proptest::prop_assert_eq!(found.len(), count_roots(&seq, &a, &b));
+            for (lo, hi) in &found {
+                proptest::prop_assert_eq!(count_roots(&seq, lo, hi), 1);
+            }
+        }
+    }
 }

@@ -734,7 +734,7 @@ impl RealAlgebraic {
         num: &UPoly<BigRational>,
         den: &UPoly<BigRational>,
     ) -> Self {
-        let wide = polys::cauchy_bound(&known.sf) + BigRational::one();
+        let wide = BigRational::from_integer(known.sign.root_bound());
         Self::isolate_enclosed(known, |prec| {
             let (lo, hi) = self.enclosure(prec);
             let (n_lo, n_hi) = polys::eval_on_interval(num, &lo, &hi);

@@ -638,4 +638,28 @@ mod tests {
         let p = product_poly(&poly(&[-2, 0, 1]), &poly(&[-3, 0, 1]));
         assert_eq!(p.monic(), poly(&[36, 0, -12, 0, 1]));
     }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+        /// The norm by pseudo-division equals the Sylvester determinant of
+        /// the monic modulus and `h` (the formula it replaces).
+        #[test]
+        fn norm_matches_the_sylvester_resultant(
+            p in proptest::collection::vec(-9i64..=9, 2..=10),
+            h in proptest::collection::vec(-9i64..=9, 1..=5),
+        ) {
+            let (pq, hq) = (poly(&p), poly(&h));
+            proptest::prop_assume!(pq.degree().unwrap_or(0) > 0 && !hq.is_zero());
+            let monic = pq.monic();
+            let mut hc = hq.coeffs().to_vec();
+            if hc.len() == 1 {
+                hc.push(q(0)); // formal degree 1: Res(p, c) = c^d for monic p
+            }
+            let want = crate::algebra::sylvester::resultant(monic.coeffs(), &hc);
+            let ints = |v: &QPoly| v.coeffs().iter().map(|c| c.to_integer()).collect::<Vec<_>>();
+            let got = norm(&ints(&pq), &ints(&hq));
+            proptest::prop_assert_eq!(got, want);
+        }
+    }
 }
