@@ -207,12 +207,27 @@ impl SignPoly {
         )
     }
 
-    /// An integer `B` with every real root in `(−B, B)`: Cauchy's bound
-    /// `1 + max |c_i / c_d|`, rounded up.
+    /// A power of two `B` with every root (complex too) in `|z| < B`, by
+    /// Fujiwara's bound `|z| ≤ 2 max_i |c_{d−i}/c_d|^{1/i}` on bit lengths
+    /// (`|c_{d−i}/c_d| < 2^{e_i}`, `e_i = bits c_{d−i} − bits c_d + 1`): far
+    /// below Cauchy's `1 + max |c_i/c_d|` when the coefficients are large,
+    /// so isolation from `−B` starts near the roots.
+    ///
+    /// Reference: Fujiwara, *Über die obere Schranke des absoluten Betrages
+    /// der Wurzeln einer algebraischen Gleichung*, Tôhoku Math. J. 10
+    /// (1916) 167–171.
     pub(crate) fn root_bound(&self) -> BigInt {
-        let lead = self.0.last().map(BigInt::abs).unwrap_or_else(BigInt::one);
-        let max = self.0.iter().map(BigInt::abs).max().unwrap_or_default();
-        max / lead + 2
+        let d = self.0.len().saturating_sub(1);
+        let lead_bits = self.0.last().map_or(0, BigInt::bits) as i64;
+        let e = (1..=d)
+            .filter(|&i| !self.0[d - i].is_zero())
+            .map(|i| {
+                let x = self.0[d - i].bits() as i64 - lead_bits + 1;
+                -((-x).div_euclid(i as i64)) // ⌈x / i⌉
+            })
+            .max()
+            .unwrap_or(0);
+        BigInt::one() << (e + 2).max(0) as usize
     }
 
     /// The sign of `p(x)`: −1, 0 or 1.
