@@ -49,7 +49,7 @@ pub struct Args {
 
 /// Estimated `(operations, bits)` of the exact elimination for curves of
 /// degrees `m`, `n`: `D + 1 = 2mn + 1` Sylvester determinants of size
-/// `2n`, Sturm isolation of a degree-`D` polynomial (`D³`), on numbers of
+/// `2n`, root isolation of a degree-`D` polynomial (`D³`), on numbers of
 /// about `(m + n)·bits` bits. The `f64` search is charged these operations
 /// ([`limits::f64_work`]).
 fn intersect_cost(a: &Size, b: &Size) -> (u64, u64) {
@@ -62,14 +62,17 @@ fn intersect_cost(a: &Size, b: &Size) -> (u64, u64) {
     )
 }
 
-/// The exact work of the elimination: [`intersect_cost`]'s operations times
-/// `(mn)³/4096` for the roots, each an algebraic number of degree up to
-/// `mn` isolated, refined and substituted (calibrated,
-/// `cli/benches/cost_model.rs`: two cubics take 5 ms, two sextics 35 s).
+/// The exact work of the elimination: [`intersect_cost`]'s operations
+/// times `mn/64` (the `mn` roots, each an algebraic number of degree up to
+/// `mn` isolated by Descartes counts, its point's coordinates by `mn + 1`
+/// norms; calibrated, `cli/benches/cost_model.rs`, 2026-11-27: two cubics
+/// take 1.1 ms, two sextics 0.31 s, where the Sturm sequences and
+/// Sylvester value resultants before took 4.1 ms and 31 s and were
+/// charged `(mn)³/4096`).
 fn exact_cost(a: &Size, b: &Size) -> u64 {
     let (ops, bits) = intersect_cost(a, b);
-    let roots = (a.degree.0 as u64 * b.degree.0 as u64).saturating_pow(3);
-    limits::exact_work(ops.saturating_mul(roots).div_ceil(4096), bits)
+    let roots = a.degree.0 as u64 * b.degree.0 as u64;
+    limits::exact_work(ops.saturating_mul(roots).div_ceil(64), bits)
 }
 
 /// The work of the interval stage of `--filtered` (charged before it

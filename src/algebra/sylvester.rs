@@ -69,37 +69,23 @@ pub(crate) fn determinant<T: Field>(mut m: Vec<Vec<T>>) -> T {
     det
 }
 
-/// The determinant of a square matrix over Q, fraction-free: each row is
-/// scaled to integers by the lcm of its denominators, then Bareiss's
-/// elimination keeps every entry an integer (each division is exact):
+/// The determinant of a square integer matrix by Bareiss's fraction-free
+/// elimination: every entry stays an integer (each division is exact),
+/// no gcd per operation unlike Gaussian elimination over `BigRational`:
 ///
 /// ```text
-/// a_ij ← (a_ij a_kk − a_ik a_kj) / a_{k−1,k−1}      det = a_{n−1,n−1} / ∏ row scales
+/// a_ij ← (a_ij a_kk − a_ik a_kj) / a_{k−1,k−1}      det = a_{n−1,n−1}
 /// ```
-///
-/// No gcd per operation, unlike Gaussian elimination over `BigRational`.
 ///
 /// Reference: Bareiss, *Sylvester's identity and multistep
 /// integer-preserving Gaussian elimination*, Math. Comp. 22 (1968) 565–578.
-pub(crate) fn rational_determinant(m: Vec<Vec<BigRational>>) -> BigRational {
-    let n = m.len();
-    if n == 0 {
-        return BigRational::one();
-    }
-    let mut scale = BigInt::one();
-    let mut a: Vec<Vec<BigInt>> = m
-        .iter()
-        .map(|row| {
-            let (ints, l) = common_denominator(row);
-            scale *= l;
-            ints
-        })
-        .collect();
+pub(crate) fn integer_determinant(mut a: Vec<Vec<BigInt>>) -> BigInt {
+    let n = a.len();
     let mut negate = false;
     let mut prev = BigInt::one();
     for k in 0..n {
         let Some(p) = (k..n).find(|&r| !a[r][k].is_zero()) else {
-            return BigRational::zero();
+            return BigInt::zero();
         };
         if p != k {
             a.swap(p, k);
@@ -114,18 +100,22 @@ pub(crate) fn rational_determinant(m: Vec<Vec<BigRational>>) -> BigRational {
         }
         prev = a[k][k].clone();
     }
-    let det = BigRational::new(prev, scale);
     if negate {
-        -det
+        -prev
     } else {
-        det
+        prev
     }
+}
+
+/// The Sylvester matrix of `f`, `g` (formal degrees `len − 1`).
+pub(crate) fn sylvester_rows<T: Clone + Zero>(f: &[T], g: &[T]) -> Vec<Vec<T>> {
+    subresultant_rows(f, g, 0)
 }
 
 /// The rows of the `j`-th subresultant matrix of `f`, `g` (coefficient
 /// slices, lowest power first, formal degrees `len − 1`), highest power
 /// first in each row.
-fn subresultant_rows<T: Field>(f: &[T], g: &[T], j: usize) -> Vec<Vec<T>> {
+fn subresultant_rows<T: Clone + Zero>(f: &[T], g: &[T], j: usize) -> Vec<Vec<T>> {
     let (m, n) = (f.len() - 1, g.len() - 1);
     let width = m + n - j;
     let shifted = |p: &[T], i: usize| {
@@ -155,11 +145,6 @@ pub fn resultant<T: Field>(f: &[T], g: &[T]) -> T {
     determinant(subresultant_rows(f, g, 0))
 }
 
-/// [`resultant`] over Q by the fraction-free [`rational_determinant`].
-pub(crate) fn rational_resultant(f: &[BigRational], g: &[BigRational]) -> BigRational {
-    rational_determinant(subresultant_rows(f, g, 0))
-}
-
 /// The coefficients `(S_{1,1}, S_{1,0})` of a linear polynomial that every
 /// common root of `f` and `g` satisfies, with `S_{1,1} ≠ 0` exactly when
 /// that root is unique: the first subresultant when both formal degrees
@@ -178,13 +163,27 @@ pub fn linear_eliminant<T: Field>(f: &[T], g: &[T]) -> (T, T) {
 }
 
 /// [`linear_eliminant`] with the determinant `det`.
-fn linear_eliminant_by<T: Field>(f: &[T], g: &[T], det: fn(Vec<Vec<T>>) -> T) -> (T, T) {
+fn linear_eliminant_by<T: Clone + Zero>(f: &[T], g: &[T], det: fn(Vec<Vec<T>>) -> T) -> (T, T) {
+    match eliminant_matrices(f, g) {
+        Ok((one, zero)) => (det(one), det(zero)),
+        Err(line) => line,
+    }
+}
+
+/// The two square matrices of the first subresultant of `f`, `g` (its
+/// coefficients of `x` and of 1), or `Err` with the linear polynomial
+/// itself when a formal degree is 1.
+#[allow(clippy::type_complexity)]
+fn eliminant_matrices<T: Clone + Zero>(
+    f: &[T],
+    g: &[T],
+) -> Result<(Vec<Vec<T>>, Vec<Vec<T>>), (T, T)> {
     let (m, n) = (f.len() - 1, g.len() - 1);
     if n == 1 {
-        return (g[1].clone(), g[0].clone());
+        return Err((g[1].clone(), g[0].clone()));
     }
     if m == 1 {
-        return (f[1].clone(), f[0].clone());
+        return Err((f[1].clone(), f[0].clone()));
     }
     let rows = subresultant_rows(f, g, 1);
     let square = |last: usize| {
@@ -198,75 +197,111 @@ fn linear_eliminant_by<T: Field>(f: &[T], g: &[T], det: fn(Vec<Vec<T>>) -> T) ->
             .collect::<Vec<_>>()
     };
     let width = m + n - 1;
-    (det(square(width - 2)), det(square(width - 1)))
+    Ok((square(width - 2), square(width - 1)))
 }
 
-/// A polynomial in `t` whose coefficients are polynomials in `s`:
-/// `Σ_k a_k(s) t^k` (a [`BPoly`] with `u = t`, `v = s`), with its formal
-/// degree in `t` and its degree in `s`.
-fn shape(p: &BPoly<BigRational>) -> (usize, usize) {
-    let deg_s = p
-        .coeffs()
+/// A polynomial in `t` whose coefficients are polynomials in `s`,
+/// `Σ_k a_k(s) t^k` (a [`BPoly`] with `u = t`, `v = s`), times the lcm of
+/// its denominators: the integer coefficients of each `a_k`, lowest power
+/// first. The scale changes neither the roots of a resultant nor the
+/// ratio `e_0/e_1` of [`linear_eliminant_in_t`] (both determinants of one
+/// matrix take the same factor).
+fn integer_grid(p: &BPoly<BigRational>) -> Vec<Vec<BigInt>> {
+    let all = p.coeffs().iter().flat_map(|a| a.coeffs());
+    let (ints, _): (Vec<BigInt>, _) = common_denominator(all);
+    let mut ints = ints.into_iter();
+    p.coeffs()
         .iter()
-        .filter_map(UPoly::degree)
-        .max()
-        .unwrap_or(0);
-    (p.deg_u().unwrap_or(0), deg_s)
-}
-
-/// The coefficients in `t` of `p` at the parameter value `s`, formal degree
-/// `deg_t`.
-fn at_s(p: &BPoly<BigRational>, deg_t: usize, s: &BigRational) -> Vec<BigRational> {
-    (0..=deg_t)
-        .map(|k| {
-            p.coeffs()
-                .get(k)
-                .map_or_else(BigRational::default, |a| a.eval(s))
-        })
+        .map(|a| ints.by_ref().take(a.coeffs().len()).collect())
         .collect()
 }
 
+/// The coefficients in `t` at the integer `s` (Horner), formal degree
+/// `grid.len() − 1`.
+fn at_s(grid: &[Vec<BigInt>], s: &BigInt) -> Vec<BigInt> {
+    grid.iter()
+        .map(|a| a.iter().rev().fold(BigInt::zero(), |acc, c| acc * s + c))
+        .collect()
+}
+
+/// The weight of each coefficient: `1 + deg_s a_k`, 0 for `a_k = 0`.
+fn weights(grid: &[Vec<BigInt>]) -> Vec<usize> {
+    grid.iter().map(Vec::len).collect()
+}
+
+/// A bound on the `s`-degree of the determinant of a matrix whose entries
+/// have the weights `w` (`1 + degree`, 0 for a zero entry): by the
+/// Leibniz expansion, at most the sum over the rows of their largest
+/// degree, and over the columns likewise (0 when a row or column is zero).
+fn degree_bound(w: &[Vec<usize>]) -> usize {
+    let sum = |maxes: Vec<usize>| -> usize {
+        if maxes.contains(&0) {
+            0
+        } else {
+            maxes.iter().map(|m| m - 1).sum()
+        }
+    };
+    let rows = w
+        .iter()
+        .map(|r| r.iter().copied().max().unwrap_or(0))
+        .collect();
+    let width = w.first().map_or(0, Vec::len);
+    let cols = (0..width)
+        .map(|c| w.iter().map(|r| r[c]).max().unwrap_or(0))
+        .collect();
+    sum(rows).min(sum(cols))
+}
+
 /// `values(s)` at `s = 0 … degree`, interpolated.
-fn interpolated(degree: usize, values: impl Fn(&BigRational) -> BigRational) -> UPoly<BigRational> {
-    let samples: Vec<BigRational> = (0..=degree)
-        .map(|k| values(&BigRational::from_integer(k.into())))
+fn interpolated(values: &[BigInt]) -> UPoly<BigRational> {
+    let samples: Vec<BigRational> = values
+        .iter()
+        .map(|v| BigRational::from_integer(v.clone()))
         .collect();
     interpolate(&samples)
 }
 
 /// `Res_t(F, G)` as a polynomial in `s`, for `F = Σ a_k(s) t^k`,
 /// `G = Σ b_k(s) t^k` with `t`-degrees at least 1 (formal degrees: the
-/// actual `t`-degrees of `F` and `G`).
-///
-/// Degree bound: `deg_s F · deg_t G + deg_s G · deg_t F`.
+/// actual `t`-degrees of `F` and `G`), up to a non-zero constant factor:
+/// integer determinants at `s = 0 … D` with `D` the row and column bound
+/// of [`degree_bound`] on the Sylvester matrix (at most `deg_s F · deg_t G
+/// + deg_s G · deg_t F`; `mn` rather than `2mn` for two polynomial curves,
+/// whose `E_k` have constant coefficients beside `t⁰`).
 pub fn resultant_in_t(f: &BPoly<BigRational>, g: &BPoly<BigRational>) -> UPoly<BigRational> {
-    let ((mf, df), (mg, dg)) = (shape(f), shape(g));
-    interpolated(df * mg + dg * mf, |s| {
-        rational_resultant(&at_s(f, mf, s), &at_s(g, mg, s))
-    })
+    let (fi, gi) = (integer_grid(f), integer_grid(g));
+    let degree = degree_bound(&subresultant_rows(&weights(&fi), &weights(&gi), 0));
+    let values: Vec<BigInt> = (0..=degree)
+        .map(|s| {
+            let s = BigInt::from(s);
+            integer_determinant(subresultant_rows(&at_s(&fi, &s), &at_s(&gi, &s), 0))
+        })
+        .collect();
+    interpolated(&values)
 }
 
-/// [`linear_eliminant`] of `F` and `G` in `t`, as two polynomials in `s`:
-/// at every `s` where `F(s, ·)` and `G(s, ·)` have exactly one common root
-/// `t`, it is `−e_0(s) / e_1(s)` with `e_1(s) ≠ 0`.
+/// [`linear_eliminant`] of `F` and `G` in `t`, as two polynomials in `s`
+/// (each up to one common non-zero constant factor): at every `s` where
+/// `F(s, ·)` and `G(s, ·)` have exactly one common root `t`, it is
+/// `−e_0(s) / e_1(s)` with `e_1(s) ≠ 0`. Sampled at as many integers as the
+/// larger [`degree_bound`] of the two matrices asks, both determinants
+/// from one specialization.
 pub fn linear_eliminant_in_t(
     f: &BPoly<BigRational>,
     g: &BPoly<BigRational>,
 ) -> (UPoly<BigRational>, UPoly<BigRational>) {
-    let ((mf, df), (mg, dg)) = (shape(f), shape(g));
-    // Rows: mg − 1 of F and mf − 1 of G (or one polynomial itself).
-    let degree = match (mf, mg) {
-        (_, 1) => dg,
-        (1, _) => df,
-        _ => df * (mg - 1) + dg * (mf - 1),
+    let (fi, gi) = (integer_grid(f), integer_grid(g));
+    let degree = match eliminant_matrices(&weights(&fi), &weights(&gi)) {
+        Ok((one, zero)) => degree_bound(&one).max(degree_bound(&zero)),
+        Err((one, zero)) => one.max(zero).saturating_sub(1),
     };
-    let pair = |s: &BigRational| {
-        linear_eliminant_by(&at_s(f, mf, s), &at_s(g, mg, s), rational_determinant)
-    };
-    (
-        interpolated(degree, |s| pair(s).0),
-        interpolated(degree, |s| pair(s).1),
-    )
+    let (ones, zeros): (Vec<BigInt>, Vec<BigInt>) = (0..=degree)
+        .map(|s| {
+            let s = BigInt::from(s);
+            linear_eliminant_by(&at_s(&fi, &s), &at_s(&gi, &s), integer_determinant)
+        })
+        .unzip();
+    (interpolated(&ones), interpolated(&zeros))
 }
 
 #[cfg(test)]
@@ -307,18 +342,60 @@ mod tests {
 
     #[test]
     fn bareiss_agrees_with_gaussian_elimination() {
-        let r = |n: i64, d: i64| ratio::<BigRational>(n, d);
-        let m = vec![
-            vec![r(0, 1), r(2, 3), r(-1, 5), r(7, 2)],
-            vec![r(3, 4), r(0, 1), r(5, 1), r(-2, 9)],
-            vec![r(1, 7), r(-4, 3), r(0, 1), r(1, 1)],
-            vec![r(6, 1), r(1, 2), r(-3, 8), r(0, 1)],
+        let m: Vec<Vec<i64>> = vec![
+            vec![0, 2, -1, 7],
+            vec![3, 0, 5, -2],
+            vec![1, -4, 0, 1],
+            vec![6, 1, -3, 0],
         ];
-        assert_eq!(rational_determinant(m.clone()), determinant(m.clone()));
+        let ints = |m: &[Vec<i64>]| -> Vec<Vec<BigInt>> {
+            m.iter()
+                .map(|r| r.iter().map(|&x| x.into()).collect())
+                .collect()
+        };
+        let rats = |m: &[Vec<i64>]| -> Vec<Vec<BigRational>> {
+            m.iter()
+                .map(|r| r.iter().map(|&x| q(x)).collect())
+                .collect()
+        };
+        let det = integer_determinant(ints(&m));
+        assert_eq!(BigRational::from_integer(det), determinant(rats(&m)));
         // A singular matrix: the last row is the sum of the first two.
         let mut s = m[..3].to_vec();
         s.push(m[0].iter().zip(&m[1]).map(|(a, b)| a + b).collect());
-        assert_eq!(rational_determinant(s), r(0, 1));
+        assert!(integer_determinant(ints(&s)).is_zero());
+    }
+
+    #[test]
+    fn column_bound_of_polynomial_curves_is_mn() {
+        // E = X_A(s) − X_B(t) for cubics: only t⁰ depends on s (degree 3).
+        let f = BPoly::new(vec![
+            UPoly::new(vec![q(1), q(2), q(0), q(5)]),
+            UPoly::constant(q(-3)),
+            UPoly::constant(q(2)),
+            UPoly::constant(q(1)),
+        ]);
+        let g = BPoly::new(vec![
+            UPoly::new(vec![q(0), q(1), q(-4), q(1)]),
+            UPoly::constant(q(1)),
+            UPoly::constant(q(-1)),
+            UPoly::constant(q(3)),
+        ]);
+        let (fi, gi) = (integer_grid(&f), integer_grid(&g));
+        let bound = degree_bound(&subresultant_rows(&weights(&fi), &weights(&gi), 0));
+        assert_eq!(bound, 9);
+        // The interpolated resultant is the pointwise one times one constant.
+        let r = resultant_in_t(&f, &g);
+        for s in [BigRational::new(1.into(), 2.into()), q(7)] {
+            let want = resultant(&at_s_q(&f, &s), &at_s_q(&g, &s));
+            let lead_ratio = r.eval(&s) / want;
+            let at_zero = r.eval(&q(0)) / resultant(&at_s_q(&f, &q(0)), &at_s_q(&g, &q(0)));
+            assert_eq!(lead_ratio, at_zero);
+        }
+    }
+
+    fn at_s_q(p: &BPoly<BigRational>, s: &BigRational) -> Vec<BigRational> {
+        p.coeffs().iter().map(|a| a.eval(s)).collect()
     }
 
     #[test]

@@ -10,7 +10,7 @@
 //! `E_k = X_k^A(s) W^B(t) − X_k^B(t) W^A(s) = 0`. Two combinations are
 //! eliminated by a Sylvester resultant in `t` (evaluated and interpolated in
 //! `s`); the real roots of its square-free factors in `[0, 1]` are isolated
-//! by Sturm sequences; each root's `t` is the root of the first
+//! by Descartes' rule of signs; each root's `t` is the root of the first
 //! subresultant, a rational function of `s`, and the remaining equations
 //! are checked to vanish exactly. A root whose `t` is not unique (two
 //! branches of `B` through one point of `A`) is retried with the roles of
@@ -40,7 +40,7 @@
 //! Reference: Sederberg & Parry, *Comparison of three curve intersection
 //! algorithms*, Computer-Aided Design 18 (1986) 58–63 (implicitization and
 //! resultants); Basu, Pollack & Roy, *Algorithms in Real Algebraic
-//! Geometry* (2006), §2.2 and §4.2 (Sturm sequences, subresultants);
+//! Geometry* (2006), §2.2 and §4.2 (Descartes' rule, subresultants);
 //! Sederberg & Nishita, *Curve intersection using Bézier clipping*, CAD 22
 //! (1990) (convex hull culling).
 

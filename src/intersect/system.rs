@@ -11,7 +11,9 @@
 //! Two generic combinations `F = E_0 + Σ c_k E_k`, `G = E_1 + Σ d_k E_k`
 //! (`k ≥ 2`; just `E_0, E_1` in the plane) are solved by elimination:
 //! `R(s) = Res_t(F, G)`, Yun's square-free factorization `R = ∏ a_j^j`,
-//! Sturm isolation of the roots of each `a_j` in `[0, 1]`, then the unique
+//! isolation of the roots of each `a_j` in `[0, 1]` by Descartes counts
+//! (square-freeness and coprimality certified modulo a prime first, so the
+//! generic case builds no remainder sequence over Q), then the unique
 //! `t = −e_0(s)/e_1(s)` from the first subresultant (exact, as a real
 //! algebraic number, see [`RealAlgebraic::rational_function_at`]), and
 //! each remaining `E_k` checked to vanish exactly (its value at
@@ -22,7 +24,7 @@
 //!
 //! Reference: Sederberg & Parry, *Comparison of three curve intersection
 //! algorithms*, CAD 18 (1986) (implicitization by resultants); Basu,
-//! Pollack & Roy (2006) §4.2 (subresultants), §2.2 (Sturm).
+//! Pollack & Roy (2006) §4.2 (subresultants), §2.2 (Descartes' rule).
 
 use crate::algebra::real_algebraic::polys;
 use crate::algebra::sylvester::{linear_eliminant_in_t, resultant_in_t};

@@ -383,4 +383,43 @@ proptest! {
             Err(e) => prop_assert!(false, "{e}"),
         }
     }
+
+    /// Two cubics with small integer control points (the second rational):
+    /// every exact point lies on both curves (generic evaluation over the
+    /// algebraic numbers, a second route to the point), and where the
+    /// interval filter certifies the pair (a method that shares nothing
+    /// with the elimination) each certified box holds exactly one exact
+    /// crossing and there are as many of each.
+    #[test]
+    fn cubic_pairs_agree_with_substitution_and_the_filter(
+        a in proptest::collection::vec(small_point(2), 4),
+        b in proptest::collection::vec(small_point(2), 4),
+        w in proptest::collection::vec(1i64..=3, 4),
+    ) {
+        let ca = RationalCurve::polynomial(a).unwrap();
+        let cb = RationalCurve::new(b, w.iter().map(|&v| q(v, 1)).collect()).unwrap();
+        let exact = match two_curves(&ca, &cb) {
+            Ok(x) => x,
+            Err(Error::Domain(_)) => return Ok(()), // a point, or a degenerate configuration
+            Err(e) => return Err(TestCaseError::fail(e.to_string())),
+        };
+        for p in &exact.points {
+            prop_assert_eq!(&on_curve(&ca, &p.s), &p.point);
+            prop_assert_eq!(&on_curve(&cb, &p.t), &p.point);
+        }
+        if let Found::Certified(boxes) = filtered(&ca, &cb) {
+            prop_assert_eq!(boxes.len(), exact.points.len());
+            let inside = |x: &RealAlgebraic, i: &crate::algebra::Interval| {
+                let (lo, hi) = x.enclosure(64);
+                Q::from_float(i.lo).unwrap() <= lo && hi <= Q::from_float(i.hi).unwrap()
+            };
+            for p in &exact.points {
+                let holding = boxes
+                    .iter()
+                    .filter(|k| inside(&p.s, &k.s) && inside(&p.t, &k.t))
+                    .count();
+                prop_assert_eq!(holding, 1);
+            }
+        }
+    }
 }

@@ -557,7 +557,7 @@ fn isolate_sum(
     x_enclose: impl Fn(u32) -> (BigRational, BigRational),
     y_enclose: impl Fn(u32) -> (BigRational, BigRational),
 ) -> (BigRational, BigRational) {
-    isolate_value(&polys::sturm_sequence(r), |prec| {
+    isolate_value(r, |prec| {
         let (x_lo, x_hi) = x_enclose(prec);
         let (y_lo, y_hi) = y_enclose(prec);
         let (a, b) = (&x_lo * c, &x_hi * c);
@@ -570,13 +570,13 @@ fn isolate_sum(
 }
 
 /// An isolating interval for the irrational root of the square-free
-/// polynomial with Sturm sequence `seq` that the enclosures
-/// `enclose(prec)` shrink to ([`polys::isolate_by_enclosures`]).
+/// polynomial `p` that the enclosures `enclose(prec)` shrink to
+/// ([`polys::isolate_by_enclosures`]).
 pub(crate) fn isolate_value(
-    seq: &[SignPoly],
+    p: &QPoly,
     enclose: impl Fn(u32) -> (BigRational, BigRational),
 ) -> (BigRational, BigRational) {
-    polys::isolate_by_enclosures(seq, enclose)
+    polys::isolate_by_enclosures(&SignPoly::new(p), enclose)
         .expect("an irrational value: enclosures never collapse")
 }
 

@@ -35,12 +35,15 @@
 //! (2000), ch. 7; Mordell, *On the linear independence of algebraic
 //! numbers*, Pacific J. Math. 3 (1953) 625–630.
 
+pub(crate) mod descartes;
 pub(crate) mod field;
+pub(crate) mod modular;
 pub(crate) mod polys;
 pub(crate) mod radical;
 pub(crate) mod root;
 pub mod text;
 
+use crate::algebra::int::common_denominator;
 use crate::algebra::scalar::{Field, Ordered, Roots, Scalar};
 use crate::algebra::upoly::UPoly;
 use crate::error::Error;
@@ -144,8 +147,7 @@ impl RealAlgebraic {
         match &self.0 {
             Repr::Radical(s) => {
                 let p = s.minimal_polynomial().monic();
-                let (lo, hi) =
-                    field::isolate_value(&polys::sturm_sequence(&p), |prec| s.enclosure(prec));
+                let (lo, hi) = field::isolate_value(&p, |prec| s.enclosure(prec));
                 Ok(FieldNum::generator(NumberField::new(p, lo, hi)))
             }
             Repr::Root(r) => {
@@ -288,32 +290,46 @@ impl RealAlgebraic {
     /// Every distinct real root of a non-zero polynomial `p` in the open
     /// interval `(a, b)`, increasing.
     ///
-    /// Cost: Sturm sequence `O(d²)` rational operations, then one Sturm
-    /// count per bisection step (the number of steps grows with
+    /// Cost: the square-free part (a check modulo a prime in the generic
+    /// case), then one Descartes count of `O(d²)` integer operations per
+    /// bisection step ([`descartes`]; the number of steps grows with
     /// `log(1/root separation)`).
     pub fn real_roots_in(p: &UPoly<BigRational>, a: &BigRational, b: &BigRational) -> Vec<Self> {
         if p.degree().unwrap_or(0) == 0 || a >= b {
             return Vec::new();
         }
-        let (sf, seq) = polys::square_free_with_sturm(p);
-        let bound = polys::cauchy_bound(&sf);
-        let mut roots = Vec::new();
-        for (lo, hi) in polys::isolate(&seq, &-bound.clone(), &bound) {
-            let x = Self::isolated(sf.clone(), seq.clone(), lo, hi);
-            let above = Self::rat(a.clone());
-            let below = Self::rat(b.clone());
-            if x > above && x < below {
-                roots.push(x);
-            }
+        let known = polys::Isolator::new(p);
+        let bound = BigRational::from_integer(known.sign.root_bound());
+        let lo = if *a > -bound.clone() {
+            a.clone()
+        } else {
+            -bound.clone()
+        };
+        let hi = if *b < bound { b.clone() } else { bound.clone() };
+        if lo >= hi {
+            return Vec::new();
         }
-        roots
+        // Descartes counts need ends that are not roots: a root at an end
+        // is outside the open interval, so isolate on (−B, B) and filter.
+        let ends_clear = known.sign.sign_at(&lo) != 0 && known.sign.sign_at(&hi) != 0;
+        let (lo, hi) = if ends_clear {
+            (lo, hi)
+        } else {
+            (-bound.clone(), bound)
+        };
+        let (above, below) = (Self::rat(a.clone()), Self::rat(b.clone()));
+        descartes::isolate(&known.sign, &lo, &hi)
+            .into_iter()
+            .map(|(l, h)| Self::isolated(known.sf.clone(), l, h))
+            .filter(|x| ends_clear || (*x > above && *x < below))
+            .collect()
     }
 
     /// The root of the square-free `p` isolated in `(lo, hi)` (endpoints not
     /// roots), simplified: rational roots and roots of `x^n − c` come back as
     /// radical sums.
-    fn isolated(p: QPoly, sturm: Vec<polys::SignPoly>, lo: BigRational, hi: BigRational) -> Self {
-        let node = RootNum::with_sturm(p, sturm, lo, hi);
+    fn isolated(p: QPoly, lo: BigRational, hi: BigRational) -> Self {
+        let node = RootNum::new(p, lo, hi);
         match rational_root_in(&node) {
             Some(s) => Self::radical(s),
             None => Self::irrational(node),
@@ -343,8 +359,8 @@ impl RealAlgebraic {
         known: &polys::Isolator,
         enclose: impl Fn(u32) -> (BigRational, BigRational),
     ) -> Self {
-        match polys::isolate_by_enclosures(&known.seq, enclose) {
-            Ok((lo, hi)) => Self::isolated(known.sf.clone(), known.seq.clone(), lo, hi),
+        match polys::isolate_by_enclosures(&known.sign, enclose) {
+            Ok((lo, hi)) => Self::isolated(known.sf.clone(), lo, hi),
             Err(q) => Self::rat(q),
         }
     }
@@ -674,32 +690,34 @@ impl RealAlgebraic {
         Ok(self.rational_function_root(&Self::value_polynomial(&p, num, den), num, den))
     }
 
-    /// `R(x) = Res_y(p(y), x·den(y) − num(y))`, prepared for isolation: its
-    /// roots are the values `num(α)/den(α)` at the roots `α` of `p`, which
-    /// must be coprime to `den`. `num` and `den` are first reduced modulo
-    /// `p`; cost `deg p + 1` fraction-free Sylvester determinants of size
-    /// at most `2 deg p − 1`.
+    /// `R(x) = ∏_{p(α) = 0} (x·den(α) − num(α))` (a resultant by Poisson's
+    /// formula, up to a constant), prepared for isolation: its roots are the values `num(α)/den(α)` at the roots `α`
+    /// of `p`, which must be coprime to `den`. `num` and `den` are first
+    /// reduced modulo `p`; `R` is interpolated from its values at `x = 0 …
+    /// deg p`, each a norm modulo `p` ([`polys::norm`]: one pseudo-division
+    /// of `p` by the low-degree `x·den − num`, then a Sylvester determinant
+    /// of size below `2e` for `e = max(deg num, deg den)`, not one of size
+    /// `deg p + e`).
     pub(crate) fn value_polynomial(
         p: &QPoly,
         num: &UPoly<BigRational>,
         den: &UPoly<BigRational>,
     ) -> polys::Isolator {
-        // num(α), den(α) only depend on num, den modulo p.
+        // num(α), den(α) only depend on num, den modulo p; one denominator
+        // for both scales R by a constant.
         let reduce = |c: &UPoly<BigRational>| c.div_rem(p).expect("p is non-zero").1;
         let (num_p, den_p) = (reduce(num), reduce(den));
-        let e = num_p.degree().unwrap_or(0).max(den_p.degree().unwrap_or(0));
-        let padded = |c: &UPoly<BigRational>| {
-            let mut v = c.coeffs().to_vec();
-            v.resize(e + 1, BigRational::zero());
-            v
-        };
-        let (nums, dens) = (padded(&num_p), padded(&den_p));
-        let d = p.degree().unwrap_or(0);
-        let samples: Vec<BigRational> = (0..=d)
+        let len = num_p.coeffs().len().max(den_p.coeffs().len());
+        let both: Vec<BigRational> = (0..len)
+            .flat_map(|i| [&num_p, &den_p].map(|c| c.coeffs().get(i).cloned().unwrap_or_default()))
+            .collect();
+        let (ints, _): (Vec<BigInt>, _) = common_denominator(&both);
+        let big = polys::primitive_integer(p);
+        let samples: Vec<BigRational> = (0..=p.degree().unwrap_or(0))
             .map(|x| {
-                let x = BigRational::from_integer(x.into());
-                let h: Vec<BigRational> = nums.iter().zip(&dens).map(|(n, d)| &x * d - n).collect();
-                crate::algebra::sylvester::rational_resultant(p.coeffs(), &h)
+                let x = BigInt::from(x);
+                let h: Vec<BigInt> = ints.chunks(2).map(|c| &x * &c[1] - &c[0]).collect();
+                polys::norm(&big, &h)
             })
             .collect();
         polys::Isolator::new(&polys::interpolate(&samples))
@@ -716,7 +734,7 @@ impl RealAlgebraic {
         num: &UPoly<BigRational>,
         den: &UPoly<BigRational>,
     ) -> Self {
-        let wide = polys::cauchy_bound(&known.sf) + BigRational::one();
+        let wide = BigRational::from_integer(known.sign.root_bound());
         Self::isolate_enclosed(known, |prec| {
             let (lo, hi) = self.enclosure(prec);
             let (n_lo, n_hi) = polys::eval_on_interval(num, &lo, &hi);
@@ -899,7 +917,7 @@ fn radical_field(b: &BigInt, n: i64) -> Arc<NumberField> {
     c[n as usize] = BigRational::one();
     let p = UPoly::new(c);
     let root = RadicalSum::int_power(b, radical::Exp::new(1, n));
-    let (lo, hi) = field::isolate_value(&polys::sturm_sequence(&p), |prec| root.enclosure(prec));
+    let (lo, hi) = field::isolate_value(&p, |prec| root.enclosure(prec));
     NumberField::new(p, lo, hi)
 }
 

@@ -63,44 +63,46 @@ pub(crate) fn derivative(p: &QPoly) -> QPoly {
 }
 
 /// A square-free polynomial prepared (once) to isolate several of its
-/// roots: the monic square-free part of a non-zero `p` and its Sturm
-/// sequence.
+/// roots: the monic square-free part of a non-zero `p`, and the same as an
+/// integer polynomial for sign evaluations and Descartes counts.
 #[derive(Clone, Debug)]
 pub(crate) struct Isolator {
     /// The monic square-free part.
     pub sf: QPoly,
-    /// Its Sturm sequence.
-    pub seq: Vec<SignPoly>,
+    /// `sf` scaled to primitive integers.
+    pub sign: SignPoly,
 }
 
 impl Isolator {
     /// Prepare `p ≠ 0`.
     pub(crate) fn new(p: &QPoly) -> Self {
-        let (sf, seq) = square_free_with_sturm(p);
-        Isolator { sf, seq }
+        let sf = square_free_part(p);
+        let sign = SignPoly::new(&sf);
+        Isolator { sf, sign }
     }
 }
 
-/// The monic square-free part of `p ≠ 0` and its Sturm sequence. The
-/// remainder sequence of `p, p'` ends in `gcd(p, p')`: when that is a
-/// constant, `p` is square-free and the sequence is already its Sturm
-/// sequence.
-pub(crate) fn square_free_with_sturm(p: &QPoly) -> (QPoly, Vec<SignPoly>) {
-    let seq = sturm_sequence(p);
-    let g = seq.last().expect("p is non-zero");
-    if g.degree() == 0 {
-        return (p.monic(), seq);
+/// The monic square-free part `p / gcd(p, p')` of `p ≠ 0`; `p` itself
+/// (made monic) when reduction modulo a prime certifies that it is
+/// square-free ([`super::modular`]), the generic case.
+pub(crate) fn square_free_part(p: &QPoly) -> QPoly {
+    if super::modular::certainly_square_free(p) {
+        return p.monic();
     }
-    let sf = p.div_exact(&g.to_qpoly()).expect("gcd divides").monic();
-    let seq = sturm_sequence(&sf);
-    (sf, seq)
+    let g = gcd(p, &derivative(p));
+    p.div_exact(&g).expect("the gcd divides").monic()
 }
 
 /// The monic `gcd(a, b)` over Q (zero when both are zero), by a primitive
 /// remainder sequence over Z: Gauss's lemma makes the primitive part of
 /// the last non-zero remainder the gcd up to a constant, and the integers
-/// stay content-free without a gcd per coefficient operation.
+/// stay content-free without a gcd per coefficient operation. Coprime
+/// pairs, the generic case, are first recognised modulo a prime
+/// ([`super::modular::certainly_coprime`]) and skip the sequence.
 pub(crate) fn gcd(a: &QPoly, b: &QPoly) -> QPoly {
+    if super::modular::certainly_coprime(a, b) || super::modular::certainly_coprime(b, a) {
+        return UPoly::constant(q(1));
+    }
     let (mut x, mut y) = (SignPoly::new(a), SignPoly::new(b));
     if x.0.len() < y.0.len() {
         std::mem::swap(&mut x, &mut y);
@@ -152,9 +154,9 @@ impl SignPoly {
         SignPoly(ints.into_iter().map(|c| c / &g).collect())
     }
 
-    /// The degree (0 for constants and for zero).
-    pub(crate) fn degree(&self) -> usize {
-        self.0.len().saturating_sub(1)
+    /// The integer coefficients, lowest power first.
+    pub(crate) fn coeffs(&self) -> &[BigInt] {
+        &self.0
     }
 
     /// The polynomial over Q with these coefficients.
@@ -203,6 +205,29 @@ impl SignPoly {
                 .map(|c| if flip { -(c / &g) } else { c / &g })
                 .collect(),
         )
+    }
+
+    /// A power of two `B` with every root (complex too) in `|z| < B`, by
+    /// Fujiwara's bound `|z| ≤ 2 max_i |c_{d−i}/c_d|^{1/i}` on bit lengths
+    /// (`|c_{d−i}/c_d| < 2^{e_i}`, `e_i = bits c_{d−i} − bits c_d + 1`): far
+    /// below Cauchy's `1 + max |c_i/c_d|` when the coefficients are large,
+    /// so isolation from `−B` starts near the roots.
+    ///
+    /// Reference: Fujiwara, *Über die obere Schranke des absoluten Betrages
+    /// der Wurzeln einer algebraischen Gleichung*, Tôhoku Math. J. 10
+    /// (1916) 167–171.
+    pub(crate) fn root_bound(&self) -> BigInt {
+        let d = self.0.len().saturating_sub(1);
+        let lead_bits = self.0.last().map_or(0, BigInt::bits) as i64;
+        let e = (1..=d)
+            .filter(|&i| !self.0[d - i].is_zero())
+            .map(|i| {
+                let x = self.0[d - i].bits() as i64 - lead_bits + 1;
+                -((-x).div_euclid(i as i64)) // ⌈x / i⌉
+            })
+            .max()
+            .unwrap_or(0);
+        BigInt::one() << (e + 2).max(0) as usize
     }
 
     /// The sign of `p(x)`: −1, 0 or 1.
@@ -329,32 +354,6 @@ pub(crate) fn cauchy_bound(p: &QPoly) -> BigRational {
     max + q(1)
 }
 
-/// Isolating intervals `(lo, hi)` (open, endpoints not roots, one root
-/// each, increasing) of the real roots in `(a, b)` of the square-free
-/// polynomial whose Sturm sequence is `seq`, where `a < b` are not roots;
-/// by bisection with Sturm counts.
-pub(crate) fn isolate(
-    seq: &[SignPoly],
-    a: &BigRational,
-    b: &BigRational,
-) -> Vec<(BigRational, BigRational)> {
-    let mut out = Vec::new();
-    let mut stack = vec![(a.clone(), b.clone())];
-    while let Some((lo, hi)) = stack.pop() {
-        match count_roots(seq, &lo, &hi) {
-            0 => {}
-            1 => out.push((lo, hi)),
-            _ => {
-                let mid = split_point(&seq[0], &lo, &hi);
-                stack.push((mid.clone(), hi));
-                stack.push((lo, mid));
-            }
-        }
-    }
-    out.sort_by(|x, y| x.0.cmp(&y.0));
-    out
-}
-
 /// A point of `(lo, hi)` near the middle that is not a root of `p`.
 pub(crate) fn split_point(p: &SignPoly, lo: &BigRational, hi: &BigRational) -> BigRational {
     let mut mid = (lo + hi) / q(2);
@@ -380,6 +379,60 @@ pub(crate) fn resultant(a: &QPoly, b: &QPoly) -> BigRational {
     };
     let sign = if (m * n) % 2 == 1 { q(-1) } else { q(1) };
     sign * b.lead().expect("non-zero").pow((m - k) as i32) * resultant(b, &r)
+}
+
+/// The norm `∏_{p(α) = 0} H(α)` (roots with multiplicity, over C) of the
+/// integer polynomial `H` modulo the integer polynomial `P` of degree `d`
+/// with leading coefficient `L` (coefficients lowest power first), which is
+/// `Res(P, H) / L^k` for `k = deg H` (Poisson's formula). With the
+/// pseudo-remainder `R = lc(H)^{d−k+1}·P − Q·H` (equal to
+/// `lc(H)^{d−k+1}·P(β)` at each root `β` of `H`):
+///
+/// ```text
+/// Res(H, R) = lc(H)^{deg R + k(d−k+1)} ∏_β P(β),   Res(P, H) = (−1)^{dk} lc(H)^d ∏_β P(β)
+/// ```
+///
+/// so only one pseudo-division of `P` by the (low-degree) `H` and a
+/// Sylvester determinant of size below `2k` are needed, not one of size
+/// `d + k`.
+pub(crate) fn norm(p: &[BigInt], h: &[BigInt]) -> BigRational {
+    let d = p.len() - 1;
+    let Some(k) = h.iter().rposition(|c| !c.is_zero()) else {
+        return BigRational::zero();
+    };
+    let lc = &h[k];
+    let lead = BigRational::from_integer(p[d].clone());
+    if k == 0 {
+        return BigRational::from_integer(lc.pow(d as u32));
+    }
+    let bits = p.iter().chain(h).map(BigInt::bits).max().unwrap_or(0);
+    crate::limits::meter(((d + 1).saturating_sub(k) * (k + 1)) as u64, bits);
+    let mut r = p.to_vec();
+    for top in (k..=d).rev() {
+        let lead = std::mem::take(&mut r[top]);
+        for c in r[..top].iter_mut() {
+            *c *= lc;
+        }
+        for (j, b) in h[..k].iter().enumerate() {
+            r[top - k + j] -= &lead * b;
+        }
+    }
+    r.truncate(k.min(d + 1));
+    while r.last().is_some_and(Zero::is_zero) {
+        r.pop();
+    }
+    let Some(deg_r) = r.len().checked_sub(1) else {
+        return BigRational::zero();
+    };
+    let res_hr = crate::algebra::sylvester::integer_determinant(
+        crate::algebra::sylvester::sylvester_rows(&h[..=k], &r),
+    );
+    let steps = (d + 1).saturating_sub(k);
+    let lc_pow = d as i64 - deg_r as i64 - (k * steps) as i64;
+    let sign = if (d * k) % 2 == 1 { q(-1) } else { q(1) };
+    sign * BigRational::from_integer(res_hr)
+        * BigRational::from_integer(lc.clone()).pow(lc_pow as i32)
+        / lead.pow(k as i32)
 }
 
 /// The polynomial of degree ≤ `D = values.len() − 1` through
@@ -538,12 +591,14 @@ pub(crate) fn sign_by_refinement(
     }
 }
 
-/// The root of the square-free polynomial with Sturm sequence `seq` that
-/// the enclosures `enclose(prec)` shrink to: `prec` doubles from 16 until
-/// an enclosure holds exactly one root (endpoints not roots), `Ok(lo, hi)`;
+/// The root of the square-free polynomial `p` (as integers) that the
+/// enclosures `enclose(prec)` shrink to: `prec` doubles from 16 until an
+/// enclosure, rounded outward to multiples of `2^{−prec−2}` (short
+/// numbers for the count), holds exactly one root (endpoints not roots,
+/// one Descartes sign variation: [`super::descartes`]), `Ok(lo, hi)`;
 /// `Err(q)` when an enclosure collapses to the rational point `q`.
 pub(crate) fn isolate_by_enclosures(
-    seq: &[SignPoly],
+    p: &SignPoly,
     enclose: impl Fn(u32) -> (BigRational, BigRational),
 ) -> Result<(BigRational, BigRational), BigRational> {
     let mut prec = 16;
@@ -552,10 +607,12 @@ pub(crate) fn isolate_by_enclosures(
         if lo == hi {
             return Err(lo);
         }
+        let unit = BigRational::from_integer(BigInt::one() << (prec as usize + 2));
+        let (lo, hi) = ((&lo * &unit).floor() / &unit, (&hi * &unit).ceil() / &unit);
         if lo < hi
-            && seq[0].sign_at(&lo) != 0
-            && seq[0].sign_at(&hi) != 0
-            && count_roots(seq, &lo, &hi) == 1
+            && p.sign_at(&lo) != 0
+            && p.sign_at(&hi) != 0
+            && super::descartes::variations(p.coeffs(), &lo, &hi) == 1
         {
             return Ok((lo, hi));
         }
@@ -572,6 +629,23 @@ mod tests {
     }
 
     #[test]
+    fn norm_is_the_product_over_the_roots() {
+        // P = 2(x − 1)(x − 2)(x + 3), H = 2x² − x + 5 and H = 2x − 3.
+        let ints = |v: &[i64]| v.iter().map(|&x| BigInt::from(x)).collect::<Vec<_>>();
+        let p = ints(&[12, -14, 0, 2]);
+        for h in [ints(&[5, -1, 2]), ints(&[-3, 2])] {
+            let want = [1, 2, -3].iter().fold(BigInt::one(), |acc, &a| {
+                acc * h.iter().rev().fold(BigInt::zero(), |v, c| v * a + c)
+            });
+            assert_eq!(norm(&p, &h), BigRational::from_integer(want));
+        }
+        // A modulus of lower degree than H, a constant H, a common root.
+        assert_eq!(norm(&ints(&[-2, 1]), &ints(&[1, 0, 0, 1])), q(9));
+        assert_eq!(norm(&p, &ints(&[3])), q(27));
+        assert_eq!(norm(&p, &ints(&[-2, 1])), q(0));
+    }
+
+    #[test]
     fn sum_of_square_roots() {
         // √2 + √3 is a root of x⁴ − 10x² + 1.
         let s = sum_poly(&poly(&[-2, 0, 1]), &poly(&[-3, 0, 1]));
@@ -580,15 +654,27 @@ mod tests {
         assert_eq!(p.monic(), poly(&[36, 0, -12, 0, 1]));
     }
 
-    #[test]
-    fn isolation_finds_every_root() {
-        // (x − 1)(x − 2)(x + 3)(x² − 2): five real roots, two at interval ends.
-        let p = poly(&[-1, 1])
-            .mul(&poly(&[-2, 1]))
-            .mul(&poly(&[3, 1]))
-            .mul(&poly(&[-2, 0, 1]));
-        let b = cauchy_bound(&p);
-        let roots = isolate(&sturm_sequence(&p), &-b.clone(), &b);
-        assert_eq!(roots.len(), 5);
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+        /// The norm by pseudo-division equals the Sylvester determinant of
+        /// the monic modulus and `h` (the formula it replaces).
+        #[test]
+        fn norm_matches_the_sylvester_resultant(
+            p in proptest::collection::vec(-9i64..=9, 2..=10),
+            h in proptest::collection::vec(-9i64..=9, 1..=5),
+        ) {
+            let (pq, hq) = (poly(&p), poly(&h));
+            proptest::prop_assume!(pq.degree().unwrap_or(0) > 0 && !hq.is_zero());
+            let monic = pq.monic();
+            let mut hc = hq.coeffs().to_vec();
+            if hc.len() == 1 {
+                hc.push(q(0)); // formal degree 1: Res(p, c) = c^d for monic p
+            }
+            let want = crate::algebra::sylvester::resultant(monic.coeffs(), &hc);
+            let ints = |v: &QPoly| v.coeffs().iter().map(|c| c.to_integer()).collect::<Vec<_>>();
+            let got = norm(&ints(&pq), &ints(&hq));
+            proptest::prop_assert_eq!(got, want);
+        }
     }
 }

@@ -1,13 +1,14 @@
 //! The general representation: a root of a square-free polynomial over Q
 //! given by an isolating interval with rational endpoints, refined by
 //! bisection on demand (the refinement is cached behind a mutex, so clones
-//! share it).
+//! share it). Signs at rationals only: no Sturm sequence (the index counts
+//! the roots below by Descartes isolation).
 //!
 //! Invariant: `poly` is monic and square-free, `lo < hi`, neither endpoint
 //! is a root, `poly` has exactly one root in `(lo, hi)`, and that root is
 //! irrational (rational values are kept in the radical form).
 
-use super::polys::{count_roots, split_point, sturm_sequence, QPoly, SignPoly};
+use super::polys::{split_point, QPoly, SignPoly};
 use num_rational::BigRational;
 use num_traits::Signed;
 use std::sync::Mutex;
@@ -16,28 +17,17 @@ use std::sync::Mutex;
 #[derive(Debug)]
 pub(crate) struct RootNum {
     poly: QPoly,
-    /// The Sturm sequence; its first term is `poly` as a [`SignPoly`].
-    sturm: Vec<SignPoly>,
+    /// `poly` as primitive integers, for signs at the bisection points.
+    sign: SignPoly,
     interval: Mutex<(BigRational, BigRational)>,
 }
 
 impl RootNum {
     /// The root of `poly` (monic, square-free) isolated in `(lo, hi)`.
     pub(crate) fn new(poly: QPoly, lo: BigRational, hi: BigRational) -> Self {
-        let sturm = sturm_sequence(&poly);
-        Self::with_sturm(poly, sturm, lo, hi)
-    }
-
-    /// As [`RootNum::new`] with the Sturm sequence of `poly` already known.
-    pub(crate) fn with_sturm(
-        poly: QPoly,
-        sturm: Vec<SignPoly>,
-        lo: BigRational,
-        hi: BigRational,
-    ) -> Self {
         RootNum {
+            sign: SignPoly::new(&poly),
             poly,
-            sturm,
             interval: Mutex::new((lo, hi)),
         }
     }
@@ -56,7 +46,7 @@ impl RootNum {
     fn bisect(&self) {
         let mut guard = self.interval.lock().expect("not poisoned");
         let (lo, hi) = guard.clone();
-        let p = &self.sturm[0];
+        let p = &self.sign;
         let mid = split_point(p, &lo, &hi);
         *guard = if p.sign_at(&lo) == p.sign_at(&mid) {
             (mid, hi)
@@ -92,10 +82,11 @@ impl RootNum {
     }
 
     /// How many real roots of `poly` are smaller than this one (the `k` of
-    /// `CRootOf(poly, k)`).
+    /// `CRootOf(poly, k)`): the roots isolated in `(−B, lo)` by Descartes
+    /// counts, `B` a root bound (neither end is a root).
     pub(crate) fn index(&self) -> usize {
-        let bound = super::polys::cauchy_bound(&self.poly);
+        let bound = num_rational::BigRational::from_integer(-self.sign.root_bound());
         let (lo, _) = self.interval();
-        count_roots(&self.sturm, &-bound, &lo)
+        super::descartes::isolate(&self.sign, &bound, &lo).len()
     }
 }
