@@ -360,11 +360,8 @@ fn substitute_t(e: &BPoly<BigRational>, n: &QPoly, d: &QPoly) -> QPoly {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ratio;
 
-    fn p(c: &[i64]) -> QPoly {
-        UPoly::new(c.iter().map(|&v| ratio(v, 1)).collect())
-    }
+    use crate::algebra::real_algebraic::polys::int_poly as p;
 
     #[test]
     fn yun_splits_multiplicities() {

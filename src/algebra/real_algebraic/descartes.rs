@@ -94,13 +94,10 @@ pub(crate) fn isolate(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::algebra::real_algebraic::polys::{count_roots, sturm_sequence, QPoly};
-    use crate::algebra::upoly::UPoly;
+    use crate::algebra::real_algebraic::polys::{count_roots, sturm_sequence};
     use crate::ratio;
 
-    fn poly(v: &[i64]) -> QPoly {
-        UPoly::new(v.iter().map(|&x| ratio(x, 1)).collect())
-    }
+    use crate::algebra::real_algebraic::polys::int_poly as poly;
 
     #[test]
     fn isolation_agrees_with_sturm_counts() {

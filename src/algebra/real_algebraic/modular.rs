@@ -74,9 +74,7 @@ mod tests {
     use super::*;
     use crate::ratio;
 
-    fn poly(v: &[i64]) -> QPoly {
-        UPoly::new(v.iter().map(|&x| ratio(x, 1)).collect())
-    }
+    use crate::algebra::real_algebraic::polys::int_poly as poly;
 
     #[test]
     fn certificates_agree_with_the_gcd_over_q() {

@@ -30,6 +30,12 @@ use num_traits::{One, Signed, Zero};
 /// A univariate polynomial over Q.
 pub(crate) type QPoly = UPoly<BigRational>;
 
+/// The polynomial `Σ c_i xⁱ` with integer coefficients, for tests.
+#[cfg(test)]
+pub(crate) fn int_poly(c: &[i64]) -> QPoly {
+    UPoly::new(c.iter().map(|&v| crate::ratio(v, 1)).collect())
+}
+
 fn q(n: i64) -> BigRational {
     BigRational::from_integer(n.into())
 }
