@@ -119,6 +119,25 @@ impl<T: Field> UPoly<T> {
         Self::new(self.coeffs.iter().map(|a| a.clone() * c).collect())
     }
 
+    /// The derivative `Σ k c_k x^(k−1)`.
+    ///
+    /// ```
+    /// use exact_bezier::{algebra::UPoly, ratio, BigRational};
+    /// // (1 + 2x + 3x²)' = 2 + 6x
+    /// let c = |v: &[i64]| UPoly::new(v.iter().map(|&x| ratio::<BigRational>(x, 1)).collect());
+    /// assert_eq!(c(&[1, 2, 3]).derivative(), c(&[2, 6]));
+    /// ```
+    pub fn derivative(&self) -> Self {
+        Self::new(
+            self.coeffs
+                .iter()
+                .enumerate()
+                .skip(1)
+                .map(|(k, c)| c.clone() * T::from_i64(k as i64))
+                .collect(),
+        )
+    }
+
     /// The value at `x` (Horner).
     pub fn eval(&self, x: &T) -> T {
         self.coeffs

@@ -30,18 +30,6 @@ fn image(a: &QPoly) -> Option<UPoly<Fp>> {
     c.map(UPoly::new)
 }
 
-/// The derivative of a polynomial over `F_p`.
-fn derivative(a: &UPoly<Fp>) -> UPoly<Fp> {
-    UPoly::new(
-        a.coeffs()
-            .iter()
-            .enumerate()
-            .skip(1)
-            .map(|(k, c)| *c * Fp::new(k as u64))
-            .collect(),
-    )
-}
-
 /// The image of `a` when it keeps the degree of `a` (a non-zero `a`).
 fn faithful_image(a: &QPoly) -> Option<UPoly<Fp>> {
     let img = image(a)?;
@@ -66,7 +54,7 @@ pub(crate) fn certainly_square_free(a: &QPoly) -> bool {
     if a.degree().unwrap_or(0) as u64 >= crate::algebra::modp::MODULUS {
         return false;
     }
-    x.gcd(&derivative(&x)).degree() == Some(0)
+    x.gcd(&x.derivative()).degree() == Some(0)
 }
 
 #[cfg(test)]

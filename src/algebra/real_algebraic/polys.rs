@@ -56,16 +56,9 @@ pub(crate) fn meter(ops: usize, polys: &[&QPoly]) {
     crate::limits::meter(ops as u64, bits);
 }
 
-/// `p'`.
+/// `p'` ([`UPoly::derivative`]).
 pub(crate) fn derivative(p: &QPoly) -> QPoly {
-    UPoly::new(
-        p.coeffs()
-            .iter()
-            .enumerate()
-            .skip(1)
-            .map(|(k, c)| c * q(k as i64))
-            .collect(),
-    )
+    p.derivative()
 }
 
 /// A square-free polynomial prepared (once) to isolate several of its
