@@ -952,3 +952,48 @@ fn revolution_faces_are_measured_through_their_pieces() {
         }
     }
 }
+
+/// Millimetres per length unit of context `c` (1 when undeclared).
+fn millimetres(m: &BrepModel, c: Option<u64>) -> f64 {
+    c.and_then(|c| m.contexts.get(&c))
+        .and_then(|c| c.length.as_ref())
+        .map_or(1.0, |l| l.metres.to_f64() * 1000.0)
+}
+
+#[test]
+fn assembly_occurrences_place_every_vertex_where_open_cascade_does() {
+    let text = std::fs::read_to_string(format!("{}/occt_placed_vertices.json", dir())).unwrap();
+    let occt: Value = serde_json::from_str(&text).unwrap();
+    let files = occt.as_object().unwrap();
+    assert_eq!(files.len(), 4);
+    for (name, want) in files {
+        let m = read(name, false);
+        let mut ours: Vec<[f64; 3]> = Vec::new();
+        for o in &m.occurrences {
+            let body = m.bodies.iter().find(|b| b.id == o.body).unwrap();
+            let mm = millimetres(&m, o.context);
+            for v in m.face_vertices(&m.body_faces(body)) {
+                let p: Vec<RealAlgebraic> = m.vertices[&v]
+                    .iter()
+                    .map(RealAlgebraic::from_rational)
+                    .collect();
+                let q = o.placement.apply(&p);
+                ours.push([0, 1, 2].map(|i| q[i].to_f64() * mm));
+            }
+        }
+        let mut theirs: Vec<[f64; 3]> = want["vertices"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| [0, 1, 2].map(|i| p[i].as_f64().unwrap()))
+            .collect();
+        assert_eq!(ours.len(), theirs.len(), "{name}: placed vertices");
+        for p in &ours {
+            let near = theirs
+                .iter()
+                .position(|q| (0..3).all(|i| (p[i] - q[i]).abs() <= 1e-6))
+                .unwrap_or_else(|| panic!("{name}: no Open CASCADE vertex at {p:?}"));
+            theirs.swap_remove(near);
+        }
+    }
+}

@@ -11,7 +11,7 @@ use crate::audit::Origin;
 use crate::error::Error;
 use crate::patch::Patch;
 use crate::step::brep::{
-    AngleUnit, BSpline, Bound, Edge, EdgeUse, Face, Geometry, GeometryRef, Loop, Shell,
+    AngleUnit, BSpline, Bound, Edge, EdgeUse, Face, Geometry, GeometryRef, Loop, Occurrence, Shell,
 };
 use crate::step::BrepModel;
 use serde_json::{json, Map, Value};
@@ -184,6 +184,21 @@ fn angle_json(a: &AngleUnit) -> Value {
     }
 }
 
+/// `{"body", "root", "context", "path", "linear", "translation"}`: where a
+/// body sits, `x ↦ linear·x + translation` exactly, in the length unit of
+/// the root's context.
+fn occurrence_json(o: &Occurrence) -> Value {
+    let p = &o.placement;
+    json!({
+        "body": id(o.body),
+        "root": id(o.root),
+        "context": o.context.map(id),
+        "path": ids(&o.path),
+        "linear": p.linear.iter().map(|row| point_to_json(row)).collect::<Vec<_>>(),
+        "translation": point_to_json(&p.translation),
+    })
+}
+
 /// Why the faces have no pieces, when none has: never an empty answer
 /// without a reason.
 fn message(m: &BrepModel) -> Option<String> {
@@ -213,7 +228,7 @@ fn message(m: &BrepModel) -> Option<String> {
 }
 
 /// The model object: `{"kind": "brep", "bodies", "loose_shells",
-/// "contexts", "summary", "unattached", "message"?}` (the faces, edges and
+/// "occurrences", "contexts", "summary", "unattached", "message"?}` (the faces, edges and
 /// vertices are written beside it by [`brep_to_json`] or as lines by
 /// [`brep_to_lines`]).
 ///
@@ -246,6 +261,7 @@ pub fn brep_model_json(m: &BrepModel, write: PieceWriter) -> Result<Value, Error
             })
         })
         .collect();
+    let occurrences: Vec<Value> = m.occurrences.iter().map(occurrence_json).collect();
     let s = &m.summary;
     let uses: Map<String, Value> = s
         .edge_uses
@@ -276,11 +292,13 @@ pub fn brep_model_json(m: &BrepModel, write: PieceWriter) -> Result<Value, Error
         "kind": "brep",
         "bodies": bodies,
         "loose_shells": m.loose_shells.iter().map(shell_json).collect::<Vec<_>>(),
+        "occurrences": occurrences,
         "contexts": contexts,
         "summary": {
             "faces": m.faces.len(),
             "edges": m.edges.len(),
             "vertices": m.vertices.len(),
+            "occurrences": m.occurrences.len(),
             "faces_by_surface": s.faces_by_surface,
             "edges_by_curve": s.edges_by_curve,
             "not_converted": s.not_converted,

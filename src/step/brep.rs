@@ -35,7 +35,7 @@ use crate::patch::Patch;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use rayon::prelude::*;
-use std::collections::{BTreeMap, HashMap};
+use std::collections::{BTreeMap, BTreeSet, HashMap};
 use std::io::BufRead;
 use std::sync::OnceLock;
 
@@ -336,7 +336,8 @@ pub struct Summary {
     pub approximate: BTreeMap<String, usize>,
     /// Edges by use.
     pub edge_uses: BTreeMap<EdgeUse, usize>,
-    /// Entities read but not applied (assembly placements), by type.
+    /// Placements read but applied to no body (e.g. the `MAPPED_ITEM`s of
+    /// a drawing), by type.
     pub not_applied: BTreeMap<String, usize>,
     /// Entities that could not be read: `(id, reason)`.
     pub invalid: Vec<(u64, String)>,
@@ -357,6 +358,10 @@ pub struct BrepModel {
     pub vertices: BTreeMap<u64, Vec<BigRational>>,
     /// Shells held by no solid (read for their faces), by id.
     pub loose_shells: Vec<Shell>,
+    /// Where the bodies sit: one occurrence per placement of a body in
+    /// the assembly (a body placed nowhere is one occurrence, unmoved);
+    /// see [`Occurrence`].
+    pub occurrences: Vec<Occurrence>,
     /// Representation contexts with units, by id.
     pub contexts: BTreeMap<u64, Context>,
     /// The counts.
@@ -367,6 +372,39 @@ pub struct BrepModel {
 }
 
 impl BrepModel {
+    /// The faces of `body`: those of its solids' shells, in order.
+    pub fn body_faces(&self, body: &Body) -> Vec<u64> {
+        body.solids
+            .iter()
+            .filter_map(|s| self.solids.get(s))
+            .flat_map(|s| &s.shells)
+            .flat_map(|sh| sh.faces.iter().copied())
+            .collect()
+    }
+
+    /// The vertices bounding `faces`: the ends of their loops' edges and
+    /// the vertices of their vertex loops, each once.
+    pub fn face_vertices(&self, faces: &[u64]) -> BTreeSet<u64> {
+        let mut out = BTreeSet::new();
+        let bounds = faces
+            .iter()
+            .filter_map(|f| self.faces.get(f))
+            .flat_map(|f| &f.bounds);
+        for b in bounds {
+            match &b.edges {
+                Loop::Edges(es) => {
+                    let edges = es.iter().filter_map(|e| self.edges.get(&e.edge));
+                    out.extend(edges.flat_map(|e| [e.start, e.end]));
+                }
+                Loop::Vertex(v) => {
+                    out.insert(*v);
+                }
+                Loop::Poly(_) => {}
+            }
+        }
+        out
+    }
+
     /// Convert every face's and edge's B-spline to its Bézier pieces now,
     /// on all cores ([`BSpline::pieces`] then returns them at once): for
     /// writers that need them all.
@@ -980,12 +1018,9 @@ fn context(store: &Store, id: u64) -> Result<Context, String> {
     Ok(c)
 }
 
-/// Assembly entities recognised and not applied (placements of bodies).
-const NOT_APPLIED: [&str; 3] = [
-    "NEXT_ASSEMBLY_USAGE_OCCURRENCE",
-    "ITEM_DEFINED_TRANSFORMATION",
-    "MAPPED_ITEM",
-];
+/// Placements, counted under [`Summary::not_applied`] when they place no
+/// body.
+const PLACEMENTS: [&str; 2] = ["ITEM_DEFINED_TRANSFORMATION", "MAPPED_ITEM"];
 
 /// Read the whole B-rep of a STEP file.
 ///
@@ -1054,11 +1089,19 @@ pub fn read_brep_with(input: impl BufRead, options: BrepOptions) -> Result<BrepM
         pending_faces: Vec::new(),
     };
     b.bodies(&order);
+    let placed = assembly::occurrences(&store, &order, &b.model.bodies);
+    for c in placed.occurrences.iter().filter_map(|o| o.context) {
+        b.context(c);
+    }
+    b.model.occurrences = placed.occurrences;
+    b.model.summary.invalid.extend(placed.invalid);
     let mut summary_extra = BTreeMap::new();
     for &id in &order {
         let name = &store[&id].records[0].name;
-        if NOT_APPLIED.contains(&name.as_str()) {
-            *summary_extra.entry(name.clone()).or_insert(0) += 1;
+        if PLACEMENTS.contains(&name.as_str()) {
+            if !placed.applied.contains(&id) {
+                *summary_extra.entry(name.clone()).or_insert(0) += 1;
+            }
         } else if matches!(
             name.as_str(),
             "CLOSED_SHELL" | "OPEN_SHELL" | "ADVANCED_FACE" | "FACE_SURFACE"
@@ -1148,5 +1191,7 @@ impl Shell {
 }
 
 mod analytic;
+mod assembly;
+pub use assembly::{Occurrence, Placement, MAX_OCCURRENCES};
 #[cfg(test)]
 mod tests;

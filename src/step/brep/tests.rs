@@ -9,14 +9,14 @@ fn q(n: i64, d: i64) -> Q {
     ratio(n, d)
 }
 
-fn read(data: &str) -> BrepModel {
+pub(super) fn read(data: &str) -> BrepModel {
     let text =
         format!("ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n{data}ENDSEC;\nEND-ISO-10303-21;\n");
     read_brep(text.as_bytes()).unwrap()
 }
 
 /// A unit square face z = 0 with four LINE edges, an open shell.
-const SQUARE: &str = "\
+pub(super) const SQUARE: &str = "\
 #1=CARTESIAN_POINT('',(0.,0.,0.));#2=CARTESIAN_POINT('',(1.,0.,0.));\n\
 #3=CARTESIAN_POINT('',(1.,1.,0.));#4=CARTESIAN_POINT('',(0.,1.,0.));\n\
 #11=VERTEX_POINT('',#1);#12=VERTEX_POINT('',#2);#13=VERTEX_POINT('',#3);#14=VERTEX_POINT('',#4);\n\
@@ -35,7 +35,7 @@ const SQUARE: &str = "\
 #62=MANIFOLD_SURFACE_SHAPE_REPRESENTATION('square',(#61),#70);\n";
 
 /// A context in millimetres, degrees, tolerance 1/100 mm.
-const MM_DEG: &str = "\
+pub(super) const MM_DEG: &str = "\
 #70=(GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((#74))\n\
  GLOBAL_UNIT_ASSIGNED_CONTEXT((#71,#73)) REPRESENTATION_CONTEXT('',''));\n\
 #71=(LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.));\n\
