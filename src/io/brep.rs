@@ -111,13 +111,17 @@ fn bound_json(b: &Bound) -> Value {
 ///
 /// The piece writer's errors.
 pub fn face_to_json(f: &Face, write: PieceWriter) -> Result<Value, Error> {
-    Ok(json!({
+    let mut o = json!({
         "kind": "face",
         "id": id(f.id),
         "same_sense": f.same_sense,
         "surface": geometry_json(&f.surface, &[f.id], write)?,
         "bounds": f.bounds.iter().map(bound_json).collect::<Vec<_>>(),
-    }))
+    });
+    if let Some(t) = f.trimmed {
+        o["trimmed"] = id(t);
+    }
+    Ok(o)
 }
 
 fn usage_name(u: EdgeUse) -> &'static str {

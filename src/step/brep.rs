@@ -183,9 +183,14 @@ pub struct Bound {
 pub struct Face {
     /// The `ADVANCED_FACE`/`FACE_SURFACE` id.
     pub id: u64,
-    /// Its surface.
+    /// Its surface (for a `RECTANGULAR_TRIMMED_SURFACE`, its basis: the
+    /// face's bounds trim it).
     pub surface: GeometryRef,
-    /// True when the face normal is the surface normal.
+    /// The `RECTANGULAR_TRIMMED_SURFACE` the surface came through, if any.
+    pub trimmed: Option<u64>,
+    /// True when the face normal is the normal of `surface` (the file's
+    /// `same_sense`, reversed when a rectangular trim reverses exactly one
+    /// parameter direction of its basis).
     pub same_sense: bool,
     /// Outer and inner bounds, as written.
     pub bounds: Vec<Bound>,
@@ -321,7 +326,8 @@ pub struct Body {
 /// What was read, counted.
 #[derive(Clone, Debug, Default)]
 pub struct Summary {
-    /// Faces by surface type.
+    /// Faces by the type of surface they name (`RECTANGULAR_TRIMMED_SURFACE`
+    /// for a trim, whatever its basis).
     pub faces_by_surface: BTreeMap<String, usize>,
     /// Edges by (3D) curve type.
     pub edges_by_curve: BTreeMap<String, usize>,
@@ -470,6 +476,32 @@ fn boolean(p: Option<&Param>, what: &str) -> Result<bool, String> {
         _ => Err(format!("{what} should be .T. or .F.")),
     }
 }
+
+/// The basis of surface `id` through any `RECTANGULAR_TRIMMED_SURFACE`s
+/// (`(name, basis_surface, u1, u2, v1, v2, usense, vsense)`, ISO 10303-42
+/// §4.4.43: the basis's own parameters, restricted to `[u1, u2] × [v1,
+/// v2]`), and whether the trims reverse its normal: `S_u × S_v` changes
+/// sign when exactly one of `usense`, `vsense` is false. The face's
+/// bounds lie inside the rectangle, so the basis's pieces (which cover the
+/// bounds) hold the face; `id` itself when it is no trim.
+fn untrimmed(store: &Store, mut id: u64) -> Result<(u64, bool), String> {
+    let mut flipped = false;
+    for _ in 0..MAX_TRIMS {
+        let Some(r) = record(store, id, "RECTANGULAR_TRIMMED_SURFACE") else {
+            return Ok((id, flipped));
+        };
+        let usense = boolean(r.params.get(6), "usense")?;
+        let vsense = boolean(r.params.get(7), "vsense")?;
+        flipped ^= usense != vsense;
+        id = reference(r.params.get(1), "basis_surface")?;
+    }
+    Err(format!(
+        "#{id}: rectangular trims nested over {MAX_TRIMS} deep"
+    ))
+}
+
+/// How deep [`untrimmed`] follows trims of trims (a cycle ends there).
+const MAX_TRIMS: usize = 8;
 
 /// The record of `id` among `names`, or why not.
 fn one_of<'a>(store: &'a Store, id: u64, names: &[&str]) -> Result<&'a Record, String> {
@@ -641,7 +673,8 @@ impl Builder<'_> {
 
     fn pcurve(&self, id: u64) -> Result<Pcurve, String> {
         let r = one_of(self.store, id, &["PCURVE"])?;
-        let surface = reference(r.params.get(1), "basis_surface")?;
+        // A rectangular trim keeps its basis's parameters.
+        let (surface, _) = untrimmed(self.store, reference(r.params.get(1), "basis_surface")?)?;
         let rep = reference(r.params.get(2), "reference_to_curve")?;
         let d = one_of(self.store, rep, &["DEFINITIONAL_REPRESENTATION"])?;
         let items = references(d.params.get(1), "items")?;
@@ -735,8 +768,9 @@ impl Builder<'_> {
             return Ok(());
         }
         let r = one_of(self.store, id, &["ADVANCED_FACE", "FACE_SURFACE"])?;
-        let surface_id = reference(r.params.get(2), "face_geometry")?;
-        let same_sense = boolean(r.params.get(3), "same_sense")?;
+        let written = reference(r.params.get(2), "face_geometry")?;
+        let (surface_id, flipped) = untrimmed(self.store, written)?;
+        let same_sense = boolean(r.params.get(3), "same_sense")? != flipped;
         let mut bounds = Vec::new();
         for b in references(r.params.get(1), "bounds")? {
             let br = one_of(self.store, b, &["FACE_OUTER_BOUND", "FACE_BOUND"])?;
@@ -757,6 +791,7 @@ impl Builder<'_> {
             Face {
                 id,
                 surface,
+                trimmed: (written != surface_id).then_some(written),
                 same_sense,
                 bounds,
             },
@@ -1162,9 +1197,11 @@ fn summarize(m: &mut BrepModel) {
         }
     }
     for f in m.faces.values() {
-        *s.faces_by_surface
-            .entry(f.surface.kind.clone())
-            .or_insert(0) += 1;
+        let written = match f.trimmed {
+            Some(_) => "RECTANGULAR_TRIMMED_SURFACE",
+            None => &f.surface.kind,
+        };
+        *s.faces_by_surface.entry(written.to_owned()).or_insert(0) += 1;
     }
     for e in m.edges.values() {
         *s.edges_by_curve.entry(e.curve.kind.clone()).or_insert(0) += 1;

@@ -102,6 +102,44 @@ fn an_open_shell_its_edges_vertices_units_and_tolerance() {
 }
 
 #[test]
+fn a_face_on_a_rectangular_trim_is_its_basis_with_the_trims_orientation() {
+    let face = "#53=ADVANCED_FACE('',(#51),#52,.T.);";
+    let plain = read(&format!("{SQUARE}{MM_DEG}"));
+    for (senses, same_sense) in [(".T.,.T.", true), (".T.,.F.", false), (".F.,.F.", true)] {
+        // The trim, and a trim of the trim, of the square's plane.
+        let trims = format!(
+            "#53=ADVANCED_FACE('',(#51),#55,.T.);\n\
+             #54=RECTANGULAR_TRIMMED_SURFACE('',#52,-1.,2.,-1.,2.,.T.,.T.);\n\
+             #55=RECTANGULAR_TRIMMED_SURFACE('',#54,0.,1.,0.,1.,{senses});\n"
+        );
+        let m = read(&format!("{}{MM_DEG}", SQUARE.replace(face, &trims)));
+        let f = &m.faces[&53];
+        assert_eq!(
+            (f.trimmed, f.same_sense),
+            (Some(55), same_sense),
+            "{senses}"
+        );
+        assert_eq!(f.surface.entity, 52);
+        assert_eq!(m.summary.faces_by_surface["RECTANGULAR_TRIMMED_SURFACE"], 1);
+        let pieces = |m: &BrepModel| match &m.faces[&53].surface.geometry {
+            Geometry::Analytic(a) => a.pieces.clone(),
+            g => panic!("a converted plane: {g:?}"),
+        };
+        assert_eq!(pieces(&m), pieces(&plain));
+    }
+    let cycle = SQUARE.replace(
+        face,
+        "#53=ADVANCED_FACE('',(#51),#54,.T.);#54=RECTANGULAR_TRIMMED_SURFACE('',#54,0.,1.,0.,1.,.T.,.T.);",
+    );
+    let m = read(&format!("{cycle}{MM_DEG}"));
+    assert!(m
+        .summary
+        .invalid
+        .iter()
+        .any(|(id, why)| *id == 53 && why.contains("nested")));
+}
+
+#[test]
 fn inch_and_metre_units_exactly() {
     let inch =
         "#70=(GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((#74))\n\
