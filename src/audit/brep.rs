@@ -251,12 +251,10 @@ fn distinct_ends(n: &Nurbs) -> bool {
     let Nurbs::Curve(c) = n else {
         return false;
     };
-    let (k, p) = (c.knots().knots(), c.knots().degree());
-    let clamped = k.len() > 2 * p + 1
-        && k[..=p].iter().all(|x| *x == k[0])
-        && k[k.len() - 1 - p..].iter().all(|x| *x == k[k.len() - 1]);
     match (c.control_points().first(), c.control_points().last()) {
-        (Some(a), Some(b)) if clamped => !a.same_projective_point(b, Tolerance::EXACT),
+        (Some(a), Some(b)) if c.knots().is_clamped() => {
+            !a.same_projective_point(b, Tolerance::EXACT)
+        }
         _ => false,
     }
 }

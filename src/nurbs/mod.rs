@@ -140,6 +140,24 @@ impl Knots {
         self.degree
     }
 
+    /// Are the end knots of multiplicity `p + 1` (`u_0 = … = u_p`, and
+    /// alike at the end), so that the first and last control points are
+    /// the ends of the curve?
+    ///
+    /// ```
+    /// use exact_bezier::nurbs::Knots;
+    /// use exact_bezier::{ratio, BigRational};
+    /// let q = |n: i64| ratio::<BigRational>(n, 1);
+    /// let k = Knots::from_multiplicities(1, &[q(0), q(1), q(2)], &[2, 1, 2], 3).unwrap();
+    /// assert!(k.is_clamped());
+    /// ```
+    pub fn is_clamped(&self) -> bool {
+        let (k, p) = (&self.knots, self.degree);
+        k.len() > 2 * p + 1
+            && k[..=p].iter().all(|x| *x == k[0])
+            && k[k.len() - 1 - p..].iter().all(|x| *x == k[k.len() - 1])
+    }
+
     /// The knots `u_0 … u_{n+p+1}`.
     pub fn knots(&self) -> &[BigRational] {
         &self.knots

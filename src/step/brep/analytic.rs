@@ -21,15 +21,16 @@
 //!   they are B-splines; analytic pcurves are named, not converted (their
 //!   range on the edge needs the vertices' surface parameters).
 
+use super::BSpline;
 use super::{
     curve_geometry, surface_geometry, type_name, AnalyticPieces, AngleUnit, Bound, Builder,
     Context, Geometry, GeometryRef, Loop,
 };
-use crate::algebra::RealAlgebraic;
-use crate::algebra::Scalar;
-use crate::analytic::trim_between;
+use crate::algebra::{Ordered, RealAlgebraic, Scalar};
+use crate::analytic::{trim_between, Trimmed};
 use crate::curve::RationalCurve;
 use crate::error::Error;
+use crate::hpoint::HPoint;
 use crate::nurbs::Nurbs;
 use crate::patch::Patch;
 use crate::step::geometry::{curve_pieces, surface_pieces, Context as Readers, Curve, Surface};
@@ -76,6 +77,77 @@ fn bspline_pieces(nurbs: &Nurbs) -> Vec<RationalCurve<RealAlgebraic>> {
         .collect()
 }
 
+/// A trimmed edge curve as geometry.
+fn trimmed(t: Trimmed<RealAlgebraic>, approximate: Option<String>) -> Geometry {
+    Geometry::Analytic(AnalyticPieces {
+        pieces: t.pieces.into_iter().map(Patch::Curve).collect(),
+        approximate,
+        vertex_distance_sq: Some([t.start_distance_sq, t.end_distance_sq]),
+        closed_form: None,
+    })
+}
+
+/// The pieces of a B-spline edge curve, lifted.
+fn spline_pieces(s: &BSpline) -> Vec<RationalCurve<RealAlgebraic>> {
+    s.pieces()
+        .iter()
+        .filter_map(|p| match &p.patch {
+            Patch::Curve(c) => Some(c.map(RealAlgebraic::from_rational)),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Does the B-spline curve `s` run from vertex `a` to vertex `b` (from
+/// `b` to `a` when not `same_sense`): are its ends within the snap
+/// distance of them? Real files write B-spline edges so (every corpus
+/// file does); such an edge keeps its whole curve, and any other is
+/// trimmed between its vertices like an analytic one. A decision in `f64`
+/// (a choice of representation only: both are exact). The ends of a
+/// clamped curve are its end control points; another is converted.
+fn runs_between(
+    s: &BSpline,
+    a: &[BigRational],
+    b: &[BigRational],
+    same_sense: bool,
+    units: &Units,
+) -> bool {
+    let Some([first, last]) = spline_ends(s) else {
+        return false;
+    };
+    let near = |p: &[f64], v: &[BigRational]| {
+        p.len() == v.len()
+            && p.iter()
+                .zip(v)
+                .map(|(x, y)| (x - y.to_f64()).powi(2))
+                .sum::<f64>()
+                .sqrt()
+                <= units.snap
+    };
+    let (from, to) = if same_sense { (a, b) } else { (b, a) };
+    near(&first, from) && near(&last, to)
+}
+
+/// The first and last points of a B-spline curve, in `f64`.
+fn spline_ends(s: &BSpline) -> Option<[Vec<f64>; 2]> {
+    let Nurbs::Curve(c) = s.nurbs() else {
+        return None;
+    };
+    let project = |h: &HPoint<BigRational>| -> Option<Vec<f64>> {
+        Some(h.project().ok()?.iter().map(Ordered::to_f64).collect())
+    };
+    if c.knots().is_clamped() {
+        let ctrl = c.control_points();
+        return Some([project(ctrl.first()?)?, project(ctrl.last()?)?]);
+    }
+    let pieces = spline_pieces(s);
+    let end = |c: &RationalCurve<RealAlgebraic>, t: i64| -> Option<Vec<f64>> {
+        let p = c.eval(&RealAlgebraic::from_i64(t)).ok()?;
+        Some(p.iter().map(Ordered::to_f64).collect())
+    };
+    Some([end(pieces.first()?, 0)?, end(pieces.last()?, 1)?])
+}
+
 /// The Cartesian control points of pieces (positive weights: their hull
 /// contains the pieces).
 fn control_points(pieces: &[Patch<RealAlgebraic>]) -> Vec<Vec<RealAlgebraic>> {
@@ -119,12 +191,20 @@ impl Builder<'_> {
         same_sense: bool,
     ) -> GeometryRef {
         let kind = type_name(self.store, id);
+        let (a, b) = (&self.model.vertices[&start], &self.model.vertices[&end]);
         let geometry = match curve_geometry(&kind, id, &self.conv) {
-            Geometry::NotConverted if self.analytic => {
-                let a = lift(&self.model.vertices[&start]);
-                let b = lift(&self.model.vertices[&end]);
-                self.trimmed_curve(units, id, &a, &b, same_sense)
-                    .unwrap_or_else(|e| Geometry::Invalid(e.to_string()))
+            Geometry::NotConverted if self.analytic => self
+                .trimmed_curve(units, id, &lift(a), &lift(b), same_sense)
+                .unwrap_or_else(|e| Geometry::Invalid(e.to_string())),
+            Geometry::BSpline(s) if self.analytic && !runs_between(&s, a, b, same_sense, units) => {
+                let t = trim_between(
+                    &spline_pieces(&s),
+                    &lift(a),
+                    &lift(b),
+                    same_sense,
+                    units.snap,
+                );
+                t.map_or_else(|e| Geometry::Invalid(e.to_string()), |t| trimmed(t, None))
             }
             g => g,
         };
@@ -149,12 +229,7 @@ impl Builder<'_> {
             return Ok(Geometry::NotConverted);
         };
         let t = trim_between(&c.pieces, start, end, same_sense, units.snap)?;
-        Ok(Geometry::Analytic(AnalyticPieces {
-            pieces: t.pieces.into_iter().map(Patch::Curve).collect(),
-            approximate: c.approximate,
-            vertex_distance_sq: Some([t.start_distance_sq, t.end_distance_sq]),
-            closed_form: None,
-        }))
+        Ok(trimmed(t, c.approximate))
     }
 
     /// The surface of a face, covering its bounds.

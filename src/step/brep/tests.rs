@@ -1,4 +1,5 @@
 use super::*;
+use crate::algebra::{RealAlgebraic, Scalar};
 use crate::patch::Patch;
 use crate::ratio;
 use std::collections::BTreeMap;
@@ -339,6 +340,44 @@ fn complex_parts_in_any_order_and_a_bspline_edge() {
     let f = &m.faces[&26];
     assert!(!f.same_sense);
     assert!(!f.bounds[0].outer && !f.bounds[0].orientation);
+}
+
+#[test]
+fn a_bspline_edge_between_inner_points_of_its_curve_is_trimmed_to_them() {
+    // The parabola with control points (1,0), (1,1), (0,1) has
+    // x(1/2) = (1,0)/4 + (1,1)/2 + (0,1)/4 = (3/4, 3/4), a decimal vertex.
+    let data = "\
+#1=CARTESIAN_POINT('',(1.,0.,0.));#2=CARTESIAN_POINT('',(1.,1.,0.));#3=CARTESIAN_POINT('',(0.,1.,0.));\n\
+#4=CARTESIAN_POINT('',(0.75,0.75,0.));\n\
+#11=VERTEX_POINT('',#4);#12=VERTEX_POINT('',#3);\n\
+#20=B_SPLINE_CURVE_WITH_KNOTS('',2,(#1,#2,#3),.UNSPECIFIED.,.F.,.F.,(3,3),(0.,1.),.UNSPECIFIED.);\n\
+#21=EDGE_CURVE('',#12,#11,#20,.F.);#22=ORIENTED_EDGE('',*,*,#21,.T.);\n\
+#23=EDGE_LOOP('',(#22));#24=FACE_BOUND('',#23,.T.);#25=PLANE('',#9);#9=AXIS2_PLACEMENT_3D('',#1,$,$);\n\
+#26=FACE_SURFACE('',(#24),#25,.T.);\n";
+    let m = read(data);
+    let e = &m.edges[&21];
+    assert_eq!(e.curve.kind, "B_SPLINE_CURVE_WITH_KNOTS");
+    let Geometry::Analytic(a) = &e.curve.geometry else {
+        panic!("trimmed pieces: {:?}", e.curve.geometry)
+    };
+    // Against the curve: from (0, 1, 0) back to (3/4, 3/4, 0), exactly on it.
+    let at = |k: usize, t: i64| match &a.pieces[k] {
+        Patch::Curve(c) => c.eval(&RealAlgebraic::from_i64(t)).unwrap(),
+        p => panic!("an edge piece is a curve: {p:?}"),
+    };
+    let ends: Vec<Vec<Q>> = [at(0, 0), at(a.pieces.len() - 1, 1)]
+        .iter()
+        .map(|p| p.iter().map(|x| x.as_rational().unwrap()).collect())
+        .collect();
+    assert_eq!(
+        ends,
+        [
+            vec![q(0, 1), q(1, 1), q(0, 1)],
+            vec![q(3, 4), q(3, 4), q(0, 1)]
+        ]
+    );
+    let zero = RealAlgebraic::from_i64(0);
+    assert_eq!(a.vertex_distance_sq, Some([zero.clone(), zero]));
 }
 
 /// Faces by surface type and edges by curve type, counted from the text
