@@ -96,13 +96,38 @@ fn curve(g: &mut Numbers, n: usize, dim: usize, algebraic: bool) -> String {
 
 /// A rect patch of bidegree `(m, n)` in dimension 3.
 fn rect(g: &mut Numbers, m: usize, n: usize, algebraic: bool) -> String {
+    rect_weighted(g, m, n, |g, _, _| g.weight(algebraic))
+}
+
+/// A rect patch of bidegree `(m, n)` in dimension 3 whose weight `(i, j)`
+/// is `weight(g, i, j)` (JSON text).
+fn rect_weighted(
+    g: &mut Numbers,
+    m: usize,
+    n: usize,
+    mut weight: impl FnMut(&mut Numbers, usize, usize) -> String,
+) -> String {
     let points = (0..=m)
         .map(|_| (0..=n).map(|_| g.point(3)).collect())
         .collect();
     let weights = (0..=m)
-        .map(|_| (0..=n).map(|_| g.weight(algebraic)).collect())
+        .map(|i| (0..=n).map(|j| weight(g, i, j)).collect())
         .collect();
     net("rect", &format!("[{m},{n}]"), points, weights)
+}
+
+/// A bicubic whose weights are those of a random integer bicubic moved by
+/// Möbius maps `A/10`, `B/10` and scaled by `k`, as
+/// `benches/make_dedup_input.py` writes its copies:
+/// `w k (10−A)^i A^(3−i) (10−B)^j B^(3−j) / 10⁶` (numbers of up to 48 bits
+/// that the key reduces: its machine path, near its top).
+fn moved_bicubic(g: &mut Numbers) -> String {
+    let (a, b, k) = (g.int(1, 9), g.int(1, 9), g.int(1, 5));
+    rect_weighted(g, 3, 3, |g, i, j| {
+        let pow = |x: i64, e: usize| x.pow(e as u32);
+        let w = g.int(1, 9) * k * pow(10 - a, i) * pow(a, 3 - i) * pow(10 - b, j) * pow(b, 3 - j);
+        format!("\"{w}/1000000\"")
+    })
 }
 
 /// A tri patch of degree `n` in dimension 3 (row `i` has `n + 1 − i`
@@ -489,6 +514,40 @@ fn measure(b: &mut Bench) {
     let bulk_file = b.file("bulk.jsonl", &(bulk.join("\n") + "\n"));
     b.row("key", "2000 random rects (3,3)", &["key", &bulk_file]);
     b.row("dedup", "2000 random rects (3,3)", &["dedup", &bulk_file]);
+    let moved: Vec<String> = (0..2000).map(|_| moved_bicubic(g)).collect();
+    let moved_file = b.file("moved.jsonl", &(moved.join("\n") + "\n"));
+    b.row(
+        "key",
+        "2000 moved rects (3,3), p/10⁶",
+        &["key", &moved_file],
+    );
+    // Weights of 40 bits: the invariants leave i128, the key is over BigRational.
+    let wide: Vec<String> = (0..300)
+        .map(|_| rect_weighted(g, 3, 3, |g, _, _| g.int(1, 1 << 40).to_string()))
+        .collect();
+    let wide_file = b.file("wide.jsonl", &(wide.join("\n") + "\n"));
+    b.row(
+        "key",
+        "300 rects (3,3), 40-bit weights",
+        &["key", &wide_file],
+    );
+    // Weights of 60 digits: beyond i128, read by the general reader.
+    let huge: Vec<String> = (0..100)
+        .map(|_| {
+            rect_weighted(g, 3, 3, |g, _, _| {
+                let digits: String = (0..6)
+                    .map(|_| g.int(1_000_000_000, 9_999_999_999).to_string())
+                    .collect();
+                format!("\"{digits}\"")
+            })
+        })
+        .collect();
+    let huge_file = b.file("huge.jsonl", &(huge.join("\n") + "\n"));
+    b.row(
+        "key",
+        "100 rects (3,3), 60-digit weights",
+        &["key", &huge_file],
+    );
     let copies: Vec<String> = (0..200)
         .map(|_| std::fs::read_to_string(&r16e).expect("written"))
         .map(|s| s.replace('\n', ""))

@@ -117,36 +117,35 @@ impl Member {
 
     /// The patch and key work of `r` by the fast reader when it is a line
     /// of the plain shape whose net is certified minimal (then the work is
-    /// that [`key_work`] charges the same patch read by [`Member::read`]).
+    /// that [`key_work`] charges the same patch read by [`Member::read`]:
+    /// [`SmallPatch::certify`] has run the machine-integer key text, which
+    /// decides the [`KeyPlan`] as [`key_plan`] does).
     fn read_fast(r: &Record) -> Option<(Member, u64)> {
         let mut s = r.small_patch()?;
         let size = s.size()?;
-        s.certify()
-            .then(|| (Member::Small(s), minimal_key_work(&size)))
+        s.certify().then(|| {
+            let plan = if s.machine_keyed() {
+                KeyPlan::Machine
+            } else {
+                KeyPlan::Minimal
+            };
+            (Member::Small(s), rational_key_work(plan, &size))
+        })
     }
 }
 
 /// The estimated work of one record's canonical key (docs/limits.md),
-/// before it is computed. Over Q it follows the record's [`KeyPlan`], read
-/// modulo p: a certified minimal net costs a change of basis modulo p and
-/// the normalized points and invariants (numbers of `bits·(N+1)` bits); an
-/// elevated copy adds one exact pass that undoes the elevation
-/// (`O(size · degree)`) and is then charged as a patch of the lower degree;
-/// anything else is charged the model of `coincide`. Over the real
-/// algebraic numbers: the model of `coincide` and the signs that order
-/// the normalized points (charged as one point written,
-/// [`limits::write_ops`]: a sign refines an isolating interval), times the
-/// cost of one operation in the field the record's numbers span, refused
-/// when that field is over the field degree limit.
+/// before its exact part is computed: over Q, [`rational_key_work`] of the
+/// record's [`KeyPlan`]. Over the real algebraic numbers: the model of
+/// `coincide` and the signs that order the normalized points (charged as
+/// one point written, [`limits::write_ops`]: a sign refines an isolating
+/// interval), times the cost of one operation in the field the record's
+/// numbers span, refused when that field is over the field degree limit.
 ///
 /// # Errors
 ///
 /// As [`key_plan`] (a tri patch, a weight ≤ 0).
 pub(crate) fn key_work(p: &Member) -> Result<u64, Error> {
-    let coincide = |s: &Size| {
-        let (ops, bits) = super::coincide::coincide_cost(s);
-        s.exact_units(ops, bits)
-    };
     Ok(match p {
         Member::Small(s) => key_work(&Member::Rational(s.to_patch()?))?,
         Member::Algebraic(p) => {
@@ -157,24 +156,41 @@ pub(crate) fn key_work(p: &Member) -> Result<u64, Error> {
             let (ops, bits) = super::coincide::coincide_cost(&s);
             s.exact_units(ops + s.write_ops(s.dim as u64 + 1), bits)
         }
-        Member::Rational(q) => {
-            let size = q.size();
-            match key_plan(q)? {
-                KeyPlan::Minimal => minimal_key_work(&size),
-                KeyPlan::General => coincide(&size),
-                KeyPlan::Elevated(to) => {
-                    let lower = Size { degree: to, ..size };
-                    let undo = (size.degree.0 as u64 + 1)
-                        * (size.degree.1 as u64 + 1)
-                        * (lower.total_degree() + 2)
-                        * (size.dim as u64 + 1);
-                    modp_work(&size)
-                        .saturating_add(limits::exact_work(undo, size.bits))
-                        .saturating_add(coincide(&lower))
-                }
-            }
-        }
+        Member::Rational(q) => rational_key_work(key_plan(q)?, &q.size()),
     })
+}
+
+/// The estimated key work of a record over Q of size `size` computed by
+/// `plan`, read modulo p: a net whose key stays in machine integers costs
+/// [`machine_key_work`]; a certified net whose key leaves them adds the
+/// `BigRational` key ([`big_key_work`]); an elevated copy adds to the
+/// change of basis modulo p one exact pass that undoes the elevation
+/// (`O(size · degree)`) and is then charged as a patch of the lower degree
+/// by the model of `coincide`; anything else is charged the model of
+/// `coincide`.
+fn rational_key_work(plan: KeyPlan, size: &Size) -> u64 {
+    let coincide = |s: &Size| {
+        let (ops, bits) = super::coincide::coincide_cost(s);
+        s.exact_units(ops, bits)
+    };
+    match plan {
+        KeyPlan::Machine => machine_key_work(size),
+        KeyPlan::Minimal => machine_key_work(size).saturating_add(big_key_work(size)),
+        KeyPlan::General => coincide(size),
+        KeyPlan::Elevated(to) => {
+            let lower = Size {
+                degree: to,
+                ..*size
+            };
+            let undo = (size.degree.0 as u64 + 1)
+                * (size.degree.1 as u64 + 1)
+                * (lower.total_degree() + 2)
+                * (size.dim as u64 + 1);
+            modp_work(size)
+                .saturating_add(limits::exact_work(undo, size.bits))
+                .saturating_add(coincide(&lower))
+        }
+    }
 }
 
 /// The size of a record and the degree its canonical form is computed at:
@@ -185,7 +201,7 @@ pub(crate) fn least_degree(p: &Member) -> Result<(Size, (usize, usize)), Error> 
         let s = q.size();
         Ok(match key_plan(q)? {
             KeyPlan::Elevated(to) => (s, to),
-            KeyPlan::Minimal | KeyPlan::General => (s, s.degree),
+            KeyPlan::Machine | KeyPlan::Minimal | KeyPlan::General => (s, s.degree),
         })
     };
     match p {
@@ -205,18 +221,31 @@ fn modp_work(s: &Size) -> u64 {
     m1 * n1 * (m1 + n1) * (s.dim as u64 + 1)
 }
 
-/// The work of the key of a certified minimal net of size `s`: the change
-/// of basis modulo p ([`modp_work`]) and the points, invariants and digest
-/// of up to 8 symmetries (`16(m+1)(n+1)(d+1)` exact operations on numbers
-/// of `bits·(N+1)` bits: two per point and symmetry, calibrated by
-/// `cli/benches/cost_model.rs`).
-fn minimal_key_work(s: &Size) -> u64 {
+/// Work units of one machine-integer operation of the key (reading a
+/// number, a product, a comparison or a digit of text on fractions of
+/// `i128`), per number of the net and symmetry: calibrated by
+/// `cli/benches/cost_model.rs`.
+const MACHINE_OPS_PER_NUMBER: u64 = 48;
+
+/// The work of the key of a certified minimal net of size `s` whose numbers
+/// stay in machine integers: the change of basis modulo p
+/// ([`modp_work`]) and [`MACHINE_OPS_PER_NUMBER`] per stored number
+/// (`(m+1)(n+1)(d+1)` of them), whatever their bits (at most 127 each).
+fn machine_key_work(s: &Size) -> u64 {
+    let numbers = (s.degree.0 as u64 + 1) * (s.degree.1 as u64 + 1) * (s.dim as u64 + 1);
+    modp_work(s).saturating_add(MACHINE_OPS_PER_NUMBER.saturating_mul(numbers))
+}
+
+/// The work of the key of a certified minimal net of size `s` over
+/// `BigRational`: the points, invariants and digest of up to 8 symmetries
+/// (`16(m+1)(n+1)(d+1)` exact operations on numbers of `bits·(N+1)` bits:
+/// two per point and symmetry, calibrated by `cli/benches/cost_model.rs`).
+fn big_key_work(s: &Size) -> u64 {
     let (m1, n1) = (s.degree.0 as u64 + 1, s.degree.1 as u64 + 1);
-    let exact = limits::exact_work(
+    limits::exact_work(
         16 * m1 * n1 * (s.dim as u64 + 1),
         s.bits.max(8).saturating_mul(s.total_degree() + 1),
-    );
-    modp_work(s).saturating_add(exact)
+    )
 }
 
 /// `key` on every record of a chunk, results in input order: a record
@@ -479,7 +508,7 @@ mod tests {
     /// The key text of a member over Q (the pool has no other).
     fn text_of(p: Member) -> Result<String, Error> {
         match p {
-            Member::Small(s) => s.key_text(),
+            Member::Small(s) => s.into_key_text(),
             Member::Rational(q) => canonical_text(&q),
             Member::Algebraic(_) => Err(Error::Domain("not a rational record".into())),
         }
@@ -536,6 +565,33 @@ mod tests {
             // Each record is charged at most once, each distinct text at least once.
             prop_assert!(charged <= every);
             prop_assert!(charged >= distinct.values().sum::<u64>());
+        }
+    }
+
+    /// Quadratic curves whose weights are small or of up to 40 bits (then
+    /// the key of some leaves machine integers).
+    fn curve_line() -> impl Strategy<Value = String> {
+        let weight = prop_oneof![1u64..5, 1u64..1 << 40];
+        (
+            prop::array::uniform3(-9i32..9),
+            prop::array::uniform3(weight),
+        )
+            .prop_map(|(x, w)| {
+                format!(
+                    r#"{{"kind": "curve", "points": [[{}], [{}], [{}]], "weights": [{}, {}, {}]}}"#,
+                    x[0], x[1], x[2], w[0], w[1], w[2]
+                )
+            })
+    }
+
+    proptest! {
+        #[test]
+        fn the_fast_reader_charges_what_the_general_one_does(line in curve_line()) {
+            let r = Record::Line(1, line);
+            let general = key_work(&Member::read(&r).unwrap()).unwrap();
+            if let Some((_, fast)) = Member::read_fast(&r) {
+                prop_assert_eq!(fast, general);
+            }
         }
     }
 

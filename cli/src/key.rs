@@ -35,11 +35,11 @@ pub fn run(a: &Args) -> Result<(), Error> {
 ///
 /// [`Error::Domain`] for an irrational key (no canonical text: use
 /// `dedup`, which compares such keys exactly).
-fn member_text(p: &Member) -> Result<String, Error> {
+fn member_text(p: Member) -> Result<String, Error> {
     match p {
-        Member::Small(s) => s.key_text(),
-        Member::Rational(p) => canonical_text(p),
-        Member::Algebraic(p) => algebraic_text(p),
+        Member::Small(s) => s.into_key_text(),
+        Member::Rational(p) => canonical_text(&p),
+        Member::Algebraic(p) => algebraic_text(&p),
     }
 }
 
@@ -66,7 +66,7 @@ fn keys(a: &Args) -> Result<(), Error> {
     let mut recent = RecentKeys::new(RECENT_SLOTS_LOG2);
     let n = for_each_chunk_ahead(reader, |first, records| {
         let lines = key_chunk("key", first, &records, &mut recent, |p| {
-            let text = member_text(&p)?;
+            let text = member_text(p)?;
             Ok((KeyDigest::of_text(&text), a.text.then_some(text)))
         })?;
         for (k, (digest, text)) in lines.into_iter().enumerate() {

@@ -318,12 +318,18 @@ pub fn canonical_text(p: &Patch<BigRational>) -> Result<String, Error> {
 }
 
 /// How [`canonical_text`] reduces a patch to minimal degree, read modulo
-/// `p = 2⁶¹ − 1` before any exact work, so that a caller can charge the
-/// work first ([`key_plan`]).
+/// `p = 2⁶¹ − 1` before any exact work, and whether the key of a minimal
+/// net stays in machine integers, so that a caller can charge the work
+/// first ([`key_plan`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum KeyPlan {
-    /// Certified minimal: the key is read off the net (work proportional to
-    /// its size, numbers growing with the degree through the invariants).
+    /// Certified minimal, and no number of the key leaves `i128`: the key
+    /// text is read off the net in machine integers (work proportional to
+    /// its size, on machine words).
+    Machine,
+    /// Certified minimal, but a number of the key leaves `i128`: the key is
+    /// read off the net over `BigRational` (numbers growing with the degree
+    /// through the invariants).
     Minimal,
     /// The net looks like an elevation of one of this lower bidegree
     /// (`(m, 0)` for a curve): one exact pass undoes it, then the key of the
@@ -333,14 +339,16 @@ pub enum KeyPlan {
     General,
 }
 
-/// The [`KeyPlan`] of a curve or rect patch over Q.
+/// The [`KeyPlan`] of a curve or rect patch over Q. For a certified net it
+/// runs the machine-integer key text to see whether it fits (work linear in
+/// the net; [`SmallPatch::certify`] keeps that text).
 ///
 /// ```
 /// use exact_bezier::{coincide::canonical::{key_plan, KeyPlan}, Patch, RationalCurve, ratio};
 /// use exact_bezier::BigRational;
 /// let p = |x: i64| vec![ratio::<BigRational>(x, 1)];
 /// let c = RationalCurve::new(vec![p(0), p(1), p(3)], vec![ratio(1, 1), ratio(2, 1), ratio(1, 1)]).unwrap();
-/// assert_eq!(key_plan(&Patch::Curve(c.clone())).unwrap(), KeyPlan::Minimal);
+/// assert_eq!(key_plan(&Patch::Curve(c.clone())).unwrap(), KeyPlan::Machine);
 /// assert_eq!(key_plan(&Patch::Curve(c.elevate(5))).unwrap(), KeyPlan::Elevated((2, 0)));
 /// ```
 ///
@@ -348,9 +356,12 @@ pub enum KeyPlan {
 ///
 /// As [`canonical_key`].
 pub fn key_plan(p: &Patch<BigRational>) -> Result<KeyPlan, Error> {
-    let (net, _) = net_of(p)?;
+    let (net, curve) = net_of(p)?;
     if certified_minimal(&net) {
-        return Ok(KeyPlan::Minimal);
+        return Ok(match small::key_text(&net, curve) {
+            Some(_) => KeyPlan::Machine,
+            None => KeyPlan::Minimal,
+        });
     }
     let shape = (net.len() - 1, net[0].len() - 1);
     Ok(match BigRational::degree_lower_bound(&net) {

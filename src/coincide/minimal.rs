@@ -33,6 +33,7 @@ use crate::bernstein::{
     bernstein_to_power_into, bernstein_to_power_with, binomial_rows, power_to_bernstein,
     reduce_elevated,
 };
+use crate::coincide::certificate::FpGrids;
 use crate::coincide::coprime::coprime_by_intervals;
 use crate::curve::RationalCurve;
 use crate::error::Error;
@@ -263,7 +264,7 @@ impl Reducible for BigRational {
     /// coefficient that is zero over Q is zero modulo p, so this degree is
     /// at most the actual one.
     fn degree_lower_bound(net: &Net<Self>) -> Option<(usize, usize)> {
-        net_mod_p(net).map(|image| actual_degree(&power_components(&image), |a, _| a.is_zero()))
+        bernstein_mod_p(net).map(|image| image.actual_degree())
     }
 }
 
@@ -375,10 +376,6 @@ pub(crate) fn minimal_net<T: Reducible>(net: &Net<T>) -> Minimal<Net<T>, T> {
     }
 }
 
-/// Fixed evaluation points in `Z/pZ` for the coprimality certificate.
-const PROBE_U: u64 = 0x2545_F491_4F6C_DD1D % crate::algebra::modp::MODULUS;
-const PROBE_V: u64 = 0x1B87_3593_9E37_79B9 % crate::algebra::modp::MODULUS;
-
 /// A certificate, modulo `p = 2⁶¹ − 1`, that a net over Q is already of
 /// minimal bidegree. `true` is a proof; `false` only means "not certified".
 ///
@@ -391,27 +388,22 @@ const PROBE_V: u64 = 0x1B87_3593_9E37_79B9 % crate::algebra::modp::MODULUS;
 /// gcd of 1 over F_p excludes such `g`. (3) The same with `u = u₀` excludes a
 /// factor with `deg_v g ≥ 1`; what is left is a constant.
 pub(crate) fn certified_minimal(net: &Net<BigRational>) -> bool {
-    net_mod_p(net).is_some_and(|image| certified_image(&image))
+    bernstein_mod_p(net).is_some_and(|image| image.certified())
 }
 
-/// The certificate of [`certified_minimal`] on the image modulo `p` of a
-/// net over Q (every denominator invertible modulo `p`).
-pub(crate) fn certified_image(image: &Net<Fp>) -> bool {
-    let comps = power_components(image);
-    let (m, n) = (image.len() - 1, image[0].len() - 1);
-    actual_degree(&comps, |a, _| a.is_zero()) == (m, n) && coprime_fp(&comps, (m, n))
-}
-
-/// The image of `net` modulo `p`; `None` when a denominator is divisible
-/// by `p`.
-fn net_mod_p(net: &Net<BigRational>) -> Option<Net<Fp>> {
-    net.iter()
-        .map(|row| {
-            row.iter()
-                .map(|h| h.try_map(&Fp::from_rational_checked))
-                .collect()
-        })
-        .collect()
+/// The image modulo `p` of `net` converted to the power basis, as flat
+/// grids ([`FpGrids::from_bernstein`]); `None` when a denominator is
+/// divisible by `p`.
+fn bernstein_mod_p(net: &Net<BigRational>) -> Option<FpGrids> {
+    let (m, n) = (net.len() - 1, net[0].len() - 1);
+    let comps = net[0][0].coords.len();
+    let mut data = Vec::with_capacity(comps * (m + 1) * (n + 1));
+    for c in 0..comps {
+        for h in net.iter().flatten() {
+            data.push(Fp::from_rational_checked(&h.coords[c])?);
+        }
+    }
+    Some(FpGrids::from_bernstein(data, comps, (m, n)))
 }
 
 /// The net of bidegree `(k, l)` whose degree elevation is `net`, or `None`
@@ -449,110 +441,21 @@ fn undo_elevation<T: Field>(net: &Net<T>, (k, l): (usize, usize)) -> Option<Net<
     )
 }
 
-/// Both coprimality checks of [`certified_minimal`] on power grids over
-/// F_p whose (maximal) bidegree is `(m, n)`.
-fn coprime_fp(comps: &[Vec<Vec<Fp>>], (m, n): (usize, usize)) -> bool {
-    coprime_in(comps, m, |g| specialize_v(g, Fp::new(PROBE_V)))
-        && coprime_in(comps, n, |g| specialize_u(g, Fp::new(PROBE_U)))
-}
-
 /// The certificate of [`certified_minimal`] for polynomials over Q: `true`
 /// proves they have no common factor of positive degree.
 fn coprime_mod_p(polys: &[BPoly<BigRational>]) -> bool {
     let m = polys.iter().filter_map(BPoly::deg_u).max().unwrap_or(0);
     let n = polys.iter().filter_map(BPoly::deg_v).max().unwrap_or(0);
-    let image: Option<Vec<Vec<Vec<Fp>>>> = polys
-        .iter()
-        .map(|p| {
-            p.to_grid(m, n)
-                .iter()
-                .map(|row| row.iter().map(Fp::from_rational_checked).collect())
-                .collect()
-        })
-        .collect();
-    image.is_some_and(|g| coprime_fp(&g, (m, n)))
-}
-
-/// No common factor of positive degree in the direction whose specialized
-/// components `spec` gives (degree `deg` expected).
-fn coprime_in(comps: &[Vec<Vec<Fp>>], deg: usize, spec: impl Fn(&[Vec<Fp>]) -> Vec<Fp>) -> bool {
-    if deg == 0 {
-        return true;
-    }
-    let polys: Vec<Vec<Fp>> = comps.iter().map(|g| spec(g)).collect();
-    if !polys.iter().any(|p| p.len() == deg + 1) {
-        return false;
-    }
-    let mut g = Vec::new();
+    let mut data = Vec::with_capacity(polys.len() * (m + 1) * (n + 1));
     for p in polys {
-        g = pseudo_gcd(g, p);
-        if g.len() == 1 {
-            return true;
+        for x in p.to_grid(m, n).iter().flatten() {
+            match Fp::from_rational_checked(x) {
+                Some(x) => data.push(x),
+                None => return false,
+            }
         }
     }
-    false
-}
-
-/// A polynomial over F_p (coefficients from the constant up, no trailing
-/// zeros) with the degree of `gcd(a, b)`: Euclid's algorithm with pseudo-
-/// remainders ([`pseudo_rem`]), which need no inverse modulo p (each is a
-/// remainder times a nonzero constant, so the sequence's degrees are those
-/// of the monic one; von zur Gathen & Gerhard, *Modern Computer Algebra*,
-/// §6.12).
-fn pseudo_gcd(mut a: Vec<Fp>, mut b: Vec<Fp>) -> Vec<Fp> {
-    while !b.is_empty() {
-        pseudo_rem(&mut a, &b);
-        std::mem::swap(&mut a, &mut b);
-    }
-    a
-}
-
-/// `a ← lc(b)^k · (a mod b)` for `b ≠ 0`: while `deg a ≥ deg b`,
-/// `a ← lc(b)·a − lc(a)·x^(deg a − deg b)·b` (the leading term cancels).
-fn pseudo_rem(a: &mut Vec<Fp>, b: &[Fp]) {
-    let lb = b[b.len() - 1];
-    while a.len() >= b.len() {
-        let la = a[a.len() - 1];
-        let shift = a.len() - b.len();
-        for x in a.iter_mut() {
-            *x = *x * lb;
-        }
-        for (x, &y) in a[shift..].iter_mut().zip(b) {
-            *x = *x - la * y;
-        }
-        trim(a);
-    }
-}
-
-/// The coefficients of `grid` at `v = v0`, as a polynomial in `u` (no
-/// trailing zeros).
-fn specialize_v(grid: &[Vec<Fp>], v0: Fp) -> Vec<Fp> {
-    let mut c = grid.iter().map(|row| horner(row.iter(), v0)).collect();
-    trim(&mut c);
-    c
-}
-
-/// The coefficients of `grid` at `u = u0`, as a polynomial in `v` (no
-/// trailing zeros).
-fn specialize_u(grid: &[Vec<Fp>], u0: Fp) -> Vec<Fp> {
-    let n = grid.first().map_or(0, Vec::len);
-    let mut c = (0..n)
-        .map(|q| horner(grid.iter().map(|r| &r[q]), u0))
-        .collect();
-    trim(&mut c);
-    c
-}
-
-/// Drop the trailing zeros of `c`.
-fn trim(c: &mut Vec<Fp>) {
-    while c.last().is_some_and(Fp::is_zero) {
-        c.pop();
-    }
-}
-
-/// `Σ_k c_k x^k` for the coefficients `c_0, c_1, …` (Horner's rule).
-fn horner<'a>(coeffs: impl DoubleEndedIterator<Item = &'a Fp>, x: Fp) -> Fp {
-    coeffs.rev().fold(Fp::zero(), |acc, &c| acc * x + c)
+    FpGrids::new(data, polys.len(), (m, n)).coprime()
 }
 
 /// Multiply every homogeneous component of `r` (bidegree (m, n)) by the
@@ -698,43 +601,6 @@ mod tests {
     use crate::bernstein::bernstein_to_power;
     use crate::samples::rect_1x2 as sample;
     type Q = BigRational;
-
-    /// Polynomials over F_p of degree < 4, from small coefficients (so
-    /// that common factors are frequent), times a planted factor of degree
-    /// `planted`.
-    fn fp_polys() -> impl proptest::strategy::Strategy<Value = Vec<Vec<Fp>>> {
-        use proptest::prelude::*;
-        let poly = || prop::collection::vec(0u64..3, 0..4);
-        (prop::collection::vec(poly(), 1..4), poly()).prop_map(|(ps, factor)| {
-            let f = UPoly::new(factor.into_iter().map(Fp::new).collect());
-            let f = if f.is_zero() {
-                UPoly::constant(Fp::new(1))
-            } else {
-                f
-            };
-            ps.into_iter()
-                .map(|p| {
-                    UPoly::new(p.into_iter().map(Fp::new).collect())
-                        .mul(&f)
-                        .coeffs()
-                        .to_vec()
-                })
-                .collect()
-        })
-    }
-
-    proptest::proptest! {
-        #[test]
-        fn pseudo_remainders_find_the_gcd_degree_of_monic_euclid(polys in fp_polys()) {
-            let mut monic = UPoly::zero();
-            let mut pseudo = Vec::new();
-            for p in &polys {
-                monic = monic.gcd(&UPoly::new(p.clone()));
-                pseudo = pseudo_gcd(pseudo, p.clone());
-                proptest::prop_assert_eq!(monic.degree(), pseudo.len().checked_sub(1));
-            }
-        }
-    }
 
     #[test]
     fn round_trip_power_bernstein() {

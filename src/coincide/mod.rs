@@ -30,6 +30,7 @@
 //! curves).
 
 pub mod canonical;
+mod certificate;
 mod coprime;
 mod filter;
 pub mod minimal;

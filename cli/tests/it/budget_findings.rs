@@ -113,6 +113,102 @@ fn curvature_far_outside_is_refused_at_once() {
     );
 }
 
+/// A scrambled small integer from `seed` (a net of such numbers is of
+/// full bidegree and coprime: certified minimal).
+fn scrambled(seed: usize, modulus: usize) -> usize {
+    seed.wrapping_mul(2_654_435_761).rotate_left(13) % modulus
+}
+
+/// A bicubic line for the bulk commands: scrambled coordinates from `k`,
+/// weight `(i, j)` the JSON text `weight(i, j)`.
+fn bicubic(k: usize, weight: impl Fn(usize, usize) -> String) -> String {
+    let rows: Vec<String> = (0..4)
+        .map(|i| {
+            let p: Vec<String> = (0..4)
+                .map(|j| {
+                    let c = |axis: usize| scrambled(((k * 4 + i) * 4 + j) * 3 + axis, 19);
+                    format!("[{},{},{}]", c(0), c(1), c(2))
+                })
+                .collect();
+            format!("[{}]", p.join(","))
+        })
+        .collect();
+    let weights: Vec<String> = (0..4)
+        .map(|i| {
+            format!(
+                "[{}]",
+                (0..4).map(|j| weight(i, j)).collect::<Vec<_>>().join(",")
+            )
+        })
+        .collect();
+    format!(
+        r#"{{"kind":"rect","degree":[3,3],"points":[{}],"weights":[{}]}}"#,
+        rows.join(","),
+        weights.join(",")
+    )
+}
+
+/// Issue 31: a record whose key stays in machine integers is charged that
+/// path's cost whatever its bits (small weights and the `p/10⁶` weights of
+/// a moved copy alike); one whose key leaves them (40-bit weights) or whose
+/// numbers are beyond `i128` (60 digits) is charged the `BigRational` key
+/// on top, so a stream of them is still refused, naming the record.
+#[test]
+fn bulk_records_are_charged_by_the_path_their_key_takes() {
+    let weight = |k: usize, i: usize, j: usize| 1 + scrambled((k * 4 + i) * 4 + j, 5) as u64;
+    let small = |k| bicubic(k, |i, j| weight(k, i, j).to_string());
+    // `small(k)` moved by the Möbius maps 3/10 in u and 6/10 in v.
+    let moved = |k| {
+        bicubic(k, |i, j| {
+            let mobius = 7u64.pow(i as u32)
+                * 3u64.pow(3 - i as u32)
+                * 4u64.pow(j as u32)
+                * 6u64.pow(3 - j as u32);
+            format!("\"{}/1000000\"", weight(k, i, j) * mobius)
+        })
+    };
+    let wide = |k| {
+        bicubic(k, |i, j| {
+            ((1u64 << 40) - scrambled((k * 4 + i) * 4 + j, 1 << 30) as u64).to_string()
+        })
+    };
+    let huge = |k| {
+        bicubic(k, |i, j| {
+            format!("\"{}{:050}\"", 1 + scrambled((k * 4 + i) * 4 + j, 9), k)
+        })
+    };
+    let charge = |line: String| {
+        let out = run(&["key", "-"], &(line + "\n"));
+        assert_eq!(out.code, 0, "{}", out.stderr);
+        out.work
+    };
+    let (s, m, w, h) = (
+        charge(small(1)),
+        charge(moved(1)),
+        charge(wide(1)),
+        charge(huge(1)),
+    );
+    assert_eq!(s, m, "machine keys cost the same whatever their bits");
+    assert!(
+        w > s + 5 * (s - exact_bezier::limits::COMMAND_WORK),
+        "{w} against {s}"
+    );
+    assert!(h > 5 * w, "{h} against {w}");
+    // A budget of about 100 huge records refuses a stream of 300 of them,
+    // naming the record, and answers for 300 small ones.
+    let budget = (100 * (h - exact_bezier::limits::COMMAND_WORK)).to_string();
+    let lines = |f: &dyn Fn(usize) -> String| (0..300).map(f).collect::<Vec<_>>().join("\n");
+    let out = run(&["--max-work", &budget, "key", "-"], &lines(&huge));
+    assert_eq!(out.code, 2, "{}", out.stdout);
+    assert!(
+        out.stderr.contains("key (through record 9"),
+        "{}",
+        out.stderr
+    );
+    let out = run(&["--max-work", &budget, "key", "-"], &lines(&small));
+    assert_eq!(out.code, 0, "{}", out.stderr);
+}
+
 /// "`dedup --max-work 1` still answers (while `coincide --max-work 1`
 /// refuses)": both bulk commands now charge every record.
 #[test]

@@ -12,11 +12,11 @@
 
 use crate::algebra::gcd::gcd_u128;
 use crate::algebra::modp::Fp;
-use crate::coincide::minimal::{certified_image, Net};
+use crate::coincide::certificate::FpGrids;
+use crate::coincide::minimal::Net;
 use crate::coincide::Symmetry;
 use crate::curve::RationalCurve;
 use crate::error::Error;
-use crate::hpoint::HPoint;
 use crate::limits::Size;
 use crate::rect::RectPatch;
 use crate::Patch;
@@ -356,8 +356,9 @@ pub struct SmallPatch {
     coords: Vec<Small>,
     /// Weights, row-major.
     weights: Vec<Small>,
-    /// Whether [`certify`](SmallPatch::certify) proved the net minimal.
-    certified: bool,
+    /// The key text in machine integers, once [`certify`](SmallPatch::certify)
+    /// has proved the net minimal and no number of the key left `i128`.
+    text: Option<String>,
 }
 
 impl SmallPatch {
@@ -394,7 +395,7 @@ impl SmallPatch {
             dim,
             coords,
             weights,
-            certified: false,
+            text: None,
         })
     }
 
@@ -422,20 +423,46 @@ impl SmallPatch {
     /// Prove the net minimal modulo `p` as
     /// [`KeyPlan::Minimal`](super::KeyPlan::Minimal) does (the same
     /// certificate on the same image); `false` when it is not proved (or a
-    /// denominator is divisible by `p`). Keys of certified patches take the
-    /// machine-integer path.
+    /// denominator is divisible by `p`). When it is proved, the key text is
+    /// computed at once in machine integers (work linear in the net, like
+    /// reading it) and kept for [`key_text`](SmallPatch::key_text), unless a
+    /// number leaves `i128` ([`machine_keyed`](SmallPatch::machine_keyed)
+    /// tells which, as [`KeyPlan::Machine`](super::KeyPlan::Machine) does).
     pub fn certify(&mut self) -> bool {
-        let Some(homogeneous) = self.homogeneous_mod_p() else {
-            return false;
-        };
-        self.certified = certified_image(&homogeneous);
-        self.certified
+        let shape = (self.shape.0, self.shape.1);
+        let certified = self
+            .homogeneous_mod_p()
+            .is_some_and(|image| FpGrids::from_bernstein(image, self.dim + 1, shape).certified());
+        if certified {
+            self.text = split_key_text(&self.split(), self.curve);
+        }
+        certified
     }
 
-    /// The image modulo `p` of the homogeneous net, or `None` when `p`
-    /// divides a denominator (the denominators inverted together,
+    /// Whether [`certify`](SmallPatch::certify) computed the key text in
+    /// machine integers (else [`key_text`](SmallPatch::key_text) takes the
+    /// general `BigRational` path).
+    pub fn machine_keyed(&self) -> bool {
+        self.text.is_some()
+    }
+
+    /// The net as a [`Split`], borrowing the patch's numbers.
+    fn split(&self) -> Split<'_> {
+        Split {
+            m: self.shape.0,
+            n: self.shape.1,
+            dim: self.dim,
+            coords: Cow::Borrowed(&self.coords),
+            weight: Cow::Borrowed(&self.weights),
+        }
+    }
+
+    /// The image modulo `p` of the homogeneous net as flat grids of
+    /// Bernstein coefficients ([`FpGrids`]: component `c` of point `k`,
+    /// row-major, at `c·count + k`), or `None` when `p` divides a
+    /// denominator (the denominators inverted together,
     /// [`Fp::invert_all`]).
-    fn homogeneous_mod_p(&self) -> Option<Net<Fp>> {
+    fn homogeneous_mod_p(&self) -> Option<Vec<Fp>> {
         let numbers = || self.weights.iter().chain(&self.coords);
         let mut image: Vec<Fp> = numbers().map(|x| Fp::from_i128(x.p)).collect();
         // The denominators other than 1, inverted together.
@@ -451,21 +478,18 @@ impl SmallPatch {
             image[k] = image[k] * inv;
         }
         let (weights, coords) = image.split_at(self.weights.len());
-        let mut coords = coords.iter();
-        let cols = self.shape.1 + 1;
-        let mut points = weights.iter().map(|&w| HPoint {
-            coords: coords
-                .by_ref()
-                .take(self.dim)
-                .map(|&c| c * w)
-                .chain(std::iter::once(w))
-                .collect(),
-        });
-        Some(
-            (0..=self.shape.0)
-                .map(|_| points.by_ref().take(cols).collect())
-                .collect(),
-        )
+        let count = weights.len();
+        let mut grids = Vec::with_capacity(count * (self.dim + 1));
+        for c in 0..self.dim {
+            grids.extend(
+                weights
+                    .iter()
+                    .zip(coords.chunks_exact(self.dim))
+                    .map(|(&w, x)| x[c] * w),
+            );
+        }
+        grids.extend_from_slice(weights);
+        Some(grids)
     }
 
     /// The same patch over `BigRational`.
@@ -490,26 +514,28 @@ impl SmallPatch {
     }
 
     /// The key text, [`canonical_text`](super::canonical_text) of
-    /// [`to_patch`](SmallPatch::to_patch): in machine integers when
-    /// [`certify`](SmallPatch::certify) proved the net minimal and every
-    /// number stays in `i128`, else through the general path.
+    /// [`to_patch`](SmallPatch::to_patch): the one
+    /// [`certify`](SmallPatch::certify) computed in machine integers, else
+    /// through the general path.
     ///
     /// # Errors
     ///
     /// As [`canonical_text`](super::canonical_text).
-    pub fn key_text(&self) -> Result<String, Error> {
-        let split = || Split {
-            m: self.shape.0,
-            n: self.shape.1,
-            dim: self.dim,
-            coords: Cow::Borrowed(&self.coords),
-            weight: Cow::Borrowed(&self.weights),
-        };
-        match self
-            .certified
-            .then(|| split_key_text(&split(), self.curve))
-            .flatten()
-        {
+    pub fn key_text(&self) -> Result<Cow<'_, str>, Error> {
+        match &self.text {
+            Some(text) => Ok(Cow::Borrowed(text)),
+            None => super::canonical_text(&self.to_patch()?).map(Cow::Owned),
+        }
+    }
+
+    /// [`key_text`](SmallPatch::key_text), taking the patch (no copy of a
+    /// machine-computed text).
+    ///
+    /// # Errors
+    ///
+    /// As [`canonical_text`](super::canonical_text).
+    pub fn into_key_text(self) -> Result<String, Error> {
+        match self.text {
             Some(text) => Ok(text),
             None => super::canonical_text(&self.to_patch()?),
         }
@@ -546,13 +572,27 @@ mod tests {
 
     /// A bicubic or curve of small machine fractions, positive weights.
     fn small_patch() -> impl Strategy<Value = SmallPatch> {
+        patch_of((1i128..30, 1i128..12))
+    }
+
+    /// As [`small_patch`], with weights up to 2⁴⁰ over up to 2²⁰: the
+    /// invariants of some leave `i128`.
+    fn wide_patch() -> impl Strategy<Value = SmallPatch> {
+        patch_of((1i128..1 << 40, 1i128..1 << 20))
+    }
+
+    /// A bicubic or curve of small machine coordinates and weights drawn
+    /// from `weight`.
+    fn patch_of(
+        weight: impl Strategy<Value = (i128, i128)> + Clone + 'static,
+    ) -> impl Strategy<Value = SmallPatch> {
         let number = (-30i128..30, 1i128..12);
         (any::<bool>(), 1usize..4, 1usize..4, 1usize..4).prop_flat_map(move |(curve, m, n, dim)| {
             let n = if curve { 0 } else { n };
             let count = (m + 1) * (n + 1);
             (
                 prop::collection::vec(number.clone(), count * dim),
-                prop::collection::vec((1i128..30, 1i128..12), count),
+                prop::collection::vec(weight.clone(), count),
             )
                 .prop_filter_map("a patch", move |(coords, weights)| {
                     SmallPatch::new(curve, (m, n), dim, &coords, &weights)
@@ -574,6 +614,17 @@ mod tests {
         fn the_machine_certificate_is_that_of_the_net_over_q(mut s in small_patch()) {
             let (net, _) = crate::coincide::net_of(&s.to_patch().unwrap()).unwrap();
             prop_assert_eq!(s.certify(), crate::coincide::minimal::certified_minimal(&net));
+        }
+
+        #[test]
+        fn the_machine_text_decides_the_plan(mut s in wide_patch()) {
+            use crate::coincide::canonical::{canonical_text, key_plan, KeyPlan};
+            let patch = s.to_patch().unwrap();
+            let certified = s.certify();
+            let plan = key_plan(&patch).unwrap();
+            prop_assert_eq!(s.machine_keyed(), plan == KeyPlan::Machine);
+            prop_assert_eq!(certified, matches!(plan, KeyPlan::Machine | KeyPlan::Minimal));
+            prop_assert_eq!(s.key_text().unwrap(), canonical_text(&patch).unwrap());
         }
 
         #[test]
