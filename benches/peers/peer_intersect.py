@@ -15,7 +15,9 @@ cross. Agreement: every (s, t) the peer reports is within 1e-9 of one of
 ours and the counts match, on the pairs where the peer succeeds (it raises
 on some, e.g. tangencies and overlaps; those are counted, not compared).
 Our filtered path is checked against our exact path on every pair (each
-certified box holds exactly one exact crossing). Speed: the best of
+certified box holds exactly one exact crossing), and so is our f64 path
+(tolerance 1e-12: the same count, each (s, t) within 1e-9 of an exact
+one, where the exact path finds no overlap). Speed: the best of
 `--repeat` runs per pair, for the cubic pairs, bezier `Curve.intersect`
 against our filtered path (certified boxes where interval arithmetic
 decides, exact answers elsewhere), our exact path and our f64 path; the
@@ -82,6 +84,9 @@ def main():
     agreed, disagreed, peer_failed, ours_failed = 0, [], 0, 0
     decided = {"intervals": 0, "exact": 0}
     filtered_disagreed = [k for k, mine in enumerate(ours) if not mine.get("filtered_agrees", True)]
+    f64_disagreed = [k for k, mine in enumerate(ours)
+                     if "error" not in mine and mine["overlaps"] == 0
+                     and (mine["f64_overlaps"] > 0 or not agree(mine["f64_points"], mine["points"], 1e-9))]
     cubic = {"peer": [], "filtered": [], "exact": [], "f64": []}
     for k, (pair, mine) in enumerate(zip(pairs, ours)):
         if "error" in mine:
@@ -104,7 +109,8 @@ def main():
     print(json.dumps({"pairs": len(pairs), "agreed": agreed, "disagreed": len(disagreed),
                       "peer_raised": peer_failed, "ours_raised": ours_failed,
                       "filtered_decided_by": decided,
-                      "filtered_disagrees_with_exact": filtered_disagreed}))
+                      "filtered_disagrees_with_exact": filtered_disagreed,
+                      "f64_disagrees_with_exact": f64_disagreed}))
     for d in disagreed:
         print(json.dumps(d))
     med = {k: statistics.median(v) for k, v in cubic.items() if v}

@@ -2,7 +2,8 @@
 //! (issue 18): reads the curve pairs that `benches/peers/peer_intersect.py`
 //! generated, intersects each pair exactly, through the filter and in
 //! `f64`, and prints one JSON object per pair: the exact answers as `f64`
-//! pairs `(s, t)` (for the agreement check against the peer) and the best
+//! pairs `(s, t)` (for the agreement check against the peer), the `f64`
+//! path's answers (tolerance `1e-12`, checked against the exact ones) and the best
 //! time of each path over `--repeat` runs, in microseconds.
 //!
 //! ```text
@@ -115,12 +116,15 @@ fn run_pair(
         tol: Tolerance(1e-12),
         ..Options::default()
     };
+    let approx_points = intersect(&a64, Some(&b64), approx).expect("the f64 path runs");
     let t_f64 = best_us(repeat, || {
         intersect(&a64, Some(&b64), approx).expect("the f64 path runs");
     });
     json!({
         "points": x.points.iter().map(|p| [p.s.to_f64(), p.t.to_f64()]).collect::<Vec<_>>(),
         "overlaps": x.overlaps.len(),
+        "f64_points": approx_points.iter().map(|p| [p.s, p.t]).collect::<Vec<_>>(),
+        "f64_overlaps": approx_points.iter().filter(|p| p.overlap.is_some()).count(),
         "decided_by": decided_by,
         "filtered_agrees": filtered_agrees(&x, &found),
         "us": {"exact": t_exact, "filtered": t_filtered, "f64": t_f64},

@@ -1,11 +1,15 @@
 //! The approximate `f64` intersection with a caller's tolerance: the
-//! control polygons are subdivided in plain `f64` down to pieces whose
-//! boxes are below the tolerance, Newton steps on `A(s) − B(t)` run from
+//! control polygons are subdivided in plain `f64` (module `pieces`, the
+//! filter's level-by-level subdivision) down to pieces whose boxes are
+//! below the leaf size, Newton steps on `A(s) − B(t)` run from
 //! each surviving cluster of piece pairs, and the results are clustered in
 //! `(s, t)`.
 
+use super::pieces::{subdivide, Pieces, Policy, Stop};
+use crate::algebra::Interval;
 use crate::curve::RationalCurve;
 use crate::error::Error;
+use smallvec::SmallVec;
 
 /// An approximate intersection: the `f64` answer of [`intersect`](super::intersect).
 #[derive(Clone, Debug, PartialEq)]
@@ -23,82 +27,86 @@ pub struct ApproxIntersection {
     pub overlap: Option<[f64; 4]>,
 }
 
-/// A curve piece in `f64`: its homogeneous control points and parameter
-/// range.
-#[derive(Clone)]
-struct Piece {
-    ctrl: Vec<Vec<f64>>,
-    lo: f64,
-    hi: f64,
+/// The whole curve's homogeneous control points as one [`Pieces`]; a curve
+/// with equal weights is divided by them first (a polynomial curve,
+/// `W ≡ 1`).
+fn whole(c: &RationalCurve<f64>) -> Pieces<f64> {
+    let dim = c.dim();
+    let w0 = c.ctrl()[0].coords[dim];
+    let weighted = c.ctrl().iter().any(|h| h.coords[dim] != w0);
+    let ctrl = c
+        .ctrl()
+        .iter()
+        .flat_map(|h| match weighted {
+            true => h.coords.clone(),
+            false => h.coords[..dim].iter().map(|x| x / w0).collect(),
+        })
+        .collect();
+    Pieces::whole(ctrl, dim + usize::from(weighted), weighted)
 }
 
-impl Piece {
-    fn halves(&self) -> (Piece, Piece) {
-        let mut rows = self.ctrl.clone();
-        let (mut left, mut right) = (vec![rows[0].clone()], vec![rows[rows.len() - 1].clone()]);
-        while rows.len() > 1 {
-            rows = rows
-                .windows(2)
-                .map(|w| w[0].iter().zip(&w[1]).map(|(a, b)| 0.5 * (a + b)).collect())
-                .collect();
-            left.push(rows[0].clone());
-            right.push(rows[rows.len() - 1].clone());
+/// A vector of a few `f64` coordinates (a point or a velocity).
+type Coords = SmallVec<[f64; 4]>;
+
+/// A curve's homogeneous control points in `f64`, flat (`dim + 1`
+/// coordinates each, the weight last), for the Newton steps.
+struct Jet {
+    ctrl: Vec<f64>,
+    stride: usize,
+}
+
+impl Jet {
+    fn new(c: &RationalCurve<f64>) -> Jet {
+        Jet {
+            ctrl: c
+                .ctrl()
+                .iter()
+                .flat_map(|h| h.coords.iter().copied())
+                .collect(),
+            stride: c.dim() + 1,
         }
-        right.reverse();
-        let mid = 0.5 * (self.lo + self.hi);
-        (
-            Piece {
-                ctrl: left,
-                lo: self.lo,
-                hi: mid,
-            },
-            Piece {
-                ctrl: right,
-                lo: mid,
-                hi: self.hi,
-            },
-        )
     }
 
-    /// `(min, max)` per coordinate of the projected control points.
-    fn bounds(&self) -> Vec<(f64, f64)> {
-        let dim = self.ctrl[0].len() - 1;
-        (0..dim)
-            .map(|k| {
-                self.ctrl
-                    .iter()
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), h| {
-                        let x = h[k] / h[dim];
-                        (lo.min(x), hi.max(x))
-                    })
-            })
-            .collect()
-    }
-}
-
-fn piece(c: &RationalCurve<f64>) -> Piece {
-    Piece {
-        ctrl: c.ctrl().iter().map(|h| h.coords.clone()).collect(),
-        lo: 0.0,
-        hi: 1.0,
+    /// `A(s)` and `A'(s)` from one de Casteljau triangle: its last two
+    /// points `P`, `Q` give, in homogeneous coordinates, `H = (1 − s)P + sQ`
+    /// and `H' = n(Q − P)` (Farin, *Curves and Surfaces for CAGD*, §5.3);
+    /// then `x = X/W` and `x' = (X'W − XW')/W²`.
+    fn point_and_velocity(&self, s: f64) -> (Coords, Coords) {
+        let stride = self.stride;
+        let n = self.ctrl.len() / stride - 1;
+        let mut row: SmallVec<[f64; 24]> = SmallVec::from_slice(&self.ctrl);
+        for r in 1..n {
+            for j in 0..(n + 1 - r) * stride {
+                row[j] = (1.0 - s) * row[j] + s * row[j + stride];
+            }
+        }
+        let (p, q) = (&row[..stride], &row[stride.min(n * stride)..][..stride]);
+        let h: Coords = p
+            .iter()
+            .zip(q)
+            .map(|(x, y)| (1.0 - s) * x + s * y)
+            .collect();
+        let dh: Coords = p.iter().zip(q).map(|(x, y)| n as f64 * (y - x)).collect();
+        let (w, dw) = (h[stride - 1], dh[stride - 1]);
+        let point = h[..stride - 1].iter().map(|x| x / w).collect();
+        let velocity = h[..stride - 1]
+            .iter()
+            .zip(&dh)
+            .map(|(x, dx)| (dx * w - x * dw) / (w * w))
+            .collect();
+        (point, velocity)
     }
 }
 
 /// Newton steps (least squares in 3D and above) on `A(s) − B(t) = 0`.
-fn refine(a: &RationalCurve<f64>, b: &RationalCurve<f64>, mut s: f64, mut t: f64) -> (f64, f64) {
+fn refine(a: &Jet, b: &Jet, mut s: f64, mut t: f64) -> (f64, f64) {
     for _ in 0..20 {
-        let (Ok(da), Ok(db)) = (a.derivs(&s, 1), b.derivs(&t, 1)) else {
-            break;
-        };
-        let r: Vec<f64> = da[0].iter().zip(&db[0]).map(|(x, y)| x - y).collect();
+        let ((pa, va), (pb, vb)) = (a.point_and_velocity(s), b.point_and_velocity(t));
+        let r: Coords = pa.iter().zip(&pb).map(|(x, y)| x - y).collect();
         // J = [A'(s), −B'(t)]; normal equations JᵀJ δ = −Jᵀr.
         let dot = |u: &[f64], v: &[f64]| u.iter().zip(v).map(|(x, y)| x * y).sum::<f64>();
-        let (aa, ab, bb) = (
-            dot(&da[1], &da[1]),
-            -dot(&da[1], &db[1]),
-            dot(&db[1], &db[1]),
-        );
-        let (ra, rb) = (-dot(&da[1], &r), dot(&db[1], &r));
+        let (aa, ab, bb) = (dot(&va, &va), -dot(&va, &vb), dot(&vb, &vb));
+        let (ra, rb) = (-dot(&va, &r), dot(&vb, &r));
         let det = aa * bb - ab * ab;
         if det.abs() <= f64::EPSILON * aa * bb || !det.is_finite() {
             break;
@@ -113,8 +121,12 @@ fn refine(a: &RationalCurve<f64>, b: &RationalCurve<f64>, mut s: f64, mut t: f64
     (s, t)
 }
 
-/// The most leaf pairs the approximate path keeps before refusing.
+/// The most piece pairs the approximate path keeps, as leaves or at one
+/// level, before refusing.
 const APPROX_PAIRS: usize = 100_000;
+/// Levels of the subdivision: a parameter range stops halving below
+/// `f64::EPSILON = 2⁻⁵²`, so pairs settle by level 53.
+const APPROX_DEPTH: usize = 64;
 /// A cluster of more leaves than this is reported as a suspected overlap.
 const OVERLAP_LEAVES: usize = 64;
 
@@ -130,7 +142,7 @@ const OVERLAP_LEAVES: usize = 64;
 /// [`Error::Domain`] for a tolerance that is not finite and positive,
 /// [`Error::Shape`] for different dimensions, [`Error::Weight`] for
 /// non-positive weights, [`Error::Limit`] when more than 100 000 piece
-/// pairs stay close.
+/// pairs stay close (as leaves, or at one level of the subdivision).
 pub(crate) fn intersect_approx(
     a: &RationalCurve<f64>,
     b: &RationalCurve<f64>,
@@ -150,19 +162,22 @@ pub(crate) fn intersect_approx(
     }
     a.check_positive_weights()?;
     b.check_positive_weights()?;
-    let (pa, pb) = (piece(a), piece(b));
-    let diameter = pa
-        .bounds()
+    let (pa, pb) = (whole(a), whole(b));
+    let (Some(ba), Some(bb)) = (pa.bounding_boxes(), pb.bounding_boxes()) else {
+        return Ok(Vec::new());
+    };
+    let diameter = ba
         .iter()
-        .zip(pb.bounds())
-        .map(|(x, y)| (x.1.max(y.1) - x.0.min(y.0)).powi(2))
+        .zip(&bb)
+        .map(|(x, y)| (x.hi.max(y.hi) - x.lo.min(y.lo)).powi(2))
         .sum::<f64>()
         .sqrt();
     let leaf = tol.max((tol * diameter).sqrt());
     let leaves = close_leaves(pa, pb, tol, leaf)?;
+    let (ja, jb) = (Jet::new(a), Jet::new(b));
     let found = clusters(&leaves)
         .into_iter()
-        .filter_map(|c| cluster_result(a, b, &c, tol).map(|x| (x, c.range)))
+        .filter_map(|c| cluster_result(&ja, &jb, &c, tol).map(|x| (x, c.range)))
         .collect();
     Ok(distinct(found))
 }
@@ -188,48 +203,95 @@ fn distinct(found: Vec<(ApproxIntersection, [f64; 4])>) -> Vec<ApproxIntersectio
     kept.into_iter().map(|(x, _)| x).collect()
 }
 
+/// The `f64` path's [`Policy`]: pairs of pieces whose boxes are more than
+/// `tol` apart are dropped; a pair is settled as a leaf when both boxes
+/// have diagonals of at most `leaf` or a parameter range cannot be halved
+/// further.
+struct Leaves {
+    tol: f64,
+    leaf: f64,
+    /// Whether each piece of the level is small enough, per curve.
+    small: (Vec<bool>, Vec<bool>),
+    /// The leaf pairs `(s0, s1, t0, t1)`.
+    found: Vec<[f64; 4]>,
+}
+
+impl Leaves {
+    /// Whether each piece's box (`dim` intervals each) has a diagonal of at
+    /// most `leaf`.
+    fn small(&self, boxes: &[Interval], dim: usize) -> Vec<bool> {
+        boxes
+            .chunks_exact(dim)
+            .map(|b| b.iter().map(|x| (x.hi - x.lo).powi(2)).sum::<f64>().sqrt() <= self.leaf)
+            .collect()
+    }
+}
+
+impl Policy<f64> for Leaves {
+    fn sift(
+        &mut self,
+        a: &Pieces<f64>,
+        b: &Pieces<f64>,
+        pairs: &mut Vec<(usize, usize)>,
+    ) -> Result<(), Stop> {
+        let dim = a.dim();
+        let (Some(ba), Some(bb)) = (a.bounding_boxes(), b.bounding_boxes()) else {
+            return Err(Stop::Refused);
+        };
+        let tol = self.tol;
+        pairs.retain(|&(i, j)| {
+            let (x, y) = (&ba[i * dim..(i + 1) * dim], &bb[j * dim..(j + 1) * dim]);
+            x.iter()
+                .zip(y)
+                .all(|(p, q)| p.lo <= q.hi + tol && q.lo <= p.hi + tol)
+        });
+        self.small = (self.small(&ba, dim), self.small(&bb, dim));
+        Ok(())
+    }
+
+    fn prepare(&mut self, _: [&Pieces<f64>; 4]) -> Result<(), Stop> {
+        Ok(())
+    }
+
+    fn settle(
+        &mut self,
+        a: &Pieces<f64>,
+        b: &Pieces<f64>,
+        (i, j): (usize, usize),
+    ) -> Result<bool, Stop> {
+        let (ra, rb) = (a.range[i], b.range[j]);
+        let splittable = ra.hi - ra.lo > f64::EPSILON && rb.hi - rb.lo > f64::EPSILON;
+        if (self.small.0[i] && self.small.1[j]) || !splittable {
+            self.found.push([ra.lo, ra.hi, rb.lo, rb.hi]);
+            if self.found.len() > APPROX_PAIRS {
+                return Err(Stop::TooMany);
+            }
+            return Ok(true);
+        }
+        Ok(false)
+    }
+}
+
 /// Leaf pairs `(s0, s1, t0, t1)` whose boxes stay within `tol` of each
 /// other, subdivided to box diagonals of at most `leaf`.
-fn close_leaves(a: Piece, b: Piece, tol: f64, leaf: f64) -> Result<Vec<[f64; 4]>, Error> {
-    let near = |x: &[(f64, f64)], y: &[(f64, f64)]| {
-        x.iter()
-            .zip(y)
-            .all(|(p, q)| p.0 <= q.1 + tol && q.0 <= p.1 + tol)
+fn close_leaves(
+    a: Pieces<f64>,
+    b: Pieces<f64>,
+    tol: f64,
+    leaf: f64,
+) -> Result<Vec<[f64; 4]>, Error> {
+    let mut policy = Leaves {
+        tol,
+        leaf,
+        small: (Vec::new(), Vec::new()),
+        found: Vec::new(),
     };
-    let small = |x: &[(f64, f64)]| {
-        x.iter()
-            .map(|(lo, hi)| (hi - lo).powi(2))
-            .sum::<f64>()
-            .sqrt()
-            <= leaf
-    };
-    let mut stack = vec![(a, b)];
-    let mut leaves = Vec::new();
-    while let Some((pa, pb)) = stack.pop() {
-        let (ba, bb) = (pa.bounds(), pb.bounds());
-        if !near(&ba, &bb) {
-            continue;
-        }
-        let splittable = pa.hi - pa.lo > f64::EPSILON && pb.hi - pb.lo > f64::EPSILON;
-        if (small(&ba) && small(&bb)) || !splittable {
-            leaves.push([pa.lo, pa.hi, pb.lo, pb.hi]);
-            if leaves.len() > APPROX_PAIRS {
-                return Err(Error::Limit(format!(
-                    "over {APPROX_PAIRS} piece pairs within {tol} of each other: use the exact path"
-                )));
-            }
-            continue;
-        }
-        let (a0, a1) = pa.halves();
-        let (b0, b1) = pb.halves();
-        stack.extend([
-            (a0.clone(), b0.clone()),
-            (a0, b1.clone()),
-            (a1.clone(), b0),
-            (a1, b1),
-        ]);
+    match subdivide(a, b, &mut policy, APPROX_DEPTH, APPROX_PAIRS) {
+        Ok(()) => Ok(policy.found),
+        Err(_) => Err(Error::Limit(format!(
+            "over {APPROX_PAIRS} piece pairs within {tol} of each other: use the exact path"
+        ))),
     }
-    Ok(leaves)
 }
 
 /// A group of touching leaves: its parameter rectangle and leaf count.
@@ -270,30 +332,25 @@ fn clusters(leaves: &[[f64; 4]]) -> Vec<Cluster> {
 
 /// A cluster as an intersection (refined from its centre), or as a
 /// suspected overlap when it has many leaves.
-fn cluster_result(
-    a: &RationalCurve<f64>,
-    b: &RationalCurve<f64>,
-    c: &Cluster,
-    tol: f64,
-) -> Option<ApproxIntersection> {
+fn cluster_result(a: &Jet, b: &Jet, c: &Cluster, tol: f64) -> Option<ApproxIntersection> {
     let r = &c.range;
     if c.leaves > OVERLAP_LEAVES {
-        let (pa, pb) = (a.eval(&r[0]).ok()?, b.eval(&r[2]).ok()?);
+        let (pa, pb) = (a.point_and_velocity(r[0]).0, b.point_and_velocity(r[2]).0);
         return Some(ApproxIntersection {
             s: r[0],
             t: r[2],
             distance: distance(&pa, &pb),
-            point: pa,
+            point: pa.to_vec(),
             overlap: Some(*r),
         });
     }
     let (s, t) = refine(a, b, 0.5 * (r[0] + r[1]), 0.5 * (r[2] + r[3]));
-    let (pa, pb) = (a.eval(&s).ok()?, b.eval(&t).ok()?);
+    let (pa, pb) = (a.point_and_velocity(s).0, b.point_and_velocity(t).0);
     let d = distance(&pa, &pb);
     (d <= tol).then_some(ApproxIntersection {
         s,
         t,
-        point: pa,
+        point: pa.to_vec(),
         distance: d,
         overlap: None,
     })

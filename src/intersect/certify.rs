@@ -146,19 +146,6 @@ impl Net<'_> {
         Some([self.cartesian(i, 0)?, self.cartesian(i, 1)?])
     }
 
-    /// Push the bounding box of the projected control points (`dim`
-    /// intervals) onto `out`; `None` when a weight box contains 0.
-    pub fn bounding_box(&self, dim: usize, out: &mut Vec<Interval>) -> Option<()> {
-        for k in 0..dim {
-            let mut b = self.cartesian(0, k)?;
-            for i in 1..self.len() {
-                b = b.hull(&self.cartesian(i, k)?);
-            }
-            out.push(b);
-        }
-        Some(())
-    }
-
     /// An enclosure of the planar `A'(s)` over the piece's parameter range
     /// of width `width`, from its control polygon (parameter
     /// `u ∈ [0, 1]`): for a polynomial curve the hull of the hodograph's

@@ -48,6 +48,7 @@ mod approx;
 mod certify;
 mod filter;
 mod overlap;
+mod pieces;
 mod system;
 
 pub use approx::ApproxIntersection;
@@ -445,7 +446,8 @@ impl IntersectScalar for f64 {
 /// improper parameterization) or a configuration the method does not
 /// resolve (named in the message); in `f64`, [`Error::Domain`] for a
 /// tolerance that is not finite and positive or a self-intersection,
-/// [`Error::Limit`] when more than 100 000 piece pairs stay close.
+/// [`Error::Limit`] when more than 100 000 piece pairs stay close (as
+/// leaves, or at one level of the subdivision).
 pub fn intersect<T: IntersectScalar>(
     a: &RationalCurve<T>,
     b: Option<&RationalCurve<T>>,

@@ -349,6 +349,59 @@ fn the_f64_path_agrees_with_the_exact_one_on_the_loop() {
     }
 }
 
+/// The `f64` path in 3D (a rational quadratic, weights 1, 2, 1, and a
+/// line) finds the constructed crossing at `s = 1/3`, `t = 1/2`, and a
+/// line lifted by `10⁻³` off it is not reported at tolerance `10⁻⁹`.
+#[test]
+fn the_f64_path_finds_the_crossing_in_3d_and_misses_the_lifted_line() {
+    let (a, b, p) = crossing_3d(q(0, 1));
+    let x = intersect_approx(&a.map(Ordered::to_f64), &b.map(Ordered::to_f64), 1e-12).unwrap();
+    assert_eq!(x.len(), 1);
+    assert!((x[0].s - 1.0 / 3.0).abs() < 1e-9 && (x[0].t - 0.5).abs() < 1e-9);
+    for (u, v) in x[0].point.iter().zip(&p) {
+        assert!((u - v.to_f64()).abs() < 1e-9);
+    }
+    let (a, b, _) = crossing_3d(q(1, 1000));
+    let x = intersect_approx(&a.map(Ordered::to_f64), &b.map(Ordered::to_f64), 1e-9).unwrap();
+    assert!(x.is_empty());
+}
+
+/// A rational cubic against itself in `f64`: the whole diagonal stays
+/// close, so the answer at tolerance `10⁻⁴` is one suspected overlap over
+/// both full ranges; at `10⁻⁹` the diagonal holds too many piece pairs
+/// (a typed refusal); bad tolerances and mixed dimensions are typed
+/// errors.
+#[test]
+fn the_f64_path_reports_a_curve_against_itself_as_an_overlap() {
+    let c = rational_cubic().map(Ordered::to_f64);
+    let x = intersect_approx(&c, &c, 1e-4).unwrap();
+    assert_eq!(x.len(), 1);
+    assert_eq!(x[0].overlap, Some([0.0, 1.0, 0.0, 1.0]));
+    assert!(matches!(
+        intersect_approx(&c, &c, 1e-9),
+        Err(Error::Limit(_))
+    ));
+    assert!(matches!(
+        intersect_approx(&c, &c, 0.0),
+        Err(Error::Domain(_))
+    ));
+    assert!(matches!(
+        intersect_approx(&c, &c, f64::NAN),
+        Err(Error::Domain(_))
+    ));
+    let (_, line_3d, _) = crossing_3d(q(0, 1));
+    assert!(matches!(
+        intersect_approx(&c, &line_3d.map(Ordered::to_f64), 1e-9),
+        Err(Error::Shape(_))
+    ));
+}
+
+/// Control points `k/100` for the random cubic pairs of the peer
+/// comparison's kind.
+fn point_100() -> impl Strategy<Value = Vec<Q>> {
+    proptest::collection::vec((0i64..=100).prop_map(|v| q(v, 100)), 2)
+}
+
 fn small_point(dim: usize) -> impl Strategy<Value = Vec<Q>> {
     proptest::collection::vec((-6i64..=6).prop_map(|v| q(v, 1)), dim)
 }
@@ -420,6 +473,38 @@ proptest! {
                     .count();
                 prop_assert_eq!(holding, 1);
             }
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// The `f64` path (tolerance `10⁻¹²`) against the interval filter, a
+    /// method with rigorous answers: where the filter certifies a pair of
+    /// cubics (control points `k/100`, the second rational), the `f64`
+    /// path reports as many crossings, no overlap, each within `10⁻⁹` of
+    /// exactly one certified box in `s` and in `t`, its two points within
+    /// the tolerance.
+    #[test]
+    fn the_f64_path_agrees_with_the_certified_boxes(
+        a in proptest::collection::vec(point_100(), 4),
+        b in proptest::collection::vec(point_100(), 4),
+        w in proptest::collection::vec(1i64..=3, 4),
+    ) {
+        let ca = RationalCurve::polynomial(a).unwrap();
+        let cb = RationalCurve::new(b, w.iter().map(|&v| q(v, 1)).collect()).unwrap();
+        let Found::Certified(boxes) = filtered(&ca, &cb) else {
+            return Ok(());
+        };
+        let approx =
+            intersect_approx(&ca.map(Ordered::to_f64), &cb.map(Ordered::to_f64), 1e-12).unwrap();
+        prop_assert_eq!(approx.len(), boxes.len());
+        let near = |x: f64, i: &crate::algebra::Interval| i.lo - 1e-9 <= x && x <= i.hi + 1e-9;
+        for p in &approx {
+            prop_assert!(p.overlap.is_none() && p.distance <= 1e-12);
+            let holding = boxes.iter().filter(|k| near(p.s, &k.s) && near(p.t, &k.t)).count();
+            prop_assert_eq!(holding, 1, "({}, {}) against {:?}", p.s, p.t, boxes);
         }
     }
 }

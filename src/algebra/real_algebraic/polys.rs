@@ -326,6 +326,14 @@ pub(crate) fn may_have_rational_root(c: &[BigInt]) -> bool {
 
 /// Rational bounds `(lo, hi)` on `p(x)` for every `x ∈ [a, b]` (Horner in
 /// interval arithmetic; exact rationals, so the enclosure is rigorous).
+///
+/// Run in integers over one denominator: with `p = Σ C_i xⁱ / L` and
+/// `a = A/D`, `b = B/D`, the bounds after `k + 1` Horner steps are
+/// numerators over `L·Dᵏ`; the four products of a step share their
+/// denominator, so they order as their numerators, and the next
+/// coefficient enters as `C_i·Dᵏ⁺¹`. Only the two results are reduced
+/// (every rational product reduced by a gcd, the old way, was most of
+/// the cost on dyadic enclosures).
 pub(crate) fn eval_on_interval(
     p: &QPoly,
     a: &BigRational,
@@ -334,12 +342,23 @@ pub(crate) fn eval_on_interval(
     let end_bits = crate::limits::bits(a).max(crate::limits::bits(b));
     let degree = p.coeffs().len() as u64;
     crate::limits::meter(4 * degree, poly_bits(p) + degree * end_bits);
-    p.coeffs().iter().rev().fold((q(0), q(0)), |(lo, hi), c| {
-        let products = [&lo * a, &lo * b, &hi * a, &hi * b];
-        let min = products.iter().min().expect("four").clone();
-        let max = products.iter().max().expect("four").clone();
-        (min + c, max + c)
-    })
+    if p.is_zero() {
+        return (q(0), q(0));
+    }
+    let (coeffs, l): (Vec<BigInt>, BigInt) = common_denominator(p.coeffs());
+    let d = a.denom().lcm(b.denom());
+    let (na, nb) = (a.numer() * (&d / a.denom()), b.numer() * (&d / b.denom()));
+    let (mut lo, mut hi, mut scale) = (BigInt::zero(), BigInt::zero(), BigInt::one());
+    for c in coeffs.iter().rev() {
+        let products = [&lo * &na, &lo * &nb, &hi * &na, &hi * &nb];
+        let min = products.iter().min().expect("four");
+        let max = products.iter().max().expect("four");
+        let c = c * &scale;
+        (lo, hi) = (min + &c, max + c);
+        scale *= &d;
+    }
+    let den = l * (scale / &d);
+    (BigRational::new(lo, den.clone()), BigRational::new(hi, den))
 }
 
 /// A bound `B` with every real root in `(−B, B)`.
@@ -655,6 +674,26 @@ mod tests {
 
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+        /// The integer Horner of `eval_on_interval` gives exactly the
+        /// bounds of interval Horner in reduced rationals (the formula it
+        /// replaces), on rational coefficients and ends.
+        #[test]
+        fn interval_horner_in_integers_matches_rationals(
+            c in proptest::collection::vec((-99i64..=99, 1i64..=12), 0..=9),
+            ends in (-50i64..=50, 1i64..=64, 0i64..=50, 1i64..=64),
+        ) {
+            let p = UPoly::new(c.iter().map(|&(n, d)| BigRational::new(n.into(), d.into())).collect());
+            let a = BigRational::new(ends.0.into(), ends.1.into());
+            let b = &a + BigRational::new(ends.2.into(), ends.3.into());
+            let want = p.coeffs().iter().rev().fold((q(0), q(0)), |(lo, hi), c| {
+                let products = [&lo * &a, &lo * &b, &hi * &a, &hi * &b];
+                let min = products.iter().min().unwrap().clone();
+                let max = products.iter().max().unwrap().clone();
+                (min + c, max + c)
+            });
+            proptest::prop_assert_eq!(eval_on_interval(&p, &a, &b), want);
+        }
 
         /// The norm by pseudo-division equals the Sylvester determinant of
         /// the monic modulus and `h` (the formula it replaces).
