@@ -251,6 +251,35 @@ fn algebraic_outputs_match_the_schema() {
 }
 
 #[test]
+fn an_assemblys_occurrences_match_the_schema() {
+    let out = output(&[
+        "convert",
+        "tests/fixtures/step/as1-oc-214.stp",
+        "--to",
+        "bezier",
+    ]);
+    assert_valid("brep", "convert an assembly --to bezier", &out);
+    let occurrences = out["occurrences"].as_array().unwrap();
+    assert_eq!(occurrences.len(), 18);
+    assert_eq!(out["summary"]["occurrences"], 18);
+    // Every placement is rigid and in the root's context: the linear
+    // part's rows are exact unit vectors here (the file's directions are).
+    for o in occurrences {
+        assert_eq!(o["root"], "#10");
+        assert_eq!(o["context"], "#31");
+        for row in o["linear"].as_array().unwrap() {
+            let norm: i64 = row
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|x| x.as_i64().unwrap().pow(2))
+                .sum();
+            assert_eq!(norm, 1, "{o}");
+        }
+    }
+}
+
+#[test]
 fn the_step_brep_output_matches_the_schema_and_reads_back() {
     let stp = "tests/fixtures/step/nist_ftc_06_asme1_rd.stp";
     assert_valid(
