@@ -135,7 +135,9 @@ const OVERLAP_LEAVES: usize = 64;
 /// diameter of both curves' boxes), Newton refinement from each cluster of
 /// touching piece pairs, kept when `|A(s) − B(t)| ≤ tol`. A cluster of more
 /// than 64 piece pairs is reported as a suspected overlap with its
-/// parameter ranges (a heuristic: the exact path decides overlaps).
+/// parameter ranges unless Newton ends there on a transversal crossing
+/// (tangents at a sine over 10⁻⁶): a heuristic, the exact path decides
+/// overlaps.
 ///
 /// # Errors
 ///
@@ -331,29 +333,52 @@ fn clusters(leaves: &[[f64; 4]]) -> Vec<Cluster> {
 }
 
 /// A cluster as an intersection (refined from its centre), or as a
-/// suspected overlap when it has many leaves.
+/// suspected overlap when it has many leaves and Newton's point is not a
+/// transversal crossing. (A shallow crossing also makes a cluster of many
+/// leaves — the curves stay within `tol` of each other along a stretch of
+/// about `tol/sin θ` — and a cluster merged in one pass can hold part of a
+/// crossing another cluster holds too: Newton's point decides.)
 fn cluster_result(a: &Jet, b: &Jet, c: &Cluster, tol: f64) -> Option<ApproxIntersection> {
     let r = &c.range;
-    if c.leaves > OVERLAP_LEAVES {
-        let (pa, pb) = (a.point_and_velocity(r[0]).0, b.point_and_velocity(r[2]).0);
+    let (s, t) = refine(a, b, 0.5 * (r[0] + r[1]), 0.5 * (r[2] + r[3]));
+    let ((pa, va), (pb, vb)) = (a.point_and_velocity(s), b.point_and_velocity(t));
+    let d = distance(&pa, &pb);
+    if d <= tol && (c.leaves <= OVERLAP_LEAVES || crossing_sine(&va, &vb) > TRANSVERSAL) {
         return Some(ApproxIntersection {
+            s,
+            t,
+            point: pa.to_vec(),
+            distance: d,
+            overlap: None,
+        });
+    }
+    (c.leaves > OVERLAP_LEAVES).then(|| {
+        let (pa, pb) = (a.point_and_velocity(r[0]).0, b.point_and_velocity(r[2]).0);
+        ApproxIntersection {
             s: r[0],
             t: r[2],
             distance: distance(&pa, &pb),
             point: pa.to_vec(),
             overlap: Some(*r),
-        });
-    }
-    let (s, t) = refine(a, b, 0.5 * (r[0] + r[1]), 0.5 * (r[2] + r[3]));
-    let (pa, pb) = (a.point_and_velocity(s).0, b.point_and_velocity(t).0);
-    let d = distance(&pa, &pb);
-    (d <= tol).then_some(ApproxIntersection {
-        s,
-        t,
-        point: pa.to_vec(),
-        distance: d,
-        overlap: None,
+        }
     })
+}
+
+/// Below this sine of the angle between the two tangents, a point where a
+/// large cluster's Newton steps end is not taken as a crossing (the
+/// cluster is a suspected overlap).
+const TRANSVERSAL: f64 = 1e-6;
+
+/// `sin θ` of the angle between `u` and `v`, by Lagrange's identity
+/// `|u|²|v|² − (u·v)² = |u|²|v|² sin²θ` (any dimension); 0 for a zero
+/// vector.
+fn crossing_sine(u: &[f64], v: &[f64]) -> f64 {
+    let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(p, q)| p * q).sum::<f64>();
+    let (uu, vv, uv) = (dot(u, u), dot(v, v), dot(u, v));
+    if uu == 0.0 || vv == 0.0 {
+        return 0.0;
+    }
+    ((uu * vv - uv * uv).max(0.0) / (uu * vv)).sqrt()
 }
 
 fn distance(p: &[f64], q: &[f64]) -> f64 {
