@@ -143,7 +143,10 @@ fn push_int(out: &mut String, v: i128) {
             break;
         }
     }
-    out.extend(digits[at..].iter().map(|&d| char::from(d)));
+    // ASCII digits: always UTF-8, appended as one slice.
+    if let Ok(text) = std::str::from_utf8(&digits[at..]) {
+        out.push_str(text);
+    }
 }
 
 /// Lexicographic order of two equally long sequences; `None` on overflow.
