@@ -2,13 +2,13 @@
 //! ([`minimal`](super::minimal) explains why it is sound), on flat grids:
 //! the `C` homogeneous components of a net of bidegree `(m, n)` are one
 //! buffer of `C(m+1)(n+1)` residues, converted from the Bernstein to the
-//! power basis in place, line by line, and the coprimality test runs its
+//! power basis in place, line by line (by forward differences), and the coprimality test runs its
 //! pseudo-remainder sequence in two buffers. One allocation per grid and a
 //! few per test, where nested vectors took one per row, point and line
 //! (issue 31: the certificate runs on every record of `key` and `dedup`).
 
 use crate::algebra::modp::{Fp, MODULUS};
-use crate::bernstein::{bernstein_to_power_into, binomial_rows};
+use crate::bernstein::binomial_rows;
 use num_traits::Zero;
 use std::cell::RefCell;
 
@@ -62,37 +62,22 @@ impl FpGrids {
     }
 
     /// The grids of Bernstein coefficients `data` (laid out as above)
-    /// converted to the power basis: each row (in v), then each column (in
-    /// u), by [`bernstein_to_power_into`] with Pascal's triangle built once.
+    /// converted to the power basis in place: each row (in v), then each
+    /// column (in u), by [`bernstein_to_power_strided`] with the rows `n`
+    /// and `m` of Pascal's triangle.
     pub(crate) fn from_bernstein(data: Vec<Fp>, comps: usize, (m, n): (usize, usize)) -> FpGrids {
+        let mut g = FpGrids::new(data, comps, (m, n));
         with_pascal(m.max(n), |pascal| {
-            FpGrids::new(data, comps, (m, n)).convert_lines(pascal)
-        })
-    }
-
-    /// [`from_bernstein`](FpGrids::from_bernstein) with Pascal's triangle
-    /// `pascal` of degree at least `max(m, n)`.
-    fn convert_lines(mut self, pascal: &[Vec<Fp>]) -> FpGrids {
-        let (m, n) = (self.m, self.n);
-        let (by_row, by_col) = (&pascal[..=n], &pascal[..=m]);
-        let (mut line, mut power) = (Vec::with_capacity(m.max(n) + 1), Vec::new());
-        for row in self.data.chunks_exact_mut(n + 1) {
-            line.clear();
-            line.extend_from_slice(row);
-            bernstein_to_power_into(&line, by_row, &mut power);
-            row.copy_from_slice(&power);
-        }
-        for grid in self.data.chunks_exact_mut((m + 1) * (n + 1)) {
-            for q in 0..=n {
-                line.clear();
-                line.extend(grid[q..].iter().step_by(n + 1));
-                bernstein_to_power_into(&line, by_col, &mut power);
-                for (x, &y) in grid[q..].iter_mut().step_by(n + 1).zip(&power) {
-                    *x = y;
+            for row in g.data.chunks_exact_mut(n + 1) {
+                bernstein_to_power_strided(row, 1, &pascal[n]);
+            }
+            for grid in g.data.chunks_exact_mut((m + 1) * (n + 1)) {
+                for q in 0..=n {
+                    bernstein_to_power_strided(&mut grid[q..], n + 1, &pascal[m]);
                 }
             }
-        }
-        self
+        });
+        g
     }
 
     /// Row `p` (the coefficients of `u^p v^0 … u^p v^n`) of component `c`.
@@ -197,6 +182,26 @@ fn pseudo_rem(a: &mut Vec<Fp>, b: &[Fp]) {
             *x = *x - la * y;
         }
         trim(a);
+    }
+}
+
+/// The Bernstein coefficients `b_0 … b_n` at `line[0], line[s], …`
+/// (stride `s`, `n + 1 = binom.len()`) replaced in place by the power
+/// coefficients `a_k = C(n, k) Δ^k b_0`, where `Δ^k b_0 = Σ_i (−1)^(k−i)
+/// C(k, i) b_i` is the k-th forward difference (the power form of a Bézier
+/// polynomial; Farin, *Curves and Surfaces for CAGD*, 5th ed., §5.2–5.3):
+/// `n(n+1)/2` subtractions and `n + 1` products instead of a product per
+/// term of each sum. `binom` is row `n` of Pascal's triangle modulo p.
+fn bernstein_to_power_strided(line: &mut [Fp], s: usize, binom: &[Fp]) {
+    let n = binom.len() - 1;
+    // After pass k, position i ≥ k holds Δ^k b_(i−k).
+    for k in 1..=n {
+        for i in (k..=n).rev() {
+            line[i * s] = line[i * s] - line[(i - 1) * s];
+        }
+    }
+    for (k, &c) in binom.iter().enumerate() {
+        line[k * s] = line[k * s] * c;
     }
 }
 

@@ -143,7 +143,10 @@ fn push_int(out: &mut String, v: i128) {
             break;
         }
     }
-    out.extend(digits[at..].iter().map(|&d| char::from(d)));
+    // ASCII digits: always UTF-8, appended as one slice.
+    if let Ok(text) = std::str::from_utf8(&digits[at..]) {
+        out.push_str(text);
+    }
 }
 
 /// Lexicographic order of two equally long sequences; `None` on overflow.
@@ -205,12 +208,19 @@ impl Split<'_> {
         a * (self.n + 1) + b
     }
 
-    /// The normalized points of the view, row by row.
-    fn points(&self, sym: Symmetry, dims: (usize, usize)) -> impl Iterator<Item = Small> + '_ {
-        positions(dims).flat_map(move |(i, j)| {
-            let x = self.point(self.source(sym, dims, i, j));
-            x.iter().copied().chain(std::iter::once(Small::ONE))
-        })
+    /// The lexicographic order of the normalized points of the views under
+    /// `a` and `b`, row by row; `None` on overflow. Each normalized point
+    /// ends in the same 1, so the Cartesian coordinates decide.
+    fn cmp_views(&self, a: Symmetry, b: Symmetry, dims: (usize, usize)) -> Option<Ordering> {
+        for (i, j) in positions(dims) {
+            let x = self.point(self.source(a, dims, i, j)).iter().copied();
+            let y = self.point(self.source(b, dims, i, j)).iter().copied();
+            match cmp_seq(x, y)? {
+                Ordering::Equal => {}
+                o => return Some(o),
+            }
+        }
+        Some(Ordering::Equal)
     }
 
     /// The weight invariants of the view, `I_{i,j} = (ω_{i,j}/ω_{0,0}) A^i B^j`
@@ -270,7 +280,7 @@ fn split_key_text(s: &Split, curve: bool) -> Option<String> {
     for sym in Symmetry::admissible(curve, (s.m, s.n), target) {
         let order = match best.first() {
             None => Ordering::Equal,
-            Some(&b) => cmp_seq(s.points(sym, target), s.points(b, target))?,
+            Some(&b) => s.cmp_views(sym, b, target)?,
         };
         match order {
             Ordering::Equal => best.push(sym),
