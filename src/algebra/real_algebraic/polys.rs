@@ -387,7 +387,9 @@ pub(crate) fn eval_on_interval(
         scale *= &d;
     }
     let den = l * (scale / &d);
-    (BigRational::new(lo, den.clone()), BigRational::new(hi, den))
+    // Reduced by Lehmer's gcd: the binary gcd is quadratic on these.
+    let reduce = crate::algebra::gcd::fraction;
+    (reduce(lo, den.clone()), reduce(hi, den))
 }
 
 /// A bound `B` with every real root in `(−B, B)`.
