@@ -210,7 +210,7 @@ pub(crate) fn square_free_factors(p: &QPoly) -> Vec<(QPoly, usize)> {
         c = d.div_exact(&a).expect("the gcd divides");
         d = c.sub(&polys::derivative(&b));
         if a.degree().unwrap_or(0) > 0 {
-            out.push((a.monic(), j));
+            out.push((polys::monic(&a), j));
         }
         j += 1;
     }

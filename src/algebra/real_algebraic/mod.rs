@@ -740,7 +740,16 @@ impl RealAlgebraic {
             let (n_lo, n_hi) = polys::eval_on_interval(num, &lo, &hi);
             let (d_lo, d_hi) = polys::eval_on_interval(den, &lo, &hi);
             if d_lo.is_positive() || d_hi.is_negative() {
-                let q = [&n_lo / &d_lo, &n_lo / &d_hi, &n_hi / &d_lo, &n_hi / &d_hi];
+                // Quotients reduced by Lehmer's gcd (num-rational's binary
+                // gcd is quadratic on these enclosures' big integers).
+                let (inv_lo, inv_hi) = (d_lo.recip(), d_hi.recip());
+                let quotient = crate::algebra::gcd::product;
+                let q = [
+                    quotient(&n_lo, &inv_lo),
+                    quotient(&n_lo, &inv_hi),
+                    quotient(&n_hi, &inv_lo),
+                    quotient(&n_hi, &inv_hi),
+                ];
                 let min = q.iter().min().expect("four").clone();
                 let max = q.iter().max().expect("four").clone();
                 (min, max)

@@ -86,10 +86,39 @@ impl Isolator {
 /// square-free ([`super::modular`]), the generic case.
 pub(crate) fn square_free_part(p: &QPoly) -> QPoly {
     if super::modular::certainly_square_free(p) {
-        return p.monic();
+        return monic(p);
     }
     let g = gcd(p, &derivative(p));
-    p.div_exact(&g).expect("the gcd divides").monic()
+    monic(&p.div_exact(&g).expect("the gcd divides"))
+}
+
+/// `p / lc(p)` (zero for zero): [`UPoly::monic`] with each quotient
+/// reduced by Lehmer's gcd ([`crate::algebra::gcd::product`]) instead of
+/// num-rational's binary gcd, which is quadratic in the size of the
+/// coefficients (and of the leading one) of value polynomials.
+pub(crate) fn monic(p: &QPoly) -> QPoly {
+    let Some(inverse) = p.lead().map(|l| l.recip()) else {
+        return UPoly::zero();
+    };
+    UPoly::new(
+        p.coeffs()
+            .iter()
+            .map(|c| crate::algebra::gcd::product(c, &inverse))
+            .collect(),
+    )
+}
+
+/// The non-negative gcd of `ints` (zero when all are zero), by Lehmer's
+/// gcd ([`crate::algebra::gcd::gcd`]), stopping at 1.
+fn content(ints: &[BigInt]) -> BigInt {
+    let mut g = num_bigint::BigUint::zero();
+    for c in ints {
+        if g.is_one() {
+            break;
+        }
+        g = crate::algebra::gcd::gcd(&g, c.magnitude());
+    }
+    BigInt::from(g)
 }
 
 /// The monic `gcd(a, b)` over Q (zero when both are zero), by a primitive
@@ -114,14 +143,14 @@ pub(crate) fn gcd(a: &QPoly, b: &QPoly) -> QPoly {
     if x.0.is_empty() {
         return UPoly::zero();
     }
-    x.to_qpoly().monic()
+    monic(&x.to_qpoly())
 }
 
 /// `p` scaled to integer coefficients with gcd 1 and a positive leading
 /// coefficient.
 pub(crate) fn primitive_integer(p: &QPoly) -> Vec<BigInt> {
     let (ints, _): (Vec<BigInt>, _) = common_denominator(p.coeffs());
-    let g = ints.iter().fold(BigInt::zero(), |acc, c| acc.gcd(c));
+    let g = content(&ints);
     let sign = if p.lead().is_some_and(|l| l.is_negative()) {
         -BigInt::one()
     } else {
@@ -146,7 +175,7 @@ impl SignPoly {
     /// positive gcd of the resulting integers.
     pub(crate) fn new(p: &QPoly) -> Self {
         let (ints, _): (Vec<BigInt>, _) = common_denominator(p.coeffs());
-        let g = ints.iter().fold(BigInt::zero(), |acc, c| acc.gcd(c));
+        let g = content(&ints);
         if g.is_zero() {
             return SignPoly(Vec::new());
         }
@@ -198,7 +227,7 @@ impl SignPoly {
             steps += 1;
         }
         let flip = !(lc.is_negative() && steps % 2 == 1);
-        let g = r.iter().fold(BigInt::zero(), |acc, c| acc.gcd(c));
+        let g = content(&r);
         SignPoly(
             r.into_iter()
                 .map(|c| if flip { -(c / &g) } else { c / &g })
@@ -358,7 +387,9 @@ pub(crate) fn eval_on_interval(
         scale *= &d;
     }
     let den = l * (scale / &d);
-    (BigRational::new(lo, den.clone()), BigRational::new(hi, den))
+    // Reduced by Lehmer's gcd: the binary gcd is quadratic on these.
+    let reduce = crate::algebra::gcd::fraction;
+    (reduce(lo, den.clone()), reduce(hi, den))
 }
 
 /// A bound `B` with every real root in `(−B, B)`.
@@ -419,7 +450,7 @@ pub(crate) fn norm(p: &[BigInt], h: &[BigInt]) -> BigRational {
         return BigRational::zero();
     };
     let lc = &h[k];
-    let lead = BigRational::from_integer(p[d].clone());
+    let lead = &p[d];
     if k == 0 {
         return BigRational::from_integer(lc.pow(d as u32));
     }
@@ -447,10 +478,14 @@ pub(crate) fn norm(p: &[BigInt], h: &[BigInt]) -> BigRational {
     );
     let steps = (d + 1).saturating_sub(k);
     let lc_pow = d as i64 - deg_r as i64 - (k * steps) as i64;
-    let sign = if (d * k) % 2 == 1 { q(-1) } else { q(1) };
-    sign * BigRational::from_integer(res_hr)
-        * BigRational::from_integer(lc.clone()).pow(lc_pow as i32)
-        / lead.pow(k as i32)
+    let numer = if (d * k) % 2 == 1 { -res_hr } else { res_hr };
+    let lc_part = lc.pow(lc_pow.unsigned_abs() as u32);
+    let lead_part = lead.pow(k as u32);
+    // One reduction by Lehmer's gcd, not one binary gcd per product.
+    match lc_pow >= 0 {
+        true => crate::algebra::gcd::fraction(numer * lc_part, lead_part),
+        false => crate::algebra::gcd::fraction(numer, lc_part * lead_part),
+    }
 }
 
 /// The polynomial of degree ≤ `D = values.len() − 1` through
@@ -494,7 +529,7 @@ pub(crate) fn interpolate(values: &[BigRational]) -> QPoly {
     let scale = l * &weight[0];
     UPoly::new(
         acc.into_iter()
-            .map(|c| BigRational::new(c, scale.clone()))
+            .map(|c| crate::algebra::gcd::fraction(c, scale.clone()))
             .collect(),
     )
 }
@@ -693,6 +728,21 @@ mod tests {
                 (min + c, max + c)
             });
             proptest::prop_assert_eq!(eval_on_interval(&p, &a, &b), want);
+        }
+
+        /// `monic` (Lehmer-reduced quotients) gives the coefficients of
+        /// `UPoly::monic` (num-rational's reduction), in the same lowest
+        /// terms.
+        #[test]
+        fn monic_matches_upoly_monic(
+            c in proptest::collection::vec((-(1i64 << 40)..=(1i64 << 40), 1i64..=(1i64 << 40)), 0..=9),
+        ) {
+            let p = UPoly::new(c.iter().map(|&(n, d)| BigRational::new(n.into(), d.into())).collect());
+            let (got, want) = (monic(&p), p.monic());
+            proptest::prop_assert_eq!(got.coeffs().len(), want.coeffs().len());
+            for (g, w) in got.coeffs().iter().zip(want.coeffs()) {
+                proptest::prop_assert_eq!((g.numer(), g.denom()), (w.numer(), w.denom()));
+            }
         }
 
         /// The norm by pseudo-division equals the Sylvester determinant of
