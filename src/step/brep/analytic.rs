@@ -31,7 +31,7 @@ use crate::analytic::{trim_between, Trimmed};
 use crate::curve::RationalCurve;
 use crate::error::Error;
 use crate::hpoint::HPoint;
-use crate::nurbs::Nurbs;
+use crate::nurbs::{Nurbs, SpannedPatch};
 use crate::patch::Patch;
 use crate::step::geometry::{curve_pieces, surface_pieces, Context as Readers, Curve, Surface};
 use num_rational::BigRational;
@@ -67,10 +67,14 @@ fn lift(p: &[BigRational]) -> Vec<RealAlgebraic> {
 
 /// The Bézier curve pieces of a B-spline curve entity, lifted.
 fn bspline_pieces(nurbs: &Nurbs) -> Vec<RationalCurve<RealAlgebraic>> {
-    nurbs
-        .pieces()
-        .into_iter()
-        .filter_map(|p| match p.patch {
+    lifted(&nurbs.pieces())
+}
+
+/// The curves among spanned pieces, lifted to the real algebraic numbers.
+fn lifted(pieces: &[SpannedPatch]) -> Vec<RationalCurve<RealAlgebraic>> {
+    pieces
+        .iter()
+        .filter_map(|p| match &p.patch {
             Patch::Curve(c) => Some(c.map(RealAlgebraic::from_rational)),
             _ => None,
         })
@@ -85,17 +89,6 @@ fn trimmed(t: Trimmed<RealAlgebraic>, approximate: Option<String>) -> Geometry {
         vertex_distance_sq: Some([t.start_distance_sq, t.end_distance_sq]),
         closed_form: None,
     })
-}
-
-/// The pieces of a B-spline edge curve, lifted.
-fn spline_pieces(s: &BSpline) -> Vec<RationalCurve<RealAlgebraic>> {
-    s.pieces()
-        .iter()
-        .filter_map(|p| match &p.patch {
-            Patch::Curve(c) => Some(c.map(RealAlgebraic::from_rational)),
-            _ => None,
-        })
-        .collect()
 }
 
 /// Does the B-spline curve `s` run from vertex `a` to vertex `b` (from
@@ -140,7 +133,7 @@ fn spline_ends(s: &BSpline) -> Option<[Vec<f64>; 2]> {
         let ctrl = c.control_points();
         return Some([project(ctrl.first()?)?, project(ctrl.last()?)?]);
     }
-    let pieces = spline_pieces(s);
+    let pieces = lifted(s.pieces());
     let end = |c: &RationalCurve<RealAlgebraic>, t: i64| -> Option<Vec<f64>> {
         let p = c.eval(&RealAlgebraic::from_i64(t)).ok()?;
         Some(p.iter().map(Ordered::to_f64).collect())
@@ -198,7 +191,7 @@ impl Builder<'_> {
                 .unwrap_or_else(|e| Geometry::Invalid(e.to_string())),
             Geometry::BSpline(s) if self.analytic && !runs_between(&s, a, b, same_sense, units) => {
                 let t = trim_between(
-                    &spline_pieces(&s),
+                    &lifted(s.pieces()),
                     &lift(a),
                     &lift(b),
                     same_sense,
