@@ -17,6 +17,7 @@
 //!    result carries an exact bound `error ≥ |slope − tan α|` and
 //!    `exact = false`. Nothing is approximated silently.
 
+use crate::algebra::gcd;
 use crate::algebra::parse_rational;
 use crate::algebra::scalar::{Field, Ordered, Roots, Scalar};
 use crate::error::Error;
@@ -183,25 +184,34 @@ fn tan_15<T: Field + Roots>(k: i64) -> Option<T> {
     })
 }
 
-/// `sin x` and `cos x` bracketed by consecutive alternating partial sums
-/// (valid for `0 < x < √6`, where the terms decrease).
-fn bracket(x: &BigRational, odd: bool) -> (BigRational, BigRational) {
-    let eps = BigRational::new(BigInt::one(), BigInt::one() << 80);
-    let x2 = x.clone() * x;
-    let (mut term, mut n) = if odd {
-        (x.clone(), 1i64)
+/// `sin x` and `cos x` of the dyadic `x = X/2^f` bracketed by consecutive
+/// alternating partial sums (valid for `0 < x < √6`, where the terms
+/// decrease), stopped at the first term below `2^{−80}`.
+///
+/// The partial sums are kept as integers over their common denominator
+/// `2^{f(2k+1)}·(2k+1)!` (`2^{2fk}·(2k)!` for the cosine), so no fraction
+/// is reduced until the two returned bounds; the values are those of the
+/// reduced-fraction recurrence `t ← −t·x²/((n+1)(n+2))`.
+fn bracket(x: &BigInt, f: usize, odd: bool) -> (BigRational, BigRational) {
+    let x2 = x * x;
+    let (mut term, mut denom, mut n) = if odd {
+        (x.clone(), BigInt::one() << f, 1i64)
     } else {
-        (BigRational::one(), 0i64)
+        (BigInt::one(), BigInt::one(), 0i64)
     };
     let mut sum = term.clone();
     loop {
-        term = -term * &x2 / q((n + 1) * (n + 2), 1);
+        let step = BigInt::from((n + 1) * (n + 2)) << (2 * f);
+        term = -(term * &x2);
+        let next_denom = &denom * &step;
+        let next = &sum * &step + &term;
         n += 2;
-        let next = sum.clone() + &term;
-        if term.abs() < eps {
-            return if sum < next { (sum, next) } else { (next, sum) };
+        if (term.abs() << 80usize) < next_denom {
+            let a = gcd::fraction(sum, denom);
+            let b = gcd::fraction(next, next_denom);
+            return if a < b { (a, b) } else { (b, a) };
         }
-        sum = next;
+        (sum, denom) = (next, next_denom);
     }
 }
 
@@ -211,13 +221,14 @@ fn approximate<T: Scalar>(lo: &BigRational, hi: &BigRational) -> Result<Slope<T>
     // Widen [lo, hi] outward to 96-bit dyadics: the enclosure stays
     // rigorous, and the Taylor terms stay short (the 40-digit π of a degree
     // angle would otherwise make every power of x a long fraction).
-    let grid = BigRational::from_integer(BigInt::one() << 96);
-    let lo = &((lo.clone() * &grid).floor() / &grid);
-    let hi = &((hi.clone() * &grid).ceil() / &grid);
-    let (s_lo, _) = bracket(lo, true);
-    let (_, c_hi) = bracket(lo, false);
-    let (_, s_hi) = bracket(hi, true);
-    let (c_lo, _) = bracket(hi, false);
+    const GRID: usize = 96;
+    let grid = BigRational::from_integer(BigInt::one() << GRID);
+    let lo = &(lo.clone() * &grid).floor().to_integer();
+    let hi = &(hi.clone() * &grid).ceil().to_integer();
+    let (s_lo, _) = bracket(lo, GRID, true);
+    let (_, c_hi) = bracket(lo, GRID, false);
+    let (_, s_hi) = bracket(hi, GRID, true);
+    let (c_lo, _) = bracket(hi, GRID, false);
     if !s_lo.is_positive() || !c_lo.is_positive() {
         return Err(Error::Domain(
             "a cone's semi_angle too close to 0 or 90° to bound its tangent".into(),
@@ -234,4 +245,48 @@ fn approximate<T: Scalar>(lo: &BigRational, hi: &BigRational) -> Result<Slope<T>
         exact: false,
         error,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_traits::ToPrimitive;
+    use proptest::prelude::*;
+
+    /// The recurrence on reduced fractions, term by term (the reference).
+    fn reduced_bracket(x: &BigRational, odd: bool) -> (BigRational, BigRational) {
+        let eps = BigRational::new(BigInt::one(), BigInt::one() << 80);
+        let x2 = x.clone() * x;
+        let (mut term, mut n) = if odd {
+            (x.clone(), 1i64)
+        } else {
+            (BigRational::one(), 0i64)
+        };
+        let mut sum = term.clone();
+        loop {
+            term = -term * &x2 / q((n + 1) * (n + 2), 1);
+            n += 2;
+            let next = sum.clone() + &term;
+            if term.abs() < eps {
+                return if sum < next { (sum, next) } else { (next, sum) };
+            }
+            sum = next;
+        }
+    }
+
+    proptest! {
+        /// The integer recurrence gives the reduced recurrence's bounds, and
+        /// they bracket `f64`'s sin or cos up to its rounding (`1e-15`).
+        #[test]
+        fn the_integer_bracket_is_the_reduced_one(x in 1u64..(1u64 << 50), odd: bool) {
+            // x / 2^50 ∈ (0, 1): a dyadic on a grid of 96 bits.
+            let big = BigInt::from(x) << 46usize;
+            let exact = BigRational::new(BigInt::from(x), BigInt::one() << 50usize);
+            let (lo, hi) = bracket(&big, 96, odd);
+            prop_assert_eq!((lo.clone(), hi.clone()), reduced_bracket(&exact, odd));
+            let v = ToPrimitive::to_f64(&exact).unwrap();
+            let f = if odd { v.sin() } else { v.cos() };
+            prop_assert!(ToPrimitive::to_f64(&lo).unwrap() <= f + 1e-15 && f - 1e-15 <= ToPrimitive::to_f64(&hi).unwrap());
+        }
+    }
 }

@@ -37,6 +37,7 @@
 
 pub(crate) mod descartes;
 pub(crate) mod field;
+mod memo;
 pub(crate) mod modular;
 pub(crate) mod polys;
 pub(crate) mod radical;

@@ -25,6 +25,7 @@
 //! doubled in precision until they exclude 0, which always happens because a
 //! non-empty sum is non-zero.
 
+use super::memo;
 use super::polys;
 use crate::algebra::gcd;
 use crate::algebra::upoly::UPoly;
@@ -151,7 +152,17 @@ fn dyadic(n: BigInt, k: usize) -> BigRational {
 /// is at least 1 (`r ≥ 1`), where `x ↦ x^{1/k}` has slope at most `1/k ≤
 /// 1/2`: a width `W` (in units of `2^{−w}`) becomes at most `W/2 + 2`,
 /// which stays at most 4.
+///
+/// Remembered per thread ([`memo::power_enclosure`]): the frames of a model
+/// ask for the same few roots at the same precisions again and again.
 fn power_enclosure(b: &BigInt, e: &Exp, w: usize) -> (BigInt, BigInt) {
+    memo::power_enclosure(b, (*e.numer(), *e.denom()), w, || {
+        integer_root_enclosure(b, e, w)
+    })
+}
+
+/// [`power_enclosure`], computed.
+fn integer_root_enclosure(b: &BigInt, e: &Exp, w: usize) -> (BigInt, BigInt) {
     let a = usize::try_from(*e.numer()).expect("exponents are in (0, 1)");
     let mut n = *e.denom();
     let r = num_traits::pow(b.clone(), a) << w;
@@ -279,7 +290,7 @@ fn coprime_basis(mut v: Vec<BigInt>) -> Vec<BigInt> {
         v.dedup();
         let pair = (0..v.len()).find_map(|i| {
             (i + 1..v.len()).find_map(|j| {
-                let g = v[i].gcd(&v[j]);
+                let g = memo::base_gcd(&v[i], &v[j]);
                 (g > BigInt::one()).then_some((i, j, g))
             })
         });
@@ -411,7 +422,7 @@ impl RadicalSum {
         // a base of one that the other lacks needs a gcd with the other's.
         let coprime = a
             .iter()
-            .all(|x| b.binary_search(x).is_ok() || b.iter().all(|y| x.gcd(y).is_one()));
+            .all(|x| b.binary_search(x).is_ok() || b.iter().all(|y| memo::base_gcd(x, y).is_one()));
         if coprime {
             return (self.clone(), other.clone());
         }
@@ -577,7 +588,7 @@ impl RadicalSum {
         basis.iter().fold(1u64, |acc, c| {
             let index = gens
                 .iter()
-                .filter(|(b, _)| b.gcd(c) > BigInt::one())
+                .filter(|(b, _)| memo::base_gcd(b, c) > BigInt::one())
                 .fold(1u64, |l, (_, n)| l.lcm(n));
             acc.saturating_mul(index)
         })
