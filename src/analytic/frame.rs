@@ -121,9 +121,14 @@ impl<T: Field + Ordered + Roots> Frame<T> {
                 "the ref_direction is parallel to the axis".into(),
             ));
         }
+        // |x⊥|² = |z|²·w with w = |z|²|x|² − (x·z)²: dividing by √w and
+        // √|z|² separately keeps the two radicands apart, where √(|z|²w)
+        // would share the factor |z|² with ẑ's root, and every sum of
+        // x̂- and ẑ-terms would first refine the two into a common basis.
+        let w = xx / &zz;
         Ok(Frame::from_axes(
             location.to_vec(),
-            normalize(&x_perp, &xx)?,
+            normalize(&normalize(&x_perp, &w)?, &zz)?,
             normalize(&z, &zz)?,
         ))
     }
