@@ -211,6 +211,15 @@ pub trait Ordered: Field + PartialOrd {
     /// The nearest `f64` (exact types) or the value itself (`f64`).
     fn to_f64(&self) -> f64;
 
+    /// Rational bounds `lo ≤ self ≤ hi`, about 64 bits wide or narrower,
+    /// for types whose exact comparisons are costly (real algebraic
+    /// numbers); `None` (the default) where comparing the values is as
+    /// cheap (`f64`, rationals). Callers use them to skip exact work whose
+    /// outcome the bounds already decide, never in place of an answer.
+    fn rational_bounds(&self) -> Option<(BigRational, BigRational)> {
+        None
+    }
+
     /// `|self|`.
     fn abs_val(&self) -> Self {
         if *self < Self::zero() {

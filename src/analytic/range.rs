@@ -15,6 +15,9 @@ use super::{dot, sub};
 use crate::algebra::scalar::{Field, Ordered};
 use crate::curve::RationalCurve;
 use crate::error::Error;
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::Zero;
 
 /// A surface with unbounded parameter directions.
 #[derive(Clone, Debug)]
@@ -70,25 +73,23 @@ pub fn covering_range<T: Field + Ordered>(
     if points.is_empty() {
         return Err(Error::Domain("no points to cover".into()));
     }
-    let along = |p: &[T], origin: &[T], d: &[T]| dot(&sub(p, origin), d);
-    let range = |f: &dyn Fn(&[T]) -> T| widen(extremes(points.iter().map(|p| f(p))));
     Ok(match surface {
         Unbounded::Plane(fr) => vec![
-            range(&|p| along(p, &fr.origin, &fr.x)),
-            range(&|p| along(p, &fr.origin, &fr.y)),
+            widen(projection_extremes(points, Some(&fr.origin), &fr.x)),
+            widen(projection_extremes(points, Some(&fr.origin), &fr.y)),
         ],
-        Unbounded::Axial(fr) => vec![range(&|p| along(p, &fr.origin, &fr.z))],
+        Unbounded::Axial(fr) => vec![widen(projection_extremes(points, Some(&fr.origin), &fr.z))],
         Unbounded::Extrusion { curve, vector } => {
             if curve.is_empty() {
                 return Err(Error::Domain("an extrusion of no curve pieces".into()));
             }
             let vv = dot(vector, vector);
-            let [p_lo, p_hi] = extremes(points.iter().map(|p| dot(p, vector)));
+            let [p_lo, p_hi] = projection_extremes(points, None, vector);
             let mut ctrl = Vec::new();
             for c in curve.iter() {
                 ctrl.extend(c.points()?);
             }
-            let [c_lo, c_hi] = extremes(ctrl.iter().map(|p| dot(p, vector)));
+            let [c_lo, c_hi] = projection_extremes(&ctrl, None, vector);
             vec![widen([(p_lo - &c_hi) / &vv, (p_hi - &c_lo) / &vv])]
         }
         Unbounded::RevolvedLine {
@@ -103,15 +104,95 @@ pub fn covering_range<T: Field + Ordered>(
                     "a line revolved in a plane perpendicular to the axis".into(),
                 ));
             }
-            let base = along(point, origin, axis);
-            let [lo, hi] = extremes(
-                points
-                    .iter()
-                    .map(|p| (along(p, origin, axis) - &base) / &da),
-            );
-            vec![widen([lo, hi])]
+            let base = dot(&sub(point, origin), axis);
+            // v is an affine function of the axial coordinate: its extremes
+            // are the images of the coordinate's (swapped when D·â < 0,
+            // which `widen` orders).
+            let [lo, hi] = projection_extremes(points, Some(origin), axis);
+            vec![widen([(lo - &base) / &da, (hi - &base) / &da])]
         }
     })
+}
+
+/// The exact `[min, max]` of the projections `(P − O)·d` of `points`
+/// (`P·d` without an origin).
+///
+/// Where `T` has [`Ordered::rational_bounds`], every projection is first
+/// enclosed by integer interval arithmetic ([`fixed_projection`]); a point
+/// whose enclosure lies wholly above another's cannot be the minimum (nor,
+/// below, the maximum), so only the others are projected exactly. The
+/// answer is that of projecting every point.
+fn projection_extremes<T: Field + Ordered>(
+    points: &[Vec<T>],
+    origin: Option<&[T]>,
+    d: &[T],
+) -> [T; 2] {
+    let exact = |p: &[T]| match origin {
+        Some(o) => dot(&sub(p, o), d),
+        None => dot(p, d),
+    };
+    let enclosures: Option<Vec<[BigInt; 2]>> = points
+        .iter()
+        .map(|p| fixed_projection(p, origin, d))
+        .collect();
+    let Some(enclosures) = enclosures else {
+        return extremes(points.iter().map(|p| exact(p)));
+    };
+    let lowest_top = enclosures.iter().map(|[_, hi]| hi).min();
+    let highest_bottom = enclosures.iter().map(|[lo, _]| lo).max();
+    let (Some(lowest_top), Some(highest_bottom)) = (lowest_top, highest_bottom) else {
+        return extremes(points.iter().map(|p| exact(p)));
+    };
+    let pairs = || points.iter().zip(&enclosures);
+    let [lo, _] = extremes(
+        pairs()
+            .filter(|(_, [lo, _])| lo <= lowest_top)
+            .map(|(p, _)| exact(p)),
+    );
+    let [_, hi] = extremes(
+        pairs()
+            .filter(|(_, [_, hi])| hi >= highest_bottom)
+            .map(|(p, _)| exact(p)),
+    );
+    [lo, hi]
+}
+
+/// Fractional bits of the fixed-point enclosures of [`fixed_projection`].
+const FIXED_BITS: usize = 64;
+
+/// `[L, H]` with `L ≤ (P − O)·d · 2^{128} ≤ H` (`P·d` without an origin),
+/// from each coordinate's [`Ordered::rational_bounds`] rounded outward to
+/// multiples of `2^{−64}`, then exact integer interval arithmetic (a
+/// product of two such bounds is a multiple of `2^{−128}`). `None` when
+/// `T` has no bounds.
+fn fixed_projection<T: Ordered>(p: &[T], origin: Option<&[T]>, d: &[T]) -> Option<[BigInt; 2]> {
+    let mut total = [BigInt::zero(), BigInt::zero()];
+    for (i, (x, di)) in p.iter().zip(d).enumerate() {
+        let mut xi = fixed(x)?;
+        if let Some(o) = origin {
+            let [a, b] = fixed(&o[i])?;
+            xi = [&xi[0] - b, &xi[1] - a];
+        }
+        let [lo, hi] = interval_product(&xi, &fixed(di)?);
+        total = [&total[0] + lo, &total[1] + hi];
+    }
+    Some(total)
+}
+
+/// `[⌊lo·2^{64}⌋, ⌈hi·2^{64}⌉]` of `x`'s rational bounds.
+fn fixed<T: Ordered>(x: &T) -> Option<[BigInt; 2]> {
+    let (lo, hi) = x.rational_bounds()?;
+    let down = (lo.numer() << FIXED_BITS).div_floor(lo.denom());
+    let up = -((-(hi.numer() << FIXED_BITS)).div_floor(hi.denom()));
+    Some([down, up])
+}
+
+/// `[a, b]·[c, d]`: the least and greatest of the four corner products.
+fn interval_product([a, b]: &[BigInt; 2], [c, d]: &[BigInt; 2]) -> [BigInt; 2] {
+    let corners = [a * c, a * d, b * c, b * d];
+    let lo = corners.iter().min().expect("four corners").clone();
+    let hi = corners.iter().max().expect("four corners").clone();
+    [lo, hi]
 }
 
 /// The min and max of a non-empty sequence.

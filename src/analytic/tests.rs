@@ -136,3 +136,63 @@ fn a_prefixed_radian_scales_the_semi_angle_and_its_rounding() {
     assert!(!s.exact);
     assert!((crate::Ordered::to_f64(&s.tan) - 0.5f64.tan()).abs() < 1e-15);
 }
+
+mod covering_range_filter {
+    use super::*;
+    use crate::algebra::scalar::{Roots, Scalar};
+    use proptest::prelude::*;
+
+    /// `a + b·√2 + c·√3` from small integers (ties come often).
+    fn radical(a: i64, b: i64, c: i64) -> RealAlgebraic {
+        let r = |n: i64| RealAlgebraic::from_i64(n).nth_root(2).unwrap();
+        RealAlgebraic::from_i64(a)
+            + &(RealAlgebraic::from_i64(b) * &r(2))
+            + &(RealAlgebraic::from_i64(c) * &r(3))
+    }
+
+    /// The exact min and max over every point, compared one by one.
+    fn every_point(points: &[Vec<RealAlgebraic>], f: &Frame<RealAlgebraic>) -> [RealAlgebraic; 2] {
+        let v: Vec<RealAlgebraic> = points.iter().map(|p| f.coords(p)[2].clone()).collect();
+        let mut lo = v[0].clone();
+        let mut hi = v[0].clone();
+        for x in &v {
+            if *x < lo {
+                lo = x.clone();
+            }
+            if *x > hi {
+                hi = x.clone();
+            }
+        }
+        [lo, hi]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        /// The range found by enclosing the projections first is the exact
+        /// range over every point, on a frame whose axes are radicals.
+        #[test]
+        fn the_filtered_range_is_the_exact_range(
+            coords in proptest::collection::vec((-3i64..4, -2i64..3, -2i64..3), 3..24),
+            axis in (1i64..4, -2i64..3, 1i64..3),
+        ) {
+            let points: Vec<Vec<RealAlgebraic>> = coords
+                .chunks(3)
+                .filter(|c| c.len() == 3)
+                .map(|c| c.iter().map(|&(a, b, k)| radical(a, b, k)).collect())
+                .collect();
+            prop_assume!(!points.is_empty());
+            let z: Vec<RealAlgebraic> = [axis.0, axis.1, axis.2].iter().map(|&n| RealAlgebraic::from_i64(n)).collect();
+            let o = vec![radical(1, 1, 0), RealAlgebraic::from_i64(0), radical(0, 0, 1)];
+            let f = Frame::from_placement(&o, Some(&z), None).unwrap();
+            let [lo, hi] = every_point(&points, &f);
+            let r = covering_range(&Unbounded::Axial(&f), &points).unwrap();
+            if lo == hi {
+                prop_assert_eq!(&r[0][0], &(lo.clone() - &RealAlgebraic::from_i64(1)));
+                prop_assert_eq!(&r[0][1], &(hi + &RealAlgebraic::from_i64(1)));
+            } else {
+                prop_assert_eq!(&r[0][0], &lo);
+                prop_assert_eq!(&r[0][1], &hi);
+            }
+        }
+    }
+}

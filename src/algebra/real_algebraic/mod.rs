@@ -1151,6 +1151,11 @@ impl Ordered for RealAlgebraic {
     fn to_f64(&self) -> f64 {
         self.to_f64_exact()
     }
+
+    /// [`RealAlgebraic::enclosure`] at 64 bits.
+    fn rational_bounds(&self) -> Option<(BigRational, BigRational)> {
+        Some(self.enclosure(64))
+    }
 }
 
 impl Roots for RealAlgebraic {
