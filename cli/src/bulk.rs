@@ -4,7 +4,7 @@
 use crate::recent::{RecentKeys, RecordHash};
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::algebra::Scalar;
-use exact_bezier::coincide::canonical::{key_plan, KeyDigest, KeyPlan, SmallPatch};
+use exact_bezier::coincide::canonical::{key_plan, KeyDigest, KeyPlan};
 use exact_bezier::io::{for_each_chunk, Record};
 use exact_bezier::limits::{self, Size};
 use exact_bezier::patch::Patch;
@@ -83,13 +83,18 @@ impl BulkArgs {
     }
 }
 
+/// The key of a line of the plain shape that the fast reader keyed in
+/// machine integers as it read it ([`SmallPatch::certify`](exact_bezier::coincide::canonical::SmallPatch::certify)): the digest of
+/// its key text, and the text when the command prints it.
+#[derive(Clone)]
+pub(crate) struct MachineKey {
+    pub digest: KeyDigest,
+    pub text: Option<String>,
+}
+
 /// The patch of one record: over Q when its numbers are all rational (and
 /// for NURBS objects), else over the real algebraic numbers.
 pub(crate) enum Member {
-    /// A line of the plain shape read by the fast reader, its net
-    /// certified minimal ([`SmallPatch::certify`]): keyed in machine
-    /// integers.
-    Small(SmallPatch),
     /// Every number rational.
     Rational(Patch<BigRational>),
     /// Some number algebraic and irrational (`"sqrt(6)/6"`).
@@ -109,28 +114,35 @@ impl Member {
     /// The patch over the real algebraic numbers (a rational one lifted).
     pub(crate) fn algebraic(&self) -> Result<Patch<RealAlgebraic>, Error> {
         Ok(match self {
-            Member::Small(s) => s.to_patch()?.map(RealAlgebraic::from_rational),
             Member::Rational(p) => p.map(RealAlgebraic::from_rational),
             Member::Algebraic(p) => p.clone(),
         })
     }
 
-    /// The patch and key work of `r` by the fast reader when it is a line
-    /// of the plain shape whose net is certified minimal (then the work is
-    /// that [`key_work`] charges the same patch read by [`Member::read`]:
-    /// [`SmallPatch::certify`] has run the machine-integer key text, which
-    /// decides the [`KeyPlan`] as [`key_plan`] does).
-    fn read_fast(r: &Record) -> Option<(Member, u64)> {
+    /// The key work of `r` and its key (text kept if `texts`) or its
+    /// patch, by the fast reader, when it is a line of the plain shape
+    /// whose net is certified minimal: the key when its text stays in
+    /// machine integers ([`KeyPlan::Machine`]), else the patch over Q
+    /// ([`KeyPlan::Minimal`]). The work is that [`key_work`] charges the
+    /// same patch read by [`Member::read`]: [`SmallPatch::certify`](exact_bezier::coincide::canonical::SmallPatch::certify) has run
+    /// the machine-integer key text, which decides the [`KeyPlan`] as
+    /// [`key_plan`] does.
+    fn read_fast(r: &Record, texts: bool) -> Option<(Result<MachineKey, Member>, u64)> {
         let mut s = r.small_patch()?;
         let size = s.size()?;
-        s.certify().then(|| {
-            let plan = if s.machine_keyed() {
-                KeyPlan::Machine
-            } else {
-                KeyPlan::Minimal
-            };
-            (Member::Small(s), rational_key_work(plan, &size))
-        })
+        if !s.certify() {
+            return None;
+        }
+        if !s.machine_keyed() {
+            let patch = Member::Rational(s.to_patch().ok()?);
+            return Some((Err(patch), rational_key_work(KeyPlan::Minimal, &size)));
+        }
+        let text = s.into_key_text().ok()?;
+        let key = MachineKey {
+            digest: KeyDigest::of_text(&text),
+            text: texts.then_some(text),
+        };
+        Some((Ok(key), rational_key_work(KeyPlan::Machine, &size)))
     }
 }
 
@@ -147,7 +159,6 @@ impl Member {
 /// As [`key_plan`] (a tri patch, a weight ≤ 0).
 pub(crate) fn key_work(p: &Member) -> Result<u64, Error> {
     Ok(match p {
-        Member::Small(s) => key_work(&Member::Rational(s.to_patch()?))?,
         Member::Algebraic(p) => {
             let s = p.size();
             if s.field {
@@ -205,7 +216,6 @@ pub(crate) fn least_degree(p: &Member) -> Result<(Size, (usize, usize)), Error> 
         })
     };
     match p {
-        Member::Small(q) => rational(&q.to_patch()?),
         Member::Rational(q) => rational(q),
         Member::Algebraic(q) => {
             let s = q.size();
@@ -255,10 +265,13 @@ fn big_key_work(s: &Size) -> u64 {
 /// thread (so `--max-work` refuses at the same record whatever the thread
 /// count; the refusal names the 0-based index of that record, `first`
 /// being the chunk's first). The records are read and keyed on all cores,
-/// and their keys kept in `recent`. The error reported is that of the
-/// first failing record in input order, located.
-pub(crate) fn key_chunk<K: Clone + Send + Sync>(
+/// and their keys kept in `recent`; a line the fast reader keys as it reads
+/// it gets its [`MachineKey`] (with its text if `texts`) as its key. The
+/// error reported is that of the first failing record in input order,
+/// located.
+pub(crate) fn key_chunk<K: Clone + Send + Sync + From<MachineKey>>(
     what: &str,
+    texts: bool,
     first: usize,
     records: &[Record],
     recent: &mut RecentKeys<K>,
@@ -283,19 +296,20 @@ pub(crate) fn key_chunk<K: Clone + Send + Sync>(
         })
         .collect();
     let command_limits = limits::current();
-    let read: Vec<Result<(Member, u64), Error>> = fresh
+    // Each fresh record's key (keyed as read) or patch, and its work.
+    let read: Vec<Result<(Result<K, Member>, u64), Error>> = fresh
         .par_iter()
         .map(|&k| {
             let r = &records[k];
             // A worker's own limits are the defaults: the command's
             // (`--max-digits`) are this thread's.
             limits::with_limits(command_limits, || {
-                if let Some(fast) = Member::read_fast(r) {
-                    return Ok(fast);
+                if let Some((read, work)) = Member::read_fast(r, texts) {
+                    return Ok((read.map(K::from), work));
                 }
                 let p = Member::read(r)?;
                 let work = key_work(&p).map_err(|e| r.locate(e))?;
-                Ok((p, work))
+                Ok((Err(p), work))
             })
         })
         .collect();
@@ -311,7 +325,7 @@ pub(crate) fn key_chunk<K: Clone + Send + Sync>(
     let keyed: Vec<Result<K, Error>> = members
         .into_par_iter()
         .zip(&fresh)
-        .map(|(p, &k)| key(p).map_err(|e| records[k].locate(e)))
+        .map(|(p, &k)| p.or_else(|p| key(p).map_err(|e| records[k].locate(e))))
         .collect();
     let keyed = keyed.into_iter().collect::<Result<Vec<K>, Error>>()?;
     for (&k, key) in fresh.iter().zip(&keyed) {
@@ -508,9 +522,16 @@ mod tests {
     /// The key text of a member over Q (the pool has no other).
     fn text_of(p: Member) -> Result<String, Error> {
         match p {
-            Member::Small(s) => s.into_key_text(),
             Member::Rational(q) => canonical_text(&q),
             Member::Algebraic(_) => Err(Error::Domain("not a rational record".into())),
+        }
+    }
+
+    /// The text of a key the fast reader computed (kept: `keyed` asks for
+    /// the texts).
+    impl From<MachineKey> for String {
+        fn from(k: MachineKey) -> String {
+            k.text.unwrap_or_default()
         }
     }
 
@@ -533,7 +554,7 @@ mod tests {
             let mut recent = RecentKeys::new(log2);
             let mut keys = Vec::new();
             for (c, part) in records.chunks(chunk).enumerate() {
-                keys.extend(key_chunk("key", c * chunk, part, &mut recent, text_of).unwrap());
+                keys.extend(key_chunk("key", true, c * chunk, part, &mut recent, text_of).unwrap());
             }
             (keys, limits::charged())
         })
@@ -589,7 +610,7 @@ mod tests {
         fn the_fast_reader_charges_what_the_general_one_does(line in curve_line()) {
             let r = Record::Line(1, line);
             let general = key_work(&Member::read(&r).unwrap()).unwrap();
-            if let Some((_, fast)) = Member::read_fast(&r) {
+            if let Some((_, fast)) = Member::read_fast(&r, false) {
                 prop_assert_eq!(fast, general);
             }
         }

@@ -289,22 +289,18 @@ impl Cursor<'_> {
         if quoted {
             self.at += 1;
         }
-        let start = self.at;
-        let (p, q) = self.decimal(quoted)?;
+        let ((p, q), mut digits) = self.decimal(quoted)?;
         let (p, q) = if quoted && self.peek() == Some(b'/') {
             self.at += 1;
-            let (d, e) = self.decimal(true)?;
+            let ((d, e), more) = self.decimal(true)?;
             if d <= 0 {
                 return None;
             }
+            digits += more;
             (p.checked_mul(e)?, q.checked_mul(d)?)
         } else {
             (p, q)
         };
-        let digits = self.bytes[start..self.at]
-            .iter()
-            .filter(|b| b.is_ascii_digit())
-            .count();
         if digits as u64 > self.max_digits {
             return None;
         }
@@ -319,53 +315,78 @@ impl Cursor<'_> {
         (self.peek() == Some(b)).then(|| self.at += 1)
     }
 
-    /// `-?d+(.d+)?` as `(mantissa, 10^fraction digits)`; a JSON number
-    /// (`loose = false`) has no leading zero.
-    fn decimal(&mut self, loose: bool) -> Option<(i128, i128)> {
+    /// `-?d+(.d+)?` as `(mantissa, 10^fraction digits)` and its count of
+    /// digits, in one pass over its bytes; a JSON number (`loose = false`)
+    /// has no leading zero. `None` when the mantissa leaves `i128`.
+    fn decimal(&mut self, loose: bool) -> Option<((i128, i128), usize)> {
         let negative = self.peek() == Some(b'-');
         if negative {
             self.at += 1;
         }
         let start = self.at;
-        let whole = self.digits();
+        let mut mantissa = Mantissa::default();
+        let whole = self.digits_into(&mut mantissa)?;
         if whole == 0 || (!loose && whole > 1 && self.bytes[start] == b'0') {
             return None;
         }
         let mut frac = 0;
         if self.peek() == Some(b'.') {
             self.at += 1;
-            frac = self.digits();
+            frac = self.digits_into(&mut mantissa)?;
             if frac == 0 {
                 return None;
             }
         }
-        let mut mantissa: i128 = 0;
-        // Up to 18 digits on a 64-bit word (below 10¹⁸ < 2⁶³), the rest, if
-        // any, on 128 bits with overflow checks.
-        let mut word: u64 = 0;
-        let mut in_word = 0;
-        for &d in self.bytes[start..self.at]
-            .iter()
-            .filter(|b| b.is_ascii_digit())
-        {
-            if in_word < 18 {
-                word = 10 * word + u64::from(d - b'0');
-                in_word += 1;
-                continue;
-            }
-            if in_word == 18 {
-                mantissa = i128::from(word);
-                in_word += 1;
-            }
-            mantissa = mantissa
-                .checked_mul(10)?
-                .checked_add(i128::from(d - b'0'))?;
-        }
-        if in_word <= 18 {
-            mantissa = i128::from(word);
-        }
         let scale = 10i128.checked_pow(u32::try_from(frac).ok()?)?;
-        Some((if negative { -mantissa } else { mantissa }, scale))
+        let value = mantissa.value();
+        Some(((if negative { -value } else { value }, scale), whole + frac))
+    }
+
+    /// Take ASCII digits into `m`; how many (`None` when `m` leaves `i128`).
+    fn digits_into(&mut self, m: &mut Mantissa) -> Option<usize> {
+        let start = self.at;
+        while let Some(&b) = self.bytes.get(self.at) {
+            if !b.is_ascii_digit() {
+                break;
+            }
+            m.push(b - b'0')?;
+            self.at += 1;
+        }
+        Some(self.at - start)
+    }
+}
+
+/// The digits of a decimal's mantissa as read: the first 18 on a 64-bit
+/// word (below 10¹⁸ < 2⁶³), the rest, if any, on 128 bits with overflow
+/// checks.
+#[derive(Default)]
+struct Mantissa {
+    word: u64,
+    len: usize,
+    wide: i128,
+}
+
+impl Mantissa {
+    /// Append the digit `d`; `None` when the value leaves `i128`.
+    fn push(&mut self, d: u8) -> Option<()> {
+        if self.len < 18 {
+            self.word = 10 * self.word + u64::from(d);
+        } else {
+            if self.len == 18 {
+                self.wide = i128::from(self.word);
+            }
+            self.wide = self.wide.checked_mul(10)?.checked_add(i128::from(d))?;
+        }
+        self.len += 1;
+        Some(())
+    }
+
+    fn value(&self) -> i128 {
+        if self.len <= 18 {
+            i128::from(self.word)
+        } else {
+            self.wide
+        }
     }
 }
 

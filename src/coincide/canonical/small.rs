@@ -49,6 +49,9 @@ impl Small {
         if q <= 0 {
             return None;
         }
+        if q == 1 {
+            return Some(Small { p, q });
+        }
         let g = gcd_u128(p.unsigned_abs(), q.unsigned_abs()) as i128;
         Some(Small {
             p: div_exact(p, g),
@@ -63,8 +66,20 @@ impl Small {
         })
     }
 
-    /// The product, reduced by cross gcds; `None` on overflow.
+    /// The product, reduced by cross gcds; `None` on overflow. Integers
+    /// (`q = 1`, the common case) need no gcd, or one when only one is.
     fn mul(self, o: Small) -> Option<Small> {
+        match (self.q, o.q) {
+            (1, 1) => {
+                return Some(Small {
+                    p: self.p.checked_mul(o.p)?,
+                    q: 1,
+                })
+            }
+            (1, _) => return o.mul_integer(self.p),
+            (_, 1) => return self.mul_integer(o.p),
+            _ => {}
+        }
         if let Some(product) = self.mul_words(o) {
             return Some(product);
         }
@@ -73,6 +88,16 @@ impl Small {
         Some(Small {
             p: div_exact(self.p, g1).checked_mul(div_exact(o.p, g2))?,
             q: div_exact(self.q, g2).checked_mul(div_exact(o.q, g1))?,
+        })
+    }
+
+    /// `self · a` for an integer `a`: `(p/q)·a = p(a/g) / (q/g)` with
+    /// `g = gcd(a, q)`, in lowest terms; `None` on overflow.
+    fn mul_integer(self, a: i128) -> Option<Small> {
+        let g = gcd_u128(a.unsigned_abs(), self.q.unsigned_abs()) as i128;
+        Some(Small {
+            p: self.p.checked_mul(div_exact(a, g))?,
+            q: div_exact(self.q, g),
         })
     }
 
@@ -574,10 +599,12 @@ mod tests {
         ]
     }
 
+    /// Fractions, a third of them integers (the products' shortcuts).
     fn fraction() -> impl Strategy<Value = Small> {
-        (integer(), integer()).prop_filter_map("q > 0", |(p, q)| {
+        let ratio = (integer(), integer()).prop_filter_map("q > 0", |(p, q)| {
             Small::reduced((p, q.checked_abs()?.max(1)))
-        })
+        });
+        prop_oneof![2 => ratio, 1 => integer().prop_map(|p| Small { p, q: 1 })]
     }
 
     /// A bicubic or curve of small machine fractions, positive weights.
