@@ -127,22 +127,26 @@ impl Member {
     /// same patch read by [`Member::read`]: [`SmallPatch::certify`](exact_bezier::coincide::canonical::SmallPatch::certify) has run
     /// the machine-integer key text, which decides the [`KeyPlan`] as
     /// [`key_plan`] does.
+    /// A net with a homogeneous number outside `i128` (no
+    /// [`SmallPatch::size`](exact_bezier::coincide::canonical::SmallPatch::size))
+    /// goes to the general reader; the bits of the size are counted only
+    /// when they are charged ([`KeyPlan::Minimal`]).
     fn read_fast(r: &Record, texts: bool) -> Option<(Result<MachineKey, Member>, u64)> {
         let mut s = r.small_patch()?;
-        let size = s.size()?;
-        if !s.certify() {
+        if !s.homogeneous_fits() || !s.certify() {
             return None;
         }
         if !s.machine_keyed() {
-            let patch = Member::Rational(s.to_patch().ok()?);
-            return Some((Err(patch), rational_key_work(KeyPlan::Minimal, &size)));
+            let work = rational_key_work(KeyPlan::Minimal, &s.size()?);
+            return Some((Err(Member::Rational(s.to_patch().ok()?)), work));
         }
+        let work = machine_key_work(s.degree(), s.dim());
         let text = s.into_key_text().ok()?;
         let key = MachineKey {
             digest: KeyDigest::of_text(&text),
             text: texts.then_some(text),
         };
-        Some((Ok(key), rational_key_work(KeyPlan::Machine, &size)))
+        Some((Ok(key), work))
     }
 }
 
@@ -185,8 +189,10 @@ fn rational_key_work(plan: KeyPlan, size: &Size) -> u64 {
         s.exact_units(ops, bits)
     };
     match plan {
-        KeyPlan::Machine => machine_key_work(size),
-        KeyPlan::Minimal => machine_key_work(size).saturating_add(big_key_work(size)),
+        KeyPlan::Machine => machine_key_work(size.degree, size.dim),
+        KeyPlan::Minimal => {
+            machine_key_work(size.degree, size.dim).saturating_add(big_key_work(size))
+        }
         KeyPlan::General => coincide(size),
         KeyPlan::Elevated(to) => {
             let lower = Size {
@@ -197,7 +203,7 @@ fn rational_key_work(plan: KeyPlan, size: &Size) -> u64 {
                 * (size.degree.1 as u64 + 1)
                 * (lower.total_degree() + 2)
                 * (size.dim as u64 + 1);
-            modp_work(size)
+            modp_work(size.degree, size.dim)
                 .saturating_add(limits::exact_work(undo, size.bits))
                 .saturating_add(coincide(&lower))
         }
@@ -224,11 +230,11 @@ pub(crate) fn least_degree(p: &Member) -> Result<(Size, (usize, usize)), Error> 
     }
 }
 
-/// The change of basis modulo p that certifies a net of size `s`:
-/// `(m+1)(n+1)(m+n+2)(d+1)` word operations.
-fn modp_work(s: &Size) -> u64 {
-    let (m1, n1) = (s.degree.0 as u64 + 1, s.degree.1 as u64 + 1);
-    m1 * n1 * (m1 + n1) * (s.dim as u64 + 1)
+/// The change of basis modulo p that certifies a net of (bi)degree
+/// `(m, n)` in dimension `d`: `(m+1)(n+1)(m+n+2)(d+1)` word operations.
+fn modp_work((m, n): (usize, usize), dim: usize) -> u64 {
+    let (m1, n1) = (m as u64 + 1, n as u64 + 1);
+    m1 * n1 * (m1 + n1) * (dim as u64 + 1)
 }
 
 /// Work units of one machine-integer operation of the key (reading a
@@ -237,13 +243,14 @@ fn modp_work(s: &Size) -> u64 {
 /// `cli/benches/cost_model.rs`.
 const MACHINE_OPS_PER_NUMBER: u64 = 48;
 
-/// The work of the key of a certified minimal net of size `s` whose numbers
-/// stay in machine integers: the change of basis modulo p
-/// ([`modp_work`]) and [`MACHINE_OPS_PER_NUMBER`] per stored number
-/// (`(m+1)(n+1)(d+1)` of them), whatever their bits (at most 127 each).
-fn machine_key_work(s: &Size) -> u64 {
-    let numbers = (s.degree.0 as u64 + 1) * (s.degree.1 as u64 + 1) * (s.dim as u64 + 1);
-    modp_work(s).saturating_add(MACHINE_OPS_PER_NUMBER.saturating_mul(numbers))
+/// The work of the key of a certified minimal net of (bi)degree `(m, n)`
+/// in dimension `d` whose numbers stay in machine integers: the change of
+/// basis modulo p ([`modp_work`]) and [`MACHINE_OPS_PER_NUMBER`] per stored
+/// number (`(m+1)(n+1)(d+1)` of them), whatever their bits (at most 127
+/// each).
+fn machine_key_work((m, n): (usize, usize), dim: usize) -> u64 {
+    let numbers = (m as u64 + 1) * (n as u64 + 1) * (dim as u64 + 1);
+    modp_work((m, n), dim).saturating_add(MACHINE_OPS_PER_NUMBER.saturating_mul(numbers))
 }
 
 /// The work of the key of a certified minimal net of size `s` over

@@ -120,6 +120,13 @@ impl Small {
         })
     }
 
+    /// Whether the product fits `i128` ([`mul`](Small::mul) is not
+    /// `None`), decided without a gcd when the unreduced one fits.
+    fn product_fits(self, o: Small) -> bool {
+        let unreduced = self.p.checked_mul(o.p).is_some() && self.q.checked_mul(o.q).is_some();
+        unreduced || self.mul(o).is_some()
+    }
+
     /// `1/self` for `self > 0`.
     fn recip_positive(self) -> Small {
         Small {
@@ -157,6 +164,11 @@ fn push_int(out: &mut String, v: i128) {
     };
     if v < 0 {
         out.push('-');
+    }
+    if u < 10 {
+        // One digit (common: coordinates and invariants of small nets).
+        out.push(char::from(b'0' + u as u8));
+        return;
     }
     let mut digits = [0u8; 20];
     let mut at = digits.len();
@@ -434,6 +446,27 @@ impl SmallPatch {
         })
     }
 
+    /// The (bi)degree: `(n, 0)` for a curve.
+    pub fn degree(&self) -> (usize, usize) {
+        self.shape
+    }
+
+    /// Coordinates per point (Cartesian).
+    pub fn dim(&self) -> usize {
+        self.dim
+    }
+
+    /// Whether every homogeneous number `x·ω` of the net fits `i128`
+    /// ([`size`](SmallPatch::size) is not `None`), decided without the
+    /// gcds of the bit count: an unreduced product that fits decides.
+    pub fn homogeneous_fits(&self) -> bool {
+        let points = self.coords.chunks_exact(self.dim);
+        self.weights
+            .iter()
+            .zip(points)
+            .all(|(&w, x)| x.iter().all(|&c| c.product_fits(w)))
+    }
+
     /// The size the cost model charges ([`Patch::size`](crate::Patch::size)
     /// of [`to_patch`](SmallPatch::to_patch)); `None` when a homogeneous
     /// number leaves `i128`.
@@ -645,6 +678,18 @@ mod tests {
                 Some(x) => prop_assert_eq!(big(x), exact),
                 None => prop_assert!(Small::of(&exact).is_none()),
             }
+        }
+
+        #[test]
+        fn homogeneous_numbers_fit_when_the_size_is_known(
+            coords in prop::collection::vec(fraction(), 3),
+            weights in prop::collection::vec(fraction(), 3),
+        ) {
+            let pair = |x: &Small| (x.p, x.q);
+            let coords: Vec<_> = coords.iter().map(pair).collect();
+            let weights: Vec<_> = weights.iter().map(|w| (w.p.checked_abs().unwrap_or(1).max(1), w.q)).collect();
+            let s = SmallPatch::new(true, (2, 0), 1, &coords, &weights).unwrap();
+            prop_assert_eq!(s.homogeneous_fits(), s.size().is_some());
         }
 
         #[test]
