@@ -15,6 +15,13 @@
 
 use crate::coincide::canonical::SmallPatch;
 use crate::limits::{self, MAX_DEGREE, MAX_DIMENSION};
+use std::cell::RefCell;
+
+thread_local! {
+    /// The grids of the points and of the weights of the line being read,
+    /// reused across the lines a thread reads (no allocation per line).
+    static GRIDS: RefCell<Grids> = RefCell::default();
+}
 
 /// The patch of one JSON line of the plain shape, or `None` (then the
 /// general reader decides).
@@ -27,17 +34,33 @@ use crate::limits::{self, MAX_DEGREE, MAX_DIMENSION};
 /// assert!(read_small_patch(r#"{"kind": "curve", "points": [[1e3]]}"#).is_none());
 /// ```
 pub fn read_small_patch(line: &str) -> Option<SmallPatch> {
+    GRIDS.with(|kept| match kept.try_borrow_mut() {
+        Ok(mut grids) => read_with(line, &mut grids),
+        // Not reached (reading does not read again), but never a panic.
+        Err(_) => read_with(line, &mut Grids::default()),
+    })
+}
+
+/// [`read_small_patch`] with `grids` to read the numbers into.
+fn read_with(line: &str, grids: &mut Grids) -> Option<SmallPatch> {
     let mut c = Cursor {
         bytes: line.as_bytes(),
         at: 0,
         max_digits: limits::current().max_digits,
     };
-    let fields = c.object()?;
+    let fields = c.object(grids)?;
     c.skip_space();
     if c.at != c.bytes.len() {
         return None;
     }
-    fields.patch()
+    fields.patch(grids)
+}
+
+/// The points' and the weights' grids of one line.
+#[derive(Default)]
+struct Grids {
+    points: Grid,
+    weights: Grid,
 }
 
 /// Nested arrays of numbers as read: the numbers in order and the length
@@ -56,20 +79,25 @@ enum Degree {
     Two(usize, usize),
 }
 
-/// The fields of the object.
+/// The fields of the object; whether the points and the weights were
+/// read (into [`Grids`]).
 #[derive(Default)]
 struct Fields {
     curve: Option<bool>,
     degree: Option<Degree>,
-    points: Option<Grid>,
-    weights: Option<Grid>,
+    points: bool,
+    weights: bool,
 }
 
 impl Fields {
-    /// The patch the fields describe, if they are consistent.
-    fn patch(self) -> Option<SmallPatch> {
+    /// The patch the fields describe (their numbers in `grids`), if they
+    /// are consistent.
+    fn patch(self, grids: &mut Grids) -> Option<SmallPatch> {
         let curve = self.curve?;
-        let points = self.points?;
+        if !self.points {
+            return None;
+        }
+        let points = &grids.points;
         let depth = if curve { 2 } else { 3 };
         if points.lens.len() != depth {
             return None;
@@ -89,24 +117,25 @@ impl Fields {
             (Some(Degree::Two(m, n)), false) => (m, n) == shape,
             _ => false,
         };
-        let weights = match self.weights {
-            None => vec![(1, 1); (shape.0 + 1) * (shape.1 + 1)],
-            Some(w) => {
-                let shape_of_weights = if curve {
-                    vec![Some(shape.0 + 1)]
-                } else {
-                    vec![Some(shape.1 + 1), Some(shape.0 + 1)]
-                };
-                if w.lens != shape_of_weights {
-                    return None;
-                }
-                w.numbers
+        let weights = &mut grids.weights;
+        if self.weights {
+            let shape_of_weights: &[Option<usize>] = if curve {
+                &[Some(shape.0 + 1)]
+            } else {
+                &[Some(shape.1 + 1), Some(shape.0 + 1)]
+            };
+            if weights.lens != shape_of_weights {
+                return None;
             }
-        };
+        } else {
+            weights.numbers.clear();
+            let count = (shape.0 + 1) * (shape.1 + 1);
+            weights.numbers.resize(count, (1, 1));
+        }
         if !declared_ok {
             return None;
         }
-        SmallPatch::new(curve, shape, dim, &points.numbers, &weights)
+        SmallPatch::new(curve, shape, dim, &points.numbers, &weights.numbers)
     }
 }
 
@@ -155,8 +184,9 @@ impl Cursor<'_> {
         Some(&self.bytes[start..self.at - 1])
     }
 
-    /// The object's fields; `None` on another or a repeated field.
-    fn object(&mut self) -> Option<Fields> {
+    /// The object's fields, their numbers read into `grids`; `None` on
+    /// another or a repeated field.
+    fn object(&mut self, grids: &mut Grids) -> Option<Fields> {
         self.expect(b'{')?;
         let mut f = Fields::default();
         loop {
@@ -174,12 +204,12 @@ impl Cursor<'_> {
                     f.degree.replace(d).is_some()
                 }
                 b"points" => {
-                    let g = self.colon()?.grid()?;
-                    f.points.replace(g).is_some()
+                    self.colon()?.grid(&mut grids.points)?;
+                    std::mem::replace(&mut f.points, true)
                 }
                 b"weights" => {
-                    let g = self.colon()?.grid()?;
-                    f.weights.replace(g).is_some()
+                    self.colon()?.grid(&mut grids.weights)?;
+                    std::mem::replace(&mut f.weights, true)
                 }
                 _ => return None,
             };
@@ -231,15 +261,11 @@ impl Cursor<'_> {
     }
 
     /// Nested non-empty arrays of numbers, every array at one depth of the
-    /// same length, at most 3 deep.
-    fn grid(&mut self) -> Option<Grid> {
-        let mut g = Grid {
-            // A bicubic's points in 3D: one allocation, no regrowth.
-            numbers: Vec::with_capacity(64),
-            lens: Vec::with_capacity(3),
-        };
-        self.array(&mut g, 0)?;
-        Some(g)
+    /// same length, at most 3 deep, read into `g` (emptied first).
+    fn grid(&mut self, g: &mut Grid) -> Option<()> {
+        g.numbers.clear();
+        g.lens.clear();
+        self.array(g, 0).map(|_| ())
     }
 
     /// One array at nesting `level` (0 outermost) into `g`; the depth of

@@ -32,6 +32,20 @@ struct Small {
     q: i128,
 }
 
+/// `v` as a 64-bit word, if it fits one.
+fn word(v: i128) -> Option<i64> {
+    i64::try_from(v).ok()
+}
+
+/// `a · b`, on one 64-bit product when both fit words (then it cannot
+/// overflow `i128`); `None` on overflow.
+fn checked_mul(a: i128, b: i128) -> Option<i128> {
+    match (word(a), word(b)) {
+        (Some(x), Some(y)) => Some(i128::from(x) * i128::from(y)),
+        _ => a.checked_mul(b),
+    }
+}
+
 /// `a / g` for a divisor `g > 0` of `a`, on 64-bit words when `a` fits.
 fn div_exact(a: i128, g: i128) -> i128 {
     match (g, i64::try_from(a), i64::try_from(g)) {
@@ -72,7 +86,7 @@ impl Small {
         match (self.q, o.q) {
             (1, 1) => {
                 return Some(Small {
-                    p: self.p.checked_mul(o.p)?,
+                    p: checked_mul(self.p, o.p)?,
                     q: 1,
                 })
             }
@@ -96,7 +110,7 @@ impl Small {
     fn mul_integer(self, a: i128) -> Option<Small> {
         let g = gcd_u128(a.unsigned_abs(), self.q.unsigned_abs()) as i128;
         Some(Small {
-            p: self.p.checked_mul(div_exact(a, g))?,
+            p: checked_mul(self.p, div_exact(a, g))?,
             q: div_exact(self.q, g),
         })
     }
@@ -105,7 +119,6 @@ impl Small {
     /// common case): gcds and quotients on words, and products of two words
     /// cannot overflow `i128`. `None` when they do not fit.
     fn mul_words(self, o: Small) -> Option<Small> {
-        let word = |v: i128| i64::try_from(v).ok();
         let (a, b, c, d) = (word(self.p)?, word(self.q)?, word(o.p)?, word(o.q)?);
         let gcd =
             |x: i64, y: i64| gcd_u128(x.unsigned_abs().into(), y.unsigned_abs().into()) as i64;
@@ -123,7 +136,7 @@ impl Small {
     /// Whether the product fits `i128` ([`mul`](Small::mul) is not
     /// `None`), decided without a gcd when the unreduced one fits.
     fn product_fits(self, o: Small) -> bool {
-        let unreduced = self.p.checked_mul(o.p).is_some() && self.q.checked_mul(o.q).is_some();
+        let unreduced = checked_mul(self.p, o.p).is_some() && checked_mul(self.q, o.q).is_some();
         unreduced || self.mul(o).is_some()
     }
 
