@@ -513,7 +513,7 @@ impl SmallPatch {
         let shape = (self.shape.0, self.shape.1);
         let certified = self
             .homogeneous_mod_p()
-            .is_some_and(|image| FpGrids::from_bernstein(image, self.dim + 1, shape).certified());
+            .is_some_and(|image| FpGrids::new(image, self.dim + 1, shape).bernstein_certified());
         if certified {
             self.text = split_key_text(&self.split(), self.curve);
         }
