@@ -4,7 +4,7 @@
 use crate::recent::{RecentKeys, RecordHash};
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::algebra::Scalar;
-use exact_bezier::coincide::canonical::{key_plan, KeyDigest, KeyPlan};
+use exact_bezier::coincide::canonical::{key_plan, DigestHasher, KeyDigest, KeyPlan};
 use exact_bezier::io::{for_each_chunk, Record};
 use exact_bezier::limits::{self, Size};
 use exact_bezier::patch::Patch;
@@ -13,6 +13,7 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle, TermLike};
 use num_rational::BigRational;
 use rayon::prelude::*;
 use std::collections::HashMap;
+use std::hash::BuildHasherDefault;
 use std::io::{BufRead, BufReader, IsTerminal, Read, Write};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
@@ -290,7 +291,9 @@ pub(crate) fn key_chunk<K: Clone + Send + Sync + From<MachineKey>>(
         .collect();
     // Each record's key: one `recent` holds, or that of a fresh record.
     let mut fresh = Vec::new();
-    let mut in_chunk = HashMap::new();
+    // Keyed by SHA-256 digests: their first bytes are hash enough.
+    let mut in_chunk: HashMap<RecordHash, usize, BuildHasherDefault<DigestHasher>> =
+        HashMap::default();
     let source: Vec<Result<K, usize>> = hashes
         .iter()
         .enumerate()

@@ -101,8 +101,10 @@ impl FpGrids {
         let (m, n) = (self.m, self.n);
         let (u0, v0) = (Fp::new(PROBE_U), Fp::new(PROBE_V));
         with_pascal(m.max(n), |pascal| {
-            let top_u = |c: usize, q: usize| top_difference((0..=m).map(|p| self.at(c, p, q)), &pascal[m]);
-            let top_v = |c: usize, p: usize| top_difference(self.row(c, p).iter().copied(), &pascal[n]);
+            let top_u =
+                |c: usize, q: usize| top_difference((0..=m).map(|p| self.at(c, p, q)), &pascal[m]);
+            let top_v =
+                |c: usize, p: usize| top_difference(self.row(c, p).iter().copied(), &pascal[n]);
             let full_u = m == 0 || (0..self.comps).any(|c| (0..=n).any(|q| !top_u(c, q).is_zero()));
             let full_v = n == 0 || (0..self.comps).any(|c| (0..=m).any(|p| !top_v(c, p).is_zero()));
             if !(full_u && full_v) {

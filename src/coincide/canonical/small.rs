@@ -178,9 +178,12 @@ fn push_int(out: &mut String, v: i128) {
     if v < 0 {
         out.push('-');
     }
-    if u < 10 {
-        // One digit (common: coordinates and invariants of small nets).
-        out.push(char::from(b'0' + u as u8));
+    if u < 100 {
+        // One or two digits (common: coordinates and invariants of small nets).
+        if u >= 10 {
+            out.push(char::from(b'0' + (u / 10) as u8));
+        }
+        out.push(char::from(b'0' + (u % 10) as u8));
         return;
     }
     let mut digits = [0u8; 20];
@@ -738,6 +741,9 @@ mod tests {
             7,
             -7,
             10,
+            -42,
+            99,
+            100,
             i128::from(u64::MAX),
             -i128::from(u64::MAX),
             i128::from(u64::MAX) + 1,
