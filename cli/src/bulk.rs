@@ -85,8 +85,9 @@ impl BulkArgs {
 }
 
 /// The key of a line of the plain shape that the fast reader keyed in
-/// machine integers as it read it ([`SmallPatch::certify`](exact_bezier::coincide::canonical::SmallPatch::certify)): the digest of
-/// its key text, and the text when the command prints it.
+/// machine integers as it read it
+/// ([`SmallPatch::certify`](exact_bezier::coincide::canonical::SmallPatch::certify)):
+/// the digest of its key text, and the text when the command prints it.
 #[derive(Clone)]
 pub(crate) struct MachineKey {
     pub digest: KeyDigest,
@@ -125,9 +126,11 @@ impl Member {
     /// whose net is certified minimal: the key when its text stays in
     /// machine integers ([`KeyPlan::Machine`]), else the patch over Q
     /// ([`KeyPlan::Minimal`]). The work is that [`key_work`] charges the
-    /// same patch read by [`Member::read`]: [`SmallPatch::certify`](exact_bezier::coincide::canonical::SmallPatch::certify) has run
-    /// the machine-integer key text, which decides the [`KeyPlan`] as
-    /// [`key_plan`] does.
+    /// same patch read by [`Member::read`]:
+    /// [`SmallPatch::certify`](exact_bezier::coincide::canonical::SmallPatch::certify)
+    /// has run the machine-integer key text, which decides the
+    /// [`KeyPlan`] as [`key_plan`] does.
+    ///
     /// A net with a homogeneous number outside `i128` (no
     /// [`SmallPatch::size`](exact_bezier::coincide::canonical::SmallPatch::size))
     /// goes to the general reader; the bits of the size are counted only
@@ -266,6 +269,10 @@ fn big_key_work(s: &Size) -> u64 {
     )
 }
 
+/// A fresh record of [`key_chunk`] as read: its key (when the fast reader
+/// keyed it) or its patch, and its key work.
+type Fresh<K> = (Result<K, Member>, u64);
+
 /// `key` on every record of a chunk, results in input order: a record
 /// whose text the chunk has already had, or `recent` still holds, is not
 /// keyed again ([`RecentKeys`]); every other record is first charged its
@@ -306,8 +313,7 @@ pub(crate) fn key_chunk<K: Clone + Send + Sync + From<MachineKey>>(
         })
         .collect();
     let command_limits = limits::current();
-    // Each fresh record's key (keyed as read) or patch, and its work.
-    let read: Vec<Result<(Result<K, Member>, u64), Error>> = fresh
+    let read: Vec<Result<Fresh<K>, Error>> = fresh
         .par_iter()
         .map(|&k| {
             let r = &records[k];
