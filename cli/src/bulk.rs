@@ -4,7 +4,7 @@
 use crate::recent::{RecentKeys, RecordHash};
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::algebra::Scalar;
-use exact_bezier::coincide::canonical::{key_plan, KeyDigest, KeyPlan, SmallPatch};
+use exact_bezier::coincide::canonical::{key_plan, DigestHasher, KeyDigest, KeyPlan};
 use exact_bezier::io::{for_each_chunk, Record};
 use exact_bezier::limits::{self, Size};
 use exact_bezier::patch::Patch;
@@ -13,6 +13,7 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle, TermLike};
 use num_rational::BigRational;
 use rayon::prelude::*;
 use std::collections::HashMap;
+use std::hash::BuildHasherDefault;
 use std::io::{BufRead, BufReader, IsTerminal, Read, Write};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
@@ -83,13 +84,19 @@ impl BulkArgs {
     }
 }
 
+/// The key of a line of the plain shape that the fast reader keyed in
+/// machine integers as it read it
+/// ([`SmallPatch::certify`](exact_bezier::coincide::canonical::SmallPatch::certify)):
+/// the digest of its key text, and the text when the command prints it.
+#[derive(Clone)]
+pub(crate) struct MachineKey {
+    pub digest: KeyDigest,
+    pub text: Option<String>,
+}
+
 /// The patch of one record: over Q when its numbers are all rational (and
 /// for NURBS objects), else over the real algebraic numbers.
 pub(crate) enum Member {
-    /// A line of the plain shape read by the fast reader, its net
-    /// certified minimal ([`SmallPatch::certify`]): keyed in machine
-    /// integers.
-    Small(SmallPatch),
     /// Every number rational.
     Rational(Patch<BigRational>),
     /// Some number algebraic and irrational (`"sqrt(6)/6"`).
@@ -109,28 +116,41 @@ impl Member {
     /// The patch over the real algebraic numbers (a rational one lifted).
     pub(crate) fn algebraic(&self) -> Result<Patch<RealAlgebraic>, Error> {
         Ok(match self {
-            Member::Small(s) => s.to_patch()?.map(RealAlgebraic::from_rational),
             Member::Rational(p) => p.map(RealAlgebraic::from_rational),
             Member::Algebraic(p) => p.clone(),
         })
     }
 
-    /// The patch and key work of `r` by the fast reader when it is a line
-    /// of the plain shape whose net is certified minimal (then the work is
-    /// that [`key_work`] charges the same patch read by [`Member::read`]:
-    /// [`SmallPatch::certify`] has run the machine-integer key text, which
-    /// decides the [`KeyPlan`] as [`key_plan`] does).
-    fn read_fast(r: &Record) -> Option<(Member, u64)> {
+    /// The key work of `r` and its key (text kept if `texts`) or its
+    /// patch, by the fast reader, when it is a line of the plain shape
+    /// whose net is certified minimal: the key when its text stays in
+    /// machine integers ([`KeyPlan::Machine`]), else the patch over Q
+    /// ([`KeyPlan::Minimal`]). The work is that [`key_work`] charges the
+    /// same patch read by [`Member::read`]:
+    /// [`SmallPatch::certify`](exact_bezier::coincide::canonical::SmallPatch::certify)
+    /// has run the machine-integer key text, which decides the
+    /// [`KeyPlan`] as [`key_plan`] does.
+    ///
+    /// A net with a homogeneous number outside `i128` (no
+    /// [`SmallPatch::size`](exact_bezier::coincide::canonical::SmallPatch::size))
+    /// goes to the general reader; the bits of the size are counted only
+    /// when they are charged ([`KeyPlan::Minimal`]).
+    fn read_fast(r: &Record, texts: bool) -> Option<(Result<MachineKey, Member>, u64)> {
         let mut s = r.small_patch()?;
-        let size = s.size()?;
-        s.certify().then(|| {
-            let plan = if s.machine_keyed() {
-                KeyPlan::Machine
-            } else {
-                KeyPlan::Minimal
-            };
-            (Member::Small(s), rational_key_work(plan, &size))
-        })
+        if !s.homogeneous_fits() || !s.certify() {
+            return None;
+        }
+        if !s.machine_keyed() {
+            let work = rational_key_work(KeyPlan::Minimal, &s.size()?);
+            return Some((Err(Member::Rational(s.to_patch().ok()?)), work));
+        }
+        let work = machine_key_work(s.degree(), s.dim());
+        let text = s.into_key_text().ok()?;
+        let key = MachineKey {
+            digest: KeyDigest::of_text(&text),
+            text: texts.then_some(text),
+        };
+        Some((Ok(key), work))
     }
 }
 
@@ -147,7 +167,6 @@ impl Member {
 /// As [`key_plan`] (a tri patch, a weight ≤ 0).
 pub(crate) fn key_work(p: &Member) -> Result<u64, Error> {
     Ok(match p {
-        Member::Small(s) => key_work(&Member::Rational(s.to_patch()?))?,
         Member::Algebraic(p) => {
             let s = p.size();
             if s.field {
@@ -174,8 +193,10 @@ fn rational_key_work(plan: KeyPlan, size: &Size) -> u64 {
         s.exact_units(ops, bits)
     };
     match plan {
-        KeyPlan::Machine => machine_key_work(size),
-        KeyPlan::Minimal => machine_key_work(size).saturating_add(big_key_work(size)),
+        KeyPlan::Machine => machine_key_work(size.degree, size.dim),
+        KeyPlan::Minimal => {
+            machine_key_work(size.degree, size.dim).saturating_add(big_key_work(size))
+        }
         KeyPlan::General => coincide(size),
         KeyPlan::Elevated(to) => {
             let lower = Size {
@@ -186,7 +207,7 @@ fn rational_key_work(plan: KeyPlan, size: &Size) -> u64 {
                 * (size.degree.1 as u64 + 1)
                 * (lower.total_degree() + 2)
                 * (size.dim as u64 + 1);
-            modp_work(size)
+            modp_work(size.degree, size.dim)
                 .saturating_add(limits::exact_work(undo, size.bits))
                 .saturating_add(coincide(&lower))
         }
@@ -205,7 +226,6 @@ pub(crate) fn least_degree(p: &Member) -> Result<(Size, (usize, usize)), Error> 
         })
     };
     match p {
-        Member::Small(q) => rational(&q.to_patch()?),
         Member::Rational(q) => rational(q),
         Member::Algebraic(q) => {
             let s = q.size();
@@ -214,11 +234,11 @@ pub(crate) fn least_degree(p: &Member) -> Result<(Size, (usize, usize)), Error> 
     }
 }
 
-/// The change of basis modulo p that certifies a net of size `s`:
-/// `(m+1)(n+1)(m+n+2)(d+1)` word operations.
-fn modp_work(s: &Size) -> u64 {
-    let (m1, n1) = (s.degree.0 as u64 + 1, s.degree.1 as u64 + 1);
-    m1 * n1 * (m1 + n1) * (s.dim as u64 + 1)
+/// The change of basis modulo p that certifies a net of (bi)degree
+/// `(m, n)` in dimension `d`: `(m+1)(n+1)(m+n+2)(d+1)` word operations.
+fn modp_work((m, n): (usize, usize), dim: usize) -> u64 {
+    let (m1, n1) = (m as u64 + 1, n as u64 + 1);
+    m1 * n1 * (m1 + n1) * (dim as u64 + 1)
 }
 
 /// Work units of one machine-integer operation of the key (reading a
@@ -227,13 +247,14 @@ fn modp_work(s: &Size) -> u64 {
 /// `cli/benches/cost_model.rs`.
 const MACHINE_OPS_PER_NUMBER: u64 = 48;
 
-/// The work of the key of a certified minimal net of size `s` whose numbers
-/// stay in machine integers: the change of basis modulo p
-/// ([`modp_work`]) and [`MACHINE_OPS_PER_NUMBER`] per stored number
-/// (`(m+1)(n+1)(d+1)` of them), whatever their bits (at most 127 each).
-fn machine_key_work(s: &Size) -> u64 {
-    let numbers = (s.degree.0 as u64 + 1) * (s.degree.1 as u64 + 1) * (s.dim as u64 + 1);
-    modp_work(s).saturating_add(MACHINE_OPS_PER_NUMBER.saturating_mul(numbers))
+/// The work of the key of a certified minimal net of (bi)degree `(m, n)`
+/// in dimension `d` whose numbers stay in machine integers: the change of
+/// basis modulo p ([`modp_work`]) and [`MACHINE_OPS_PER_NUMBER`] per stored
+/// number (`(m+1)(n+1)(d+1)` of them), whatever their bits (at most 127
+/// each).
+fn machine_key_work((m, n): (usize, usize), dim: usize) -> u64 {
+    let numbers = (m as u64 + 1) * (n as u64 + 1) * (dim as u64 + 1);
+    modp_work((m, n), dim).saturating_add(MACHINE_OPS_PER_NUMBER.saturating_mul(numbers))
 }
 
 /// The work of the key of a certified minimal net of size `s` over
@@ -248,6 +269,10 @@ fn big_key_work(s: &Size) -> u64 {
     )
 }
 
+/// A fresh record of [`key_chunk`] as read: its key (when the fast reader
+/// keyed it) or its patch, and its key work.
+type Fresh<K> = (Result<K, Member>, u64);
+
 /// `key` on every record of a chunk, results in input order: a record
 /// whose text the chunk has already had, or `recent` still holds, is not
 /// keyed again ([`RecentKeys`]); every other record is first charged its
@@ -255,10 +280,13 @@ fn big_key_work(s: &Size) -> u64 {
 /// thread (so `--max-work` refuses at the same record whatever the thread
 /// count; the refusal names the 0-based index of that record, `first`
 /// being the chunk's first). The records are read and keyed on all cores,
-/// and their keys kept in `recent`. The error reported is that of the
-/// first failing record in input order, located.
-pub(crate) fn key_chunk<K: Clone + Send + Sync>(
+/// and their keys kept in `recent`; a line the fast reader keys as it reads
+/// it gets its [`MachineKey`] (with its text if `texts`) as its key. The
+/// error reported is that of the first failing record in input order,
+/// located.
+pub(crate) fn key_chunk<K: Clone + Send + Sync + From<MachineKey>>(
     what: &str,
+    texts: bool,
     first: usize,
     records: &[Record],
     recent: &mut RecentKeys<K>,
@@ -270,7 +298,9 @@ pub(crate) fn key_chunk<K: Clone + Send + Sync>(
         .collect();
     // Each record's key: one `recent` holds, or that of a fresh record.
     let mut fresh = Vec::new();
-    let mut in_chunk = HashMap::new();
+    // Keyed by SHA-256 digests: their first bytes are hash enough.
+    let mut in_chunk: HashMap<RecordHash, usize, BuildHasherDefault<DigestHasher>> =
+        HashMap::default();
     let source: Vec<Result<K, usize>> = hashes
         .iter()
         .enumerate()
@@ -283,19 +313,19 @@ pub(crate) fn key_chunk<K: Clone + Send + Sync>(
         })
         .collect();
     let command_limits = limits::current();
-    let read: Vec<Result<(Member, u64), Error>> = fresh
+    let read: Vec<Result<Fresh<K>, Error>> = fresh
         .par_iter()
         .map(|&k| {
             let r = &records[k];
             // A worker's own limits are the defaults: the command's
             // (`--max-digits`) are this thread's.
             limits::with_limits(command_limits, || {
-                if let Some(fast) = Member::read_fast(r) {
-                    return Ok(fast);
+                if let Some((read, work)) = Member::read_fast(r, texts) {
+                    return Ok((read.map(K::from), work));
                 }
                 let p = Member::read(r)?;
                 let work = key_work(&p).map_err(|e| r.locate(e))?;
-                Ok((p, work))
+                Ok((Err(p), work))
             })
         })
         .collect();
@@ -311,7 +341,7 @@ pub(crate) fn key_chunk<K: Clone + Send + Sync>(
     let keyed: Vec<Result<K, Error>> = members
         .into_par_iter()
         .zip(&fresh)
-        .map(|(p, &k)| key(p).map_err(|e| records[k].locate(e)))
+        .map(|(p, &k)| p.or_else(|p| key(p).map_err(|e| records[k].locate(e))))
         .collect();
     let keyed = keyed.into_iter().collect::<Result<Vec<K>, Error>>()?;
     for (&k, key) in fresh.iter().zip(&keyed) {
@@ -508,9 +538,16 @@ mod tests {
     /// The key text of a member over Q (the pool has no other).
     fn text_of(p: Member) -> Result<String, Error> {
         match p {
-            Member::Small(s) => s.into_key_text(),
             Member::Rational(q) => canonical_text(&q),
             Member::Algebraic(_) => Err(Error::Domain("not a rational record".into())),
+        }
+    }
+
+    /// The text of a key the fast reader computed (kept: `keyed` asks for
+    /// the texts).
+    impl From<MachineKey> for String {
+        fn from(k: MachineKey) -> String {
+            k.text.unwrap_or_default()
         }
     }
 
@@ -533,7 +570,7 @@ mod tests {
             let mut recent = RecentKeys::new(log2);
             let mut keys = Vec::new();
             for (c, part) in records.chunks(chunk).enumerate() {
-                keys.extend(key_chunk("key", c * chunk, part, &mut recent, text_of).unwrap());
+                keys.extend(key_chunk("key", true, c * chunk, part, &mut recent, text_of).unwrap());
             }
             (keys, limits::charged())
         })
@@ -589,7 +626,7 @@ mod tests {
         fn the_fast_reader_charges_what_the_general_one_does(line in curve_line()) {
             let r = Record::Line(1, line);
             let general = key_work(&Member::read(&r).unwrap()).unwrap();
-            if let Some((_, fast)) = Member::read_fast(&r) {
+            if let Some((_, fast)) = Member::read_fast(&r, false) {
                 prop_assert_eq!(fast, general);
             }
         }

@@ -16,7 +16,7 @@
 //! which re-checks every grouping exactly; it keeps each representative's
 //! text and each witness until the end.
 
-use super::bulk::{for_each_chunk_ahead, key_chunk, BulkArgs, Member, Out, Progress};
+use super::bulk::{for_each_chunk_ahead, key_chunk, BulkArgs, MachineKey, Member, Out, Progress};
 use crate::recent::{RecentKeys, RECENT_SLOTS_LOG2};
 use exact_bezier::algebra::RealAlgebraic;
 use exact_bezier::coincide::canonical::{
@@ -142,6 +142,12 @@ enum Keyed {
     Algebraic(CanonicalKey<RealAlgebraic>),
 }
 
+impl From<MachineKey> for Keyed {
+    fn from(k: MachineKey) -> Keyed {
+        Keyed::Digest(k.digest)
+    }
+}
+
 fn dedup(a: &Args) -> Result<(), Error> {
     let (reader, input) = a.bulk.open()?;
     let progress = Progress::new(&a.bulk, &input);
@@ -149,9 +155,8 @@ fn dedup(a: &Args) -> Result<(), Error> {
     let mut witnesses = a.witness.then(Witnesses::default);
     let mut recent = RecentKeys::new(RECENT_SLOTS_LOG2);
     for_each_chunk_ahead(reader, |first, records| {
-        let keyed = key_chunk("dedup", first, &records, &mut recent, |p| {
+        let keyed = key_chunk("dedup", false, first, &records, &mut recent, |p| {
             Ok(match &p {
-                Member::Small(s) => Keyed::Digest(KeyDigest::of_text(&s.key_text()?)),
                 Member::Rational(q) => Keyed::Digest(key_digest(q)?),
                 Member::Algebraic(q) => Keyed::Algebraic(canonical_key(q)?),
             })

@@ -4,7 +4,7 @@
 //! DuckDB, Spark, `sort`) gives the classes of `dedup`; see
 //! `docs/bulk_dedup.md`.
 
-use super::bulk::{for_each_chunk_ahead, key_chunk, BulkArgs, Member, Out, Progress};
+use super::bulk::{for_each_chunk_ahead, key_chunk, BulkArgs, MachineKey, Member, Out, Progress};
 use crate::recent::{RecentKeys, RECENT_SLOTS_LOG2};
 use exact_bezier::coincide::canonical::{canonical_key, canonical_text, KeyDigest};
 use exact_bezier::Error;
@@ -37,7 +37,6 @@ pub fn run(a: &Args) -> Result<(), Error> {
 /// `dedup`, which compares such keys exactly).
 fn member_text(p: Member) -> Result<String, Error> {
     match p {
-        Member::Small(s) => s.into_key_text(),
         Member::Rational(p) => canonical_text(&p),
         Member::Algebraic(p) => algebraic_text(&p),
     }
@@ -65,11 +64,14 @@ fn keys(a: &Args) -> Result<(), Error> {
     let mut done = 0;
     let mut recent = RecentKeys::new(RECENT_SLOTS_LOG2);
     let n = for_each_chunk_ahead(reader, |first, records| {
-        let lines = key_chunk("key", first, &records, &mut recent, |p| {
+        let lines = key_chunk("key", a.text, first, &records, &mut recent, |p| {
             let text = member_text(p)?;
-            Ok((KeyDigest::of_text(&text), a.text.then_some(text)))
+            Ok(MachineKey {
+                digest: KeyDigest::of_text(&text),
+                text: a.text.then_some(text),
+            })
         })?;
-        for (k, (digest, text)) in lines.into_iter().enumerate() {
+        for (k, MachineKey { digest, text }) in lines.into_iter().enumerate() {
             let index = a.first_index + (first + k) as u64;
             match text {
                 None => out.line_args(format_args!("{{\"index\":{index},\"key\":\"{digest}\"}}")),

@@ -416,10 +416,12 @@ pub fn key_digest(p: &Patch<BigRational>) -> Result<KeyDigest, Error> {
     canonical_text(p).map(|t| KeyDigest::of_text(&t))
 }
 
-/// Hashes a [`KeyDigest`] by its first 8 bytes: they are already uniform,
-/// so `SipHash` over all 32 would be wasted work.
+/// Hashes a [`KeyDigest`] (or any SHA-256 digest, `[u8; 32]`) by its
+/// first 8 bytes: they are already uniform, so `SipHash` over all 32 would
+/// be wasted work. For hash maps keyed by digests
+/// (`HashMap<KeyDigest, V, BuildHasherDefault<DigestHasher>>`).
 #[derive(Default)]
-struct DigestHasher(u64);
+pub struct DigestHasher(u64);
 
 impl Hasher for DigestHasher {
     fn finish(&self) -> u64 {

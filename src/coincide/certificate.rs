@@ -1,15 +1,20 @@
 //! The certificate modulo `p = 2⁶¹ − 1` that a net is of minimal bidegree
 //! ([`minimal`](super::minimal) explains why it is sound), on flat grids:
 //! the `C` homogeneous components of a net of bidegree `(m, n)` are one
-//! buffer of `C(m+1)(n+1)` residues, converted from the Bernstein to the
-//! power basis in place, line by line (by forward differences), and the coprimality test runs its
-//! pseudo-remainder sequence in two buffers. One allocation per grid and a
-//! few per test, where nested vectors took one per row, point and line
-//! (issue 31: the certificate runs on every record of `key` and `dedup`).
+//! buffer of `C(m+1)(n+1)` residues. The certificate reads the Bernstein
+//! coefficients directly ([`FpGrids::bernstein_certified`]: forward
+//! differences for the degree, the components specialized at a probe and
+//! converted to the power basis in one direction only); a grid converted
+//! to the power basis in place, line by line, by forward differences
+//! ([`FpGrids::into_power`]) gives the degree bound of an elevated net.
+//! The coprimality test runs its pseudo-remainder sequence in two buffers.
+//! One allocation per grid and a few per test, where nested vectors took
+//! one per row, point and line (issue 31: the certificate runs on every
+//! record of `key` and `dedup`).
 
 use crate::algebra::modp::{Fp, MODULUS};
 use crate::bernstein::binomial_rows;
-use num_traits::Zero;
+use num_traits::{One, Zero};
 use std::cell::RefCell;
 
 /// Fixed evaluation points in `Z/pZ` for the coprimality certificate.
@@ -61,12 +66,13 @@ impl FpGrids {
         FpGrids { data, comps, m, n }
     }
 
-    /// The grids of Bernstein coefficients `data` (laid out as above)
-    /// converted to the power basis in place: each row (in v), then each
-    /// column (in u), by [`bernstein_to_power_strided`] with the rows `n`
-    /// and `m` of Pascal's triangle.
-    pub(crate) fn from_bernstein(data: Vec<Fp>, comps: usize, (m, n): (usize, usize)) -> FpGrids {
-        let mut g = FpGrids::new(data, comps, (m, n));
+    /// These grids of Bernstein coefficients converted to the power basis
+    /// in place: each row (in v), then each column (in u), by
+    /// [`bernstein_to_power_strided`] with the rows `n` and `m` of
+    /// Pascal's triangle.
+    pub(crate) fn into_power(mut self) -> FpGrids {
+        let (m, n) = (self.m, self.n);
+        let g = &mut self;
         with_pascal(m.max(n), |pascal| {
             for row in g.data.chunks_exact_mut(n + 1) {
                 bernstein_to_power_strided(row, 1, &pascal[n]);
@@ -77,7 +83,43 @@ impl FpGrids {
                 }
             }
         });
-        g
+        self
+    }
+
+    /// On grids of Bernstein coefficients: the certificate of minimal
+    /// bidegree, the same answer as the test on the power grids
+    /// ([`into_power`](FpGrids::into_power): the actual bidegree is the full
+    /// `(m, n)` and [`coprime`](FpGrids::coprime) holds; property-tested)
+    /// for about half the work (no change of basis of the whole grid). The power coefficients
+    /// of `u^m` form the polynomial in v whose Bernstein coefficients are
+    /// the m-th forward differences of the columns (the change of basis in
+    /// v is invertible mod p, `n < p`), so the u-degree is m when one of
+    /// them is non-zero; and a component specialized at `v = v₀` is its
+    /// Bernstein rows evaluated at `v₀` (`Σ_q b_{p,q} B_{q,n}(v₀)`), then
+    /// converted to the power basis in u alone. Likewise in v.
+    pub(crate) fn bernstein_certified(&self) -> bool {
+        let (m, n) = (self.m, self.n);
+        let (u0, v0) = (Fp::new(PROBE_U), Fp::new(PROBE_V));
+        with_pascal(m.max(n), |pascal| {
+            let top_u =
+                |c: usize, q: usize| top_difference((0..=m).map(|p| self.at(c, p, q)), &pascal[m]);
+            let top_v =
+                |c: usize, p: usize| top_difference(self.row(c, p).iter().copied(), &pascal[n]);
+            let full_u = m == 0 || (0..self.comps).any(|c| (0..=n).any(|q| !top_u(c, q).is_zero()));
+            let full_v = n == 0 || (0..self.comps).any(|c| (0..=m).any(|p| !top_v(c, p).is_zero()));
+            if !(full_u && full_v) {
+                return false;
+            }
+            let at_v0 = bernstein_values(v0, &pascal[n]);
+            let at_u0 = bernstein_values(u0, &pascal[m]);
+            self.coprime_in(m, |c, out| {
+                out.extend((0..=m).map(|p| dot(self.row(c, p).iter().copied(), &at_v0)));
+                bernstein_to_power_strided(out, 1, &pascal[m]);
+            }) && self.coprime_in(n, |c, out| {
+                out.extend((0..=n).map(|q| dot((0..=m).map(|p| self.at(c, p, q)), &at_u0)));
+                bernstein_to_power_strided(out, 1, &pascal[n]);
+            })
+        })
     }
 
     /// Row `p` (the coefficients of `u^p v^0 … u^p v^n`) of component `c`.
@@ -106,7 +148,9 @@ impl FpGrids {
     }
 
     /// The certificate on power grids: the actual bidegree is the full
-    /// `(m, n)` and the components are coprime in both directions.
+    /// `(m, n)` and the components are coprime in both directions (the
+    /// reference for [`bernstein_certified`](FpGrids::bernstein_certified)).
+    #[cfg(test)]
     pub(crate) fn certified(&self) -> bool {
         self.actual_degree() == (self.m, self.n) && self.coprime()
     }
@@ -203,6 +247,46 @@ fn bernstein_to_power_strided(line: &mut [Fp], s: usize, binom: &[Fp]) {
     for (k, &c) in binom.iter().enumerate() {
         line[k * s] = line[k * s] * c;
     }
+}
+
+/// The k-th forward difference `Δ^k b_0 = Σ_i (−1)^(k−i) C(k, i) b_i` of
+/// `b_0 … b_k` (`binom`: row k of Pascal's triangle modulo p).
+fn top_difference(b: impl Iterator<Item = Fp>, binom: &[Fp]) -> Fp {
+    let k = binom.len() - 1;
+    b.zip(binom)
+        .enumerate()
+        .fold(Fp::zero(), |acc, (i, (x, &c))| {
+            if (k - i) % 2 == 0 {
+                acc + c * x
+            } else {
+                acc - c * x
+            }
+        })
+}
+
+/// The Bernstein basis of degree n at x: `B_{k,n}(x) = C(n, k) x^k (1 − x)^(n−k)`
+/// for k = 0 … n (`binom`: row n of Pascal's triangle modulo p).
+fn bernstein_values(x: Fp, binom: &[Fp]) -> Vec<Fp> {
+    let n = binom.len() - 1;
+    let y = Fp::one() - x;
+    // x^k ascending, then times (1 − x)^(n−k) descending.
+    let mut out: Vec<Fp> = Vec::with_capacity(n + 1);
+    let mut power = Fp::one();
+    for &c in binom {
+        out.push(c * power);
+        power = power * x;
+    }
+    let mut power = Fp::one();
+    for b in out.iter_mut().rev() {
+        *b = *b * power;
+        power = power * y;
+    }
+    out
+}
+
+/// `Σ_k a_k w_k`.
+fn dot(a: impl Iterator<Item = Fp>, w: &[Fp]) -> Fp {
+    a.zip(w).fold(Fp::zero(), |acc, (x, &y)| acc + x * y)
 }
 
 /// Drop the trailing zeros of `c`.
@@ -303,7 +387,7 @@ mod tests {
 
         #[test]
         fn flat_grids_are_the_nested_power_components((data, comps, shape) in fp_nets()) {
-            let g = FpGrids::from_bernstein(data.clone(), comps, shape);
+            let g = FpGrids::new(data.clone(), comps, shape).into_power();
             let nested = power_components(&nested(&data, comps, shape));
             for (c, grid) in nested.iter().enumerate() {
                 for (p, row) in grid.iter().enumerate() {
@@ -312,6 +396,12 @@ mod tests {
                     }
                 }
             }
+        }
+
+        #[test]
+        fn the_bernstein_test_is_the_test_on_power_grids((data, comps, shape) in fp_nets()) {
+            let power = FpGrids::new(data.clone(), comps, shape).into_power().certified();
+            prop_assert_eq!(FpGrids::new(data, comps, shape).bernstein_certified(), power);
         }
 
         #[test]

@@ -264,7 +264,7 @@ impl Reducible for BigRational {
     /// coefficient that is zero over Q is zero modulo p, so this degree is
     /// at most the actual one.
     fn degree_lower_bound(net: &Net<Self>) -> Option<(usize, usize)> {
-        bernstein_mod_p(net).map(|image| image.actual_degree())
+        bernstein_mod_p(net).map(|image| image.into_power().actual_degree())
     }
 }
 
@@ -388,12 +388,11 @@ pub(crate) fn minimal_net<T: Reducible>(net: &Net<T>) -> Minimal<Net<T>, T> {
 /// gcd of 1 over F_p excludes such `g`. (3) The same with `u = u₀` excludes a
 /// factor with `deg_v g ≥ 1`; what is left is a constant.
 pub(crate) fn certified_minimal(net: &Net<BigRational>) -> bool {
-    bernstein_mod_p(net).is_some_and(|image| image.certified())
+    bernstein_mod_p(net).is_some_and(|image| image.bernstein_certified())
 }
 
-/// The image modulo `p` of `net` converted to the power basis, as flat
-/// grids ([`FpGrids::from_bernstein`]); `None` when a denominator is
-/// divisible by `p`.
+/// The image modulo `p` of `net` as flat grids of Bernstein coefficients
+/// ([`FpGrids::new`]); `None` when a denominator is divisible by `p`.
 fn bernstein_mod_p(net: &Net<BigRational>) -> Option<FpGrids> {
     let (m, n) = (net.len() - 1, net[0].len() - 1);
     let comps = net[0][0].coords.len();
@@ -403,7 +402,7 @@ fn bernstein_mod_p(net: &Net<BigRational>) -> Option<FpGrids> {
             data.push(Fp::from_rational_checked(&h.coords[c])?);
         }
     }
-    Some(FpGrids::from_bernstein(data, comps, (m, n)))
+    Some(FpGrids::new(data, comps, (m, n)))
 }
 
 /// The net of bidegree `(k, l)` whose degree elevation is `net`, or `None`

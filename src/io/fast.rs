@@ -15,6 +15,13 @@
 
 use crate::coincide::canonical::SmallPatch;
 use crate::limits::{self, MAX_DEGREE, MAX_DIMENSION};
+use std::cell::RefCell;
+
+thread_local! {
+    /// The grids of the points and of the weights of the line being read,
+    /// reused across the lines a thread reads (no allocation per line).
+    static GRIDS: RefCell<Grids> = RefCell::default();
+}
 
 /// The patch of one JSON line of the plain shape, or `None` (then the
 /// general reader decides).
@@ -27,17 +34,33 @@ use crate::limits::{self, MAX_DEGREE, MAX_DIMENSION};
 /// assert!(read_small_patch(r#"{"kind": "curve", "points": [[1e3]]}"#).is_none());
 /// ```
 pub fn read_small_patch(line: &str) -> Option<SmallPatch> {
+    GRIDS.with(|kept| match kept.try_borrow_mut() {
+        Ok(mut grids) => read_with(line, &mut grids),
+        // Not reached (reading does not read again), but never a panic.
+        Err(_) => read_with(line, &mut Grids::default()),
+    })
+}
+
+/// [`read_small_patch`] with `grids` to read the numbers into.
+fn read_with(line: &str, grids: &mut Grids) -> Option<SmallPatch> {
     let mut c = Cursor {
         bytes: line.as_bytes(),
         at: 0,
         max_digits: limits::current().max_digits,
     };
-    let fields = c.object()?;
+    let fields = c.object(grids)?;
     c.skip_space();
     if c.at != c.bytes.len() {
         return None;
     }
-    fields.patch()
+    fields.patch(grids)
+}
+
+/// The points' and the weights' grids of one line.
+#[derive(Default)]
+struct Grids {
+    points: Grid,
+    weights: Grid,
 }
 
 /// Nested arrays of numbers as read: the numbers in order and the length
@@ -56,20 +79,25 @@ enum Degree {
     Two(usize, usize),
 }
 
-/// The fields of the object.
+/// The fields of the object; whether the points and the weights were
+/// read (into [`Grids`]).
 #[derive(Default)]
 struct Fields {
     curve: Option<bool>,
     degree: Option<Degree>,
-    points: Option<Grid>,
-    weights: Option<Grid>,
+    points: bool,
+    weights: bool,
 }
 
 impl Fields {
-    /// The patch the fields describe, if they are consistent.
-    fn patch(self) -> Option<SmallPatch> {
+    /// The patch the fields describe (their numbers in `grids`), if they
+    /// are consistent.
+    fn patch(self, grids: &mut Grids) -> Option<SmallPatch> {
         let curve = self.curve?;
-        let points = self.points?;
+        if !self.points {
+            return None;
+        }
+        let points = &grids.points;
         let depth = if curve { 2 } else { 3 };
         if points.lens.len() != depth {
             return None;
@@ -89,24 +117,25 @@ impl Fields {
             (Some(Degree::Two(m, n)), false) => (m, n) == shape,
             _ => false,
         };
-        let weights = match self.weights {
-            None => vec![(1, 1); (shape.0 + 1) * (shape.1 + 1)],
-            Some(w) => {
-                let shape_of_weights = if curve {
-                    vec![Some(shape.0 + 1)]
-                } else {
-                    vec![Some(shape.1 + 1), Some(shape.0 + 1)]
-                };
-                if w.lens != shape_of_weights {
-                    return None;
-                }
-                w.numbers
+        let weights = &mut grids.weights;
+        if self.weights {
+            let shape_of_weights: &[Option<usize>] = if curve {
+                &[Some(shape.0 + 1)]
+            } else {
+                &[Some(shape.1 + 1), Some(shape.0 + 1)]
+            };
+            if weights.lens != shape_of_weights {
+                return None;
             }
-        };
+        } else {
+            weights.numbers.clear();
+            let count = (shape.0 + 1) * (shape.1 + 1);
+            weights.numbers.resize(count, (1, 1));
+        }
         if !declared_ok {
             return None;
         }
-        SmallPatch::new(curve, shape, dim, &points.numbers, &weights)
+        SmallPatch::new(curve, shape, dim, &points.numbers, &weights.numbers)
     }
 }
 
@@ -155,8 +184,9 @@ impl Cursor<'_> {
         Some(&self.bytes[start..self.at - 1])
     }
 
-    /// The object's fields; `None` on another or a repeated field.
-    fn object(&mut self) -> Option<Fields> {
+    /// The object's fields, their numbers read into `grids`; `None` on
+    /// another or a repeated field.
+    fn object(&mut self, grids: &mut Grids) -> Option<Fields> {
         self.expect(b'{')?;
         let mut f = Fields::default();
         loop {
@@ -174,12 +204,12 @@ impl Cursor<'_> {
                     f.degree.replace(d).is_some()
                 }
                 b"points" => {
-                    let g = self.colon()?.grid()?;
-                    f.points.replace(g).is_some()
+                    self.colon()?.grid(&mut grids.points)?;
+                    std::mem::replace(&mut f.points, true)
                 }
                 b"weights" => {
-                    let g = self.colon()?.grid()?;
-                    f.weights.replace(g).is_some()
+                    self.colon()?.grid(&mut grids.weights)?;
+                    std::mem::replace(&mut f.weights, true)
                 }
                 _ => return None,
             };
@@ -231,15 +261,11 @@ impl Cursor<'_> {
     }
 
     /// Nested non-empty arrays of numbers, every array at one depth of the
-    /// same length, at most 3 deep.
-    fn grid(&mut self) -> Option<Grid> {
-        let mut g = Grid {
-            // A bicubic's points in 3D: one allocation, no regrowth.
-            numbers: Vec::with_capacity(64),
-            lens: Vec::with_capacity(3),
-        };
-        self.array(&mut g, 0)?;
-        Some(g)
+    /// same length, at most 3 deep, read into `g` (emptied first).
+    fn grid(&mut self, g: &mut Grid) -> Option<()> {
+        g.numbers.clear();
+        g.lens.clear();
+        self.array(g, 0).map(|_| ())
     }
 
     /// One array at nesting `level` (0 outermost) into `g`; the depth of
@@ -289,22 +315,18 @@ impl Cursor<'_> {
         if quoted {
             self.at += 1;
         }
-        let start = self.at;
-        let (p, q) = self.decimal(quoted)?;
+        let ((p, q), mut digits) = self.decimal(quoted)?;
         let (p, q) = if quoted && self.peek() == Some(b'/') {
             self.at += 1;
-            let (d, e) = self.decimal(true)?;
+            let ((d, e), more) = self.decimal(true)?;
             if d <= 0 {
                 return None;
             }
+            digits += more;
             (p.checked_mul(e)?, q.checked_mul(d)?)
         } else {
             (p, q)
         };
-        let digits = self.bytes[start..self.at]
-            .iter()
-            .filter(|b| b.is_ascii_digit())
-            .count();
         if digits as u64 > self.max_digits {
             return None;
         }
@@ -319,53 +341,78 @@ impl Cursor<'_> {
         (self.peek() == Some(b)).then(|| self.at += 1)
     }
 
-    /// `-?d+(.d+)?` as `(mantissa, 10^fraction digits)`; a JSON number
-    /// (`loose = false`) has no leading zero.
-    fn decimal(&mut self, loose: bool) -> Option<(i128, i128)> {
+    /// `-?d+(.d+)?` as `(mantissa, 10^fraction digits)` and its count of
+    /// digits, in one pass over its bytes; a JSON number (`loose = false`)
+    /// has no leading zero. `None` when the mantissa leaves `i128`.
+    fn decimal(&mut self, loose: bool) -> Option<((i128, i128), usize)> {
         let negative = self.peek() == Some(b'-');
         if negative {
             self.at += 1;
         }
         let start = self.at;
-        let whole = self.digits();
+        let mut mantissa = Mantissa::default();
+        let whole = self.digits_into(&mut mantissa)?;
         if whole == 0 || (!loose && whole > 1 && self.bytes[start] == b'0') {
             return None;
         }
         let mut frac = 0;
         if self.peek() == Some(b'.') {
             self.at += 1;
-            frac = self.digits();
+            frac = self.digits_into(&mut mantissa)?;
             if frac == 0 {
                 return None;
             }
         }
-        let mut mantissa: i128 = 0;
-        // Up to 18 digits on a 64-bit word (below 10¹⁸ < 2⁶³), the rest, if
-        // any, on 128 bits with overflow checks.
-        let mut word: u64 = 0;
-        let mut in_word = 0;
-        for &d in self.bytes[start..self.at]
-            .iter()
-            .filter(|b| b.is_ascii_digit())
-        {
-            if in_word < 18 {
-                word = 10 * word + u64::from(d - b'0');
-                in_word += 1;
-                continue;
-            }
-            if in_word == 18 {
-                mantissa = i128::from(word);
-                in_word += 1;
-            }
-            mantissa = mantissa
-                .checked_mul(10)?
-                .checked_add(i128::from(d - b'0'))?;
-        }
-        if in_word <= 18 {
-            mantissa = i128::from(word);
-        }
         let scale = 10i128.checked_pow(u32::try_from(frac).ok()?)?;
-        Some((if negative { -mantissa } else { mantissa }, scale))
+        let value = mantissa.value();
+        Some(((if negative { -value } else { value }, scale), whole + frac))
+    }
+
+    /// Take ASCII digits into `m`; how many (`None` when `m` leaves `i128`).
+    fn digits_into(&mut self, m: &mut Mantissa) -> Option<usize> {
+        let start = self.at;
+        while let Some(&b) = self.bytes.get(self.at) {
+            if !b.is_ascii_digit() {
+                break;
+            }
+            m.push(b - b'0')?;
+            self.at += 1;
+        }
+        Some(self.at - start)
+    }
+}
+
+/// The digits of a decimal's mantissa as read: the first 18 on a 64-bit
+/// word (below 10¹⁸ < 2⁶³), the rest, if any, on 128 bits with overflow
+/// checks.
+#[derive(Default)]
+struct Mantissa {
+    word: u64,
+    len: usize,
+    wide: i128,
+}
+
+impl Mantissa {
+    /// Append the digit `d`; `None` when the value leaves `i128`.
+    fn push(&mut self, d: u8) -> Option<()> {
+        if self.len < 18 {
+            self.word = 10 * self.word + u64::from(d);
+        } else {
+            if self.len == 18 {
+                self.wide = i128::from(self.word);
+            }
+            self.wide = self.wide.checked_mul(10)?.checked_add(i128::from(d))?;
+        }
+        self.len += 1;
+        Some(())
+    }
+
+    fn value(&self) -> i128 {
+        if self.len <= 18 {
+            i128::from(self.word)
+        } else {
+            self.wide
+        }
     }
 }
 

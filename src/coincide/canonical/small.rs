@@ -32,6 +32,20 @@ struct Small {
     q: i128,
 }
 
+/// `v` as a 64-bit word, if it fits one.
+fn word(v: i128) -> Option<i64> {
+    i64::try_from(v).ok()
+}
+
+/// `a · b`, on one 64-bit product when both fit words (then it cannot
+/// overflow `i128`); `None` on overflow.
+fn checked_mul(a: i128, b: i128) -> Option<i128> {
+    match (word(a), word(b)) {
+        (Some(x), Some(y)) => Some(i128::from(x) * i128::from(y)),
+        _ => a.checked_mul(b),
+    }
+}
+
 /// `a / g` for a divisor `g > 0` of `a`, on 64-bit words when `a` fits.
 fn div_exact(a: i128, g: i128) -> i128 {
     match (g, i64::try_from(a), i64::try_from(g)) {
@@ -49,6 +63,9 @@ impl Small {
         if q <= 0 {
             return None;
         }
+        if q == 1 {
+            return Some(Small { p, q });
+        }
         let g = gcd_u128(p.unsigned_abs(), q.unsigned_abs()) as i128;
         Some(Small {
             p: div_exact(p, g),
@@ -63,8 +80,20 @@ impl Small {
         })
     }
 
-    /// The product, reduced by cross gcds; `None` on overflow.
+    /// The product, reduced by cross gcds; `None` on overflow. Integers
+    /// (`q = 1`, the common case) need no gcd, or one when only one is.
     fn mul(self, o: Small) -> Option<Small> {
+        match (self.q, o.q) {
+            (1, 1) => {
+                return Some(Small {
+                    p: checked_mul(self.p, o.p)?,
+                    q: 1,
+                })
+            }
+            (1, _) => return o.mul_integer(self.p),
+            (_, 1) => return self.mul_integer(o.p),
+            _ => {}
+        }
         if let Some(product) = self.mul_words(o) {
             return Some(product);
         }
@@ -76,11 +105,20 @@ impl Small {
         })
     }
 
+    /// `self · a` for an integer `a`: `(p/q)·a = p(a/g) / (q/g)` with
+    /// `g = gcd(a, q)`, in lowest terms; `None` on overflow.
+    fn mul_integer(self, a: i128) -> Option<Small> {
+        let g = gcd_u128(a.unsigned_abs(), self.q.unsigned_abs()) as i128;
+        Some(Small {
+            p: checked_mul(self.p, div_exact(a, g))?,
+            q: div_exact(self.q, g),
+        })
+    }
+
     /// [`mul`](Small::mul) when all four integers fit 64-bit words (the
     /// common case): gcds and quotients on words, and products of two words
     /// cannot overflow `i128`. `None` when they do not fit.
     fn mul_words(self, o: Small) -> Option<Small> {
-        let word = |v: i128| i64::try_from(v).ok();
         let (a, b, c, d) = (word(self.p)?, word(self.q)?, word(o.p)?, word(o.q)?);
         let gcd =
             |x: i64, y: i64| gcd_u128(x.unsigned_abs().into(), y.unsigned_abs().into()) as i64;
@@ -93,6 +131,13 @@ impl Small {
             p: i128::from(a / g1) * i128::from(c / g2),
             q: i128::from(b / g2) * i128::from(d / g1),
         })
+    }
+
+    /// Whether the product fits `i128` ([`mul`](Small::mul) is not
+    /// `None`), decided without a gcd when the unreduced one fits.
+    fn product_fits(self, o: Small) -> bool {
+        let unreduced = checked_mul(self.p, o.p).is_some() && checked_mul(self.q, o.q).is_some();
+        unreduced || self.mul(o).is_some()
     }
 
     /// `1/self` for `self > 0`.
@@ -132,6 +177,14 @@ fn push_int(out: &mut String, v: i128) {
     };
     if v < 0 {
         out.push('-');
+    }
+    if u < 100 {
+        // One or two digits (common: coordinates and invariants of small nets).
+        if u >= 10 {
+            out.push(char::from(b'0' + (u / 10) as u8));
+        }
+        out.push(char::from(b'0' + (u % 10) as u8));
+        return;
     }
     let mut digits = [0u8; 20];
     let mut at = digits.len();
@@ -409,6 +462,27 @@ impl SmallPatch {
         })
     }
 
+    /// The (bi)degree: `(n, 0)` for a curve.
+    pub fn degree(&self) -> (usize, usize) {
+        self.shape
+    }
+
+    /// Coordinates per point (Cartesian).
+    pub fn dim(&self) -> usize {
+        self.dim
+    }
+
+    /// Whether every homogeneous number `x·ω` of the net fits `i128`
+    /// ([`size`](SmallPatch::size) is not `None`), decided without the
+    /// gcds of the bit count: an unreduced product that fits decides.
+    pub fn homogeneous_fits(&self) -> bool {
+        let points = self.coords.chunks_exact(self.dim);
+        self.weights
+            .iter()
+            .zip(points)
+            .all(|(&w, x)| x.iter().all(|&c| c.product_fits(w)))
+    }
+
     /// The size the cost model charges ([`Patch::size`](crate::Patch::size)
     /// of [`to_patch`](SmallPatch::to_patch)); `None` when a homogeneous
     /// number leaves `i128`.
@@ -442,7 +516,7 @@ impl SmallPatch {
         let shape = (self.shape.0, self.shape.1);
         let certified = self
             .homogeneous_mod_p()
-            .is_some_and(|image| FpGrids::from_bernstein(image, self.dim + 1, shape).certified());
+            .is_some_and(|image| FpGrids::new(image, self.dim + 1, shape).bernstein_certified());
         if certified {
             self.text = split_key_text(&self.split(), self.curve);
         }
@@ -574,10 +648,12 @@ mod tests {
         ]
     }
 
+    /// Fractions, a third of them integers (the products' shortcuts).
     fn fraction() -> impl Strategy<Value = Small> {
-        (integer(), integer()).prop_filter_map("q > 0", |(p, q)| {
+        let ratio = (integer(), integer()).prop_filter_map("q > 0", |(p, q)| {
             Small::reduced((p, q.checked_abs()?.max(1)))
-        })
+        });
+        prop_oneof![2 => ratio, 1 => integer().prop_map(|p| Small { p, q: 1 })]
     }
 
     /// A bicubic or curve of small machine fractions, positive weights.
@@ -621,6 +697,18 @@ mod tests {
         }
 
         #[test]
+        fn homogeneous_numbers_fit_when_the_size_is_known(
+            coords in prop::collection::vec(fraction(), 3),
+            weights in prop::collection::vec(fraction(), 3),
+        ) {
+            let pair = |x: &Small| (x.p, x.q);
+            let coords: Vec<_> = coords.iter().map(pair).collect();
+            let weights: Vec<_> = weights.iter().map(|w| (w.p.checked_abs().unwrap_or(1).max(1), w.q)).collect();
+            let s = SmallPatch::new(true, (2, 0), 1, &coords, &weights).unwrap();
+            prop_assert_eq!(s.homogeneous_fits(), s.size().is_some());
+        }
+
+        #[test]
         fn the_machine_certificate_is_that_of_the_net_over_q(mut s in small_patch()) {
             let (net, _) = crate::coincide::net_of(&s.to_patch().unwrap()).unwrap();
             prop_assert_eq!(s.certify(), crate::coincide::minimal::certified_minimal(&net));
@@ -653,6 +741,9 @@ mod tests {
             7,
             -7,
             10,
+            -42,
+            99,
+            100,
             i128::from(u64::MAX),
             -i128::from(u64::MAX),
             i128::from(u64::MAX) + 1,
