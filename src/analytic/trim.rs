@@ -90,11 +90,12 @@ pub fn trim_between<T: Field + Ordered>(
     } else {
         pieces.iter().rev().map(RationalCurve::reverse).collect()
     };
-    let (ks, ts) = locate_vertex(&work, start, snap);
+    let approx = to_f64_pieces(&work);
+    let (ks, ts) = locate_in(&approx, start, snap);
     let (ke, te) = if start == end {
         (ks, ts.clone())
     } else {
-        locate_vertex(&work, end, snap)
+        locate_in(&approx, end, snap)
     };
     let out = split_between(&work, (ks, &ts), (ke, &te), start == end)?;
     let start_pt = work[ks].eval(&ts)?;
@@ -192,11 +193,21 @@ pub fn locate_vertex<T: Field + Ordered>(
     p: &[T],
     snap: f64,
 ) -> (usize, T) {
+    locate_in(&to_f64_pieces(pieces), p, snap)
+}
+
+/// The pieces rounded to `f64`, for [`locate_in`]'s search.
+fn to_f64_pieces<T: Ordered>(pieces: &[RationalCurve<T>]) -> Vec<RationalCurve<f64>> {
+    pieces.iter().map(|c| c.map(Ordered::to_f64)).collect()
+}
+
+/// [`locate_vertex`] on the pieces already rounded to `f64` (a trimmed
+/// edge locates both its vertices on one rounding).
+fn locate_in<T: Field + Ordered>(approx: &[RationalCurve<f64>], p: &[T], snap: f64) -> (usize, T) {
     let pf: Vec<f64> = p.iter().map(Ordered::to_f64).collect();
     let mut best = (0, 0.0, f64::INFINITY);
     let mut ends = Vec::new();
-    for (k, c) in pieces.iter().enumerate() {
-        let cf = c.map(Ordered::to_f64);
+    for (k, cf) in approx.iter().enumerate() {
         let d = |t: f64| cf.eval(&t).map_or(f64::INFINITY, |x| dist2(&x, &pf));
         let (t, dt) = nearest(&d);
         if dt < best.2 {

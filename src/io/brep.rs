@@ -15,12 +15,14 @@ use crate::step::brep::{
 };
 use crate::step::BrepModel;
 use serde_json::{json, Map, Value};
+use rayon::prelude::*;
 use std::collections::BTreeSet;
 
 /// Writes one piece with its origin (exactly, or as floats). B-spline
 /// pieces are rational and analytic ones may hold radicals: both come
 /// over the real algebraic numbers.
-pub type PieceWriter<'a> = &'a dyn Fn(&Patch<RealAlgebraic>, &Origin) -> Result<Value, Error>;
+pub type PieceWriter<'a> =
+    &'a (dyn Fn(&Patch<RealAlgebraic>, &Origin) -> Result<Value, Error> + Sync);
 
 fn id(n: u64) -> Value {
     json!(format!("#{n}"))
@@ -322,22 +324,30 @@ pub fn brep_model_json(m: &BrepModel, write: PieceWriter) -> Result<Value, Error
 
 fn parts(m: &BrepModel, write: PieceWriter) -> Result<[Vec<Value>; 3], Error> {
     m.convert_pieces();
-    let faces = m
-        .faces
-        .values()
-        .map(|f| face_to_json(f, write))
-        .collect::<Result<Vec<_>, _>>()?;
-    let edges = m
-        .edges
-        .values()
-        .map(|e| edge_to_json(e, write))
-        .collect::<Result<Vec<_>, _>>()?;
+    let faces: Vec<&Face> = m.faces.values().collect();
+    let edges: Vec<&Edge> = m.edges.values().collect();
+    let faces = on_all_cores(&faces, |f| face_to_json(f, write))?;
+    let edges = on_all_cores(&edges, |e| edge_to_json(e, write))?;
     let vertices = m
         .vertices
         .iter()
         .map(|(&v, p)| json!({"kind": "vertex", "id": id(v), "point": point_to_json(p)}))
         .collect();
     Ok([faces, edges, vertices])
+}
+
+/// `f` of every item, in order, computed on all cores under this thread's
+/// limits; the first error in order, if any.
+fn on_all_cores<I: Sync, F>(items: &[I], f: F) -> Result<Vec<Value>, Error>
+where
+    F: Fn(&I) -> Result<Value, Error> + Sync,
+{
+    let limits = crate::limits::current();
+    let results: Vec<Result<Value, Error>> = items
+        .par_iter()
+        .map(|x| crate::limits::with_limits(limits, || f(x)))
+        .collect();
+    results.into_iter().collect()
 }
 
 /// The whole B-rep as one JSON document: the model object of
