@@ -67,20 +67,29 @@ fn parse_decimal(t: &str) -> Option<BigRational> {
     if exp.unsigned_abs() > 10_000 {
         return None;
     }
-    let all: String = format!("{int_part}{frac_part}");
-    let n: BigInt = if all.is_empty() {
-        BigInt::zero()
-    } else {
-        all.parse().ok()?
-    };
+    let n = digits_value(int_part, frac_part)?;
     let scale = exp - frac_part.len() as i32;
     let ten = BigInt::from(10);
     let q = if scale >= 0 {
         BigRational::from_integer(n * num_traits::pow(ten, scale as usize))
     } else {
-        BigRational::new(n, num_traits::pow(ten, (-scale) as usize))
+        crate::algebra::gcd::fraction(n, num_traits::pow(ten, (-scale) as usize))
     };
     Some(if neg { -q } else { q })
+}
+
+/// The integer written by the ASCII digits `int_part` then `frac_part`
+/// (0 for none): in a machine word when there are at most 38 of them.
+fn digits_value(int_part: &str, frac_part: &str) -> Option<BigInt> {
+    let len = int_part.len() + frac_part.len();
+    if len <= 38 {
+        let n = int_part
+            .bytes()
+            .chain(frac_part.bytes())
+            .fold(0u128, |acc, b| acc * 10 + u128::from(b - b'0'));
+        return Some(BigInt::from(n));
+    }
+    format!("{int_part}{frac_part}").parse().ok()
 }
 
 /// Exact number types the reader produces: `BigRational` from decimal and
@@ -135,5 +144,29 @@ impl Cost for RealAlgebraic {
     fn field_degree<'a>(xs: impl IntoIterator<Item = &'a Self>) -> (u64, bool) {
         let (degree, radicals) = RealAlgebraic::span_degree(xs);
         (degree, !radicals)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// A decimal is read as its digits over a power of ten, in lowest
+        /// terms (the reference: num-rational's `Ratio::new`, which reduces),
+        /// with up to 60 digits on either side of the point.
+        #[test]
+        fn a_decimal_is_its_digits_over_a_power_of_ten(
+            int_part in "[0-9]{0,30}",
+            frac_part in "[0-9]{1,30}",
+            neg: bool,
+        ) {
+            let text = format!("{}{int_part}.{frac_part}", if neg { "-" } else { "" });
+            let digits: BigInt = format!("{int_part}{frac_part}").parse().unwrap();
+            let ten_k = num_traits::pow(BigInt::from(10), frac_part.len());
+            let expected = BigRational::new(if neg { -digits } else { digits }, ten_k);
+            prop_assert_eq!(parse_decimal(&text), Some(expected));
+        }
     }
 }

@@ -14,8 +14,8 @@ use crate::step::brep::{
     AngleUnit, BSpline, Bound, Edge, EdgeUse, Face, Geometry, GeometryRef, Loop, Occurrence, Shell,
 };
 use crate::step::BrepModel;
-use serde_json::{json, Map, Value};
 use rayon::prelude::*;
+use serde_json::{json, Map, Value};
 use std::collections::BTreeSet;
 
 /// Writes one piece with its origin (exactly, or as floats). B-spline
