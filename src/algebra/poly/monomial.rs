@@ -20,7 +20,10 @@ use smallvec::SmallVec;
 
 /// A packed monomial; the empty monomial is `1`.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
-pub(crate) struct Monomial(SmallVec<[u64; 6]>);
+pub(crate) struct Monomial(SmallVec<[u64; INLINE]>);
+
+/// Factors stored inline.
+const INLINE: usize = 6;
 
 fn word(var: u32, exp: u32) -> u64 {
     (u64::from(!var) << 32) | u64::from(exp)
@@ -32,6 +35,40 @@ fn var_of(w: u64) -> u32 {
 
 fn exp_of(w: u64) -> u32 {
     w as u32
+}
+
+/// Merge two factor lists (decreasing words) into `out`, which has room
+/// for both; the number of factors written.
+fn merge_factors(a: &[u64], b: &[u64], out: &mut [u64]) -> usize {
+    let (mut i, mut j, mut n) = (0, 0, 0);
+    while i < a.len() && j < b.len() {
+        let (x, y) = (a[i], b[j]);
+        out[n] = match (x >> 32).cmp(&(y >> 32)) {
+            std::cmp::Ordering::Equal => {
+                let e = exp_of(x)
+                    .checked_add(exp_of(y))
+                    .expect("monomial exponent overflows u32");
+                i += 1;
+                j += 1;
+                (x & !u64::from(u32::MAX)) | u64::from(e)
+            }
+            // The larger high half is the smaller variable id: first.
+            std::cmp::Ordering::Greater => {
+                i += 1;
+                x
+            }
+            std::cmp::Ordering::Less => {
+                j += 1;
+                y
+            }
+        };
+        n += 1;
+    }
+    for &w in a[i..].iter().chain(&b[j..]) {
+        out[n] = w;
+        n += 1;
+    }
+    n
 }
 
 impl Monomial {
@@ -61,56 +98,25 @@ impl Monomial {
     }
 
     /// The product: a merge of the two factor lists, adding exponents of a
-    /// common variable. **Panics** if an exponent exceeds `u32::MAX`.
+    /// common variable. Factor words compare by their high halves (`!v`),
+    /// and the merge writes to a buffer on the stack that becomes the
+    /// monomial in one copy. **Panics** if an exponent exceeds `u32::MAX`.
     pub(crate) fn mul(&self, other: &Monomial) -> Monomial {
-        match (self.0.len(), other.0.len()) {
-            (_, 0) => return self.clone(),
-            (0, _) => return other.clone(),
-            (_, 1) => return self.times_factor(other.0[0]),
-            (1, _) => return other.times_factor(self.0[0]),
-            _ => {}
+        let (a, b) = (self.0.as_slice(), other.0.as_slice());
+        if b.is_empty() {
+            return self.clone();
         }
-        let (a, b) = (&self.0, &other.0);
-        let mut out = SmallVec::with_capacity(a.len() + b.len());
-        let (mut i, mut j) = (0, 0);
-        while i < a.len() && j < b.len() {
-            let (va, vb) = (var_of(a[i]), var_of(b[j]));
-            if va == vb {
-                let e = exp_of(a[i])
-                    .checked_add(exp_of(b[j]))
-                    .expect("monomial exponent overflows u32");
-                out.push(word(va, e));
-                i += 1;
-                j += 1;
-            } else if va < vb {
-                out.push(a[i]);
-                i += 1;
-            } else {
-                out.push(b[j]);
-                j += 1;
-            }
+        if a.is_empty() {
+            return other.clone();
         }
-        out.extend_from_slice(&a[i..]);
-        out.extend_from_slice(&b[j..]);
-        Monomial(out)
-    }
-
-    /// The product with the single factor `w` (the common case of
-    /// multiplying by `s`, `α`, …): one insertion or exponent bump.
-    fn times_factor(&self, w: u64) -> Monomial {
-        let v = var_of(w);
-        let mut out = self.0.clone();
-        match out.iter().position(|&x| var_of(x) >= v) {
-            Some(k) if var_of(out[k]) == v => {
-                let e = exp_of(out[k])
-                    .checked_add(exp_of(w))
-                    .expect("monomial exponent overflows u32");
-                out[k] = word(v, e);
-            }
-            Some(k) => out.insert(k, w),
-            None => out.push(w),
+        let mut buf = [0u64; 2 * INLINE];
+        if a.len() + b.len() <= buf.len() {
+            let n = merge_factors(a, b, &mut buf);
+            return Monomial(SmallVec::from_slice(&buf[..n]));
         }
-        Monomial(out)
+        let mut long = vec![0u64; a.len() + b.len()];
+        let n = merge_factors(a, b, &mut long);
+        Monomial(SmallVec::from_slice(&long[..n]))
     }
 
     /// Exponent of variable `var` (0 if absent).
@@ -123,7 +129,7 @@ impl Monomial {
     /// The monomial with the exponent of `var` replaced by `exp`. Among
     /// monomials with equal exponents of `var`, this keeps their order.
     pub(crate) fn with_exponent(&self, var: u32, exp: u32) -> Monomial {
-        let mut out: SmallVec<[u64; 6]> = self
+        let mut out: SmallVec<[u64; INLINE]> = self
             .0
             .iter()
             .copied()
