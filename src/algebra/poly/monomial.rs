@@ -175,6 +175,24 @@ mod tests {
     }
 
     #[test]
+    fn long_products_match_exponent_sums() {
+        // 9 and 8 factors (past the stack buffer), overlapping in 4
+        // variables, against the exponents summed per variable.
+        let a: Vec<(u32, u32)> = (0..9).map(|k| (2 * k, k + 1)).collect();
+        let b: Vec<(u32, u32)> = (0..8).map(|k| (3 * k, 2)).collect();
+        let mut want = std::collections::BTreeMap::new();
+        for &(v, e) in a.iter().chain(&b) {
+            *want.entry(v).or_insert(0) += e;
+        }
+        let got = m(&a).mul(&m(&b));
+        assert_eq!(
+            got.factors().collect::<Vec<_>>(),
+            want.into_iter().collect::<Vec<_>>()
+        );
+        assert_eq!(got, m(&b).mul(&m(&a)));
+    }
+
+    #[test]
     fn order_is_lex_and_multiplicative() {
         let x = m(&[(0, 1)]);
         let y = m(&[(1, 1)]);
