@@ -13,17 +13,53 @@
 //! multiplication relies on (Johnson 1974; Monagan & Pearce, *Sparse
 //! polynomial multiplication and division in Maple 14*, 2009).
 //!
-//! Up to six factors live inline (no allocation); the identities checked in
-//! `proofs/` rarely have more than five variables per monomial.
+//! Up to six factors live inline in a fixed array whose unused words are 0
+//! (never a factor: exponents are positive), so that copying, comparing and
+//! hashing an inline monomial are fixed-size operations on six words, and
+//! comparing the padded arrays is comparing the factor slices. The
+//! identities checked in `proofs/` rarely have more than five variables per
+//! monomial; longer monomials are boxed.
 
-use smallvec::SmallVec;
+use std::cmp::Ordering;
 
-/// A packed monomial; the empty monomial is `1`.
-#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
-pub(crate) struct Monomial(SmallVec<[u64; INLINE]>);
+/// A packed monomial; the empty monomial is `1`. Canonical: `Inline` exactly
+/// when there are at most [`INLINE`] factors.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub(crate) enum Monomial {
+    /// `len` factor words, then zeros.
+    Inline { len: u8, words: [u64; INLINE] },
+    /// More than [`INLINE`] factor words.
+    Long(Box<[u64]>),
+}
 
 /// Factors stored inline.
 const INLINE: usize = 6;
+
+impl Default for Monomial {
+    fn default() -> Monomial {
+        Monomial::Inline {
+            len: 0,
+            words: [0; INLINE],
+        }
+    }
+}
+
+/// The order of the factor slices (see the module doc); two inline
+/// monomials compare as their zero-padded arrays, which is the same.
+impl Ord for Monomial {
+    fn cmp(&self, other: &Monomial) -> Ordering {
+        match (self, other) {
+            (Monomial::Inline { words: a, .. }, Monomial::Inline { words: b, .. }) => a.cmp(b),
+            _ => self.words().cmp(other.words()),
+        }
+    }
+}
+
+impl PartialOrd for Monomial {
+    fn partial_cmp(&self, other: &Monomial) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
 
 fn word(var: u32, exp: u32) -> u64 {
     (u64::from(!var) << 32) | u64::from(exp)
@@ -44,7 +80,7 @@ fn merge_factors(a: &[u64], b: &[u64], out: &mut [u64]) -> usize {
     while i < a.len() && j < b.len() {
         let (x, y) = (a[i], b[j]);
         out[n] = match (x >> 32).cmp(&(y >> 32)) {
-            std::cmp::Ordering::Equal => {
+            Ordering::Equal => {
                 let e = exp_of(x)
                     .checked_add(exp_of(y))
                     .expect("monomial exponent overflows u32");
@@ -53,11 +89,11 @@ fn merge_factors(a: &[u64], b: &[u64], out: &mut [u64]) -> usize {
                 (x & !u64::from(u32::MAX)) | u64::from(e)
             }
             // The larger high half is the smaller variable id: first.
-            std::cmp::Ordering::Greater => {
+            Ordering::Greater => {
                 i += 1;
                 x
             }
-            std::cmp::Ordering::Less => {
+            Ordering::Less => {
                 j += 1;
                 y
             }
@@ -72,51 +108,91 @@ fn merge_factors(a: &[u64], b: &[u64], out: &mut [u64]) -> usize {
 }
 
 impl Monomial {
+    /// The monomial of factor words given in decreasing order.
+    fn from_words(w: &[u64]) -> Monomial {
+        if w.len() > INLINE {
+            return Monomial::Long(w.into());
+        }
+        let mut words = [0; INLINE];
+        words[..w.len()].copy_from_slice(w);
+        Monomial::Inline {
+            len: w.len() as u8,
+            words,
+        }
+    }
+
+    /// The factor words, decreasing.
+    fn words(&self) -> &[u64] {
+        match self {
+            Monomial::Inline { len, words } => &words[..usize::from(*len)],
+            Monomial::Long(w) => w,
+        }
+    }
+
     /// `x_var^exp` (`1` when `exp = 0`).
     pub(crate) fn power(var: u32, exp: u32) -> Monomial {
-        let mut m = Monomial::default();
-        if exp > 0 {
-            m.0.push(word(var, exp));
+        if exp == 0 {
+            return Monomial::default();
         }
-        m
+        Monomial::from_words(&[word(var, exp)])
     }
 
     /// The monomial of the factors `(variable id, exponent > 0)` given by
     /// increasing id.
     pub(crate) fn from_factors(f: impl Iterator<Item = (u32, u32)>) -> Monomial {
-        Monomial(f.map(|(v, e)| word(v, e)).collect())
+        let mut words = [0; INLINE];
+        let mut long: Vec<u64> = Vec::new();
+        let mut n = 0;
+        for (v, e) in f {
+            if n < INLINE {
+                words[n] = word(v, e);
+            } else {
+                if long.is_empty() {
+                    long.extend_from_slice(&words);
+                }
+                long.push(word(v, e));
+            }
+            n += 1;
+        }
+        if n > INLINE {
+            return Monomial::Long(long.into_boxed_slice());
+        }
+        Monomial::Inline {
+            len: n as u8,
+            words,
+        }
     }
 
     /// Is this the monomial `1`?
     pub(crate) fn is_one(&self) -> bool {
-        self.0.is_empty()
+        self.words().is_empty()
     }
 
     /// The factors `(variable id, exponent)`, by increasing id.
     pub(crate) fn factors(&self) -> impl Iterator<Item = (u32, u32)> + '_ {
-        self.0.iter().map(|&w| (var_of(w), exp_of(w)))
+        self.words().iter().map(|&w| (var_of(w), exp_of(w)))
     }
 
     /// The product: a merge of the two factor lists, adding exponents of a
-    /// common variable. Factor words compare by their high halves (`!v`),
-    /// and the merge writes to a buffer on the stack that becomes the
-    /// monomial in one copy. **Panics** if an exponent exceeds `u32::MAX`.
+    /// common variable. Factor words compare by their high halves (`!v`);
+    /// a product of at most [`INLINE`] factors is merged straight into the
+    /// inline array. **Panics** if an exponent exceeds `u32::MAX`.
     pub(crate) fn mul(&self, other: &Monomial) -> Monomial {
-        let (a, b) = (self.0.as_slice(), other.0.as_slice());
+        let (a, b) = (self.words(), other.words());
         if b.is_empty() {
             return self.clone();
         }
         if a.is_empty() {
             return other.clone();
         }
-        let mut buf = [0u64; 2 * INLINE];
-        if a.len() + b.len() <= buf.len() {
-            let n = merge_factors(a, b, &mut buf);
-            return Monomial(SmallVec::from_slice(&buf[..n]));
+        if a.len() + b.len() <= INLINE {
+            let mut words = [0; INLINE];
+            let len = merge_factors(a, b, &mut words) as u8;
+            return Monomial::Inline { len, words };
         }
-        let mut long = vec![0u64; a.len() + b.len()];
-        let n = merge_factors(a, b, &mut long);
-        Monomial(SmallVec::from_slice(&long[..n]))
+        let mut out = vec![0; a.len() + b.len()];
+        let n = merge_factors(a, b, &mut out);
+        Monomial::from_words(&out[..n])
     }
 
     /// Exponent of variable `var` (0 if absent).
@@ -129,25 +205,13 @@ impl Monomial {
     /// The monomial with the exponent of `var` replaced by `exp`. Among
     /// monomials with equal exponents of `var`, this keeps their order.
     pub(crate) fn with_exponent(&self, var: u32, exp: u32) -> Monomial {
-        let mut out: SmallVec<[u64; INLINE]> = self
-            .0
-            .iter()
-            .copied()
-            .filter(|&w| var_of(w) != var)
-            .collect();
-        if exp > 0 {
-            let at = out
-                .iter()
-                .position(|&w| var_of(w) > var)
-                .unwrap_or(out.len());
-            out.insert(at, word(var, exp));
-        }
-        Monomial(out)
+        let rest = Monomial::from_factors(self.factors().filter(|&(v, _)| v != var));
+        rest.mul(&Monomial::power(var, exp))
     }
 
     /// Sum of the exponents.
     pub(crate) fn total_degree(&self) -> u64 {
-        self.0.iter().map(|&w| u64::from(exp_of(w))).sum()
+        self.words().iter().map(|&w| u64::from(exp_of(w))).sum()
     }
 }
 
