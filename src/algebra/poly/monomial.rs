@@ -75,6 +75,7 @@ fn exp_of(w: u64) -> u32 {
 
 /// Merge two factor lists (decreasing words) into `out`, which has room
 /// for both; the number of factors written.
+#[inline]
 fn merge_factors(a: &[u64], b: &[u64], out: &mut [u64]) -> usize {
     let (mut i, mut j, mut n) = (0, 0, 0);
     while i < a.len() && j < b.len() {
@@ -177,6 +178,7 @@ impl Monomial {
     /// common variable. Factor words compare by their high halves (`!v`);
     /// a product of at most [`INLINE`] factors is merged straight into the
     /// inline array. **Panics** if an exponent exceeds `u32::MAX`.
+    #[inline]
     pub(crate) fn mul(&self, other: &Monomial) -> Monomial {
         let (a, b) = (self.words(), other.words());
         if b.is_empty() {
@@ -206,6 +208,9 @@ impl Monomial {
     /// monomials with equal exponents of `var`, this keeps their order.
     pub(crate) fn with_exponent(&self, var: u32, exp: u32) -> Monomial {
         let rest = Monomial::from_factors(self.factors().filter(|&(v, _)| v != var));
+        if exp == 0 {
+            return rest;
+        }
         rest.mul(&Monomial::power(var, exp))
     }
 
