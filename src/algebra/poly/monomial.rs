@@ -141,26 +141,27 @@ impl Monomial {
     /// The monomial of the factors `(variable id, exponent > 0)` given by
     /// increasing id.
     pub(crate) fn from_factors(f: impl Iterator<Item = (u32, u32)>) -> Monomial {
+        let mut f = f.map(|(v, e)| word(v, e));
         let mut words = [0; INLINE];
-        let mut long: Vec<u64> = Vec::new();
-        let mut n = 0;
-        for (v, e) in f {
-            if n < INLINE {
-                words[n] = word(v, e);
-            } else {
-                if long.is_empty() {
-                    long.extend_from_slice(&words);
-                }
-                long.push(word(v, e));
+        let mut len = 0;
+        for w in f.by_ref() {
+            words[len] = w;
+            len += 1;
+            if len == INLINE {
+                break;
             }
-            n += 1;
         }
-        if n > INLINE {
-            return Monomial::Long(long.into_boxed_slice());
-        }
-        Monomial::Inline {
-            len: n as u8,
-            words,
+        match f.next() {
+            None => Monomial::Inline {
+                len: len as u8,
+                words,
+            },
+            Some(w) => {
+                let mut long = words.to_vec();
+                long.push(w);
+                long.extend(f);
+                Monomial::Long(long.into_boxed_slice())
+            }
         }
     }
 
