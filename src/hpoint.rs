@@ -5,7 +5,7 @@
 //! act on the `dim + 1` coordinates alike and need only ring operations.
 //! Division happens once, in [`HPoint::project`].
 
-use crate::algebra::scalar::{Field, Ordered, Ring, Scalar, Tolerance};
+use crate::algebra::scalar::{Field, MulAcc, Ordered, Ring, Scalar, Tolerance};
 use crate::error::Error;
 
 /// A homogeneous point: `coords = [w·x₁, …, w·x_d, w]` (weight last).
@@ -55,24 +55,6 @@ impl<T: Ring> HPoint<T> {
         }
     }
 
-    /// `(1 − t)·self + t·other`, the de Casteljau step.
-    pub fn lerp(&self, other: &Self, t: &T) -> Self {
-        let s = T::one() - t;
-        self.combine(&s, other, t)
-    }
-
-    /// `a·self + b·other`.
-    pub fn combine(&self, a: &T, other: &Self, b: &T) -> Self {
-        HPoint {
-            coords: self
-                .coords
-                .iter()
-                .zip(&other.coords)
-                .map(|(x, y)| x.clone() * a + &(y.clone() * b))
-                .collect(),
-        }
-    }
-
     /// `k·self`.
     pub fn scale(&self, k: &T) -> Self {
         HPoint {
@@ -106,6 +88,37 @@ impl<T: Ring> HPoint<T> {
 }
 
 /// # Comparisons
+/// # The de Casteljau step
+impl<T: MulAcc> HPoint<T> {
+    /// `(1 − t)·self + t·other`, the de Casteljau step.
+    pub fn lerp(&self, other: &Self, t: &T) -> Self {
+        let s = T::one() - t;
+        self.combine(&s, other, t)
+    }
+
+    /// `a·self + b·other`.
+    pub fn combine(&self, a: &T, other: &Self, b: &T) -> Self {
+        let mut out = self.clone();
+        out.combine_assign(a, other, b);
+        out
+    }
+
+    /// `self ← a·self + b·other` in place, one [`MulAcc::mul_acc`] per
+    /// coordinate (a scalar type may do each in one pass: `Poly` merges
+    /// the four streams of a step by binomials at once).
+    pub fn combine_assign(&mut self, a: &T, other: &Self, b: &T) {
+        for (x, y) in self.coords.iter_mut().zip(&other.coords) {
+            T::mul_acc(x, a, b, y);
+        }
+    }
+}
+
+/// One de Casteljau step on `row[i]`: `row[i] ← a·row[i] + b·row[i + 1]`.
+pub(crate) fn step_in_place<T: MulAcc>(row: &mut [HPoint<T>], i: usize, a: &T, b: &T) {
+    let (head, tail) = row.split_at_mut(i + 1);
+    head[i].combine_assign(a, &tail[0], b);
+}
+
 impl<T: Scalar> HPoint<T> {
     /// `(w·P, w)` from a Cartesian point `P` and weight `w`.
     pub fn from_point(point: &[T], weight: &T) -> Self {
@@ -198,11 +211,11 @@ pub fn de_casteljau<T: Scalar>(points: &[HPoint<T>], t: &T) -> HPoint<T> {
 /// let scaled = de_casteljau_hom(&pts, &ratio(2, 1), &ratio(1, 1)); // (2 : 1) is t = 1/3, times 3³
 /// assert_eq!(scaled, de_casteljau(&pts, &t).scale(&ratio(27, 1)));
 /// ```
-pub fn de_casteljau_hom<T: Ring>(points: &[HPoint<T>], a: &T, b: &T) -> HPoint<T> {
+pub fn de_casteljau_hom<T: MulAcc>(points: &[HPoint<T>], a: &T, b: &T) -> HPoint<T> {
     let mut row: Vec<HPoint<T>> = points.to_vec();
     for k in (1..row.len()).rev() {
         for i in 0..k {
-            row[i] = row[i].combine(a, &row[i + 1], b);
+            step_in_place(&mut row, i, a, b);
         }
     }
     row.swap_remove(0)

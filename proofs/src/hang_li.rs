@@ -108,18 +108,6 @@ fn free_semicircle() -> QuadArc<Poly> {
     ])
 }
 
-/// The homogeneous point of `curve` at the homogeneous parameter `(a : b)`,
-/// i.e. `Σ C(n,i) a^{n−i} bⁱ Cᵢ`, by de Casteljau.
-fn eval_at(curve: &RationalCurve<Poly>, a: &Poly, b: &Poly) -> HPoint<Poly> {
-    let mut row = curve.ctrl().to_vec();
-    for len in (1..row.len()).rev() {
-        for i in 0..len {
-            row[i] = row[i].combine(a, &row[i + 1], b);
-        }
-    }
-    row.swap_remove(0)
-}
-
 /// The 2×2 minors of two homogeneous points: all zero iff proportional.
 fn minors(p: &HPoint<Poly>, q: &HPoint<Poly>) -> Vec<Poly> {
     let n = p.coords.len();
@@ -498,12 +486,8 @@ fn eq6_reparam() -> Claim {
     let c1 = arc.cubic_hom(&s1, &one);
     let c2 = arc.cubic_hom(&s2, &one);
     // (1 − u : u) = (Δ(1−ū) : ū) = (σ₁(1−ū) : σ₂ū).
-    let moved = eval_at(
-        &c1,
-        &(s1.clone() * &(one.clone() - &ub)),
-        &(s2.clone() * &ub),
-    );
-    let direct = eval_at(&c2, &(one - &ub), &ub);
+    let moved = c1.eval_hom_param(&(s1.clone() * &(one.clone() - &ub)), &(s2.clone() * &ub));
+    let direct = c2.eval_hom_param(&(one - &ub), &ub);
     all_zero(
         "eq. (6): the cubic for λ₁ at u = ū/(Δ(1−ū)+ū) is the cubic for λ₂ at ū, Δ = ∛([1−λ₁k][1+2λ₂ck]/([1+2λ₁ck][1−λ₂k])); also for θ = π",
         &format!("{SRC} eq. (6)"),
@@ -543,8 +527,8 @@ fn parameter_lemma() -> Claim {
     let arc = free_arc(&v("c"));
     let one = int(1);
     let cubic = arc.cubic_hom(&sg, &one);
-    let on_cubic = eval_at(&cubic, &(one.clone() - &ub), &ub);
-    let on_quad = eval_at(&arc.to_curve(), &(one - &ub), &(sg * &ub));
+    let on_cubic = cubic.eval_hom_param(&(one.clone() - &ub), &ub);
+    let on_quad = arc.to_curve().eval_hom_param(&(one - &ub), &(sg * &ub));
     all_zero(
         "the cubic with weight ratio σ passes at ū through the point of quadratic parameter s with s/(1−s) = σ·ū/(1−ū); hence ū = √μ/(σ+√μ) and σ = √μ(1/ū − 1)",
         &format!("{SRC} §3 (basis of eqs. 7–11)"),

@@ -450,10 +450,7 @@ impl Poly {
     /// (Packing the lists for the merge costs more than it saves: the merge
     /// touches each term once, packing and unpacking touch it twice.)
     fn combine(parts: Vec<(&Terms, Int, Int)>) -> Poly {
-        let lcm = parts.iter().fold(Int::Small(1), |l, (_, _, d)| {
-            let g = l.gcd(d);
-            mul(&l, &d.div_exact(&g))
-        });
+        let lcm = lcm_of(parts.iter().map(|(_, _, d)| d));
         let scaled: Vec<(&Terms, Int)> = parts
             .into_iter()
             .map(|(t, n, d)| (t, mul(&n, &lcm.div_exact(&d))))
@@ -490,6 +487,42 @@ impl Poly {
         Poly::normalized(t, mul(&self.den, &fa))
     }
 
+    /// `Σ p_k·q_k` in one merge ([`terms::sum_of_shifted`]) when one factor
+    /// of every product has at most two terms: the streams are the longer
+    /// factor times each term of the shorter, every coefficient scaled to
+    /// the common denominator `L = lcm(den p_k · den q_k)`. `None` (the
+    /// caller multiplies and adds) when a product has two longer factors:
+    /// those run faster on packed monomials.
+    fn sum_of_products(pairs: &[(&Poly, &Poly)]) -> Option<Poly> {
+        let ordered: Vec<(&Poly, &Poly)> = pairs
+            .iter()
+            .map(|&(p, q)| {
+                if p.terms.len() >= q.terms.len() {
+                    (p, q)
+                } else {
+                    (q, p)
+                }
+            })
+            .collect();
+        if ordered.iter().any(|(_, short)| short.terms.len() > 2) {
+            return None;
+        }
+        let dens: Vec<Int> = ordered.iter().map(|(p, q)| mul(&p.den, &q.den)).collect();
+        let lcm = lcm_of(dens.iter());
+        let parts: Vec<(&Terms, &Monomial, Int)> = ordered
+            .iter()
+            .zip(&dens)
+            .flat_map(|((long, short), d)| {
+                let f = lcm.div_exact(d);
+                short
+                    .terms
+                    .iter()
+                    .map(move |(m, c)| (&long.terms, m, mul(c, &f)))
+            })
+            .collect();
+        Some(Poly::normalized(terms::sum_of_shifted(&parts), lcm))
+    }
+
     /// The product: on packed monomials when both operands have three or
     /// more terms and the result's exponents fit one word, else by the
     /// merge of `terms` (one or two streams, or wide exponents).
@@ -506,6 +539,14 @@ impl Poly {
         };
         Poly::normalized(t, mul(&self.den, &other.den))
     }
+}
+
+/// The least common multiple of positive denominators (1 for none).
+fn lcm_of<'a>(dens: impl Iterator<Item = &'a Int>) -> Int {
+    dens.fold(Int::Small(1), |l, d| {
+        let g = l.gcd(d);
+        mul(&l, &d.div_exact(&g))
+    })
 }
 
 impl Eq for Poly {}
@@ -624,7 +665,16 @@ impl std::iter::Sum for Poly {
     }
 }
 
-impl crate::algebra::scalar::MulAcc for Poly {}
+impl crate::algebra::scalar::MulAcc for Poly {
+    /// `acc·a + c·x` by [`Poly::sum_of_products`] when it applies (the de
+    /// Casteljau step by binomials), else two products and a sum.
+    fn mul_acc(acc: &mut Poly, a: &Poly, c: &Poly, x: &Poly) {
+        *acc = match Poly::sum_of_products(&[(acc, a), (c, x)]) {
+            Some(p) => p,
+            None => std::mem::take(acc) * a + &(c.clone() * x),
+        };
+    }
+}
 
 impl Scalar for Poly {
     fn from_i64(n: i64) -> Self {
@@ -891,6 +941,23 @@ mod tests {
                     .collect();
                 prop_assert_eq!(&Poly::normalized(sum_scaled(&lists), lcm), &plain);
                 prop_assert_eq!(parts.into_iter().map(|(p, _)| p).sum::<Poly>(), plain);
+            }
+
+            #[test]
+            fn fused_step_matches_products_and_sum(
+                acc in poly(), x in poly(), a in poly(), c in poly(), k in 0u32..40,
+            ) {
+                // `acc·a + c·x` in one merge (factors of at most two terms)
+                // and by the fallback (longer factors) against two products
+                // and a sum, with one factor scaled past i128.
+                use crate::algebra::scalar::MulAcc;
+                let big = Poly::from_int(7).pow(k);
+                let two = |p: &Poly| Poly::normalized(p.terms.iter().take(2).cloned().collect(), p.den.clone());
+                for (a, c) in [(two(&a), two(&c) * &big), (a.clone(), c.clone() * &big)] {
+                    let mut fused = acc.clone();
+                    Poly::mul_acc(&mut fused, &a, &c, &x);
+                    prop_assert_eq!(fused, acc.clone() * &a + &(c.clone() * &x));
+                }
             }
 
             #[test]

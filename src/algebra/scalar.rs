@@ -118,11 +118,12 @@ pub(crate) fn pow<T: Ring>(x: &T, e: u32) -> T {
 }
 
 /// The multiply-accumulate step of the Horner–Bernstein kernel
-/// ([`crate::eval`]): `acc ← acc·a + c·x`. The default is those ring
-/// operations; a type may override it with a faster route to the same value
-/// (`f64` fuses the two products, the big-integer
-/// [`Int`](crate::algebra::Int) multiplies `c·x` without copying an
-/// operand). Every [`Scalar`] is a `MulAcc`; a scalar type of your own takes
+/// ([`crate::eval`]) and of de Casteljau ([`HPoint::combine`](crate::hpoint::HPoint::combine)):
+/// `acc ← acc·a + c·x`. The default is those ring operations; a type may
+/// override it with a faster route to the same value (`f64` fuses the two
+/// products, the big-integer [`Int`](crate::algebra::Int) multiplies `c·x`
+/// without copying an operand, [`Poly`](crate::Poly) merges both products
+/// by binomials into one output). Every [`Scalar`] is a `MulAcc`; a scalar type of your own takes
 /// the default with an empty `impl MulAcc for MyScalar {}`.
 pub trait MulAcc: Ring {
     /// `*acc = acc·a + c·x`.

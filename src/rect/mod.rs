@@ -183,13 +183,7 @@ impl<T: Scalar> RectPatch<T> {
 
 /// de Casteljau with homogeneous parameter `(a, b)`: `b_i ← a·b_i + b·b_{i+1}`.
 fn de_casteljau_projective<T: Scalar>(points: &[HPoint<T>], ab: &[T; 2]) -> HPoint<T> {
-    let mut row = points.to_vec();
-    for k in (1..row.len()).rev() {
-        for i in 0..k {
-            row[i] = row[i].combine(&ab[0], &row[i + 1], &ab[1]);
-        }
-    }
-    row.swap_remove(0)
+    crate::hpoint::de_casteljau_hom(points, &ab[0], &ab[1])
 }
 
 /// # Rows, columns, iso-parameter and boundary curves

@@ -72,7 +72,7 @@ pub fn curve_jet<T: Scalar>(points: &[HPoint<T>], t: &T) -> (HPoint<T>, HPoint<T
     let mut row: Vec<HPoint<T>> = points.to_vec();
     for k in (2..row.len()).rev() {
         for i in 0..k {
-            row[i] = row[i].combine(&s, &row[i + 1], t);
+            crate::hpoint::step_in_place(&mut row, i, &s, t);
         }
     }
     let value = row[0].combine(&s, &row[1], t);

@@ -13,14 +13,53 @@
 //! multiplication relies on (Johnson 1974; Monagan & Pearce, *Sparse
 //! polynomial multiplication and division in Maple 14*, 2009).
 //!
-//! Up to six factors live inline (no allocation); the identities checked in
-//! `proofs/` rarely have more than five variables per monomial.
+//! Up to six factors live inline in a fixed array whose unused words are 0
+//! (never a factor: exponents are positive), so that copying, comparing and
+//! hashing an inline monomial are fixed-size operations on six words, and
+//! comparing the padded arrays is comparing the factor slices. The
+//! identities checked in `proofs/` rarely have more than five variables per
+//! monomial; longer monomials are boxed.
 
-use smallvec::SmallVec;
+use std::cmp::Ordering;
 
-/// A packed monomial; the empty monomial is `1`.
-#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
-pub(crate) struct Monomial(SmallVec<[u64; 6]>);
+/// A packed monomial; the empty monomial is `1`. Canonical: `Inline` exactly
+/// when there are at most [`INLINE`] factors.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub(crate) enum Monomial {
+    /// `len` factor words, then zeros.
+    Inline { len: u8, words: [u64; INLINE] },
+    /// More than [`INLINE`] factor words.
+    Long(Box<[u64]>),
+}
+
+/// Factors stored inline.
+const INLINE: usize = 6;
+
+impl Default for Monomial {
+    fn default() -> Monomial {
+        Monomial::Inline {
+            len: 0,
+            words: [0; INLINE],
+        }
+    }
+}
+
+/// The order of the factor slices (see the module doc); two inline
+/// monomials compare as their zero-padded arrays, which is the same.
+impl Ord for Monomial {
+    fn cmp(&self, other: &Monomial) -> Ordering {
+        match (self, other) {
+            (Monomial::Inline { words: a, .. }, Monomial::Inline { words: b, .. }) => a.cmp(b),
+            _ => self.words().cmp(other.words()),
+        }
+    }
+}
+
+impl PartialOrd for Monomial {
+    fn partial_cmp(&self, other: &Monomial) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
 
 fn word(var: u32, exp: u32) -> u64 {
     (u64::from(!var) << 32) | u64::from(exp)
@@ -34,83 +73,129 @@ fn exp_of(w: u64) -> u32 {
     w as u32
 }
 
+/// Merge two factor lists (decreasing words) into `out`, which has room
+/// for both; the number of factors written.
+#[inline]
+fn merge_factors(a: &[u64], b: &[u64], out: &mut [u64]) -> usize {
+    let (mut i, mut j, mut n) = (0, 0, 0);
+    while i < a.len() && j < b.len() {
+        let (x, y) = (a[i], b[j]);
+        out[n] = match (x >> 32).cmp(&(y >> 32)) {
+            Ordering::Equal => {
+                let e = exp_of(x)
+                    .checked_add(exp_of(y))
+                    .expect("monomial exponent overflows u32");
+                i += 1;
+                j += 1;
+                (x & !u64::from(u32::MAX)) | u64::from(e)
+            }
+            // The larger high half is the smaller variable id: first.
+            Ordering::Greater => {
+                i += 1;
+                x
+            }
+            Ordering::Less => {
+                j += 1;
+                y
+            }
+        };
+        n += 1;
+    }
+    for &w in a[i..].iter().chain(&b[j..]) {
+        out[n] = w;
+        n += 1;
+    }
+    n
+}
+
 impl Monomial {
+    /// The monomial of factor words given in decreasing order.
+    fn from_words(w: &[u64]) -> Monomial {
+        if w.len() > INLINE {
+            return Monomial::Long(w.into());
+        }
+        let mut words = [0; INLINE];
+        words[..w.len()].copy_from_slice(w);
+        Monomial::Inline {
+            len: w.len() as u8,
+            words,
+        }
+    }
+
+    /// The factor words, decreasing.
+    fn words(&self) -> &[u64] {
+        match self {
+            Monomial::Inline { len, words } => &words[..usize::from(*len)],
+            Monomial::Long(w) => w,
+        }
+    }
+
     /// `x_var^exp` (`1` when `exp = 0`).
     pub(crate) fn power(var: u32, exp: u32) -> Monomial {
-        let mut m = Monomial::default();
-        if exp > 0 {
-            m.0.push(word(var, exp));
+        if exp == 0 {
+            return Monomial::default();
         }
-        m
+        Monomial::from_words(&[word(var, exp)])
     }
 
     /// The monomial of the factors `(variable id, exponent > 0)` given by
     /// increasing id.
     pub(crate) fn from_factors(f: impl Iterator<Item = (u32, u32)>) -> Monomial {
-        Monomial(f.map(|(v, e)| word(v, e)).collect())
+        let mut f = f.map(|(v, e)| word(v, e));
+        let mut words = [0; INLINE];
+        let mut len = 0;
+        for w in f.by_ref() {
+            words[len] = w;
+            len += 1;
+            if len == INLINE {
+                break;
+            }
+        }
+        match f.next() {
+            None => Monomial::Inline {
+                len: len as u8,
+                words,
+            },
+            Some(w) => {
+                let mut long = words.to_vec();
+                long.push(w);
+                long.extend(f);
+                Monomial::Long(long.into_boxed_slice())
+            }
+        }
     }
 
     /// Is this the monomial `1`?
     pub(crate) fn is_one(&self) -> bool {
-        self.0.is_empty()
+        self.words().is_empty()
     }
 
     /// The factors `(variable id, exponent)`, by increasing id.
     pub(crate) fn factors(&self) -> impl Iterator<Item = (u32, u32)> + '_ {
-        self.0.iter().map(|&w| (var_of(w), exp_of(w)))
+        self.words().iter().map(|&w| (var_of(w), exp_of(w)))
     }
 
     /// The product: a merge of the two factor lists, adding exponents of a
-    /// common variable. **Panics** if an exponent exceeds `u32::MAX`.
+    /// common variable. Factor words compare by their high halves (`!v`);
+    /// a product of at most [`INLINE`] factors is merged straight into the
+    /// inline array. **Panics** if an exponent exceeds `u32::MAX`.
+    #[inline]
     pub(crate) fn mul(&self, other: &Monomial) -> Monomial {
-        match (self.0.len(), other.0.len()) {
-            (_, 0) => return self.clone(),
-            (0, _) => return other.clone(),
-            (_, 1) => return self.times_factor(other.0[0]),
-            (1, _) => return other.times_factor(self.0[0]),
-            _ => {}
+        let (a, b) = (self.words(), other.words());
+        if b.is_empty() {
+            return self.clone();
         }
-        let (a, b) = (&self.0, &other.0);
-        let mut out = SmallVec::with_capacity(a.len() + b.len());
-        let (mut i, mut j) = (0, 0);
-        while i < a.len() && j < b.len() {
-            let (va, vb) = (var_of(a[i]), var_of(b[j]));
-            if va == vb {
-                let e = exp_of(a[i])
-                    .checked_add(exp_of(b[j]))
-                    .expect("monomial exponent overflows u32");
-                out.push(word(va, e));
-                i += 1;
-                j += 1;
-            } else if va < vb {
-                out.push(a[i]);
-                i += 1;
-            } else {
-                out.push(b[j]);
-                j += 1;
-            }
+        if a.is_empty() {
+            return other.clone();
         }
-        out.extend_from_slice(&a[i..]);
-        out.extend_from_slice(&b[j..]);
-        Monomial(out)
-    }
-
-    /// The product with the single factor `w` (the common case of
-    /// multiplying by `s`, `α`, …): one insertion or exponent bump.
-    fn times_factor(&self, w: u64) -> Monomial {
-        let v = var_of(w);
-        let mut out = self.0.clone();
-        match out.iter().position(|&x| var_of(x) >= v) {
-            Some(k) if var_of(out[k]) == v => {
-                let e = exp_of(out[k])
-                    .checked_add(exp_of(w))
-                    .expect("monomial exponent overflows u32");
-                out[k] = word(v, e);
-            }
-            Some(k) => out.insert(k, w),
-            None => out.push(w),
+        if a.len() + b.len() <= INLINE {
+            let mut words = [0; INLINE];
+            let len = merge_factors(a, b, &mut words) as u8;
+            return Monomial::Inline { len, words };
         }
-        Monomial(out)
+        let mut out = vec![0; a.len() + b.len()];
+        let n = merge_factors(a, b, &mut out);
+        Monomial::from_words(&out[..n])
     }
 
     /// Exponent of variable `var` (0 if absent).
@@ -123,25 +208,16 @@ impl Monomial {
     /// The monomial with the exponent of `var` replaced by `exp`. Among
     /// monomials with equal exponents of `var`, this keeps their order.
     pub(crate) fn with_exponent(&self, var: u32, exp: u32) -> Monomial {
-        let mut out: SmallVec<[u64; 6]> = self
-            .0
-            .iter()
-            .copied()
-            .filter(|&w| var_of(w) != var)
-            .collect();
-        if exp > 0 {
-            let at = out
-                .iter()
-                .position(|&w| var_of(w) > var)
-                .unwrap_or(out.len());
-            out.insert(at, word(var, exp));
+        let rest = Monomial::from_factors(self.factors().filter(|&(v, _)| v != var));
+        if exp == 0 {
+            return rest;
         }
-        Monomial(out)
+        rest.mul(&Monomial::power(var, exp))
     }
 
     /// Sum of the exponents.
     pub(crate) fn total_degree(&self) -> u64 {
-        self.0.iter().map(|&w| u64::from(exp_of(w))).sum()
+        self.words().iter().map(|&w| u64::from(exp_of(w))).sum()
     }
 }
 
@@ -166,6 +242,24 @@ mod tests {
         assert_eq!(p.exponent(3), 3);
         assert_eq!(p.with_exponent(3, 0), m(&[(0, 1), (1, 4)]));
         assert_eq!(p.with_exponent(2, 5), m(&[(0, 1), (1, 4), (2, 5), (3, 3)]));
+    }
+
+    #[test]
+    fn long_products_match_exponent_sums() {
+        // 9 and 8 factors (past the stack buffer), overlapping in 4
+        // variables, against the exponents summed per variable.
+        let a: Vec<(u32, u32)> = (0..9).map(|k| (2 * k, k + 1)).collect();
+        let b: Vec<(u32, u32)> = (0..8).map(|k| (3 * k, 2)).collect();
+        let mut want = std::collections::BTreeMap::new();
+        for &(v, e) in a.iter().chain(&b) {
+            *want.entry(v).or_insert(0) += e;
+        }
+        let got = m(&a).mul(&m(&b));
+        assert_eq!(
+            got.factors().collect::<Vec<_>>(),
+            want.into_iter().collect::<Vec<_>>()
+        );
+        assert_eq!(got, m(&b).mul(&m(&a)));
     }
 
     #[test]

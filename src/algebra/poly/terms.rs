@@ -224,3 +224,61 @@ fn drop_zero_last(out: &mut Terms) {
         out.pop();
     }
 }
+
+/// `Σ_k f_k·m_k·t_k`: the sum of the sorted term lists `t_k`, each times
+/// one monomial `m_k` and one integer `f_k ≠ 0`, in one merge of the
+/// streams `m_k·t_k` (each sorted, the order being multiplicative) by
+/// scanning their few heads — no intermediate product list and no second
+/// merge to add them. This is the de Casteljau step `a·P + b·Q` with
+/// binomials `a`, `b` (four streams), written once to its output.
+pub(crate) fn sum_of_shifted(parts: &[(&Terms, &Monomial, Int)]) -> Terms {
+    let head = |k: usize, i: usize| {
+        let (t, m, _) = &parts[k];
+        t.get(i).map(|(tm, _)| tm.mul(m))
+    };
+    let mut heads: Vec<Option<Monomial>> = (0..parts.len()).map(|k| head(k, 0)).collect();
+    let mut next = vec![0usize; parts.len()];
+    let mut out: Terms = Vec::with_capacity(parts.iter().map(|(t, _, _)| t.len()).sum());
+    // The streams whose head is the least monomial.
+    let mut least: Vec<usize> = Vec::with_capacity(parts.len());
+    loop {
+        least.clear();
+        for k in 0..heads.len() {
+            let Some(h) = &heads[k] else { continue };
+            let order = least
+                .first()
+                .and_then(|&l| heads[l].as_ref())
+                .map_or(Ordering::Less, |min| h.cmp(min));
+            match order {
+                Ordering::Less => {
+                    least.clear();
+                    least.push(k);
+                }
+                Ordering::Equal => least.push(k),
+                Ordering::Greater => {}
+            }
+        }
+        let Some(&first) = least.first() else { break };
+        let m = heads[first].take().unwrap_or_default();
+        let mut sum: Option<Int> = None;
+        for &k in &least {
+            let (t, _, f) = &parts[k];
+            let i = next[k];
+            let c = if is_one(f) {
+                t[i].1.clone()
+            } else {
+                mul(&t[i].1, f)
+            };
+            sum = Some(match sum {
+                Some(s) => s + &c,
+                None => c,
+            });
+            next[k] = i + 1;
+            heads[k] = head(k, i + 1);
+        }
+        if let Some(sum) = sum.filter(|s| !s.is_zero()) {
+            out.push((m, sum));
+        }
+    }
+    out
+}
