@@ -430,6 +430,9 @@ const EDGE_BATCH: usize = 64;
 
 /// [`measure`] every edge of `edges`, in order, in parallel batches.
 fn measure_all(m: &BrepModel, edges: &[&Edge], tol: &JointTolerances) -> Vec<Measured> {
+    // The B-spline faces' exact pieces, converted on all cores before the
+    // surfaces below take them one by one.
+    m.convert_pieces();
     let swept = swept_grids(m);
     let splines = spline_surfaces(m, &swept);
     let outer = limits::current();
