@@ -19,6 +19,12 @@ use std::collections::HashMap;
 /// The most entries a table keeps before it is cleared.
 pub(crate) const CAPACITY: usize = 4096;
 
+/// The longest integer (in bits) whose gcds and enclosures are kept: with
+/// [`CAPACITY`] entries a table then holds at most a few megabytes, even
+/// when hostile input brings bases of thousands of digits (those are
+/// computed every time).
+pub(crate) const MAX_KEPT_BITS: u64 = 1024;
+
 type GcdKey = (BigInt, BigInt);
 type EnclosureKey = (BigInt, i64, i64, usize);
 
@@ -30,8 +36,12 @@ thread_local! {
 
 /// `gcd(a, b)` of two positive integers, by Lehmer's algorithm
 /// ([`crate::algebra::gcd::gcd`]), remembered on this thread (the key is
-/// the ordered pair, so `gcd(b, a)` is the same entry).
+/// the ordered pair, so `gcd(b, a)` is the same entry) unless one is
+/// longer than [`MAX_KEPT_BITS`].
 pub(crate) fn base_gcd(a: &BigInt, b: &BigInt) -> BigInt {
+    if a.bits().max(b.bits()) > MAX_KEPT_BITS {
+        return BigInt::from(crate::algebra::gcd::gcd(a.magnitude(), b.magnitude()));
+    }
     let key = if a <= b {
         (a.clone(), b.clone())
     } else {
@@ -46,13 +56,17 @@ pub(crate) fn base_gcd(a: &BigInt, b: &BigInt) -> BigInt {
 }
 
 /// The enclosure `compute()` of `b^(num/den)` at `w` fractional bits,
-/// remembered on this thread under `(b, num, den, w)`.
+/// remembered on this thread under `(b, num, den, w)` unless `b` or `w` is
+/// over [`MAX_KEPT_BITS`].
 pub(crate) fn power_enclosure(
     b: &BigInt,
     (num, den): (i64, i64),
     w: usize,
     compute: impl FnOnce() -> (BigInt, BigInt),
 ) -> (BigInt, BigInt) {
+    if b.bits() > MAX_KEPT_BITS || w as u64 > MAX_KEPT_BITS {
+        return compute();
+    }
     let key = (b.clone(), num, den, w);
     if let Some(e) = ENCLOSURES.with(|t| t.borrow().get(&key).cloned()) {
         return e;
@@ -111,6 +125,21 @@ mod tests {
             (BigInt::from(1), BigInt::from(2))
         });
         assert_eq!(calls, 2);
+    }
+
+    #[test]
+    fn a_long_base_is_computed_every_time() {
+        let b = BigInt::from(3) << 2000usize;
+        let mut calls = 0;
+        for _ in 0..2 {
+            power_enclosure(&b, (1, 2), 40, || {
+                calls += 1;
+                (BigInt::from(1), BigInt::from(2))
+            });
+        }
+        assert_eq!(calls, 2);
+        assert_eq!(base_gcd(&b, &BigInt::from(6)), BigInt::from(6));
+        assert_eq!(GCDS.with(|t| t.borrow().len()), 0);
     }
 
     #[test]
