@@ -217,6 +217,17 @@ pub trait Ordered: Field + PartialOrd {
     /// numbers); `None` (the default) where comparing the values is as
     /// cheap (`f64`, rationals). Callers use them to skip exact work whose
     /// outcome the bounds already decide, never in place of an answer.
+    ///
+    /// ```
+    /// use exact_bezier::{algebra::RealAlgebraic, Ordered, Roots, Scalar};
+    /// let r2 = RealAlgebraic::from_i64(2).nth_root(2).unwrap();
+    /// let (lo, hi) = r2.rational_bounds().unwrap();
+    /// // lo ≤ √2 ≤ hi, checked on the squares of the (positive) bounds.
+    /// let two = exact_bezier::ratio(2, 1);
+    /// assert!(lo.clone() * &lo <= two && two <= hi.clone() * &hi);
+    /// assert!(hi - lo < exact_bezier::ratio(1, 1i64 << 60));
+    /// assert_eq!(2.5f64.rational_bounds(), None);
+    /// ```
     fn rational_bounds(&self) -> Option<(BigRational, BigRational)> {
         None
     }

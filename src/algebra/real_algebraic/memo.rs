@@ -39,8 +39,9 @@ thread_local! {
 /// the ordered pair, so `gcd(b, a)` is the same entry) unless one is
 /// longer than [`MAX_KEPT_BITS`].
 pub(crate) fn base_gcd(a: &BigInt, b: &BigInt) -> BigInt {
+    let compute = || BigInt::from(crate::algebra::gcd::gcd(a.magnitude(), b.magnitude()));
     if a.bits().max(b.bits()) > MAX_KEPT_BITS {
-        return BigInt::from(crate::algebra::gcd::gcd(a.magnitude(), b.magnitude()));
+        return compute();
     }
     let key = if a <= b {
         (a.clone(), b.clone())
@@ -50,7 +51,7 @@ pub(crate) fn base_gcd(a: &BigInt, b: &BigInt) -> BigInt {
     if let Some(g) = GCDS.with(|t| t.borrow().get(&key).cloned()) {
         return g;
     }
-    let g = BigInt::from(crate::algebra::gcd::gcd(a.magnitude(), b.magnitude()));
+    let g = compute();
     remember(&GCDS, key, g.clone());
     g
 }
