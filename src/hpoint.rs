@@ -87,7 +87,6 @@ impl<T: Ring> HPoint<T> {
     }
 }
 
-/// # Comparisons
 /// # The de Casteljau step
 impl<T: MulAcc> HPoint<T> {
     /// `(1 − t)·self + t·other`, the de Casteljau step.
@@ -119,6 +118,7 @@ pub(crate) fn step_in_place<T: MulAcc>(row: &mut [HPoint<T>], i: usize, a: &T, b
     head[i].combine_assign(a, &tail[0], b);
 }
 
+/// # Comparisons
 impl<T: Scalar> HPoint<T> {
     /// `(w·P, w)` from a Cartesian point `P` and weight `w`.
     pub fn from_point(point: &[T], weight: &T) -> Self {
