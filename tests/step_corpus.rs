@@ -997,3 +997,154 @@ fn assembly_occurrences_place_every_vertex_where_open_cascade_does() {
         }
     }
 }
+
+/// Files whose pcurves include analytic ones on elementary surfaces.
+const ANALYTIC_PCURVES: [&str; 3] = ["as1-oc-214.stp", "revolved_vase_occt.step", "screw.step"];
+
+/// The point `σ(u, v)` of the elementary surface `id` in the file's own
+/// parameterization (ISO 10303-42 §4.4), in `f64`, read here from the raw
+/// entities; `None` for other types. Angles in radians.
+fn surface_point_f64(s: &Store, id: u64, u: f64, v: f64) -> Option<[f64; 3]> {
+    let rec = &s[&id].records[0];
+    if s[&id].complex || !rec.name.ends_with("SURFACE") && rec.name != "PLANE" {
+        return None;
+    }
+    let f = |x: &[R]| -> Vec<f64> { x.iter().map(Ordered::to_f64).collect() };
+    let [c, z, x] = frame(s, reference(&rec.params[1])?).map(|p| f(&p));
+    let unit = |a: Vec<f64>| {
+        let n = a.iter().map(|t| t * t).sum::<f64>().sqrt();
+        a.into_iter().map(|t| t / n).collect::<Vec<f64>>()
+    };
+    let z = unit(z);
+    let xz: f64 = (0..3).map(|i| x[i] * z[i]).sum();
+    let x = unit((0..3).map(|i| x[i] - xz * z[i]).collect());
+    let y = [
+        z[1] * x[2] - z[2] * x[1],
+        z[2] * x[0] - z[0] * x[2],
+        z[0] * x[1] - z[1] * x[0],
+    ];
+    let number = |i: usize| num(&rec.params[i]).to_f64();
+    // σ = C + a·x̂ + b·ŷ + h·ẑ.
+    let (a, b, h) = match rec.name.as_str() {
+        "PLANE" => (u, v, 0.0),
+        "CYLINDRICAL_SURFACE" => (number(2) * u.cos(), number(2) * u.sin(), v),
+        "CONICAL_SURFACE" => {
+            let r = number(2) + v * number(3).tan();
+            (r * u.cos(), r * u.sin(), v)
+        }
+        "SPHERICAL_SURFACE" => {
+            let r = number(2);
+            (r * v.cos() * u.cos(), r * v.cos() * u.sin(), r * v.sin())
+        }
+        "TOROIDAL_SURFACE" => {
+            let (big, small) = (number(2), number(3));
+            let r = big + small * v.cos();
+            (r * u.cos(), r * u.sin(), small * v.sin())
+        }
+        _ => return None,
+    };
+    Some([0, 1, 2].map(|i| c[i] + a * x[i] + b * y[i] + h * z[i]))
+}
+
+fn distance(p: &[f64], q: &[f64]) -> f64 {
+    p.iter()
+        .zip(q)
+        .map(|(a, b)| (a - b).powi(2))
+        .sum::<f64>()
+        .sqrt()
+}
+
+/// The points of an edge's 3D analytic pieces at 4 000 parameters each, in
+/// `f64`.
+fn samples(pieces: &[exact_bezier::patch::Patch<RealAlgebraic>]) -> Vec<Vec<f64>> {
+    pieces
+        .iter()
+        .flat_map(|p| match p {
+            exact_bezier::patch::Patch::Curve(c) => {
+                let c = c.map(|x| x.to_f64());
+                (0..=4000)
+                    .map(|k| c.eval(&(f64::from(k) / 4000.0)).unwrap())
+                    .collect::<Vec<_>>()
+            }
+            _ => panic!("an edge piece is a curve"),
+        })
+        .collect()
+}
+
+/// Every analytic pcurve on an elementary surface is trimmed to its edge:
+/// the surface (evaluated independently, from the raw entities) maps its
+/// first and last points onto the edge's start and end vertices within the
+/// tolerance, and its middle onto the edge's 3D curve; their number equals
+/// an independent count of such pcurves in the file.
+#[test]
+fn analytic_pcurves_run_between_their_edges_vertices() {
+    for name in ANALYTIC_PCURVES {
+        let m = read(name, true);
+        let s = store(name);
+        let tol = Ordered::to_f64(&tolerance_sq(&m)).sqrt();
+        let elementary = |id: u64| surface_point_f64(&s, id, 0.0, 0.0).is_some();
+        let expected = s
+            .values()
+            .filter(|i| i.records[0].name == "PCURVE")
+            .filter(|i| {
+                let p = &i.records[0].params;
+                let surface = reference(&p[1]).unwrap();
+                let rep = reference(&p[2]).unwrap();
+                let curve = match &params(&s, rep)[1] {
+                    exact_bezier::step::parser::Param::List(xs) => reference(&xs[0]).unwrap(),
+                    p => panic!("{p:?}"),
+                };
+                let kind = &s[&curve].records[0].name;
+                elementary(surface)
+                    && (kind == "LINE"
+                        || (s[&surface].records[0].name == "PLANE" && kind == "CIRCLE"))
+            })
+            .count();
+        let mut checked = 0;
+        for e in m.edges.values() {
+            for pc in &e.pcurves {
+                let Geometry::Analytic(a) = &pc.curve.geometry else {
+                    continue;
+                };
+                let at = |p: Vec<R>| {
+                    surface_point_f64(&s, pc.surface, p[0].to_f64(), p[1].to_f64()).unwrap()
+                };
+                let (first, last) = (
+                    first_point(&a.pieces[0]),
+                    last_point(&a.pieces[a.pieces.len() - 1]),
+                );
+                for (end, vertex) in [(first, e.start), (last, e.end)] {
+                    let v: Vec<f64> = m.vertices[&vertex].iter().map(Ordered::to_f64).collect();
+                    let d = distance(&at(end), &v);
+                    assert!(
+                        d <= tol + 1e-9,
+                        "{name}: pcurve #{} of edge #{}: {d}",
+                        pc.id,
+                        e.id
+                    );
+                }
+                if let Geometry::Analytic(edge) = &e.curve.geometry {
+                    let middle = match &a.pieces[a.pieces.len() / 2] {
+                        exact_bezier::patch::Patch::Curve(c) => c
+                            .eval(&R::from_rational(&BigRational::new(1.into(), 2.into())))
+                            .unwrap(),
+                        _ => panic!("a pcurve piece is a curve"),
+                    };
+                    let p = at(middle);
+                    let near = samples(&edge.pieces)
+                        .iter()
+                        .map(|q| distance(q, &p))
+                        .fold(f64::MAX, f64::min);
+                    assert!(
+                        near < 1e-3 * (1.0 + p.iter().map(|x| x.abs()).fold(0.0, f64::max)),
+                        "{name}: pcurve #{} of edge #{} strays {near} from it",
+                        pc.id,
+                        e.id
+                    );
+                }
+                checked += 1;
+            }
+        }
+        assert_eq!(checked, expected, "{name}");
+    }
+}

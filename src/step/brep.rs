@@ -626,16 +626,25 @@ impl Builder<'_> {
     /// analytic pieces cover their edges' curves), each on all cores.
     fn read_geometry(&mut self) {
         let edges = std::mem::take(&mut self.pending_edges);
-        let curves: Vec<(u64, GeometryRef)> = edges
+        let curves: Vec<(u64, GeometryRef, Vec<GeometryRef>)> = edges
             .par_iter()
             .map(|p| {
                 let curve = self.edge_curve(&p.units, p.curve, p.ends, p.same_sense);
-                (p.edge, curve)
+                let pcurves = self.model.edges.get(&p.edge).map_or_else(Vec::new, |e| {
+                    e.pcurves
+                        .iter()
+                        .map(|pc| self.pcurve_geometry(&p.units, pc, p.ends, p.same_sense))
+                        .collect()
+                });
+                (p.edge, curve, pcurves)
             })
             .collect();
-        for (edge, curve) in curves {
+        for (edge, curve, pcurves) in curves {
             if let Some(e) = self.model.edges.get_mut(&edge) {
                 e.curve = curve;
+                for (pc, geometry) in e.pcurves.iter_mut().zip(pcurves) {
+                    pc.curve = geometry;
+                }
             }
         }
         let faces = std::mem::take(&mut self.pending_faces);
@@ -1229,6 +1238,7 @@ impl Shell {
 
 mod analytic;
 mod assembly;
+mod pcurve;
 pub use assembly::{Occurrence, Placement, MAX_OCCURRENCES};
 #[cfg(test)]
 mod tests;

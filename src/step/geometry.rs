@@ -7,7 +7,8 @@
 //! unit and, optionally, a reader of B-spline curves (B-spline entities are
 //! read by [`read_step`](super::read_step); the swept curve of an extrusion
 //! or revolution and the basis of a trimmed curve may be one). Two entry
-//! points: [`curve_pieces`] and [`surface_pieces`]. Every number is read
+//! points: [`curve_pieces`] and [`surface_pieces`]; [`surface_parameters`]
+//! locates points in an elementary surface's parameter plane. Every number is read
 //! exactly with [`parse_rational`]; directions are normalised exactly
 //! ([`Frame::from_placement`]), so `T` needs exact square roots for general
 //! files: [`RealAlgebraic`](crate::algebra::RealAlgebraic).
@@ -52,6 +53,9 @@ use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 use std::collections::HashMap;
+
+mod parameters;
+pub use parameters::{surface_parameters, Parameter, SurfaceParameters};
 
 /// The DATA section's instances by id.
 pub type Table = HashMap<u64, Instance>;

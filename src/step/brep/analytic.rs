@@ -18,8 +18,8 @@
 //!   loops and the points of poly loops ([`covering_range`](crate::analytic::covering_range)).
 //!   Closed directions (angles) are whole turns.
 //! - `PCURVE`s (curves in a surface's parameter plane) are converted when
-//!   they are B-splines; analytic pcurves are named, not converted (their
-//!   range on the edge needs the vertices' surface parameters).
+//!   they are B-splines, and trimmed to their edge when they are analytic
+//!   ([`pcurve`](super::pcurve)).
 
 use super::BSpline;
 use super::{
@@ -61,7 +61,7 @@ impl Units {
     }
 }
 
-fn lift(p: &[BigRational]) -> Vec<RealAlgebraic> {
+pub(super) fn lift(p: &[BigRational]) -> Vec<RealAlgebraic> {
     p.iter().map(RealAlgebraic::from_rational).collect()
 }
 
@@ -157,7 +157,7 @@ fn control_points(pieces: &[Patch<RealAlgebraic>]) -> Vec<Vec<RealAlgebraic>> {
 
 impl Builder<'_> {
     /// The geometry readers over this file, in `units`.
-    fn with_readers<R>(
+    pub(super) fn with_readers<R>(
         &self,
         units: &Units,
         f: impl FnOnce(&Readers<'_, RealAlgebraic>) -> R,
@@ -208,7 +208,7 @@ impl Builder<'_> {
         }
     }
 
-    fn trimmed_curve(
+    pub(super) fn trimmed_curve(
         &self,
         units: &Units,
         id: u64,

@@ -1,5 +1,5 @@
 use super::*;
-use crate::algebra::{RealAlgebraic, Scalar};
+use crate::algebra::{Ordered, RealAlgebraic, Scalar};
 use crate::patch::Patch;
 use crate::ratio;
 use std::collections::BTreeMap;
@@ -307,6 +307,123 @@ fn a_seam_edge_is_used_twice_by_one_face_with_its_pcurves() {
     assert_eq!(m.edges[&40].usage(), EdgeUse::Open);
     assert_eq!(m.loose_shells.len(), 1);
     assert_eq!(m.summary.faces_by_surface["CYLINDRICAL_SURFACE"], 1);
+}
+
+/// The pcurve pieces of edge `e` on surface `surface`, in `f64`: its first,
+/// middle (the middle piece at ½) and last points.
+fn pcurve_points(m: &BrepModel, e: u64, surface: u64) -> [[f64; 2]; 3] {
+    let pc = m.edges[&e]
+        .pcurves
+        .iter()
+        .find(|p| p.surface == surface)
+        .unwrap();
+    let Geometry::Analytic(a) = &pc.curve.geometry else {
+        panic!("{:?}", pc.curve.geometry)
+    };
+    let at = |k: usize, t: i64| {
+        let Patch::Curve(c) = &a.pieces[k] else {
+            panic!("a pcurve piece is a curve")
+        };
+        let p = c.eval(&RealAlgebraic::from_rational(&q(t, 2))).unwrap();
+        [p[0].to_f64(), p[1].to_f64()]
+    };
+    let n = a.pieces.len();
+    [at(0, 0), at(n / 2, 1), at(n - 1, 2)]
+}
+
+/// A half cylinder x² + y² = 1, 0 ≤ z ≤ 2, y ≤ 0: two arc edges run
+/// against their circles (`same_sense` false) from (1, 0) to (−1, 0)
+/// through (0, −1), two line edges; each with a LINE pcurve. The arcs'
+/// pcurves walk from u = 0 down to u = −π, the lines' sit at u = 0 and at
+/// u = π (not −π: the turn nearest the line), all exactly straight.
+#[test]
+fn line_pcurves_on_a_cylinder_are_trimmed_to_their_edges() {
+    let data = "\
+#1=CARTESIAN_POINT('',(0.,0.,0.));#2=DIRECTION('',(0.,0.,1.));#3=DIRECTION('',(1.,0.,0.));\n\
+#4=AXIS2_PLACEMENT_3D('',#1,#2,#3);#5=CYLINDRICAL_SURFACE('',#4,1.);\n\
+#6=CARTESIAN_POINT('',(0.,0.,2.));#7=AXIS2_PLACEMENT_3D('',#6,#2,#3);\n\
+#11=VERTEX_POINT('',#21);#12=VERTEX_POINT('',#22);#13=VERTEX_POINT('',#23);#14=VERTEX_POINT('',#24);\n\
+#21=CARTESIAN_POINT('',(1.,0.,0.));#22=CARTESIAN_POINT('',(-1.,0.,0.));\n\
+#23=CARTESIAN_POINT('',(1.,0.,2.));#24=CARTESIAN_POINT('',(-1.,0.,2.));\n\
+#30=DIRECTION('',(1.,0.));#31=VECTOR('',#30,1.);#32=DIRECTION('',(0.,1.));#33=VECTOR('',#32,1.);\n\
+#34=CARTESIAN_POINT('',(0.,0.));#35=CARTESIAN_POINT('',(0.,2.));#36=CARTESIAN_POINT('',(3.14159265359,0.));\n\
+#40=EDGE_CURVE('',#11,#12,#41,.F.);#41=SURFACE_CURVE('',#42,(#43),.CURVE_3D.);#42=CIRCLE('',#4,1.);\n\
+#43=PCURVE('',#5,#44);#44=DEFINITIONAL_REPRESENTATION('',(#45),#9);#45=LINE('',#34,#31);\n\
+#50=EDGE_CURVE('',#13,#14,#51,.F.);#51=SURFACE_CURVE('',#52,(#53),.CURVE_3D.);#52=CIRCLE('',#7,1.);\n\
+#53=PCURVE('',#5,#54);#54=DEFINITIONAL_REPRESENTATION('',(#55),#9);#55=LINE('',#35,#31);\n\
+#60=EDGE_CURVE('',#11,#13,#61,.T.);#61=SURFACE_CURVE('',#62,(#63),.CURVE_3D.);#62=LINE('',#21,#68);\n\
+#63=PCURVE('',#5,#64);#64=DEFINITIONAL_REPRESENTATION('',(#65),#9);#65=LINE('',#34,#33);\n\
+#66=DIRECTION('',(0.,0.,1.));#68=VECTOR('',#66,1.);\n\
+#70=EDGE_CURVE('',#12,#14,#71,.T.);#71=SURFACE_CURVE('',#72,(#73),.CURVE_3D.);#72=LINE('',#22,#68);\n\
+#73=PCURVE('',#5,#74);#74=DEFINITIONAL_REPRESENTATION('',(#75),#9);#75=LINE('',#36,#33);\n\
+#81=ORIENTED_EDGE('',*,*,#40,.T.);#82=ORIENTED_EDGE('',*,*,#70,.T.);\n\
+#83=ORIENTED_EDGE('',*,*,#50,.F.);#84=ORIENTED_EDGE('',*,*,#60,.F.);\n\
+#85=EDGE_LOOP('',(#81,#82,#83,#84));#86=FACE_OUTER_BOUND('',#85,.T.);\n\
+#87=ADVANCED_FACE('',(#86),#5,.T.);#88=OPEN_SHELL('',(#87));\n";
+    let m = read(data);
+    assert!(
+        m.summary.pcurves_not_converted.is_empty(),
+        "{:?}",
+        m.summary
+    );
+    let pi = std::f64::consts::PI;
+    let near =
+        |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).abs() < 1e-12 && (a[1] - b[1]).abs() < 1e-12;
+    for (edge, z) in [(40, 0.0), (50, 2.0)] {
+        let [first, middle, last] = pcurve_points(&m, edge, 5);
+        assert!(
+            near(first, [0.0, z]) && near(last, [-pi, z]),
+            "edge #{edge}: {first:?} {last:?}"
+        );
+        // The middle lies on the walked half, u ∈ (−π, 0).
+        assert!(
+            middle[0] < -0.1 && middle[0] > -pi + 0.1,
+            "edge #{edge}: {middle:?}"
+        );
+    }
+    let [first, _, last] = pcurve_points(&m, 60, 5);
+    assert!(
+        near(first, [0.0, 0.0]) && near(last, [0.0, 2.0]),
+        "{first:?} {last:?}"
+    );
+    let [first, _, last] = pcurve_points(&m, 70, 5);
+    // The vertex (−1, 0) is at u = π by atan2; the line is at 3.14159265359.
+    assert!(
+        (first[0] - pi).abs() < 1e-10 && (last[0] - pi).abs() < 1e-10,
+        "{first:?} {last:?}"
+    );
+    assert_eq!((first[1], last[1]), (0.0, 2.0));
+}
+
+/// On a plane the pcurve is trimmed exactly: the vertices' frame
+/// coordinates lie on it and the squared distances are 0.
+#[test]
+fn a_pcurve_on_a_plane_is_trimmed_exactly() {
+    let data = format!(
+        "{SQUARE}#90=SURFACE_CURVE('',#31,(#91),.CURVE_3D.);#91=PCURVE('',#52,#92);\n\
+#92=DEFINITIONAL_REPRESENTATION('',(#93),#9);#93=LINE('',#94,#95);\n\
+#94=CARTESIAN_POINT('',(0.,0.));#95=VECTOR('',#96,1.);#96=DIRECTION('',(1.,0.));\n"
+    )
+    .replace(
+        "#21=EDGE_CURVE('',#11,#12,#31,.T.)",
+        "#21=EDGE_CURVE('',#11,#12,#90,.T.)",
+    );
+    let m = read(&data);
+    let pc = &m.edges[&21].pcurves[0];
+    let Geometry::Analytic(a) = &pc.curve.geometry else {
+        panic!("{:?}", pc.curve.geometry)
+    };
+    let zero = RealAlgebraic::from_i64(0);
+    assert_eq!(a.vertex_distance_sq, Some([zero.clone(), zero]));
+    let Patch::Curve(c) = &a.pieces[0] else {
+        panic!()
+    };
+    let one = RealAlgebraic::from_i64(1);
+    let z = RealAlgebraic::from_i64(0);
+    assert_eq!(
+        c.points().unwrap(),
+        vec![vec![z.clone(), z.clone()], vec![one, z]]
+    );
 }
 
 /// A rational quasi-uniform B-spline curve edge written as a complex

@@ -1,0 +1,219 @@
+//! Analytic `PCURVE`s (a `LINE`, `CIRCLE`, … in a surface's parameter
+//! plane) trimmed to their edge, like the edge's 3D curve: from the start
+//! vertex to the end vertex, along the curve when the edge's `same_sense`.
+//!
+//! The vertices are 3D points; their place in the parameter plane is the
+//! surface's own parameters of them ([`surface_parameters`]: planes,
+//! cylinders, cones, spheres and tori):
+//!
+//! - on a **plane** both parameters are exact (the frame coordinates), the
+//!   pcurve is trimmed exactly like a 3D edge ([`trim_between`]) and the
+//!   exact squared distances in the parameter plane are kept
+//!   (`vertex_distance_sq`);
+//! - on the other surfaces an angle is located in `f64` and is defined up to
+//!   whole turns. Only `LINE` pcurves are trimmed there (what CAD systems
+//!   write: a cylinder's seam `u = const`, a circle edge `v = const`, a
+//!   helix); the turn of each angle is chosen by the line: where the line
+//!   holds the angle constant or crosses its direction, the turn nearest to
+//!   the line; where the line runs along the angle only (a circle edge),
+//!   the start is taken in the turn that begins at the line's point and the
+//!   end is reached by walking from it in the edge's direction (a whole turn
+//!   for a closed edge). The pieces are exactly the pcurve's between the
+//!   located parameters; no `vertex_distance_sq` is written.
+//!
+//! Pcurves on B-spline and swept surfaces (whose parameters need an
+//! inversion) and non-line pcurves on curved surfaces stay unconverted and
+//! are counted (`pcurves_not_converted`).
+//!
+//! [`trim_between`]: crate::analytic::trim_between
+
+use super::{type_name, Builder, Geometry, GeometryRef, Pcurve};
+use crate::algebra::{Ordered, RealAlgebraic, Scalar};
+use crate::error::Error;
+use crate::step::brep::analytic::{lift, Units};
+use crate::step::geometry::{curve_pieces, surface_parameters, Curve, Parameter};
+use num_rational::BigRational;
+
+/// A 2D point located in `f64`, with the period of each coordinate.
+type Located = [(f64, Option<f64>); 2];
+
+impl Builder<'_> {
+    /// The geometry of the pcurve `pc` of an edge from `start` to `end`:
+    /// trimmed to the edge when it is analytic (module docs), else as read.
+    pub(super) fn pcurve_geometry(
+        &self,
+        units: &Units,
+        pc: &Pcurve,
+        (start, end): (u64, u64),
+        same_sense: bool,
+    ) -> GeometryRef {
+        let mut out = pc.curve.clone();
+        if !self.analytic || !matches!(out.geometry, Geometry::NotConverted) {
+            return out;
+        }
+        let ends = [start, end].map(|v| lift(&self.model.vertices[&v]));
+        out.geometry = self
+            .trimmed_pcurve(units, pc, &ends, start == end, same_sense)
+            .unwrap_or_else(|e| Geometry::Invalid(e.to_string()));
+        out
+    }
+
+    fn trimmed_pcurve(
+        &self,
+        units: &Units,
+        pc: &Pcurve,
+        ends: &[Vec<RealAlgebraic>; 2],
+        closed: bool,
+        same_sense: bool,
+    ) -> Result<Geometry, Error> {
+        let Some(map) = self.with_readers(units, |r| surface_parameters(r, pc.surface))? else {
+            return Ok(Geometry::NotConverted);
+        };
+        let [s, e] = [&ends[0], &ends[1]].map(|p| map.of(p));
+        if let (Some(s), Some(e)) = (exact(&s[0]), exact(&e[0])) {
+            return self.trimmed_curve(units, pc.curve.entity, &s, &e, same_sense);
+        }
+        if type_name(self.store, pc.curve.entity) != "LINE" {
+            return Ok(Geometry::NotConverted);
+        }
+        let line = self.line_f64(units, pc.curve.entity, &[located(&s[0]), located(&e[0])])?;
+        let walk = if same_sense { 1.0 } else { -1.0 };
+        let (s, e, turned) = s
+            .iter()
+            .flat_map(|a| e.iter().map(move |b| (a, b)))
+            .map(|(a, b)| {
+                (
+                    a,
+                    b,
+                    choose_turns([located(a), located(b)], line, closed, walk),
+                )
+            })
+            .min_by(|x, y| line.misfit(&x.2).total_cmp(&line.misfit(&y.2)))
+            .expect("every point has parameters");
+        let (s, e) = (exact_point(s, &turned[0])?, exact_point(e, &turned[1])?);
+        let mut g = self.trimmed_curve(units, pc.curve.entity, &s, &e, same_sense)?;
+        if let Geometry::Analytic(a) = &mut g {
+            a.vertex_distance_sq = None;
+        }
+        Ok(g)
+    }
+
+    /// The line pcurve `id` as a point and direction in `f64`, from its
+    /// pieces cut to cover the located points (any turn: the line is the same).
+    fn line_f64(&self, units: &Units, id: u64, at: &[Located; 2]) -> Result<Line, Error> {
+        let cover = at
+            .iter()
+            .map(|p| p.iter().map(|&(v, _)| from_f64(v)).collect())
+            .collect::<Result<Vec<Vec<RealAlgebraic>>, Error>>()?;
+        let Curve::Pieces(c) = self.with_readers(units, |r| curve_pieces(r, id, &cover))? else {
+            return Err(Error::Format(format!(
+                "#{id}: a LINE pcurve not read as a line"
+            )));
+        };
+        let ends = c
+            .pieces
+            .first()
+            .and_then(|piece| piece.points().ok())
+            .filter(|pts| pts.len() == 2 && pts[0].len() == 2)
+            .ok_or_else(|| Error::Format(format!("#{id}: a LINE pcurve is not one 2D segment")))?;
+        let f = |p: &[RealAlgebraic]| [p[0].to_f64(), p[1].to_f64()];
+        let (p0, p1) = (f(&ends[0]), f(&ends[1]));
+        Ok(Line {
+            point: p0,
+            direction: [p1[0] - p0[0], p1[1] - p0[1]],
+        })
+    }
+}
+
+/// A 2D line `point + t·direction`, in `f64`.
+#[derive(Clone, Copy, Debug)]
+struct Line {
+    point: [f64; 2],
+    direction: [f64; 2],
+}
+
+impl Line {
+    /// The sum of the distances of two points from the line.
+    fn misfit(&self, points: &[[f64; 2]; 2]) -> f64 {
+        let [dx, dy] = self.direction;
+        let length = dx.hypot(dy);
+        points
+            .iter()
+            .map(|p| {
+                let (x, y) = (p[0] - self.point[0], p[1] - self.point[1]);
+                (x * dy - y * dx).abs() / length
+            })
+            .sum()
+    }
+}
+
+/// Both parameters exactly, when neither is an angle.
+fn exact(p: &[Parameter<RealAlgebraic>; 2]) -> Option<Vec<RealAlgebraic>> {
+    p.iter()
+        .map(|x| match x {
+            Parameter::Exact(t) => Some(t.clone()),
+            Parameter::Angle { .. } => None,
+        })
+        .collect()
+}
+
+/// The point with its exact parameters kept and its angles as located
+/// (and turned) in `f64`, `at`.
+fn exact_point(
+    p: &[Parameter<RealAlgebraic>; 2],
+    at: &[f64; 2],
+) -> Result<Vec<RealAlgebraic>, Error> {
+    p.iter()
+        .zip(at)
+        .map(|(x, &v)| match x {
+            Parameter::Exact(t) => Ok(t.clone()),
+            Parameter::Angle { .. } => from_f64(v),
+        })
+        .collect()
+}
+
+fn located(p: &[Parameter<RealAlgebraic>; 2]) -> Located {
+    p.clone().map(|x| match x {
+        Parameter::Exact(t) => (t.to_f64(), None),
+        Parameter::Angle { value, period } => (value, period),
+    })
+}
+
+fn from_f64(v: f64) -> Result<RealAlgebraic, Error> {
+    BigRational::from_float(v)
+        .map(|q| RealAlgebraic::from_rational(&q))
+        .ok_or_else(|| Error::Domain(format!("a surface parameter {v} is not finite")))
+}
+
+/// The start and end points in the parameter plane with each periodic
+/// coordinate moved by whole turns as the module docs say; `walk` is `1`
+/// when the edge runs along the line's direction, `−1` against it.
+fn choose_turns(at: [Located; 2], line: Line, closed: bool, walk: f64) -> [[f64; 2]; 2] {
+    let mut out = at.map(|p| [p[0].0, p[1].0]);
+    for i in 0..2 {
+        let (j, d) = (1 - i, line.direction);
+        let Some(period) = at[0][i].1 else {
+            continue;
+        };
+        if d[j] == 0.0 && d[i] != 0.0 {
+            let base = line.point[i] - 1e-9 * period;
+            out[0][i] -= period * ((out[0][i] - base) / period).floor();
+            let s = walk * d[i].signum();
+            let mut ahead = ((out[1][i] - out[0][i]) * s).rem_euclid(period);
+            if closed && ahead < 1e-9 * period {
+                ahead = period;
+            }
+            out[1][i] = out[0][i] + s * ahead;
+        } else {
+            for p in &mut out {
+                let on_line = if d[i] == 0.0 {
+                    line.point[i]
+                } else {
+                    line.point[i] + d[i] * (p[j] - line.point[j]) / d[j]
+                };
+                p[i] += period * ((on_line - p[i]) / period).round();
+            }
+        }
+    }
+    out
+}
