@@ -5,6 +5,7 @@
 //! edge's pieces end within the file's tolerance of its vertices.
 
 use exact_bezier::algebra::{RealAlgebraic, Scalar};
+use exact_bezier::patch::Patch;
 use exact_bezier::step::brep::{EdgeUse, Geometry};
 use exact_bezier::step::{read_brep_with, BrepModel, BrepOptions};
 use exact_bezier::{Ordered, Roots};
@@ -1054,28 +1055,67 @@ fn distance(p: &[f64], q: &[f64]) -> f64 {
         .sqrt()
 }
 
-/// The points of an edge's 3D analytic pieces at 4 000 parameters each, in
-/// `f64`.
-fn samples(pieces: &[exact_bezier::patch::Patch<RealAlgebraic>]) -> Vec<Vec<f64>> {
+/// A piece in `f64` with its knot spans (u, v) when it is a B-spline's.
+type SpannedF64 = (Patch<f64>, Option<[[f64; 2]; 2]>);
+
+/// An edge's or face's pieces in `f64`, with their knot spans for a
+/// B-spline's (`None` for analytic pieces).
+fn pieces_f64(g: &Geometry) -> Vec<SpannedF64> {
+    let span = |x: &[BigRational; 2]| [Ordered::to_f64(&x[0]), Ordered::to_f64(&x[1])];
+    match g {
+        Geometry::Analytic(a) => a
+            .pieces
+            .iter()
+            .map(|p| (p.map(|x| x.to_f64()), None))
+            .collect(),
+        Geometry::BSpline(b) => b
+            .pieces()
+            .iter()
+            .map(|p| {
+                let v = p.v.as_ref().map_or([0.0, 1.0], span);
+                (p.patch.map(Ordered::to_f64), Some([span(&p.u), v]))
+            })
+            .collect(),
+        _ => Vec::new(),
+    }
+}
+
+/// The points of curve pieces at 4 000 parameters each.
+fn samples(pieces: &[SpannedF64]) -> Vec<Vec<f64>> {
     pieces
         .iter()
-        .flat_map(|p| match p {
-            exact_bezier::patch::Patch::Curve(c) => {
-                let c = c.map(|x| x.to_f64());
-                (0..=4000)
-                    .map(|k| c.eval(&(f64::from(k) / 4000.0)).unwrap())
-                    .collect::<Vec<_>>()
-            }
+        .flat_map(|(p, _)| match p {
+            Patch::Curve(c) => (0..=4000)
+                .map(|k| c.eval(&(f64::from(k) / 4000.0)).unwrap())
+                .collect::<Vec<_>>(),
             _ => panic!("an edge piece is a curve"),
         })
         .collect()
 }
 
-/// Every analytic pcurve on an elementary surface is trimmed to its edge:
-/// the surface (evaluated independently, from the raw entities) maps its
-/// first and last points onto the edge's start and end vertices within the
-/// tolerance, and its middle onto the edge's 3D curve; their number equals
-/// an independent count of such pcurves in the file.
+/// The point at knot parameters `(u, v)` of a B-spline surface, from the
+/// piece whose spans hold them (the pieces agree with de Boor: `src/nurbs/tests.rs`).
+fn spline_point(pieces: &[SpannedF64], u: f64, v: f64) -> Vec<f64> {
+    pieces
+        .iter()
+        .find_map(|(p, spans)| {
+            let [su, sv] = (*spans)?;
+            let inside = |x: f64, s: [f64; 2]| x >= s[0] - 1e-12 && x <= s[1] + 1e-12;
+            let Patch::Rect(r) = p else { return None };
+            (inside(u, su) && inside(v, sv)).then(|| {
+                let local = |x: f64, s: [f64; 2]| ((x - s[0]) / (s[1] - s[0])).clamp(0.0, 1.0);
+                r.eval(&local(u, su), &local(v, sv)).unwrap()
+            })
+        })
+        .expect("a piece holds the parameters")
+}
+
+/// Every analytic pcurve on an elementary or B-spline surface is trimmed to
+/// its edge: the surface (an elementary one evaluated independently, from
+/// the raw entities; a B-spline one on its pieces) maps its first and last
+/// points onto the edge's start and end vertices within the tolerance, and
+/// its middle onto the edge's 3D curve; their number equals an independent
+/// count of such pcurves in the file.
 #[test]
 fn analytic_pcurves_run_between_their_edges_vertices() {
     for name in ANALYTIC_PCURVES {
@@ -1083,6 +1123,7 @@ fn analytic_pcurves_run_between_their_edges_vertices() {
         let s = store(name);
         let tol = Ordered::to_f64(&tolerance_sq(&m)).sqrt();
         let elementary = |id: u64| surface_point_f64(&s, id, 0.0, 0.0).is_some();
+        let spline = |id: u64| s[&id].complex || s[&id].records[0].name.starts_with("B_SPLINE");
         let expected = s
             .values()
             .filter(|i| i.records[0].name == "PCURVE")
@@ -1095,9 +1136,10 @@ fn analytic_pcurves_run_between_their_edges_vertices() {
                     p => panic!("{p:?}"),
                 };
                 let kind = &s[&curve].records[0].name;
-                elementary(surface)
-                    && (kind == "LINE"
-                        || (s[&surface].records[0].name == "PLANE" && kind == "CIRCLE"))
+                (spline(surface) && kind == "LINE")
+                    || elementary(surface)
+                        && (kind == "LINE"
+                            || (s[&surface].records[0].name == "PLANE" && kind == "CIRCLE"))
             })
             .count();
         let mut checked = 0;
@@ -1106,8 +1148,12 @@ fn analytic_pcurves_run_between_their_edges_vertices() {
                 let Geometry::Analytic(a) = &pc.curve.geometry else {
                     continue;
                 };
+                let face = m.faces.values().find(|f| f.surface.entity == pc.surface);
+                let face_pieces = face.map_or_else(Vec::new, |f| pieces_f64(&f.surface.geometry));
                 let at = |p: Vec<R>| {
-                    surface_point_f64(&s, pc.surface, p[0].to_f64(), p[1].to_f64()).unwrap()
+                    let (u, v) = (p[0].to_f64(), p[1].to_f64());
+                    surface_point_f64(&s, pc.surface, u, v)
+                        .map_or_else(|| spline_point(&face_pieces, u, v), Vec::from)
                 };
                 let (first, last) = (
                     first_point(&a.pieces[0]),
@@ -1123,15 +1169,16 @@ fn analytic_pcurves_run_between_their_edges_vertices() {
                         e.id
                     );
                 }
-                if let Geometry::Analytic(edge) = &e.curve.geometry {
+                let edge = pieces_f64(&e.curve.geometry);
+                if !edge.is_empty() {
                     let middle = match &a.pieces[a.pieces.len() / 2] {
-                        exact_bezier::patch::Patch::Curve(c) => c
+                        Patch::Curve(c) => c
                             .eval(&R::from_rational(&BigRational::new(1.into(), 2.into())))
                             .unwrap(),
                         _ => panic!("a pcurve piece is a curve"),
                     };
                     let p = at(middle);
-                    let near = samples(&edge.pieces)
+                    let near = samples(&edge)
                         .iter()
                         .map(|q| distance(q, &p))
                         .fold(f64::MAX, f64::min);

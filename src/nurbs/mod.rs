@@ -29,6 +29,7 @@
 //! [`Scalar::from_rational`], so no division in the scalar is needed; see
 //! `proofs/src/nurbs.rs`). Everything is homogeneous: `(w_i P_i, w_i)`.
 
+pub use invert::nearest_parameters;
 pub use spanned::{Nurbs, SpannedPatch};
 
 use crate::error::Error;
@@ -38,6 +39,7 @@ use crate::{RationalCurve, RectPatch, Scalar};
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
+mod invert;
 mod spanned;
 
 /// A knot vector with its degree: validated once, used by curves and both

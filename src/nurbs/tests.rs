@@ -1,4 +1,5 @@
 use super::*;
+use crate::algebra::Ordered;
 use crate::{ratio, Error};
 use proptest::prelude::*;
 
@@ -118,6 +119,45 @@ fn surface_pieces_reproduce_de_boor() {
                 s.eval_hom_in_span(kl, &uu, &vv)
             );
         }
+    }
+}
+
+/// The surface of `surface_pieces_reproduce_de_boor`, a wavy biquadratic.
+fn wavy() -> NurbsSurface<Q> {
+    let ku: Vec<Q> = [0, 0, 0, 1, 2, 2, 2].iter().map(|&x| q(x, 1)).collect();
+    let kv: Vec<Q> = (0..8).map(|x| q(x, 1)).collect();
+    let net = (0..4)
+        .map(|i| {
+            (0..5)
+                .map(|j| {
+                    HPoint::from_point(&[q(i, 1), q(j, 1), q(i * j % 3, 1)], &q(1 + (i + j) % 2, 1))
+                })
+                .collect()
+        })
+        .collect();
+    NurbsSurface::new(
+        Knots::new(2, ku, 4).unwrap(),
+        Knots::new(2, kv, 5).unwrap(),
+        net,
+    )
+    .unwrap()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+    /// Point inversion finds the knot parameters of a point of the surface
+    /// (evaluated exactly by de Boor in its span) to 10⁻⁹.
+    #[test]
+    fn inversion_finds_the_parameters_of_a_surface_point(a in 0i64..=40, b in 0i64..=60) {
+        let s = wavy();
+        let (u, v) = (q(a, 20), q(2, 1) + q(b, 20));
+        let (ku, kv) = s.knots();
+        let span = |k: &Knots, x: &Q| k.spans().into_iter().find(|&i| &k.knots()[i + 1] >= x).unwrap();
+        let p = s.eval_hom_in_span((span(ku, &u), span(kv, &v)), &u, &v).project().unwrap();
+        let p: Vec<f64> = p.iter().map(Ordered::to_f64).collect();
+        let (uv, d) = nearest_parameters(&Nurbs::Surface(s).pieces(), &p).unwrap();
+        prop_assert!(d < 1e-9, "{d}");
+        prop_assert!((uv[0] - Ordered::to_f64(&u)).abs() < 1e-7 && (uv[1] - Ordered::to_f64(&v)).abs() < 1e-7, "{uv:?}");
     }
 }
 

@@ -45,7 +45,7 @@ pub(super) struct Units {
     /// must be to a piece's end to be taken there: the declared tolerance,
     /// or 10⁻⁷ without one. A search heuristic only: the trimmed pieces
     /// and the distances kept are exact.
-    snap: f64,
+    pub(super) snap: f64,
 }
 
 impl Units {

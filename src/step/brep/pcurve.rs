@@ -21,21 +21,32 @@
 //!   for a closed edge). The pieces are exactly the pcurve's between the
 //!   located parameters; no `vertex_distance_sq` is written.
 //!
-//! Pcurves on B-spline and swept surfaces (whose parameters need an
-//! inversion) and non-line pcurves on curved surfaces stay unconverted and
-//! are counted (`pcurves_not_converted`).
+//! - on a **B-spline** surface the knot parameters of each vertex are the
+//!   nearest point found by Newton in `f64`
+//!   ([`nearest_parameters`](crate::nurbs::nearest_parameters)); it must
+//!   lie within ten times the model's tolerance of the vertex. `LINE`
+//!   pcurves are trimmed there, exactly between the located parameters,
+//!   without `vertex_distance_sq`.
+//!
+//! Pcurves on swept surfaces (extrusion, revolution) and non-line pcurves
+//! on curved surfaces stay unconverted and are counted
+//! (`pcurves_not_converted`).
 //!
 //! [`trim_between`]: crate::analytic::trim_between
 
-use super::{type_name, Builder, Geometry, GeometryRef, Pcurve};
+use super::{surface_geometry, type_name, Builder, Geometry, GeometryRef, Pcurve};
 use crate::algebra::{Ordered, RealAlgebraic, Scalar};
 use crate::error::Error;
+use crate::nurbs::nearest_parameters;
 use crate::step::brep::analytic::{lift, Units};
 use crate::step::geometry::{curve_pieces, surface_parameters, Curve, Parameter};
 use num_rational::BigRational;
 
 /// A 2D point located in `f64`, with the period of each coordinate.
 type Located = [(f64, Option<f64>); 2];
+
+/// Every parameter pair `(u, v)` of one point on a surface.
+type Candidates = Vec<[Parameter<RealAlgebraic>; 2]>;
 
 impl Builder<'_> {
     /// The geometry of the pcurve `pc` of an edge from `start` to `end`:
@@ -66,10 +77,9 @@ impl Builder<'_> {
         closed: bool,
         same_sense: bool,
     ) -> Result<Geometry, Error> {
-        let Some(map) = self.with_readers(units, |r| surface_parameters(r, pc.surface))? else {
+        let Some([s, e]) = self.vertex_parameters(units, pc.surface, ends)? else {
             return Ok(Geometry::NotConverted);
         };
-        let [s, e] = [&ends[0], &ends[1]].map(|p| map.of(p));
         if let (Some(s), Some(e)) = (exact(&s[0]), exact(&e[0])) {
             return self.trimmed_curve(units, pc.curve.entity, &s, &e, same_sense);
         }
@@ -96,6 +106,48 @@ impl Builder<'_> {
             a.vertex_distance_sq = None;
         }
         Ok(g)
+    }
+
+    /// Every parameter pair of each of the two vertices `ends` on the
+    /// surface `surface`: by the closed forms on a plane, cylinder, cone,
+    /// sphere or torus, the nearest point found on a B-spline surface;
+    /// `None` for other surfaces.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Domain`] when the nearest point found on a B-spline surface
+    /// is farther than ten times the snap distance (the model's tolerance).
+    fn vertex_parameters(
+        &self,
+        units: &Units,
+        surface: u64,
+        ends: &[Vec<RealAlgebraic>; 2],
+    ) -> Result<Option<[Candidates; 2]>, Error> {
+        if let Some(map) = self.with_readers(units, |r| surface_parameters(r, surface))? {
+            return Ok(Some([&ends[0], &ends[1]].map(|p| map.of(p))));
+        }
+        let Geometry::BSpline(spline) =
+            surface_geometry(&type_name(self.store, surface), surface, &self.conv)
+        else {
+            return Ok(None);
+        };
+        let mut out = [Vec::new(), Vec::new()];
+        for (p, params) in ends.iter().zip(&mut out) {
+            let at: Vec<f64> = p.iter().map(Ordered::to_f64).collect();
+            let Some((uv, d)) = nearest_parameters(spline.pieces(), &at) else {
+                return Ok(None);
+            };
+            if d > 10.0 * units.snap {
+                return Err(Error::Domain(format!(
+                    "a vertex of the edge is {d:e} from the nearest point found on B-spline surface #{surface}"
+                )));
+            }
+            params.push(uv.map(|value| Parameter::Located {
+                value,
+                period: None,
+            }));
+        }
+        Ok(Some(out))
     }
 
     /// The line pcurve `id` as a point and direction in `f64`, from its
@@ -152,7 +204,7 @@ fn exact(p: &[Parameter<RealAlgebraic>; 2]) -> Option<Vec<RealAlgebraic>> {
     p.iter()
         .map(|x| match x {
             Parameter::Exact(t) => Some(t.clone()),
-            Parameter::Angle { .. } => None,
+            Parameter::Located { .. } => None,
         })
         .collect()
 }
@@ -167,7 +219,7 @@ fn exact_point(
         .zip(at)
         .map(|(x, &v)| match x {
             Parameter::Exact(t) => Ok(t.clone()),
-            Parameter::Angle { .. } => from_f64(v),
+            Parameter::Located { .. } => from_f64(v),
         })
         .collect()
 }
@@ -175,7 +227,7 @@ fn exact_point(
 fn located(p: &[Parameter<RealAlgebraic>; 2]) -> Located {
     p.clone().map(|x| match x {
         Parameter::Exact(t) => (t.to_f64(), None),
-        Parameter::Angle { value, period } => (value, period),
+        Parameter::Located { value, period } => (value, period),
     })
 }
 

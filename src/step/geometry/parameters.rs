@@ -17,7 +17,7 @@
 //! (the inverses of the parameterizations of [`crate::analytic`]'s
 //! surfaces). Lengths are exact; angles are transcendental in general and
 //! are located in `f64` (the curve pieces cut there are still exactly the
-//! curve's). An angle is defined up to whole turns: [`Parameter::Angle`]
+//! curve's). An angle is defined up to whole turns: [`Parameter::Located`]
 //! carries the period, and the caller picks the turn.
 
 use super::{entity, placement, Context, Error};
@@ -29,13 +29,14 @@ use crate::analytic::{AngleUnit, Frame};
 pub enum Parameter<T> {
     /// A length, exactly: a plane's `u` and `v`, a cylinder's or cone's `v`.
     Exact(T),
-    /// An angle in the context's unit, located in `f64`, with the period
-    /// (one turn, in the unit) when it is periodic (all but a sphere's
-    /// latitude).
-    Angle {
-        /// The angle, in `(−½, ½]` turn.
+    /// A parameter located in `f64`: an angle in the context's unit, with
+    /// the period (one turn, in the unit) when it is periodic (all but a
+    /// sphere's latitude); or a B-spline surface's knot parameter found by
+    /// [`nearest_parameters`](crate::nurbs::nearest_parameters).
+    Located {
+        /// The value (an angle is in `(−½, ½]` turn).
         value: f64,
-        /// One turn, in the unit, or `None`.
+        /// One turn, in the unit, or `None` (not periodic).
         period: Option<f64>,
     },
 }
@@ -116,7 +117,7 @@ impl<T: Field + Ordered> SurfaceParameters<T> {
     /// let s = surface_parameters(&ctx, 5).unwrap().unwrap();
     /// let [[u, v]] = &s.of(&[ratio(0, 1), ratio(2, 1), ratio(7, 2)])[..] else { panic!() };
     /// // A quarter turn about ẑ, at height 7/2.
-    /// let Parameter::Angle { value, period } = u else { panic!() };
+    /// let Parameter::Located { value, period } = u else { panic!() };
     /// assert!((value - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
     /// assert_eq!(*period, Some(2.0 * std::f64::consts::PI));
     /// assert_eq!(*v, Parameter::Exact(ratio(7, 2)));
@@ -128,7 +129,7 @@ impl<T: Field + Ordered> SurfaceParameters<T> {
         }
         let (af, bf, cf) = (a.to_f64(), b.to_f64(), c.to_f64());
         let turn = self.in_unit(std::f64::consts::TAU);
-        let angle = |radians: f64, period| Parameter::Angle {
+        let angle = |radians: f64, period| Parameter::Located {
             value: self.in_unit(radians),
             period,
         };
