@@ -98,8 +98,8 @@ pub fn trim_between<T: Field + Ordered>(
         locate_in(&approx, end, snap)
     };
     let out = split_between(&work, (ks, &ts), (ke, &te), start == end)?;
-    let start_pt = work[ks].eval(&ts)?;
-    let end_pt = work[ke].eval(&te)?;
+    let start_pt = point_at(&work[ks], &ts, out.first().map(|c| &c.ctrl()[0]))?;
+    let end_pt = point_at(&work[ke], &te, out.last().and_then(|c| c.ctrl().last()))?;
     Ok(Trimmed {
         pieces: out,
         start_distance_sq: dist_sq(start, &start_pt),
@@ -109,6 +109,28 @@ pub fn trim_between<T: Field + Ordered>(
         start_at: (ks, ts),
         end_at: (ke, te),
     })
+}
+
+/// The point of `piece` at `t`: an end control point for `t` = 0 or 1,
+/// else `cut`, the end of the sub-piece [`split_between`] cut at `t` (the
+/// blossom `b(t, …, t)`, the same exact point), or by evaluation without one.
+fn point_at<T: Field>(
+    piece: &RationalCurve<T>,
+    t: &T,
+    cut: Option<&HPoint<T>>,
+) -> Result<Vec<T>, Error> {
+    let ctrl = piece.ctrl();
+    let end = if t.is_zero() {
+        ctrl.first()
+    } else if t.is_one() {
+        ctrl.last()
+    } else {
+        cut
+    };
+    match end {
+        Some(h) => h.project(),
+        None => piece.eval(t),
+    }
 }
 
 fn dist_sq<T: Field>(a: &[T], b: &[T]) -> T {
