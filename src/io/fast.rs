@@ -344,6 +344,7 @@ impl Cursor<'_> {
     /// `-?d+(.d+)?` as `(mantissa, 10^fraction digits)` and its count of
     /// digits, in one pass over its bytes; a JSON number (`loose = false`)
     /// has no leading zero. `None` when the mantissa leaves `i128`.
+    #[inline(always)]
     fn decimal(&mut self, loose: bool) -> Option<((i128, i128), usize)> {
         let negative = self.peek() == Some(b'-');
         if negative {
@@ -369,6 +370,7 @@ impl Cursor<'_> {
     }
 
     /// Take ASCII digits into `m`; how many (`None` when `m` leaves `i128`).
+    #[inline(always)]
     fn digits_into(&mut self, m: &mut Mantissa) -> Option<usize> {
         let start = self.at;
         while let Some(&b) = self.bytes.get(self.at) {
@@ -394,6 +396,7 @@ struct Mantissa {
 
 impl Mantissa {
     /// Append the digit `d`; `None` when the value leaves `i128`.
+    #[inline(always)]
     fn push(&mut self, d: u8) -> Option<()> {
         if self.len < 18 {
             self.word = 10 * self.word + u64::from(d);
@@ -407,6 +410,7 @@ impl Mantissa {
         Some(())
     }
 
+    #[inline(always)]
     fn value(&self) -> i128 {
         if self.len <= 18 {
             i128::from(self.word)

@@ -33,12 +33,14 @@ struct Small {
 }
 
 /// `v` as a 64-bit word, if it fits one.
+#[inline(always)]
 fn word(v: i128) -> Option<i64> {
     i64::try_from(v).ok()
 }
 
 /// `a · b`, on one 64-bit product when both fit words (then it cannot
 /// overflow `i128`); `None` on overflow.
+#[inline(always)]
 fn checked_mul(a: i128, b: i128) -> Option<i128> {
     match (word(a), word(b)) {
         (Some(x), Some(y)) => Some(i128::from(x) * i128::from(y)),
@@ -47,6 +49,7 @@ fn checked_mul(a: i128, b: i128) -> Option<i128> {
 }
 
 /// `a / g` for a divisor `g > 0` of `a`, on 64-bit words when `a` fits.
+#[inline(always)]
 fn div_exact(a: i128, g: i128) -> i128 {
     match (g, i64::try_from(a), i64::try_from(g)) {
         (1, _, _) => a,
@@ -59,6 +62,7 @@ impl Small {
     const ONE: Small = Small { p: 1, q: 1 };
 
     /// `p/q` in lowest terms, for `q > 0`.
+    #[inline(always)]
     fn reduced((p, q): (i128, i128)) -> Option<Small> {
         if q <= 0 {
             return None;
@@ -82,6 +86,7 @@ impl Small {
 
     /// The product, reduced by cross gcds; `None` on overflow. Integers
     /// (`q = 1`, the common case) need no gcd, or one when only one is.
+    #[inline(always)]
     fn mul(self, o: Small) -> Option<Small> {
         match (self.q, o.q) {
             (1, 1) => {
@@ -107,6 +112,7 @@ impl Small {
 
     /// `self · a` for an integer `a`: `(p/q)·a = p(a/g) / (q/g)` with
     /// `g = gcd(a, q)`, in lowest terms; `None` on overflow.
+    #[inline(always)]
     fn mul_integer(self, a: i128) -> Option<Small> {
         let g = gcd_u128(a.unsigned_abs(), self.q.unsigned_abs()) as i128;
         Some(Small {
@@ -118,6 +124,7 @@ impl Small {
     /// [`mul`](Small::mul) when all four integers fit 64-bit words (the
     /// common case): gcds and quotients on words, and products of two words
     /// cannot overflow `i128`. `None` when they do not fit.
+    #[inline(always)]
     fn mul_words(self, o: Small) -> Option<Small> {
         let (a, b, c, d) = (word(self.p)?, word(self.q)?, word(o.p)?, word(o.q)?);
         let gcd =
@@ -135,6 +142,7 @@ impl Small {
 
     /// Whether the product fits `i128` ([`mul`](Small::mul) is not
     /// `None`), decided without a gcd when the unreduced one fits.
+    #[inline(always)]
     fn product_fits(self, o: Small) -> bool {
         let unreduced = checked_mul(self.p, o.p).is_some() && checked_mul(self.q, o.q).is_some();
         unreduced || self.mul(o).is_some()
@@ -149,6 +157,7 @@ impl Small {
     }
 
     /// Exact order by cross products; `None` on overflow.
+    #[inline(always)]
     fn cmp(self, o: Small) -> Option<Ordering> {
         if self.q == o.q {
             // One denominator (q > 0): the numerators decide.
