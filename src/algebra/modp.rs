@@ -70,38 +70,6 @@ impl Fp {
         Some(num / den)
     }
 
-    /// Replace every element of `xs` by its inverse with one inversion and
-    /// `3(n − 1)` products (Montgomery's trick: invert the product of all,
-    /// then peel off one factor at a time; Crandall & Pomerance, *Prime
-    /// Numbers*, Algorithm 9.4.5). `false`, with `xs` unchanged, when one is 0.
-    ///
-    /// ```
-    /// use exact_bezier::algebra::Fp;
-    /// let mut xs = [Fp::new(2), Fp::new(3), Fp::new(7)];
-    /// assert!(Fp::invert_all(&mut xs));
-    /// assert_eq!(xs.map(|x| x * Fp::new(42)), [Fp::new(21), Fp::new(14), Fp::new(6)]);
-    /// assert!(!Fp::invert_all(&mut [Fp::new(5), Fp::new(0)]));
-    /// ```
-    pub fn invert_all(xs: &mut [Fp]) -> bool {
-        // prefix[k] = xs[0] ⋯ xs[k − 1].
-        let mut prefix = Vec::with_capacity(xs.len());
-        let mut all = Fp(1);
-        for &x in xs.iter() {
-            prefix.push(all);
-            all = all * x;
-        }
-        let Some(mut rest) = all.inverse() else {
-            return false;
-        };
-        // rest = (xs[0] ⋯ xs[k])⁻¹ on entering step k.
-        for (x, before) in xs.iter_mut().zip(prefix).rev() {
-            let inv = rest * before;
-            rest = rest * *x;
-            *x = inv;
-        }
-        true
-    }
-
     /// `self⁻¹` by the extended Euclidean algorithm (`None` for 0), on
     /// 64-bit words: the remainders stay below `p < 2⁶¹` and the cofactors
     /// `|t| ≤ p` (Knuth, TAOCP vol. 2, §4.5.2), so nothing overflows `i64`.

@@ -320,6 +320,38 @@ fn try_collect<T>(len: usize, items: impl Iterator<Item = Option<T>>) -> Option<
     Some(out)
 }
 
+/// Append `p_k · Π_{j≠k} q_j mod p` for the fractions `x(k) = p_k/q_k`,
+/// `k < n`: their images times the product of their denominators, by
+/// products of the denominators before `k` and after it (no inverse);
+/// `None` when `p` divides a denominator.
+fn push_cleared(out: &mut Vec<Fp>, n: usize, x: impl Fn(usize) -> Small) -> Option<()> {
+    let start = out.len();
+    let mut before = Fp::new(1);
+    let mut fractions = false;
+    for k in 0..n {
+        let xk = x(k);
+        out.push(Fp::from_i128(xk.p) * before);
+        if xk.q != 1 {
+            before = before * Fp::from_i128(xk.q);
+            fractions = true;
+        }
+    }
+    if before == Fp::new(0) {
+        return None;
+    }
+    if fractions {
+        let mut after = Fp::new(1);
+        for (k, y) in out[start..].iter_mut().enumerate().rev() {
+            *y = *y * after;
+            let q = x(k).q;
+            if q != 1 {
+                after = after * Fp::from_i128(q);
+            }
+        }
+    }
+    Some(())
+}
+
 fn positions((m, n): (usize, usize)) -> impl Iterator<Item = (usize, usize)> {
     (0..=m).flat_map(move |i| (0..=n).map(move |j| (i, j)))
 }
@@ -550,38 +582,28 @@ impl SmallPatch {
         }
     }
 
-    /// The image modulo `p` of the homogeneous net as flat grids of
-    /// Bernstein coefficients ([`FpGrids`]: component `c` of point `k`,
-    /// row-major, at `c·count + k`), or `None` when `p` divides a
-    /// denominator (the denominators inverted together,
-    /// [`Fp::invert_all`]).
+    /// The image modulo `p` of the homogeneous net, each component times
+    /// a non-zero constant, as flat grids of Bernstein coefficients
+    /// ([`FpGrids`]: component `c` of point `k`, row-major, at
+    /// `c·count + k`), or `None` when `p` divides a denominator. The
+    /// constants clear the denominators without an inverse
+    /// ([`push_cleared`]): the weights are multiplied by the product of
+    /// their denominators, coordinate `c` by that of its own. The
+    /// certificate cannot tell: a component's degree, and the gcd of the
+    /// components, are those of its non-zero multiples.
     fn homogeneous_mod_p(&self) -> Option<Vec<Fp>> {
-        let numbers = || self.weights.iter().chain(&self.coords);
-        let mut image: Vec<Fp> = numbers().map(|x| Fp::from_i128(x.p)).collect();
-        // The denominators other than 1, inverted together.
-        let (at, mut inverse): (Vec<usize>, Vec<Fp>) = numbers()
-            .enumerate()
-            .filter(|(_, x)| x.q != 1)
-            .map(|(k, x)| (k, Fp::from_i128(x.q)))
-            .unzip();
-        if !Fp::invert_all(&mut inverse) {
-            return None;
+        let (count, dim) = (self.weights.len(), self.dim);
+        let mut grids = Vec::with_capacity(count * (dim + 1));
+        for c in 0..dim {
+            push_cleared(&mut grids, count, |k| self.coords[k * dim + c])?;
         }
-        for (k, inv) in at.into_iter().zip(inverse) {
-            image[k] = image[k] * inv;
+        push_cleared(&mut grids, count, |k| self.weights[k])?;
+        let (coords, weights) = grids.split_at_mut(dim * count);
+        for component in coords.chunks_exact_mut(count) {
+            for (x, &w) in component.iter_mut().zip(&*weights) {
+                *x = *x * w;
+            }
         }
-        let (weights, coords) = image.split_at(self.weights.len());
-        let count = weights.len();
-        let mut grids = Vec::with_capacity(count * (self.dim + 1));
-        for c in 0..self.dim {
-            grids.extend(
-                weights
-                    .iter()
-                    .zip(coords.chunks_exact(self.dim))
-                    .map(|(&w, x)| x[c] * w),
-            );
-        }
-        grids.extend_from_slice(weights);
         Some(grids)
     }
 
@@ -741,6 +763,22 @@ mod tests {
                 prop_assert_eq!(s.key_text().unwrap(), canonical_key(&patch).unwrap().text());
             }
         }
+    }
+
+    #[test]
+    fn a_denominator_divisible_by_p_is_not_certified() {
+        let p = i128::from(crate::algebra::modp::MODULUS);
+        let plain = [(0, 1), (1, 2), (3, 1)];
+        let weights = [(1, 1), (2, 1), (1, 1)];
+        let certify = |coords: &[(i128, i128)], weights: &[(i128, i128)]| {
+            SmallPatch::new(true, (2, 0), 1, coords, weights)
+                .unwrap()
+                .certify()
+        };
+        assert!(certify(&plain, &weights));
+        // p in a coordinate's denominator, or in a weight's.
+        assert!(!certify(&[(0, 1), (1, 2 * p), (3, 1)], &weights));
+        assert!(!certify(&plain, &[(1, 1), (2, p), (1, 1)]));
     }
 
     #[test]
