@@ -216,17 +216,18 @@ fn binary_gcd_wide(x: u128, y: u128) -> u128 {
     x << twos
 }
 
-/// Stein's binary gcd of non-zero words (`u64` or `u128`): strip the common
-/// factor 2, then subtract the smaller odd number from the larger.
-fn binary_gcd<W: num_traits::PrimInt>(x: W, y: W) -> W {
-    let twos = (x | y).trailing_zeros() as usize;
-    let (mut x, mut y) = (x >> x.trailing_zeros() as usize, y);
-    while y != W::zero() {
-        y = y >> y.trailing_zeros() as usize;
-        if x > y {
-            std::mem::swap(&mut x, &mut y);
-        }
-        y = y - x;
+/// Stein's binary gcd of non-zero words: strip the common factor 2, make
+/// both odd, then replace the larger by the odd part of the difference.
+/// The difference's trailing zeros are counted on `x − y` (wrapping: a
+/// number and its negation have the same), in parallel with the minimum
+/// and `|x − y|`, so one step's chain is a subtraction, a count and a
+/// shift.
+fn binary_gcd(x: u64, y: u64) -> u64 {
+    let twos = (x | y).trailing_zeros();
+    let (mut x, mut y) = (x >> x.trailing_zeros(), y >> y.trailing_zeros());
+    while x != y {
+        let zeros = x.wrapping_sub(y).trailing_zeros();
+        (x, y) = (x.abs_diff(y) >> zeros, x.min(y));
     }
     x << twos
 }
@@ -343,6 +344,13 @@ mod tests {
             let (x, y) = (x.saturating_mul(u128::from(f)), u128::from(y) << shift);
             prop_assert_eq!(gcd_u128(x, y), x.gcd(&y));
             prop_assert_eq!(gcd_u128(y, x), x.gcd(&y));
+        }
+
+        /// On 64-bit words with a common factor (the binary loop alone).
+        #[test]
+        fn binary_gcd_of_words_is_the_gcd(x in 1..u64::MAX >> 20, y in 1..u64::MAX >> 20, f in 1u64..1 << 20) {
+            let (x, y) = (x * f, y * f);
+            prop_assert_eq!(binary_gcd(x, y), x.gcd(&y));
         }
     }
 

@@ -39,11 +39,18 @@ impl Fp {
     /// added onto the low ones (no division).
     pub fn from_i128(x: i128) -> Fp {
         let fold = |v: u128| (v & u128::from(MODULUS)) + (v >> 61);
-        // |x| < 2¹²⁷ → below 2⁶⁷ → below 2⁶² after two folds.
-        let mut r = fold(fold(x.unsigned_abs())) as u64;
-        while r >= MODULUS {
-            r -= MODULUS;
-        }
+        let a = x.unsigned_abs();
+        let r = if a < u128::from(MODULUS) {
+            // Already reduced (the common case: small numbers).
+            a as u64
+        } else {
+            // |x| < 2¹²⁷ → below 2⁶⁷ → below 2⁶² after two folds.
+            let mut r = fold(fold(a)) as u64;
+            while r >= MODULUS {
+                r -= MODULUS;
+            }
+            r
+        };
         if x < 0 {
             -Fp(r)
         } else {

@@ -330,7 +330,8 @@ fn push_cleared(out: &mut Vec<Fp>, n: usize, x: impl Fn(usize) -> Small) -> Opti
     let mut fractions = false;
     for k in 0..n {
         let xk = x(k);
-        out.push(Fp::from_i128(xk.p) * before);
+        let image = Fp::from_i128(xk.p);
+        out.push(if fractions { image * before } else { image });
         if xk.q != 1 {
             before = before * Fp::from_i128(xk.q);
             fractions = true;
