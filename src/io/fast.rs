@@ -376,7 +376,10 @@ impl Cursor<'_> {
     fn digits_into(&mut self, m: &mut Mantissa) -> Option<usize> {
         let start = self.at;
         while m.len <= Mantissa::WORD_DIGITS - 8 {
-            let Some(Ok(eight)) = self.bytes.get(self.at..self.at + 8).map(<[u8; 8]>::try_from)
+            let Some(Ok(eight)) = self
+                .bytes
+                .get(self.at..self.at + 8)
+                .map(<[u8; 8]>::try_from)
             else {
                 break;
             };
@@ -647,7 +650,7 @@ mod tests {
                 let want = digits.parse::<i128>().ok().and_then(|p| {
                     Some(((p, 10i128.checked_pow(frac_digits as u32)?), digits.len()))
                 });
-                prop_assert_eq!(c.decimal(false), want.clone());
+                prop_assert_eq!(c.decimal(false), want);
                 if want.is_some() {
                     prop_assert_eq!(c.at, text.len());
                 }
