@@ -177,15 +177,15 @@ fn cosequence(x: u64, y: u64) -> [i64; 4] {
 /// often far larger than its weight, and the binary algorithm would
 /// spend a subtraction per bit of the difference.
 pub(crate) fn gcd_u128(x: u128, y: u128) -> u128 {
+    if let (Ok(a), Ok(b)) = (u64::try_from(x), u64::try_from(y)) {
+        return u128::from(gcd_u64(a, b));
+    }
     if x == 0 || y == 0 {
         return x | y;
     }
     if x == 1 || y == 1 {
-        // An integer denominator: the binary algorithm would take a step per bit.
+        // An integer denominator.
         return 1;
-    }
-    if let (Ok(a), Ok(b)) = (u64::try_from(x), u64::try_from(y)) {
-        return u128::from(binary_gcd(a, b));
     }
     let (big, small) = if x < y { (y, x) } else { (x, y) };
     let rest = big % small;
@@ -196,6 +196,19 @@ pub(crate) fn gcd_u128(x: u128, y: u128) -> u128 {
         Ok(s) => u128::from(binary_gcd(s, rest as u64)),
         Err(_) => binary_gcd_wide(small, rest),
     }
+}
+
+/// `gcd(x, y)` of 64-bit words, by [`binary_gcd`].
+#[inline]
+pub(crate) fn gcd_u64(x: u64, y: u64) -> u64 {
+    if x == 0 || y == 0 {
+        return x | y;
+    }
+    if x == 1 || y == 1 {
+        // An integer denominator: the binary algorithm would take a step per bit.
+        return 1;
+    }
+    binary_gcd(x, y)
 }
 
 /// [`binary_gcd`] on 128-bit words that moves to 64-bit words as soon as

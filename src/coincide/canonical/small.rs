@@ -10,7 +10,7 @@
 //! two single-word gcds of its cross terms (`(a/b)(c/d) = (a/g₁)(c/g₂) /
 //! ((b/g₂)(d/g₁))` with `g₁ = gcd(a, d)`, `g₂ = gcd(c, b)`).
 
-use crate::algebra::gcd::gcd_u128;
+use crate::algebra::gcd::{gcd_u128, gcd_u64};
 use crate::algebra::modp::Fp;
 use crate::coincide::certificate::FpGrids;
 use crate::coincide::minimal::Net;
@@ -127,8 +127,7 @@ impl Small {
     #[inline(always)]
     fn mul_words(self, o: Small) -> Option<Small> {
         let (a, b, c, d) = (word(self.p)?, word(self.q)?, word(o.p)?, word(o.q)?);
-        let gcd =
-            |x: i64, y: i64| gcd_u128(x.unsigned_abs().into(), y.unsigned_abs().into()) as i64;
+        let gcd = |x: i64, y: i64| gcd_u64(x.unsigned_abs(), y.unsigned_abs()) as i64;
         let (g1, g2) = (gcd(a, d), gcd(c, b));
         // A gcd of 2⁶³ (both i64::MIN) does not fit: the general path.
         if g1 <= 0 || g2 <= 0 {
@@ -177,9 +176,11 @@ impl Small {
 }
 
 /// `v` in decimal, on 64-bit words when it fits one (the common case: the
-/// formatter's 128-bit path divides in software).
+/// formatter's 128-bit path divides in software); one or two digits (the
+/// coordinates and invariants of small nets) written where it is called.
+#[inline(always)]
 fn push_int(out: &mut String, v: i128) {
-    let Ok(mut u) = u64::try_from(v.unsigned_abs()) else {
+    let Ok(u) = u64::try_from(v.unsigned_abs()) else {
         use std::fmt::Write;
         let _ = write!(out, "{v}");
         return;
@@ -188,13 +189,17 @@ fn push_int(out: &mut String, v: i128) {
         out.push('-');
     }
     if u < 100 {
-        // One or two digits (common: coordinates and invariants of small nets).
         if u >= 10 {
             out.push(char::from(b'0' + (u / 10) as u8));
         }
         out.push(char::from(b'0' + (u % 10) as u8));
         return;
     }
+    push_word(out, u);
+}
+
+/// The word `u` in decimal.
+fn push_word(out: &mut String, mut u: u64) {
     let mut digits = [0u8; 20];
     let mut at = digits.len();
     loop {
@@ -516,8 +521,13 @@ impl SmallPatch {
 
     /// Whether every homogeneous number `x·ω` of the net fits `i128`
     /// ([`size`](SmallPatch::size) is not `None`), decided without the
-    /// gcds of the bit count: an unreduced product that fits decides.
+    /// gcds of the bit count: an unreduced product that fits decides, and
+    /// when every integer of the net fits a 64-bit word, every product does.
     pub fn homogeneous_fits(&self) -> bool {
+        let words = |x: &Small| word(x.p).is_some() && word(x.q).is_some();
+        if self.coords.iter().chain(&self.weights).all(words) {
+            return true;
+        }
         let points = self.coords.chunks_exact(self.dim);
         self.weights
             .iter()
