@@ -344,6 +344,8 @@ impl Cursor<'_> {
     /// `-?d+(.d+)?` as `(mantissa, 10^fraction digits)` and its count of
     /// digits, in one pass over its bytes; a JSON number (`loose = false`)
     /// has no leading zero. `None` when the mantissa leaves `i128`.
+    /// Inlined: its result, returned through the stack, stalled the load
+    /// of its tag (as the machine fractions' products did).
     #[inline(always)]
     fn decimal(&mut self, loose: bool) -> Option<((i128, i128), usize)> {
         let negative = self.peek() == Some(b'-');

@@ -26,6 +26,11 @@ use std::borrow::Cow;
 use std::cmp::Ordering;
 
 /// A rational `p/q` in lowest terms with `q > 0`, in machine integers.
+///
+/// Its products and reductions are `#[inline(always)]`: called, they
+/// returned their `Option<Small>` through the stack, and the wider load of
+/// its tag stalled on store forwarding (most of the reader's time in
+/// `SmallPatch::new`, issue 31).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 struct Small {
     p: i128,
@@ -558,7 +563,8 @@ impl SmallPatch {
 
     /// Prove the net minimal modulo `p` as
     /// [`KeyPlan::Minimal`](super::KeyPlan::Minimal) does (the same
-    /// certificate on the same image); `false` when it is not proved (or a
+    /// certificate on the same image, each component times a non-zero
+    /// constant: the same answer); `false` when it is not proved (or a
     /// denominator is divisible by `p`). When it is proved, the key text is
     /// computed at once in machine integers (work linear in the net, like
     /// reading it) and kept for [`key_text`](SmallPatch::key_text), unless a
