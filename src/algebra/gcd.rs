@@ -177,15 +177,15 @@ fn cosequence(x: u64, y: u64) -> [i64; 4] {
 /// often far larger than its weight, and the binary algorithm would
 /// spend a subtraction per bit of the difference.
 pub(crate) fn gcd_u128(x: u128, y: u128) -> u128 {
+    if let (Ok(a), Ok(b)) = (u64::try_from(x), u64::try_from(y)) {
+        return u128::from(gcd_u64(a, b));
+    }
     if x == 0 || y == 0 {
         return x | y;
     }
     if x == 1 || y == 1 {
-        // An integer denominator: the binary algorithm would take a step per bit.
+        // An integer denominator.
         return 1;
-    }
-    if let (Ok(a), Ok(b)) = (u64::try_from(x), u64::try_from(y)) {
-        return u128::from(binary_gcd(a, b));
     }
     let (big, small) = if x < y { (y, x) } else { (x, y) };
     let rest = big % small;
@@ -196,6 +196,19 @@ pub(crate) fn gcd_u128(x: u128, y: u128) -> u128 {
         Ok(s) => u128::from(binary_gcd(s, rest as u64)),
         Err(_) => binary_gcd_wide(small, rest),
     }
+}
+
+/// `gcd(x, y)` of 64-bit words, by [`binary_gcd`].
+#[inline]
+pub(crate) fn gcd_u64(x: u64, y: u64) -> u64 {
+    if x == 0 || y == 0 {
+        return x | y;
+    }
+    if x == 1 || y == 1 {
+        // An integer denominator: the binary algorithm would take a step per bit.
+        return 1;
+    }
+    binary_gcd(x, y)
 }
 
 /// [`binary_gcd`] on 128-bit words that moves to 64-bit words as soon as
@@ -216,17 +229,18 @@ fn binary_gcd_wide(x: u128, y: u128) -> u128 {
     x << twos
 }
 
-/// Stein's binary gcd of non-zero words (`u64` or `u128`): strip the common
-/// factor 2, then subtract the smaller odd number from the larger.
-fn binary_gcd<W: num_traits::PrimInt>(x: W, y: W) -> W {
-    let twos = (x | y).trailing_zeros() as usize;
-    let (mut x, mut y) = (x >> x.trailing_zeros() as usize, y);
-    while y != W::zero() {
-        y = y >> y.trailing_zeros() as usize;
-        if x > y {
-            std::mem::swap(&mut x, &mut y);
-        }
-        y = y - x;
+/// Stein's binary gcd of non-zero words: strip the common factor 2, make
+/// both odd, then replace the larger by the odd part of the difference.
+/// The difference's trailing zeros are counted on `x − y` (wrapping: a
+/// number and its negation have the same), in parallel with the minimum
+/// and `|x − y|`, so one step's chain is a subtraction, a count and a
+/// shift.
+fn binary_gcd(x: u64, y: u64) -> u64 {
+    let twos = (x | y).trailing_zeros();
+    let (mut x, mut y) = (x >> x.trailing_zeros(), y >> y.trailing_zeros());
+    while x != y {
+        let zeros = x.wrapping_sub(y).trailing_zeros();
+        (x, y) = (x.abs_diff(y) >> zeros, x.min(y));
     }
     x << twos
 }
@@ -343,6 +357,13 @@ mod tests {
             let (x, y) = (x.saturating_mul(u128::from(f)), u128::from(y) << shift);
             prop_assert_eq!(gcd_u128(x, y), x.gcd(&y));
             prop_assert_eq!(gcd_u128(y, x), x.gcd(&y));
+        }
+
+        /// On 64-bit words with a common factor (the binary loop alone).
+        #[test]
+        fn binary_gcd_of_words_is_the_gcd(x in 1..u64::MAX >> 20, y in 1..u64::MAX >> 20, f in 1u64..1 << 20) {
+            let (x, y) = (x * f, y * f);
+            prop_assert_eq!(binary_gcd(x, y), x.gcd(&y));
         }
     }
 

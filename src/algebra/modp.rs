@@ -39,11 +39,18 @@ impl Fp {
     /// added onto the low ones (no division).
     pub fn from_i128(x: i128) -> Fp {
         let fold = |v: u128| (v & u128::from(MODULUS)) + (v >> 61);
-        // |x| < 2¹²⁷ → below 2⁶⁷ → below 2⁶² after two folds.
-        let mut r = fold(fold(x.unsigned_abs())) as u64;
-        while r >= MODULUS {
-            r -= MODULUS;
-        }
+        let a = x.unsigned_abs();
+        let r = if a < u128::from(MODULUS) {
+            // Already reduced (the common case: small numbers).
+            a as u64
+        } else {
+            // |x| < 2¹²⁷ → below 2⁶⁷ → below 2⁶² after two folds.
+            let mut r = fold(fold(a)) as u64;
+            while r >= MODULUS {
+                r -= MODULUS;
+            }
+            r
+        };
         if x < 0 {
             -Fp(r)
         } else {
@@ -68,38 +75,6 @@ impl Fp {
             return None;
         }
         Some(num / den)
-    }
-
-    /// Replace every element of `xs` by its inverse with one inversion and
-    /// `3(n − 1)` products (Montgomery's trick: invert the product of all,
-    /// then peel off one factor at a time; Crandall & Pomerance, *Prime
-    /// Numbers*, Algorithm 9.4.5). `false`, with `xs` unchanged, when one is 0.
-    ///
-    /// ```
-    /// use exact_bezier::algebra::Fp;
-    /// let mut xs = [Fp::new(2), Fp::new(3), Fp::new(7)];
-    /// assert!(Fp::invert_all(&mut xs));
-    /// assert_eq!(xs.map(|x| x * Fp::new(42)), [Fp::new(21), Fp::new(14), Fp::new(6)]);
-    /// assert!(!Fp::invert_all(&mut [Fp::new(5), Fp::new(0)]));
-    /// ```
-    pub fn invert_all(xs: &mut [Fp]) -> bool {
-        // prefix[k] = xs[0] ⋯ xs[k − 1].
-        let mut prefix = Vec::with_capacity(xs.len());
-        let mut all = Fp(1);
-        for &x in xs.iter() {
-            prefix.push(all);
-            all = all * x;
-        }
-        let Some(mut rest) = all.inverse() else {
-            return false;
-        };
-        // rest = (xs[0] ⋯ xs[k])⁻¹ on entering step k.
-        for (x, before) in xs.iter_mut().zip(prefix).rev() {
-            let inv = rest * before;
-            rest = rest * *x;
-            *x = inv;
-        }
-        true
     }
 
     /// `self⁻¹` by the extended Euclidean algorithm (`None` for 0), on

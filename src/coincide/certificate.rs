@@ -174,24 +174,16 @@ impl FpGrids {
         if deg == 0 {
             return true;
         }
-        let mut next = Vec::with_capacity(deg + 1);
-        let specialized = |c: usize, out: &mut Vec<Fp>| {
-            out.clear();
-            spec(c, out);
-            trim(out);
-        };
-        let full = (0..self.comps).any(|c| {
-            specialized(c, &mut next);
-            next.len() == deg + 1
-        });
-        if !full {
-            return false;
-        }
-        let mut gcd = Vec::with_capacity(deg + 1);
+        let (mut next, mut gcd) = (Vec::with_capacity(deg + 1), Vec::with_capacity(deg + 1));
+        let mut full = false;
         for c in 0..self.comps {
-            specialized(c, &mut next);
+            next.clear();
+            spec(c, &mut next);
+            trim(&mut next);
+            full |= next.len() == deg + 1;
             pseudo_gcd_in(&mut gcd, &mut next);
-            if gcd.len() == 1 {
+            // A constant gcd stays constant: decided once a component is full.
+            if full && gcd.len() == 1 {
                 return true;
             }
         }

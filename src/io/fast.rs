@@ -344,6 +344,9 @@ impl Cursor<'_> {
     /// `-?d+(.d+)?` as `(mantissa, 10^fraction digits)` and its count of
     /// digits, in one pass over its bytes; a JSON number (`loose = false`)
     /// has no leading zero. `None` when the mantissa leaves `i128`.
+    /// Inlined: its result, returned through the stack, stalled the load
+    /// of its tag (as the machine fractions' products did).
+    #[inline(always)]
     fn decimal(&mut self, loose: bool) -> Option<((i128, i128), usize)> {
         let negative = self.peek() == Some(b'-');
         if negative {
@@ -369,8 +372,26 @@ impl Cursor<'_> {
     }
 
     /// Take ASCII digits into `m`; how many (`None` when `m` leaves `i128`).
+    /// Eight bytes at a time ([`leading_digits`]) while the word of `m`
+    /// has room for eight more digits, then one at a time.
+    #[inline(always)]
     fn digits_into(&mut self, m: &mut Mantissa) -> Option<usize> {
         let start = self.at;
+        while m.len <= Mantissa::WORD_DIGITS - 8 {
+            let Some(Ok(eight)) = self
+                .bytes
+                .get(self.at..self.at + 8)
+                .map(<[u8; 8]>::try_from)
+            else {
+                break;
+            };
+            let (value, count) = leading_digits(u64::from_le_bytes(eight));
+            m.push_run(value, count);
+            self.at += count;
+            if count < 8 {
+                return Some(self.at - start);
+            }
+        }
         while let Some(&b) = self.bytes.get(self.at) {
             if !b.is_ascii_digit() {
                 break;
@@ -380,6 +401,28 @@ impl Cursor<'_> {
         }
         Some(self.at - start)
     }
+}
+
+/// The leading ASCII digits of eight bytes read as a little-endian word
+/// `w` (the first byte lowest): their value and count, without a branch
+/// per byte (SWAR). A byte `b` is a digit when neither `b − '0'` nor
+/// `b + 0x46` sets its high bit; a borrow or carry only moves to the bytes
+/// after a non-digit, which are not read. The digits, moved to the top
+/// bytes (the zeros below them are leading zeros), are combined in pairs,
+/// fours and eights by three multiplications.
+#[inline(always)]
+fn leading_digits(w: u64) -> (u64, usize) {
+    const LOW: u64 = 0x0101_0101_0101_0101;
+    let d = w.wrapping_sub(0x30 * LOW);
+    let not_digit = (d | w.wrapping_add(0x46 * LOW)) & (0x80 * LOW);
+    let count = (not_digit.trailing_zeros() / 8) as usize;
+    if count == 0 {
+        return (0, 0);
+    }
+    let d = d << (8 * (8 - count));
+    let pairs = (d * 10 + (d >> 8)) & 0x00FF_00FF_00FF_00FF;
+    let fours = (pairs * 100 + (pairs >> 16)) & 0x0000_FFFF_0000_FFFF;
+    ((fours * 10_000 + (fours >> 32)) & 0xFFFF_FFFF, count)
 }
 
 /// The digits of a decimal's mantissa as read: the first 18 on a 64-bit
@@ -393,12 +436,35 @@ struct Mantissa {
 }
 
 impl Mantissa {
+    /// The digits kept on the 64-bit word.
+    const WORD_DIGITS: usize = 18;
+
+    /// Append the `count ≤ 8` digits of value `v` to a mantissa of at most
+    /// [`WORD_DIGITS`](Mantissa::WORD_DIGITS)` − 8` digits (on the word).
+    #[inline(always)]
+    fn push_run(&mut self, v: u64, count: usize) {
+        const TENS: [u64; 9] = [
+            1,
+            10,
+            100,
+            1_000,
+            10_000,
+            100_000,
+            1_000_000,
+            10_000_000,
+            100_000_000,
+        ];
+        self.word = self.word * TENS[count] + v;
+        self.len += count;
+    }
+
     /// Append the digit `d`; `None` when the value leaves `i128`.
+    #[inline(always)]
     fn push(&mut self, d: u8) -> Option<()> {
-        if self.len < 18 {
+        if self.len < Self::WORD_DIGITS {
             self.word = 10 * self.word + u64::from(d);
         } else {
-            if self.len == 18 {
+            if self.len == Self::WORD_DIGITS {
                 self.wide = i128::from(self.word);
             }
             self.wide = self.wide.checked_mul(10)?.checked_add(i128::from(d))?;
@@ -407,8 +473,9 @@ impl Mantissa {
         Some(())
     }
 
+    #[inline(always)]
     fn value(&self) -> i128 {
-        if self.len <= 18 {
+        if self.len <= Self::WORD_DIGITS {
             i128::from(self.word)
         } else {
             self.wide
@@ -557,6 +624,38 @@ mod tests {
             }
             if let Ok(line) = String::from_utf8(bytes) {
                 agrees(&line);
+            }
+        }
+    }
+
+    proptest! {
+        #[test]
+        fn eight_bytes_at_once_read_the_digits_one_at_a_time_reads(
+            bytes in prop::array::uniform8(prop_oneof![b'0'..=b'9', any::<u8>()]),
+        ) {
+            let count = bytes.iter().take_while(|b| b.is_ascii_digit()).count();
+            let value = bytes[..count].iter().fold(0, |v, &b| 10 * v + u64::from(b - b'0'));
+            prop_assert_eq!(leading_digits(u64::from_le_bytes(bytes)), (value, count));
+        }
+
+        #[test]
+        fn long_decimals_are_read_exactly_or_refused(
+            whole in "[1-9][0-9]{0,44}",
+            frac in "[0-9]{1,20}",
+            tail in "[,\\]\"/ x]{0,9}",
+        ) {
+            for text in [whole.clone(), format!("{whole}.{frac}")] {
+                let line = format!("{text}{tail}");
+                let mut c = Cursor { bytes: line.as_bytes(), at: 0, max_digits: u64::MAX };
+                let digits = text.replace('.', "");
+                let frac_digits = text.len() - whole.len() - usize::from(text.contains('.'));
+                let want = digits.parse::<i128>().ok().and_then(|p| {
+                    Some(((p, 10i128.checked_pow(frac_digits as u32)?), digits.len()))
+                });
+                prop_assert_eq!(c.decimal(false), want);
+                if want.is_some() {
+                    prop_assert_eq!(c.at, text.len());
+                }
             }
         }
     }

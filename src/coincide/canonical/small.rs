@@ -10,7 +10,7 @@
 //! two single-word gcds of its cross terms (`(a/b)(c/d) = (a/g₁)(c/g₂) /
 //! ((b/g₂)(d/g₁))` with `g₁ = gcd(a, d)`, `g₂ = gcd(c, b)`).
 
-use crate::algebra::gcd::gcd_u128;
+use crate::algebra::gcd::{gcd_u128, gcd_u64};
 use crate::algebra::modp::Fp;
 use crate::coincide::certificate::FpGrids;
 use crate::coincide::minimal::Net;
@@ -26,6 +26,11 @@ use std::borrow::Cow;
 use std::cmp::Ordering;
 
 /// A rational `p/q` in lowest terms with `q > 0`, in machine integers.
+///
+/// Its products and reductions are `#[inline(always)]`: called, they
+/// returned their `Option<Small>` through the stack, and the wider load of
+/// its tag stalled on store forwarding (most of the reader's time in
+/// `SmallPatch::new`, issue 31).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 struct Small {
     p: i128,
@@ -33,12 +38,14 @@ struct Small {
 }
 
 /// `v` as a 64-bit word, if it fits one.
+#[inline(always)]
 fn word(v: i128) -> Option<i64> {
     i64::try_from(v).ok()
 }
 
 /// `a · b`, on one 64-bit product when both fit words (then it cannot
 /// overflow `i128`); `None` on overflow.
+#[inline(always)]
 fn checked_mul(a: i128, b: i128) -> Option<i128> {
     match (word(a), word(b)) {
         (Some(x), Some(y)) => Some(i128::from(x) * i128::from(y)),
@@ -47,6 +54,7 @@ fn checked_mul(a: i128, b: i128) -> Option<i128> {
 }
 
 /// `a / g` for a divisor `g > 0` of `a`, on 64-bit words when `a` fits.
+#[inline(always)]
 fn div_exact(a: i128, g: i128) -> i128 {
     match (g, i64::try_from(a), i64::try_from(g)) {
         (1, _, _) => a,
@@ -59,6 +67,7 @@ impl Small {
     const ONE: Small = Small { p: 1, q: 1 };
 
     /// `p/q` in lowest terms, for `q > 0`.
+    #[inline(always)]
     fn reduced((p, q): (i128, i128)) -> Option<Small> {
         if q <= 0 {
             return None;
@@ -82,6 +91,7 @@ impl Small {
 
     /// The product, reduced by cross gcds; `None` on overflow. Integers
     /// (`q = 1`, the common case) need no gcd, or one when only one is.
+    #[inline(always)]
     fn mul(self, o: Small) -> Option<Small> {
         match (self.q, o.q) {
             (1, 1) => {
@@ -107,6 +117,7 @@ impl Small {
 
     /// `self · a` for an integer `a`: `(p/q)·a = p(a/g) / (q/g)` with
     /// `g = gcd(a, q)`, in lowest terms; `None` on overflow.
+    #[inline(always)]
     fn mul_integer(self, a: i128) -> Option<Small> {
         let g = gcd_u128(a.unsigned_abs(), self.q.unsigned_abs()) as i128;
         Some(Small {
@@ -118,10 +129,10 @@ impl Small {
     /// [`mul`](Small::mul) when all four integers fit 64-bit words (the
     /// common case): gcds and quotients on words, and products of two words
     /// cannot overflow `i128`. `None` when they do not fit.
+    #[inline(always)]
     fn mul_words(self, o: Small) -> Option<Small> {
         let (a, b, c, d) = (word(self.p)?, word(self.q)?, word(o.p)?, word(o.q)?);
-        let gcd =
-            |x: i64, y: i64| gcd_u128(x.unsigned_abs().into(), y.unsigned_abs().into()) as i64;
+        let gcd = |x: i64, y: i64| gcd_u64(x.unsigned_abs(), y.unsigned_abs()) as i64;
         let (g1, g2) = (gcd(a, d), gcd(c, b));
         // A gcd of 2⁶³ (both i64::MIN) does not fit: the general path.
         if g1 <= 0 || g2 <= 0 {
@@ -135,6 +146,7 @@ impl Small {
 
     /// Whether the product fits `i128` ([`mul`](Small::mul) is not
     /// `None`), decided without a gcd when the unreduced one fits.
+    #[inline(always)]
     fn product_fits(self, o: Small) -> bool {
         let unreduced = checked_mul(self.p, o.p).is_some() && checked_mul(self.q, o.q).is_some();
         unreduced || self.mul(o).is_some()
@@ -149,6 +161,7 @@ impl Small {
     }
 
     /// Exact order by cross products; `None` on overflow.
+    #[inline(always)]
     fn cmp(self, o: Small) -> Option<Ordering> {
         if self.q == o.q {
             // One denominator (q > 0): the numerators decide.
@@ -168,9 +181,11 @@ impl Small {
 }
 
 /// `v` in decimal, on 64-bit words when it fits one (the common case: the
-/// formatter's 128-bit path divides in software).
+/// formatter's 128-bit path divides in software); one or two digits (the
+/// coordinates and invariants of small nets) written where it is called.
+#[inline(always)]
 fn push_int(out: &mut String, v: i128) {
-    let Ok(mut u) = u64::try_from(v.unsigned_abs()) else {
+    let Ok(u) = u64::try_from(v.unsigned_abs()) else {
         use std::fmt::Write;
         let _ = write!(out, "{v}");
         return;
@@ -179,13 +194,17 @@ fn push_int(out: &mut String, v: i128) {
         out.push('-');
     }
     if u < 100 {
-        // One or two digits (common: coordinates and invariants of small nets).
         if u >= 10 {
             out.push(char::from(b'0' + (u / 10) as u8));
         }
         out.push(char::from(b'0' + (u % 10) as u8));
         return;
     }
+    push_word(out, u);
+}
+
+/// The word `u` in decimal.
+fn push_word(out: &mut String, mut u: u64) {
     let mut digits = [0u8; 20];
     let mut at = digits.len();
     loop {
@@ -309,6 +328,39 @@ fn try_collect<T>(len: usize, items: impl Iterator<Item = Option<T>>) -> Option<
         out.push(x?);
     }
     Some(out)
+}
+
+/// Append `p_k · Π_{j≠k} q_j mod p` for the fractions `x(k) = p_k/q_k`,
+/// `k < n`: their images times the product of their denominators, by
+/// products of the denominators before `k` and after it (no inverse);
+/// `None` when `p` divides a denominator.
+fn push_cleared(out: &mut Vec<Fp>, n: usize, x: impl Fn(usize) -> Small) -> Option<()> {
+    let start = out.len();
+    let mut before = Fp::new(1);
+    let mut fractions = false;
+    for k in 0..n {
+        let xk = x(k);
+        let image = Fp::from_i128(xk.p);
+        out.push(if fractions { image * before } else { image });
+        if xk.q != 1 {
+            before = before * Fp::from_i128(xk.q);
+            fractions = true;
+        }
+    }
+    if before == Fp::new(0) {
+        return None;
+    }
+    if fractions {
+        let mut after = Fp::new(1);
+        for (k, y) in out[start..].iter_mut().enumerate().rev() {
+            *y = *y * after;
+            let q = x(k).q;
+            if q != 1 {
+                after = after * Fp::from_i128(q);
+            }
+        }
+    }
+    Some(())
 }
 
 fn positions((m, n): (usize, usize)) -> impl Iterator<Item = (usize, usize)> {
@@ -474,8 +526,13 @@ impl SmallPatch {
 
     /// Whether every homogeneous number `x·ω` of the net fits `i128`
     /// ([`size`](SmallPatch::size) is not `None`), decided without the
-    /// gcds of the bit count: an unreduced product that fits decides.
+    /// gcds of the bit count: an unreduced product that fits decides, and
+    /// when every integer of the net fits a 64-bit word, every product does.
     pub fn homogeneous_fits(&self) -> bool {
+        let words = |x: &Small| word(x.p).is_some() && word(x.q).is_some();
+        if self.coords.iter().chain(&self.weights).all(words) {
+            return true;
+        }
         let points = self.coords.chunks_exact(self.dim);
         self.weights
             .iter()
@@ -506,7 +563,8 @@ impl SmallPatch {
 
     /// Prove the net minimal modulo `p` as
     /// [`KeyPlan::Minimal`](super::KeyPlan::Minimal) does (the same
-    /// certificate on the same image); `false` when it is not proved (or a
+    /// certificate on the same image, each component times a non-zero
+    /// constant: the same answer); `false` when it is not proved (or a
     /// denominator is divisible by `p`). When it is proved, the key text is
     /// computed at once in machine integers (work linear in the net, like
     /// reading it) and kept for [`key_text`](SmallPatch::key_text), unless a
@@ -541,38 +599,28 @@ impl SmallPatch {
         }
     }
 
-    /// The image modulo `p` of the homogeneous net as flat grids of
-    /// Bernstein coefficients ([`FpGrids`]: component `c` of point `k`,
-    /// row-major, at `c·count + k`), or `None` when `p` divides a
-    /// denominator (the denominators inverted together,
-    /// [`Fp::invert_all`]).
+    /// The image modulo `p` of the homogeneous net, each component times
+    /// a non-zero constant, as flat grids of Bernstein coefficients
+    /// ([`FpGrids`]: component `c` of point `k`, row-major, at
+    /// `c·count + k`), or `None` when `p` divides a denominator. The
+    /// constants clear the denominators without an inverse
+    /// ([`push_cleared`]): the weights are multiplied by the product of
+    /// their denominators, coordinate `c` by that of its own. The
+    /// certificate cannot tell: a component's degree, and the gcd of the
+    /// components, are those of its non-zero multiples.
     fn homogeneous_mod_p(&self) -> Option<Vec<Fp>> {
-        let numbers = || self.weights.iter().chain(&self.coords);
-        let mut image: Vec<Fp> = numbers().map(|x| Fp::from_i128(x.p)).collect();
-        // The denominators other than 1, inverted together.
-        let (at, mut inverse): (Vec<usize>, Vec<Fp>) = numbers()
-            .enumerate()
-            .filter(|(_, x)| x.q != 1)
-            .map(|(k, x)| (k, Fp::from_i128(x.q)))
-            .unzip();
-        if !Fp::invert_all(&mut inverse) {
-            return None;
+        let (count, dim) = (self.weights.len(), self.dim);
+        let mut grids = Vec::with_capacity(count * (dim + 1));
+        for c in 0..dim {
+            push_cleared(&mut grids, count, |k| self.coords[k * dim + c])?;
         }
-        for (k, inv) in at.into_iter().zip(inverse) {
-            image[k] = image[k] * inv;
+        push_cleared(&mut grids, count, |k| self.weights[k])?;
+        let (coords, weights) = grids.split_at_mut(dim * count);
+        for component in coords.chunks_exact_mut(count) {
+            for (x, &w) in component.iter_mut().zip(&*weights) {
+                *x = *x * w;
+            }
         }
-        let (weights, coords) = image.split_at(self.weights.len());
-        let count = weights.len();
-        let mut grids = Vec::with_capacity(count * (self.dim + 1));
-        for c in 0..self.dim {
-            grids.extend(
-                weights
-                    .iter()
-                    .zip(coords.chunks_exact(self.dim))
-                    .map(|(&w, x)| x[c] * w),
-            );
-        }
-        grids.extend_from_slice(weights);
         Some(grids)
     }
 
@@ -732,6 +780,22 @@ mod tests {
                 prop_assert_eq!(s.key_text().unwrap(), canonical_key(&patch).unwrap().text());
             }
         }
+    }
+
+    #[test]
+    fn a_denominator_divisible_by_p_is_not_certified() {
+        let p = i128::from(crate::algebra::modp::MODULUS);
+        let plain = [(0, 1), (1, 2), (3, 1)];
+        let weights = [(1, 1), (2, 1), (1, 1)];
+        let certify = |coords: &[(i128, i128)], weights: &[(i128, i128)]| {
+            SmallPatch::new(true, (2, 0), 1, coords, weights)
+                .unwrap()
+                .certify()
+        };
+        assert!(certify(&plain, &weights));
+        // p in a coordinate's denominator, or in a weight's.
+        assert!(!certify(&[(0, 1), (1, 2 * p), (3, 1)], &weights));
+        assert!(!certify(&plain, &[(1, 1), (2, p), (1, 1)]));
     }
 
     #[test]
