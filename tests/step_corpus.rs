@@ -1047,6 +1047,79 @@ fn surface_point_f64(s: &Store, id: u64, u: f64, v: f64) -> Option<[f64; 3]> {
     Some([0, 1, 2].map(|i| c[i] + a * x[i] + b * y[i] + h * z[i]))
 }
 
+/// A non-rational `B_SPLINE_CURVE_WITH_KNOTS` at `t`, by de Boor's
+/// recursion in `f64` on the raw entity (degree, points, multiplicities,
+/// knots).
+fn de_boor_f64(s: &Store, id: u64, t: f64) -> Vec<f64> {
+    let p = params(s, id);
+    let list = |i: usize| match &p[i] {
+        exact_bezier::step::parser::Param::List(xs) => xs.clone(),
+        q => panic!("#{id}: {q:?}"),
+    };
+    let degree = num(&p[1]).to_f64() as usize;
+    let points: Vec<Vec<f64>> = list(2)
+        .iter()
+        .map(|r| {
+            numbers(s, reference(r).unwrap())
+                .iter()
+                .map(Ordered::to_f64)
+                .collect()
+        })
+        .collect();
+    let knots: Vec<f64> = list(6)
+        .iter()
+        .zip(list(7))
+        .flat_map(|(m, k)| std::iter::repeat_n(num(&k).to_f64(), num(m).to_f64() as usize))
+        .collect();
+    let k = (degree..points.len())
+        .rfind(|&k| knots[k] <= t)
+        .unwrap_or(degree);
+    let mut d: Vec<Vec<f64>> = points[k - degree..=k].to_vec();
+    for r in 1..=degree {
+        for j in (r..=degree).rev() {
+            let i = k - degree + j;
+            let alpha = (t - knots[i]) / (knots[i + degree + 1 - r] - knots[i]);
+            d[j] = (0..3)
+                .map(|c| (1.0 - alpha) * d[j - 1][c] + alpha * d[j][c])
+                .collect();
+        }
+    }
+    d[degree].clone()
+}
+
+/// A `SURFACE_OF_REVOLUTION` of a non-rational B-spline curve `λ` at
+/// `(u, v)`: `λ(v)` turned by `u` (radians) about its axis, by Rodrigues'
+/// formula in `f64` from the raw entities.
+fn revolution_point_f64(s: &Store, id: u64, u: f64, v: f64) -> Option<Vec<f64>> {
+    let rec = &s[&id].records[0];
+    if s[&id].complex || rec.name != "SURFACE_OF_REVOLUTION" {
+        return None;
+    }
+    let f = |x: Vec<R>| -> Vec<f64> { x.iter().map(Ordered::to_f64).collect() };
+    let axis = params(s, reference(&rec.params[2])?);
+    let a = f(numbers(s, reference(&axis[1])?));
+    let z = f(numbers(s, reference(&axis[2])?));
+    let n = z.iter().map(|t| t * t).sum::<f64>().sqrt();
+    let z: Vec<f64> = z.iter().map(|t| t / n).collect();
+    let d: Vec<f64> = de_boor_f64(s, reference(&rec.params[1])?, v)
+        .iter()
+        .zip(&a)
+        .map(|(p, q)| p - q)
+        .collect();
+    let along: f64 = (0..3).map(|i| d[i] * z[i]).sum();
+    let rho: Vec<f64> = (0..3).map(|i| d[i] - along * z[i]).collect();
+    let zr = [
+        z[1] * rho[2] - z[2] * rho[1],
+        z[2] * rho[0] - z[0] * rho[2],
+        z[0] * rho[1] - z[1] * rho[0],
+    ];
+    Some(
+        (0..3)
+            .map(|i| a[i] + along * z[i] + u.cos() * rho[i] + u.sin() * zr[i])
+            .collect(),
+    )
+}
+
 fn distance(p: &[f64], q: &[f64]) -> f64 {
     p.iter()
         .zip(q)
@@ -1123,7 +1196,11 @@ fn analytic_pcurves_run_between_their_edges_vertices() {
         let s = store(name);
         let tol = Ordered::to_f64(&tolerance_sq(&m)).sqrt();
         let elementary = |id: u64| surface_point_f64(&s, id, 0.0, 0.0).is_some();
-        let spline = |id: u64| s[&id].complex || s[&id].records[0].name.starts_with("B_SPLINE");
+        let spline = |id: u64| {
+            s[&id].complex
+                || s[&id].records[0].name.starts_with("B_SPLINE")
+                || s[&id].records[0].name == "SURFACE_OF_REVOLUTION"
+        };
         let expected = s
             .values()
             .filter(|i| i.records[0].name == "PCURVE")
@@ -1153,7 +1230,9 @@ fn analytic_pcurves_run_between_their_edges_vertices() {
                 let at = |p: Vec<R>| {
                     let (u, v) = (p[0].to_f64(), p[1].to_f64());
                     surface_point_f64(&s, pc.surface, u, v)
-                        .map_or_else(|| spline_point(&face_pieces, u, v), Vec::from)
+                        .map(Vec::from)
+                        .or_else(|| revolution_point_f64(&s, pc.surface, u, v))
+                        .unwrap_or_else(|| spline_point(&face_pieces, u, v))
                 };
                 let (first, last) = (
                     first_point(&a.pieces[0]),

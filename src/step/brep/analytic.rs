@@ -40,7 +40,7 @@ use num_rational::BigRational;
 #[derive(Clone, Debug)]
 pub(super) struct Units {
     /// The plane angle unit (cone semi-angles, angle trims).
-    angle: AngleUnit,
+    pub(super) angle: AngleUnit,
     /// How near (an `f64` distance in the model's length unit) a vertex
     /// must be to a piece's end to be taken there: the declared tolerance,
     /// or 10⁻⁷ without one. A search heuristic only: the trimmed pieces

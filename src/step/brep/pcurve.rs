@@ -28,18 +28,25 @@
 //!   pcurves are trimmed there, exactly between the located parameters,
 //!   without `vertex_distance_sq`.
 //!
-//! Pcurves on swept surfaces (extrusion, revolution) and non-line pcurves
-//! on curved surfaces stay unconverted and are counted
+//! - on a **surface of revolution** of a B-spline curve, `v` is the curve's
+//!   knot parameter of the point nearest the vertex in the half-plane
+//!   (height along the axis, distance from it), found in `f64`, and `u` the
+//!   angle from that point's radial vector to the vertex's; `LINE` pcurves
+//!   are trimmed there likewise.
+//!
+//! Pcurves on surfaces of extrusion and of revolution of other curves, and
+//! non-line pcurves on curved surfaces, stay unconverted and are counted
 //! (`pcurves_not_converted`).
 //!
 //! [`trim_between`]: crate::analytic::trim_between
 
-use super::{surface_geometry, type_name, Builder, Geometry, GeometryRef, Pcurve};
+use super::{reference, surface_geometry, type_name, Builder, Geometry, GeometryRef, Pcurve};
 use crate::algebra::{Ordered, RealAlgebraic, Scalar};
 use crate::error::Error;
-use crate::nurbs::nearest_parameters;
+use crate::nurbs::{nearest_parameters, Nurbs, SpannedPatch};
+use crate::patch::Patch;
 use crate::step::brep::analytic::{lift, Units};
-use crate::step::geometry::{curve_pieces, surface_parameters, Curve, Parameter};
+use crate::step::geometry::{axis1, curve_pieces, surface_parameters, Curve, Parameter};
 use num_rational::BigRational;
 
 /// A 2D point located in `f64`, with the period of each coordinate.
@@ -126,9 +133,11 @@ impl Builder<'_> {
         if let Some(map) = self.with_readers(units, |r| surface_parameters(r, surface))? {
             return Ok(Some([&ends[0], &ends[1]].map(|p| map.of(p))));
         }
-        let Geometry::BSpline(spline) =
-            surface_geometry(&type_name(self.store, surface), surface, &self.conv)
-        else {
+        let kind = type_name(self.store, surface);
+        if kind == "SURFACE_OF_REVOLUTION" {
+            return self.revolution_parameters(surface, ends, units);
+        }
+        let Geometry::BSpline(spline) = surface_geometry(&kind, surface, &self.conv) else {
             return Ok(None);
         };
         let mut out = [Vec::new(), Vec::new()];
@@ -146,6 +155,62 @@ impl Builder<'_> {
                 value,
                 period: None,
             }));
+        }
+        Ok(Some(out))
+    }
+
+    /// The parameters of the two vertices `ends` on the surface of
+    /// revolution `surface` of a B-spline curve `λ` about the axis `(A, â)`
+    /// (ISO 10303-42: `u` the angle of rotation, `v` the curve's parameter):
+    /// `v` where `λ` has the vertex's height `(P − A)·â` and distance from
+    /// the axis (the nearest point found in that half-plane by
+    /// [`nearest_on_profile`]), and `u` the angle from `λ(v)`'s radial
+    /// vector to the vertex's, about `â`, in the context's unit. `None` for
+    /// another swept curve.
+    ///
+    /// # Errors
+    ///
+    /// As [`Builder::vertex_parameters`]; a malformed entity.
+    fn revolution_parameters(
+        &self,
+        surface: u64,
+        ends: &[Vec<RealAlgebraic>; 2],
+        units: &Units,
+    ) -> Result<Option<[Candidates; 2]>, Error> {
+        let rec = &self.store[&surface].records[0];
+        let swept = reference(rec.params.get(1), "swept_curve").map_err(Error::Format)?;
+        let axis = reference(rec.params.get(2), "axis_position").map_err(Error::Format)?;
+        let Some(Nurbs::Curve(_)) = self.conv.nurbs.get(&swept) else {
+            return Ok(None);
+        };
+        let profile = self.conv.nurbs[&swept].pieces();
+        let (origin, direction) = axis1::<RealAlgebraic>(self.store, axis)?;
+        let f = |p: &[RealAlgebraic]| -> [f64; 3] { [0, 1, 2].map(|i| p[i].to_f64()) };
+        let (a, z) = (f(&origin), f(&direction));
+        let turn = units.angle.to_radians_f64(1.0);
+        let mut out = [Vec::new(), Vec::new()];
+        for (p, params) in ends.iter().zip(&mut out) {
+            let (height, radial) = axial(f(p), a, z);
+            let Some((v, d, c)) = nearest_on_profile(&profile, a, z, [height, norm(radial)]) else {
+                return Ok(None);
+            };
+            if d > 10.0 * units.snap {
+                return Err(Error::Domain(format!(
+                    "a vertex of the edge is {d:e} from the nearest point found on the surface of revolution #{surface}"
+                )));
+            }
+            let (_, from) = axial(c, a, z);
+            let angle = dot(cross(z, from), radial).atan2(dot(from, radial));
+            params.push([
+                Parameter::Located {
+                    value: angle / turn,
+                    period: Some(std::f64::consts::TAU / turn),
+                },
+                Parameter::Located {
+                    value: v,
+                    period: None,
+                },
+            ]);
         }
         Ok(Some(out))
     }
@@ -229,6 +294,80 @@ fn located(p: &[Parameter<RealAlgebraic>; 2]) -> Located {
         Parameter::Exact(t) => (t.to_f64(), None),
         Parameter::Located { value, period } => (value, period),
     })
+}
+
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn norm(a: [f64; 3]) -> f64 {
+    dot(a, a).sqrt()
+}
+
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// The height `(p − a)·z` of `p` along the unit axis `(a, z)` and its
+/// radial vector `(p − a) − height·z`.
+fn axial(p: [f64; 3], a: [f64; 3], z: [f64; 3]) -> (f64, [f64; 3]) {
+    let d = [p[0] - a[0], p[1] - a[1], p[2] - a[2]];
+    let h = dot(d, z);
+    (h, [d[0] - h * z[0], d[1] - h * z[1], d[2] - h * z[2]])
+}
+
+/// The knot parameter of the point of the profile curve (B-spline pieces
+/// `profile`) nearest, in the half-plane (height, distance from the axis
+/// `(a, z)`), to `target`, with that distance and the point: the best of 64
+/// samples per piece, refined by a ternary search over the samples on
+/// either side (a search heuristic in `f64`).
+fn nearest_on_profile(
+    profile: &[SpannedPatch],
+    a: [f64; 3],
+    z: [f64; 3],
+    target: [f64; 2],
+) -> Option<(f64, f64, [f64; 3])> {
+    const SAMPLES: u32 = 64;
+    let mut best: Option<(f64, f64, [f64; 3])> = None;
+    for piece in profile {
+        let Patch::Curve(c) = &piece.patch else {
+            continue;
+        };
+        let c = c.map(Ordered::to_f64);
+        let at = |t: f64| -> Option<(f64, [f64; 3])> {
+            let p = c.eval(&t).ok()?;
+            let p = [p[0], p[1], p[2]];
+            let (h, r) = axial(p, a, z);
+            Some(((h - target[0]).hypot(norm(r) - target[1]), p))
+        };
+        let span = [piece.u[0].to_f64(), piece.u[1].to_f64()];
+        let step = 1.0 / f64::from(SAMPLES);
+        let (k, _) = (0..=SAMPLES)
+            .filter_map(|k| Some((k, at(f64::from(k) * step)?.0)))
+            .min_by(|x, y| x.1.total_cmp(&y.1))?;
+        let (mut lo, mut hi) = (
+            (f64::from(k) - 1.0).max(0.0) * step,
+            (f64::from(k) + 1.0).min(f64::from(SAMPLES)) * step,
+        );
+        for _ in 0..100 {
+            let (m1, m2) = (lo + (hi - lo) / 3.0, hi - (hi - lo) / 3.0);
+            if at(m1)?.0 <= at(m2)?.0 {
+                hi = m2;
+            } else {
+                lo = m1;
+            }
+        }
+        let t = 0.5 * (lo + hi);
+        let (d, p) = at(t)?;
+        if best.is_none_or(|b| d < b.1) {
+            best = Some((span[0] + t * (span[1] - span[0]), d, p));
+        }
+    }
+    best
 }
 
 fn from_f64(v: f64) -> Result<RealAlgebraic, Error> {
