@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Dense 50-digit sampling of the gaps and angles along a STEP B-rep's edges.
+"""Dense 50-digit sampling of the gaps, angles and curvature differences along a STEP B-rep's edges.
 
 An independent estimate, for the audit's certified measures (issue 28), of
 
