@@ -850,7 +850,7 @@ fn check_sampled_models(names: &[&str]) {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
-/// On every corpus model, every certified gap, face gap and angle
+/// On every corpus model, every certified gap, face gap, angle and curvature
 /// contains the largest of the independent 50-digit samples
 /// (`sampled.json`, from `benches/peers/step_sample.py`) and is not above
 /// them by more than their sampling slack; exact zeros sample as zero to

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Dense 50-digit sampling of the gaps and angles along a STEP B-rep's edges.
+"""Dense 50-digit sampling of the gaps, angles and curvature differences along a STEP B-rep's edges.
 
 An independent estimate, for the audit's certified measures (issue 28), of
 
@@ -10,7 +10,11 @@ An independent estimate, for the audit's certified measures (issue 28), of
 * ``angle``: the largest angle, radians, between the faces' oriented
   normals at the foot points (the surface's normal as ISO 10303-42 defines
   it from its parameterization, reversed where the ADVANCED_FACE's
-  ``same_sense`` is false).
+  ``same_sense`` is false);
+* ``curvature``: the largest difference of the faces' normal curvatures
+  across the edge, ``|k1 - k2|``, each ``k = II(w, w) / I(w, w)`` at the
+  foot point in the direction ``w = n x C'`` (n the face's oriented normal
+  there), per length unit (see ``curvature_across``).
 
 It shares nothing with the exact-bezier crate: the file is parsed by
 ``step_counts.py`` (the independent Part 21 reader beside it) and every
@@ -118,6 +122,8 @@ FINE = 65
 # below the 50 digits), and does not try one below TINY_STEP.
 CONVERGED_STEP = mpf(10) ** -25
 TINY_STEP = mpf(10) ** -45
+# The step of the central difference of a foot normal (curvature_across).
+CURVATURE_STEP = mpf(10) ** -10
 SURFACES = ("PLANE", "CYLINDRICAL_SURFACE", "CONICAL_SURFACE", "SPHERICAL_SURFACE", "TOROIDAL_SURFACE")
 
 
@@ -599,7 +605,7 @@ class BSplineSurface(Surface):
 
     def reset(self):
         """Forget the feet of the previous edge."""
-        self.memo, self.last = {}, None
+        self.memo, self.jets, self.last = {}, {}, None
 
     def derivatives(self, u, v, n=2):
         """[S, S_u, S_v, S_uu, S_uv, S_vv] at (u, v) in the domain, up to
@@ -779,7 +785,7 @@ class BSplineSurface(Surface):
         f, u, v, D = best
         self.last = (u, v, D)
         result = (sqrt(f), D[0], unit(cross(D[1], D[2])))
-        self.memo[key] = result
+        self.memo[key], self.jets[key] = result, D
         return result
 
     @staticmethod
@@ -911,13 +917,49 @@ def parameters(ranges, fractions):
     return out
 
 
+def curvature_across(surf, p, tangent):
+    """The normal curvature II(w, w) / I(w, w) of the surface at the foot of
+    p, relative to its normal n there, in the direction w = n x tangent
+    (across the edge).  A B-spline surface's from its derivatives at the
+    foot, w = a S_u + b S_v with (a, b) = (G S_u.w - F S_v.w, E S_v.w - F S_u.w)
+    (do Carmo, section 3-2; at a foot held on the border too); every other
+    surface's from the turn of its foot normal, -w.(n(F + h w) - n(F - h w))
+    / (2 h |w|^2) for the unit w (a central difference, h = 1e-10 in length
+    units: its error is about h^2 times the third derivative, far below
+    what is compared)."""
+    _, foot, n = surf.foot(p)
+    w = cross(n, tangent)
+    if isinstance(surf, BSplineSurface):
+        _, Su, Sv, Suu, Suv, Svv = surf.jets[tuple(p)]
+        E, F, G = dot(Su, Su), dot(Su, Sv), dot(Sv, Sv)
+        uw, vw = dot(Su, w), dot(Sv, w)
+        a, b = G * uw - F * vw, E * vw - F * uw
+        second = dot(Suu, n) * a * a + 2 * dot(Suv, n) * a * b + dot(Svv, n) * b * b
+        return second / (E * a * a + 2 * F * a * b + G * b * b)
+    w = scale(w, CURVATURE_STEP / norm(w))
+    turn = sub(surf.foot(add(foot, w))[2], surf.foot(sub(foot, w))[2])
+    return -dot(turn, w) / (2 * CURVATURE_STEP**2)
+
+
+def tangent(curve, t):
+    """A multiple of C'(t): a central difference of step 1e-20 (one-sided
+    at a clamped end)."""
+    h = mpf(10) ** -20
+    return sub(curve.at(t + h), curve.at(t - h))
+
+
 def measure(curve, faces, t):
-    """(gaps by face, face gap, angle, |point|) at the parameter t."""
+    """(gaps by face, face gap, angle, curvature difference, |point|) at the
+    parameter t."""
     p = curve.at(t)
     feet = [surf.foot(p) for surf, _ in faces]
-    normals = [scale(n, 1 if sense else -1) for (_, _, n), (_, sense) in zip(feet, faces)]
+    signs = [1 if sense else -1 for _, sense in faces]
+    normals = [scale(n, s) for (_, _, n), s in zip(feet, signs)]
     angle = atan2(norm(cross(normals[0], normals[1])), dot(normals[0], normals[1]))
-    return [f[0] for f in feet] + [norm(sub(feet[0][1], feet[1][1])), angle], max(abs(c) for c in p)
+    d = tangent(curve, t)
+    kappa = [s * curvature_across(surf, p, d) for (surf, _), s in zip(faces, signs)]
+    values = [f[0] for f in feet] + [norm(sub(feet[0][1], feet[1][1])), angle, abs(kappa[0] - kappa[1])]
+    return values, max(abs(c) for c in p)
 
 
 def sample_edge(curve, faces, ranges):
@@ -925,7 +967,7 @@ def sample_edge(curve, faces, ranges):
     values = [measure(curve, faces, t)[0] for t in parameters(ranges, fractions)]
     size = max(measure(curve, faces, t)[1] for t in parameters(ranges, fractions[:: (N - 1) // 16]))
     results = []
-    for m in range(4):
+    for m in range(5):
         series = [v[m] for v in values]
         slack = max(abs(series[i - 1] - 2 * series[i] + series[i + 1]) for i in range(1, N - 1)) / 2
         best = max(range(N), key=lambda i: series[i])
@@ -985,6 +1027,7 @@ def sample_file(path):
             "gap": {names[0]: results[0], names[1]: results[1]},
             "face_gap": results[2],
             "angle": results[3],
+            "curvature": results[4],
             "scale": float("%.6g" % float(size)),
         }
     return {"edges": out, "skipped": dict(sorted(skipped.items()))}
@@ -1134,7 +1177,12 @@ def self_test():
     domain is on that border, gap 5e-7 (the unrestricted plane's would be
     4e-7), face gap 5e-7, angle pi/2; edge C, an arc of radius 2 + 1e-7
     along the top border of a rational quarter cylinder of radius 2 and on
-    the plane z = 1: gaps 1e-7 and 0, face gap 1e-7, angle pi/2."""
+    the plane z = 1: gaps 1e-7 and 0, face gap 1e-7, angle pi/2.
+
+    (3) Curvature: every edge above has two faces flat across it
+    (difference 0); across the axis of the cylinder and of the rational
+    quarter cylinder, both of radius 2, the normal curvature is 1/2 towards
+    the axis (-1/2 relative to an outward normal)."""
     e = sample_text(SELF_TEST)["edges"]["#12"]
     assert abs(e["gap"]["#19"]["max"] - 1e-7) < 1e-20, e
     assert e["gap"]["#20"]["max"] < 1e-40, e
@@ -1186,6 +1234,20 @@ def self_test():
     assert abs(c["face_gap"]["max"] - 1e-7) < 1e-20, c
     assert abs(c["angle"]["max"] - float(PI / 2)) < 1e-15, c
     print("self-test 5 passed (edge C: arc 1e-7 off a rational quarter cylinder, along its border)")
+    for edge in (e, a, b, c):  # across each edge, both faces are flat
+        assert edge["curvature"]["max"] < 1e-15, edge
+    z = [mpf(0), mpf(0), mpf(1)]
+    cylinder = Cylinder(([mpf(0)] * 3, [mpf(1), mpf(0), mpf(0)], [mpf(0), mpf(1), mpf(0)], z), mpf(2))
+    quarter = model.surface(sc.Ref(410))
+    for x, y in ((1, 1), (-1, 1), (-1, -1), (1, -1)):
+        p = [mpf("1.2") * x, mpf("1.6") * y, mpf("0.5")]
+        for surf in (cylinder, quarter):
+            gap, _, n = surf.foot(p)
+            if gap < mpf(10) ** -30:  # on it: across the axis z, curvature 1/2 towards the axis
+                k = curvature_across(surf, p, z)
+                assert abs(k + dot(n, scale(p[:2] + [mpf(0)], 1 / mpf(2))) / 2) < mpf(10) ** -18, (surf, k)
+    assert quarter.jets, "the quarter cylinder was not reached"
+    print("self-test 6 passed (curvature across a cylinder's axis: 1/2, closed form and rational B-spline)")
     print("self-test passed")
 
 

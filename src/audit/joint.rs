@@ -422,13 +422,9 @@ fn narrower(a: Interval, b: Interval) -> Interval {
 /// edge, in the face's tangent plane; [`normal_curvature`]); over `T` for
 /// the upper bound, at `t_m` for the lower.
 fn curvature_bound(a: &Around, fields: Fields<'_>, signs: [Interval; 2]) -> Option<Bound> {
-    let kappa = |k: usize, c: &CurveJet, d: &Distance, s: &Interval| {
-        let j = fields[k].normal_jacobian_at_foot(&c.x, &d.normal, s)?;
-        let w = cross(&d.normal, &c.dx);
-        Some(normal_curvature(&j, &w)?.mul(&signs[k]))
-    };
     let diff = |c: &CurveJet, d: &[Distance; 2], s: [&Interval; 2]| {
-        Some(kappa(0, c, &d[0], s[0])?.sub(&kappa(1, c, &d[1], s[1])?))
+        let k = |i: usize| Some(kappa(fields[i], c, &d[i], s[i])?.mul(&signs[i]));
+        Some(k(0)?.sub(&k(1)?))
     };
     let over = diff(&a.co, &a.over, [&a.signed[0], &a.signed[1]])?;
     let mid = diff(&a.cm, &a.mid, [&a.mid[0].signed, &a.mid[1].signed])?;
@@ -436,6 +432,14 @@ fn curvature_bound(a: &Around, fields: Fields<'_>, signs: [Interval; 2]) -> Opti
         upper: over.mag(),
         lower: abs_lower(&mid),
     })
+}
+
+/// A face's normal curvature relative to its surface's normal at the foot
+/// points of the curve points `c.x` (normal and signed distance `d`, `s`),
+/// across the curve of tangent `c.dx` ([`curvature_bound`]).
+fn kappa(field: &dyn DistanceField, c: &CurveJet, d: &Distance, s: &Interval) -> Option<Interval> {
+    let j = field.normal_jacobian_at_foot(&c.x, &d.normal, s)?;
+    normal_curvature(&j, &cross(&d.normal, &c.dx))
 }
 
 /// The gap to a face with a closed form from what it proves over `T`:
@@ -561,18 +565,11 @@ fn composed_angle(
     curve: &ICurve,
     t: Interval,
 ) -> Option<Bound> {
-    let mut cuts = Vec::new();
-    for f in fields {
-        if let Field::Spline(s) = f {
-            cuts.extend(s.cuts(curve, t)?);
-        }
-    }
-    cuts.sort_by(f64::total_cmp);
     let mut bound = Bound {
         upper: 0.0,
         lower: 0.0,
     };
-    for part in parts(t, &cuts) {
+    for part in spline_parts(fields, curve, t)? {
         let [a, b] = [0, 1].map(|k| fields[k].normal_path(curve, part, gaps[k]));
         let (a, b) = (a?, b?);
         let second = if reversed {
@@ -586,6 +583,67 @@ fn composed_angle(
         bound.lower = bound.lower.max(Interval::point(mid.lo).sub(&slack).lo);
     }
     Some(bound)
+}
+
+/// The parts of piece `t` of `curve` between the knot lines the feet
+/// cross on either face ([`SplineField::cuts`]); `None` when a foot is
+/// not found.
+fn spline_parts(fields: [&Field<'_>; 2], curve: &ICurve, t: Interval) -> Option<Vec<Interval>> {
+    let mut cuts = Vec::new();
+    for f in fields {
+        if let Field::Spline(s) = f {
+            cuts.extend(s.cuts(curve, t)?);
+        }
+    }
+    cuts.sort_by(f64::total_cmp);
+    Some(parts(t, &cuts))
+}
+
+/// The curvature difference across the edge over piece `t` of `curve`
+/// where a face is a B-spline's, on each part between the knot lines the
+/// feet cross: a B-spline face's curvature on the boxes that hold its feet
+/// near the fitted curve ([`SplineField::curvature_over`]), a closed
+/// form's at its feet ([`kappa`]); at most the greatest difference over a
+/// part, at least its value at a part's midpoint. `signs` orient each
+/// face's normal. `None` when a part is not proved (the caller splits
+/// `t`).
+fn composed_curvature(
+    fields: [&Field<'_>; 2],
+    signs: [Interval; 2],
+    curve: &ICurve,
+    t: Interval,
+) -> Option<Bound> {
+    let mut bound = Bound {
+        upper: 0.0,
+        lower: 0.0,
+    };
+    for part in spline_parts(fields, curve, t)? {
+        let [a, b] = [0, 1].map(|k| {
+            curvature_along(fields[k], curve, part)
+                .map(|[over, mid]| [over.mul(&signs[k]), mid.mul(&signs[k])])
+        });
+        let (a, b) = (a?, b?);
+        bound.upper = bound.upper.max(a[0].sub(&b[0]).mag());
+        bound.lower = bound.lower.max(abs_lower(&a[1].sub(&b[1])));
+    }
+    Some(bound)
+}
+
+/// A face's normal curvature across the edge, relative to its surface's
+/// normal, over part `t` of `curve` and at the part's midpoint `t_m` (the
+/// `f64` midpoint, for both faces alike).
+fn curvature_along(field: &Field<'_>, curve: &ICurve, t: Interval) -> Option<[Interval; 2]> {
+    match field {
+        Field::Spline(s) => s.curvature_over(curve, t).map(|c| [c.over, c.mid]),
+        Field::Closed(s) => {
+            let (cm, co, dt) = curve_jets(curve, t).ok()?;
+            let side = side(s, &cm, &co, dt)?;
+            Some([
+                kappa(s, &co, &side.over, &side.signed)?,
+                kappa(s, &cm, &side.mid, &side.mid.signed)?,
+            ])
+        }
+    }
 }
 
 /// The maximum over all the edge's curves of a measure bounded on piece
@@ -875,8 +933,17 @@ fn measure_capped(
                     },
                     tol.curvature.lo,
                 );
-                settle(along(&curves, fields, &proved, (target, work), |a| {
-                    curvature_bound(a, fields, signs)
+                let spline = [&s0, &s1].iter().any(|f| matches!(f, Field::Spline(_)));
+                settle(along_by(&curves, target, work, |k, c, t| {
+                    let composed = spline
+                        .then(|| composed_curvature([&s0, &s1], signs, c, t))
+                        .flatten();
+                    match composed {
+                        Some(b) => Ok(Some(b)),
+                        None => Ok(proved
+                            .around(k, c, fields, t)?
+                            .and_then(|a| curvature_bound(&a, fields, signs))),
+                    }
                 }))?
             },
         )

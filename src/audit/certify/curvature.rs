@@ -24,6 +24,7 @@
 //! Enclosed directly on the foot box of each piece (width proportional to
 //! the piece's length).
 
+use super::bezier::PatchJet;
 use super::foot::Foot;
 use super::gap::abs_lower;
 use super::ivec::{cross, dot, norm2};
@@ -31,10 +32,10 @@ use super::local::{Face, Local};
 use super::maximize::Bound;
 use crate::algebra::Interval;
 
-/// `κ_n` of a face at its foot across the edge of tangent `dc`; `None` if
-/// `I(w, w)`'s enclosure holds 0.
-pub fn normal_curvature(f: &Foot, sign: &Interval, dc: &[Interval]) -> Option<Interval> {
-    let j = &f.jet;
+/// `κ_n` of a face across the edge of tangent `dc`, at every point of the
+/// surface its jet `j` encloses (a foot box), relative to the normal
+/// `sign · S_u × S_v`; `None` if `I(w, w)`'s enclosure holds 0.
+pub fn curvature_across(j: &PatchJet, sign: &Interval, dc: &[Interval]) -> Option<Interval> {
     let n = cross(&j.xu, &j.xv);
     let len = norm2(&n).sqrt()?;
     let w = cross(&n, dc);
@@ -53,8 +54,8 @@ pub fn normal_curvature(f: &Foot, sign: &Interval, dc: &[Interval]) -> Option<In
 }
 
 fn difference(feet: &[Foot; 2], faces: &[Face; 2], dc: &[Interval]) -> Option<Interval> {
-    let k1 = normal_curvature(&feet[0], &faces[0].sign(), dc)?;
-    let k2 = normal_curvature(&feet[1], &faces[1].sign(), dc)?;
+    let k1 = curvature_across(&feet[0].jet, &faces[0].sign(), dc)?;
+    let k2 = curvature_across(&feet[1].jet, &faces[1].sign(), dc)?;
     Some(k1.sub(&k2))
 }
 

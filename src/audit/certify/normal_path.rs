@@ -32,6 +32,9 @@
 //! `V_k / c = Σ (c_l B_l / c)(V_{k,l} / c_l)` is a convex combination
 //! (the rational convex hull property), so
 //! `tan θ ≤ √(Σ_k max_l (V_{k,l}/c_l)²)` ([`angle_between`]).
+//! Elsewhere (a crease near a right angle or beyond, where `c` changes
+//! sign) the Bernstein hulls of `c`, `|n₁|²` and `|n₂|²` bound
+//! `cos θ = c/(|n₁||n₂|)` from below over the piece.
 
 use super::angle::polar_angle;
 use super::compose::{compose, NetRef};
@@ -88,17 +91,15 @@ fn at_half(f: &[Interval]) -> Interval {
 }
 
 /// The angle between two normal paths over `t ∈ [0, 1]`: a proved upper
-/// bound of its maximum, and its enclosure at `t = 1/2`; `None` unless
-/// every Bernstein coefficient of `n₁·n₂` is proved positive (the normals
-/// are not proved to be within a right angle of each other).
+/// bound of its maximum, and its enclosure at `t = 1/2`. Where every
+/// Bernstein coefficient of `n₁·n₂` is proved positive the bound is that
+/// of the tangent ([`tangent_bound`], tight like the square of the
+/// piece's length); elsewhere (a crease near or beyond a right angle)
+/// that of the cosine ([`cosine_bound`], tight like its length). `None`
+/// when a normal's length is not proved positive.
 pub fn angle_between(n1: &ScaledVec, n2: &ScaledVec) -> Option<(f64, Interval)> {
     let v = cross(n1, n2);
-    let c = [0, 1, 2]
-        .map(|k| mul(&n1[k], &n2[k]))
-        .iter()
-        .fold(None::<Scaled>, |s, f| {
-            Some(s.map_or(f.clone(), |s| add(&s, f)))
-        })?;
+    let c = dot(n1, n2);
     let mid = polar_angle(
         &[0, 1, 2]
             .map(|k| at_half(&v[k]).sqr())
@@ -108,22 +109,69 @@ pub fn angle_between(n1: &ScaledVec, n2: &ScaledVec) -> Option<(f64, Interval)> 
         &at_half(&c),
     );
     let c = unscale(&c)?;
-    if c.iter()
-        .any(|x| x.lo.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater))
-    {
-        return None;
-    }
+    let positive = c
+        .iter()
+        .all(|x| x.lo.partial_cmp(&0.0) == Some(std::cmp::Ordering::Greater));
+    let upper = if positive {
+        tangent_bound(&v, &c)?
+    } else {
+        cosine_bound(n1, n2, &c)?
+    };
+    upper.is_finite().then_some((upper, mid))
+}
+
+/// `n₁·n₂` in scaled form.
+fn dot(n1: &ScaledVec, n2: &ScaledVec) -> Scaled {
+    let [x, y, z] = [0, 1, 2].map(|k| mul(&n1[k], &n2[k]));
+    add(&add(&x, &y), &z)
+}
+
+/// `atan √(Σ_k max_l (V_{k,l}/c_l)²)` for the Bernstein coefficients `c`
+/// of `n₁·n₂`, all positive, and `V = n₁ × n₂` in scaled form (the
+/// rational convex hull property, see the module documentation).
+fn tangent_bound(v: &ScaledVec, c: &[Interval]) -> Option<f64> {
     let mut tan2 = Interval::point(0.0);
-    for vk in &v {
+    for vk in v {
         let most = unscale(vk)?
             .iter()
-            .zip(&c)
+            .zip(c)
             .map(|(x, cl)| x.div(&Interval::point(cl.lo)).map(|r| r.mag()))
             .try_fold(0.0_f64, |m, r| r.map(|r| m.max(r)))?;
         tan2 = tan2.add(&Interval::point(most).sqr());
     }
-    let upper = polar_angle(&tan2.sqrt()?, &Interval::point(1.0)).hi;
-    upper.is_finite().then_some((upper, mid))
+    Some(polar_angle(&tan2.sqrt()?, &Interval::point(1.0)).hi)
+}
+
+/// `acos` of a lower bound of `cos θ = n₁·n₂/(|n₁||n₂|)` over the piece:
+/// `m = min_l c_l` over the Bernstein coefficients `c` of `n₁·n₂` bounds
+/// the numerator below, and the hulls of the coefficients of `|n₁|²` and
+/// `|n₂|²` bound the denominator, so `cos θ ≥ m/max(|n₁||n₂|)` where
+/// `m ≥ 0` and `≥ m/min(|n₁||n₂|)` where `m < 0`. `None` unless both
+/// lengths are proved positive.
+fn cosine_bound(n1: &ScaledVec, n2: &ScaledVec, c: &[Interval]) -> Option<f64> {
+    let least = c.iter().map(|x| x.lo).fold(f64::INFINITY, f64::min);
+    let hull = |n: &ScaledVec| -> Option<Interval> {
+        let coefficients = unscale(&dot(n, n))?;
+        let lo = coefficients
+            .iter()
+            .map(|x| x.lo)
+            .fold(f64::INFINITY, f64::min);
+        let hi = coefficients.iter().map(|x| x.hi).fold(0.0, f64::max);
+        (lo > 0.0).then_some(Interval { lo, hi })
+    };
+    let lengths = hull(n1)?.mul(&hull(n2)?).sqrt()?;
+    let by = if least >= 0.0 { lengths.hi } else { lengths.lo };
+    let cos = Interval::point(least)
+        .div(&Interval::point(by))?
+        .lo
+        .max(-1.0);
+    let sin = Interval::point(1.0).sub(&Interval::point(cos).sqr());
+    let sin = Interval {
+        lo: sin.lo.max(0.0),
+        hi: sin.hi.max(0.0),
+    }
+    .sqrt()?;
+    Some(polar_angle(&sin, &Interval::point(cos)).hi)
 }
 
 /// `−n`: the normal of a face whose orientation is reversed.

@@ -82,6 +82,7 @@
 use super::bezier::{ICurve, IPatch, PatchJet};
 use super::closed_form::Distance;
 use super::compose::{compose, distance_bound, interpolate};
+use super::curvature::curvature_across;
 use super::field::{DistanceField, IMat3};
 use super::foot::{derivative, newton};
 use super::ivec::{add, cross, dot, norm2, scale, sub, IVec};
@@ -673,35 +674,76 @@ impl<'a> SplineField<'a> {
     }
 
     /// `L ε` of [`SplineField::normal_over`] for the fitted `p` and the
-    /// gap bound `gap`. `Q` is covered by boxes around the hulls of `p`'s
-    /// control points widened by a margin of `8 g / σ̃` (`σ̃` estimated in
-    /// `f64` at the centre: the margin holds `ε` while `σ ≥ σ̃/4`), halving
-    /// `p` where a box does not prove that much ([`SplineField::bounds_near`]).
+    /// gap bound `gap`: `L` the greatest turn of the unit normal over the
+    /// boxes of [`SplineField::near`].
     fn turn_near(&self, fit: &Fit, gap: f64) -> Option<f64> {
-        let spans = [0, 1].map(|k| self.span(fit.cell, k));
+        let near = self.near(fit, gap)?;
+        let mut turn = 0.0_f64;
+        for jet in &near.jets {
+            let [nu, nv] = normal_rates(jet, &unit_normal(jet)?)?;
+            turn = turn.max(norm2(&nu).add(&norm2(&nv)).sqrt()?.hi);
+        }
+        let slack = Interval::point(turn).mul(&Interval::point(near.eps)).hi;
+        slack.is_finite().then_some(slack)
+    }
+
+    /// The face's normal curvature across the edge over `t`, a part of an
+    /// edge between [`SplineField::cuts`], relative to the surface's own
+    /// normal `S_u × S_v`: at the foot points of every `C(t)`, and at the
+    /// foot of `C(t_m)`, `t_m` the part's `f64` midpoint. The feet are
+    /// those of [`SplineField::normal_over`], within `ε = 2g/σ` of the
+    /// fitted `p` in the boxes of [`SplineField::near`]: over the part,
+    /// the curvature is enclosed on those boxes' jets in the direction
+    /// `n × C'(t)`; at `t_m`, on the jet of the box `p(s_m) ± ε`
+    /// (`s_m` the midpoint's parameter on the part). Like the normal
+    /// path, it needs no foot proved by Krawczyk's operator, so it holds
+    /// where the feet fall a rounding error past the face's border.
+    /// `None` when not proved.
+    pub fn curvature_over(&self, curve: &ICurve, t: Interval) -> Option<CurvaturePath> {
+        let fit = self.fit_over(curve, t)?;
+        self.charge_compositions(fit.cell, 1)?;
+        let s = compose(
+            &self.surface.piece(fit.cell).ok()?.homogeneous(),
+            &fit.u,
+            &fit.v,
+        );
+        let gap = distance_bound(&curve_over(curve, t), &s)?;
+        let near = self.near(&fit, gap)?;
+        let one = Interval::point(1.0);
+        let along = curve.jet(t).ok()?.dx;
+        let mut over: Option<Interval> = None;
+        for jet in &near.jets {
+            let k = curvature_across(jet, &one, &along)?;
+            over = Some(over.map_or(k, |o| o.hull(&k)));
+        }
+        let tm = Interval::point(t.mid());
+        let sm = tm
+            .sub(&Interval::point(t.lo))
+            .div(&Interval::point(t.hi).sub(&Interval::point(t.lo)))?;
+        let centre = [0, 1].map(|k| {
+            let (a, span) = self.span(fit.cell, k);
+            let local = bernstein_at([&fit.u, &fit.v][k], sm);
+            let g = local.mul(&span).add(&a);
+            Interval {
+                lo: g.lo - near.eps,
+                hi: g.hi + near.eps,
+            }
+        });
+        let jet = self.jet(centre[0], centre[1]).ok()?;
+        let mid = curvature_across(&jet, &one, &curve.jet(tm).ok()?.dx)?;
+        Some(CurvaturePath { over: over?, mid })
+    }
+
+    /// The boxes of parameters that hold the feet of the curve's points
+    /// over a part whose fitted curve is `p` and gap bound `gap` (see
+    /// [`SplineField::normal_over`]): boxes around the hulls of `p`'s
+    /// control points widened by a margin of `8 g / σ̃` (`σ̃` estimated in
+    /// `f64` at the centre: the margin holds `ε = 2g/σ` while `σ ≥ σ̃/4`),
+    /// halving `p` where a box does not prove that much
+    /// ([`SplineField::boxes_near`]).
+    fn near(&self, fit: &Fit, gap: f64) -> Option<Near> {
         let domain = self.domain();
-        let place = |c: [&[f64]; 2], margin: [f64; 2]| -> [Interval; 2] {
-            [0, 1].map(|k| {
-                let (lo, hi) = c[k]
-                    .iter()
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
-                        (a.min(*x), b.max(*x))
-                    });
-                // f64 de Casteljau halves are within a few ulps of the
-                // true control points.
-                let local = Interval {
-                    lo: lo - 1e-14,
-                    hi: hi + 1e-14,
-                };
-                let (a, s) = spans[k];
-                let g = local.mul(&s).add(&a);
-                Interval {
-                    lo: g.lo - margin[k],
-                    hi: g.hi + margin[k],
-                }
-            })
-        };
-        let centre = place([&fit.u, &fit.v], [0.0; 2]);
+        let centre = self.place(fit.cell, [&fit.u, &fit.v], [0.0; 2]);
         let estimate = least_stretch(
             &self
                 .approximate_jet(centre[0].mid(), centre[1].mid())
@@ -712,40 +754,72 @@ impl<'a> SplineField<'a> {
             .mul(&Interval::point(gap))
             .div(&Interval::point(margin[0].min(margin[1])))?
             .hi;
-        let (stretch, turn) =
-            self.bounds_near([&fit.u, &fit.v], &|c| place(c, margin), need, HALVINGS)?;
+        let mut jets = Vec::new();
+        let stretch = self.boxes_near(
+            [&fit.u, &fit.v],
+            &|c| self.place(fit.cell, c, margin),
+            need,
+            HALVINGS,
+            &mut jets,
+        )?;
         let eps = Interval::point(2.0)
             .mul(&Interval::point(gap))
-            .div(&Interval::point(stretch))?;
-        let slack = Interval::point(turn).mul(&eps).hi;
-        slack.is_finite().then_some(slack)
+            .div(&Interval::point(stretch))?
+            .hi;
+        eps.is_finite().then_some(Near { jets, eps })
     }
 
-    /// The least stretch `σ` (at least `need`) and the greatest turn `L`
-    /// of the unit normal over the box `place(p)` of the curve `p` with
+    /// The box of parameters of piece `cell` around the hull of the
+    /// Bernstein coefficients `c` (local parameters) widened by `margin`.
+    fn place(&self, cell: usize, c: [&[f64]; 2], margin: [f64; 2]) -> [Interval; 2] {
+        [0, 1].map(|k| {
+            let (lo, hi) = c[k]
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+                    (a.min(*x), b.max(*x))
+                });
+            // f64 de Casteljau halves are within a few ulps of the
+            // true control points.
+            let local = Interval {
+                lo: lo - 1e-14,
+                hi: hi + 1e-14,
+            };
+            let (a, s) = self.span(cell, k);
+            let g = local.mul(&s).add(&a);
+            Interval {
+                lo: g.lo - margin[k],
+                hi: g.hi + margin[k],
+            }
+        })
+    }
+
+    /// The surface's jets over the box `place(p)` of the curve `p` with
     /// Bernstein coefficients `c`, or over the boxes of its halves (de
-    /// Casteljau) down to `depth` halvings; `None` when not proved.
-    fn bounds_near(
+    /// Casteljau) down to `depth` halvings, pushed on `jets`, each
+    /// proving a least stretch of at least `need`; returns the least
+    /// stretch proved, `None` when not proved.
+    fn boxes_near(
         &self,
         c: [&[f64]; 2],
         place: &dyn Fn([&[f64]; 2]) -> [Interval; 2],
         need: f64,
         depth: usize,
-    ) -> Option<(f64, f64)> {
+        jets: &mut Vec<PatchJet>,
+    ) -> Option<f64> {
         let q = place(c);
         if let Ok(jet) = self.jet(q[0], q[1]) {
             if let Some(stretch) = least_stretch(&jet).filter(|s| *s >= need) {
-                let [nu, nv] = normal_rates(&jet, &unit_normal(&jet)?)?;
-                return Some((stretch, norm2(&nu).add(&norm2(&nv)).sqrt()?.hi));
+                jets.push(jet);
+                return Some(stretch);
             }
         }
         if depth == 0 {
             return None;
         }
         let [(u0, v0), (u1, v1)] = halves(c)?;
-        let a = self.bounds_near([&u0, &v0], place, need, depth - 1)?;
-        let b = self.bounds_near([&u1, &v1], place, need, depth - 1)?;
-        Some((a.0.min(b.0), a.1.max(b.1)))
+        let a = self.boxes_near([&u0, &v0], place, need, depth - 1, jets)?;
+        let b = self.boxes_near([&u1, &v1], place, need, depth - 1, jets)?;
+        Some(a.min(b))
     }
 
     /// The start `a` of piece `cell`'s span along axis `k` and its length
@@ -940,6 +1014,41 @@ pub struct NormalPath {
     /// At most the angle, in radians, between that normal and the normal
     /// at the foot point of each point of the edge.
     pub slack: f64,
+}
+
+/// A face's normal curvature across an edge over a part of it
+/// ([`SplineField::curvature_over`]), relative to the surface's own
+/// normal.
+#[derive(Clone, Copy, Debug)]
+pub struct CurvaturePath {
+    /// At the foot point of every point of the part.
+    pub over: Interval,
+    /// At the foot point of the part's midpoint.
+    pub mid: Interval,
+}
+
+/// The boxes that hold the feet near a fitted curve
+/// ([`SplineField::near`]).
+struct Near {
+    /// The surface's jets over boxes covering the fitted curve widened by
+    /// a margin of at least `eps`.
+    jets: Vec<PatchJet>,
+    /// `ε = 2g/σ`: no foot is farther than this from the fitted curve, in
+    /// parameters.
+    eps: f64,
+}
+
+/// The value at `s` of the polynomial with Bernstein coefficients `c`
+/// (de Casteljau, outward rounded).
+fn bernstein_at(c: &[f64], s: Interval) -> Interval {
+    let r = Interval::point(1.0).sub(&s);
+    let mut b: Vec<Interval> = c.iter().map(|x| Interval::point(*x)).collect();
+    for k in (1..b.len()).rev() {
+        for i in 0..k {
+            b[i] = b[i].mul(&r).add(&b[i + 1].mul(&s));
+        }
+    }
+    b[0]
 }
 
 /// How many times [`SplineField::turn_near`] may halve a fitted curve.

@@ -151,8 +151,29 @@ fn a_kink_of_atan_1e_5_is_enclosed() {
 }
 
 #[test]
-fn opposite_normals_give_no_bound() {
+fn opposite_normals_are_a_fold() {
     let [a, b] = planes(0.0);
     assert!(angle_between(&a, &b).unwrap().0 < 1e-15);
-    assert_eq!(angle_between(&a, &reversed(&b)), None);
+    let (upper, mid) = angle_between(&a, &reversed(&b)).unwrap();
+    let pi = std::f64::consts::PI;
+    assert!(pi <= upper && upper <= pi * (1.0 + 1e-9), "{upper}");
+    assert!(mid.lo <= pi && pi <= mid.hi, "{mid:?}");
+}
+
+/// The normal `ẑ` and the linear path `(0, −1, k t)`, `t ∈ [0, 1]`: a
+/// crease whose angle `π/2 − atan(k t)` (`k > 0`) is greatest at `t = 0`,
+/// or `π/2 + atan(|k| t)` (`k < 0`) at `t = 1`. The cosine changes sign or
+/// vanishes, so the tangent's bound does not hold; the cosine's does.
+#[test]
+fn a_crease_at_a_right_angle_is_enclosed() {
+    let z = [pts(&[0.0, 0.0]), pts(&[0.0, 0.0]), pts(&[1.0, 1.0])];
+    let half = std::f64::consts::FRAC_PI_2;
+    for k in [0.1, -0.1] {
+        let path = [pts(&[0.0, 0.0]), pts(&[-1.0, -1.0]), pts(&[0.0, k])];
+        let (upper, mid) = angle_between(&z, &path).unwrap();
+        let most = if k > 0.0 { half } else { half + (-k).atan() };
+        assert!(most <= upper && upper <= most + 1e-3, "{k}: {upper}");
+        let at_half = half - (k / 2.0).atan();
+        assert!(mid.lo <= at_half && at_half <= mid.hi, "{k}: {mid:?}");
+    }
 }
