@@ -565,11 +565,7 @@ fn composed_angle(
     curve: &ICurve,
     t: Interval,
 ) -> Option<Bound> {
-    let mut bound = Bound {
-        upper: 0.0,
-        lower: 0.0,
-    };
-    for part in spline_parts(fields, curve, t)? {
+    over_parts(fields, curve, t, |part| {
         let [a, b] = [0, 1].map(|k| fields[k].normal_path(curve, part, gaps[k]));
         let (a, b) = (a?, b?);
         let second = if reversed {
@@ -579,8 +575,29 @@ fn composed_angle(
         };
         let (upper, mid) = normal_path::angle_between(&a.normal, &second)?;
         let slack = Interval::point(a.slack).add(&Interval::point(b.slack));
-        bound.upper = bound.upper.max(Interval::point(upper).add(&slack).hi);
-        bound.lower = bound.lower.max(Interval::point(mid.lo).sub(&slack).lo);
+        Some(Bound {
+            upper: Interval::point(upper).add(&slack).hi,
+            lower: Interval::point(mid.lo).sub(&slack).lo,
+        })
+    })
+}
+
+/// The greatest of `measure`'s upper and lower bounds over the parts of
+/// piece `t` of `curve` ([`spline_parts`]); `None` when a part is not proved.
+fn over_parts(
+    fields: [&Field<'_>; 2],
+    curve: &ICurve,
+    t: Interval,
+    measure: impl Fn(Interval) -> Option<Bound>,
+) -> Option<Bound> {
+    let mut bound = Bound {
+        upper: 0.0,
+        lower: 0.0,
+    };
+    for part in spline_parts(fields, curve, t)? {
+        let b = measure(part)?;
+        bound.upper = bound.upper.max(b.upper);
+        bound.lower = bound.lower.max(b.lower);
     }
     Some(bound)
 }
@@ -613,20 +630,17 @@ fn composed_curvature(
     curve: &ICurve,
     t: Interval,
 ) -> Option<Bound> {
-    let mut bound = Bound {
-        upper: 0.0,
-        lower: 0.0,
-    };
-    for part in spline_parts(fields, curve, t)? {
+    over_parts(fields, curve, t, |part| {
         let [a, b] = [0, 1].map(|k| {
             curvature_along(fields[k], curve, part)
                 .map(|[over, mid]| [over.mul(&signs[k]), mid.mul(&signs[k])])
         });
         let (a, b) = (a?, b?);
-        bound.upper = bound.upper.max(a[0].sub(&b[0]).mag());
-        bound.lower = bound.lower.max(abs_lower(&a[1].sub(&b[1])));
-    }
-    Some(bound)
+        Some(Bound {
+            upper: a[0].sub(&b[0]).mag(),
+            lower: abs_lower(&a[1].sub(&b[1])),
+        })
+    })
 }
 
 /// A face's normal curvature across the edge, relative to its surface's

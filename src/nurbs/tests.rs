@@ -85,23 +85,7 @@ fn pieces_meet_c2_across_a_simple_knot_of_a_cubic() {
 
 #[test]
 fn surface_pieces_reproduce_de_boor() {
-    let ku: Vec<Q> = [0, 0, 0, 1, 2, 2, 2].iter().map(|&x| q(x, 1)).collect();
-    let kv: Vec<Q> = (0..8).map(|x| q(x, 1)).collect();
-    let net: Vec<Vec<HPoint<Q>>> = (0..4)
-        .map(|i| {
-            (0..5)
-                .map(|j| {
-                    HPoint::from_point(&[q(i, 1), q(j, 1), q(i * j % 3, 1)], &q(1 + (i + j) % 2, 1))
-                })
-                .collect()
-        })
-        .collect();
-    let s = NurbsSurface::new(
-        Knots::new(2, ku, 4).unwrap(),
-        Knots::new(2, kv, 5).unwrap(),
-        net,
-    )
-    .unwrap();
+    let s = wavy();
     let pieces = s.bezier_pieces();
     assert_eq!(pieces.len(), 2 * 3);
     let (u, v) = s.knots();
@@ -122,7 +106,8 @@ fn surface_pieces_reproduce_de_boor() {
     }
 }
 
-/// The surface of `surface_pieces_reproduce_de_boor`, a wavy biquadratic.
+/// A wavy rational biquadratic: knots (0, 0, 0, 1, 2, 2, 2) × (0, …, 7),
+/// points `(i, j, ij mod 3)`, weights 1 and 2 alternating.
 fn wavy() -> NurbsSurface<Q> {
     let ku: Vec<Q> = [0, 0, 0, 1, 2, 2, 2].iter().map(|&x| q(x, 1)).collect();
     let kv: Vec<Q> = (0..8).map(|x| q(x, 1)).collect();
