@@ -42,6 +42,7 @@
 
 use super::{reference, surface_geometry, type_name, Builder, Geometry, GeometryRef, Pcurve};
 use crate::algebra::{Ordered, RealAlgebraic, Scalar};
+use crate::analytic::{cross, dot, scale, sub};
 use crate::error::Error;
 use crate::nurbs::{nearest_parameters, Nurbs, SpannedPatch};
 use crate::patch::Patch;
@@ -185,13 +186,14 @@ impl Builder<'_> {
         };
         let profile = self.conv.nurbs[&swept].pieces();
         let (origin, direction) = axis1::<RealAlgebraic>(self.store, axis)?;
-        let f = |p: &[RealAlgebraic]| -> [f64; 3] { [0, 1, 2].map(|i| p[i].to_f64()) };
+        let f = |p: &[RealAlgebraic]| -> Vec<f64> { p.iter().map(Ordered::to_f64).collect() };
         let (a, z) = (f(&origin), f(&direction));
         let turn = units.angle.to_radians_f64(1.0);
         let mut out = [Vec::new(), Vec::new()];
         for (p, params) in ends.iter().zip(&mut out) {
-            let (height, radial) = axial(f(p), a, z);
-            let Some((v, d, c)) = nearest_on_profile(&profile, a, z, [height, norm(radial)]) else {
+            let (height, radial) = axial(&f(p), &a, &z);
+            let Some((v, d, c)) = nearest_on_profile(&profile, &a, &z, [height, norm(&radial)])
+            else {
                 return Ok(None);
             };
             if d > 10.0 * units.snap {
@@ -199,8 +201,8 @@ impl Builder<'_> {
                     "a vertex of the edge is {d:e} from the nearest point found on the surface of revolution #{surface}"
                 )));
             }
-            let (_, from) = axial(c, a, z);
-            let angle = dot(cross(z, from), radial).atan2(dot(from, radial));
+            let (_, from) = axial(&c, &a, &z);
+            let angle = dot(&cross(&z, &from), &radial).atan2(dot(&from, &radial));
             params.push([
                 Parameter::Located {
                     value: angle / turn,
@@ -296,28 +298,16 @@ fn located(p: &[Parameter<RealAlgebraic>; 2]) -> Located {
     })
 }
 
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn norm(a: [f64; 3]) -> f64 {
-    dot(a, a).sqrt()
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
 /// The height `(p − a)·z` of `p` along the unit axis `(a, z)` and its
 /// radial vector `(p − a) − height·z`.
-fn axial(p: [f64; 3], a: [f64; 3], z: [f64; 3]) -> (f64, [f64; 3]) {
-    let d = [p[0] - a[0], p[1] - a[1], p[2] - a[2]];
-    let h = dot(d, z);
-    (h, [d[0] - h * z[0], d[1] - h * z[1], d[2] - h * z[2]])
+fn axial(p: &[f64], a: &[f64], z: &[f64]) -> (f64, Vec<f64>) {
+    let d = sub(p, a);
+    let h = dot(&d, z);
+    (h, sub(&d, &scale(z, &h)))
+}
+
+fn norm(a: &[f64]) -> f64 {
+    dot(a, a).sqrt()
 }
 
 /// The knot parameter of the point of the profile curve (B-spline pieces
@@ -327,22 +317,21 @@ fn axial(p: [f64; 3], a: [f64; 3], z: [f64; 3]) -> (f64, [f64; 3]) {
 /// either side (a search heuristic in `f64`).
 fn nearest_on_profile(
     profile: &[SpannedPatch],
-    a: [f64; 3],
-    z: [f64; 3],
+    a: &[f64],
+    z: &[f64],
     target: [f64; 2],
-) -> Option<(f64, f64, [f64; 3])> {
+) -> Option<(f64, f64, Vec<f64>)> {
     const SAMPLES: u32 = 64;
-    let mut best: Option<(f64, f64, [f64; 3])> = None;
+    let mut best: Option<(f64, f64, Vec<f64>)> = None;
     for piece in profile {
         let Patch::Curve(c) = &piece.patch else {
             continue;
         };
         let c = c.map(Ordered::to_f64);
-        let at = |t: f64| -> Option<(f64, [f64; 3])> {
+        let at = |t: f64| -> Option<(f64, Vec<f64>)> {
             let p = c.eval(&t).ok()?;
-            let p = [p[0], p[1], p[2]];
-            let (h, r) = axial(p, a, z);
-            Some(((h - target[0]).hypot(norm(r) - target[1]), p))
+            let (h, r) = axial(&p, a, z);
+            Some(((h - target[0]).hypot(norm(&r) - target[1]), p))
         };
         let span = [piece.u[0].to_f64(), piece.u[1].to_f64()];
         let step = 1.0 / f64::from(SAMPLES);
@@ -363,7 +352,7 @@ fn nearest_on_profile(
         }
         let t = 0.5 * (lo + hi);
         let (d, p) = at(t)?;
-        if best.is_none_or(|b| d < b.1) {
+        if best.as_ref().is_none_or(|b| d < b.1) {
             best = Some((span[0] + t * (span[1] - span[0]), d, p));
         }
     }
