@@ -395,6 +395,39 @@ fn line_pcurves_on_a_cylinder_are_trimmed_to_their_edges() {
     assert_eq!((first[1], last[1]), (0.0, 2.0));
 }
 
+/// A surface of revolution of the B-spline segment (1, 0, 0)–(1, 0, 2)
+/// about ẑ (a unit cylinder, u the angle, v the knot parameter): a quarter
+/// circle edge from (1, 0, 0) to (0, 1, 0) with the pcurve v = 0 runs from
+/// u = 0 to u = π/2 (not −π/2 or 3π/2: the angle's sense is about the axis).
+#[test]
+fn a_line_pcurve_on_a_surface_of_revolution_turns_about_its_axis() {
+    let data = "\
+#1=CARTESIAN_POINT('',(0.,0.,0.));#2=DIRECTION('',(0.,0.,1.));#3=DIRECTION('',(1.,0.,0.));\n\
+#4=AXIS2_PLACEMENT_3D('',#1,#2,#3);#5=AXIS1_PLACEMENT('',#1,#2);\n\
+#6=CARTESIAN_POINT('',(1.,0.,0.));#7=CARTESIAN_POINT('',(1.,0.,2.));#8=CARTESIAN_POINT('',(0.,1.,0.));\n\
+#9=B_SPLINE_CURVE_WITH_KNOTS('',1,(#6,#7),.UNSPECIFIED.,.F.,.F.,(2,2),(0.,1.),.UNSPECIFIED.);\n\
+#10=SURFACE_OF_REVOLUTION('',#9,#5);\n\
+#11=VERTEX_POINT('',#6);#12=VERTEX_POINT('',#8);\n\
+#20=EDGE_CURVE('',#11,#12,#21,.T.);#21=SURFACE_CURVE('',#22,(#23),.CURVE_3D.);#22=CIRCLE('',#4,1.);\n\
+#23=PCURVE('',#10,#24);#24=DEFINITIONAL_REPRESENTATION('',(#25),#99);#25=LINE('',#26,#27);\n\
+#26=CARTESIAN_POINT('',(0.,0.));#27=VECTOR('',#28,1.);#28=DIRECTION('',(1.,0.));\n\
+#30=ORIENTED_EDGE('',*,*,#20,.T.);#31=EDGE_LOOP('',(#30));#32=FACE_OUTER_BOUND('',#31,.T.);\n\
+#33=ADVANCED_FACE('',(#32),#10,.T.);#34=OPEN_SHELL('',(#33));\n";
+    let m = read(data);
+    assert!(
+        m.summary.pcurves_not_converted.is_empty(),
+        "{:?}",
+        m.summary
+    );
+    let [first, _, last] = pcurve_points(&m, 20, 10);
+    let near = |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).abs() < 1e-12 && (a[1] - b[1]).abs() < 1e-9;
+    let quarter = std::f64::consts::FRAC_PI_2;
+    assert!(
+        near(first, [0.0, 0.0]) && near(last, [quarter, 0.0]),
+        "{first:?} {last:?}"
+    );
+}
+
 /// On a plane the pcurve is trimmed exactly: the vertices' frame
 /// coordinates lie on it and the squared distances are 0.
 #[test]
