@@ -10,7 +10,6 @@
 
 use super::SpannedPatch;
 use crate::algebra::Ordered;
-use crate::analytic::{dot, sub};
 use crate::patch::Patch;
 use crate::rect::RectPatch;
 
@@ -105,7 +104,8 @@ fn newton(patch: &RectPatch<f64>, mut st: [f64; 2], p: &[f64]) -> [f64; 2] {
             break;
         };
         let (x, su, sv) = (&d[0][0], &d[1][0], &d[0][1]);
-        let r = sub(x, p);
+        let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
+        let r: Vec<f64> = x.iter().zip(p).map(|(a, b)| a - b).collect();
         let (a, b, c) = (dot(su, su), dot(su, sv), dot(sv, sv));
         let (g0, g1) = (dot(su, &r), dot(sv, &r));
         let det = a * c - b * b;
