@@ -1117,10 +1117,11 @@ pub fn read_brep_with(input: impl BufRead, options: BrepOptions) -> Result<BrepM
     let mut store = Store::new();
     let mut order = Vec::new();
     while let Some(inst) = reader.next_instance()? {
-        collector.add(&inst);
         order.push(inst.id);
         store.insert(inst.id, inst);
     }
+    let instances: Vec<&Instance> = order.iter().filter_map(|id| store.get(id)).collect();
+    collector.add_all(&instances);
     let geometry = collector.finish();
     let conv = Converted::new(&geometry);
     let mut b = Builder {

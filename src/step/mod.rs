@@ -30,6 +30,7 @@ use crate::hpoint::HPoint;
 use crate::nurbs::{Knots, Nurbs, NurbsCurve, NurbsSurface};
 use num_rational::BigRational;
 use num_traits::{One, Signed};
+use rayon::prelude::*;
 use std::collections::{BTreeMap, HashMap};
 use std::io::BufRead;
 
@@ -348,18 +349,44 @@ struct Collector {
     faces: Vec<(u64, u64)>,
 }
 
+/// Whether `inst` is a (simple) `CARTESIAN_POINT`.
+fn is_point(inst: &Instance) -> bool {
+    !inst.complex && inst.records[0].name == "CARTESIAN_POINT"
+}
+
 impl Collector {
+    /// [`Collector::add`] for a whole file's instances, the
+    /// `CARTESIAN_POINT`s (most of a model's numbers) parsed on all cores.
+    fn add_all(&mut self, insts: &[&Instance]) {
+        let points: Vec<(u64, Result<Vec<BigRational>, Error>)> = insts
+            .par_iter()
+            .filter(|inst| is_point(inst))
+            .map(|inst| (inst.id, cartesian(&inst.records[0])))
+            .collect();
+        for (id, point) in points {
+            self.add_point(id, point);
+        }
+        for inst in insts.iter().filter(|inst| !is_point(inst)) {
+            self.add(inst);
+        }
+    }
+
+    fn add_point(&mut self, id: u64, point: Result<Vec<BigRational>, Error>) {
+        match point {
+            Ok(x) => {
+                self.points.insert(id, x);
+            }
+            Err(e) => self.model.invalid.push((id, e.to_string())),
+        }
+    }
+
     fn add(&mut self, inst: &Instance) {
         let first = &inst.records[0];
+        if is_point(inst) {
+            return self.add_point(inst.id, cartesian(first));
+        }
         let model = &mut self.model;
-        if !inst.complex && first.name == "CARTESIAN_POINT" {
-            match cartesian(first) {
-                Ok(x) => {
-                    self.points.insert(inst.id, x);
-                }
-                Err(e) => model.invalid.push((inst.id, e.to_string())),
-            }
-        } else if !inst.complex && (first.name == "ADVANCED_FACE" || first.name == "FACE_SURFACE") {
+        if !inst.complex && (first.name == "ADVANCED_FACE" || first.name == "FACE_SURFACE") {
             match first.params.get(2) {
                 Some(Param::Ref(s)) => self.faces.push((inst.id, *s)),
                 _ => model.invalid.push((

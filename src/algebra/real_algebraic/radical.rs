@@ -33,6 +33,7 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::{BigRational, Ratio};
 use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::borrow::Cow;
 use std::collections::BTreeMap;
 
 /// An exponent in `(0, 1)`.
@@ -416,7 +417,7 @@ impl RadicalSum {
 
     /// `(self, other)` rewritten over one common gcd-free basis (no work when
     /// the union of their bases is already pairwise coprime).
-    fn unify(&self, other: &Self) -> (Self, Self) {
+    fn unify<'a>(&'a self, other: &'a Self) -> (Cow<'a, Self>, Cow<'a, Self>) {
         let (a, b) = (self.bases(), other.bases());
         // Each sum's own bases are pairwise coprime (the invariant), so only
         // a base of one that the other lacks needs a gcd with the other's.
@@ -424,14 +425,17 @@ impl RadicalSum {
             .iter()
             .all(|x| b.binary_search(x).is_ok() || b.iter().all(|y| memo::base_gcd(x, y).is_one()));
         if coprime {
-            return (self.clone(), other.clone());
+            return (Cow::Borrowed(self), Cow::Borrowed(other));
         }
         let mut all = a;
         all.extend(b);
         all.sort();
         all.dedup();
         let basis = coprime_basis(all);
-        (self.rewrite(&basis), other.rewrite(&basis))
+        (
+            Cow::Owned(self.rewrite(&basis)),
+            Cow::Owned(other.rewrite(&basis)),
+        )
     }
 
     /// The most bits of a term: its coefficient's (numerator and
@@ -450,11 +454,19 @@ impl RadicalSum {
             (self.terms.len() + other.terms.len()) as u64,
             self.coefficient_bits().max(other.coefficient_bits()),
         );
-        let (mut a, b) = self.unify(other);
-        for (m, c) in b.terms {
-            let sum = a.terms.remove(&m).map_or(c.clone(), |x| gcd::sum(&x, &c));
-            if !sum.is_zero() {
-                a.terms.insert(m, sum);
+        let (a, b) = self.unify(other);
+        let mut a = a.into_owned();
+        for (m, c) in &b.terms {
+            match a.terms.get_mut(m) {
+                Some(x) => {
+                    *x = gcd::sum(x, c);
+                    if x.is_zero() {
+                        a.terms.remove(m);
+                    }
+                }
+                None => {
+                    a.terms.insert(m.clone(), c.clone());
+                }
             }
         }
         a
