@@ -1,8 +1,8 @@
 //! The scalar tower and the number types the algorithms run on: the
 //! [`Ring`] / [`MulAcc`] / [`Scalar`] / [`Field`] / [`Ordered`] traits (public,
 //! so that a number type of your own can implement them), exact integers
-//! with a machine-word fast path ([`Int`]) and a 256-bit stack tier
-//! ([`Wide`]), multivariate polynomials over Q
+//! with a machine-word fast path ([`Int`]) and 256- and 512-bit stack
+//! tiers ([`Wide`], [`Wide512`]), multivariate polynomials over Q
 //! ([`Poly`], the symbolic scalar of the proofs), univariate and bivariate
 //! polynomials ([`UPoly`], [`BPoly`]), the prime field [`Fp`], `f64`
 //! intervals with outward rounding ([`Interval`]), exact real algebraic
@@ -21,6 +21,7 @@ pub(crate) mod scalar;
 pub mod sylvester;
 pub(crate) mod upoly;
 pub(crate) mod wide;
+pub(crate) mod wide512;
 
 pub use int::Int;
 pub use interval::Interval;
@@ -35,3 +36,4 @@ pub use scalar::{
 pub use sylvester::{linear_eliminant, resultant};
 pub use upoly::{BPoly, UPoly};
 pub use wide::Wide;
+pub use wide512::Wide512;

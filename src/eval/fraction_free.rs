@@ -11,8 +11,9 @@
 //!
 //! The kernel is the generic one of [`Net::eval_hom_into`], run point by
 //! point on the narrowest integer type that provably holds all its values:
-//! `i128`, then [`Wide`] (256 bits, on the stack), then [`Int`] (machine
-//! word or big integer, checked). With `N` the bits of the largest `|H_i|`
+//! `i128`, then [`Wide`] (256 bits, on the stack), then [`Wide512`] (512
+//! bits, on the stack), then [`Int`] (machine word or big integer,
+//! checked). With `N` the bits of the largest `|H_i|`
 //! and `P` those of the largest homogeneous parameter, every value of the
 //! kernel has fewer than `E` bits of magnitude:
 //!
@@ -25,8 +26,8 @@
 //!               (G < 3ⁿ|H| ≤ 2^{2n}|H|;  Σ_j vʲ R_j,  R_j a curve of degree n − j)
 //! ```
 //!
-//! so `E ≤ 127` runs on `i128` and `E ≤ 255` on `Wide`, without overflow
-//! tests and without allocation.
+//! so `E ≤ 127` runs on `i128`, `E ≤ 255` on `Wide` and `E ≤ 511` on
+//! `Wide512`, without overflow tests and without allocation.
 
 use super::blocks::BlockedCurve;
 use super::{Evaluator, Net, Shape, Workspace};
@@ -34,6 +35,7 @@ use crate::algebra::gcd::{fraction, gcd_u128};
 use crate::algebra::int::{common_denominator, Int};
 use crate::algebra::scalar::{Field, MulAcc};
 use crate::algebra::wide::Wide;
+use crate::algebra::wide512::Wide512;
 use crate::error::Error;
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -79,14 +81,20 @@ impl KernelInt for i128 {
     }
 }
 
+/// `n` in a fixed-width type whose `from_big` takes every value the bound
+/// admits.
+fn stack_int<T: From<i128>>(n: &Int, from_big: fn(&BigInt) -> Option<T>) -> T {
+    match n {
+        Int::Small(v) => T::from(*v),
+        Int::Big(b) => from_big(b).expect("the bound admits the value"),
+    }
+}
+
 impl KernelInt for Wide {
     const BITS: u64 = Wide::BITS;
 
     fn from_int(n: &Int) -> Wide {
-        match n {
-            Int::Small(v) => Wide::from(*v),
-            Int::Big(b) => Wide::from_bigint(b).expect("the bound admits the value"),
-        }
+        stack_int(n, Wide::from_bigint)
     }
 
     /// Reduced in 256 bits ([`Wide::gcd`]: one remainder, then Lehmer's
@@ -96,6 +104,20 @@ impl KernelInt for Wide {
         let g = num.gcd(den);
         let g = if den.is_negative() { -g } else { g };
         BigRational::new_raw(num.div_exact(&g).to_bigint(), den.div_exact(&g).to_bigint())
+    }
+}
+
+impl KernelInt for Wide512 {
+    const BITS: u64 = Wide512::BITS;
+
+    fn from_int(n: &Int) -> Wide512 {
+        stack_int(n, Wide512::from_bigint)
+    }
+
+    /// [`Wide512::fraction`]: Lehmer's gcd on the limbs, then two exact
+    /// quotients.
+    fn fraction(num: &Wide512, den: &Wide512) -> BigRational {
+        Wide512::fraction(num, den)
     }
 }
 
@@ -155,9 +177,9 @@ impl<T: KernelInt> Lane<T> {
     }
 }
 
-/// The kernels of one net, each built on first use: three integer types
+/// The kernels of one net, each built on first use: four integer types
 /// over one common denominator, and blocks over their own denominators for
-/// curves whose one-denominator integers outgrow 256 bits
+/// curves whose one-denominator integers outgrow 512 bits
 /// ([`BlockedCurve`]).
 struct Kernels<'a> {
     rational: &'a Net<BigRational>,
@@ -168,6 +190,7 @@ struct Kernels<'a> {
     net_bits: u64,
     word: Option<Lane<i128>>,
     wide: Option<Lane<Wide>>,
+    wide512: Option<Lane<Wide512>>,
     big: Option<Lane<Int>>,
     blocked: Option<Option<(BlockedCurve, Vec<BigInt>)>>,
 }
@@ -185,6 +208,7 @@ impl<'a> Kernels<'a> {
             den,
             word: None,
             wide: None,
+            wide512: None,
             big: None,
             blocked: None,
         }
@@ -206,6 +230,12 @@ impl<'a> Kernels<'a> {
         if bits <= Wide::BITS {
             return self
                 .wide
+                .get_or_insert_with(|| Lane::new(net))
+                .eval(hom, out);
+        }
+        if bits <= Wide512::BITS {
+            return self
+                .wide512
                 .get_or_insert_with(|| Lane::new(net))
                 .eval(hom, out);
         }
@@ -340,11 +370,16 @@ mod tests {
         Net::new(coords, 3, shape).unwrap()
     }
 
-    /// The bound is an upper bound: at the extreme net (every coordinate
-    /// of `N` bits) and extreme parameters (all `±(2^P − 1)`), the exact
-    /// value computed on `Int` has fewer than `E` bits, for every shape and
-    /// degree up to 12, and the narrow kernels agree with `Int` whenever
-    /// the bound admits them.
+    /// The homogeneous point of `net` at `hom` on the lane of `T`, as big
+    /// integers.
+    fn lane_point<T: KernelInt>(net: &Net<Int>, hom: &[Int], big: fn(&T) -> BigInt) -> Vec<BigInt> {
+        let mut lane = Lane::<T>::new(net);
+        lane.hom = hom.iter().map(T::from_int).collect();
+        lane.net
+            .eval_hom_into(&lane.hom, &mut lane.point, &mut lane.ws);
+        lane.point.iter().map(big).collect()
+    }
+
     #[test]
     fn degree_zero_takes_parameters_of_any_size() {
         // A constant curve and patches at a 200-bit parameter: the
@@ -359,11 +394,16 @@ mod tests {
         assert_eq!(tri.eval(&t, &t).unwrap(), p);
     }
 
+    /// The bound is an upper bound: at the extreme net (every coordinate
+    /// of `N` bits) and extreme parameters (all `±(2^P − 1)`), the exact
+    /// value computed on `Int` has fewer than `E` bits, for every shape and
+    /// degree up to 12, and the narrow kernels agree with `Int` whenever
+    /// the bound admits them.
     #[test]
     fn bound_holds_at_the_extremes() {
         for d in 0..=12usize {
             for shape in [Shape::Curve(d), Shape::Rect(d, d / 2 + 1), Shape::Tri(d)] {
-                for (net_bits, p) in [(20u32, 9u32), (60, 20), (1, 1)] {
+                for (net_bits, p) in [(20u32, 9u32), (60, 20), (1, 1), (300, 12), (200, 24)] {
                     for signs in [0u64, u64::MAX, 0x5555_5555_5555_5555] {
                         let net = extreme_net(shape, net_bits, signs);
                         let top = Int::from((1i128 << p) - 1);
@@ -391,13 +431,13 @@ mod tests {
                                 v.bits()
                             );
                         }
+                        let want: Vec<BigInt> = big.point.iter().map(Int::to_bigint).collect();
                         if e <= Wide::BITS {
-                            let mut wide = Lane::<Wide>::new(&net);
-                            wide.hom = hom.iter().map(Wide::from_int).collect();
-                            wide.net
-                                .eval_hom_into(&wide.hom, &mut wide.point, &mut wide.ws);
-                            let got: Vec<BigInt> = wide.point.iter().map(Wide::to_bigint).collect();
-                            let want: Vec<BigInt> = big.point.iter().map(Int::to_bigint).collect();
+                            let got = lane_point(&net, hom, Wide::to_bigint);
+                            assert_eq!(got, want, "{shape:?} N={net_bits} P={p}");
+                        }
+                        if e <= Wide512::BITS {
+                            let got = lane_point(&net, hom, Wide512::to_bigint);
                             assert_eq!(got, want, "{shape:?} N={net_bits} P={p}");
                         }
                     }

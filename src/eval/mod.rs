@@ -23,8 +23,9 @@
 //! evaluation stays fraction-free: [`Evaluator::eval_batch`] recognises
 //! `BigRational` (by its type id), clears the denominators of the net
 //! once, runs the same kernel on the narrowest integer type that provably holds its
-//! values (`i128`, [`Wide`](crate::algebra::Wide) or
-//! [`Int`](crate::algebra::Int): no gcd, no allocation below 256 bits) and
+//! values (`i128`, [`Wide`](crate::algebra::Wide),
+//! [`Wide512`](crate::algebra::Wide512) or [`Int`](crate::algebra::Int): no
+//! gcd, no allocation below 512 bits) and
 //! divides once per coordinate (`fraction_free`). Curves of high degree
 //! keep one denominator per block of control points instead (`blocks`), so
 //! that their block sums stay within 256 bits.

@@ -34,8 +34,8 @@ pub(crate) struct Packing {
 
 /// A term list with packed monomials, sorted by increasing key.
 pub(crate) struct Packed {
-    keys: Vec<u64>,
-    coeffs: Vec<Int>,
+    pub(super) keys: Vec<u64>,
+    pub(super) coeffs: Vec<Int>,
 }
 
 /// Bits needed for the value `n` (at least 1).
@@ -112,11 +112,11 @@ impl Packing {
         }
     }
 
-    /// Unpack to a sorted term list.
-    pub(crate) fn unpack(&self, p: Packed) -> Terms {
-        // Field masks once, not per term.
-        let fields: Vec<(u32, u32, u64)> = self
-            .vars
+    /// Per variable (by increasing id) its id, the shift of its field and
+    /// the field's mask: the exponent of `vars[i]` in `key` is
+    /// `(key >> shift) & mask`.
+    pub(crate) fn fields(&self) -> Vec<(u32, u32, u64)> {
+        self.vars
             .iter()
             .zip(&self.shifts)
             .map(|(&v, &s)| {
@@ -124,7 +124,13 @@ impl Packing {
                 let mask = next.map_or(u64::MAX >> s, |n| (1u64 << (n - s)) - 1);
                 (v, s, mask)
             })
-            .collect();
+            .collect()
+    }
+
+    /// Unpack to a sorted term list.
+    pub(crate) fn unpack(&self, p: Packed) -> Terms {
+        // Field masks once, not per term.
+        let fields = self.fields();
         p.keys
             .into_iter()
             .zip(p.coeffs)
