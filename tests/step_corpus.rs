@@ -147,6 +147,28 @@ fn analytic_models_are_converted_whole_and_edges_meet_their_vertices() {
     }
 }
 
+/// `nist_ctc_02`'s circles `#6261`, `#6266`, `#6270` (radius 10) start at
+/// vertices 0.094° (0.0164 mm) past the end of a quarter arc of their
+/// circle, exactly on the circle to the file's decimals (2·10⁻¹³ mm from it
+/// by an independent computation from the placement), where their B-spline
+/// faces end. Trimmed, each starts at its vertex: taken at the arc's end
+/// (within the declared tolerance, 0.0508 mm) the edge ran past the face's
+/// corner and its angle was undecided.
+#[test]
+fn circles_are_trimmed_at_their_vertices_not_at_an_arc_end_within_tolerance() {
+    let m = read("nist_ctc_02_asme1_ap203.stp", true);
+    let close = RealAlgebraic::from_rational(&BigRational::new(1.into(), 10u64.pow(18).into()));
+    for id in [6261, 6266, 6270] {
+        let Geometry::Analytic(a) = &m.edges[&id].curve.geometry else {
+            panic!("#{id}: {:?}", m.edges[&id].curve.geometry)
+        };
+        let [d0, d1] = a.vertex_distance_sq.as_ref().unwrap();
+        for d in [d0, d1] {
+            assert!(d <= &close, "#{id}: {:.3e} mm² from a vertex", d.to_f64());
+        }
+    }
+}
+
 fn curve_ends(
     p: &exact_bezier::patch::Patch<RealAlgebraic>,
 ) -> (Vec<RealAlgebraic>, Vec<RealAlgebraic>) {

@@ -106,17 +106,28 @@ pub fn krawczyk<S: Jets + ?Sized>(
     let m = b.map(|x| Interval::point(x.mid()));
     let (fm, _) = system(&patch.jet(m[0], m[1])?, c);
     let (_, jb) = system(&patch.jet(b[0], b[1])?, c);
-    let Some(y) = mid_inverse(&jb) else {
-        return Ok(None);
-    };
-    let y = y.map(|r| r.map(Interval::point));
+    let d = [0, 1].map(|k| b[k].sub(&m[k]));
+    Ok(operator(m, fm, &jb, d))
+}
+
+/// Krawczyk's operator about the centre `m` for the offsets `d = B − m`:
+/// `m − Y f + (I − Y J)·d`, with `f` (an enclosure of) `F(m)`, `J` the
+/// Jacobian enclosed over `B` and `Y` the inverse of `J`'s midpoint
+/// matrix; `None` when that is singular.
+pub fn operator(
+    m: [Interval; 2],
+    f: [Interval; 2],
+    j: &IMat,
+    d: [Interval; 2],
+) -> Option<[Interval; 2]> {
+    let y = mid_inverse(j)?.map(|r| r.map(Interval::point));
     let k = |i: usize| {
-        let newton = (0..2).fold(m[i], |acc, j| acc.sub(&y[i][j].mul(&fm[j])));
+        let newton = (0..2).fold(m[i], |acc, l| acc.sub(&y[i][l].mul(&f[l])));
         (0..2).fold(newton, |acc, k| {
             let ident = Interval::point(if i == k { 1.0 } else { 0.0 });
-            let yj = (0..2).fold(ident, |e, j| e.sub(&y[i][j].mul(&jb[j][k])));
-            acc.add(&yj.mul(&b[k].sub(&m[k])))
+            let yj = (0..2).fold(ident, |e, l| e.sub(&y[i][l].mul(&j[l][k])));
+            acc.add(&yj.mul(&d[k]))
         })
     };
-    Ok(Some([k(0), k(1)]))
+    Some([k(0), k(1)])
 }

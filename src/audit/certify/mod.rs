@@ -59,6 +59,7 @@ pub mod maximize;
 pub mod measure;
 pub mod normal_path;
 pub mod spline;
+pub mod tube;
 pub mod verdict;
 
 pub use bezier::{ICurve, IPatch};

@@ -37,7 +37,6 @@
 //! `cos θ = c/(|n₁||n₂|)` from below over the piece.
 
 use super::angle::polar_angle;
-use super::compose::{compose, NetRef};
 use crate::algebra::interval_bernstein::{mul, unscale, Scaled};
 use crate::algebra::Interval;
 
@@ -69,13 +68,12 @@ fn split(h: &[Scaled]) -> (ScaledVec, &Scaled) {
     ([h[0].clone(), h[1].clone(), h[2].clone()], &h[3])
 }
 
-/// The normal `W (X_u × X_v) + W_v (X × X_u) + W_u (X_v × X)` along
-/// `p = (u, v)` (Bernstein coefficients of one degree), given `H∘p` and
-/// the homogeneous nets `[H_u, H_v]` of a patch (see the module
-/// documentation).
-pub fn patch_normal(h: &[Scaled], nets: &[NetRef<'_>; 2], u: &[f64], v: &[f64]) -> ScaledVec {
-    let [hu, hv] = nets.each_ref().map(|n| compose(n, u, v));
-    let ((x, w), (xu, wu), (xv, wv)) = (split(h), split(&hu), split(&hv));
+/// The normal `W (X_u × X_v) + W_v (X × X_u) + W_u (X_v × X)` along a
+/// curve `p` in a patch's parameters, from `H`, `H_u` and `H_v` composed
+/// with `p` (`h`, `hu`, `hv`: Bernstein coefficients of one degree per
+/// composition, [`super::compose::compose`]; see the module documentation).
+pub fn patch_normal(h: &[Scaled], hu: &[Scaled], hv: &[Scaled]) -> ScaledVec {
+    let ((x, w), (xu, wu), (xv, wv)) = (split(h), split(hu), split(hv));
     let n = [
         times(w, &cross(&xu, &xv)),
         times(wv, &cross(&x, &xu)),

@@ -86,8 +86,9 @@ use super::curvature::curvature_across;
 use super::field::{DistanceField, IMat3};
 use super::foot::{derivative, newton};
 use super::ivec::{add, cross, dot, norm2, scale, sub, IVec};
-use super::krawczyk::{krawczyk, system, Jets};
+use super::krawczyk::{krawczyk, mid_inverse, system, Jets};
 use super::normal_path::{patch_normal, ScaledVec};
+use super::tube;
 use crate::algebra::interval_bernstein::{scale as scaled_form, Scaled};
 use crate::algebra::Interval;
 use crate::curve::RationalCurve;
@@ -652,67 +653,55 @@ impl<'a> SplineField<'a> {
     /// cubic `p` ([`super::normal_path::patch_normal`]), and how far, in
     /// radians, it may turn from there to the normal at the foot points.
     ///
-    /// With `g` the bound of `|C − S∘p|` over `t` and `Q` a box of
-    /// parameters around `p`'s control points where every `(S_u S_v)`
-    /// stretches by at least `σ` and the unit normal turns at most
-    /// `L = sup √(|N_u|² + |N_v|²)` per unit of parameter: the nearest
-    /// point `S(q)` to `C(t)` within `Q` is no farther than `S(p(t))`, so
-    /// `|S(q) − S(p)| ≤ 2g`, `|q − p| ≤ ε = 2g/σ` (mean value theorem), and
-    /// where `ε` is within `Q`'s margin `q` is a foot point (stationary,
-    /// inside `Q`) whose normal is within `L ε` radians of `p`'s (the
-    /// length of its path on the unit sphere). `None` when not proved.
+    /// The feet lie in the tube of [`SplineField::near`]: each within
+    /// `e_u`, `e_v` of `p` in the parameters, proved by Krawczyk's
+    /// operator from the foot-point system's residual along `p`
+    /// ([`super::tube`]). Along the segment from `p(t)` to the foot, inside
+    /// the tube's box `Q`, the unit normal turns at most
+    /// `sup_Q |N_u| e_u + sup_Q |N_v| e_v` radians (the length of its path
+    /// on the unit sphere): the slack. `None` when not proved.
     pub fn normal_over(&self, curve: &ICurve, t: Interval) -> Option<NormalPath> {
-        let fit = self.fit_over(curve, t)?;
-        self.charge_compositions(fit.cell, 1)?;
-        let [h, hu, hv] = self.surface.piece(fit.cell).ok()?.first_order_nets();
-        let s = compose(&h, &fit.u, &fit.v);
-        let gap = distance_bound(&curve_over(curve, t), &s)?;
-        let slack = self.turn_near(&fit, gap)?;
-        self.charge_compositions(fit.cell, 2)?;
-        let normal = patch_normal(&s, &[hu, hv], &fit.u, &fit.v);
+        let (fit, [s, su, sv]) = self.composed(curve, t)?;
+        let near = self.near(&fit, curve, t, [&s, &su, &sv])?;
+        let mut slack = 0.0_f64;
+        for (jet, radius, length) in &near.jets {
+            slack = slack.max(turn(jet, *radius, *length)?);
+        }
+        let normal = patch_normal(&s, &su, &sv);
         Some(NormalPath { normal, slack })
     }
 
-    /// `L ε` of [`SplineField::normal_over`] for the fitted `p` and the
-    /// gap bound `gap`: `L` the greatest turn of the unit normal over the
-    /// boxes of [`SplineField::near`].
-    fn turn_near(&self, fit: &Fit, gap: f64) -> Option<f64> {
-        let near = self.near(fit, gap)?;
-        let mut turn = 0.0_f64;
-        for jet in &near.jets {
-            let [nu, nv] = normal_rates(jet, &unit_normal(jet)?)?;
-            turn = turn.max(norm2(&nu).add(&norm2(&nv)).sqrt()?.hi);
-        }
-        let slack = Interval::point(turn).mul(&Interval::point(near.eps)).hi;
-        slack.is_finite().then_some(slack)
+    /// The fitted cubic `p` over part `t` ([`SplineField::fit_over`]) and
+    /// `H`, `H_u`, `H_v` of its piece composed with it (scaled forms),
+    /// charged as three compositions.
+    fn composed(&self, curve: &ICurve, t: Interval) -> Option<(Fit, [Vec<Scaled>; 3])> {
+        let fit = self.fit_over(curve, t)?;
+        self.charge_compositions(fit.cell, 3)?;
+        let nets = self.surface.piece(fit.cell).ok()?.first_order_nets();
+        let composed = nets.map(|n| compose(&n, &fit.u, &fit.v));
+        Some((fit, composed))
     }
 
     /// The face's normal curvature across the edge over `t`, a part of an
     /// edge between [`SplineField::cuts`], relative to the surface's own
     /// normal `S_u × S_v`: at the foot points of every `C(t)`, and at the
     /// foot of `C(t_m)`, `t_m` the part's `f64` midpoint. The feet are
-    /// those of [`SplineField::normal_over`], within `ε = 2g/σ` of the
-    /// fitted `p` in the boxes of [`SplineField::near`]: over the part,
-    /// the curvature is enclosed on those boxes' jets in the direction
-    /// `n × C'(t)`; at `t_m`, on the jet of the box `p(s_m) ± ε`
-    /// (`s_m` the midpoint's parameter on the part). Like the normal
-    /// path, it needs no foot proved by Krawczyk's operator, so it holds
+    /// those of [`SplineField::normal_over`], in the tube of
+    /// [`SplineField::near`], within `e_u`, `e_v` of the fitted `p`: over
+    /// the part, the curvature is enclosed on the tube's boxes' jets in the
+    /// direction `n × C'(t)`; at `t_m`, on the jet of the box
+    /// `p(s_m) ± e` (`s_m` the midpoint's parameter on the part). Like the
+    /// normal path, it needs no foot proved by Krawczyk's operator at a
+    /// single box of points, so it holds
     /// where the feet fall a rounding error past the face's border.
     /// `None` when not proved.
     pub fn curvature_over(&self, curve: &ICurve, t: Interval) -> Option<CurvaturePath> {
-        let fit = self.fit_over(curve, t)?;
-        self.charge_compositions(fit.cell, 1)?;
-        let s = compose(
-            &self.surface.piece(fit.cell).ok()?.homogeneous(),
-            &fit.u,
-            &fit.v,
-        );
-        let gap = distance_bound(&curve_over(curve, t), &s)?;
-        let near = self.near(&fit, gap)?;
+        let (fit, [s, su, sv]) = self.composed(curve, t)?;
+        let near = self.near(&fit, curve, t, [&s, &su, &sv])?;
         let one = Interval::point(1.0);
         let along = curve.jet(t).ok()?.dx;
         let mut over: Option<Interval> = None;
-        for jet in &near.jets {
+        for (jet, ..) in &near.jets {
             let k = curvature_across(jet, &one, &along)?;
             over = Some(over.map_or(k, |o| o.hull(&k)));
         }
@@ -725,8 +714,8 @@ impl<'a> SplineField<'a> {
             let local = bernstein_at([&fit.u, &fit.v][k], sm);
             let g = local.mul(&span).add(&a);
             Interval {
-                lo: g.lo - near.eps,
-                hi: g.hi + near.eps,
+                lo: g.lo - near.radius[k],
+                hi: g.hi + near.radius[k],
             }
         });
         let jet = self.jet(centre[0], centre[1]).ok()?;
@@ -734,14 +723,66 @@ impl<'a> SplineField<'a> {
         Some(CurvaturePath { over: over?, mid })
     }
 
-    /// The boxes of parameters that hold the feet of the curve's points
-    /// over a part whose fitted curve is `p` and gap bound `gap` (see
-    /// [`SplineField::normal_over`]): boxes around the hulls of `p`'s
+    /// The tube that holds the feet of the curve's points over part `t`
+    /// around its fitted curve `p` ([`super::tube`]), from `H`, `H_u`,
+    /// `H_v` composed with `p` (`h`): the residual's bounds `R` turned
+    /// into the surface's parameters (`÷ (b − a)`), and boxes around the
+    /// hulls of `p`'s control points, halving `p` where a box does not
+    /// prove the tube ([`SplineField::tube_boxes`]), the first radii
+    /// `e = 2|Y₀| R` (`Y₀` the inverse of the `f64` Jacobian at the middle
+    /// of `p`'s hull); where that is not proved, the boxes of
+    /// [`SplineField::near_by_gap`]. `None` when neither is proved.
+    fn near(&self, fit: &Fit, curve: &ICurve, t: Interval, h: [&[Scaled]; 3]) -> Option<Near> {
+        self.tube_near(fit, curve, t, h).or_else(|| {
+            let gap = distance_bound(&curve_over(curve, t), h[0])?;
+            self.near_by_gap(fit, gap)
+        })
+    }
+
+    /// The tube of [`SplineField::near`], `None` when not proved.
+    fn tube_near(&self, fit: &Fit, curve: &ICurve, t: Interval, h: [&[Scaled]; 3]) -> Option<Near> {
+        let local = tube::residual(&curve_over(curve, t), h[0], h[1], h[2])?;
+        let r = [0, 1].map(|k| {
+            let (_, span) = self.span(fit.cell, k);
+            Interval::point(local[k]).div(&span).map(|x| x.hi)
+        });
+        let r = [r[0]?, r[1]?];
+        let centre = self.place(fit.cell, [&fit.u, &fit.v], [0.0; 2]);
+        let at = self
+            .approximate_jet(centre[0].mid(), centre[1].mid())
+            .ok()?;
+        let (_, j) = system(&at, &curve.jet(Interval::point(t.mid())).ok()?.x);
+        let y = mid_inverse(&j)?;
+        let first = [0, 1].map(|i| 2.0 * (y[i][0].abs() * r[0] + y[i][1].abs() * r[1]));
+        let domain = self.domain();
+        let tube = Tube {
+            curve,
+            t,
+            residual: r,
+            floor: [0, 1].map(|k| 1e-15 * (domain[k][1] - domain[k][0])),
+            place: &|c, radius| self.place(fit.cell, c, radius),
+        };
+        let mut jets = Vec::new();
+        let whole = Interval { lo: 0.0, hi: 1.0 };
+        self.tube_boxes(&tube, [&fit.u, &fit.v], whole, first, HALVINGS, &mut jets)?;
+        let radius = jets.iter().fold([0.0_f64; 2], |m, (_, e, _)| {
+            [m[0].max(e[0]), m[1].max(e[1])]
+        });
+        Some(Near { jets, radius })
+    }
+
+    /// [`SplineField::near`] where the tube is not proved: boxes that hold
+    /// the feet of the curve's points over a part whose fitted curve is `p`
+    /// and gap bound `gap` (the bound of `|C − S∘p|`): the nearest point
+    /// `S(q)` to `C(t)` within a box `Q` around `p` is no farther than
+    /// `S(p(t))`, so `|S(q) − S(p)| ≤ 2g` and `|q − p| ≤ ε = 2g/σ` (mean
+    /// value theorem) where every `(S_u S_v)` over `Q` stretches by at least
+    /// `σ`; within `Q`'s margin, `q` is a foot point. Boxes around the hulls of `p`'s
     /// control points widened by a margin of `8 g / σ̃` (`σ̃` estimated in
     /// `f64` at the centre: the margin holds `ε = 2g/σ` while `σ ≥ σ̃/4`),
     /// halving `p` where a box does not prove that much
     /// ([`SplineField::boxes_near`]).
-    fn near(&self, fit: &Fit, gap: f64) -> Option<Near> {
+    fn near_by_gap(&self, fit: &Fit, gap: f64) -> Option<Near> {
         let domain = self.domain();
         let centre = self.place(fit.cell, [&fit.u, &fit.v], [0.0; 2]);
         let estimate = least_stretch(
@@ -766,7 +807,11 @@ impl<'a> SplineField<'a> {
             .mul(&Interval::point(gap))
             .div(&Interval::point(stretch))?
             .hi;
-        eps.is_finite().then_some(Near { jets, eps })
+        let jets = jets.into_iter().map(|j| (j, [eps; 2], eps)).collect();
+        eps.is_finite().then_some(Near {
+            jets,
+            radius: [eps; 2],
+        })
     }
 
     /// The box of parameters of piece `cell` around the hull of the
@@ -791,6 +836,67 @@ impl<'a> SplineField<'a> {
                 hi: g.hi + margin[k],
             }
         })
+    }
+
+    /// The surface's jets over a box `place(p, e)` around the curve `p`
+    /// with Bernstein coefficients `c` (the part of the fitted curve over
+    /// the sub-range `range` of the part's parameter) proving the tube of
+    /// radii `e` for the edge's points over that sub-range
+    /// ([`tube::holds`]), or over the boxes of its halves (de Casteljau)
+    /// down to `depth` halvings, pushed on `jets` with their radii; `None`
+    /// when not proved. Each box starts from the radii `guess`, then takes
+    /// the radii [`tube::radius`] asks for over it (a quarter more, and the
+    /// floor), enlarging the box while they exceed its own, up to
+    /// [`TUBE_TRIES`] times.
+    fn tube_boxes(
+        &self,
+        tube: &Tube<'_>,
+        c: [&[f64]; 2],
+        range: Interval,
+        guess: [f64; 2],
+        depth: usize,
+        jets: &mut Vec<(PatchJet, [f64; 2], f64)>,
+    ) -> Option<()> {
+        let points = tube.points(range)?;
+        let mut e = [0, 1].map(|k| guess[k].max(tube.floor[k]));
+        for _ in 0..TUBE_TRIES {
+            let q = (tube.place)(c, e);
+            let Ok(jet) = self.jet(q[0], q[1]) else { break };
+            let Some(need) = tube::radius(&jet, &points, tube.residual) else {
+                break;
+            };
+            let want = [0, 1].map(|k| 1.25 * need[k] + tube.floor[k]);
+            if want[0] <= e[0] && want[1] <= e[1] {
+                if tube::holds(&jet, &points, tube.residual, want) {
+                    let length = Interval::point(want[0])
+                        .sqr()
+                        .add(&Interval::point(want[1]).sqr())
+                        .sqrt()?
+                        .hi;
+                    jets.push((jet, want, length));
+                    return Some(());
+                }
+                break;
+            }
+            e = [0, 1].map(|k| 2.0 * want[k].max(e[k]));
+        }
+        if depth == 0 {
+            return None;
+        }
+        let [(u0, v0), (u1, v1)] = halves(c)?;
+        let m = range.mid();
+        let (left, right) = (
+            Interval {
+                lo: range.lo,
+                hi: m,
+            },
+            Interval {
+                lo: m,
+                hi: range.hi,
+            },
+        );
+        self.tube_boxes(tube, [&u0, &v0], left, guess, depth - 1, jets)?;
+        self.tube_boxes(tube, [&u1, &v1], right, guess, depth - 1, jets)
     }
 
     /// The surface's jets over the box `place(p)` of the curve `p` with
@@ -1030,12 +1136,50 @@ pub struct CurvaturePath {
 /// The boxes that hold the feet near a fitted curve
 /// ([`SplineField::near`]).
 struct Near {
-    /// The surface's jets over boxes covering the fitted curve widened by
-    /// a margin of at least `eps`.
-    jets: Vec<PatchJet>,
-    /// `ε = 2g/σ`: no foot is farther than this from the fitted curve, in
+    /// The surface's jets over boxes covering the tube around the fitted
+    /// curve, each with the radii `e_u`, `e_v` it proves and a bound of
+    /// the length `|e|` of the step: every foot of the edge's points over
+    /// its sub-range is within them of the fitted curve, in the surface's
     /// parameters.
-    eps: f64,
+    jets: Vec<(PatchJet, [f64; 2], f64)>,
+    /// The greatest radii over the boxes.
+    radius: [f64; 2],
+}
+
+/// How many boxes [`SplineField::tube_boxes`] tries for one part of a
+/// fitted curve before halving it.
+const TUBE_TRIES: usize = 3;
+
+/// The box of parameters around a curve `p` (its Bernstein coefficients)
+/// widened by radii.
+type Place<'a> = dyn Fn([&[f64]; 2], [f64; 2]) -> [Interval; 2] + 'a;
+
+/// What [`SplineField::tube_boxes`] proves the tube for.
+struct Tube<'a> {
+    /// The edge's curve.
+    curve: &'a ICurve,
+    /// The part of its parameter the fitted curve runs over.
+    t: Interval,
+    /// The residual's bounds, in the surface's parameters.
+    residual: [f64; 2],
+    /// The least radii tried: 10⁻¹⁵ of the domain's width.
+    floor: [f64; 2],
+    /// The box around a part of the fitted curve, widened by radii.
+    place: &'a Place<'a>,
+}
+
+impl Tube<'_> {
+    /// The edge's points over the sub-range `range` of the part's
+    /// parameter `s` (`t = t.lo + s (t.hi − t.lo)`), enclosed.
+    fn points(&self, range: Interval) -> Option<IVec> {
+        let width = Interval::point(self.t.hi).sub(&Interval::point(self.t.lo));
+        let sub = Interval::point(self.t.lo).add(&width.mul(&range));
+        let sub = Interval {
+            lo: sub.lo.max(self.t.lo),
+            hi: sub.hi.min(self.t.hi),
+        };
+        Some(self.curve.jet(sub).ok()?.x)
+    }
 }
 
 /// The value at `s` of the polynomial with Bernstein coefficients `c`
@@ -1051,7 +1195,7 @@ fn bernstein_at(c: &[f64], s: Interval) -> Interval {
     b[0]
 }
 
-/// How many times [`SplineField::turn_near`] may halve a fitted curve.
+/// How many times [`SplineField::tube_boxes`] may halve a fitted curve.
 const HALVINGS: usize = 3;
 
 /// The Bernstein coefficients `(u, v)` of the two halves of the curve
@@ -1262,6 +1406,21 @@ fn least_stretch(s: &PatchJet) -> Option<f64> {
         .map_or(f64::NEG_INFINITY, |q| q.lo);
     let least = closed.max(gershgorin).max(quotient);
     (least > 0.0).then(|| Interval::point(least).sqrt().map(|x| x.lo))?
+}
+
+/// At most the angle, in radians, the unit normal turns along a segment
+/// of parameters within the box of `jet` whose steps are at most `radius`
+/// in each parameter and `length` long: the least of
+/// `sup |N_u| e_u + sup |N_v| e_v` and `sup √(|N_u|² + |N_v|²) · length`
+/// (Cauchy–Schwarz); `None` where the normal is not proved.
+fn turn(jet: &PatchJet, radius: [f64; 2], length: f64) -> Option<f64> {
+    let [nu, nv] = normal_rates(jet, &unit_normal(jet)?)?;
+    let (a, b) = (norm2(&nu), norm2(&nv));
+    let e = radius.map(Interval::point);
+    let apart = a.sqrt()?.mul(&e[0]).add(&b.sqrt()?.mul(&e[1])).hi;
+    let along = a.add(&b).sqrt()?.mul(&Interval::point(length)).hi;
+    let t = apart.min(along);
+    t.is_finite().then_some(t)
 }
 
 impl DistanceField for SplineField<'_> {

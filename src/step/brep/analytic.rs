@@ -41,10 +41,12 @@ use num_rational::BigRational;
 pub(super) struct Units {
     /// The plane angle unit (cone semi-angles, angle trims).
     pub(super) angle: AngleUnit,
-    /// How near (an `f64` distance in the model's length unit) a vertex
-    /// must be to a piece's end to be taken there: the declared tolerance,
-    /// or 10⁻⁷ without one. A search heuristic only: the trimmed pieces
-    /// and the distances kept are exact.
+    /// The declared tolerance, or 10⁻⁷ without one (an `f64` distance in
+    /// the model's length unit): how near a B-spline edge's ends must be
+    /// to its vertices for it to keep its whole curve, and the scale of
+    /// the p-curves' checks; trimming takes a vertex at a piece's end only
+    /// within [`Units::end_snap`]. A search heuristic only: the trimmed
+    /// pieces and the distances kept are exact.
     pub(super) snap: f64,
 }
 
@@ -59,7 +61,25 @@ impl Units {
             .map_or(1e-7, crate::algebra::scalar::Ordered::to_f64);
         Units { angle, snap }
     }
+
+    /// How much farther from a vertex than the curve point nearest it a
+    /// piece's end may be and still be taken for the vertex when an edge
+    /// is trimmed ([`trim_between`]'s `snap`): [`END_SNAP`], or the
+    /// declared tolerance where smaller. Snapping by the whole tolerance
+    /// moved `nist_ctc_02 #6261`'s start 0.0164 mm (0.094° of its circle)
+    /// along the curve to its arc's end, past the corner of its B-spline
+    /// face (tolerance 0.0508 mm), so the audit measured a curve that left
+    /// the face.
+    fn end_snap(&self) -> f64 {
+        self.snap.min(END_SNAP)
+    }
 }
+
+/// A vertex at a piece's end up to the rounding of a file's decimals (and
+/// of the `f64` search that locates it) is taken at the end, so that no
+/// sliver piece appears: 10⁻⁷ model units, far above the ~10⁻¹² of
+/// 15-digit coordinates, far below any real edge's length.
+const END_SNAP: f64 = 1e-7;
 
 pub(super) fn lift(p: &[BigRational]) -> Vec<RealAlgebraic> {
     p.iter().map(RealAlgebraic::from_rational).collect()
@@ -195,7 +215,7 @@ impl Builder<'_> {
                     &lift(a),
                     &lift(b),
                     same_sense,
-                    units.snap,
+                    units.end_snap(),
                 );
                 t.map_or_else(|e| Geometry::Invalid(e.to_string()), |t| trimmed(t, None))
             }
@@ -221,7 +241,7 @@ impl Builder<'_> {
         let Curve::Pieces(c) = curve else {
             return Ok(Geometry::NotConverted);
         };
-        let t = trim_between(&c.pieces, start, end, same_sense, units.snap)?;
+        let t = trim_between(&c.pieces, start, end, same_sense, units.end_snap())?;
         Ok(trimmed(t, c.approximate))
     }
 

@@ -1,5 +1,6 @@
 use super::*;
 use crate::algebra::interval_bernstein::scale;
+use crate::audit::certify::compose::{compose, NetRef};
 
 fn pts(c: &[f64]) -> Vec<Interval> {
     c.iter().map(|&x| Interval::point(x)).collect()
@@ -72,7 +73,8 @@ fn normal_of(
             coords: &dv,
         },
     ];
-    let n = patch_normal(&h, &nets, u, v);
+    let [hu, hv] = nets.each_ref().map(|n| compose(n, u, v));
+    let n = patch_normal(&h, &hu, &hv);
     (h, n)
 }
 

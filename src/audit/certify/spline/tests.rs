@@ -273,7 +273,12 @@ fn a_gap_to_a_b_spline_face_is_measured_right() {
 /// The line `(1 + 10⁻⁷, 0, z)`, `0 ≤ z ≤ 2`: radially `10⁻⁷` outside the
 /// quarter cylinder's border `u = 0`, along its whole height.
 fn line_off_the_border() -> ICurve {
-    let x = q(1, 1) + q(1, 10_000_000);
+    line_off_the_border_by(q(1, 10_000_000))
+}
+
+/// The line `(1 + d, 0, z)`, `0 ≤ z ≤ 2`.
+fn line_off_the_border_by(d: Q) -> ICurve {
+    let x = q(1, 1) + d;
     let line = RationalCurve::polynomial(vec![
         vec![x.clone(), q(0, 1), q(0, 1)],
         vec![x, q(0, 1), q(2, 1)],
@@ -407,4 +412,29 @@ fn feet_past_a_closed_surface_s_seam_are_proved_on_the_other_side() {
         }
     }
     assert!(field.guess.get().unwrap()[0] > 3.9);
+}
+
+/// The line `(1 + 10⁻³, 0, z)`, really `10⁻³` off the quarter cylinder:
+/// its feet are on the border `u = 0` (independently: radial at `y = 0`),
+/// where the fitted curve runs, so the residual along it is rounding and
+/// the slack (the tube's, [`super::tube`]) far below the `2·10⁻³` of the
+/// bound from the gap alone (`L·2g/σ`, `L = σ = 2`): the path's angle to
+/// the radial normal plus the slack stays under `10⁻⁹` on each side of
+/// the knot line.
+#[test]
+fn a_normal_path_a_real_gap_off_a_b_spline_cylinder_has_a_small_slack() {
+    let c = quarter_cylinder();
+    let curve = line_off_the_border_by(q(1, 1000));
+    let cp = pieces(&c);
+    let surface = SplineSurface::new(&c, &cp).unwrap();
+    let field = SplineField::new(&surface);
+    let t = Interval { lo: 0.0, hi: 1.0 };
+    let cuts = field.cuts(&curve, t).unwrap();
+    let radial = [1.0, 0.0, 0.0].map(|x| vec![Interval::point(x)]);
+    for part in parts(t, &cuts) {
+        let path = field.normal_over(&curve, part).unwrap();
+        let (upper, _) =
+            crate::audit::certify::normal_path::angle_between(&path.normal, &radial).unwrap();
+        assert!(upper + path.slack < 1e-9, "{upper} {}", path.slack);
+    }
 }
