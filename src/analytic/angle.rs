@@ -16,18 +16,25 @@
 //!    is the dyadic rational with 64 fractional bits nearest the middle; the
 //!    result carries an exact bound `error ≥ |slope − tan α|` and
 //!    `exact = false`. Nothing is approximated silently.
+//!
+//! Both steps depend only on the decimal and the unit, and a model repeats
+//! the same few semi-angles on many cones (NIST CTC 02: 82 cones, two
+//! angles), so their rational results are remembered per thread
+//! ([`SLOPES`]); the Taylor enclosure was a tenth of reading that model.
 
 use crate::algebra::gcd;
 use crate::algebra::parse_rational;
-use crate::algebra::scalar::{Field, Ordered, Roots, Scalar};
+use crate::algebra::scalar::{Field, Ordered, Roots};
 use crate::error::Error;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
+use std::cell::RefCell;
+use std::collections::HashMap;
 
 /// The plane angle unit of a STEP representation context (one type for
 /// the B-rep's contexts and the geometry readers).
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum AngleUnit {
     /// `SI_UNIT(prefix, .RADIAN.)`: the radian times its SI prefix factor
     /// (1 unprefixed).
@@ -129,6 +136,65 @@ pub fn cone_slope<T: Field + Ordered + Roots>(
     text: &str,
     unit: &AngleUnit,
 ) -> Result<Slope<T>, Error> {
+    let angle = remembered_semi_angle(text, unit)?;
+    if let Some(tan) = angle.multiple.and_then(tan_15::<T>) {
+        return Ok(Slope {
+            tan,
+            exact: true,
+            error: BigRational::zero(),
+        });
+    }
+    Ok(Slope {
+        tan: T::from_rational(&angle.tan),
+        exact: false,
+        error: angle.error,
+    })
+}
+
+/// What the slope of a decimal semi-angle is before it becomes a `T`: the
+/// multiple `k·15°` it is the rounding of, if any, and the dyadic slope
+/// with its error bound (rule 2 of the module docs, used when there is no
+/// such `k` or `T` has no `√3`).
+#[derive(Clone, Debug)]
+struct SemiAngle {
+    multiple: Option<i64>,
+    tan: BigRational,
+    error: BigRational,
+}
+
+/// The most semi-angles [`SLOPES`] keeps before it is cleared, and the
+/// longest text it keeps one for (longer ones are computed every time).
+const SLOPES_KEPT: usize = 256;
+const SLOPE_TEXT_KEPT: usize = 64;
+
+thread_local! {
+    /// [`semi_angle`]'s answers on this thread, by text and unit.
+    static SLOPES: RefCell<HashMap<(String, AngleUnit), SemiAngle>> = RefCell::new(HashMap::new());
+}
+
+/// [`semi_angle`], remembered in [`SLOPES`] (errors are not kept).
+fn remembered_semi_angle(text: &str, unit: &AngleUnit) -> Result<SemiAngle, Error> {
+    if text.len() > SLOPE_TEXT_KEPT {
+        return semi_angle(text, unit);
+    }
+    let key = (text.to_string(), unit.clone());
+    if let Some(known) = SLOPES.with(|t| t.borrow().get(&key).cloned()) {
+        return Ok(known);
+    }
+    let angle = semi_angle(text, unit)?;
+    SLOPES.with(|t| {
+        let mut t = t.borrow_mut();
+        if t.len() >= SLOPES_KEPT {
+            t.clear();
+        }
+        t.insert(key, angle.clone());
+    });
+    Ok(angle)
+}
+
+/// The semi-angle `text` in `unit`: the multiple of 15° it rounds (rule 1
+/// of the module docs) and its approximate slope (rule 2).
+fn semi_angle(text: &str, unit: &AngleUnit) -> Result<SemiAngle, Error> {
     let d = parse_rational(text)?;
     let half = half_ulp(text)?;
     let (pi_lo, pi_hi) = pi_enclosure();
@@ -151,22 +217,19 @@ pub fn cone_slope<T: Field + Ordered + Roots>(
             "a cone's semi_angle must lie strictly between 0 and 90°, not {text}"
         )));
     }
-    for k in 1..=5i64 {
+    let multiple = (1..=5i64).find(|&k| {
         let (a, b) = match unit {
             AngleUnit::Degree => (q(15 * k, 1), q(15 * k, 1)),
             _ => (pi_lo.clone() * q(k, 12), pi_hi.clone() * q(k, 12)),
         };
-        if (a - &d).abs() <= half && (b - &d).abs() <= half {
-            if let Some(tan) = tan_15::<T>(k) {
-                return Ok(Slope {
-                    tan,
-                    exact: true,
-                    error: BigRational::zero(),
-                });
-            }
-        }
-    }
-    approximate(&lo, &hi)
+        (a - &d).abs() <= half && (b - &d).abs() <= half
+    });
+    let (tan, error) = approximate(&lo, &hi)?;
+    Ok(SemiAngle {
+        multiple,
+        tan,
+        error,
+    })
 }
 
 /// `tan(k·15°)` for `k = 1…5`, or `None` without `√3` in `T`.
@@ -216,8 +279,8 @@ fn bracket(x: &BigInt, f: usize, odd: bool) -> (BigRational, BigRational) {
 }
 
 /// The 64-bit dyadic slope nearest the middle of a rigorous enclosure of
-/// `tan α` for `α ∈ [lo, hi] ⊂ (0, π/2)`, with its error bound.
-fn approximate<T: Scalar>(lo: &BigRational, hi: &BigRational) -> Result<Slope<T>, Error> {
+/// `tan α` for `α ∈ [lo, hi] ⊂ (0, π/2)`, and a bound of its error.
+fn approximate(lo: &BigRational, hi: &BigRational) -> Result<(BigRational, BigRational), Error> {
     // Widen [lo, hi] outward to 96-bit dyadics: the enclosure stays
     // rigorous, and the Taylor terms stay short (the 40-digit π of a degree
     // angle would otherwise make every power of x a long fraction).
@@ -240,11 +303,7 @@ fn approximate<T: Scalar>(lo: &BigRational, hi: &BigRational) -> Result<Slope<T>
     let mid = (t_lo.clone() + &t_hi) / q(2, 1);
     let tan = (mid * &scale).round() / &scale;
     let error = (tan.clone() - t_lo).max(t_hi - &tan);
-    Ok(Slope {
-        tan: T::from_rational(&tan),
-        exact: false,
-        error,
-    })
+    Ok((tan, error))
 }
 
 #[cfg(test)]

@@ -137,6 +137,31 @@ fn a_prefixed_radian_scales_the_semi_angle_and_its_rounding() {
     assert!((crate::Ordered::to_f64(&s.tan) - 0.5f64.tan()).abs() < 1e-15);
 }
 
+#[test]
+fn a_remembered_semi_angle_keeps_each_scalars_rule() {
+    // 30° asked over Q(√3)'s real algebraic numbers, then over Q, then
+    // again: the remembered answer is exact where √3 exists and an
+    // enclosure of tan 30° = √3/3 where it does not, every time.
+    for _ in 0..2 {
+        let s = cone_slope::<RealAlgebraic>("30.", &AngleUnit::Degree).unwrap();
+        assert!(s.exact);
+        let three = RealAlgebraic::from_i64(3);
+        assert_eq!(s.tan.clone() * &s.tan * &three, RealAlgebraic::from_i64(1));
+        let a = cone_slope::<Q>("30.", &AngleUnit::Degree).unwrap();
+        assert!(!a.exact && a.error > q(0) && a.error < q(1) / q(1 << 60));
+        let (lo, hi) = (a.tan.clone() - &a.error, a.tan.clone() + &a.error);
+        assert!(lo.clone() * &lo * q(3) <= q(1) && q(1) <= hi.clone() * &hi * q(3));
+    }
+    // An angle out of range is refused each time it is asked (errors are
+    // not remembered as answers).
+    for _ in 0..2 {
+        assert!(matches!(
+            cone_slope::<Q>("90.", &AngleUnit::Degree),
+            Err(Error::Domain(_))
+        ));
+    }
+}
+
 mod covering_range_filter {
     use super::*;
     use crate::algebra::scalar::{Roots, Scalar};
