@@ -114,8 +114,10 @@ def main():
     for d in disagreed:
         print(json.dumps(d))
     med = {k: statistics.median(v) for k, v in cubic.items() if v}
-    print(json.dumps({"cubic_pairs": len(cubic["peer"]), "median_us": med,
-                      "ours_over_peer": {k: med[k] / med["peer"] for k in ("filtered", "exact", "f64")}}))
+    ratios = {k: round(med[k] / med["peer"], 4) for k in ("filtered", "exact", "f64")}
+    # The last line: the ratios benches/peers/run gathers into its own last line.
+    print(json.dumps({"cubic_pairs": len(cubic["peer"]), "median_us": med, "ours_over_peer": ratios,
+                      **{f"intersect_{k}_vs_bezier": v for k, v in ratios.items()}}))
 
 
 if __name__ == "__main__":
