@@ -139,7 +139,15 @@ impl MulAcc for f64 {
     }
 }
 impl MulAcc for i128 {}
-impl MulAcc for BigRational {}
+/// `acc·a + c·x` with Lehmer's gcd ([`crate::algebra::gcd::product`] and
+/// [`sum`](crate::algebra::gcd::sum)): `Ratio`'s operators reduce by the
+/// binary gcd of `num-integer`, which shifts whole big integers per step.
+impl MulAcc for BigRational {
+    fn mul_acc(acc: &mut Self, a: &Self, c: &Self, x: &Self) {
+        use crate::algebra::gcd::{product, sum};
+        *acc = sum(&product(acc, a), &product(c, x));
+    }
+}
 
 /// A commutative ring that contains Q (a Q-algebra): `+ − ×`, negation, zero,
 /// one, integer and rational constants, and an exact zero test.
@@ -459,6 +467,48 @@ pub fn rational_root(q: &BigRational, n: u32) -> Option<BigRational> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    /// A rational with numerator and denominator of up to 200 bits.
+    fn rational() -> impl Strategy<Value = BigRational> {
+        (
+            any::<[u64; 3]>(),
+            any::<[u64; 3]>(),
+            1u32..200,
+            1u32..200,
+            any::<bool>(),
+        )
+            .prop_map(|(n, d, nb, db, neg)| {
+                let big = |w: [u64; 3], bits: u32| {
+                    let x = BigInt::from_slice(
+                        num_bigint::Sign::Plus,
+                        &w.iter()
+                            .flat_map(|v| [*v as u32, (v >> 32) as u32])
+                            .collect::<Vec<_>>(),
+                    );
+                    x % (BigInt::one() << bits)
+                };
+                let r = BigRational::new(big(n, nb), big(d, db) + 1);
+                if neg {
+                    -r
+                } else {
+                    r
+                }
+            })
+    }
+
+    proptest! {
+        /// `mul_acc` on rationals is `acc·a + c·x` by `Ratio`'s own
+        /// operators, in lowest terms.
+        #[test]
+        fn rational_mul_acc_is_the_ring_value(acc in rational(), a in rational(), c in rational(), x in rational()) {
+            let mut got = acc.clone();
+            BigRational::mul_acc(&mut got, &a, &c, &x);
+            let want = acc * &a + c * &x;
+            prop_assert_eq!(got.numer(), want.numer());
+            prop_assert_eq!(got.denom(), want.denom());
+        }
+    }
 
     #[test]
     fn binomials_match_pascal() {

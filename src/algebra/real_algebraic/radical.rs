@@ -665,7 +665,7 @@ impl RadicalSum {
                         (b.clone(), Exp::one() - e)
                     })
                     .collect();
-            let coef = (c * BigRational::from_integer(carry)).recip();
+            let coef = gcd::product(c, &BigRational::from_integer(carry)).recip();
             let mut terms = BTreeMap::new();
             terms.insert(Monomial(inv), coef);
             return RadicalSum { terms };
