@@ -287,12 +287,13 @@ impl Scalar for BigRational {
         BigRational::from_integer(n.clone())
     }
     fn mul_scalar(&self, other: &Self) -> Self {
-        // `Ratio`'s `*` reduces by gcd(numer, other denom) and the converse,
-        // which is work even when both denominators are 1.
+        // `Ratio`'s `*` reduces by gcd(numer, other denom) and the converse
+        // with the binary gcd (work even when both denominators are 1);
+        // Lehmer's gcd reduces the product once.
         if self.is_integer() && other.is_integer() {
             BigRational::from_integer(self.numer() * other.numer())
         } else {
-            self * other
+            crate::algebra::gcd::product(self, other)
         }
     }
 }

@@ -29,12 +29,12 @@ use super::memo;
 use super::polys;
 use crate::algebra::gcd;
 use crate::algebra::upoly::UPoly;
+use litemap::LiteMap;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::{BigRational, Ratio};
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use std::borrow::Cow;
-use std::collections::BTreeMap;
 
 /// An exponent in `(0, 1)`.
 pub(crate) type Exp = Ratio<i64>;
@@ -46,9 +46,13 @@ pub(crate) struct Monomial(pub(crate) Vec<(BigInt, Exp)>);
 
 /// `Σ c_k m_k` with non-zero rational coefficients and distinct monomials
 /// over one gcd-free basis (module docs).
+///
+/// The terms are one vector sorted by monomial ([`LiteMap`]): a sum has a
+/// handful of terms, and a B-tree's node (room for eleven) was most of
+/// the allocation of reading a STEP model's analytic faces.
 #[derive(Clone, Debug, PartialEq, Eq, Default)]
 pub(crate) struct RadicalSum {
-    terms: BTreeMap<Monomial, BigRational>,
+    terms: LiteMap<Monomial, BigRational>,
 }
 
 impl Monomial {
@@ -310,7 +314,7 @@ fn coprime_basis(mut v: Vec<BigInt>) -> Vec<BigInt> {
 impl RadicalSum {
     /// The rational `q`.
     pub(crate) fn rational(q: BigRational) -> Self {
-        let mut terms = BTreeMap::new();
+        let mut terms = LiteMap::new();
         if !q.is_zero() {
             terms.insert(Monomial::one(), q);
         }
@@ -350,13 +354,13 @@ impl RadicalSum {
             let (d, j) = perfect_power_root(&rest);
             push_power(&mut out, &mut carry, d, e * i64::from(j));
         }
-        let mut terms = BTreeMap::new();
+        let mut terms = LiteMap::new();
         terms.insert(Monomial(out), BigRational::from_integer(carry));
         RadicalSum { terms }
     }
 
     /// The terms, monomial → coefficient.
-    pub(crate) fn terms(&self) -> &BTreeMap<Monomial, BigRational> {
+    pub(crate) fn terms(&self) -> &LiteMap<Monomial, BigRational> {
         &self.terms
     }
 
@@ -389,7 +393,7 @@ impl RadicalSum {
     /// every base of `self`).
     fn rewrite(&self, basis: &[BigInt]) -> Self {
         let mut out = RadicalSum::default();
-        for (m, c) in &self.terms {
+        for (m, c) in self.terms.iter() {
             let mut acc = RadicalSum::rational(c.clone());
             for (b, e) in &m.0 {
                 let mut rest = b.clone();
@@ -406,7 +410,7 @@ impl RadicalSum {
                     }
                 }
                 debug_assert!(rest.is_one(), "the basis refines every base");
-                let mut f = BTreeMap::new();
+                let mut f = LiteMap::new();
                 f.insert(Monomial(parts), BigRational::from_integer(carry));
                 acc = acc.mul_same_basis(&RadicalSum { terms: f });
             }
@@ -456,7 +460,7 @@ impl RadicalSum {
         );
         let (a, b) = self.unify(other);
         let mut a = a.into_owned();
-        for (m, c) in &b.terms {
+        for (m, c) in b.terms.iter() {
             match a.terms.get_mut(m) {
                 Some(x) => {
                     *x = gcd::sum(x, c);
@@ -496,9 +500,9 @@ impl RadicalSum {
             (self.terms.len() * other.terms.len()) as u64,
             self.coefficient_bits().max(other.coefficient_bits()),
         );
-        let mut out: BTreeMap<Monomial, BigRational> = BTreeMap::new();
-        for (ma, ca) in &self.terms {
-            for (mb, cb) in &other.terms {
+        let mut out: LiteMap<Monomial, BigRational> = LiteMap::new();
+        for (ma, ca) in self.terms.iter() {
+            for (mb, cb) in other.terms.iter() {
                 let (carry, m) = ma.mul(mb);
                 let c = gcd::product(&gcd::product(&carry, ca), cb);
                 let entry = out.entry(m).or_insert_with(BigRational::zero);
@@ -540,7 +544,7 @@ impl RadicalSum {
         let (num, den) = (c.numer().abs(), c.denom().clone());
         let radicand = num * num_traits::pow(den.clone(), n as usize - 1);
         let rational_part = RadicalSum::int_power(&radicand, Exp::new(1, i64::from(n)));
-        let mut mono = BTreeMap::new();
+        let mut mono = LiteMap::new();
         mono.insert(m.root(n), BigRational::one());
         let r = rational_part
             .mul(&RadicalSum { terms: mono })
@@ -557,7 +561,7 @@ impl RadicalSum {
     pub(crate) fn enclosure(&self, prec: u32) -> (BigRational, BigRational) {
         let scale = prec as usize + 3;
         let (mut lo, mut hi) = (BigInt::zero(), BigInt::zero());
-        for (m, c) in &self.terms {
+        for (m, c) in self.terms.iter() {
             let (a, b, w) = if m.is_one() {
                 (BigInt::one(), BigInt::one(), 0)
             } else {
@@ -666,7 +670,7 @@ impl RadicalSum {
                     })
                     .collect();
             let coef = gcd::product(c, &BigRational::from_integer(carry)).recip();
-            let mut terms = BTreeMap::new();
+            let mut terms = LiteMap::new();
             terms.insert(Monomial(inv), coef);
             return RadicalSum { terms };
         }
@@ -704,7 +708,7 @@ impl RadicalSum {
         })?;
         let n = self.exponent_lcm(&b);
         let mut parts = vec![RadicalSum::default(); n as usize];
-        for (m, c) in &self.terms {
+        for (m, c) in self.terms.iter() {
             let k =
                 m.0.iter()
                     .find(|(x, _)| *x == b)
@@ -712,7 +716,7 @@ impl RadicalSum {
             let rest = Monomial(m.0.iter().filter(|(x, _)| *x != b).cloned().collect());
             parts[k].terms.insert(rest, c.clone());
         }
-        let mut cm = BTreeMap::new();
+        let mut cm = LiteMap::new();
         cm.insert(
             Monomial(vec![(b.clone(), Exp::new(1, n))]),
             BigRational::one(),

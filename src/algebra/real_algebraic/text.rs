@@ -468,7 +468,7 @@ pub(crate) fn radical_text(s: &RadicalSum) -> String {
         return "0".into();
     }
     let mut out = String::new();
-    for (m, c) in s.terms() {
+    for (m, c) in s.terms().iter() {
         let neg = c.is_negative();
         let a = c.abs();
         let body = if m.0.is_empty() {
