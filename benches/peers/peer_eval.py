@@ -25,11 +25,19 @@ Cases (per point, so batch sizes differ between cases):
   random p/q with p in 10000..20000 and q in 600..700 (like 12345/678),
   parameters k/100 or k/457).
 
-The last line printed is the JSON object of ratios ours/peer, and of
+The last line printed is the JSON object of ratios ours/peer, of
 ours / the fixed-size kernel that peer_eval.rs keeps as the yardstick of
 the SIMD lane kernels (`f64_curve3_vs_fixed_kernel`,
 `f64_bicubic_vs_fixed_kernel`; 8 points at a time, vectorised by the
-compiler).
+compiler), and of ours / the machine's bound for the five f64 cases
+(`f64_curve3_vs_machine_bound` …, issue 31): the bound of a case is
+max(flops / peak GFLOP/s, divides / peak divides per ns), with the flops
+and divides per point of the scheme (src/eval/lanes.rs, an FMA counting
+two flops) and the peak that `peer_eval --peak` measures in each round
+(FMAs and divides of the widest vectors the processor has, on many
+independent chains; the best round counts), given in the same line
+(`machine_peak_gflops`, `machine_peak_divides_per_ns`,
+`machine_clock_ghz`).
 """
 
 import argparse
@@ -114,6 +122,34 @@ def make_cases(seed):
                             "weights": [[frac_text(w) for w in row] for row in tw_q]},
                   "params": uv_q, "exact": True})
     return cases
+
+
+# Flops (an FMA counts two) and divides per point of our scheme
+# (src/eval/lanes.rs): curve n, stride s: 1 + n(3s + 1) and s − 1; tri n:
+# 2 + n(n + 1)/2·(3s + 1) + n(2s + 1); rect (m, n): 2 + (m + 1)·n(3s + 1)
+# + m(3s + 1); both s − 1 divides.
+COST = {
+    "f64_curve3": (31, 2),
+    "f64_curve10": (101, 2),
+    "f64_curve40": (401, 2),
+    "f64_tri3": (107, 3),
+    "f64_bicubic": (197, 3),
+}
+
+
+def peak_rates(peaks):
+    """The best FMA GFLOP/s and divides per ns over the rounds, of the
+    widest vectors measured (8-wide where the processor has AVX-512)."""
+    gflops = max(p.get("fma8_gflops", p.get("fma4_gflops", 0)) for p in peaks)
+    divides = max(p.get("div8_per_ns", p.get("div4_per_ns", 0)) for p in peaks)
+    clock = max(p.get("clock_ghz", 0) for p in peaks)
+    return gflops, divides, clock
+
+
+def bound_ns(name, gflops, divides):
+    """The machine's bound of a case, ns per point."""
+    flops, divs = COST[name]
+    return max(flops / gflops, divs / divides)
 
 
 def best(repeat, points, f):
@@ -226,8 +262,10 @@ def main():
     with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
         json.dump(cases, f)
         path = f.name
-    ours_runs, theirs_runs = [], []
+    ours_runs, theirs_runs, peaks = [], [], []
     for r in range(args.rounds):
+        peaks.append(json.loads(subprocess.run([args.ours, "--peak"], check=True,
+                                               capture_output=True, text=True).stdout))
         out = subprocess.run([args.ours, path, "--repeat", str(args.repeat)], check=True,
                              capture_output=True, text=True).stdout
         ours_runs.append(json.loads(out))
@@ -245,6 +283,18 @@ def main():
     # The lane kernels against the vectorised fixed-size kernel of the same scheme.
     for name in ("f64_curve3", "f64_bicubic"):
         ratios[f"{name}_vs_fixed_kernel"] = round(med(ours_runs, name) / med(ours_runs, name + "_reference"), 4)
+    # The lane kernels against the machine's bound.
+    gflops, divides, clock = peak_rates(peaks)
+    print(f"\nmachine peak: {gflops:.1f} GFLOP/s (FMA), {divides:.3f} divides/ns, clock {clock:.2f} GHz")
+    print("\n| case | flops | divides | bound (ns/point) | ours (ns/point) | ours / bound |")
+    print("| --- | --- | --- | --- | --- | --- |")
+    for name, (flops, divs) in COST.items():
+        b, o = bound_ns(name, gflops, divides), med(ours_runs, name)
+        ratios[f"{name}_vs_machine_bound"] = round(o / b, 4)
+        print(f"| {name} | {flops} | {divs} | {b:.2f} | {o:.2f} | {o / b:.3g} |")
+    ratios["machine_peak_gflops"] = round(gflops, 2)
+    ratios["machine_peak_divides_per_ns"] = round(divides, 4)
+    ratios["machine_clock_ghz"] = round(clock, 3)
     print()
     print(json.dumps(ratios))
 

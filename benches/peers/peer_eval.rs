@@ -5,7 +5,12 @@
 //!
 //! ```text
 //! cargo bench --bench peer_eval -- CASES.json [--repeat 5]
+//! cargo bench --bench peer_eval -- --peak
 //! ```
+//!
+//! `--peak` prints the machine's peak instead ([`peak::peak`]: FMA
+//! GFLOP/s and divides a nanosecond, 4- and 8-wide), from which
+//! `peer_eval.py` computes the bound of each case.
 //!
 //! Each case is `{"name", "patch" (our JSON format), "params": [...],
 //! "exact": bool}`; `params` holds one value per point for a curve and
@@ -24,11 +29,17 @@ use num_rational::BigRational;
 use serde_json::{Map, Value};
 use std::time::Instant;
 
+mod peak;
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
+    if args.iter().any(|a| a == "--peak") {
+        println!("{}", peak::peak());
+        return;
+    }
     // `cargo bench` appends `--bench`; with no cases file there is nothing to time.
     let Some(path) = args.get(1).filter(|a| !a.starts_with("--")) else {
-        eprintln!("usage: cargo bench --bench peer_eval -- CASES.json [--repeat N]");
+        eprintln!("usage: cargo bench --bench peer_eval -- CASES.json [--repeat N] | --peak");
         return;
     };
     let repeat = match args.iter().position(|a| a == "--repeat") {

@@ -143,7 +143,8 @@ impl<T: Scalar> Jets<T> {
     /// one value per point for a curve, two for a patch, back to back):
     /// `out` receives `2·stride` (curve) or `3·stride` (patch) scalars per
     /// point. `f64` nets of stride 3 or 4 take the lane-major kernels of
-    /// `lanes` (the same values bit for bit). In steady state an `f64`
+    /// `lanes` (the same values bit for bit, or within its tolerance in
+    /// the fused AVX2 and AVX-512 builds). In steady state an `f64`
     /// batch allocates nothing (tests/alloc.rs).
     ///
     /// # Errors

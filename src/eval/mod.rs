@@ -35,9 +35,12 @@
 //!
 //! `f64` batches of nets of stride 3 or 4 run the kernel lane-major
 //! (`lanes`): eight points at once, each value an array of eight `f64`
-//! that the compiler vectorises (also compiled for AVX2 and chosen at run
-//! time, with the feature `simd`), with the scalar kernel's operations in
-//! its order, so the values are the same bit for bit.
+//! that the compiler vectorises, with the scalar kernel's operations in
+//! its order, so the values are the same bit for bit; with the feature
+//! `simd` also compiled for AVX-512 and for AVX2 (the widest the processor
+//! has, chosen at run time), where each multiply–add is fused: the values
+//! then differ from the scalar kernel's within the tolerance that `lanes`
+//! derives (a few ulps of the sum of absolute terms).
 //!
 //! For `f64` the scheme is the one of dhermes/bezier's `evaluate_multi`;
 //! its rounding differs from de Casteljau's by a few ulps times the size of
@@ -640,9 +643,10 @@ impl<T: Field> Evaluator<T> {
     /// coordinates per point. `BigRational` takes the fraction-free path
     /// of the module documentation, batches of four or more points on
     /// `f64` nets of stride 3 or 4 the lane-major kernels of `lanes`
-    /// (several points at once in vector registers, the same values bit
-    /// for bit), everything else the generic kernel (the values are the
-    /// same).
+    /// (several points at once in vector registers: the same values bit
+    /// for bit in the baseline build, within the tolerance of `lanes` in
+    /// the fused AVX2 and AVX-512 builds), everything else the generic
+    /// kernel (the values are the same).
     ///
     /// # Errors
     ///
@@ -660,7 +664,8 @@ impl<T: Field> Evaluator<T> {
         fraction_free::eval_batch(self, params, out)
             .or_else(|| {
                 // The lanes compute a whole group of points: for one to
-                // three the scalar kernel is cheaper (same values).
+                // three the scalar kernel is cheaper (the same values
+                // within the tolerance of `lanes`).
                 (points >= FEWEST_FOR_LANES)
                     .then(|| {
                         lanes::eval_batch(

@@ -138,10 +138,12 @@ fn f64_kernel_agrees_with_de_casteljau() {
 }
 
 /// A curve batch (the lane kernels of `lanes`, eight points at a time, the
-/// last group padded) gives, bit for bit, the values of one point at a
-/// time: the lanes run the same operations in the same order.
+/// last group padded) gives the values of one point at a time, within
+/// `1e-12` relative as de Casteljau above: bit for bit in the baseline
+/// build, within the derived bound of `lanes` (checked there against
+/// exact sums) where the run-time build fuses its multiply–adds.
 #[test]
-fn f64_lanes_equal_single_points() {
+fn f64_lanes_agree_with_single_points() {
     let c = wavy_curve(10).map(crate::Ordered::to_f64);
     let mut ev = Evaluator::curve(&c);
     let ts: Vec<f64> = (0..11).map(|k| k as f64 / 10.0).collect();
@@ -150,7 +152,9 @@ fn f64_lanes_equal_single_points() {
     for (t, x) in ts.iter().zip(batch.chunks(2)) {
         let mut one = [0.0; 2];
         ev.eval_into(&[*t], &mut one).unwrap();
-        assert_eq!(x, one);
+        for (p, q) in x.iter().zip(&one) {
+            assert!((p - q).abs() <= 1e-12 * (1.0 + q.abs()), "t = {t}");
+        }
     }
 }
 
