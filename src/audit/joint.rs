@@ -661,8 +661,11 @@ fn curvature_along(field: &Field<'_>, curve: &ICurve, t: Interval) -> Option<[In
 }
 
 /// The maximum over all the edge's curves of a measure bounded on piece
-/// `t` of curve `k` by `bound(k, curve, t)`, each curve's share of
-/// `work` its cap.
+/// `t` of curve `k` by `bound(k, curve, t)`, each curve's cap an equal
+/// share of what is left of `work` when its turn comes (what a curve
+/// decided early did not use goes to the curves after it; until
+/// 2026-11-28 each had `work / n`, and B-spline edges of many pieces
+/// whose first pieces cost little had their angles unproved).
 fn along_by(
     curves: &[ICurve],
     (target, enough): (Target, f64),
@@ -670,8 +673,10 @@ fn along_by(
     mut bound: impl FnMut(usize, &ICurve, Interval) -> Result<Option<Bound>, Error>,
 ) -> Result<Measure, Error> {
     let mut best: Option<(Enclosure, usize)> = None;
-    let share = work / curves.len() as u64;
+    let start = limits::charged();
     for (k, c) in curves.iter().enumerate() {
+        let left = work.saturating_sub(limits::charged().saturating_sub(start));
+        let share = left / (curves.len() - k) as u64;
         let e = capped(share, "a certified measure along an edge", || {
             maximize_until(
                 Interval { lo: 0.0, hi: 1.0 },

@@ -101,6 +101,7 @@ use crate::rect::RectPatch;
 use num_rational::BigRational;
 use num_traits::Zero;
 use std::cell::{Cell, RefCell};
+use std::collections::HashMap;
 use std::rc::Rc;
 use std::sync::OnceLock;
 
@@ -296,13 +297,30 @@ pub struct SplineField<'a> {
     /// The jet at the last parameter point asked for (Newton's last step
     /// is Krawczyk's first centre).
     last_point: RefCell<Option<([u64; 2], PatchJet)>>,
-    /// The last pieces of an edge whose feet were found, by the bits of
-    /// their ends, with the feet.
+    /// The last pieces of an edge whose feet were found, by their curve
+    /// and the bits of their ends, with the feet.
     recent_feet: RefCell<Vec<RememberedFeet>>,
+    /// The parts of the edge whose feet near a fitted curve are proved
+    /// ([`SplineField::part`]), by their curve and the bits of their ends:
+    /// the angle proves them, the curvature takes them again.
+    parts: RefCell<HashMap<PartKey, Rc<PartFeet>>>,
 }
 
-/// A piece of an edge, by the bits of its ends, and its feet if found.
-type RememberedFeet = ([u64; 2], Option<Vec<[f64; 2]>>);
+/// A part of an edge: its curve (by address: the edge's curves outlive its
+/// fields' use) and the bits of its parameter interval's ends.
+type PartKey = (usize, [u64; 2]);
+
+/// A piece of an edge, by its curve and the bits of its ends, and its
+/// feet if found.
+type RememberedFeet = (PartKey, Option<Vec<[f64; 2]>>);
+
+/// The key of part `t` of `curve`.
+fn part_key(curve: &ICurve, t: Interval) -> PartKey {
+    (
+        std::ptr::from_ref(curve) as usize,
+        [t.lo.to_bits(), t.hi.to_bits()],
+    )
+}
 
 /// Are two rows of homogeneous control points one border curve: `b_j =
 /// λ a_j` for one `λ ≠ 0` (proportional rows give the same rational
@@ -514,6 +532,7 @@ impl<'a> SplineField<'a> {
             recent: RefCell::new(Vec::new()),
             last_point: RefCell::new(None),
             recent_feet: RefCell::new(Vec::new()),
+            parts: RefCell::new(HashMap::new()),
         }
     }
 
@@ -653,51 +672,53 @@ impl<'a> SplineField<'a> {
     /// cubic `p` ([`super::normal_path::patch_normal`]), and how far, in
     /// radians, it may turn from there to the normal at the foot points.
     ///
-    /// The feet lie in the tube of [`SplineField::near`]: each within
-    /// `e_u`, `e_v` of `p` in the parameters, proved by Krawczyk's
-    /// operator from the foot-point system's residual along `p`
-    /// ([`super::tube`]). Along the segment from `p(t)` to the foot, inside
-    /// the tube's box `Q`, the unit normal turns at most
+    /// The feet lie in each of the part's proved boxes around `p`
+    /// ([`SplineField::part`]): within `e_u`, `e_v` of `p` in the
+    /// parameters. Along the segment from `p(t)` to the foot, inside a
+    /// box `Q`, the unit normal turns at most
     /// `sup_Q |N_u| e_u + sup_Q |N_v| e_v` radians (the length of its path
-    /// on the unit sphere): the slack. `None` when not proved.
+    /// on the unit sphere); the slack is the least of these bounds over
+    /// the ways the feet are proved (each one holds). `None` when not
+    /// proved.
     pub fn normal_over(&self, curve: &ICurve, t: Interval) -> Option<NormalPath> {
-        let (fit, [s, su, sv]) = self.composed(curve, t)?;
-        let near = self.near(&fit, curve, t, [&s, &su, &sv])?;
-        let mut slack = 0.0_f64;
-        for (jet, radius, length) in &near.jets {
-            slack = slack.max(turn(jet, *radius, *length)?);
-        }
-        let normal = patch_normal(&s, &su, &sv);
+        let part = self.part(curve, t)?;
+        let slack = part.nears.iter().filter_map(|n| n.slack).reduce(f64::min)?;
+        let [s, su, sv] = &part.composed;
+        let normal = patch_normal(s, su, sv);
         Some(NormalPath { normal, slack })
-    }
-
-    /// The fitted cubic `p` over part `t` ([`SplineField::fit_over`]) and
-    /// `H`, `H_u`, `H_v` of its piece composed with it (scaled forms),
-    /// charged as three compositions.
-    fn composed(&self, curve: &ICurve, t: Interval) -> Option<(Fit, [Vec<Scaled>; 3])> {
-        let fit = self.fit_over(curve, t)?;
-        self.charge_compositions(fit.cell, 3)?;
-        let nets = self.surface.piece(fit.cell).ok()?.first_order_nets();
-        let composed = nets.map(|n| compose(&n, &fit.u, &fit.v));
-        Some((fit, composed))
     }
 
     /// The face's normal curvature across the edge over `t`, a part of an
     /// edge between [`SplineField::cuts`], relative to the surface's own
     /// normal `S_u × S_v`: at the foot points of every `C(t)`, and at the
     /// foot of `C(t_m)`, `t_m` the part's `f64` midpoint. The feet are
-    /// those of [`SplineField::normal_over`], in the tube of
-    /// [`SplineField::near`], within `e_u`, `e_v` of the fitted `p`: over
-    /// the part, the curvature is enclosed on the tube's boxes' jets in the
+    /// those of [`SplineField::normal_over`], in the boxes of
+    /// [`SplineField::part`], within `e_u`, `e_v` of the fitted `p`: over
+    /// the part, the curvature is enclosed on the boxes' jets in the
     /// direction `n × C'(t)`; at `t_m`, on the jet of the box
-    /// `p(s_m) ± e` (`s_m` the midpoint's parameter on the part). Like the
-    /// normal path, it needs no foot proved by Krawczyk's operator at a
-    /// single box of points, so it holds
-    /// where the feet fall a rounding error past the face's border.
-    /// `None` when not proved.
+    /// `p(s_m) ± e` (`s_m` the midpoint's parameter on the part); where the
+    /// feet are proved two ways, the intersection of the two enclosures
+    /// (each holds). Like the normal path, it needs no foot proved by
+    /// Krawczyk's operator at a single box of points, so it holds where
+    /// the feet fall a rounding error past the face's border. `None` when
+    /// not proved.
     pub fn curvature_over(&self, curve: &ICurve, t: Interval) -> Option<CurvaturePath> {
-        let (fit, [s, su, sv]) = self.composed(curve, t)?;
-        let near = self.near(&fit, curve, t, [&s, &su, &sv])?;
+        let part = self.part(curve, t)?;
+        part.nears
+            .iter()
+            .filter_map(|near| self.curvature_near(&part.fit, near, curve, t))
+            .reduce(CurvaturePath::meet)
+    }
+
+    /// [`SplineField::curvature_over`] on the boxes of one way of proving
+    /// the feet.
+    fn curvature_near(
+        &self,
+        fit: &Fit,
+        near: &Near,
+        curve: &ICurve,
+        t: Interval,
+    ) -> Option<CurvaturePath> {
         let one = Interval::point(1.0);
         let along = curve.jet(t).ok()?.dx;
         let mut over: Option<Interval> = None;
@@ -723,73 +744,158 @@ impl<'a> SplineField<'a> {
         Some(CurvaturePath { over: over?, mid })
     }
 
-    /// The tube that holds the feet of the curve's points over part `t`
-    /// around its fitted curve `p` ([`super::tube`]), from `H`, `H_u`,
-    /// `H_v` composed with `p` (`h`): the residual's bounds `R` turned
-    /// into the surface's parameters (`÷ (b − a)`), and boxes around the
-    /// hulls of `p`'s control points, halving `p` where a box does not
-    /// prove the tube ([`SplineField::tube_boxes`]), the first radii
-    /// `e = 2|Y₀| R` (`Y₀` the inverse of the `f64` Jacobian at the middle
-    /// of `p`'s hull); where that is not proved, the boxes of
-    /// [`SplineField::near_by_gap`]. `None` when neither is proved.
-    fn near(&self, fit: &Fit, curve: &ICurve, t: Interval, h: [&[Scaled]; 3]) -> Option<Near> {
-        self.tube_near(fit, curve, t, h).or_else(|| {
-            let gap = distance_bound(&curve_over(curve, t), h[0])?;
-            self.near_by_gap(fit, gap)
-        })
+    /// The fitted cubic `p` over part `t` of `curve`
+    /// ([`SplineField::fit_over`]), `H`, `H_u`, `H_v` of its piece composed
+    /// with it (scaled forms, charged as three compositions) and the boxes
+    /// proved to hold the feet near it ([`SplineField::nears`]); remembered
+    /// when proved, so that the curvature takes again what the angle
+    /// proved. `None` when not proved.
+    fn part(&self, curve: &ICurve, t: Interval) -> Option<Rc<PartFeet>> {
+        let key = part_key(curve, t);
+        if let Some(p) = self.parts.borrow().get(&key) {
+            return Some(p.clone());
+        }
+        let fit = self.fit_over(curve, t)?;
+        self.charge_compositions(fit.cell, 3)?;
+        let nets = self.surface.piece(fit.cell).ok()?.first_order_nets();
+        let composed = nets.map(|n| compose(&n, &fit.u, &fit.v));
+        let nears = self.nears(&fit, curve, t, &composed);
+        if nears.is_empty() {
+            return None;
+        }
+        let part = Rc::new(PartFeet {
+            fit,
+            composed,
+            nears,
+        });
+        self.parts.borrow_mut().insert(key, part.clone());
+        Some(part)
     }
 
-    /// The tube of [`SplineField::near`], `None` when not proved.
-    fn tube_near(&self, fit: &Fit, curve: &ICurve, t: Interval, h: [&[Scaled]; 3]) -> Option<Near> {
-        let local = tube::residual(&curve_over(curve, t), h[0], h[1], h[2])?;
+    /// The boxes that hold the feet of the curve's points over part `t`
+    /// near its fitted curve `p`, from `H`, `H_u`, `H_v` composed with `p`
+    /// (`h`), proved one of two ways: from the gap bound `g` of
+    /// `|C − S∘p|` ([`SplineField::near_by_gap`]: within `2g/σ` of `p`),
+    /// or by the tube of the foot-point system's residual along `p`
+    /// ([`SplineField::tube_near`]). The way whose radii are estimated the
+    /// smaller is tried first (`2g/σ̃`, `σ̃` the `f64` stretch at the middle
+    /// of `p`'s hull, against the tube's first radii `2|Y₀| R` times `5/8`,
+    /// the `1.25 |Y| R` it proves where `Y J ≈ I`): where the edge is
+    /// really off the face the tube is the tighter, where it lies on the
+    /// face up to rounding the gap's radius often is. The other is tried
+    /// only where the first is not proved or its normal turn is not: each
+    /// costs jets that the measure's work cap then lacks (until
+    /// 2026-11-28 the tube was tried first everywhere, the gap after it:
+    /// 33 edges of `tail_section_asm.stp` decided before the tube were
+    /// undecided after it).
+    fn nears(&self, fit: &Fit, curve: &ICurve, t: Interval, h: &[Vec<Scaled>; 3]) -> Vec<Near> {
+        let gap = distance_bound(&curve_over(curve, t), &h[0]);
+        let centre = self.place(fit.cell, [&fit.u, &fit.v], [0.0; 2]);
+        let stretch = self
+            .approximate_jet(centre[0].mid(), centre[1].mid())
+            .ok()
+            .and_then(|j| least_stretch(&j));
+        let start = self.tube_start(fit, curve, t, h);
+        let estimates = [
+            gap.zip(stretch).map(|(g, s)| 2.0 * g / s),
+            start.map(|s| 0.625 * s.first[0].max(s.first[1])),
+        ];
+        let by_gap = || self.near_by_gap(fit, gap?, stretch?);
+        let tube = || self.tube_near(fit, curve, t, start?);
+        let tube_first = match estimates {
+            [Some(g), Some(e)] => e < g,
+            [None, Some(_)] => true,
+            _ => false,
+        };
+        let ways: [&dyn Fn() -> Option<Near>; 2] = if tube_first {
+            [&tube, &by_gap]
+        } else {
+            [&by_gap, &tube]
+        };
+        let mut out = Vec::new();
+        for way in ways {
+            if let Some(near) = way() {
+                let turns = near.slack.is_some();
+                out.push(near);
+                if turns {
+                    break;
+                }
+            }
+        }
+        out
+    }
+
+    /// What the tube of [`SplineField::nears`] starts from
+    /// ([`super::tube`]): the residual's bounds `R` turned into the
+    /// surface's parameters (`÷ (b − a)`) and the first radii
+    /// `e = 2|Y₀| R` (`Y₀` the inverse of the `f64` Jacobian at the middle
+    /// of `p`'s hull). `None` where the residual is not bounded.
+    fn tube_start(
+        &self,
+        fit: &Fit,
+        curve: &ICurve,
+        t: Interval,
+        h: &[Vec<Scaled>; 3],
+    ) -> Option<TubeStart> {
+        let local = tube::residual(&curve_over(curve, t), &h[0], &h[1], &h[2])?;
         let r = [0, 1].map(|k| {
             let (_, span) = self.span(fit.cell, k);
             Interval::point(local[k]).div(&span).map(|x| x.hi)
         });
-        let r = [r[0]?, r[1]?];
+        let residual = [r[0]?, r[1]?];
         let centre = self.place(fit.cell, [&fit.u, &fit.v], [0.0; 2]);
         let at = self
             .approximate_jet(centre[0].mid(), centre[1].mid())
             .ok()?;
         let (_, j) = system(&at, &curve.jet(Interval::point(t.mid())).ok()?.x);
         let y = mid_inverse(&j)?;
-        let first = [0, 1].map(|i| 2.0 * (y[i][0].abs() * r[0] + y[i][1].abs() * r[1]));
+        let first =
+            [0, 1].map(|i| 2.0 * (y[i][0].abs() * residual[0] + y[i][1].abs() * residual[1]));
+        Some(TubeStart { residual, first })
+    }
+
+    /// The tube of [`SplineField::nears`] from `start`: boxes around the
+    /// hulls of `p`'s control points, halving `p` where a box does not
+    /// prove the tube ([`SplineField::tube_boxes`]). `None` when not
+    /// proved.
+    fn tube_near(&self, fit: &Fit, curve: &ICurve, t: Interval, start: TubeStart) -> Option<Near> {
         let domain = self.domain();
         let tube = Tube {
             curve,
             t,
-            residual: r,
+            residual: start.residual,
             floor: [0, 1].map(|k| 1e-15 * (domain[k][1] - domain[k][0])),
             place: &|c, radius| self.place(fit.cell, c, radius),
         };
         let mut jets = Vec::new();
         let whole = Interval { lo: 0.0, hi: 1.0 };
-        self.tube_boxes(&tube, [&fit.u, &fit.v], whole, first, HALVINGS, &mut jets)?;
+        self.tube_boxes(
+            &tube,
+            [&fit.u, &fit.v],
+            whole,
+            start.first,
+            HALVINGS,
+            &mut jets,
+        )?;
         let radius = jets.iter().fold([0.0_f64; 2], |m, (_, e, _)| {
             [m[0].max(e[0]), m[1].max(e[1])]
         });
-        Some(Near { jets, radius })
+        Some(Near::new(jets, radius))
     }
 
-    /// [`SplineField::near`] where the tube is not proved: boxes that hold
+    /// The first way of [`SplineField::nears`]: boxes that hold
     /// the feet of the curve's points over a part whose fitted curve is `p`
     /// and gap bound `gap` (the bound of `|C − S∘p|`): the nearest point
     /// `S(q)` to `C(t)` within a box `Q` around `p` is no farther than
     /// `S(p(t))`, so `|S(q) − S(p)| ≤ 2g` and `|q − p| ≤ ε = 2g/σ` (mean
     /// value theorem) where every `(S_u S_v)` over `Q` stretches by at least
     /// `σ`; within `Q`'s margin, `q` is a foot point. Boxes around the hulls of `p`'s
-    /// control points widened by a margin of `8 g / σ̃` (`σ̃` estimated in
-    /// `f64` at the centre: the margin holds `ε = 2g/σ` while `σ ≥ σ̃/4`),
-    /// halving `p` where a box does not prove that much
+    /// control points widened by a margin of `8 g / σ̃` (`σ̃` the stretch
+    /// `estimate`, in `f64` at the centre: the margin holds `ε = 2g/σ` while
+    /// `σ ≥ σ̃/4`), halving `p` where a box does not prove that much
     /// ([`SplineField::boxes_near`]).
-    fn near_by_gap(&self, fit: &Fit, gap: f64) -> Option<Near> {
+    fn near_by_gap(&self, fit: &Fit, gap: f64, estimate: f64) -> Option<Near> {
         let domain = self.domain();
-        let centre = self.place(fit.cell, [&fit.u, &fit.v], [0.0; 2]);
-        let estimate = least_stretch(
-            &self
-                .approximate_jet(centre[0].mid(), centre[1].mid())
-                .ok()?,
-        )?;
         let margin = [0, 1].map(|k| 8.0 * gap / estimate + 1e-12 * (domain[k][1] - domain[k][0]));
         let need = Interval::point(2.0)
             .mul(&Interval::point(gap))
@@ -808,10 +914,7 @@ impl<'a> SplineField<'a> {
             .div(&Interval::point(stretch))?
             .hi;
         let jets = jets.into_iter().map(|j| (j, [eps; 2], eps)).collect();
-        eps.is_finite().then_some(Near {
-            jets,
-            radius: [eps; 2],
-        })
+        eps.is_finite().then(|| Near::new(jets, [eps; 2]))
     }
 
     /// The box of parameters of piece `cell` around the hull of the
@@ -986,7 +1089,7 @@ impl<'a> SplineField<'a> {
     /// The last few are remembered (the gap and the angle ask for the
     /// same pieces).
     fn feet_along(&self, curve: &ICurve, t: Interval) -> Option<Vec<[f64; 2]>> {
-        let key = [t.lo.to_bits(), t.hi.to_bits()];
+        let key = part_key(curve, t);
         if let Some((_, f)) = self.recent_feet.borrow().iter().find(|(k, _)| *k == key) {
             return f.clone();
         }
@@ -1105,6 +1208,7 @@ fn spread(at: &PatchJet, p: &[Interval]) -> Option<[f64; 2]> {
 
 /// A cubic `p` in the local parameters of piece `cell`, by its Bernstein
 /// coefficients.
+#[derive(Clone, Debug)]
 struct Fit {
     cell: usize,
     u: Vec<f64>,
@@ -1133,8 +1237,33 @@ pub struct CurvaturePath {
     pub mid: Interval,
 }
 
-/// The boxes that hold the feet near a fitted curve
-/// ([`SplineField::near`]).
+impl CurvaturePath {
+    /// The intersection of two enclosures of one curvature path (each
+    /// holds, so their common part does); the hull where rounding left
+    /// them apart.
+    fn meet(self, o: CurvaturePath) -> CurvaturePath {
+        let both = |a: Interval, b: Interval| a.intersect(&b).unwrap_or_else(|| a.hull(&b));
+        CurvaturePath {
+            over: both(self.over, o.over),
+            mid: both(self.mid, o.mid),
+        }
+    }
+}
+
+/// A part of an edge with its fitted curve, what is composed with it and
+/// the boxes that hold its feet ([`SplineField::part`]).
+#[derive(Debug)]
+struct PartFeet {
+    fit: Fit,
+    /// `H`, `H_u`, `H_v` composed with the fitted curve (scaled forms).
+    composed: [Vec<Scaled>; 3],
+    /// The ways the feet are proved near the fitted curve (one or two).
+    nears: Vec<Near>,
+}
+
+/// The boxes that hold the feet near a fitted curve, proved one way
+/// ([`SplineField::nears`]).
+#[derive(Debug)]
 struct Near {
     /// The surface's jets over boxes covering the tube around the fitted
     /// curve, each with the radii `e_u`, `e_v` it proves and a bound of
@@ -1144,6 +1273,36 @@ struct Near {
     jets: Vec<(PatchJet, [f64; 2], f64)>,
     /// The greatest radii over the boxes.
     radius: [f64; 2],
+    /// At most the angle the unit normal turns from the fitted curve to
+    /// the feet: the greatest [`turn`] over the boxes; `None` where a
+    /// normal is not proved.
+    slack: Option<f64>,
+}
+
+impl Near {
+    /// The boxes `jets` with their radii, the greatest `radius`, and the
+    /// slack they prove.
+    fn new(jets: Vec<(PatchJet, [f64; 2], f64)>, radius: [f64; 2]) -> Near {
+        let slack = jets
+            .iter()
+            .try_fold(0.0_f64, |most, (jet, radius, length)| {
+                Some(most.max(turn(jet, *radius, *length)?))
+            });
+        Near {
+            jets,
+            radius,
+            slack,
+        }
+    }
+}
+
+/// Where the tube of [`SplineField::tube_near`] starts.
+#[derive(Clone, Copy, Debug)]
+struct TubeStart {
+    /// The residual's bounds, in the surface's parameters.
+    residual: [f64; 2],
+    /// The first radii tried.
+    first: [f64; 2],
 }
 
 /// How many boxes [`SplineField::tube_boxes`] tries for one part of a

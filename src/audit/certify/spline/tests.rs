@@ -332,6 +332,71 @@ fn a_normal_path_along_a_b_spline_cylinder_is_radial() {
     }
 }
 
+/// The line `((1 + d)·3/5, (1 + d)·4/5, z)`, `0 ≤ z ≤ 2`: radially `d`
+/// off the quarter cylinder at `u = 1/2` (`((1 − u²), 2u)/(1 + u²)`).
+fn line_off_the_middle_by(d: Q) -> ICurve {
+    let r = q(1, 1) + d;
+    let (x, y) = (&r * &q(3, 5), &r * &q(4, 5));
+    let line = RationalCurve::polynomial(vec![
+        vec![x.clone(), y.clone(), q(0, 1)],
+        vec![x, y, q(2, 1)],
+    ])
+    .unwrap();
+    ICurve::new(&line).unwrap()
+}
+
+/// A field remembers the feet of a piece of an edge by its curve as well
+/// as its parameters: two curves of one edge, both over `[0, 1]`, each get
+/// their own. The line at `u = 1/2`, `10⁻⁷` off the quarter cylinder, is
+/// bounded within `10⁻⁹` of `10⁻⁷` after the line along its border was
+/// (until 2026-11-28 the second took the first's feet, keyed by the
+/// parameters alone, and its bound was `|(3/5, 4/5) − (1, 0)|`, 0.89).
+#[test]
+fn feet_are_remembered_per_curve() {
+    let c = quarter_cylinder();
+    let cp = pieces(&c);
+    let surface = SplineSurface::new(&c, &cp).unwrap();
+    let field = SplineField::new(&surface);
+    let whole = Interval { lo: 0.0, hi: 1.0 };
+    let (border, middle) = (
+        line_off_the_border(),
+        line_off_the_middle_by(q(1, 10_000_000)),
+    );
+    assert!(field.gap_over(&border, whole).is_some());
+    let b = field.gap_over(&middle, whole).unwrap();
+    assert!((1e-7..1e-7 + 1e-9).contains(&b), "{b}");
+}
+
+/// The curvature across an edge takes again the feet the normal path
+/// proved on the same part: after `normal_over`, `curvature_over` charges
+/// one jet (at the part's midpoint), far less than on a fresh field, where
+/// it composes the piece with the fitted curve and proves the boxes.
+#[test]
+fn the_curvature_takes_the_feet_the_angle_proved() {
+    let c = quarter_cylinder();
+    let cp = pieces(&c);
+    let surface = SplineSurface::new(&c, &cp).unwrap();
+    let curve = line_off_the_middle_by(q(1, 1000));
+    let part = Interval { lo: 0.0, hi: 0.5 };
+    let charged = |field: &SplineField<'_>| {
+        limits::with_limits(limits::Limits::DEFAULT, || {
+            assert!(field.curvature_over(&curve, part).is_some());
+            limits::charged()
+        })
+    };
+    let fresh = charged(&SplineField::new(&surface));
+    let field = SplineField::new(&surface);
+    assert!(field.normal_over(&curve, part).is_some());
+    let again = charged(&field);
+    // One bi-quadratic piece's jet: 9 control points.
+    assert_eq!(
+        again,
+        JET_WORK * 9,
+        "{again} after the angle, {fresh} fresh"
+    );
+    assert!(fresh > 3 * again, "{fresh}");
+}
+
 /// Points a little beyond the plane's border `u = 0` (`y > 0`): their feet
 /// on the plane's continuation are refused, since the face's nearest point
 /// is on its border, not there; a foot beyond it by a rounding error
