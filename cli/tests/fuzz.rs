@@ -305,13 +305,13 @@ fn run_corpus_case(path: &std::path::Path) -> Result<(), String> {
     // with --pretty.
     let squeeze = |s: &str| s.split_whitespace().collect::<String>();
     for (field, got) in [("stderr", &out.stderr), ("stdout", &out.stdout)] {
-        if let Some(needle) = case[field].as_str() {
-            if !squeeze(got).contains(&squeeze(needle)) {
-                return Err(format!(
-                    "{name}: {field} lacks {needle:?}: {}",
-                    one_line(got)
-                ));
-            }
+        if let Some(needle) = case[field].as_str()
+            && !squeeze(got).contains(&squeeze(needle))
+        {
+            return Err(format!(
+                "{name}: {field} lacks {needle:?}: {}",
+                one_line(got)
+            ));
         }
     }
     Ok(())

@@ -532,7 +532,7 @@ fn compact_form() -> Claim {
 /// i.e. `(−1)^m c′`. Returned as `c[l][i]`.
 fn paper_c(m: usize, at0: &Poly, at1: &Poly) -> Vec<Vec<Poly>> {
     let cp = quadratic_coefficients(m, at0, at1);
-    let sign = if m % 2 == 0 { one() } else { -one() };
+    let sign = if m.is_multiple_of(2) { one() } else { -one() };
     (0..=m)
         .map(|l| (0..=m).map(|i| cp[i][l].clone() * &sign).collect())
         .collect()

@@ -52,10 +52,10 @@ impl Int {
 impl Int {
     /// The big integer `n` as an `Int`, copying it only when it is big.
     pub fn from_ref(n: &BigInt) -> Int {
-        if n.bits() <= 127 {
-            if let Some(small) = n.to_i128() {
-                return Int::Small(small);
-            }
+        if n.bits() <= 127
+            && let Some(small) = n.to_i128()
+        {
+            return Int::Small(small);
         }
         Int::Big(n.clone())
     }
@@ -87,10 +87,10 @@ impl Int {
 
     /// `self / d` for a divisor `d ≠ 0` of `self`.
     pub fn div_exact(&self, d: &Int) -> Int {
-        if let (Int::Small(x), Int::Small(y)) = (self, d) {
-            if let Some(q) = x.checked_div(*y) {
-                return Int::Small(q);
-            }
+        if let (Int::Small(x), Int::Small(y)) = (self, d)
+            && let Some(q) = x.checked_div(*y)
+        {
+            return Int::Small(q);
         }
         Int::from_bigint(self.to_bigint() / d.to_bigint())
     }
@@ -198,10 +198,10 @@ impl<'a> Mul<&'a Int> for Int {
                 (Int::Big(a), Int::Big(b)) => Int::Big(a * b),
             }
         }
-        if let (Int::Small(a), Int::Small(b)) = (&self, rhs) {
-            if let Some(r) = a.checked_mul(*b) {
-                return Int::Small(r);
-            }
+        if let (Int::Small(a), Int::Small(b)) = (&self, rhs)
+            && let Some(r) = a.checked_mul(*b)
+        {
+            return Int::Small(r);
         }
         wide(self, rhs)
     }

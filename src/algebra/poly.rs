@@ -178,10 +178,10 @@ impl Poly {
         // about (#self − 1)/e of repeated multiplication (both counted in
         // term products), so up to 9/8 of it at #self = e + 2; coinciding
         // products shrink #self^e and favour it (p^8 of 10 terms: 0.6×).
-        if self.terms.len() <= e as usize + 2 {
-            if let Some(terms) = power::power(&self.terms, e) {
-                return Poly { terms, den };
-            }
+        if self.terms.len() <= e as usize + 2
+            && let Some(terms) = power::power(&self.terms, e)
+        {
+            return Poly { terms, den };
         }
         let Some(packing) = Packing::for_product(&[&self.terms], u64::from(e)) else {
             return crate::algebra::scalar::pow(self, e);

@@ -310,10 +310,12 @@ impl Ordered for BigRational {
 /// Nearest `f64` to a rational, correct even when numerator and denominator
 /// overflow `f64` on their own (scales by powers of two first).
 pub fn rational_to_f64(q: &BigRational) -> f64 {
-    if let (Some(n), Some(d)) = (q.numer().to_f64(), q.denom().to_f64()) {
-        if n.is_finite() && d.is_finite() && d != 0.0 {
-            return n / d;
-        }
+    if let (Some(n), Some(d)) = (q.numer().to_f64(), q.denom().to_f64())
+        && n.is_finite()
+        && d.is_finite()
+        && d != 0.0
+    {
+        return n / d;
     }
     let nb = q.numer().bits() as i64;
     let db = q.denom().bits() as i64;
@@ -437,7 +439,7 @@ impl Roots for BigRational {
 impl Roots for f64 {
     fn nth_root(&self, n: u32) -> Option<Self> {
         match (n, *self < 0.0) {
-            (0, _) | (_, true) if n % 2 == 0 => None,
+            (0, _) | (_, true) if n.is_multiple_of(2) => None,
             (_, true) => Some(-(-self).powf(1.0 / f64::from(n))),
             _ => Some(self.powf(1.0 / f64::from(n))),
         }

@@ -112,7 +112,7 @@ pub fn swept_grid(f: &Face) -> Option<Result<SweptGrid, String>> {
 /// The rows of the grid (u) and its columns (v), chained.
 fn grid(patches: Vec<RectPatch<Q>>, revolution: bool) -> Option<SweptGrid> {
     let rows = if revolution { 4 } else { patches.len() };
-    if rows == 0 || patches.len() % rows != 0 {
+    if rows == 0 || !patches.len().is_multiple_of(rows) {
         return None;
     }
     let columns = patches.len() / rows;

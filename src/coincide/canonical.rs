@@ -309,10 +309,10 @@ fn text_head(curve: bool, (m, n): (usize, usize)) -> String {
 /// As [`canonical_key`].
 pub fn canonical_text(p: &Patch<BigRational>) -> Result<String, Error> {
     let (net, curve) = net_of(p)?;
-    if certified_minimal(&net) {
-        if let Some(text) = small::key_text(&net, curve) {
-            return Ok(text);
-        }
+    if certified_minimal(&net)
+        && let Some(text) = small::key_text(&net, curve)
+    {
+        return Ok(text);
     }
     canonical_key(p).map(|k| k.text())
 }

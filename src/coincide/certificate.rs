@@ -248,7 +248,7 @@ fn top_difference(b: impl Iterator<Item = Fp>, binom: &[Fp]) -> Fp {
     b.zip(binom)
         .enumerate()
         .fold(Fp::zero(), |acc, (i, (x, &c))| {
-            if (k - i) % 2 == 0 {
+            if (k - i).is_multiple_of(2) {
                 acc + c * x
             } else {
                 acc - c * x

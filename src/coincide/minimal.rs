@@ -341,10 +341,10 @@ pub(crate) fn minimal_net<T: Reducible>(net: &Net<T>) -> Minimal<Net<T>, T> {
     let fast = T::degree_lower_bound(net)
         .filter(|&d| d != shape)
         .and_then(|d| undo_elevation(net, d));
-    if let Some(lowered) = &fast {
-        if T::certified_minimal(lowered) {
-            return certified(lowered.clone());
-        }
+    if let Some(lowered) = &fast
+        && T::certified_minimal(lowered)
+    {
+        return certified(lowered.clone());
     }
     let net = fast.as_ref().unwrap_or(net);
     // An elevated net without a common factor: undo the elevation (exact

@@ -243,10 +243,10 @@ impl<'a> Kernels<'a> {
         let blocked = self.blocked.get_or_insert_with(|| {
             BlockedCurve::new(rational, den).map(|b| (b, vec![BigInt::zero(); rational.stride()]))
         });
-        if let Some((curve, point)) = blocked {
-            if curve.eval(&hom[0], &hom[1], point) {
-                return project(point, out);
-            }
+        if let Some((curve, point)) = blocked
+            && curve.eval(&hom[0], &hom[1], point)
+        {
+            return project(point, out);
         }
         self.big
             .get_or_insert_with(|| Lane::new(net))

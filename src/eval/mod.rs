@@ -538,7 +538,7 @@ impl<T: Ring> Net<T> {
 ///
 /// [`Error::Shape`] if the lengths do not match.
 fn check_batch(params: usize, k: usize, per_point: usize, out: usize) -> Result<(), Error> {
-    if params % k != 0 || out != params / k * per_point {
+    if !params.is_multiple_of(k) || out != params / k * per_point {
         return Err(Error::Shape(format!(
             "a batch of {params} parameter values ({k} per point) needs an output of {} values, not {out}",
             params / k * per_point
@@ -717,7 +717,7 @@ impl<T: Field> Evaluator<T> {
 /// each), `dim` coordinates per point: the batch form of `eval`.
 pub(crate) fn eval_points<T: Field>(net: Net<T>, params: &[T]) -> Result<Vec<T>, Error> {
     let k = net.shape.params();
-    if params.len() % k != 0 {
+    if !params.len().is_multiple_of(k) {
         return Err(Error::Shape(format!(
             "{} parameter values do not make whole points of {k} parameters",
             params.len()

@@ -344,10 +344,10 @@ impl IntersectScalar for BigRational {
                 _ => self_intersect(a).map(Found::Exact),
             };
         };
-        if options.filter != Filter::Off {
-            if let Some(found) = certify_crossings(a, b)? {
-                return Ok(Found::Certified(found));
-            }
+        if options.filter != Filter::Off
+            && let Some(found) = certify_crossings(a, b)?
+        {
+            return Ok(Found::Certified(found));
         }
         match options.filter {
             Filter::Only => Ok(Found::Undecided),

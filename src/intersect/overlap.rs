@@ -179,7 +179,7 @@ pub(crate) fn find_mobius(a: &PowerCurve, b: &PowerCurve) -> Option<Mobius> {
         )
     };
     let sign = |i: usize| {
-        if i % 2 == 0 {
+        if i.is_multiple_of(2) {
             BigRational::one()
         } else {
             -BigRational::one()

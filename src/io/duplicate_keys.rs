@@ -29,14 +29,14 @@ pub(crate) fn check_no_duplicate_keys(text: &str) -> Result<(), Error> {
             }
             b'"' => {
                 let end = string_end(bytes, i);
-                if next_is_colon(bytes, end) {
-                    if let Some(Some(keys)) = open.last_mut() {
-                        let key: String = serde_json::from_str(&text[i..end]).unwrap_or_default();
-                        if !keys.insert(key.clone()) {
-                            return Err(Error::Format(format!(
-                                "the key {key:?} appears twice in one object"
-                            )));
-                        }
+                if next_is_colon(bytes, end)
+                    && let Some(Some(keys)) = open.last_mut()
+                {
+                    let key: String = serde_json::from_str(&text[i..end]).unwrap_or_default();
+                    if !keys.insert(key.clone()) {
+                        return Err(Error::Format(format!(
+                            "the key {key:?} appears twice in one object"
+                        )));
                     }
                 }
                 i = end;

@@ -116,11 +116,11 @@ fn points_of_degree<'a>(
     }
     let n = pts.len() - 1;
     check_degree(n)?;
-    if let Some(d) = declared_degree(obj) {
-        if d.as_u64() != Some(n as u64) {
-            let want = d.as_u64().map_or("?".into(), |d| (d + 1).to_string());
-            return Err(Error::Shape(mismatch(d, want, pts.len())));
-        }
+    if let Some(d) = declared_degree(obj)
+        && d.as_u64() != Some(n as u64)
+    {
+        let want = d.as_u64().map_or("?".into(), |d| (d + 1).to_string());
+        return Err(Error::Shape(mismatch(d, want, pts.len())));
     }
     Ok((pts, n))
 }
@@ -177,13 +177,13 @@ fn read_grid<T: ExactNumber>(
         Some(w) => Some(array(w, "weights")?),
         None => None,
     };
-    if let Some(w) = weights_json {
-        if w.len() != rows {
-            return Err(Error::Shape(format!(
-                "the weights should have {rows} rows, not {}",
-                w.len()
-            )));
-        }
+    if let Some(w) = weights_json
+        && w.len() != rows
+    {
+        return Err(Error::Shape(format!(
+            "the weights should have {rows} rows, not {}",
+            w.len()
+        )));
     }
     let mut points = Vec::with_capacity(rows);
     let mut weights = Vec::with_capacity(rows);
@@ -298,12 +298,12 @@ pub fn patch_from_value_as<T: ExactNumber>(v: &Value) -> Result<Patch<T>, Error>
         .get("kind")
         .and_then(Value::as_str)
         .ok_or_else(|| missing("kind"))?;
-    if let Some(key) = obj.keys().find(|k| !PATCH_FIELDS.contains(&k.as_str())) {
-        if matches!(kind, "curve" | "rect" | "tri") {
-            return Err(Error::Format(format!(
+    if let Some(key) = obj.keys().find(|k| !PATCH_FIELDS.contains(&k.as_str()))
+        && matches!(kind, "curve" | "rect" | "tri")
+    {
+        return Err(Error::Format(format!(
                 "unknown field {key:?} (a {kind} has only \"kind\", \"degree\", \"points\", \"weights\", \"origin\")"
             )));
-        }
     }
     match kind {
         "curve" => read_curve(obj).map(Patch::Curve),

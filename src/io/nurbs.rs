@@ -124,14 +124,14 @@ fn hom_list(
     weights: Option<&Vec<Value>>,
     label: &str,
 ) -> Result<Vec<HPoint<BigRational>>, Error> {
-    if let Some(w) = weights {
-        if w.len() != pts.len() {
-            return Err(Error::Shape(format!(
-                "{} control points{label} but {} weights",
-                pts.len(),
-                w.len()
-            )));
-        }
+    if let Some(w) = weights
+        && w.len() != pts.len()
+    {
+        return Err(Error::Shape(format!(
+            "{} control points{label} but {} weights",
+            pts.len(),
+            w.len()
+        )));
     }
     pts.iter()
         .enumerate()
@@ -178,14 +178,14 @@ fn ours_surface(obj: &Map<String, Value>) -> Result<NurbsSurface<BigRational>, E
         .get("weights")
         .map(|w| array(w, "weights"))
         .transpose()?;
-    if let Some(w) = wrows {
-        if w.len() != rows.len() {
-            return Err(Error::Shape(format!(
-                "{} rows of points but {} rows of weights",
-                rows.len(),
-                w.len()
-            )));
-        }
+    if let Some(w) = wrows
+        && w.len() != rows.len()
+    {
+        return Err(Error::Shape(format!(
+            "{} rows of points but {} rows of weights",
+            rows.len(),
+            w.len()
+        )));
     }
     let net = rows
         .iter()

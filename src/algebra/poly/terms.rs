@@ -209,11 +209,11 @@ fn merge(
 /// term if that has the same monomial, else push it (first dropping a last
 /// term that cancelled to zero).
 fn accumulate(out: &mut Terms, m: Monomial, c: Int) {
-    if let Some((last, acc)) = out.last_mut() {
-        if *last == m {
-            *acc = std::mem::replace(acc, Int::Small(0)) + &c;
-            return;
-        }
+    if let Some((last, acc)) = out.last_mut()
+        && *last == m
+    {
+        *acc = std::mem::replace(acc, Int::Small(0)) + &c;
+        return;
     }
     drop_zero_last(out);
     out.push((m, c));

@@ -764,14 +764,14 @@ impl RealAlgebraic {
     fn root_exact(&self, n: u32) -> Option<Self> {
         match self.signum() {
             0 => return Some(Self::zero()),
-            -1 if n % 2 == 0 => return None,
+            -1 if n.is_multiple_of(2) => return None,
             -1 => return (-self.clone()).root_exact(n).map(|r| -r),
             _ => {}
         }
-        if let Repr::Radical(s) = &self.0 {
-            if let Some(r) = s.monomial_root(n) {
-                return Some(Self::radical(r));
-            }
+        if let Repr::Radical(s) = &self.0
+            && let Some(r) = s.monomial_root(n)
+        {
+            return Some(Self::radical(r));
         }
         let enclose = |prec: u32| {
             let (lo, hi) = self.enclosure(prec * n);
@@ -781,10 +781,10 @@ impl RealAlgebraic {
                     + BigRational::new(1.into(), BigInt::one() << prec as usize),
             )
         };
-        if let Ok(x) = self.field_parts() {
-            if let Some(y) = x.root(n, enclose) {
-                return Some(Self::from_field(y.field, &y.a));
-            }
+        if let Ok(x) = self.field_parts()
+            && let Some(y) = x.root(n, enclose)
+        {
+            return Some(Self::from_field(y.field, &y.a));
         }
         let p = polys::compose_power(&self.defining_polynomial(), n);
         Some(Self::from_enclosures(&p, |prec| {
@@ -937,7 +937,7 @@ fn radical_key(b: &BigInt, n: u64) -> field::Key {
     let mut c = vec![BigRational::zero(); n as usize + 1];
     c[0] = -BigRational::from_integer(b.clone());
     c[n as usize] = BigRational::one();
-    (c, usize::from(n % 2 == 0))
+    (c, usize::from(n.is_multiple_of(2)))
 }
 
 /// `floor(x^{1/n} · 2^prec) / 2^prec` for `x ≥ 0` (0 for `x < 0`).

@@ -248,7 +248,10 @@ fn perfect_power_root(k: &BigInt) -> (BigInt, u32) {
 /// Trial division: is `n` prime (for the word-sized exponents and moduli of
 /// [`perfect_power_root`]).
 fn is_small_prime(n: u32) -> bool {
-    n >= 2 && (2..).take_while(|q| q * q <= n).all(|q| n % q != 0)
+    n >= 2
+        && (2..)
+            .take_while(|q| q * q <= n)
+            .all(|q| !n.is_multiple_of(q))
 }
 
 /// A necessary condition for `d > 0` to be a `p`-th power (`p` prime): for
@@ -537,7 +540,7 @@ impl RadicalSum {
     /// more than one term or the root is not real.
     pub(crate) fn monomial_root(&self, n: u32) -> Option<Self> {
         let (m, c) = self.single_term()?;
-        if c.is_negative() && n % 2 == 0 {
+        if c.is_negative() && n.is_multiple_of(2) {
             return None;
         }
         // |c|^{1/n} = (num · den^{n−1})^{1/n} / den.

@@ -448,8 +448,8 @@ fn root_word(n: u32, r: &BigInt) -> String {
     let bound = MAX_EXPONENT as u32;
     let outer = (2..=bound.min(n))
         .rev()
-        .find(|f| n % f == 0 && n / f <= bound)
-        .or_else(|| (2..=bound.min(n)).rev().find(|f| n % f == 0))
+        .find(|f| n.is_multiple_of(*f) && n / f <= bound)
+        .or_else(|| (2..=bound.min(n)).rev().find(|f| n.is_multiple_of(*f)))
         .filter(|_| n > bound);
     let (index, inner) = match outer {
         Some(f) => (f, root_word(n / f, r)),

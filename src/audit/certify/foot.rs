@@ -130,10 +130,11 @@ pub fn foot(
             lo: x - r,
             hi: x + r,
         });
-        if let Ok(Some(k)) = krawczyk(patch, b, &cj.x) {
-            if b[0].interior_contains(&k[0]) && b[1].interior_contains(&k[1]) {
-                return finish(patch, &cj, k);
-            }
+        if let Ok(Some(k)) = krawczyk(patch, b, &cj.x)
+            && b[0].interior_contains(&k[0])
+            && b[1].interior_contains(&k[1])
+        {
+            return finish(patch, &cj, k);
         }
         r *= 4.0;
     }

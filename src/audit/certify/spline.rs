@@ -241,10 +241,13 @@ impl Axis {
             if lo > hi {
                 continue;
             }
-            if let Some(&(prev, ..)) = out.last() {
-                if prev + 1 == i && !self.smooth[prev] && x.lo < a.lo && x.hi > a.hi {
-                    return None;
-                }
+            if let Some(&(prev, ..)) = out.last()
+                && prev + 1 == i
+                && !self.smooth[prev]
+                && x.lo < a.lo
+                && x.hi > a.hi
+            {
+                return None;
             }
             let span = b.sub(&a);
             let local = Interval { lo, hi }.sub(&a).div(&span)?;
@@ -581,13 +584,14 @@ impl<'a> SplineField<'a> {
             if !self.surface.few_pieces(b) {
                 return None;
             }
-            if let Ok(Some(k)) = krawczyk(self, b, p) {
-                if b[0].interior_contains(&k[0]) && b[1].interior_contains(&k[1]) {
-                    if !(0..2).all(|a| self.surface.axes[a].holds(k[a])) {
-                        return None;
-                    }
-                    return self.finish(p, b);
+            if let Ok(Some(k)) = krawczyk(self, b, p)
+                && b[0].interior_contains(&k[0])
+                && b[1].interior_contains(&k[1])
+            {
+                if !(0..2).all(|a| self.surface.axes[a].holds(k[a])) {
+                    return None;
                 }
+                return self.finish(p, b);
             }
             r = r.map(|x| 2.0 * x);
         }
@@ -1016,11 +1020,11 @@ impl<'a> SplineField<'a> {
         jets: &mut Vec<PatchJet>,
     ) -> Option<f64> {
         let q = place(c);
-        if let Ok(jet) = self.jet(q[0], q[1]) {
-            if let Some(stretch) = least_stretch(&jet).filter(|s| *s >= need) {
-                jets.push(jet);
-                return Some(stretch);
-            }
+        if let Ok(jet) = self.jet(q[0], q[1])
+            && let Some(stretch) = least_stretch(&jet).filter(|s| *s >= need)
+        {
+            jets.push(jet);
+            return Some(stretch);
         }
         if depth == 0 {
             return None;
@@ -1423,10 +1427,10 @@ impl Jets for SplineField<'_> {
     fn jet(&self, u: Interval, v: Interval) -> Result<PatchJet, Error> {
         let point =
             (u.width() == 0.0 && v.width() == 0.0).then(|| [u.lo.to_bits(), v.lo.to_bits()]);
-        if let (Some(key), Some((at, jet))) = (point, &*self.last_point.borrow()) {
-            if key == *at {
-                return Ok(jet.clone());
-            }
+        if let (Some(key), Some((at, jet))) = (point, &*self.last_point.borrow())
+            && key == *at
+        {
+            return Ok(jet.clone());
         }
         let jet = self.jet_uncached(u, v)?;
         if let Some(key) = point {

@@ -146,7 +146,7 @@ fn order_across(left: &Spanned, right: &Spanned) -> Option<Option<usize>> {
 fn difference<'a>(x: impl Fn(usize) -> &'a HPoint<Q>, i: usize) -> HPoint<Q> {
     (0..=i).fold(HPoint::zero(x(0).dim()), |acc, l| {
         let c: Q = binomial_scalar(i, l);
-        let signed = if (i - l) % 2 == 0 { c } else { -c };
+        let signed = if (i - l).is_multiple_of(2) { c } else { -c };
         acc.add(&x(l).scale(&signed))
     })
 }

@@ -356,15 +356,15 @@ impl Products {
         let mut reps: HashMap<u64, Vec<u64>> = HashMap::new();
         let mut usage = HashMap::new();
         for &id in order {
-            if let Some(c) = record(store, id, "CONTEXT_DEPENDENT_SHAPE_REPRESENTATION") {
-                if let (Ok(rel), Some(u)) = (
+            if let Some(c) = record(store, id, "CONTEXT_DEPENDENT_SHAPE_REPRESENTATION")
+                && let (Ok(rel), Some(u)) = (
                     reference(c.params.first(), "representation_relation"),
                     reference(c.params.get(1), "represented_product_relation")
                         .ok()
                         .and_then(|pds| definition(store, pds)),
-                ) {
-                    usage.insert(rel, u);
-                }
+                )
+            {
+                usage.insert(rel, u);
             }
             let Some(sdr) = record(store, id, "SHAPE_DEFINITION_REPRESENTATION") else {
                 continue;
