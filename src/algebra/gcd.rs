@@ -20,6 +20,7 @@
 use num_bigint::{BigInt, BigUint, Sign};
 use num_rational::BigRational;
 use num_traits::{One, ToPrimitive, Zero};
+use std::borrow::Cow;
 
 /// `gcd(a, b)` by Lehmer's algorithm (`gcd(0, 0) = 0`).
 ///
@@ -287,20 +288,61 @@ pub fn fraction(numer: BigInt, denom: BigInt) -> BigRational {
     }
 }
 
-/// `a · b` in lowest terms, reduced by [`gcd`] (num-rational's own
-/// product reduces by the binary gcd, quadratic on big operands).
+/// `a · b` in lowest terms (both in lowest terms, as every `BigRational`
+/// is), by Knuth's cross reduction: with `g₁ = gcd(n₁, d₂)` and
+/// `g₂ = gcd(n₂, d₁)`,
+///
+/// ```text
+/// (n₁/d₁)·(n₂/d₂) = ((n₁/g₁)(n₂/g₂)) / ((d₁/g₂)(d₂/g₁)),  already reduced,
+/// ```
+///
+/// two gcds of the factors' sizes instead of one of the product's (gcds
+/// cost the square of the size; one against a small or unit denominator is
+/// a single remainder, or nothing). num-rational's own product reduces
+/// the product by the binary gcd. Reference: D. E. Knuth, *The Art of
+/// Computer Programming*, vol. 2, 3rd ed., §4.5.1.
 ///
 /// ```
 /// use exact_bezier::algebra::gcd::product;
 /// use exact_bezier::BigRational;
 /// let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
 /// assert_eq!(product(&q(6, 35), &q(-14, 9)), q(-4, 15));
+/// assert_eq!(product(&q(0, 1), &q(-14, 9)), q(0, 1));
 /// ```
 pub fn product(a: &BigRational, b: &BigRational) -> BigRational {
-    fraction(a.numer() * b.numer(), a.denom() * b.denom())
+    if a.is_zero() || b.is_zero() {
+        return BigRational::zero();
+    }
+    let (n1, d2) = cancel(a.numer(), b.denom());
+    let (n2, d1) = cancel(b.numer(), a.denom());
+    BigRational::new_raw(&*n1 * &*n2, &*d1 * &*d2)
 }
 
-/// `a + b` in lowest terms, reduced by [`gcd`].
+/// `(n/g, d/g)` with `g = gcd(n, d)`, borrowed where `g = 1`.
+fn cancel<'a>(n: &'a BigInt, d: &'a BigInt) -> (Cow<'a, BigInt>, Cow<'a, BigInt>) {
+    let g = if d.is_one() {
+        BigUint::one()
+    } else {
+        gcd(n.magnitude(), d.magnitude())
+    };
+    if g.is_one() {
+        (Cow::Borrowed(n), Cow::Borrowed(d))
+    } else {
+        let g = BigInt::from(g);
+        (Cow::Owned(n / &g), Cow::Owned(d / &g))
+    }
+}
+
+/// `a + b` in lowest terms (both in lowest terms), by Knuth's method: with
+/// `d = gcd(d₁, d₂)`,
+///
+/// ```text
+/// t = n₁·(d₂/d) + n₂·(d₁/d),  e = gcd(t, d),  a + b = (t/e) / ((d₁/d)·(d₂/e)),
+/// ```
+///
+/// gcds of the denominators' size instead of one of the cross product's
+/// (for `d = 1` none more: the sum is already reduced). Reference: Knuth,
+/// *The Art of Computer Programming*, vol. 2, §4.5.1.
 ///
 /// ```
 /// use exact_bezier::algebra::gcd::sum;
@@ -308,15 +350,24 @@ pub fn product(a: &BigRational, b: &BigRational) -> BigRational {
 /// let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
 /// assert_eq!(sum(&q(1, 6), &q(3, 10)), q(7, 15));
 /// assert_eq!(sum(&q(1, 6), &q(-1, 6)), q(0, 1));
+/// assert_eq!(sum(&q(1, 6), &q(1, 35)), q(41, 210));
 /// ```
 pub fn sum(a: &BigRational, b: &BigRational) -> BigRational {
-    if a.denom() == b.denom() {
-        fraction(a.numer() + b.numer(), a.denom().clone())
+    let (d1, d2) = (a.denom(), b.denom());
+    let d = BigInt::from(gcd(d1.magnitude(), d2.magnitude()));
+    if d.is_one() {
+        return BigRational::new_raw(a.numer() * d2 + b.numer() * d1, d1 * d2);
+    }
+    let (r1, r2) = (d1 / &d, d2 / &d);
+    let t = a.numer() * &r2 + b.numer() * &r1;
+    if t.is_zero() {
+        return BigRational::zero();
+    }
+    let e = BigInt::from(gcd(t.magnitude(), d.magnitude()));
+    if e.is_one() {
+        BigRational::new_raw(t, r1 * d2)
     } else {
-        fraction(
-            a.numer() * b.denom() + b.numer() * a.denom(),
-            a.denom() * b.denom(),
-        )
+        BigRational::new_raw(t / &e, r1 * (d2 / e))
     }
 }
 
@@ -357,6 +408,41 @@ mod tests {
             let (x, y) = (x.saturating_mul(u128::from(f)), u128::from(y) << shift);
             prop_assert_eq!(gcd_u128(x, y), x.gcd(&y));
             prop_assert_eq!(gcd_u128(y, x), x.gcd(&y));
+        }
+
+        /// Knuth's reduced product and sum equal num-rational's operators
+        /// (which reduce the whole result), on fractions of one to four
+        /// words with planted common factors (so that the cross gcds and
+        /// the denominators' gcd are not 1), equal denominators and zero.
+        #[test]
+        fn reduced_product_and_sum_are_the_field_operations(
+            n in prop::collection::vec(any::<u64>(), 0..4),
+            d in prop::collection::vec(any::<u64>(), 1..4),
+            m in prop::collection::vec(any::<u64>(), 0..4),
+            e in prop::collection::vec(any::<u64>(), 1..4),
+            f in 1u64..1 << 40,
+            negative in any::<bool>(),
+            same_denominator in any::<bool>(),
+        ) {
+            let int = |l: &[u64], sign: bool| {
+                let x = BigInt::from(big(l));
+                if sign { -x } else { x }
+            };
+            let f = BigInt::from(f);
+            let den = |l: &[u64]| int(l, false) * &f + 1u32;
+            let a = BigRational::new(int(&n, negative) * &f, den(&d));
+            let b = if same_denominator {
+                BigRational::new(int(&m, false), a.denom().clone())
+            } else {
+                BigRational::new(int(&m, false) * &f, den(&e) * &f)
+            };
+            // Numerator and denominator compared, not the values: a
+            // `Ratio` compares equal to its unreduced forms.
+            let parts = |x: BigRational| x.into_raw();
+            prop_assert_eq!(parts(product(&a, &b)), parts(&a * &b));
+            prop_assert_eq!(parts(product(&b, &a)), parts(&a * &b));
+            prop_assert_eq!(parts(sum(&a, &b)), parts(&a + &b));
+            prop_assert_eq!(parts(sum(&a, &-&a)), parts(BigRational::zero()));
         }
 
         /// On 64-bit words with a common factor (the binary loop alone).

@@ -74,22 +74,29 @@ pub fn covering_range<T: Field + Ordered>(
         return Err(Error::Domain("no points to cover".into()));
     }
     Ok(match surface {
-        Unbounded::Plane(fr) => vec![
-            widen(projection_extremes(points, Some(&fr.origin), &fr.x)),
-            widen(projection_extremes(points, Some(&fr.origin), &fr.y)),
-        ],
-        Unbounded::Axial(fr) => vec![widen(projection_extremes(points, Some(&fr.origin), &fr.z))],
+        Unbounded::Plane(fr) => {
+            let relative = Relative::new(points, Some(&fr.origin));
+            vec![
+                widen(relative.projection_extremes(&fr.x)),
+                widen(relative.projection_extremes(&fr.y)),
+            ]
+        }
+        Unbounded::Axial(fr) => {
+            vec![widen(
+                Relative::new(points, Some(&fr.origin)).projection_extremes(&fr.z),
+            )]
+        }
         Unbounded::Extrusion { curve, vector } => {
             if curve.is_empty() {
                 return Err(Error::Domain("an extrusion of no curve pieces".into()));
             }
             let vv = dot(vector, vector);
-            let [p_lo, p_hi] = projection_extremes(points, None, vector);
+            let [p_lo, p_hi] = Relative::new(points, None).projection_extremes(vector);
             let mut ctrl = Vec::new();
             for c in curve.iter() {
                 ctrl.extend(c.points()?);
             }
-            let [c_lo, c_hi] = projection_extremes(&ctrl, None, vector);
+            let [c_lo, c_hi] = Relative::new(&ctrl, None).projection_extremes(vector);
             vec![widen([(p_lo - &c_hi) / &vv, (p_hi - &c_lo) / &vv])]
         }
         Unbounded::RevolvedLine {
@@ -108,75 +115,120 @@ pub fn covering_range<T: Field + Ordered>(
             // v is an affine function of the axial coordinate: its extremes
             // are the images of the coordinate's (swapped when D·â < 0,
             // which `widen` orders).
-            let [lo, hi] = projection_extremes(points, Some(origin), axis);
+            let [lo, hi] = Relative::new(points, Some(origin)).projection_extremes(axis);
             vec![widen([(lo - &base) / &da, (hi - &base) / &da])]
         }
     })
 }
 
-/// The exact `[min, max]` of the projections `(P − O)·d` of `points`
-/// (`P·d` without an origin).
-///
-/// Where `T` has [`Ordered::rational_bounds`], every projection is first
-/// enclosed by integer interval arithmetic ([`fixed_projection`]); a point
-/// whose enclosure lies wholly above another's cannot be the minimum (nor,
-/// below, the maximum), so only the others are projected exactly. The
-/// answer is that of projecting every point.
-fn projection_extremes<T: Field + Ordered>(
-    points: &[Vec<T>],
-    origin: Option<&[T]>,
-    d: &[T],
-) -> [T; 2] {
-    let exact = |p: &[T]| match origin {
-        Some(o) => dot(&sub(p, o), d),
-        None => dot(p, d),
-    };
-    let enclosures: Option<Vec<[BigInt; 2]>> = points
-        .iter()
-        .map(|p| fixed_projection(p, origin, d))
-        .collect();
-    let Some(enclosures) = enclosures else {
-        return extremes(points.iter().map(|p| exact(p)));
-    };
-    let lowest_top = enclosures.iter().map(|[_, hi]| hi).min();
-    let highest_bottom = enclosures.iter().map(|[lo, _]| lo).max();
-    let (Some(lowest_top), Some(highest_bottom)) = (lowest_top, highest_bottom) else {
-        return extremes(points.iter().map(|p| exact(p)));
-    };
-    let pairs = || points.iter().zip(&enclosures);
-    let [lo, _] = extremes(
-        pairs()
-            .filter(|(_, [lo, _])| lo <= lowest_top)
-            .map(|(p, _)| exact(p)),
-    );
-    let [_, hi] = extremes(
-        pairs()
-            .filter(|(_, [_, hi])| hi >= highest_bottom)
-            .map(|(p, _)| exact(p)),
-    );
-    [lo, hi]
+/// Points `P` taken relative to an origin `O` (`P − O`; `P` itself without
+/// one), with fixed-point enclosures of the coordinates of every `P − O`
+/// where `T` has [`Ordered::rational_bounds`], computed once for all the
+/// directions they are projected on (and the origin's once for all points).
+struct Relative<'a, T> {
+    points: &'a [Vec<T>],
+    origin: Option<&'a [T]>,
+    enclosures: Option<Vec<Vec<[BigInt; 2]>>>,
 }
 
-/// Fractional bits of the fixed-point enclosures of [`fixed_projection`].
+impl<'a, T: Field + Ordered> Relative<'a, T> {
+    fn new(points: &'a [Vec<T>], origin: Option<&'a [T]>) -> Self {
+        let enclosures = relative_enclosures(points, origin);
+        Relative {
+            points,
+            origin,
+            enclosures,
+        }
+    }
+
+    /// The exact `(P − O)·d`.
+    fn exact(&self, p: &[T], d: &[T]) -> T {
+        match self.origin {
+            Some(o) => dot(&sub(p, o), d),
+            None => dot(p, d),
+        }
+    }
+
+    /// The exact `[min, max]` of the projections `(P − O)·d`.
+    ///
+    /// With enclosures, every projection is first enclosed by integer
+    /// interval arithmetic; a point whose enclosure lies wholly above
+    /// another's cannot be the minimum (nor, below, the maximum), so only
+    /// the others are projected exactly. The answer is that of projecting
+    /// every point.
+    fn projection_extremes(&self, d: &[T]) -> [T; 2] {
+        let all = || extremes(self.points.iter().map(|p| self.exact(p, d)));
+        let (Some(enclosures), Some(d_fixed)) = (
+            &self.enclosures,
+            d.iter().map(fixed).collect::<Option<Vec<_>>>(),
+        ) else {
+            return all();
+        };
+        let projections: Vec<[BigInt; 2]> = enclosures
+            .iter()
+            .map(|p| interval_dot(p, &d_fixed))
+            .collect();
+        let lowest_top = projections.iter().map(|[_, hi]| hi).min();
+        let highest_bottom = projections.iter().map(|[lo, _]| lo).max();
+        let (Some(lowest_top), Some(highest_bottom)) = (lowest_top, highest_bottom) else {
+            return all();
+        };
+        let pairs = || self.points.iter().zip(&projections);
+        let [lo, _] = extremes(
+            pairs()
+                .filter(|(_, [lo, _])| lo <= lowest_top)
+                .map(|(p, _)| self.exact(p, d)),
+        );
+        let [_, hi] = extremes(
+            pairs()
+                .filter(|(_, [_, hi])| hi >= highest_bottom)
+                .map(|(p, _)| self.exact(p, d)),
+        );
+        [lo, hi]
+    }
+}
+
+/// Fractional bits of the fixed-point enclosures of [`fixed`].
 const FIXED_BITS: usize = 64;
 
-/// `[L, H]` with `L ≤ (P − O)·d · 2^{128} ≤ H` (`P·d` without an origin),
-/// from each coordinate's [`Ordered::rational_bounds`] rounded outward to
-/// multiples of `2^{−64}`, then exact integer interval arithmetic (a
-/// product of two such bounds is a multiple of `2^{−128}`). `None` when
-/// `T` has no bounds.
-fn fixed_projection<T: Ordered>(p: &[T], origin: Option<&[T]>, d: &[T]) -> Option<[BigInt; 2]> {
-    let mut total = [BigInt::zero(), BigInt::zero()];
-    for (i, (x, di)) in p.iter().zip(d).enumerate() {
-        let mut xi = fixed(x)?;
-        if let Some(o) = origin {
-            let [a, b] = fixed(&o[i])?;
-            xi = [&xi[0] - b, &xi[1] - a];
-        }
-        let [lo, hi] = interval_product(&xi, &fixed(di)?);
-        total = [&total[0] + lo, &total[1] + hi];
-    }
-    Some(total)
+/// For every point, `[L, H]` per coordinate with `L ≤ (pᵢ − oᵢ)·2^{64} ≤ H`
+/// (`pᵢ` without an origin), from [`fixed`] enclosures; `None` when `T`
+/// has no bounds.
+fn relative_enclosures<T: Ordered>(
+    points: &[Vec<T>],
+    origin: Option<&[T]>,
+) -> Option<Vec<Vec<[BigInt; 2]>>> {
+    let origin: Option<Vec<[BigInt; 2]>> = match origin {
+        Some(o) => Some(o.iter().map(fixed).collect::<Option<_>>()?),
+        None => None,
+    };
+    points
+        .iter()
+        .map(|p| {
+            p.iter()
+                .enumerate()
+                .map(|(i, x)| {
+                    let xi = fixed(x)?;
+                    Some(match &origin {
+                        Some(o) => [&xi[0] - &o[i][1], &xi[1] - &o[i][0]],
+                        None => xi,
+                    })
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// `[L, H]` with `L ≤ Σ xᵢ·dᵢ ≤ H` for `xᵢ ∈ x[i]`, `dᵢ ∈ d[i]`: exact
+/// integer interval arithmetic on the fixed-point enclosures (a product of
+/// two is a multiple of `2^{−128}`).
+fn interval_dot(x: &[[BigInt; 2]], d: &[[BigInt; 2]]) -> [BigInt; 2] {
+    x.iter()
+        .zip(d)
+        .fold([BigInt::zero(), BigInt::zero()], |[l, h], (xi, di)| {
+            let [lo, hi] = interval_product(xi, di);
+            [l + lo, h + hi]
+        })
 }
 
 /// `[⌊lo·2^{64}⌋, ⌈hi·2^{64}⌉]` of `x`'s rational bounds.
