@@ -15,6 +15,7 @@ use super::{dot, sub};
 use crate::algebra::scalar::{Field, Ordered};
 use crate::curve::RationalCurve;
 use crate::error::Error;
+use crate::eval::Evaluator;
 use crate::hpoint::HPoint;
 use crate::Tolerance;
 use num_bigint::BigInt;
@@ -90,12 +91,12 @@ pub fn trim_between<T: Field + Ordered>(
     } else {
         pieces.iter().rev().map(RationalCurve::reverse).collect()
     };
-    let approx = to_f64_pieces(&work);
-    let (ks, ts) = locate_in(&approx, start, snap);
+    let mut approx = to_f64_pieces(&work);
+    let (ks, ts) = locate_in(&mut approx, start, snap);
     let (ke, te) = if start == end {
         (ks, ts.clone())
     } else {
-        locate_in(&approx, end, snap)
+        locate_in(&mut approx, end, snap)
     };
     let out = split_between(&work, (ks, &ts), (ke, &te), start == end)?;
     let start_pt = point_at(&work[ks], &ts, out.first().map(|c| &c.ctrl()[0]))?;
@@ -215,23 +216,32 @@ pub fn locate_vertex<T: Field + Ordered>(
     p: &[T],
     snap: f64,
 ) -> (usize, T) {
-    locate_in(&to_f64_pieces(pieces), p, snap)
+    locate_in(&mut to_f64_pieces(pieces), p, snap)
 }
 
-/// The pieces rounded to `f64`, for [`locate_in`]'s search.
-fn to_f64_pieces<T: Ordered>(pieces: &[RationalCurve<T>]) -> Vec<RationalCurve<f64>> {
-    pieces.iter().map(|c| c.map(Ordered::to_f64)).collect()
+/// The pieces rounded to `f64`, as evaluators for [`locate_in`]'s search
+/// (which evaluates each piece about 150 times: one evaluator each, no
+/// allocation per point).
+fn to_f64_pieces<T: Ordered>(pieces: &[RationalCurve<T>]) -> Vec<Evaluator<f64>> {
+    pieces
+        .iter()
+        .map(|c| Evaluator::curve(&c.map(Ordered::to_f64)))
+        .collect()
 }
 
 /// [`locate_vertex`] on the pieces already rounded to `f64` (a trimmed
 /// edge locates both its vertices on one rounding).
-fn locate_in<T: Field + Ordered>(approx: &[RationalCurve<f64>], p: &[T], snap: f64) -> (usize, T) {
+fn locate_in<T: Field + Ordered>(approx: &mut [Evaluator<f64>], p: &[T], snap: f64) -> (usize, T) {
     let pf: Vec<f64> = p.iter().map(Ordered::to_f64).collect();
+    let mut x = vec![0.0; pf.len()];
     let mut best = (0, 0.0, f64::INFINITY);
     let mut ends = Vec::new();
-    for (k, cf) in approx.iter().enumerate() {
-        let d = |t: f64| cf.eval(&t).map_or(f64::INFINITY, |x| dist2(&x, &pf));
-        let (t, dt) = nearest(&d);
+    for (k, ev) in approx.iter_mut().enumerate() {
+        let mut d = |t: f64| match ev.eval_into(&[t], &mut x) {
+            Ok(()) => dist2(&x, &pf),
+            Err(_) => f64::INFINITY,
+        };
+        let (t, dt) = nearest(&mut d);
         if dt < best.2 {
             best = (k, t, dt);
         }
@@ -249,7 +259,7 @@ fn locate_in<T: Field + Ordered>(approx: &[RationalCurve<f64>], p: &[T], snap: f
 
 /// The minimum of `d` on `[0, 1]`: the best of 33 samples, then 60 steps
 /// of a halving local search.
-fn nearest(d: &dyn Fn(f64) -> f64) -> (f64, f64) {
+fn nearest(d: &mut dyn FnMut(f64) -> f64) -> (f64, f64) {
     let mut best = (0..=32)
         .map(|i| f64::from(i) / 32.0)
         .map(|t| (t, d(t)))
