@@ -213,21 +213,19 @@ pub(crate) fn gcd_u64(x: u64, y: u64) -> u64 {
 }
 
 /// [`binary_gcd`] on 128-bit words that moves to 64-bit words as soon as
-/// both operands fit one (each 64-bit step is about twice as fast).
+/// both operands fit one (each 64-bit step is about twice as fast), with
+/// the same branch-free step: the odd part of `|x − y|` and `min(x, y)`.
 fn binary_gcd_wide(x: u128, y: u128) -> u128 {
     let twos = (x | y).trailing_zeros();
-    let (mut x, mut y) = (x >> x.trailing_zeros(), y);
-    while y != 0 {
-        if (x | y) >> 64 == 0 {
-            return u128::from(binary_gcd(x as u64, y as u64)) << twos;
+    let (mut x, mut y) = (x >> x.trailing_zeros(), y >> y.trailing_zeros());
+    while (x | y) >> 64 != 0 {
+        if x == y {
+            return x << twos;
         }
-        y >>= y.trailing_zeros();
-        if x > y {
-            std::mem::swap(&mut x, &mut y);
-        }
-        y -= x;
+        let zeros = x.wrapping_sub(y).trailing_zeros();
+        (x, y) = (x.abs_diff(y) >> zeros, x.min(y));
     }
-    x << twos
+    u128::from(binary_gcd(x as u64, y as u64)) << twos
 }
 
 /// Stein's binary gcd of non-zero words: strip the common factor 2, make
@@ -450,6 +448,40 @@ mod tests {
         fn binary_gcd_of_words_is_the_gcd(x in 1..u64::MAX >> 20, y in 1..u64::MAX >> 20, f in 1u64..1 << 20) {
             let (x, y) = (x * f, y * f);
             prop_assert_eq!(binary_gcd(x, y), x.gcd(&y));
+        }
+    }
+
+    /// `F_k`, the Fibonacci numbers: every Euclidean quotient is 1, the
+    /// longest cosequence per bit.
+    fn fibonacci(k: usize) -> BigUint {
+        let (mut a, mut b) = (BigUint::zero(), BigUint::one());
+        for _ in 0..k {
+            (a, b) = (b.clone(), a + b);
+        }
+        a
+    }
+
+    proptest! {
+        /// Numbers close to each other (agreeing in many leading bits),
+        /// far apart in size (quotients beyond a step), and Fibonacci
+        /// neighbours times a factor: the edges of Lehmer's step (a full
+        /// Euclid step when a quotient is too large).
+        #[test]
+        fn lehmer_equals_binary_gcd_at_the_edges(
+            a in prop::collection::vec(any::<u64>(), 1..10),
+            delta in prop::collection::vec(any::<u64>(), 0..3),
+            shift in 0u32..700,
+            k in 90usize..1500,
+            f in any::<u64>(),
+        ) {
+            let (a, delta, f) = (big(&a), big(&delta), BigUint::from(f));
+            let close = &a + &delta;
+            prop_assert_eq!(gcd(&close, &a), close.gcd(&a));
+            let far = (&a << shift) + &delta;
+            prop_assert_eq!(gcd(&far, &a), far.gcd(&a));
+            prop_assert_eq!(gcd(&a, &far), far.gcd(&a));
+            let (x, y) = (fibonacci(k + 1) * &f, fibonacci(k) * &f);
+            prop_assert_eq!(gcd(&x, &y), x.gcd(&y));
         }
     }
 
