@@ -59,7 +59,7 @@ pub struct Jets<T> {
     /// The homogeneous parameters of the point being evaluated.
     hom: [T; 4],
     /// Scratch rows of the `f64` lane kernels (`super::lanes`).
-    lane_rows: Vec<super::lanes::Lane>,
+    lane_rows: Vec<f64>,
 }
 
 impl<T: Scalar> Jets<T> {

@@ -3,14 +3,15 @@
 //! [`Jets::eval_batch`](super::Jets::eval_batch) for nets of stride 3
 //! (planar) and 4 (spatial).
 //!
-//! The points of a batch go [`LANES`] at a time. Every value of the
-//! Horner–Bernstein scheme of [`super`] is held as a [`Lane`], one `f64`
-//! per point, and every step is a loop over the lanes with no dependence
+//! The points of a batch go `L` at a time ([`LANES`], or [`LANES_AVX512`]
+//! for curves in the AVX-512 build). Every value of the Horner–Bernstein
+//! scheme of [`super`] is held as a [`Lane`], one `f64` per point, and
+//! every step is a loop over the lanes with no dependence
 //! between them, so the compiler turns it into vector instructions on
 //! stable Rust, without `unsafe` and without SIMD intrinsics:
 //!
 //! ```text
-//! acc[k][l] ← acc[k][l]·a[l] + bⁱ[l]·G_i[k]        k < stride, l < LANES
+//! acc[k][l] ← acc[k][l]·a[l] + bⁱ[l]·G_i[k]        k < stride, l < L
 //! X[k][l]   = acc[k][l] / acc[w][l]
 //! ```
 //!
@@ -62,7 +63,7 @@
 //! place of `H̃_k/H_w` for the degrees of everyday CAD. The property test
 //! below checks the bound for both kernels against exact `BigRational`
 //! sums, and bit identity for the baseline build. A batch whose length
-//! is not a multiple of [`LANES`] fills its last group with the parameter
+//! is not a multiple of `L` fills its last group with the parameter
 //! `0` and keeps only the real points.
 //!
 //! Cost per point (flops, divides), stride `s` (weight included):
@@ -80,17 +81,24 @@ use super::{Net, Shape};
 use crate::error::Error;
 use std::any::Any;
 
-/// Points evaluated together: each [`Lane`] is two 256-bit or four
-/// 128-bit vector registers.
-pub(super) const LANES: usize = 8;
+/// Points evaluated together in the baseline and AVX2 builds: each
+/// [`Lane`] is two 256-bit or four 128-bit vector registers.
+const LANES: usize = 8;
 
-/// One `f64` per point of a group.
-pub(super) type Lane = [f64; LANES];
+/// Points evaluated together in the AVX-512 build: each [`Lane`] is two
+/// 512-bit registers, so every Horner step runs two independent chains
+/// of vector instructions, which hides the latency of one (4 cycles for
+/// an FMA) behind the other.
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+const LANES_AVX512: usize = 16;
+
+/// One `f64` per point of a group of `L` points.
+type Lane<const L: usize> = [f64; L];
 
 /// The homogeneous parameters of a group of points, lane-major: `(1 − t,
 /// t)`, `(1 − u, u, 1 − v, v)` or `(u, v, 1 − u − v)`, as
 /// [`Net::hom_params`] computes them for one point.
-type Hom = [Lane; 4];
+type Hom<const L: usize> = [Lane<L>; 4];
 
 /// The instruction set a batch is compiled for: the kernels below are
 /// `#[inline(always)]` down to their loops, so `run!` compiles them
@@ -125,8 +133,19 @@ impl Isa {
     }
 }
 
-/// `$kernel` (an expression in `$fused`) compiled for the instruction set
-/// `$isa` (it must be inlined whole into the call, hence the
+/// Whether the AVX-512 build runs a batch of `shape` [`LANES_AVX512`]
+/// points at a time: curves (one Horner chain per coordinate, whose FMA
+/// latency two registers a value hide: degree 40 13.0 → 9.4 ns a point,
+/// degree 10 3.9 → 3.3 ns), not patches (a cubic triangle took 6.2 ns
+/// instead of 5.4, a bicubic no less than 7.3; `peer_eval`, 2026-11-28).
+fn wide(shape: Shape) -> bool {
+    matches!(shape, Shape::Curve(_))
+}
+
+/// `$kernel` (an expression in `$fused` and the lane count `$lanes`)
+/// compiled for the instruction set `$isa`, [`LANES_AVX512`] points at
+/// a time in the AVX-512 build if `$wide`, else [`LANES`] (it must be
+/// inlined whole into the call, hence the
 /// `#[inline(always)]` of the kernels, and each arm has a closure of its
 /// own: one closure called from three arms is not inlined, and its code
 /// then lacks the arm's instructions). `$fused` is a constant in each
@@ -134,20 +153,29 @@ impl Isa {
 /// baseline, which has no FMA instruction, true for the vector builds,
 /// which have one.
 macro_rules! run {
-    ($isa:expr, |$fused:ident| $kernel:expr) => {
+    ($isa:expr, $wide:expr, |$fused:ident, $lanes:ident| $kernel:expr) => {
         match $isa {
             Isa::Baseline => {
                 let $fused = false;
+                const $lanes: usize = LANES;
                 $kernel
             }
             #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
             Isa::Avx2(v3) => v3.vectorize(|| {
                 let $fused = true;
+                const $lanes: usize = LANES;
+                $kernel
+            }),
+            #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+            Isa::Avx512(v4) if $wide => v4.vectorize(|| {
+                let $fused = true;
+                const $lanes: usize = LANES_AVX512;
                 $kernel
             }),
             #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
             Isa::Avx512(v4) => v4.vectorize(|| {
                 let $fused = true;
+                const $lanes: usize = LANES;
                 $kernel
             }),
         }
@@ -167,12 +195,16 @@ pub(super) fn eval_batch<T: Any>(
     net: &Net<T>,
     params: &[T],
     out: &mut [T],
-    rows: &mut Vec<Lane>,
+    rows: &mut Vec<f64>,
 ) -> Option<Result<(), Error>> {
     let net = (net as &dyn Any).downcast_ref::<Net<f64>>()?;
     match net.stride() {
-        3 => Some(run!(isa, |f| project::<3, T>(f, net, params, out, rows))),
-        4 => Some(run!(isa, |f| project::<4, T>(f, net, params, out, rows))),
+        3 => Some(run!(isa, wide(net.shape()), |f, L| project::<3, L, T>(
+            f, net, params, out, rows
+        ))),
+        4 => Some(run!(isa, wide(net.shape()), |f, L| project::<4, L, T>(
+            f, net, params, out, rows
+        ))),
         _ => None,
     }
 }
@@ -185,14 +217,14 @@ pub(super) fn jets_batch<T: Any>(
     nets: &[Net<T>],
     params: &[T],
     out: &mut [T],
-    rows: &mut Vec<Lane>,
+    rows: &mut Vec<f64>,
 ) -> Option<()> {
     let first = (nets.first()? as &dyn Any).downcast_ref::<Net<f64>>()?;
     let nets = nets
         .iter()
         .map(|n| (n as &dyn Any).downcast_ref::<Net<f64>>());
     match first.stride() {
-        3 => run!(isa, |f| jets::<3, T>(
+        3 => run!(isa, wide(first.shape()), |f, L| jets::<3, L, T>(
             f,
             first.shape(),
             nets,
@@ -200,7 +232,7 @@ pub(super) fn jets_batch<T: Any>(
             out,
             rows
         )),
-        4 => run!(isa, |f| jets::<4, T>(
+        4 => run!(isa, wide(first.shape()), |f, L| jets::<4, L, T>(
             f,
             first.shape(),
             nets,
@@ -215,16 +247,16 @@ pub(super) fn jets_batch<T: Any>(
 
 /// [`eval_batch`] at the stride `S`.
 #[inline(always)]
-fn project<const S: usize, T: Any>(
+fn project<const S: usize, const L: usize, T: Any>(
     fused: bool,
     net: &Net<f64>,
     params: &[T],
     out: &mut [T],
-    rows: &mut Vec<Lane>,
+    rows: &mut Vec<f64>,
 ) -> Result<(), Error> {
     let (k, d) = (net.shape().params(), S - 1);
-    for (p, o) in params.chunks(LANES * k).zip(out.chunks_mut(LANES * d)) {
-        let h = hom_net::<S>(fused, net, &hom_lanes(net.shape(), p), rows);
+    for (p, o) in params.chunks(L * k).zip(out.chunks_mut(L * d)) {
+        let h = hom_net::<S, L>(fused, net, &hom_lanes(net.shape(), p), rows);
         // The divides of all lanes in one straight block, kept whole
         // vectors by `black_box` (which holds `x` in memory: otherwise the
         // compiler splits them to fit the interleaved stores below, half
@@ -232,13 +264,12 @@ fn project<const S: usize, T: Any>(
         // first at infinity (none in a group whose weights are all
         // non-zero: the common case, written by a loop of fixed length).
         // `x[d]` is the weight itself, not written.
-        let mut x: [Lane; S] = std::array::from_fn(|c| {
-            std::array::from_fn(|l| if c < d { h[c][l] / h[d][l] } else { h[d][l] })
-        });
+        let mut x: [Lane<L>; S] =
+            each(|c| lane(|l| if c < d { h[c][l] / h[d][l] } else { h[d][l] }));
         std::hint::black_box(&mut x);
         let at_infinity = h[d][..o.len() / d].contains(&0.0);
         let o = if at_infinity {
-            let finite = h[d].iter().position(|w| *w == 0.0).unwrap_or(LANES);
+            let finite = h[d].iter().position(|w| *w == 0.0).unwrap_or(L);
             &mut o[..finite * d]
         } else {
             o
@@ -257,24 +288,21 @@ fn project<const S: usize, T: Any>(
 
 /// [`jets_batch`] at the stride `S`.
 #[inline(always)]
-fn jets<'a, const S: usize, T: Any>(
+fn jets<'a, const S: usize, const L: usize, T: Any>(
     fused: bool,
     shape: Shape,
     nets: impl Iterator<Item = Option<&'a Net<f64>>> + Clone,
     params: &[T],
     out: &mut [T],
-    rows: &mut Vec<Lane>,
+    rows: &mut Vec<f64>,
 ) {
     let k = shape.params();
     let per_point = nets.clone().count() * S;
-    for (p, o) in params
-        .chunks(LANES * k)
-        .zip(out.chunks_mut(LANES * per_point))
-    {
+    for (p, o) in params.chunks(L * k).zip(out.chunks_mut(L * per_point)) {
         let hom = hom_lanes(shape, p);
         for (i, net) in nets.clone().enumerate() {
             let net = net.expect("the nets of one jet share T");
-            let h = hom_net::<S>(fused, net, &hom, rows);
+            let h = hom_net::<S, L>(fused, net, &hom, rows);
             for (l, o) in o.chunks_exact_mut(per_point).enumerate() {
                 for (o, hk) in o[i * S..(i + 1) * S].iter_mut().zip(&h) {
                     *as_f64_mut(o) = hk[l];
@@ -284,16 +312,15 @@ fn jets<'a, const S: usize, T: Any>(
     }
 }
 
-/// The lane-major homogeneous parameters of up to [`LANES`] points
+/// The lane-major homogeneous parameters of up to `L` points
 /// (`shape.params()` values each, `0` in the unused lanes).
 #[inline(always)]
-fn hom_lanes<T: Any>(shape: Shape, params: &[T]) -> Hom {
+fn hom_lanes<const L: usize, T: Any>(shape: Shape, params: &[T]) -> Hom<L> {
     let k = shape.params();
-    let at =
-        |j: usize| -> Lane { std::array::from_fn(|l| params.get(l * k + j).map_or(0.0, as_f64)) };
-    let (p, q) = (at(0), if k > 1 { at(1) } else { [0.0; LANES] });
-    let minus = |x: &Lane, y: &Lane| -> Lane { std::array::from_fn(|l| x[l] - y[l]) };
-    let one = [1.0; LANES];
+    let at = |j: usize| -> Lane<L> { lane(|l| params.get(l * k + j).map_or(0.0, as_f64)) };
+    let (p, q) = (at(0), if k > 1 { at(1) } else { [0.0; L] });
+    let minus = |x: &Lane<L>, y: &Lane<L>| -> Lane<L> { lane(|l| x[l] - y[l]) };
+    let one = [1.0; L];
     match shape {
         Shape::Curve(_) => [minus(&one, &p), p, one, one],
         Shape::Rect(..) => [minus(&one, &p), p, minus(&one, &q), q],
@@ -305,36 +332,41 @@ fn hom_lanes<T: Any>(shape: Shape, params: &[T]) -> Hom {
 /// [`Lane`] per coordinate: the scheme of [`Net::eval_hom_into`], lane by
 /// lane, each multiply–add fused or not ([`madd`]).
 #[inline(always)]
-fn hom_net<const S: usize>(
+fn hom_net<const S: usize, const L: usize>(
     fused: bool,
     net: &Net<f64>,
-    h: &Hom,
-    rows: &mut Vec<Lane>,
-) -> [Lane; S] {
+    h: &Hom<L>,
+    rows: &mut Vec<f64>,
+) -> [Lane<L>; S] {
     let g = net.scaled();
     match net.shape() {
-        Shape::Curve(n) => horner::<S>(fused, n + 1, broadcast::<S>(g), &h[0], &h[1]),
+        Shape::Curve(n) => horner::<S, L>(fused, n + 1, broadcast::<S, L>(g), &h[0], &h[1]),
         Shape::Rect(m, n) => {
-            rows.resize((m + 1) * S, [0.0; LANES]);
-            for (row, r) in g.chunks_exact((n + 1) * S).zip(rows.chunks_exact_mut(S)) {
-                r.copy_from_slice(&horner::<S>(
-                    fused,
-                    n + 1,
-                    broadcast::<S>(row),
-                    &h[2],
-                    &h[3],
-                ));
+            // Row `i`, coordinate `k`, lane `l` at `rows[(i·S + k)·L + l]`.
+            rows.resize((m + 1) * S * L, 0.0);
+            for (row, r) in g
+                .chunks_exact((n + 1) * S)
+                .zip(rows.chunks_exact_mut(S * L))
+            {
+                let sum = horner::<S, L>(fused, n + 1, broadcast::<S, L>(row), &h[2], &h[3]);
+                for (r, sum) in r.chunks_exact_mut(L).zip(&sum) {
+                    r.copy_from_slice(sum);
+                }
             }
-            horner::<S>(fused, m + 1, |i, k| rows[i * S + k], &h[0], &h[1])
+            let row = |i: usize, k: usize| -> Lane<L> {
+                let at = (i * S + k) * L;
+                rows[at..at + L].try_into().expect("L values")
+            };
+            horner::<S, L>(fused, m + 1, row, &h[0], &h[1])
         }
         Shape::Tri(n) => {
-            let (mut out, mut vpow, mut start) = ([[0.0; LANES]; S], [1.0; LANES], 0);
+            let (mut out, mut vpow, mut start) = ([[0.0; L]; S], [1.0; L], 0);
             for j in 0..=n {
                 let len = (n - j + 1) * S;
-                let r = horner::<S>(
+                let r = horner::<S, L>(
                     fused,
                     n - j + 1,
-                    broadcast::<S>(&g[start..start + len]),
+                    broadcast::<S, L>(&g[start..start + len]),
                     &h[2],
                     &h[0],
                 );
@@ -343,13 +375,13 @@ fn hom_net<const S: usize>(
                     out = r;
                 } else {
                     for (o, r) in out.iter_mut().zip(&r) {
-                        for l in 0..LANES {
+                        for l in 0..L {
                             o[l] = madd(fused, vpow[l], r[l], o[l]);
                         }
                     }
                 }
                 if j < n {
-                    for l in 0..LANES {
+                    for l in 0..L {
                         vpow[l] *= h[1][l];
                     }
                 }
@@ -360,10 +392,14 @@ fn hom_net<const S: usize>(
 }
 
 /// Coordinate `k` of point `i` of `points` (`S` scalars a point), the same
-/// in every lane.
+/// in every lane. The points are read as arrays of `S`, so that a Horner
+/// step checks the bound of `i` once, not once per coordinate.
 #[inline(always)]
-fn broadcast<const S: usize>(points: &[f64]) -> impl Fn(usize, usize) -> Lane + '_ {
-    move |i, k| [points[i * S + k]; LANES]
+fn broadcast<const S: usize, const L: usize>(
+    points: &[f64],
+) -> impl Fn(usize, usize) -> Lane<L> + '_ {
+    let (points, _) = points.as_chunks::<S>();
+    move |i, k| [points[i][k]; L]
 }
 
 /// `Σ_i a^{count−1−i} bⁱ G_i` by Horner in every lane, `G_i` coordinate
@@ -371,27 +407,49 @@ fn broadcast<const S: usize>(points: &[f64]) -> impl Fn(usize, usize) -> Lane + 
 /// (`bⁱ ← bⁱ⁻¹·b`, `acc ← acc·a + bⁱ·G_i`), in the same order, the
 /// multiply–add fused or not ([`madd`]).
 #[inline(always)]
-fn horner<const S: usize>(
+fn horner<const S: usize, const L: usize>(
     fused: bool,
     count: usize,
-    point: impl Fn(usize, usize) -> Lane,
-    a: &Lane,
-    b: &Lane,
-) -> [Lane; S] {
-    let mut acc: [Lane; S] = std::array::from_fn(|k| point(0, k));
-    let mut bpow = [1.0; LANES];
+    point: impl Fn(usize, usize) -> Lane<L>,
+    a: &Lane<L>,
+    b: &Lane<L>,
+) -> [Lane<L>; S] {
+    let mut acc: [Lane<L>; S] = each(|k| point(0, k));
+    let mut bpow = [1.0; L];
     for i in 1..count {
-        for l in 0..LANES {
+        for l in 0..L {
             bpow[l] *= b[l];
         }
         for (k, acc) in acc.iter_mut().enumerate() {
             let x = point(i, k);
-            for l in 0..LANES {
+            for l in 0..L {
                 acc[l] = madd(fused, acc[l], a[l], bpow[l] * x[l]);
             }
         }
     }
     acc
+}
+
+/// The lane `[f(0), …, f(L − 1)]`, by a loop that is inlined whole
+/// (`std::array::from_fn` of 16 values was left as a call in the AVX-512
+/// build, its body not vectorised: 2–3× slower).
+#[inline(always)]
+fn lane<const L: usize>(f: impl Fn(usize) -> f64) -> Lane<L> {
+    let mut x = [0.0; L];
+    for (l, x) in x.iter_mut().enumerate() {
+        *x = f(l);
+    }
+    x
+}
+
+/// The coordinates `[f(0), …, f(S − 1)]` of a group, as [`lane`].
+#[inline(always)]
+fn each<const S: usize, const L: usize>(f: impl Fn(usize) -> Lane<L>) -> [Lane<L>; S] {
+    let mut x = [[0.0; L]; S];
+    for (k, x) in x.iter_mut().enumerate() {
+        *x = f(k);
+    }
+    x
 }
 
 /// `x·y + z`: one fused multiply–add (one rounding) if `fused`, else a

@@ -590,7 +590,7 @@ pub struct Evaluator<T> {
     lanes: Vec<T>,
     /// The rows of a rect patch for the `f64` kernels of `lanes` (sized on
     /// first use).
-    lane_rows: Vec<lanes::Lane>,
+    lane_rows: Vec<f64>,
 }
 
 /// Curve points evaluated together in a batch ([`horner_lanes`]).
