@@ -34,7 +34,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let text = std::fs::read_to_string(&path)?;
         let start = Instant::now();
         let mut reader = Reader::new(text.as_bytes());
-        let mut table = Table::new();
+        let mut table = Table::default();
         while let Some(inst) = reader.next_instance()? {
             table.insert(inst.id, inst);
         }

@@ -245,7 +245,7 @@ fn cone_slopes_exact_at_multiples_of_15_degrees_and_bounded_otherwise() {
 
 fn table_of(text: &str) -> Table {
     let mut reader = Reader::new(text.as_bytes());
-    let mut table = Table::new();
+    let mut table = Table::default();
     while let Some(inst) = reader.next_instance().unwrap() {
         table.insert(inst.id, inst);
     }

@@ -430,7 +430,7 @@ impl BrepModel {
 }
 
 /// The instances of a file by id.
-type Store = HashMap<u64, Instance>;
+type Store = super::geometry::Table;
 
 /// The record `name` of instance `id` (simple or part of a complex one).
 fn record<'a>(store: &'a Store, id: u64, name: &str) -> Option<&'a Record> {
@@ -913,6 +913,37 @@ impl Builder<'_> {
         }
     }
 
+    /// Read the shells and faces no solid holds (in file order), and
+    /// return the entities found invalid among them, in that order.
+    fn loose_shells_and_faces(&mut self, order: &[u64]) -> Vec<(u64, String)> {
+        let mark = self.model.summary.invalid.len();
+        for &id in order {
+            let name = &self.store[&id].records[0].name;
+            let read = match name.as_str() {
+                "CLOSED_SHELL" | "OPEN_SHELL" => self
+                    .model
+                    .solids
+                    .values()
+                    .flat_map(|s| &s.shells)
+                    .any(|sh| sh.id == id),
+                "ADVANCED_FACE" | "FACE_SURFACE" => self.model.faces.contains_key(&id),
+                _ => continue,
+            };
+            if read {
+                continue;
+            }
+            let r = if name.ends_with("SHELL") {
+                self.shell(id).map(|s| self.model.loose_shells.push(s))
+            } else {
+                self.face(id)
+            };
+            if let Err(e) = r {
+                self.invalid(id, e);
+            }
+        }
+        self.model.summary.invalid.split_off(mark)
+    }
+
     fn context(&mut self, id: u64) {
         if self.model.contexts.contains_key(&id) {
             return;
@@ -1106,6 +1137,9 @@ impl Default for BrepOptions {
     }
 }
 
+/// The statements parsed on all cores at a time (see [`Reader::next_batch`]).
+const PARSE_BATCH: usize = 4096;
+
 /// [`read_brep`] with [`BrepOptions`].
 ///
 /// # Errors
@@ -1114,11 +1148,17 @@ impl Default for BrepOptions {
 pub fn read_brep_with(input: impl BufRead, options: BrepOptions) -> Result<BrepModel, Error> {
     let mut reader = Reader::new(input);
     let mut collector = Collector::default();
-    let mut store = Store::new();
+    let mut store = Store::default();
     let mut order = Vec::new();
-    while let Some(inst) = reader.next_instance()? {
-        order.push(inst.id);
-        store.insert(inst.id, inst);
+    loop {
+        let batch = reader.next_batch(PARSE_BATCH)?;
+        if batch.is_empty() {
+            break;
+        }
+        for inst in batch {
+            order.push(inst.id);
+            store.insert(inst.id, inst);
+        }
     }
     let instances: Vec<&Instance> = order.iter().filter_map(|id| store.get(id)).collect();
     collector.add_all(&instances);
@@ -1134,49 +1174,34 @@ pub fn read_brep_with(input: impl BufRead, options: BrepOptions) -> Result<BrepM
         pending_faces: Vec::new(),
     };
     b.bodies(&order);
-    let placed = assembly::occurrences(&store, &order, &b.model.bodies);
+    let loose_invalid = b.loose_shells_and_faces(&order);
+    // The placements of the bodies do not depend on the geometry: they are
+    // found while it is converted.
+    let bodies = std::mem::take(&mut b.model.bodies);
+    let (placed, ()) = rayon::join(
+        || assembly::occurrences(&store, &order, &bodies),
+        || b.read_geometry(),
+    );
+    b.model.bodies = bodies;
     for c in placed.occurrences.iter().filter_map(|o| o.context) {
         b.context(c);
     }
     b.model.occurrences = placed.occurrences;
     b.model.summary.invalid.extend(placed.invalid);
+    b.model.summary.invalid.extend(loose_invalid);
     let mut summary_extra = BTreeMap::new();
     for &id in &order {
         let name = &store[&id].records[0].name;
-        if PLACEMENTS.contains(&name.as_str()) {
-            if !placed.applied.contains(&id) {
-                *summary_extra.entry(name.clone()).or_insert(0) += 1;
-            }
-        } else if matches!(
-            name.as_str(),
-            "CLOSED_SHELL" | "OPEN_SHELL" | "ADVANCED_FACE" | "FACE_SURFACE"
-        ) {
-            let read = if name.ends_with("SHELL") {
-                b.model
-                    .solids
-                    .values()
-                    .flat_map(|s| &s.shells)
-                    .any(|sh| sh.id == id)
-            } else {
-                b.model.faces.contains_key(&id)
-            };
-            if !read {
-                let r = if name.ends_with("SHELL") {
-                    b.shell(id).map(|s| b.model.loose_shells.push(s))
-                } else {
-                    b.face(id)
-                };
-                if let Err(e) = r {
-                    b.invalid(id, e);
-                }
-            }
+        if PLACEMENTS.contains(&name.as_str()) && !placed.applied.contains(&id) {
+            *summary_extra.entry(name.clone()).or_insert(0) += 1;
         }
     }
-    b.read_geometry();
     let mut model = b.model;
     model.summary.not_applied = summary_extra;
     model.geometry = geometry;
     summarize(&mut model);
+    // The instances are not needed any more: freed on a worker thread.
+    rayon::spawn(move || drop(store));
     Ok(model)
 }
 

@@ -2,8 +2,8 @@
 //! exact rational Bézier pieces, read from the parsed instances
 //! ([`parser::Instance`](super::parser::Instance)) by id.
 //!
-//! The instances are looked up in a [`Table`] (`HashMap<u64, Instance>`, the
-//! DATA section by id), held in a [`Context`] with the model's plane angle
+//! The instances are looked up in a [`Table`] (a `HashMap` of the DATA
+//! section by id), held in a [`Context`] with the model's plane angle
 //! unit and, optionally, a reader of B-spline curves (B-spline entities are
 //! read by [`read_step`](super::read_step); the swept curve of an extrusion
 //! or revolution and the basis of a trimmed curve may be one). Two entry
@@ -57,8 +57,9 @@ use std::collections::HashMap;
 mod parameters;
 pub use parameters::{surface_parameters, Parameter, SurfaceParameters};
 
-/// The DATA section's instances by id.
-pub type Table = HashMap<u64, Instance>;
+/// The DATA section's instances by id, under a fast hash of the ids
+/// (`foldhash`, randomly seeded like std's: crafted ids do not collide).
+pub type Table = HashMap<u64, Instance, foldhash::fast::RandomState>;
 
 /// A reader of B-spline curve entities by id, as exact pieces in order.
 pub type BSplineCurves<'a, T> = &'a dyn Fn(u64) -> Result<Vec<RationalCurve<T>>, Error>;

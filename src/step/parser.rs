@@ -1,6 +1,6 @@
 //! A small streaming reader of the ISO 10303-21 exchange structure: the DATA
-//! section's entity instances, one statement at a time, without holding the
-//! file in memory.
+//! section's entity instances, one statement at a time or a batch at a time
+//! (parsed on all cores), without holding the file in memory.
 //!
 //! ```text
 //! #12 = CARTESIAN_POINT('', (0., 1.5, -2.E-1));            simple instance
@@ -168,12 +168,9 @@ impl<R: BufRead> Reader<R> {
         Error::Format(format!("STEP line {}: {what}", self.line))
     }
 
-    /// The next entity instance of the DATA section, `None` after its end.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::Format`] with the line number for malformed syntax.
-    pub fn next_instance(&mut self) -> Result<Option<Instance>, Error> {
+    /// The next instance statement of the DATA section (its bytes, and the
+    /// line where it ends), `None` after the section's end.
+    fn next_statement(&mut self) -> Result<Option<(Vec<u8>, usize)>, Error> {
         while !self.done {
             let Some(bytes) = self.statement()? else {
                 self.done = true;
@@ -191,12 +188,7 @@ impl<R: BufRead> Reader<R> {
                 continue;
             }
             if t.starts_with(b"#") {
-                let end_line = self.line;
-                return parse_instance(t).map(Some).map_err(|(pos, e)| {
-                    let after = t[pos.min(t.len())..].iter().filter(|&&b| b == b'\n');
-                    let line = end_line - after.count();
-                    Error::Format(format!("STEP line {line}: {e}"))
-                });
+                return Ok(Some((bytes, self.line)));
             }
             if t.starts_with(b"END-ISO-10303-21") {
                 self.done = true;
@@ -204,6 +196,71 @@ impl<R: BufRead> Reader<R> {
         }
         Ok(None)
     }
+
+    /// The next entity instance of the DATA section, `None` after its end.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Format`] with the line number for malformed syntax.
+    pub fn next_instance(&mut self) -> Result<Option<Instance>, Error> {
+        self.next_statement()?
+            .map(|(bytes, end_line)| parse_statement(&bytes, end_line))
+            .transpose()
+    }
+
+    /// The next instances of the DATA section, in order: up to `max` of
+    /// them (and up to [`BATCH_BYTES`] of text, or one statement if it is
+    /// longer), split from the stream here and parsed on all cores. Empty
+    /// after the section's end.
+    ///
+    /// # Errors
+    ///
+    /// As [`Reader::next_instance`]: the first malformed statement in the
+    /// file's order.
+    pub fn next_batch(&mut self, max: usize) -> Result<Vec<Instance>, Error> {
+        use rayon::prelude::*;
+        let mut statements = Vec::new();
+        let mut bytes = 0;
+        let mut stop = None;
+        while statements.len() < max && bytes < BATCH_BYTES {
+            match self.next_statement() {
+                Ok(Some(s)) => {
+                    bytes += s.0.len();
+                    statements.push(s);
+                }
+                Ok(None) => break,
+                Err(e) => {
+                    stop = Some(e);
+                    break;
+                }
+            }
+        }
+        let parsed: Vec<Result<Instance, Error>> = statements
+            .par_iter()
+            .map(|(text, end_line)| parse_statement(text, *end_line))
+            .collect();
+        let instances = parsed.into_iter().collect::<Result<Vec<_>, _>>()?;
+        match stop {
+            Some(e) => Err(e),
+            None => Ok(instances),
+        }
+    }
+}
+
+/// The text a batch of [`Reader::next_batch`] holds at most before it is
+/// parsed (a longer single statement is still read whole, up to the
+/// statement limit).
+pub const BATCH_BYTES: usize = 1 << 22;
+
+/// Parse one instance statement that ends on line `end_line`; an error
+/// names the line where it was found.
+fn parse_statement(bytes: &[u8], end_line: usize) -> Result<Instance, Error> {
+    let t = bytes.trim_ascii();
+    parse_instance(t).map_err(|(pos, e)| {
+        let after = t[pos.min(t.len())..].iter().filter(|&&b| b == b'\n');
+        let line = end_line - after.count();
+        Error::Format(format!("STEP line {line}: {e}"))
+    })
 }
 
 /// A cursor over one statement.
@@ -523,6 +580,41 @@ mod tests {
                 Param::Derived
             ]
         );
+    }
+
+    /// Every instance of `text`, read `max` statements at a time.
+    fn batched(text: &str, max: usize) -> Result<Vec<Instance>, Error> {
+        let mut r = Reader::new(text.as_bytes());
+        let mut out = Vec::new();
+        loop {
+            let batch = r.next_batch(max)?;
+            if batch.is_empty() {
+                return Ok(out);
+            }
+            out.extend(batch);
+        }
+    }
+
+    #[test]
+    fn batches_read_what_single_statements_read() {
+        let one_by_one = all(FILE).unwrap();
+        assert_eq!(one_by_one.len(), 3);
+        for max in [1, 2, 3, 100] {
+            assert_eq!(batched(FILE, max).unwrap(), one_by_one, "batches of {max}");
+        }
+    }
+
+    #[test]
+    fn a_batch_reports_the_first_error_in_file_order() {
+        // Line 3 does not parse; line 5 has a byte the splitter refuses.
+        let text = "DATA;\n#1 = A(1.);\n#2 = B(1,;\n#3 = C(2.);\n#4 = D(\u{e9});\n";
+        for max in [1, 2, 10] {
+            let e = batched(text, max).unwrap_err().to_string();
+            assert!(e.contains("STEP line 3"), "batches of {max}: {e}");
+        }
+        let later = "DATA;\n#1 = A(1.);\n#2 = D(\u{e9});\n#3 = B(1,;\n";
+        let e = batched(later, 10).unwrap_err().to_string();
+        assert!(e.contains("STEP line 3") && e.contains("outside a string"), "{e}");
     }
 
     #[test]

@@ -109,7 +109,7 @@ impl<T: Field + Ordered> SurfaceParameters<T> {
     ///     #3=DIRECTION('',(1.,0.,0.));#4=AXIS2_PLACEMENT_3D('',#1,#2,#3);\
     ///     #5=CYLINDRICAL_SURFACE('',#4,2.);ENDSEC;";
     /// let mut reader = Reader::new(data.as_bytes());
-    /// let mut table = Table::new();
+    /// let mut table = Table::default();
     /// while let Some(i) = reader.next_instance().unwrap() {
     ///     table.insert(i.id, i);
     /// }
