@@ -8,7 +8,7 @@ use super::{
     charge_each, load_exact, on_exact, open_input, parse_list, patch_f64, read_input, ExactScalar,
     ScalarKind,
 };
-use crate::session::{emit_raw, json_text};
+use crate::session::emit_raw;
 use exact_bezier::algebra::{Field, Ordered, RealAlgebraic, Scalar};
 use exact_bezier::audit::{ExactModel, Model, Origin};
 use exact_bezier::convert::{rect_to_tris, tri_to_degenerate_rect, tri_to_rects, Split};
@@ -23,7 +23,6 @@ use exact_bezier::step::{read_brep, BrepModel};
 use exact_bezier::trig::TrigPatch;
 use exact_bezier::Error;
 use num_rational::BigRational;
-use rayon::prelude::*;
 use serde_json::Value;
 
 /// What to convert to.
@@ -270,22 +269,22 @@ fn write_piece<T: JsonScalar + Ordered>(
 }
 
 /// A STEP B-rep: one document, or JSON Lines (every line but the last
-/// emitted here, the model line returned). The lines are written as text
-/// on all cores, and the model is freed on a worker thread while they are.
+/// emitted here, the model line returned). The model is freed on a worker
+/// thread while the lines are written.
 fn step_to_bezier(m: BrepModel, a: &Args) -> Result<Value, Error> {
     let write = |p: &Patch<RealAlgebraic>, o: &Origin| write_piece(p, o, a);
     if !a.jsonl {
         return brep_to_json(&m, &write);
     }
-    let mut lines = brep_to_lines(&m, &write)?;
+    let lines = brep_to_lines(&m, &write)?;
     rayon::spawn(move || drop(m));
-    let last = lines.pop().unwrap_or(Value::Null);
-    let text: Vec<String> = lines
-        .into_par_iter()
-        .map(|line| json_text(&line, false) + "\n")
-        .collect();
-    emit_raw(&text.concat());
-    Ok(last)
+    let mut text = String::with_capacity(lines.items.iter().map(|l| l.len() + 1).sum());
+    for item in &lines.items {
+        text.push_str(item);
+        text.push('\n');
+    }
+    emit_raw(&text);
+    Ok(lines.model)
 }
 
 /// The patch with weights scaled to sum 1.

@@ -322,28 +322,35 @@ pub fn brep_model_json(m: &BrepModel, write: PieceWriter) -> Result<Value, Error
     Ok(o)
 }
 
-fn parts(m: &BrepModel, write: PieceWriter) -> Result<[Vec<Value>; 3], Error> {
+/// The faces, edges and vertices of `m` as JSON, each passed through
+/// `finish` on the core that wrote it.
+fn parts<T: Send>(
+    m: &BrepModel,
+    write: PieceWriter,
+    finish: impl Fn(Value) -> T + Sync,
+) -> Result<[Vec<T>; 3], Error> {
     m.convert_pieces();
     let faces: Vec<&Face> = m.faces.values().collect();
     let edges: Vec<&Edge> = m.edges.values().collect();
-    let faces = on_all_cores(&faces, |f| face_to_json(f, write))?;
-    let edges = on_all_cores(&edges, |e| edge_to_json(e, write))?;
-    let vertices = m
-        .vertices
-        .iter()
-        .map(|(&v, p)| json!({"kind": "vertex", "id": id(v), "point": point_to_json(p)}))
-        .collect();
+    let faces = on_all_cores(&faces, |f| face_to_json(f, write).map(&finish))?;
+    let edges = on_all_cores(&edges, |e| edge_to_json(e, write).map(&finish))?;
+    let vertices: Vec<_> = m.vertices.iter().collect();
+    let vertices = on_all_cores(&vertices, |&(&v, p)| {
+        Ok(finish(
+            json!({"kind": "vertex", "id": id(v), "point": point_to_json(p)}),
+        ))
+    })?;
     Ok([faces, edges, vertices])
 }
 
 /// `f` of every item, in order, computed on all cores under this thread's
 /// limits; the first error in order, if any.
-fn on_all_cores<I: Sync, F>(items: &[I], f: F) -> Result<Vec<Value>, Error>
+fn on_all_cores<I: Sync, T: Send, F>(items: &[I], f: F) -> Result<Vec<T>, Error>
 where
-    F: Fn(&I) -> Result<Value, Error> + Sync,
+    F: Fn(&I) -> Result<T, Error> + Sync,
 {
     let limits = crate::limits::current();
-    let results: Vec<Result<Value, Error>> = items
+    let results: Vec<Result<T, Error>> = items
         .par_iter()
         .map(|x| crate::limits::with_limits(limits, || f(x)))
         .collect();
@@ -358,7 +365,7 @@ where
 /// The piece writer's errors.
 pub fn brep_to_json(m: &BrepModel, write: PieceWriter) -> Result<Value, Error> {
     let mut o = brep_model_json(m, write)?;
-    let [faces, edges, vertices] = parts(m, write)?;
+    let [faces, edges, vertices] = parts(m, write, |v| v)?;
     o["faces"] = Value::Array(faces);
     o["edges"] = Value::Array(edges);
     o["vertices"] = Value::Array(vertices);
@@ -368,14 +375,27 @@ pub fn brep_to_json(m: &BrepModel, write: PieceWriter) -> Result<Value, Error> {
 /// The B-rep as JSON Lines: one face a line, then one edge, one vertex a
 /// line, then the model object (so a reader streams the faces and finds
 /// the summary at the end).
+#[derive(Clone, Debug)]
+pub struct BrepLines {
+    /// One compact JSON text per face, edge and vertex, in that order
+    /// (written on all cores, each without its newline).
+    pub items: Vec<String>,
+    /// The model object of [`brep_model_json`], the last line.
+    pub model: Value,
+}
+
+/// The B-rep as [`BrepLines`]. Each item is written as text on the core
+/// that built it, so the JSON values of the whole model never coexist.
 ///
 /// # Errors
 ///
 /// The piece writer's errors.
-pub fn brep_to_lines(m: &BrepModel, write: PieceWriter) -> Result<Vec<Value>, Error> {
-    let [mut faces, edges, vertices] = parts(m, write)?;
-    faces.extend(edges);
-    faces.extend(vertices);
-    faces.push(brep_model_json(m, write)?);
-    Ok(faces)
+pub fn brep_to_lines(m: &BrepModel, write: PieceWriter) -> Result<BrepLines, Error> {
+    let [mut items, edges, vertices] = parts(m, write, |v| v.to_string())?;
+    items.extend(edges);
+    items.extend(vertices);
+    Ok(BrepLines {
+        items,
+        model: brep_model_json(m, write)?,
+    })
 }

@@ -35,7 +35,8 @@ mod duplicate_keys;
 mod model;
 mod nurbs;
 pub use brep::{
-    brep_model_json, brep_to_json, brep_to_lines, edge_to_json, face_to_json, PieceWriter,
+    brep_model_json, brep_to_json, brep_to_lines, edge_to_json, face_to_json, BrepLines,
+    PieceWriter,
 };
 pub use model::{
     audit_to_json, brep_audit_to_json, is_step, origin_from_json, origin_to_json, piece_to_json,

@@ -1137,7 +1137,7 @@ impl Default for BrepOptions {
     }
 }
 
-/// The statements parsed on all cores at a time (see [`Reader::next_batch`]).
+/// The statements parsed on all cores at a time (see [`Reader::split_batch`]).
 const PARSE_BATCH: usize = 4096;
 
 /// [`read_brep`] with [`BrepOptions`].
@@ -1150,12 +1150,17 @@ pub fn read_brep_with(input: impl BufRead, options: BrepOptions) -> Result<BrepM
     let mut collector = Collector::default();
     let mut store = Store::default();
     let mut order = Vec::new();
-    loop {
-        let batch = reader.next_batch(PARSE_BATCH)?;
-        if batch.is_empty() {
-            break;
-        }
-        for inst in batch {
+    // Each batch is parsed on the pool while this thread splits the next.
+    let mut batch = reader.split_batch(PARSE_BATCH);
+    while !batch.is_empty() {
+        let current = std::mem::take(&mut batch);
+        let mut parsed = None;
+        let slot = &mut parsed;
+        batch = rayon::in_place_scope(|s| {
+            s.spawn(move |_| *slot = Some(current.parse()));
+            reader.split_batch(PARSE_BATCH)
+        });
+        for inst in parsed.unwrap_or_else(|| Ok(Vec::new()))? {
             order.push(inst.id);
             store.insert(inst.id, inst);
         }

@@ -93,10 +93,10 @@ impl<R: BufRead> Reader<R> {
         }
     }
 
-    /// The next statement's bytes (comments removed, strings kept), or
-    /// `None` at the end of input.
-    fn statement(&mut self) -> Result<Option<Vec<u8>>, Error> {
-        let mut out: Vec<u8> = Vec::new();
+    /// Append the next statement's bytes (comments removed, strings kept)
+    /// to `out`; `false` (and `out` unchanged) at the end of input.
+    fn statement(&mut self, out: &mut Vec<u8>) -> Result<bool, Error> {
+        let start = out.len();
         let mut in_str = false;
         let mut comment = false;
         let mut prev = 0u8;
@@ -106,16 +106,29 @@ impl<R: BufRead> Reader<R> {
                 .fill_buf()
                 .map_err(|e| Error::Io(format!("cannot read the STEP file: {e}")))?;
             if buf.is_empty() {
-                let rest = String::from_utf8_lossy(&out).trim().to_owned();
-                return if rest.is_empty() {
-                    Ok(None)
+                let rest = out[start..].trim_ascii().is_empty();
+                out.truncate(start);
+                return if rest {
+                    Ok(false)
                 } else {
                     Err(self.err("the file ends inside a statement (missing ';')"))
                 };
             }
             let mut used = 0;
             let mut finished = false;
-            for &b in buf {
+            while used < buf.len() {
+                // A run of bytes that change no state is copied (or, in a
+                // comment, skipped) at once.
+                let run = quiet_run(&buf[used..], in_str, comment);
+                if run > 0 {
+                    if !comment {
+                        out.extend_from_slice(&buf[used..used + run]);
+                    }
+                    prev = buf[used + run - 1];
+                    used += run;
+                    continue;
+                }
+                let b = buf[used];
                 used += 1;
                 if b == b'\n' {
                     self.line += 1;
@@ -155,11 +168,11 @@ impl<R: BufRead> Reader<R> {
                 prev = b;
             }
             self.input.consume(used);
-            if out.len() > MAX_STATEMENT {
+            if out.len() - start > MAX_STATEMENT {
                 return Err(self.err(&format!("a statement longer than {MAX_STATEMENT} bytes")));
             }
             if finished {
-                return Ok(Some(out));
+                return Ok(true);
             }
         }
     }
@@ -168,31 +181,28 @@ impl<R: BufRead> Reader<R> {
         Error::Format(format!("STEP line {}: {what}", self.line))
     }
 
-    /// The next instance statement of the DATA section (its bytes, and the
-    /// line where it ends), `None` after the section's end.
-    fn next_statement(&mut self) -> Result<Option<(Vec<u8>, usize)>, Error> {
+    /// Append the next instance statement of the DATA section to `out`
+    /// and give the line where it ends; `None` after the section's end.
+    fn next_statement(&mut self, out: &mut Vec<u8>) -> Result<Option<usize>, Error> {
         while !self.done {
-            let Some(bytes) = self.statement()? else {
+            let start = out.len();
+            if !self.statement(out)? {
                 self.done = true;
                 break;
-            };
-            let t = bytes.trim_ascii();
+            }
+            let t = out[start..].trim_ascii();
             if !self.in_data {
                 if t == b"DATA" || t.starts_with(b"DATA(") || t.starts_with(b"DATA (") {
                     self.in_data = true;
                 }
-                continue;
-            }
-            if t == b"ENDSEC" {
+            } else if t == b"ENDSEC" {
                 self.in_data = false;
-                continue;
-            }
-            if t.starts_with(b"#") {
-                return Ok(Some((bytes, self.line)));
-            }
-            if t.starts_with(b"END-ISO-10303-21") {
+            } else if t.starts_with(b"#") {
+                return Ok(Some(self.line));
+            } else if t.starts_with(b"END-ISO-10303-21") {
                 self.done = true;
             }
+            out.truncate(start);
         }
         Ok(None)
     }
@@ -203,51 +213,85 @@ impl<R: BufRead> Reader<R> {
     ///
     /// [`Error::Format`] with the line number for malformed syntax.
     pub fn next_instance(&mut self) -> Result<Option<Instance>, Error> {
-        self.next_statement()?
-            .map(|(bytes, end_line)| parse_statement(&bytes, end_line))
+        let mut text = Vec::new();
+        self.next_statement(&mut text)?
+            .map(|end_line| parse_statement(&text, end_line))
             .transpose()
     }
 
-    /// The next instances of the DATA section, in order: up to `max` of
-    /// them (and up to [`BATCH_BYTES`] of text, or one statement if it is
-    /// longer), split from the stream here and parsed on all cores. Empty
-    /// after the section's end.
+    /// The next instance statements of the DATA section, split from the
+    /// stream but not parsed: up to `max` of them and up to [`BATCH_BYTES`]
+    /// of text (or one longer statement). Empty after the section's end; a
+    /// syntax error the splitter finds ends the batch and the reading.
+    pub fn split_batch(&mut self, max: usize) -> Statements {
+        let mut batch = Statements::default();
+        while batch.spans.len() < max && batch.text.len() < BATCH_BYTES {
+            let start = batch.text.len();
+            match self.next_statement(&mut batch.text) {
+                Ok(Some(end_line)) => batch.spans.push((start, batch.text.len(), end_line)),
+                Ok(None) => break,
+                Err(e) => {
+                    batch.text.truncate(start);
+                    batch.stop = Some(e);
+                    self.done = true;
+                    break;
+                }
+            }
+        }
+        batch
+    }
+
+    /// The next instances of the DATA section, in order: a
+    /// [`split_batch`](Reader::split_batch), [parsed](Statements::parse)
+    /// on all cores. Empty after the section's end.
     ///
     /// # Errors
     ///
     /// As [`Reader::next_instance`]: the first malformed statement in the
     /// file's order.
     pub fn next_batch(&mut self, max: usize) -> Result<Vec<Instance>, Error> {
+        self.split_batch(max).parse()
+    }
+}
+
+/// Instance statements split from the stream and not yet parsed
+/// ([`Reader::split_batch`]): their text in one buffer, where each ends
+/// (byte range and line), and the splitter's error that ended them, if any.
+#[derive(Debug, Default)]
+pub struct Statements {
+    text: Vec<u8>,
+    spans: Vec<(usize, usize, usize)>,
+    stop: Option<Error>,
+}
+
+impl Statements {
+    /// No statement and no error: the stream is read.
+    pub fn is_empty(&self) -> bool {
+        self.spans.is_empty() && self.stop.is_none()
+    }
+
+    /// The instances, parsed on all cores, in order.
+    ///
+    /// # Errors
+    ///
+    /// The first malformed statement in the file's order: a statement that
+    /// does not parse, else the splitter's error after the last statement.
+    pub fn parse(self) -> Result<Vec<Instance>, Error> {
         use rayon::prelude::*;
-        let mut statements = Vec::new();
-        let mut bytes = 0;
-        let mut stop = None;
-        while statements.len() < max && bytes < BATCH_BYTES {
-            match self.next_statement() {
-                Ok(Some(s)) => {
-                    bytes += s.0.len();
-                    statements.push(s);
-                }
-                Ok(None) => break,
-                Err(e) => {
-                    stop = Some(e);
-                    break;
-                }
-            }
-        }
-        let parsed: Vec<Result<Instance, Error>> = statements
+        let parsed: Vec<Result<Instance, Error>> = self
+            .spans
             .par_iter()
-            .map(|(text, end_line)| parse_statement(text, *end_line))
+            .map(|&(start, end, end_line)| parse_statement(&self.text[start..end], end_line))
             .collect();
         let instances = parsed.into_iter().collect::<Result<Vec<_>, _>>()?;
-        match stop {
+        match self.stop {
             Some(e) => Err(e),
             None => Ok(instances),
         }
     }
 }
 
-/// The text a batch of [`Reader::next_batch`] holds at most before it is
+/// The text a batch of [`Reader::split_batch`] holds at most before it is
 /// parsed (a longer single statement is still read whole, up to the
 /// statement limit).
 pub const BATCH_BYTES: usize = 1 << 22;
@@ -261,6 +305,19 @@ fn parse_statement(bytes: &[u8], end_line: usize) -> Result<Instance, Error> {
         let line = end_line - after.count();
         Error::Format(format!("STEP line {line}: {e}"))
     })
+}
+
+/// How many leading bytes of `buf` change no state of the splitter: in a
+/// comment, anything but `*`, `/` and a newline; in a string, anything but
+/// a quote and a newline; elsewhere printable ASCII but the quote, `/`,
+/// `*` and `;`.
+fn quiet_run(buf: &[u8], in_str: bool, comment: bool) -> usize {
+    let quiet = |b: &u8| match (comment, in_str) {
+        (true, _) => !matches!(b, b'*' | b'/' | b'\n'),
+        (false, true) => !matches!(b, b'\'' | b'\n'),
+        (false, false) => matches!(b, 0x20..=0x7e) && !matches!(b, b'\'' | b'/' | b'*' | b';'),
+    };
+    buf.iter().position(|b| !quiet(b)).unwrap_or(buf.len())
 }
 
 /// A cursor over one statement.
@@ -614,7 +671,10 @@ mod tests {
         }
         let later = "DATA;\n#1 = A(1.);\n#2 = D(\u{e9});\n#3 = B(1,;\n";
         let e = batched(later, 10).unwrap_err().to_string();
-        assert!(e.contains("STEP line 3") && e.contains("outside a string"), "{e}");
+        assert!(
+            e.contains("STEP line 3") && e.contains("outside a string"),
+            "{e}"
+        );
     }
 
     #[test]
