@@ -257,13 +257,15 @@ fn write_piece<T: JsonScalar + Ordered>(
     origin: &Origin,
     a: &Args,
 ) -> Result<Value, Error> {
+    let scaled;
     let patch = if a.normalize {
-        normalized(p)?
+        scaled = normalized(p)?;
+        &scaled
     } else {
-        p.clone()
+        p
     };
     match a.scalar {
-        ScalarKind::Exact => piece_to_json(&patch, origin),
+        ScalarKind::Exact => piece_to_json(patch, origin),
         ScalarKind::F64 => piece_to_json(&patch.to_f64(), origin),
     }
 }
