@@ -26,21 +26,6 @@ pub struct Interval {
     pub hi: f64,
 }
 
-fn next_up(x: f64) -> f64 {
-    if x.is_nan() || x == f64::INFINITY {
-        return x;
-    }
-    if x == 0.0 {
-        return f64::from_bits(1);
-    }
-    let b = x.to_bits();
-    f64::from_bits(if x > 0.0 { b + 1 } else { b - 1 })
-}
-
-fn next_down(x: f64) -> f64 {
-    -next_up(-x)
-}
-
 /// The least of four values, NaNs ignored (`+∞` when all are NaN).
 fn min4(p: [f64; 4]) -> f64 {
     f64::INFINITY.min(p[0]).min(p[1]).min(p[2]).min(p[3])
@@ -55,8 +40,8 @@ impl Interval {
     /// `[lo, hi]` widened outward by one ulp (the rounding of one operation).
     fn rounded(lo: f64, hi: f64) -> Interval {
         Interval {
-            lo: next_down(lo),
-            hi: next_up(hi),
+            lo: lo.next_down(),
+            hi: hi.next_up(),
         }
     }
 
@@ -156,7 +141,7 @@ impl Interval {
         if self.lo <= 0.0 && self.hi >= 0.0 {
             return Interval {
                 lo: 0.0,
-                hi: next_up(a.max(b) * a.max(b)),
+                hi: (a.max(b) * a.max(b)).next_up(),
             };
         }
         Interval::rounded(a.min(b) * a.min(b), a.max(b) * a.max(b))
@@ -169,10 +154,10 @@ impl Interval {
         if self.hi < 0.0 {
             return None;
         }
-        let lo = next_down(self.lo.max(0.0).sqrt()).max(0.0);
+        let lo = self.lo.max(0.0).sqrt().next_down().max(0.0);
         Some(Interval {
             lo,
-            hi: next_up(self.hi.sqrt()),
+            hi: self.hi.sqrt().next_up(),
         })
     }
 
@@ -183,7 +168,7 @@ impl Interval {
 
     /// `hi − lo`, rounded up.
     pub fn width(&self) -> f64 {
-        next_up(self.hi - self.lo)
+        (self.hi - self.lo).next_up()
     }
 
     /// The midpoint (an `f64` inside the interval).
