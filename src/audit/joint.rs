@@ -527,7 +527,7 @@ fn along(
     curves: &[ICurve],
     fields: Fields<'_>,
     proved: &Proved,
-    (goal, work): ((Target, f64), u64),
+    (goal, work): (Goal, u64),
     f: impl Fn(&Around) -> Option<Bound> + Copy,
 ) -> Result<Measure, Error> {
     along_by(curves, goal, work, |k, c, t| {
@@ -539,11 +539,7 @@ fn along(
 /// `|C − S∘p|`; at least 0 (a foot found by Newton may be a stationary
 /// point other than the nearest, so its distance is no lower bound: an
 /// edge far from the face is undecided, never wrongly failed).
-fn spline_gap(
-    curves: &[ICurve],
-    field: &SplineField<'_>,
-    goal: (Target, f64),
-) -> Result<Measure, Error> {
+fn spline_gap(curves: &[ICurve], field: &SplineField<'_>, goal: Goal) -> Result<Measure, Error> {
     along_by(curves, goal, MEASURE_WORK, |_, c, t| {
         Ok(field
             .gap_over(c, t)
@@ -660,6 +656,30 @@ fn curvature_along(field: &Field<'_>, curve: &ICurve, t: Interval) -> Option<[In
     }
 }
 
+/// How far a measure along an edge is refined: to `target`, or less once
+/// its verdict is decided — the upper bound under `below` (the measure is
+/// within tolerance), or the lower bound over `above` (it fails) with the
+/// enclosure within [`FAILED_REL`] of its upper end.
+#[derive(Clone, Copy, Debug)]
+struct Goal {
+    target: Target,
+    below: f64,
+    above: f64,
+}
+
+/// The relative width a failing measure is refined to (its magnitude to
+/// 1 %; the target's `10⁻³` cost up to the whole work cap on curvatures,
+/// whose enclosures narrow only linearly).
+const FAILED_REL: f64 = 1e-2;
+
+impl Goal {
+    /// Is the verdict decided by the greatest upper bound `upper` and the
+    /// greatest lower bound `lower` proved so far?
+    fn decided(&self, upper: f64, lower: f64) -> bool {
+        upper < self.below || (lower > self.above && upper - lower <= FAILED_REL * upper)
+    }
+}
+
 /// The maximum over all the edge's curves of a measure bounded on piece
 /// `t` of curve `k` by `bound(k, curve, t)`, each curve's cap an equal
 /// share of what is left of `work` when its turn comes (what a curve
@@ -668,7 +688,7 @@ fn curvature_along(field: &Field<'_>, curve: &ICurve, t: Interval) -> Option<[In
 /// whose first pieces cost little had their angles unproved).
 fn along_by(
     curves: &[ICurve],
-    (target, enough): (Target, f64),
+    goal: Goal,
     work: u64,
     mut bound: impl FnMut(usize, &ICurve, Interval) -> Result<Option<Bound>, Error>,
 ) -> Result<Measure, Error> {
@@ -680,8 +700,8 @@ fn along_by(
         let e = capped(share, "a certified measure along an edge", || {
             maximize_until(
                 Interval { lo: 0.0, hi: 1.0 },
-                target,
-                |u| u < enough,
+                goal.target,
+                |upper, lower| goal.decided(upper, lower),
                 |t| bound(k, c, t),
             )
         })?;
@@ -850,28 +870,31 @@ fn measure_capped(
     // below a third of it (the two gaps' sum bounds the face gap).
     let floor = length_resolution(&curves)?;
     let length = match tol.length {
-        Some(t) => (
-            Target {
+        Some(t) => Goal {
+            target: Target {
                 rel: 1e-3,
                 abs: (t.lo / 100.0).max(floor),
             },
-            t.lo / 3.0,
-        ),
-        None => (
-            Target {
+            below: t.lo / 3.0,
+            above: t.hi,
+        },
+        None => Goal {
+            target: Target {
                 rel: 1e-3,
                 abs: floor,
             },
-            0.0,
-        ),
+            below: 0.0,
+            above: 0.0,
+        },
     };
-    let angular = (
-        Target {
+    let angular = Goal {
+        target: Target {
             rel: 1e-3,
             abs: tol.angle.lo / 100.0,
         },
-        tol.angle.lo,
-    );
+        below: tol.angle.lo,
+        above: tol.angle.hi,
+    };
     let proved = Proved::default();
     let work = if [&s0, &s1].iter().any(|f| matches!(f, Field::Spline(_))) {
         SPLINE_MEASURE_WORK
@@ -945,13 +968,14 @@ fn measure_capped(
             {
                 Measure::Exact
             } else {
-                let target = (
-                    Target {
+                let target = Goal {
+                    target: Target {
                         rel: 1e-3,
                         abs: tol.curvature.lo / 100.0,
                     },
-                    tol.curvature.lo,
-                );
+                    below: tol.curvature.lo,
+                    above: tol.curvature.hi,
+                };
                 let spline = [&s0, &s1].iter().any(|f| matches!(f, Field::Spline(_)));
                 settle(along_by(&curves, target, work, |k, c, t| {
                     let composed = spline

@@ -83,12 +83,13 @@ pub fn maximize(
     target: Target,
     bound: impl FnMut(Interval) -> Result<Option<Bound>, Error>,
 ) -> Result<Enclosure, Error> {
-    maximize_until(range, target, |_| false, bound)
+    maximize_until(range, target, |_, _| false, bound)
 }
 
 /// [`maximize`], stopping early, with `tight: false`, as soon as
-/// `decided(U)` holds for the greatest upper bound `U` (e.g. `U` below a
-/// tolerance: the verdict needs no tighter enclosure).
+/// `decided(U, L)` holds for the greatest upper bound `U` and the greatest
+/// lower bound `L` (e.g. `U` below a tolerance, or `L` above it: the
+/// verdict needs no tighter enclosure); asked only once `U` is finite.
 ///
 /// # Errors
 ///
@@ -96,7 +97,7 @@ pub fn maximize(
 pub fn maximize_until(
     range: Interval,
     target: Target,
-    decided: impl Fn(f64) -> bool,
+    decided: impl Fn(f64, f64) -> bool,
     mut bound: impl FnMut(Interval) -> Result<Option<Bound>, Error>,
 ) -> Result<Enclosure, Error> {
     let mut pieces: BinaryHeap<Piece> = BinaryHeap::new();
@@ -131,7 +132,7 @@ pub fn maximize_until(
         }
         let Piece { upper, t } = *pieces.peek().expect("at least one piece");
         let done = upper.is_finite() && upper - lower <= target.rel * upper + target.abs;
-        if done || decided(upper) || t.width() < MIN_PIECE {
+        if done || (upper.is_finite() && decided(upper, lower)) || t.width() < MIN_PIECE {
             return Ok(enclosure(&pieces, lower, done).expect("a finite upper bound"));
         }
         pieces.pop();
@@ -190,5 +191,68 @@ impl PartialOrd for Piece {
 impl Ord for Piece {
     fn cmp(&self, o: &Piece) -> Ordering {
         self.upper.total_cmp(&o.upper)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The constant `q(t) = 2` on `[0, 1]` (a cylinder's curvature),
+    /// bounded on `[a, b]` by `2 + (b − a)` above (an overestimate that
+    /// narrows linearly, like an interval extension's) and `2` below;
+    /// counts the pieces.
+    fn linear(count: &mut u32) -> impl FnMut(Interval) -> Result<Option<Bound>, Error> + '_ {
+        move |t| {
+            *count += 1;
+            Ok(Some(Bound {
+                upper: 2.0 + (t.hi - t.lo),
+                lower: 2.0,
+            }))
+        }
+    }
+
+    const UNIT: Interval = Interval { lo: 0.0, hi: 1.0 };
+    const TARGET: Target = Target {
+        rel: 1e-3,
+        abs: 0.0,
+    };
+
+    #[test]
+    fn a_lower_bound_over_the_tolerance_stops_the_refinement_early() {
+        let (mut full, mut early) = (0, 0);
+        let tight = maximize(UNIT, TARGET, linear(&mut full)).unwrap();
+        let failed = maximize_until(
+            UNIT,
+            TARGET,
+            |u, l| l > 1.5 && u - l <= 1e-2 * u,
+            linear(&mut early),
+        )
+        .unwrap();
+        assert!(tight.tight && tight.hi - tight.lo <= 1e-3 * tight.hi);
+        assert!(!failed.tight && failed.lo > 1.5 && failed.hi - failed.lo <= 1e-2 * failed.hi);
+        for e in [tight, failed] {
+            assert!(e.lo <= 2.0 && 2.0 <= e.hi, "{e:?}");
+        }
+        assert!(early * 5 < full, "{early} pieces against {full}");
+    }
+
+    #[test]
+    fn decided_is_not_asked_before_every_piece_is_bounded() {
+        let mut first = true;
+        let e = maximize_until(
+            UNIT,
+            TARGET,
+            |_, _| true,
+            |t| {
+                let proved = !std::mem::take(&mut first);
+                Ok(proved.then_some(Bound {
+                    upper: 1.0 + t.hi,
+                    lower: 1.0 + t.lo,
+                }))
+            },
+        )
+        .unwrap();
+        assert!(e.hi.is_finite() && e.lo <= 2.0 && 2.0 <= e.hi, "{e:?}");
     }
 }
