@@ -491,23 +491,30 @@ mod tests {
         }
 
         /// The word paths of product and sum (parts of at most 64 bits,
-        /// planted common factors, signs, sums that cancel or overflow
-        /// `i128`) give num-rational's numerator and denominator.
+        /// signs, sums that cancel or overflow `i128`) give num-rational's
+        /// numerator and denominator, with common factors planted across
+        /// the operands: `g` between `a`'s numerator and `b`'s
+        /// denominator, `h` between `b`'s numerator and `a`'s denominator.
         #[test]
         fn word_product_and_sum_are_the_field_operations(
             n in any::<i64>(), d in 1..u64::MAX, m in any::<i64>(), e in 1..u64::MAX,
-            f in 1i64..1 << 20, same_denominator in any::<bool>(),
+            g in 1i64..1 << 20, h in 1i64..1 << 20, same_denominator in any::<bool>(),
         ) {
             let q = |n: i128, d: i128| BigRational::new(n.into(), d.into());
-            let f = i128::from(f);
-            let a = q(i128::from(n) / f * f, i128::from(d) / f as i128 * f + 1);
+            let (g, h) = (i128::from(g), i128::from(h));
+            // `x` rounded toward zero to a multiple of `f` (a denominator to
+            // a nonzero one): the size stays within `x`'s.
+            let times = |x: i128, f: i128| x / f * f;
+            let positive_times = |x: i128, f: i128| (x / f).max(1) * f;
+            let a = q(times(n.into(), g), positive_times(d.into(), h));
             let b = if same_denominator {
                 BigRational::new(m.into(), a.denom().clone())
             } else {
-                q(i128::from(m) / f * f, i128::from(e))
+                q(times(m.into(), h), positive_times(e.into(), g))
             };
             let parts = |x: BigRational| x.into_raw();
             prop_assert_eq!(parts(product(&a, &b)), parts(&a * &b));
+            prop_assert_eq!(parts(product(&b, &a)), parts(&a * &b));
             prop_assert_eq!(parts(sum(&a, &b)), parts(&a + &b));
             prop_assert_eq!(parts(sum(&a, &-&a)), parts(BigRational::zero()));
         }
