@@ -297,10 +297,8 @@ pub fn fraction(numer: BigInt, denom: BigInt) -> BigRational {
 /// two gcds of the factors' sizes instead of one of the product's (gcds
 /// cost the square of the size; one against a small or unit denominator is
 /// a single remainder, or nothing). num-rational's own product reduces
-/// the product by the binary gcd. Parts that fit 64-bit words take the
-/// unreduced product in 128 bits and one gcd of it instead (no big-integer
-/// quotients). Reference: D. E. Knuth, *The Art of Computer Programming*,
-/// vol. 2, 3rd ed., §4.5.1.
+/// the product by the binary gcd. Reference: D. E. Knuth, *The Art of
+/// Computer Programming*, vol. 2, 3rd ed., §4.5.1.
 ///
 /// ```
 /// use exact_bezier::algebra::gcd::product;
@@ -313,50 +311,9 @@ pub fn product(a: &BigRational, b: &BigRational) -> BigRational {
     if a.is_zero() || b.is_zero() {
         return BigRational::zero();
     }
-    if let Some(q) = word_product(a, b) {
-        return q;
-    }
     let (n1, d2) = cancel(a.numer(), b.denom());
     let (n2, d1) = cancel(b.numer(), a.denom());
     BigRational::new_raw(&*n1 * &*n2, &*d1 * &*d2)
-}
-
-/// [`product`] of fractions whose parts fit 64-bit words: one gcd of the
-/// 128-bit products `n₁n₂` and `d₁d₂` (the unreduced product, reduced
-/// once), cheaper on words than the two cross gcds with their big-integer
-/// quotients; `None` for wider parts.
-fn word_product(a: &BigRational, b: &BigRational) -> Option<BigRational> {
-    let n =
-        u128::from(a.numer().magnitude().to_u64()?) * u128::from(b.numer().magnitude().to_u64()?);
-    let d =
-        u128::from(a.denom().magnitude().to_u64()?) * u128::from(b.denom().magnitude().to_u64()?);
-    let negative = (a.numer().sign() == Sign::Minus) != (b.numer().sign() == Sign::Minus);
-    Some(reduced_words(n, negative, d))
-}
-
-/// The fraction `±n/d` (`d > 0`) in lowest terms by one [`gcd_u128`].
-fn reduced_words(n: u128, negative: bool, d: u128) -> BigRational {
-    let g = gcd_u128(n, d);
-    let n = BigInt::from(n / g);
-    BigRational::new_raw(if negative { -n } else { n }, BigInt::from(d / g))
-}
-
-/// [`sum`] of fractions whose numerators fit `i64` and denominators `u64`
-/// (when the cross sum `n₁d₂ + n₂d₁` fits `i128`): one gcd of the 128-bit
-/// cross sum and product of the denominators; `None` otherwise.
-fn word_sum(a: &BigRational, b: &BigRational) -> Option<BigRational> {
-    let (d1, d2) = (a.denom().to_u64()?, b.denom().to_u64()?);
-    let t1 = i128::from(a.numer().to_i64()?) * i128::from(d2);
-    let t2 = i128::from(b.numer().to_i64()?) * i128::from(d1);
-    let t = t1.checked_add(t2)?;
-    if t == 0 {
-        return Some(BigRational::zero());
-    }
-    Some(reduced_words(
-        t.unsigned_abs(),
-        t < 0,
-        u128::from(d1) * u128::from(d2),
-    ))
 }
 
 /// `(n/g, d/g)` with `g = gcd(n, d)`, borrowed where `g = 1`.
@@ -382,8 +339,7 @@ fn cancel<'a>(n: &'a BigInt, d: &'a BigInt) -> (Cow<'a, BigInt>, Cow<'a, BigInt>
 /// ```
 ///
 /// gcds of the denominators' size instead of one of the cross product's
-/// (for `d = 1` none more: the sum is already reduced). Word-sized parts
-/// take the cross sum in 128 bits and one gcd of it. Reference: Knuth,
+/// (for `d = 1` none more: the sum is already reduced). Reference: Knuth,
 /// *The Art of Computer Programming*, vol. 2, §4.5.1.
 ///
 /// ```
@@ -395,9 +351,6 @@ fn cancel<'a>(n: &'a BigInt, d: &'a BigInt) -> (Cow<'a, BigInt>, Cow<'a, BigInt>
 /// assert_eq!(sum(&q(1, 6), &q(1, 35)), q(41, 210));
 /// ```
 pub fn sum(a: &BigRational, b: &BigRational) -> BigRational {
-    if let Some(q) = word_sum(a, b) {
-        return q;
-    }
     let (d1, d2) = (a.denom(), b.denom());
     let d = BigInt::from(gcd(d1.magnitude(), d2.magnitude()));
     if d.is_one() {
@@ -483,35 +436,6 @@ mod tests {
             };
             // Numerator and denominator compared, not the values: a
             // `Ratio` compares equal to its unreduced forms.
-            let parts = |x: BigRational| x.into_raw();
-            prop_assert_eq!(parts(product(&a, &b)), parts(&a * &b));
-            prop_assert_eq!(parts(product(&b, &a)), parts(&a * &b));
-            prop_assert_eq!(parts(sum(&a, &b)), parts(&a + &b));
-            prop_assert_eq!(parts(sum(&a, &-&a)), parts(BigRational::zero()));
-        }
-
-        /// The word paths of product and sum (parts of at most 64 bits,
-        /// signs, sums that cancel or overflow `i128`) give num-rational's
-        /// numerator and denominator, with common factors planted across
-        /// the operands: `g` between `a`'s numerator and `b`'s
-        /// denominator, `h` between `b`'s numerator and `a`'s denominator.
-        #[test]
-        fn word_product_and_sum_are_the_field_operations(
-            n in any::<i64>(), d in 1..u64::MAX, m in any::<i64>(), e in 1..u64::MAX,
-            g in 1i64..1 << 20, h in 1i64..1 << 20, same_denominator in any::<bool>(),
-        ) {
-            let q = |n: i128, d: i128| BigRational::new(n.into(), d.into());
-            let (g, h) = (i128::from(g), i128::from(h));
-            // `x` rounded toward zero to a multiple of `f` (a denominator to
-            // a nonzero one): the size stays within `x`'s.
-            let times = |x: i128, f: i128| x / f * f;
-            let positive_times = |x: i128, f: i128| (x / f).max(1) * f;
-            let a = q(times(n.into(), g), positive_times(d.into(), h));
-            let b = if same_denominator {
-                BigRational::new(m.into(), a.denom().clone())
-            } else {
-                q(times(m.into(), h), positive_times(e.into(), g))
-            };
             let parts = |x: BigRational| x.into_raw();
             prop_assert_eq!(parts(product(&a, &b)), parts(&a * &b));
             prop_assert_eq!(parts(product(&b, &a)), parts(&a * &b));
