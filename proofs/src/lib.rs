@@ -314,32 +314,52 @@ pub fn abbreviate(text: &str) -> String {
     }
 }
 
-/// The first `Some` of `check` over `items` in their order (like
-/// `find_map`), with the items shared out over the available cores: worker
-/// `w` of `W` checks items `w, w + W, …` and stops at its first failure, and
-/// the failure of least index among the workers' is the first one overall,
-/// so the answer does not depend on the timing.
-pub(crate) fn first_failure<T: Sync, R: Send>(
+/// Per check, the first `Some` over `items` in their order (like
+/// `find_map`), for `K` checks computed together (claims that share one
+/// costly computation per item: `check` gives the `K` outcomes of one
+/// item). The items are shared out over the available cores: worker `w` of
+/// `W` checks items `w, w + W, …` and stops once each check has failed on
+/// one of its items, and per check the failure of least index among the
+/// workers' is the first one overall, so the answer does not depend on the
+/// timing.
+pub(crate) fn first_failures<T: Sync, R: Send, const K: usize>(
     items: &[T],
-    check: impl Fn(&T) -> Option<R> + Sync,
-) -> Option<R> {
+    check: impl Fn(&T) -> [Option<R>; K] + Sync,
+) -> [Option<R>; K] {
     let workers = std::thread::available_parallelism().map_or(1, |n| n.get());
     let check = &check;
+    let none = || std::array::from_fn::<Option<(usize, R)>, K, _>(|_| None);
     std::thread::scope(|scope| {
         let handles: Vec<_> = (0..workers)
             .map(|w| {
                 scope.spawn(move || {
-                    (w..items.len())
-                        .step_by(workers)
-                        .find_map(|k| check(&items[k]).map(|r| (k, r)))
+                    let mut found = none();
+                    for k in (w..items.len()).step_by(workers) {
+                        if found.iter().all(Option::is_some) {
+                            break;
+                        }
+                        for (slot, r) in found.iter_mut().zip(check(&items[k])) {
+                            if slot.is_none() {
+                                *slot = r.map(|r| (k, r));
+                            }
+                        }
+                    }
+                    found
                 })
             })
             .collect();
-        handles
-            .into_iter()
-            .filter_map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
-            .min_by_key(|(k, _)| *k)
-            .map(|(_, r)| r)
+        let mut first = none();
+        for h in handles {
+            let found = h.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
+            for (slot, f) in first.iter_mut().zip(found) {
+                if let Some((k, r)) = f
+                    && slot.as_ref().is_none_or(|(least, _)| k < *least)
+                {
+                    *slot = Some((k, r));
+                }
+            }
+        }
+        first.map(|f| f.map(|(_, r)| r))
     })
 }
 
@@ -422,15 +442,29 @@ pub fn run_all() -> Vec<(&'static str, Vec<Claim>)> {
 
 #[cfg(test)]
 mod tests {
-    use super::first_failure;
+    use super::first_failures;
 
     #[test]
     fn first_failure_is_the_first_in_order() {
         let items: Vec<usize> = (0..41).collect();
         // Failures at 7, 12 and 30: whatever worker finds which, 7 is first.
-        let fails = |k: &usize| [30, 12, 7].contains(k).then_some(*k * 10);
-        assert_eq!(first_failure(&items, fails), Some(70));
-        assert_eq!(first_failure(&items, |_| None::<()>), None);
-        assert_eq!(first_failure(&[] as &[usize], |k| Some(*k)), None);
+        let fails = |k: &usize| [[30, 12, 7].contains(k).then_some(*k * 10)];
+        assert_eq!(first_failures(&items, fails), [Some(70)]);
+        assert_eq!(first_failures(&items, |_| [None::<()>]), [None]);
+        assert_eq!(first_failures(&[] as &[usize], |k| [Some(*k)]), [None]);
+    }
+
+    #[test]
+    fn first_failures_are_the_first_in_order_per_check() {
+        let items: Vec<usize> = (0..41).collect();
+        // Check 0 fails at 30, 12, 7; check 1 at 40 only; check 2 never.
+        let fails = |k: &usize| {
+            [
+                [30, 12, 7].contains(k).then_some(*k),
+                (*k == 40).then_some(*k),
+                None,
+            ]
+        };
+        assert_eq!(first_failures(&items, fails), [Some(7), Some(40), None]);
     }
 }

@@ -89,9 +89,31 @@ fn for_all_bidegrees(
     expected: Verdict,
     check: impl Fn(usize, usize) -> Option<String> + Sync,
 ) -> Claim {
-    let failure = super::first_failure(&bidegrees(max), |&(m, n)| {
-        check(m, n).map(|why| format!("(m, n) = ({m}, {n}): {why}"))
-    });
+    let [failure] = failures_by_bidegree(max, |m, n| [check(m, n)]);
+    bidegree_claim(max, claim, source, expected, failure)
+}
+
+/// Per check, its first failure over the bidegrees up to `max` (in the
+/// order of [`bidegrees`]), prefixed with the bidegree: for claims whose
+/// checks share one computation per bidegree.
+fn failures_by_bidegree<const K: usize>(
+    max: usize,
+    checks: impl Fn(usize, usize) -> [Option<String>; K] + Sync,
+) -> [Option<String>; K] {
+    super::first_failures(&bidegrees(max), |&(m, n)| {
+        checks(m, n).map(|r| r.map(|why| format!("(m, n) = ({m}, {n}): {why}")))
+    })
+}
+
+/// The claim checked for every bidegree up to `max`, from its first
+/// failure (`None`: it holds for all).
+fn bidegree_claim(
+    max: usize,
+    claim: &str,
+    source: &str,
+    expected: Verdict,
+    failure: Option<String>,
+) -> Claim {
     let holds = failure.is_none();
     Claim::check(
         &format!("{claim} — checked for every 1 ≤ m, n ≤ {max}"),
@@ -120,13 +142,16 @@ pub fn claims() -> Vec<Claim> {
         scaling_keeps_points(),
         theorem1_only_if(),
         theorem1_if(),
-        quadratic_keeps_points(),
-        quadratic_corner_weights(),
+    ];
+    let [keeps, corners, eq17] = quadratic_map_claims();
+    out.extend([
+        keeps,
+        corners,
         eq19_equal_corners(),
-        eq17_matches(),
+        eq17,
         compact_form(),
         bernstein_product_eq15(),
-    ];
+    ]);
     out.extend(appendix_c());
     out.extend(denominators());
     out
@@ -322,14 +347,47 @@ fn sym_quadratic() -> Quadratic<Poly> {
 /// polynomials in Bernstein form of one bidegree are equal iff their
 /// coefficients are, so the identity is m+n+1 squared coefficient equalities
 /// per basis net — no evaluation at all.
-fn quadratic_keeps_points() -> Claim {
-    for_all_bidegrees(
-        max_symbolic(),
+fn quadratic_keeps_points(max: usize, failure: Option<String>) -> Claim {
+    bidegree_claim(
+        max,
         "quadratic reparameterization (9)-(17) keeps every point: new(s, t) = old(u(s,t), v(s,t)) (homogeneous identity, common factor E^m F^n), for all α1, α2, β1, β2, s, t",
         &format!("{SRC} eqs. (9)-(17)"),
         Verdict::Proved,
-        quadratic_identity,
+        failure,
     )
+}
+
+/// The three claims read off one run of the quadratic map (9)–(17) per
+/// bidegree on the net of symbolic weights, with symbolic α1, α2, β1, β2:
+/// [`quadratic_keeps_points`], [`quadratic_corner_weights`] and
+/// [`eq17_matches`]. The run and the weights' parts (the coefficient of
+/// each ω_ij) are computed once for the three, which each computed them
+/// for itself until 2026-11-28; the first claim's time holds the shared work.
+fn quadratic_map_claims() -> [Claim; 3] {
+    let max = max_symbolic();
+    let [keeps, corners, eq17] = failures_by_bidegree(max, quadratic_map_checks);
+    [
+        quadratic_keeps_points(max, keeps),
+        quadratic_corner_weights(max, corners),
+        eq17_matches(max, eq17),
+    ]
+}
+
+/// The outcomes at one bidegree of the three checks of
+/// [`quadratic_map_claims`], on one run of the map.
+fn quadratic_map_checks(m: usize, n: usize) -> [Option<String>; 3] {
+    let q = sym_quadratic();
+    let p = weight_net(m, n);
+    let r = p.quadratic_reparam(&q);
+    let corners = corners_differ(&p, &r, m, n);
+    match weight_parts(&r, m, n) {
+        Err(why) => [Some(why.clone()), corners, Some(why)],
+        Ok(parts) => [
+            points_differ(&q, &parts, m, n),
+            corners,
+            eq17_differs(&q, &parts, m, n),
+        ],
+    }
 }
 
 /// The check of [`quadratic_keeps_points`] at one bidegree: `None` when the
@@ -337,19 +395,34 @@ fn quadratic_keeps_points() -> Claim {
 /// (`benches/peers/arith`), which runs the same steps in FLINT.
 pub fn quadratic_identity(m: usize, n: usize) -> Option<String> {
     let q = sym_quadratic();
-    let d = m + n;
     let r = weight_net(m, n).quadratic_reparam(&q);
+    weight_parts(&r, m, n).map_or_else(Some, |parts| points_differ(&q, &parts, m, n))
+}
+
+/// `parts[k1][k2][i·(n+1) + j]`: the coefficient of ω_ij in weight
+/// (k1, k2) of `r`, the map of the (m, n) net of symbolic weights; an error
+/// if `r` is not of bidegree (m+n, m+n).
+fn weight_parts(r: &RectPatch<Poly>, m: usize, n: usize) -> Result<Vec<Vec<Vec<Poly>>>, String> {
+    let d = m + n;
     if r.degree() != (d, d) {
-        return Some(format!("bidegree {:?}", r.degree()));
+        return Err(format!("bidegree {:?}", r.degree()));
     }
     let names = weight_names(m, n);
     let names: Vec<&str> = names.iter().map(String::as_str).collect();
-    // parts[k1][k2][i·(n+1) + j]: the coefficient of w_ij in weight (k1, k2).
-    let parts: Vec<Vec<Vec<Poly>>> = r
-        .weights()
+    Ok(r.weights()
         .iter()
         .map(|row| row.iter().map(|x| x.linear_coefficients(&names)).collect())
-        .collect();
+        .collect())
+}
+
+/// The point identity of [`quadratic_keeps_points`] on the weights' parts
+/// ([`weight_parts`]): `None` when every Bernstein coefficient agrees.
+fn points_differ(
+    q: &Quadratic<Poly>,
+    parts: &[Vec<Vec<Poly>>],
+    m: usize,
+    n: usize,
+) -> Option<String> {
     let (s, one_minus_s) = ([Poly::zero(), one()], [one(), Poly::zero()]);
     let alpha = [q.alpha2.clone(), q.alpha1.clone()];
     let beta = [q.beta2.clone(), q.beta1.clone()];
@@ -447,27 +520,29 @@ fn weight_net(m: usize, n: usize) -> RectPatch<Poly> {
 /// The corner weights printed before (18) (bicubic), generalized:
 /// ω̃_{0,0} = α2^m β2^n ω_{0,0}, ω̃_{m+n,0} = (1−α2)^m β1^n ω_{m,0},
 /// ω̃_{0,m+n} = α1^m (1−β2)^n ω_{0,n}, ω̃_{m+n,m+n} = (1−α1)^m(1−β1)^n ω_{m,n}.
-fn quadratic_corner_weights() -> Claim {
-    for_all_bidegrees(
-        max_symbolic(),
+fn quadratic_corner_weights(max: usize, failure: Option<String>) -> Claim {
+    bidegree_claim(
+        max,
         "corner weights before (18): ω̃_{0,0} = α2^m β2^n ω00, ω̃_{m+n,0} = (1−α2)^m β1^n ω_{m0}, ω̃_{0,m+n} = α1^m(1−β2)^n ω_{0n}, ω̃_{m+n,m+n} = (1−α1)^m(1−β1)^n ω_{mn} (printed for m = n = 3, e.g. ω̃_{6,0} = (1−α2)³β1³ω30, ω̃_{0,6} = (1−β2)³α1³ω03)",
         &format!("{SRC} §2, before eq. (18)"),
         Verdict::Proved,
-        |m, n| {
-            let p = weight_net(m, n);
-            let r = p.quadratic_reparam(&sym_quadratic());
-            let (mu, nu) = (m as u32, n as u32);
-            let (a1, a2, b1, b2) = (v("α1"), v("α2"), v("β1"), v("β2"));
-            let [w00, wm0, w0n, wmn] = corner_weights(&p);
-            let want = [
-                a2.pow(mu) * &b2.pow(nu) * &w00,
-                (one() - &a2).pow(mu) * &b1.pow(nu) * &wm0,
-                a1.pow(mu) * &(one() - &b2).pow(nu) * &w0n,
-                (one() - &a1).pow(mu) * &(one() - &b1).pow(nu) * &wmn,
-            ];
-            (corner_weights(&r) != want).then(|| "corner weights differ".into())
-        },
+        failure,
     )
+}
+
+/// The check of [`quadratic_corner_weights`]: `r` is the map of the net `p`
+/// of bidegree (m, n).
+fn corners_differ(p: &RectPatch<Poly>, r: &RectPatch<Poly>, m: usize, n: usize) -> Option<String> {
+    let (mu, nu) = (m as u32, n as u32);
+    let (a1, a2, b1, b2) = (v("α1"), v("α2"), v("β1"), v("β2"));
+    let [w00, wm0, w0n, wmn] = corner_weights(p);
+    let want = [
+        a2.pow(mu) * &b2.pow(nu) * &w00,
+        (one() - &a2).pow(mu) * &b1.pow(nu) * &wm0,
+        a1.pow(mu) * &(one() - &b2).pow(nu) * &w0n,
+        (one() - &a1).pow(mu) * &(one() - &b1).pow(nu) * &wmn,
+    ];
+    (corner_weights(r) != want).then(|| "corner weights differ".into())
 }
 
 /// (19) generalized: α2 = 1/(1 + (ω00/ω_{m0})^{1/m}), α1 = 1/(1 + (ω_{0n}/ω_{mn})^{1/m}),
@@ -543,46 +618,53 @@ fn paper_c(m: usize, at0: &Poly, at1: &Poly) -> Vec<Vec<Poly>> {
 /// the input weights, so they are compared weight by weight: the
 /// coefficient of each ω_ij in our weight (k1, k2) against (17)'s term for
 /// it (zero where (i, j) is outside (17)'s sum).
-fn eq17_matches() -> Claim {
-    for_all_bidegrees(
-        max_symbolic(),
+fn eq17_matches(max: usize, failure: Option<String>) -> Claim {
+    bidegree_claim(
+        max,
         "eq. (17) (with Appendix-1 c_{l,i} and the analogous e_{l,j}) gives our weights times (−1)^{m+n} (equal for m + n even, e.g. bicubic; all negative for m + n odd)",
         &format!("{SRC} eqs. (15)-(17)"),
         Verdict::Proved,
-        |m, n| {
-            let q = sym_quadratic();
-            let r = weight_net(m, n).quadratic_reparam(&q);
-            let c = paper_c(m, &q.alpha2, &q.alpha1);
-            let e = paper_c(n, &q.beta2, &q.beta1);
-            let d = m + n;
-            let sign = if d % 2 == 0 { 1 } else { -1 };
-            let names = weight_names(m, n);
-            let names: Vec<&str> = names.iter().map(String::as_str).collect();
-            for k1 in 0..=d {
-                for k2 in 0..=d {
-                    let ours = r.ctrl()[k1][k2].weight().linear_coefficients(&names);
-                    for (i, j) in (0..=m).flat_map(|i| (0..=n).map(move |j| (i, j))) {
-                        let term = if (k1.saturating_sub(n)..=k1.min(m)).contains(&i)
-                            && (k2.saturating_sub(m)..=k2.min(n)).contains(&j)
-                        {
-                            let num = exact_bezier::algebra::binomial(m, k2 - j)
-                                * exact_bezier::algebra::binomial(n, j)
-                                * exact_bezier::algebra::binomial(n, k1 - i)
-                                * exact_bezier::algebra::binomial(m, i);
-                            let den = exact_bezier::algebra::binomial(d, k2) * exact_bezier::algebra::binomial(d, k1);
-                            c[k2 - j][i].clone() * &e[k1 - i][j] * &Poly::constant(BigRational::new(num * sign, den))
-                        } else {
-                            Poly::zero()
-                        };
-                        if ours[i * (n + 1) + j] != term {
-                            return Some(format!("weight ({k1},{k2}), the part of ω_{i}{j}"));
-                        }
-                    }
+        failure,
+    )
+}
+
+/// The check of [`eq17_matches`] on the weights' parts ([`weight_parts`]).
+fn eq17_differs(
+    q: &Quadratic<Poly>,
+    parts: &[Vec<Vec<Poly>>],
+    m: usize,
+    n: usize,
+) -> Option<String> {
+    let c = paper_c(m, &q.alpha2, &q.alpha1);
+    let e = paper_c(n, &q.beta2, &q.beta1);
+    let d = m + n;
+    let sign = if d.is_multiple_of(2) { 1 } else { -1 };
+    for k1 in 0..=d {
+        for k2 in 0..=d {
+            let ours = &parts[k1][k2];
+            for (i, j) in (0..=m).flat_map(|i| (0..=n).map(move |j| (i, j))) {
+                let term = if (k1.saturating_sub(n)..=k1.min(m)).contains(&i)
+                    && (k2.saturating_sub(m)..=k2.min(n)).contains(&j)
+                {
+                    let num = exact_bezier::algebra::binomial(m, k2 - j)
+                        * exact_bezier::algebra::binomial(n, j)
+                        * exact_bezier::algebra::binomial(n, k1 - i)
+                        * exact_bezier::algebra::binomial(m, i);
+                    let den = exact_bezier::algebra::binomial(d, k2)
+                        * exact_bezier::algebra::binomial(d, k1);
+                    c[k2 - j][i].clone()
+                        * &e[k1 - i][j]
+                        * &Poly::constant(BigRational::new(num * sign, den))
+                } else {
+                    Poly::zero()
+                };
+                if ours[i * (n + 1) + j] != term {
+                    return Some(format!("weight ({k1},{k2}), the part of ω_{i}{j}"));
                 }
             }
-            None
-        },
-    )
+        }
+    }
+    None
 }
 
 /// (15): B_{a,p}(s) B_{b,q}(s) = C(p,a)C(q,b)/C(p+q,a+b) B_{a+b,p+q}(s).
