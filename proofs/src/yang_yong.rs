@@ -401,7 +401,8 @@ pub fn quadratic_identity(m: usize, n: usize) -> Option<String> {
 
 /// `parts[k1][k2][i·(n+1) + j]`: the coefficient of ω_ij in weight
 /// (k1, k2) of `r`, the map of the (m, n) net of symbolic weights; an error
-/// if `r` is not of bidegree (m+n, m+n).
+/// if `r` is not of bidegree (m+n, m+n) or a weight is not linear and
+/// homogeneous in the ω_ij ([`Poly::linear_coefficients`]).
 fn weight_parts(r: &RectPatch<Poly>, m: usize, n: usize) -> Result<Vec<Vec<Vec<Poly>>>, String> {
     let d = m + n;
     if r.degree() != (d, d) {
@@ -409,10 +410,17 @@ fn weight_parts(r: &RectPatch<Poly>, m: usize, n: usize) -> Result<Vec<Vec<Vec<P
     }
     let names = weight_names(m, n);
     let names: Vec<&str> = names.iter().map(String::as_str).collect();
-    Ok(r.weights()
+    r.weights()
         .iter()
-        .map(|row| row.iter().map(|x| x.linear_coefficients(&names)).collect())
-        .collect())
+        .map(|row| {
+            row.iter()
+                .map(|x| {
+                    x.linear_coefficients(&names)
+                        .ok_or_else(|| "a weight not linear in the ω_ij".to_string())
+                })
+                .collect()
+        })
+        .collect()
 }
 
 /// The point identity of [`quadratic_keeps_points`] on the weights' parts

@@ -288,18 +288,22 @@ impl Poly {
         Poly::normalized(terms, self.den.clone())
     }
 
-    /// `coeff_of(name, 1)` for every name at once, in one pass over the
-    /// terms: for a polynomial linear in those variables,
-    /// `self = c_0 + Σ_k out[k]·names[k]` (the coefficients of a map that is
-    /// linear in symbolic inputs, without one scan per input).
+    /// The coefficients `out` with `self = Σ_k out[k]·names[k]`, in one
+    /// pass over the terms (the coefficients of a map that is linear in
+    /// symbolic inputs, without one scan per input); `None` unless `self`
+    /// is linear and homogeneous in the names: every term of degree exactly
+    /// 1 in them together (no term free of them, none with a square or a
+    /// product of two), so the identity holds exactly.
     ///
     /// ```
     /// use exact_bezier::Poly;
     /// let (x, y, z) = (Poly::var("x"), Poly::var("y"), Poly::var("z"));
-    /// let p = x.clone() * &z + y.clone() * Poly::from_int(3) + z.clone();
-    /// assert_eq!(p.linear_coefficients(&["x", "y"]), vec![z, Poly::from_int(3)]);
+    /// let p = x.clone() * &z + y.clone() * Poly::from_int(3);
+    /// assert_eq!(p.linear_coefficients(&["x", "y"]), Some(vec![z.clone(), Poly::from_int(3)]));
+    /// assert_eq!((p.clone() + z.clone()).linear_coefficients(&["x", "y"]), None);
+    /// assert_eq!((p + x.clone() * &y).linear_coefficients(&["x", "y"]), None);
     /// ```
-    pub fn linear_coefficients(&self, names: &[&str]) -> Vec<Poly> {
+    pub fn linear_coefficients(&self, names: &[&str]) -> Option<Vec<Poly>> {
         // The index of each name by variable id, in a table indexed by the
         // id (one load per factor of every term, where a hash map of the ids
         // cost a hash per factor: 19 % of the quadratic-map claim at (10, 10)).
@@ -310,15 +314,19 @@ impl Poly {
         }
         let mut out: Vec<Terms> = vec![Vec::new(); names.len()];
         for (m, c) in &self.terms {
-            for (id, e) in m.factors() {
-                if let (1, Some(&Some(k))) = (e, index.get(id as usize)) {
-                    out[k].push((m.with_exponent(id, 0), c.clone()));
-                }
+            let mut named = m
+                .factors()
+                .filter_map(|(id, e)| Some((index.get(id as usize).copied()??, id, e)));
+            match (named.next(), named.next()) {
+                (Some((k, id, 1)), None) => out[k].push((m.with_exponent(id, 0), c.clone())),
+                _ => return None,
             }
         }
-        out.into_iter()
-            .map(|t| Poly::normalized(t, self.den.clone()))
-            .collect()
+        Some(
+            out.into_iter()
+                .map(|t| Poly::normalized(t, self.den.clone()))
+                .collect(),
+        )
     }
 
     /// Multiply by the monomial `x_id^e` (keeps the order).
