@@ -75,7 +75,13 @@
 //! ```
 //!
 //! e.g. 31 flops and 2 divides for a planar cubic, 197 and 3 for a
-//! spatial bicubic, 107 and 3 for a spatial cubic triangle.
+//! spatial bicubic, 107 and 3 for a spatial cubic triangle. The vector
+//! builds evaluate a bicubic by its Bernstein values instead
+//! ([`rect_bernstein`]): 154 flops and 3 divides for a spatial one.
+//!
+//! The divides of a group are issued before the multiply–adds of the
+//! next ([`project`]), so that the divider and the multiply–add units
+//! work at once.
 
 use super::{Net, Shape};
 use crate::error::Error;
@@ -149,47 +155,44 @@ trait Kernel {
 }
 
 /// A batch job (evaluation or jets) whose kernel is compiled for nets of
-/// any shape ([`ANY`]), or for one form of net only ([`RECT`] or [`TRI`])
-/// of the degree `DEG` (`(DEG, DEG)` for a rect).
+/// any shape if `SQUARE` is 0, else for rect nets of degree `(SQUARE,
+/// SQUARE)` only (see [`by_shape`]).
 trait Job {
     type Output;
-    fn run<const L: usize, const FORM: u8, const DEG: usize>(self, fused: bool) -> Self::Output;
+    fn run<const L: usize, const SQUARE: usize>(self, fused: bool) -> Self::Output;
 }
 
-/// The forms of [`Job::run`].
-const ANY: u8 = 0;
-/// See [`CURVE`].
-const RECT: u8 = 1;
-/// See [`CURVE`].
-const TRI: u8 = 2;
+/// A [`Job`] compiled for `SQUARE` (see [`Job`]): a [`Kernel`].
+struct Square<J, const SQUARE: usize>(J);
 
-/// A [`Job`] fixed to one form and degree: a [`Kernel`].
-struct Formed<J, const FORM: u8, const DEG: usize>(J);
-
-impl<J: Job, const FORM: u8, const DEG: usize> Kernel for Formed<J, FORM, DEG> {
+impl<J: Job, const SQUARE: usize> Kernel for Square<J, SQUARE> {
     type Output = J::Output;
 
     #[inline(always)]
     fn run<const L: usize>(self, fused: bool) -> J::Output {
-        self.0.run::<L, FORM, DEG>(fused)
+        self.0.run::<L, SQUARE>(fused)
     }
 }
 
-/// `job` for nets of `shape` ([`dispatch`]): the bicubic and the cubic
-/// triangle, the commonest patches in CAD data, by kernels compiled for
-/// their form and degree, so that every loop is unrolled and the values
-/// stay in registers (the same operations in the same order as any other
-/// degree; `peer_eval`, 2026-11-28: 5.7 → 5.1 ns a point for a bicubic,
-/// 4.1 → 3.8 for a cubic triangle); the rest by one kernel for every
-/// shape. (A kernel for each form, the curves' included, was slower for
-/// curves, and a constant degree for cubic curves too.)
+/// `job` for nets of `shapes` (the nets of a jet may differ in degree)
+/// ([`dispatch`]): bicubics alone, the commonest
+/// patch in CAD data, by a kernel of its own whose loops are unrolled and
+/// whose values stay in registers ([`rect_bernstein`] in the vector
+/// builds, and the baseline's Horner steps with their rows on the stack);
+/// every other shape by one kernel. `peer_eval` (2026-11-28, AVX-512,
+/// best of 6 alternated runs at load 1.2–1.6): bicubic 5.5–5.7 → 4.0–4.2
+/// ns a point. The same for the cubic triangle was no faster (Horner
+/// steps unrolled, 4.0–4.1 ns either way) or slower (its Bernstein values,
+/// 5.4 ns), and a kernel for curves alone made their code worse.
 #[inline(always)]
-fn by_shape<J: Job>(isa: Isa, shape: Shape, job: J) -> J::Output {
-    let wide = wide(shape);
-    match shape {
-        Shape::Rect(3, 3) => dispatch(isa, wide, Formed::<J, RECT, 3>(job)),
-        Shape::Tri(3) => dispatch(isa, wide, Formed::<J, TRI, 3>(job)),
-        _ => dispatch(isa, wide, Formed::<J, ANY, 0>(job)),
+fn by_shape<J: Job>(isa: Isa, mut shapes: impl Iterator<Item = Shape>, job: J) -> J::Output {
+    let first = shapes.next();
+    let wide = first.is_some_and(wide);
+    match first {
+        Some(Shape::Rect(3, 3)) if shapes.all(|s| s == Shape::Rect(3, 3)) => {
+            dispatch(isa, wide, Square::<J, 3>(job))
+        }
+        _ => dispatch(isa, wide, Square::<J, 0>(job)),
     }
 }
 
@@ -246,7 +249,7 @@ pub(super) fn eval_batch<T: Any>(
     rows: &mut Vec<f64>,
 ) -> Option<Result<(), Error>> {
     let net = (net as &dyn Any).downcast_ref::<Net<f64>>()?;
-    let shape = net.shape();
+    let shape = std::iter::once(net.shape());
     match net.stride() {
         3 => Some(by_shape(
             isa,
@@ -284,8 +287,8 @@ impl<const S: usize, T: Any> Job for Project<'_, S, T> {
     type Output = Result<(), Error>;
 
     #[inline(always)]
-    fn run<const L: usize, const FORM: u8, const DEG: usize>(self, fused: bool) -> Self::Output {
-        project::<S, L, FORM, DEG, T>(fused, self.net, self.params, self.out, self.rows)
+    fn run<const L: usize, const SQUARE: usize>(self, fused: bool) -> Self::Output {
+        project::<S, L, SQUARE, T>(fused, self.net, self.params, self.out, self.rows)
     }
 }
 
@@ -304,7 +307,7 @@ pub(super) fn jets_batch<T: Any>(
         .iter()
         .map(|n| (n as &dyn Any).downcast_ref::<Net<f64>>())
         .collect::<Option<Vec<_>>>()?;
-    let shape = first.shape();
+    let shape = nets.iter().map(|n| n.shape());
     match first.stride() {
         3 => by_shape(
             isa,
@@ -343,8 +346,8 @@ impl<const S: usize, T: Any> Job for JetNets<'_, S, T> {
     type Output = ();
 
     #[inline(always)]
-    fn run<const L: usize, const FORM: u8, const DEG: usize>(self, fused: bool) {
-        jets::<S, L, FORM, DEG, T>(fused, self.nets, self.params, self.out, self.rows)
+    fn run<const L: usize, const SQUARE: usize>(self, fused: bool) {
+        jets::<S, L, SQUARE, T>(fused, self.nets, self.params, self.out, self.rows)
     }
 }
 
@@ -355,7 +358,7 @@ impl<const S: usize, T: Any> Job for JetNets<'_, S, T> {
 /// wait on them and fill the scheduler, and the two kinds of work ran one
 /// after the other).
 #[inline(always)]
-fn project<const S: usize, const L: usize, const FORM: u8, const DEG: usize, T: Any>(
+fn project<const S: usize, const L: usize, const SQUARE: usize, T: Any>(
     fused: bool,
     net: &Net<f64>,
     params: &[T],
@@ -366,7 +369,7 @@ fn project<const S: usize, const L: usize, const FORM: u8, const DEG: usize, T: 
     let mut last: Option<([Lane<L>; S], &mut [T])> = None;
     for (p, o) in params.chunks(L * k).zip(out.chunks_mut(L * (S - 1))) {
         let divided = last.take().map(|(h, o)| (quotients(&h), o));
-        let h = hom_net::<S, L, FORM, DEG>(fused, net, &hom_lanes(net.shape(), p), rows);
+        let h = hom_net::<S, L, SQUARE>(fused, net, &hom_lanes(net.shape(), p), rows);
         if let Some((x, o)) = divided {
             write(&x, o)?;
         }
@@ -430,7 +433,7 @@ fn write<const S: usize, const L: usize, T: Any>(
 
 /// [`jets_batch`] at the stride `S`.
 #[inline(always)]
-fn jets<const S: usize, const L: usize, const FORM: u8, const DEG: usize, T: Any>(
+fn jets<const S: usize, const L: usize, const SQUARE: usize, T: Any>(
     fused: bool,
     nets: &[&Net<f64>],
     params: &[T],
@@ -443,7 +446,7 @@ fn jets<const S: usize, const L: usize, const FORM: u8, const DEG: usize, T: Any
     for (p, o) in params.chunks(L * k).zip(out.chunks_mut(L * per_point)) {
         let hom = hom_lanes(shape, p);
         for (i, net) in nets.iter().enumerate() {
-            let h = hom_net::<S, L, FORM, DEG>(fused, net, &hom, rows);
+            let h = hom_net::<S, L, SQUARE>(fused, net, &hom, rows);
             for (l, o) in o.chunks_exact_mut(per_point).enumerate() {
                 for (o, hk) in o[i * S..(i + 1) * S].iter_mut().zip(&h) {
                     *as_f64_mut(o) = hk[l];
@@ -471,25 +474,22 @@ fn hom_lanes<const L: usize, T: Any>(shape: Shape, params: &[T]) -> Hom<L> {
 
 /// The homogeneous points of `net` at a group's parameters `h`, one
 /// [`Lane`] per coordinate: the scheme of [`Net::eval_hom_into`], lane by
-/// lane, each multiply–add fused or not ([`madd`]); for a `net` of the
-/// form `FORM` and the degree `DEG` if `FORM` is not [`ANY`] (see
-/// [`Job`]).
+/// lane, each multiply–add fused or not ([`madd`]); for a rect net of
+/// degree `(SQUARE, SQUARE)`, `SQUARE ≤ 3`, if `SQUARE` is not 0 ([`Job`]).
 #[inline(always)]
-fn hom_net<const S: usize, const L: usize, const FORM: u8, const DEG: usize>(
+fn hom_net<const S: usize, const L: usize, const SQUARE: usize>(
     fused: bool,
     net: &Net<f64>,
     h: &Hom<L>,
     rows: &mut Vec<f64>,
 ) -> [Lane<L>; S] {
     let g = net.scaled();
-    match (FORM, net.shape()) {
-        (RECT, _) if fused => rect_bernstein::<S, L, DEG>(g, h),
-        (RECT, _) => {
-            // `DEG ≤ 3` ([`by_shape`]).
+    match (SQUARE, net.shape()) {
+        (1.., _) if fused => rect_bernstein::<S, L, SQUARE>(g, h),
+        (1.., _) => {
             let mut rows = [[[0.0; L]; S]; 4];
-            rect::<S, L>(fused, (DEG, DEG), g, h, &mut rows[..=DEG])
+            rect::<S, L>(fused, (SQUARE, SQUARE), g, h, &mut rows[..=SQUARE])
         }
-        (TRI, _) => tri::<S, L>(fused, DEG, g, h),
         (_, Shape::Curve(n)) => horner::<S, L>(fused, n + 1, broadcast::<S, L>(g), &h[0], &h[1]),
         (_, Shape::Rect(m, n)) => {
             rows.resize((m + 1) * S * L, 0.0);
@@ -521,13 +521,16 @@ fn rect<const S: usize, const L: usize>(
 /// A rect patch of degree `(D, D)`, `D ≤ 3`, in the vector builds: the
 /// Bernstein values `a^{D−j} b^j` of each direction first (the binomials
 /// are in the scaled net `g`), then each row `Σ_j B_j(v)·G_ij` and the
-/// point `Σ_i B_i(u)·row_i` by fused multiply–adds, `4·S·(D + 1)²/4 …`:
-/// for a bicubic 92 vector operations a point instead of the 137 of
-/// [`rect`]'s Horner steps, each of which multiplies by a power before it
-/// adds (5.2 → 4.? ns a point; `peer_eval`, 2026-11-28). A term meets as
-/// many roundings as in [`rect`] (the scaled net 1, its basis value
-/// `D − 1`, its multiply–add 1 and the later ones `D − j`, in each
-/// direction), so the tolerance of the module holds unchanged.
+/// point `Σ_i B_i(u)·row_i`, each term one fused multiply–add. For a
+/// bicubic: 94 vector operations a point (12 for the values, 64 for the
+/// rows, 16 for the point, 2 for `1 − u`, `1 − v`) and 154 flops, instead
+/// of [`rect`]'s 137 and 197, whose Horner steps multiply each term by a
+/// power before they add it. A term meets no more roundings than in
+/// [`rect`]: the scaled net 1, its value `D − 1`, its own multiply–add
+/// and the `D − j` later ones of its row (`2D + 1` at most), then its
+/// row's value `D − 1`, the row's multiply–add and the `D − i` later ones
+/// in the point (`2D` at most): `4D + 1 = 2m + 2n + 1` in all, so the
+/// tolerance of the module holds unchanged.
 #[inline(always)]
 fn rect_bernstein<const S: usize, const L: usize, const D: usize>(
     g: &[f64],
@@ -742,6 +745,8 @@ mod tests {
         let shape = prop_oneof![
             (0..=12usize).prop_map(Shape::Curve),
             (0..=4usize, 0..=4usize).prop_map(|(m, n)| Shape::Rect(m, n)),
+            // The bicubic's own kernel (`rect_bernstein` in the vector builds).
+            Just(Shape::Rect(3, 3)),
             (0..=6usize).prop_map(Shape::Tri),
         ];
         (shape, 3..=4usize, 0..=21usize).prop_flat_map(|(shape, stride, points)| {
