@@ -208,6 +208,8 @@ fn by_shape<J: Job>(isa: Isa, mut shapes: impl Iterator<Item = Shape>, job: J) -
 /// the vector builds, which have one.
 #[inline(always)]
 fn dispatch<K: Kernel>(isa: Isa, wide: bool, kernel: K) -> K::Output {
+    // Read by the AVX-512 arm only (absent without the feature `simd`).
+    let _ = wide;
     match isa {
         Isa::Baseline => kernel.run::<LANES>(false),
         #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
