@@ -75,7 +75,13 @@
 //! ```
 //!
 //! e.g. 31 flops and 2 divides for a planar cubic, 197 and 3 for a
-//! spatial bicubic, 107 and 3 for a spatial cubic triangle.
+//! spatial bicubic, 107 and 3 for a spatial cubic triangle. The vector
+//! builds evaluate a bicubic by its Bernstein values instead
+//! ([`rect_bernstein`]): 154 flops and 3 divides for a spatial one.
+//!
+//! The divides of a group are issued before the multiply–adds of the
+//! next ([`project`]), so that the divider and the multiply–add units
+//! work at once.
 
 use super::{Net, Shape};
 use crate::error::Error;
@@ -142,44 +148,91 @@ fn wide(shape: Shape) -> bool {
     matches!(shape, Shape::Curve(_))
 }
 
-/// `$kernel` (an expression in `$fused` and the lane count `$lanes`)
-/// compiled for the instruction set `$isa`, [`LANES_AVX512`] points at
-/// a time in the AVX-512 build if `$wide`, else [`LANES`] (it must be
-/// inlined whole into the call, hence the
-/// `#[inline(always)]` of the kernels, and each arm has a closure of its
-/// own: one closure called from three arms is not inlined, and its code
-/// then lacks the arm's instructions). `$fused` is a constant in each
-/// arm, so the other branch of [`madd`] is compiled away: false for the
-/// baseline, which has no FMA instruction, true for the vector builds,
-/// which have one.
-macro_rules! run {
-    ($isa:expr, $wide:expr, |$fused:ident, $lanes:ident| $kernel:expr) => {
-        match $isa {
-            Isa::Baseline => {
-                let $fused = false;
-                const $lanes: usize = LANES;
-                $kernel
-            }
-            #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
-            Isa::Avx2(v3) => v3.vectorize(|| {
-                let $fused = true;
-                const $lanes: usize = LANES;
-                $kernel
-            }),
-            #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
-            Isa::Avx512(v4) if $wide => v4.vectorize(|| {
-                let $fused = true;
-                const $lanes: usize = LANES_AVX512;
-                $kernel
-            }),
-            #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
-            Isa::Avx512(v4) => v4.vectorize(|| {
-                let $fused = true;
-                const $lanes: usize = LANES;
-                $kernel
-            }),
+/// A batch kernel of lane count `L`, `fused` or not ([`madd`]).
+trait Kernel {
+    type Output;
+    fn run<const L: usize>(self, fused: bool) -> Self::Output;
+}
+
+/// A batch job (evaluation or jets) whose kernel is compiled for nets of
+/// any shape if `SQUARE` is 0, else for rect nets of degree `(SQUARE,
+/// SQUARE)` only (see [`by_shape`]).
+trait Job {
+    type Output;
+    fn run<const L: usize, const SQUARE: usize>(self, fused: bool) -> Self::Output;
+}
+
+/// A [`Job`] compiled for `SQUARE` (see [`Job`]): a [`Kernel`].
+struct Square<J, const SQUARE: usize>(J);
+
+impl<J: Job, const SQUARE: usize> Kernel for Square<J, SQUARE> {
+    type Output = J::Output;
+
+    #[inline(always)]
+    fn run<const L: usize>(self, fused: bool) -> J::Output {
+        self.0.run::<L, SQUARE>(fused)
+    }
+}
+
+/// `job` for nets of `shapes` (the nets of a jet may differ in degree)
+/// ([`dispatch`]): bicubics alone, the commonest
+/// patch in CAD data, by a kernel of its own whose loops are unrolled and
+/// whose values stay in registers ([`rect_bernstein`] in the vector
+/// builds, and the baseline's Horner steps with their rows on the stack);
+/// every other shape by one kernel. `peer_eval` (2026-11-28, AVX-512,
+/// best of 6 alternated runs at load 1.2–1.6): bicubic 5.5–5.7 → 4.0–4.2
+/// ns a point. The same for the cubic triangle was no faster (Horner
+/// steps unrolled, 4.0–4.1 ns either way) or slower (its Bernstein values,
+/// 5.4 ns), and a kernel for curves alone made their code worse.
+#[inline(always)]
+fn by_shape<J: Job>(isa: Isa, mut shapes: impl Iterator<Item = Shape>, job: J) -> J::Output {
+    let first = shapes.next();
+    let wide = first.is_some_and(wide);
+    match first {
+        Some(Shape::Rect(3, 3)) if shapes.all(|s| s == Shape::Rect(3, 3)) => {
+            dispatch(isa, wide, Square::<J, 3>(job))
         }
-    };
+        _ => dispatch(isa, wide, Square::<J, 0>(job)),
+    }
+}
+
+/// `kernel` compiled for the instruction set `isa`, [`LANES_AVX512`]
+/// points at a time in the AVX-512 build if `wide`, else [`LANES`]. The
+/// kernel must be inlined whole into the call that `pulp` makes with the
+/// instruction set's features, hence the `#[inline(always)]` of every
+/// kernel function below and of [`Fused::call`] (a closure called through
+/// `FnOnce` was inlined only while the kernel was small, and its code then
+/// lacked the features: `mul_add` became a library call). `fused` is a
+/// constant in each arm, so the other branch of [`madd`] is compiled
+/// away: false for the baseline, which has no FMA instruction, true for
+/// the vector builds, which have one.
+#[inline(always)]
+fn dispatch<K: Kernel>(isa: Isa, wide: bool, kernel: K) -> K::Output {
+    // Read by the AVX-512 arm only (absent without the feature `simd`).
+    let _ = wide;
+    match isa {
+        Isa::Baseline => kernel.run::<LANES>(false),
+        #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+        Isa::Avx2(v3) => v3.vectorize(Fused::<K, LANES>(kernel)),
+        #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+        Isa::Avx512(v4) if wide => v4.vectorize(Fused::<K, LANES_AVX512>(kernel)),
+        #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+        Isa::Avx512(v4) => v4.vectorize(Fused::<K, LANES>(kernel)),
+    }
+}
+
+/// A kernel run fused at `L` lanes, as `pulp` calls it.
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+struct Fused<K, const L: usize>(K);
+
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+impl<K: Kernel, const L: usize> pulp::NullaryFnOnce for Fused<K, L> {
+    type Output = K::Output;
+
+    #[inline(always)]
+    fn call(self) -> K::Output {
+        self.0.run::<L>(true)
+    }
 }
 
 /// The `f64` batch of [`Evaluator::eval_batch`](super::Evaluator::eval_batch)
@@ -198,14 +251,46 @@ pub(super) fn eval_batch<T: Any>(
     rows: &mut Vec<f64>,
 ) -> Option<Result<(), Error>> {
     let net = (net as &dyn Any).downcast_ref::<Net<f64>>()?;
+    let shape = std::iter::once(net.shape());
     match net.stride() {
-        3 => Some(run!(isa, wide(net.shape()), |f, L| project::<3, L, T>(
-            f, net, params, out, rows
-        ))),
-        4 => Some(run!(isa, wide(net.shape()), |f, L| project::<4, L, T>(
-            f, net, params, out, rows
-        ))),
+        3 => Some(by_shape(
+            isa,
+            shape,
+            Project::<'_, 3, T> {
+                net,
+                params,
+                out,
+                rows,
+            },
+        )),
+        4 => Some(by_shape(
+            isa,
+            shape,
+            Project::<'_, 4, T> {
+                net,
+                params,
+                out,
+                rows,
+            },
+        )),
         _ => None,
+    }
+}
+
+/// The arguments of [`project`] at the stride `S`.
+struct Project<'a, const S: usize, T> {
+    net: &'a Net<f64>,
+    params: &'a [T],
+    out: &'a mut [T],
+    rows: &'a mut Vec<f64>,
+}
+
+impl<const S: usize, T: Any> Job for Project<'_, S, T> {
+    type Output = Result<(), Error>;
+
+    #[inline(always)]
+    fn run<const L: usize, const SQUARE: usize>(self, fused: bool) -> Self::Output {
+        project::<S, L, SQUARE, T>(fused, self.net, self.params, self.out, self.rows)
     }
 }
 
@@ -222,87 +307,148 @@ pub(super) fn jets_batch<T: Any>(
     let first = (nets.first()? as &dyn Any).downcast_ref::<Net<f64>>()?;
     let nets = nets
         .iter()
-        .map(|n| (n as &dyn Any).downcast_ref::<Net<f64>>());
+        .map(|n| (n as &dyn Any).downcast_ref::<Net<f64>>())
+        .collect::<Option<Vec<_>>>()?;
+    let shape = nets.iter().map(|n| n.shape());
     match first.stride() {
-        3 => run!(isa, wide(first.shape()), |f, L| jets::<3, L, T>(
-            f,
-            first.shape(),
-            nets,
-            params,
-            out,
-            rows
-        )),
-        4 => run!(isa, wide(first.shape()), |f, L| jets::<4, L, T>(
-            f,
-            first.shape(),
-            nets,
-            params,
-            out,
-            rows
-        )),
+        3 => by_shape(
+            isa,
+            shape,
+            JetNets::<'_, 3, T> {
+                nets: &nets,
+                params,
+                out,
+                rows,
+            },
+        ),
+        4 => by_shape(
+            isa,
+            shape,
+            JetNets::<'_, 4, T> {
+                nets: &nets,
+                params,
+                out,
+                rows,
+            },
+        ),
         _ => return None,
     }
     Some(())
 }
 
-/// [`eval_batch`] at the stride `S`.
+/// The arguments of [`jets`] at the stride `S`.
+struct JetNets<'a, const S: usize, T> {
+    nets: &'a [&'a Net<f64>],
+    params: &'a [T],
+    out: &'a mut [T],
+    rows: &'a mut Vec<f64>,
+}
+
+impl<const S: usize, T: Any> Job for JetNets<'_, S, T> {
+    type Output = ();
+
+    #[inline(always)]
+    fn run<const L: usize, const SQUARE: usize>(self, fused: bool) {
+        jets::<S, L, SQUARE, T>(fused, self.nets, self.params, self.out, self.rows)
+    }
+}
+
+/// [`eval_batch`] at the stride `S`, software-pipelined: the divides of
+/// one group are issued before the Horner steps of the next, and its
+/// points written after them, so that the divider works while the
+/// multiply–add units do (written after the divides, the points' stores
+/// wait on them and fill the scheduler, and the two kinds of work ran one
+/// after the other).
 #[inline(always)]
-fn project<const S: usize, const L: usize, T: Any>(
+fn project<const S: usize, const L: usize, const SQUARE: usize, T: Any>(
     fused: bool,
     net: &Net<f64>,
     params: &[T],
     out: &mut [T],
     rows: &mut Vec<f64>,
 ) -> Result<(), Error> {
-    let (k, d) = (net.shape().params(), S - 1);
-    for (p, o) in params.chunks(L * k).zip(out.chunks_mut(L * d)) {
-        let h = hom_net::<S, L>(fused, net, &hom_lanes(net.shape(), p), rows);
-        // The divides of all lanes in one straight block, kept whole
-        // vectors by `black_box` (which holds `x` in memory: otherwise the
-        // compiler splits them to fit the interleaved stores below, half
-        // as wide; 15 % on a cubic triangle), then the points up to the
-        // first at infinity (none in a group whose weights are all
-        // non-zero: the common case, written by a loop of fixed length).
-        // `x[d]` is the weight itself, not written.
-        let mut x: [Lane<L>; S] =
-            each(|c| lane(|l| if c < d { h[c][l] / h[d][l] } else { h[d][l] }));
-        std::hint::black_box(&mut x);
-        let at_infinity = h[d][..o.len() / d].contains(&0.0);
-        let o = if at_infinity {
-            let finite = h[d].iter().position(|w| *w == 0.0).unwrap_or(L);
-            &mut o[..finite * d]
-        } else {
-            o
-        };
-        for (l, o) in o.chunks_exact_mut(d).enumerate() {
-            for (o, xk) in o.iter_mut().zip(&x) {
-                *as_f64_mut(o) = xk[l];
-            }
+    let k = net.shape().params();
+    let mut last: Option<([Lane<L>; S], &mut [T])> = None;
+    for (p, o) in params.chunks(L * k).zip(out.chunks_mut(L * (S - 1))) {
+        let divided = last.take().map(|(h, o)| (quotients(&h), o));
+        let h = hom_net::<S, L, SQUARE>(fused, net, &hom_lanes(net.shape(), p), rows);
+        if let Some((x, o)) = divided {
+            write(&x, o)?;
         }
-        if at_infinity {
-            return Err(Error::PointAtInfinity);
+        last = Some((h, o));
+    }
+    match last {
+        Some((h, o)) => write(&quotients(&h), o),
+        None => Ok(()),
+    }
+}
+
+/// The Cartesian coordinates `h[c] / h[d]` (`d = S − 1`) of a group's
+/// homogeneous points, all lanes in one straight block, kept whole
+/// vectors by `black_box` (which holds them in memory: otherwise the
+/// compiler splits them to fit the stores of [`write`], half as wide; 15 %
+/// on a cubic triangle). `x[d]` is the weight itself.
+#[inline(always)]
+fn quotients<const S: usize, const L: usize>(h: &[Lane<L>; S]) -> [Lane<L>; S] {
+    let d = S - 1;
+    let mut x: [Lane<L>; S] = each(|c| lane(|l| if c < d { h[c][l] / h[d][l] } else { h[d][l] }));
+    std::hint::black_box(&mut x);
+    x
+}
+
+/// A group's points `x` ([`quotients`]) into `o`, up to the first at
+/// infinity (none in a group whose weights are all non-zero: the common
+/// case, written by a loop of fixed length).
+///
+/// # Errors
+///
+/// [`Error::PointAtInfinity`] if a weight of the group's real points is
+/// zero.
+#[inline(always)]
+fn write<const S: usize, const L: usize, T: Any>(
+    x: &[Lane<L>; S],
+    o: &mut [T],
+) -> Result<(), Error> {
+    let d = S - 1;
+    // A branch-free test of every lane first (one vector compare; the
+    // unused lanes have the parameter 0, never a weight of 0 there unless
+    // the first control point's), the search only if it finds a zero.
+    let any_zero = x[d].iter().fold(false, |z, w| z | (*w == 0.0));
+    let finite = match any_zero {
+        true => x[d][..o.len() / d].iter().position(|w| *w == 0.0),
+        false => None,
+    };
+    let o = match finite {
+        Some(f) => &mut o[..f * d],
+        None => o,
+    };
+    for (l, o) in o.chunks_exact_mut(d).enumerate() {
+        for (o, xk) in o.iter_mut().zip(x) {
+            *as_f64_mut(o) = xk[l];
         }
     }
-    Ok(())
+    match finite {
+        Some(_) => Err(Error::PointAtInfinity),
+        None => Ok(()),
+    }
 }
 
 /// [`jets_batch`] at the stride `S`.
 #[inline(always)]
-fn jets<'a, const S: usize, const L: usize, T: Any>(
+fn jets<const S: usize, const L: usize, const SQUARE: usize, T: Any>(
     fused: bool,
-    shape: Shape,
-    nets: impl Iterator<Item = Option<&'a Net<f64>>> + Clone,
+    nets: &[&Net<f64>],
     params: &[T],
     out: &mut [T],
     rows: &mut Vec<f64>,
 ) {
+    let shape = nets[0].shape();
     let k = shape.params();
-    let per_point = nets.clone().count() * S;
+    let per_point = nets.len() * S;
     for (p, o) in params.chunks(L * k).zip(out.chunks_mut(L * per_point)) {
         let hom = hom_lanes(shape, p);
-        for (i, net) in nets.clone().enumerate() {
-            let net = net.expect("the nets of one jet share T");
-            let h = hom_net::<S, L>(fused, net, &hom, rows);
+        for (i, net) in nets.iter().enumerate() {
+            let h = hom_net::<S, L, SQUARE>(fused, net, &hom, rows);
             for (l, o) in o.chunks_exact_mut(per_point).enumerate() {
                 for (o, hk) in o[i * S..(i + 1) * S].iter_mut().zip(&h) {
                     *as_f64_mut(o) = hk[l];
@@ -330,65 +476,148 @@ fn hom_lanes<const L: usize, T: Any>(shape: Shape, params: &[T]) -> Hom<L> {
 
 /// The homogeneous points of `net` at a group's parameters `h`, one
 /// [`Lane`] per coordinate: the scheme of [`Net::eval_hom_into`], lane by
-/// lane, each multiply–add fused or not ([`madd`]).
+/// lane, each multiply–add fused or not ([`madd`]); for a rect net of
+/// degree `(SQUARE, SQUARE)`, `SQUARE ≤ 3`, if `SQUARE` is not 0 ([`Job`]).
 #[inline(always)]
-fn hom_net<const S: usize, const L: usize>(
+fn hom_net<const S: usize, const L: usize, const SQUARE: usize>(
     fused: bool,
     net: &Net<f64>,
     h: &Hom<L>,
     rows: &mut Vec<f64>,
 ) -> [Lane<L>; S] {
     let g = net.scaled();
-    match net.shape() {
-        Shape::Curve(n) => horner::<S, L>(fused, n + 1, broadcast::<S, L>(g), &h[0], &h[1]),
-        Shape::Rect(m, n) => {
-            // Row `i`, coordinate `k`, lane `l` at `rows[(i·S + k)·L + l]`.
-            rows.resize((m + 1) * S * L, 0.0);
-            for (row, r) in g
-                .chunks_exact((n + 1) * S)
-                .zip(rows.chunks_exact_mut(S * L))
-            {
-                let sum = horner::<S, L>(fused, n + 1, broadcast::<S, L>(row), &h[2], &h[3]);
-                for (r, sum) in r.chunks_exact_mut(L).zip(&sum) {
-                    r.copy_from_slice(sum);
-                }
-            }
-            let row = |i: usize, k: usize| -> Lane<L> {
-                let at = (i * S + k) * L;
-                rows[at..at + L].try_into().expect("L values")
-            };
-            horner::<S, L>(fused, m + 1, row, &h[0], &h[1])
+    match (SQUARE, net.shape()) {
+        (1.., _) if fused => rect_bernstein::<S, L, SQUARE>(g, h),
+        (1.., _) => {
+            let mut rows = [[[0.0; L]; S]; 4];
+            rect::<S, L>(fused, (SQUARE, SQUARE), g, h, &mut rows[..=SQUARE])
         }
-        Shape::Tri(n) => {
-            let (mut out, mut vpow, mut start) = ([[0.0; L]; S], [1.0; L], 0);
-            for j in 0..=n {
-                let len = (n - j + 1) * S;
-                let r = horner::<S, L>(
-                    fused,
-                    n - j + 1,
-                    broadcast::<S, L>(&g[start..start + len]),
-                    &h[2],
-                    &h[0],
-                );
-                start += len;
-                if j == 0 {
-                    out = r;
-                } else {
-                    for (o, r) in out.iter_mut().zip(&r) {
-                        for l in 0..L {
-                            o[l] = madd(fused, vpow[l], r[l], o[l]);
-                        }
-                    }
-                }
-                if j < n {
-                    for l in 0..L {
-                        vpow[l] *= h[1][l];
-                    }
+        (_, Shape::Curve(n)) => horner::<S, L>(fused, n + 1, broadcast::<S, L>(g), &h[0], &h[1]),
+        (_, Shape::Rect(m, n)) => {
+            rows.resize((m + 1) * S * L, 0.0);
+            let (rows, _) = rows.as_chunks_mut::<L>();
+            let (rows, _) = rows.as_chunks_mut::<S>();
+            rect::<S, L>(fused, (m, n), g, h, rows)
+        }
+        (_, Shape::Tri(n)) => tri::<S, L>(fused, n, g, h),
+    }
+}
+
+/// A rect patch of degree `(m, n)`: the sum of each row of the net by
+/// [`horner`] in `v` into `rows` (`m + 1` of them), then the sum of the
+/// rows in `u`.
+#[inline(always)]
+fn rect<const S: usize, const L: usize>(
+    fused: bool,
+    (m, n): (usize, usize),
+    g: &[f64],
+    h: &Hom<L>,
+    rows: &mut [[Lane<L>; S]],
+) -> [Lane<L>; S] {
+    for (row, r) in g.chunks_exact((n + 1) * S).zip(rows.iter_mut()) {
+        *r = horner::<S, L>(fused, n + 1, broadcast::<S, L>(row), &h[2], &h[3]);
+    }
+    horner::<S, L>(fused, m + 1, |i, k| rows[i][k], &h[0], &h[1])
+}
+
+/// A rect patch of degree `(D, D)`, `D ≤ 3`, in the vector builds: the
+/// Bernstein values `a^{D−j} b^j` of each direction first (the binomials
+/// are in the scaled net `g`), then each row `Σ_j B_j(v)·G_ij` and the
+/// point `Σ_i B_i(u)·row_i`, each term one fused multiply–add. For a
+/// bicubic: 94 vector operations a point (12 for the values, 64 for the
+/// rows, 16 for the point, 2 for `1 − u`, `1 − v`) and 154 flops, instead
+/// of [`rect`]'s 137 and 197, whose Horner steps multiply each term by a
+/// power before they add it. A term meets no more roundings than in
+/// [`rect`]: the scaled net 1, its value `D − 1`, its own multiply–add
+/// and the `D − j` later ones of its row (`2D + 1` at most), then its
+/// row's value `D − 1`, the row's multiply–add and the `D − i` later ones
+/// in the point (`2D` at most): `4D + 1 = 2m + 2n + 1` in all, so the
+/// tolerance of the module holds unchanged.
+#[inline(always)]
+fn rect_bernstein<const S: usize, const L: usize, const D: usize>(
+    g: &[f64],
+    h: &Hom<L>,
+) -> [Lane<L>; S] {
+    let (bu, bv) = (
+        bernstein::<L, D>(&h[0], &h[1]),
+        bernstein::<L, D>(&h[2], &h[3]),
+    );
+    let (points, _) = g.as_chunks::<S>();
+    let mut out = [[0.0; L]; S];
+    for i in 0..=D {
+        let row = &points[i * (D + 1)..(i + 1) * (D + 1)];
+        for (k, o) in out.iter_mut().enumerate() {
+            let mut r = [0.0; L];
+            for l in 0..L {
+                r[l] = bv[0][l] * row[0][k];
+            }
+            for j in 1..=D {
+                for l in 0..L {
+                    r[l] = bv[j][l].mul_add(row[j][k], r[l]);
                 }
             }
-            out
+            for l in 0..L {
+                o[l] = match i {
+                    0 => bu[i][l] * r[l],
+                    _ => bu[i][l].mul_add(r[l], o[l]),
+                };
+            }
         }
     }
+    out
+}
+
+/// `a^{D−j} b^j` for `j ≤ D ≤ 3` in every lane (the entries past `D`
+/// are 0): products of running powers, at most `D − 1` roundings each.
+#[inline(always)]
+fn bernstein<const L: usize, const D: usize>(a: &Lane<L>, b: &Lane<L>) -> [Lane<L>; 4] {
+    let one = [1.0; L];
+    let (a2, b2) = (mul(a, a), mul(b, b));
+    match D {
+        0 => [one, [0.0; L], [0.0; L], [0.0; L]],
+        1 => [*a, *b, [0.0; L], [0.0; L]],
+        2 => [a2, mul(a, b), b2, [0.0; L]],
+        _ => [mul(&a2, a), mul(&a2, b), mul(a, &b2), mul(&b2, b)],
+    }
+}
+
+/// A tri patch of degree `n`: for each `j`, the points `G_{i,j,k}`
+/// (`i + k = n − j`) summed by [`horner`] in `(w, u)`, added to the
+/// point times `vʲ`.
+#[inline(always)]
+fn tri<const S: usize, const L: usize>(
+    fused: bool,
+    n: usize,
+    g: &[f64],
+    h: &Hom<L>,
+) -> [Lane<L>; S] {
+    let (mut out, mut vpow, mut start) = ([[0.0; L]; S], [1.0; L], 0);
+    for j in 0..=n {
+        let len = (n - j + 1) * S;
+        let r = horner::<S, L>(
+            fused,
+            n - j + 1,
+            broadcast::<S, L>(&g[start..start + len]),
+            &h[2],
+            &h[0],
+        );
+        start += len;
+        if j == 0 {
+            out = r;
+        } else {
+            for (o, r) in out.iter_mut().zip(&r) {
+                for l in 0..L {
+                    o[l] = madd(fused, vpow[l], r[l], o[l]);
+                }
+            }
+        }
+        if j < n {
+            for l in 0..L {
+                vpow[l] *= h[1][l];
+            }
+        }
+    }
+    out
 }
 
 /// Coordinate `k` of point `i` of `points` (`S` scalars a point), the same
@@ -428,6 +657,16 @@ fn horner<const S: usize, const L: usize>(
         }
     }
     acc
+}
+
+/// The lane-wise product `x·y`.
+#[inline(always)]
+fn mul<const L: usize>(x: &Lane<L>, y: &Lane<L>) -> Lane<L> {
+    let mut p = [0.0; L];
+    for l in 0..L {
+        p[l] = x[l] * y[l];
+    }
+    p
 }
 
 /// The lane `[f(0), …, f(L − 1)]`, by a loop that is inlined whole
@@ -508,6 +747,8 @@ mod tests {
         let shape = prop_oneof![
             (0..=12usize).prop_map(Shape::Curve),
             (0..=4usize, 0..=4usize).prop_map(|(m, n)| Shape::Rect(m, n)),
+            // The bicubic's own kernel (`rect_bernstein` in the vector builds).
+            Just(Shape::Rect(3, 3)),
             (0..=6usize).prop_map(Shape::Tri),
         ];
         (shape, 3..=4usize, 0..=21usize).prop_flat_map(|(shape, stride, points)| {
