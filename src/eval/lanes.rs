@@ -179,11 +179,13 @@ impl<J: Job, const SQUARE: usize> Kernel for Square<J, SQUARE> {
 /// patch in CAD data, by a kernel of its own whose loops are unrolled and
 /// whose values stay in registers ([`rect_bernstein`] in the vector
 /// builds, and the baseline's Horner steps with their rows on the stack);
-/// every other shape by one kernel. `peer_eval` (2026-11-28, AVX-512,
-/// best of 6 alternated runs at load 1.2–1.6): bicubic 5.5–5.7 → 4.0–4.2
-/// ns a point. The same for the cubic triangle was no faster (Horner
-/// steps unrolled, 4.0–4.1 ns either way) or slower (its Bernstein values,
-/// 5.4 ns), and a kernel for curves alone made their code worse.
+/// every other shape by one kernel. `peer_eval` (2026-11-28, AVX-512):
+/// bicubic 5.5–6.3 → 4.0–4.3 ns a point in a build without LTO (best of
+/// 6 alternated runs at load 1.2–1.6), 6.9–10.9 → 6.5–7.0 in the fat-LTO
+/// one (README, "Divides under the next group's work"). The same for the
+/// cubic triangle was no faster (Horner steps unrolled, 4.0–4.1 ns either
+/// way) or slower (its Bernstein values, 5.4 ns), and a kernel for curves
+/// alone made their code worse.
 #[inline(always)]
 fn by_shape<J: Job>(isa: Isa, mut shapes: impl Iterator<Item = Shape>, job: J) -> J::Output {
     let first = shapes.next();
