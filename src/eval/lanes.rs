@@ -252,7 +252,7 @@ pub(super) fn eval_batch<T: Any>(
     out: &mut [T],
     rows: &mut Vec<f64>,
 ) -> Option<Result<(), Error>> {
-    let net = (net as &dyn Any).downcast_ref::<Net<f64>>()?;
+    let net = f64_net(net)?;
     let shape = std::iter::once(net.shape());
     match net.stride() {
         3 => Some(by_shape(
@@ -306,18 +306,15 @@ pub(super) fn jets_batch<T: Any>(
     out: &mut [T],
     rows: &mut Vec<f64>,
 ) -> Option<()> {
-    let first = (nets.first()? as &dyn Any).downcast_ref::<Net<f64>>()?;
-    let nets = nets
-        .iter()
-        .map(|n| (n as &dyn Any).downcast_ref::<Net<f64>>())
-        .collect::<Option<Vec<_>>>()?;
+    // Every net has the type of the first (no allocation: `tests/alloc.rs`).
+    let first = f64_net(nets.first()?)?;
     let shape = nets.iter().map(|n| n.shape());
     match first.stride() {
         3 => by_shape(
             isa,
             shape,
             JetNets::<'_, 3, T> {
-                nets: &nets,
+                nets,
                 params,
                 out,
                 rows,
@@ -327,7 +324,7 @@ pub(super) fn jets_batch<T: Any>(
             isa,
             shape,
             JetNets::<'_, 4, T> {
-                nets: &nets,
+                nets,
                 params,
                 out,
                 rows,
@@ -340,7 +337,7 @@ pub(super) fn jets_batch<T: Any>(
 
 /// The arguments of [`jets`] at the stride `S`.
 struct JetNets<'a, const S: usize, T> {
-    nets: &'a [&'a Net<f64>],
+    nets: &'a [Net<T>],
     params: &'a [T],
     out: &'a mut [T],
     rows: &'a mut Vec<f64>,
@@ -439,7 +436,7 @@ fn write<const S: usize, const L: usize, T: Any>(
 #[inline(always)]
 fn jets<const S: usize, const L: usize, const SQUARE: usize, T: Any>(
     fused: bool,
-    nets: &[&Net<f64>],
+    nets: &[Net<T>],
     params: &[T],
     out: &mut [T],
     rows: &mut Vec<f64>,
@@ -449,7 +446,7 @@ fn jets<const S: usize, const L: usize, const SQUARE: usize, T: Any>(
     let per_point = nets.len() * S;
     for (p, o) in params.chunks(L * k).zip(out.chunks_mut(L * per_point)) {
         let hom = hom_lanes(shape, p);
-        for (i, net) in nets.iter().enumerate() {
+        for (i, net) in nets.iter().filter_map(f64_net).enumerate() {
             let h = hom_net::<S, L, SQUARE>(fused, net, &hom, rows);
             for (l, o) in o.chunks_exact_mut(per_point).enumerate() {
                 for (o, hk) in o[i * S..(i + 1) * S].iter_mut().zip(&h) {
@@ -704,6 +701,12 @@ fn madd(fused: bool, x: f64, y: f64, z: f64) -> f64 {
     } else {
         x * y + z
     }
+}
+
+/// `net` as a net of `f64` (`None` unless `T` is `f64`).
+#[inline(always)]
+fn f64_net<T: Any>(net: &Net<T>) -> Option<&Net<f64>> {
+    (net as &dyn Any).downcast_ref()
 }
 
 /// `x`, an `f64` as the type `T`, as an `f64`.
