@@ -33,17 +33,34 @@ pub fn bernstein<T: Scalar>(i: usize, n: usize, t: &T) -> T {
 /// assert_eq!(b, vec![ratio(4, 9), ratio(4, 9), ratio(1, 9)]);
 /// ```
 pub fn bernstein_all<T: Scalar>(n: usize, t: &T) -> Vec<T> {
-    let s = T::one() - t;
-    let mut b = vec![T::one()];
-    for _ in 0..n {
-        let mut next = vec![T::zero(); b.len() + 1];
-        for (i, bi) in b.iter().enumerate() {
-            next[i] = next[i].clone() + &(bi.clone() * &s);
-            next[i + 1] = next[i + 1].clone() + &(bi.clone() * t);
-        }
-        b = next;
-    }
+    let mut b = vec![T::zero(); n + 1];
+    bernstein_all_into(t, &mut b);
     b
+}
+
+/// [`bernstein_all`] into `b`, without allocating: `b[i] = B_{i,n}(t)`,
+/// `n + 1 = b.len()`, by the same recursion, each row overwriting the
+/// last from its high end. An empty `b` is left empty.
+///
+/// ```
+/// use exact_bezier::bernstein::bernstein_all_into;
+/// let mut b = [0.0; 4];
+/// bernstein_all_into(&0.5, &mut b);
+/// assert_eq!(b, [0.125, 0.375, 0.375, 0.125]);
+/// ```
+pub fn bernstein_all_into<T: Scalar>(t: &T, b: &mut [T]) {
+    let Some(first) = b.first_mut() else {
+        return;
+    };
+    *first = T::one();
+    let s = T::one() - t;
+    for r in 1..b.len() {
+        b[r] = b[r - 1].clone() * t;
+        for i in (1..r).rev() {
+            b[i] = b[i].clone() * &s + &(b[i - 1].clone() * t);
+        }
+        b[0] = b[0].clone() * &s;
+    }
 }
 
 /// The power-basis coefficients `a_0 … a_n` of `Σ_i b_i B_{i,n}(t)`

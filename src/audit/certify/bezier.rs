@@ -27,6 +27,7 @@ use super::compose::NetRef;
 use super::ivec::IVec;
 use super::Enclose;
 use crate::algebra::{Interval, Scalar};
+use crate::bernstein::bernstein_all_into;
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::{RationalCurve, RectPatch};
@@ -112,19 +113,13 @@ struct Net {
 
 /// The Bernstein basis `B_i^n(t) = C(n, i) tⁱ (1 − t)^{n−i}`, `i = 0..=n`,
 /// at `t` in `f64`, by the recursion `B_i^r = (1 − t) B_i^{r−1} + t B_{i−1}^{r−1}`
-/// (Farin, *Curves and Surfaces for CAGD*, 5th ed., §5.1): the values of
+/// ([`bernstein_all_into`]; Farin, *Curves and Surfaces for CAGD*, 5th
+/// ed., §5.1) on the stack for degrees up to 15: the values of
 /// every coefficient's basis function at once, so that a net of any
 /// number of coordinates is evaluated by dot products.
 fn basis_f64(n: usize, t: f64) -> SmallVec<[f64; 16]> {
-    let s = 1.0 - t;
     let mut b: SmallVec<[f64; 16]> = SmallVec::from_elem(0.0, n + 1);
-    b[0] = 1.0;
-    for r in 1..=n {
-        for i in (1..=r).rev() {
-            b[i] = s * b[i] + t * b[i - 1];
-        }
-        b[0] *= s;
-    }
+    bernstein_all_into(&t, &mut b);
     b
 }
 
