@@ -128,12 +128,16 @@ def make_cases(seed):
 # (src/eval/lanes.rs): curve n, stride s: 1 + n(3s + 1) and s − 1; tri n:
 # 2 + n(n + 1)/2·(3s + 1) + n(2s + 1); rect (m, n): 2 + (m + 1)·n(3s + 1)
 # + m(3s + 1), but a spatial bicubic in the vector builds (AVX2, AVX-512)
-# by its Bernstein values: 2 + 12 + 4·4·7 + 4·7 = 154 (rect_bernstein);
-# all s − 1 divides. The bound is that of the scheme the build runs.
+# by its Bernstein values: 2 + 12 + 4·4·7 + 4·7 = 154 (rect_bernstein),
+# and a curve of degree n >= 4 there by blocks of 4 terms (curve_blocks):
+# 9 + (k0 − 1)(3s + 1) + (Q − 1) + 10sQ with k0 = n + 1 mod 4 in 1..=4,
+# Q = (n + 1 − k0)/4: 90 for degree 10 (k0 = 3, Q = 2), 318 for degree 40
+# (k0 = 1, Q = 10); all s − 1 divides. The bound is that of the scheme the
+# build runs.
 COST = {
     "f64_curve3": (31, 2),
-    "f64_curve10": (101, 2),
-    "f64_curve40": (401, 2),
+    "f64_curve10": (90, 2),
+    "f64_curve40": (318, 2),
     "f64_tri3": (107, 3),
     "f64_bicubic": (154, 3),
 }

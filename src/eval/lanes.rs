@@ -77,7 +77,17 @@
 //! e.g. 31 flops and 2 divides for a planar cubic, 197 and 3 for a
 //! spatial bicubic, 107 and 3 for a spatial cubic triangle. The vector
 //! builds evaluate a bicubic by its Bernstein values instead
-//! ([`rect_bernstein`]): 154 flops and 3 divides for a spatial one.
+//! ([`rect_bernstein`]): 154 flops and 3 divides for a spatial one; and
+//! a curve of degree `n ≥ 4` by blocks of 4 terms ([`curve_blocks`]),
+//! `k₀ ≡ n + 1 mod 4` terms first (`1 ≤ k₀ ≤ 4`), then `Q = (n + 1 −
+//! k₀)/4` blocks:
+//!
+//! ```text
+//! curve n ≥ 4:  9 + (k₀ − 1)(3s + 1) + (Q − 1) + 10sQ            s − 1
+//! ```
+//!
+//! 90 flops for a planar curve of degree 10, 318 for degree 40 (101 and
+//! 401 by Horner).
 //!
 //! The divides of a group are issued before the multiply–adds of the
 //! next ([`project`]), so that the divider and the multiply–add units
@@ -140,9 +150,9 @@ impl Isa {
 }
 
 /// Whether the AVX-512 build runs a batch of `shape` [`LANES_AVX512`]
-/// points at a time: curves (one Horner chain per coordinate, whose FMA
-/// latency two registers a value hide: degree 40 13.0 → 9.4 ns a point,
-/// degree 10 3.9 → 3.3 ns), not patches (a cubic triangle took 6.2 ns
+/// points at a time: curves (one chain of multiply–adds per coordinate,
+/// whose FMA latency two registers a value hide: degree 40 13.0 → 9.4 ns
+/// a point by Horner, degree 10 3.9 → 3.3 ns), not patches (a cubic triangle took 6.2 ns
 /// instead of 5.4, a bicubic no less than 7.3; `peer_eval`, 2026-11-28).
 fn wide(shape: Shape) -> bool {
     matches!(shape, Shape::Curve(_))
@@ -491,6 +501,7 @@ fn hom_net<const S: usize, const L: usize, const SQUARE: usize>(
             let mut rows = [[[0.0; L]; S]; 4];
             rect::<S, L>(fused, (SQUARE, SQUARE), g, h, &mut rows[..=SQUARE])
         }
+        (_, Shape::Curve(n)) if fused && n >= BLOCK => curve_blocks::<S, L>(n, g, h),
         (_, Shape::Curve(n)) => horner::<S, L>(fused, n + 1, broadcast::<S, L>(g), &h[0], &h[1]),
         (_, Shape::Rect(m, n)) => {
             rows.resize((m + 1) * S * L, 0.0);
@@ -578,6 +589,105 @@ fn bernstein<const L: usize, const D: usize>(a: &Lane<L>, b: &Lane<L>) -> [Lane<
         2 => [a2, mul(a, b), b2, [0.0; L]],
         _ => [mul(&a2, a), mul(&a2, b), mul(a, &b2), mul(&b2, b)],
     }
+}
+
+/// The terms `K` of a block of [`curve_blocks`].
+const BLOCK: usize = 4;
+
+/// A curve of degree `n ≥ K` ([`BLOCK`]) in the vector builds:
+/// `Σ_i a^{n−i} bⁱ G_i` (binomials in the scaled net `g`) by blocks of `K`
+/// terms. The first `k₀` terms (`k₀ ≡ n + 1 mod K`, `1 ≤ k₀ ≤ K`) go
+/// by [`horner`]; then, Horner-like over the blocks,
+///
+/// ```text
+/// acc ← acc·a^K + b^s·Σ_{r<K} a^{K−1−r} b^r G_{s+r}      s = k₀, k₀ + K, …, n + 1 − K
+/// ```
+///
+/// with the Bernstein values `a^{K−1−r} b^r` computed once a group
+/// ([`values`]). A block costs `K + 2` multiply–adds or multiplies a
+/// coordinate for `K` terms, against `2K` by [`horner`], and its sums do
+/// not wait on the blocks before it: one multiply–add a block is the
+/// whole chain of latencies, not one a term. Measured (`peer_eval`,
+/// AVX-512, builds without LTO, 2026-11-28, load 1.7–2.5): planar degree
+/// 40 8.3 → 6.0 ns a point, degree 10 2.7–3.0 → 2.4–2.6; AVX2 degree 40
+/// 14.4 → 11.2, degree 10 unchanged (4.2); blocks of 5 or 8 terms
+/// were slower than by Horner (their values no longer fit the registers).
+///
+/// Roundings: a term of a block starting at `s` meets at most `n + K + 1
+/// ≤ 2n + 1`: the scaled net 1, its value `K − 2`, its block's
+/// multiply–adds `K`, `b^s` `s − 1` and the product by it 1, its step 1,
+/// and `K` for each of the `(n + 1 − s − K)/K` later blocks (`a^K` `K −
+/// 1`, the step 1). A term of the first `k₀` meets `2k₀ − 1` in
+/// [`horner`] and `K` a later block: `n + k₀` in all. So the tolerance of
+/// the module holds unchanged.
+#[inline(always)]
+fn curve_blocks<const S: usize, const L: usize>(n: usize, g: &[f64], h: &Hom<L>) -> [Lane<L>; S] {
+    let (points, _) = g.as_chunks::<S>();
+    let (a, b) = (powers::<L>(&h[0]), powers::<L>(&h[1]));
+    let first = match (n + 1) % BLOCK {
+        0 => BLOCK,
+        k => k,
+    };
+    let mut acc = horner::<S, L>(true, first, |i, k| [points[i][k]; L], &h[0], &h[1]);
+    let (block, mut bs) = (values::<L>(&a, &b), b[first]);
+    let (blocks, _) = points[first..].as_chunks::<BLOCK>();
+    for (q, part) in blocks.iter().enumerate() {
+        if q > 0 {
+            bs = mul(&bs, &b[BLOCK]);
+        }
+        let part = block_sum::<S, L>(&block, part);
+        for (acc, part) in acc.iter_mut().zip(&part) {
+            for l in 0..L {
+                acc[l] = acc[l].mul_add(a[BLOCK][l], bs[l] * part[l]);
+            }
+        }
+    }
+    acc
+}
+
+/// `x^j` for `j ≤ BLOCK` in every lane, by running products (`j − 1`
+/// roundings).
+#[inline(always)]
+fn powers<const L: usize>(x: &Lane<L>) -> [Lane<L>; BLOCK + 1] {
+    let mut p = [[1.0; L]; BLOCK + 1];
+    p[1] = *x;
+    for j in 2..=BLOCK {
+        p[j] = mul(&p[j - 1], x);
+    }
+    p
+}
+
+/// The Bernstein values `a^{K−1−r} b^r`, `r < K = BLOCK`, from the
+/// powers of [`powers`] (`K − 2` roundings at most).
+#[inline(always)]
+fn values<const L: usize>(a: &[Lane<L>; BLOCK + 1], b: &[Lane<L>; BLOCK + 1]) -> [Lane<L>; BLOCK] {
+    let mut v = [[0.0; L]; BLOCK];
+    for (r, v) in v.iter_mut().enumerate() {
+        *v = match (r, BLOCK - 1 - r) {
+            (0, e) => a[e],
+            (r, 0) => b[r],
+            (r, e) => mul(&a[e], &b[r]),
+        };
+    }
+    v
+}
+
+/// `Σ_r v_r P_r` over the `K` ([`BLOCK`]) points `P` of a block, each
+/// coordinate a chain of fused multiply–adds.
+#[inline(always)]
+fn block_sum<const S: usize, const L: usize>(
+    v: &[Lane<L>; BLOCK],
+    points: &[[f64; S]; BLOCK],
+) -> [Lane<L>; S] {
+    let mut out: [Lane<L>; S] = each(|k| lane(|l| v[0][l] * points[0][k]));
+    for (v, p) in v.iter().zip(points).skip(1) {
+        for (o, x) in out.iter_mut().zip(p) {
+            for l in 0..L {
+                o[l] = v[l].mul_add(*x, o[l]);
+            }
+        }
+    }
+    out
 }
 
 /// A tri patch of degree `n`: for each `j`, the points `G_{i,j,k}`
