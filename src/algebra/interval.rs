@@ -44,7 +44,7 @@ pub struct Interval {
 /// they are, as by `f64::next_up`. The unit tests compare the two on every
 /// special value and on random bit patterns. Written as a select the
 /// compiler makes branch-free, and so vectorises in loops.
-#[inline]
+#[inline(always)]
 pub(crate) fn next_up(x: f64) -> f64 {
     let b = (x + 0.0).to_bits();
     let up = f64::from_bits(b.wrapping_add(1).wrapping_sub((b >> 63) << 1));
@@ -58,7 +58,7 @@ pub(crate) fn next_up(x: f64) -> f64 {
 /// `x.next_down()`, as `−next_up(−x)` ([`next_up`]; negation is exact and
 /// maps the floats above `−x` onto those below `x`): bit for bit the same
 /// value for every input.
-#[inline]
+#[inline(always)]
 pub(crate) fn next_down(x: f64) -> f64 {
     -next_up(-x)
 }
@@ -119,16 +119,10 @@ impl Interval {
         if o.lo < 0.0 {
             return self.mul(o);
         }
-        let lo = if self.lo >= 0.0 {
-            self.lo * o.lo
-        } else {
-            self.lo * o.hi
-        };
-        let hi = if self.hi >= 0.0 {
-            self.hi * o.hi
-        } else {
-            self.hi * o.lo
-        };
+        // Selects rather than branches: the signs of control points
+        // are not predictable.
+        let lo = self.lo * if self.lo >= 0.0 { o.lo } else { o.hi };
+        let hi = self.hi * if self.hi >= 0.0 { o.hi } else { o.lo };
         Interval::rounded(lo, hi)
     }
 

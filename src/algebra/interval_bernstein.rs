@@ -113,37 +113,92 @@ fn convolve(a: &[Interval], b: &[Interval]) -> Scaled {
 /// product can give, a sum of outward-rounded ends never adds `+∞` to
 /// `−∞`), where `Interval::mul` would drop it.
 fn convolve_finite(a: &[Interval], b: &[Interval]) -> Scaled {
-    let m = b.len();
     let (c, d): (Vec<f64>, Vec<f64>) = b.iter().map(|y| (y.lo, y.hi)).unzip();
-    let (mut lo, mut hi) = (vec![0.0; a.len() + m - 1], vec![0.0; a.len() + m - 1]);
-    for (i, x) in a.iter().enumerate() {
-        let (low, high) = if x.lo >= 0.0 {
-            ((&c, &c), (&d, &d))
-        } else if x.hi <= 0.0 {
-            ((&d, &d), (&c, &c))
-        } else {
-            ((&d, &c), (&c, &d))
-        };
-        accumulate(
-            [x.lo, x.hi],
-            [&low.0[..m], &low.1[..m]],
-            [&high.0[..m], &high.1[..m]],
-            [&mut lo[i..i + m], &mut hi[i..i + m]],
-        );
+    let mut lo = vec![0.0; a.len() + b.len() - 1];
+    let mut hi = lo.clone();
+    let job = Convolution {
+        a,
+        ends: [&c, &d],
+        out: [&mut lo, &mut hi],
+    };
+    #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+    if let Some(v4) = pulp::x86::V4::try_new() {
+        v4.vectorize(job);
+    } else if let Some(v3) = pulp::x86::V3::try_new() {
+        v3.vectorize(job);
+    } else {
+        job.run();
     }
+    #[cfg(not(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64"))))]
+    job.run();
     lo.into_iter()
         .zip(hi)
         .map(|(lo, hi)| Interval { lo, hi })
         .collect()
 }
 
+/// The loops of [`convolve_finite`]: `a`, the ends `c`, `d` of `b`, and
+/// the ends of the output. Run as it is (the target's baseline vectors:
+/// SSE2, two `f64` per instruction) or, with the feature `simd`, compiled
+/// for AVX-512 or AVX2 where the processor has it (detected at run time;
+/// `pulp` makes the safe call into code compiled with those features,
+/// as in [`crate::eval`]'s lanes). The same IEEE operations in the same
+/// order in every build (Rust never fuses a product and a sum), so the
+/// same bits.
+struct Convolution<'a> {
+    a: &'a [Interval],
+    ends: [&'a [f64]; 2],
+    out: [&'a mut [f64]; 2],
+}
+
+impl Convolution<'_> {
+    /// For each `a_i`, the products with `b` added to the output from
+    /// `i` on ([`accumulate`]).
+    #[inline(always)]
+    fn run(self) {
+        let ([c, d], [lo, hi]) = (self.ends, self.out);
+        let m = c.len();
+        for (i, x) in self.a.iter().enumerate() {
+            let (low, high) = if x.lo >= 0.0 {
+                ((c, c), (d, d))
+            } else if x.hi <= 0.0 {
+                ((d, d), (c, c))
+            } else {
+                ((d, c), (c, d))
+            };
+            accumulate(
+                [x.lo, x.hi],
+                [low.0, low.1],
+                [high.0, high.1],
+                [&mut lo[i..i + m], &mut hi[i..i + m]],
+            );
+        }
+    }
+}
+
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+impl pulp::NullaryFnOnce for Convolution<'_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn call(self) {
+        self.run()
+    }
+}
+
 /// `out_j ⊕= [min(x₀·l₀_j, x₁·l₁_j), max(x₀·h₀_j, x₁·h₁_j)]`, each step
 /// rounded outward, for the slices of one length ([`convolve_finite`]).
-#[inline]
+#[inline(always)]
 fn accumulate(x: [f64; 2], l: [&[f64]; 2], h: [&[f64]; 2], [lo, hi]: [&mut [f64]; 2]) {
     let least = |p: f64, q: f64| if p < q { p } else { q };
     let most = |p: f64, q: f64| if p > q { p } else { q };
-    for j in 0..lo.len() {
+    let m = lo.len();
+    let (l, h, hi) = (
+        [&l[0][..m], &l[1][..m]],
+        [&h[0][..m], &h[1][..m]],
+        &mut hi[..m],
+    );
+    for j in 0..m {
         let p = next_down(least(x[0] * l[0][j], x[1] * l[1][j]));
         let q = next_up(most(x[0] * h[0][j], x[1] * h[1][j]));
         lo[j] = next_down(lo[j] + p);
