@@ -23,7 +23,10 @@
 //! processor has (detected at run time, once): `pulp::x86::V4` or `V3`
 //! calls a `#[target_feature]` function on our behalf, safely after its
 //! detection, and every kernel below is `#[inline(always)]` so that the
-//! whole of it is compiled inside that function.
+//! whole of it is compiled inside that function. One kernel is written
+//! in `pulp`'s vectors instead (`pulp::Simd`, safe, the same code for
+//! AVX2 and AVX-512): the bicubic's ([`rect_bernstein`]), whose lane
+//! loops the fat-LTO build had re-vectorised with permutes.
 //!
 //! The scalar kernel (`horner` in [`super`], one point at a time) stays
 //! the reference. The baseline build performs the same IEEE operations in
@@ -61,8 +64,9 @@
 //! differ by at most **twice** these bounds: that is the documented
 //! tolerance of a batch run by a vector build, a few units in the last
 //! place of `H̃_k/H_w` for the degrees of everyday CAD. The property test
-//! below checks the bound for both kernels against exact `BigRational`
-//! sums, and bit identity for the baseline build. A batch whose length
+//! below checks the bound for both kernels, in every vector build the
+//! processor runs (AVX-512 and AVX2 on an AVX-512 machine), against exact
+//! `BigRational` sums, and bit identity for the baseline build. A batch whose length
 //! is not a multiple of `L` fills its last group with the parameter
 //! `0` and keeps only the real points.
 //!
@@ -158,10 +162,64 @@ fn wide(shape: Shape) -> bool {
     matches!(shape, Shape::Curve(_))
 }
 
-/// A batch kernel of lane count `L`, `fused` or not ([`madd`]).
+/// A batch kernel of lane count `L`, compiled for the instructions `V`.
 trait Kernel {
     type Output;
-    fn run<const L: usize>(self, fused: bool) -> Self::Output;
+    fn run<const L: usize, V: Target>(self, simd: V) -> Self::Output;
+}
+
+/// The instructions a kernel is compiled for, known from its type (so
+/// that every choice below is made at compile time): the baseline
+/// ([`Baseline`]) or, with the feature `simd`, `pulp`'s tokens of AVX2
+/// and AVX-512.
+trait Target: Copy {
+    /// Whether the multiply–adds are fused ([`madd`]): false for the
+    /// baseline, which has no FMA instruction, true for the vector
+    /// builds, which have one.
+    const FUSED: bool;
+
+    /// The homogeneous points of a rect net `g` of degree `(D, D)`,
+    /// `D ≤ 3`, at the parameters `h`.
+    fn square<const S: usize, const L: usize, const D: usize>(
+        self,
+        g: &[f64],
+        h: &Hom<L>,
+    ) -> [Lane<L>; S];
+}
+
+/// The target's baseline instructions ([`Isa::Baseline`]).
+#[derive(Clone, Copy)]
+struct Baseline;
+
+impl Target for Baseline {
+    const FUSED: bool = false;
+
+    /// [`rect`]'s Horner steps, the scalar kernel's operations, with the
+    /// rows on the stack.
+    #[inline(always)]
+    fn square<const S: usize, const L: usize, const D: usize>(
+        self,
+        g: &[f64],
+        h: &Hom<L>,
+    ) -> [Lane<L>; S] {
+        let mut rows = [[[0.0; L]; S]; 4];
+        rect::<S, L>(false, (D, D), g, h, &mut rows[..=D])
+    }
+}
+
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+impl<V: pulp::Simd> Target for V {
+    const FUSED: bool = true;
+
+    /// [`rect_bernstein`] in `V`'s vectors.
+    #[inline(always)]
+    fn square<const S: usize, const L: usize, const D: usize>(
+        self,
+        g: &[f64],
+        h: &Hom<L>,
+    ) -> [Lane<L>; S] {
+        rect_bernstein::<S, L, D, V>(self, g, h)
+    }
 }
 
 /// A batch job (evaluation or jets) whose kernel is compiled for nets of
@@ -169,7 +227,7 @@ trait Kernel {
 /// SQUARE)` only (see [`by_shape`]).
 trait Job {
     type Output;
-    fn run<const L: usize, const SQUARE: usize>(self, fused: bool) -> Self::Output;
+    fn run<const L: usize, const SQUARE: usize, V: Target>(self, simd: V) -> Self::Output;
 }
 
 /// A [`Job`] compiled for `SQUARE` (see [`Job`]): a [`Kernel`].
@@ -179,8 +237,8 @@ impl<J: Job, const SQUARE: usize> Kernel for Square<J, SQUARE> {
     type Output = J::Output;
 
     #[inline(always)]
-    fn run<const L: usize>(self, fused: bool) -> J::Output {
-        self.0.run::<L, SQUARE>(fused)
+    fn run<const L: usize, V: Target>(self, simd: V) -> J::Output {
+        self.0.run::<L, SQUARE, V>(simd)
     }
 }
 
@@ -192,7 +250,8 @@ impl<J: Job, const SQUARE: usize> Kernel for Square<J, SQUARE> {
 /// every other shape by one kernel. `peer_eval` (2026-11-28, AVX-512):
 /// bicubic 5.5–6.3 → 4.0–4.3 ns a point in a build without LTO (best of
 /// 6 alternated runs at load 1.2–1.6), 6.9–10.9 → 6.5–7.0 in the fat-LTO
-/// one (README, "Divides under the next group's work"). The same for the
+/// one (README, "Divides under the next group's work"), then 6.0–6.3 →
+/// 4.8–5.4 there with [`rect_bernstein`] in `pulp`'s vectors. The same for the
 /// cubic triangle was no faster (Horner steps unrolled, 4.0–4.1 ns either
 /// way) or slower (its Bernstein values, 5.4 ns), and a kernel for curves
 /// alone made their code worse.
@@ -214,36 +273,38 @@ fn by_shape<J: Job>(isa: Isa, mut shapes: impl Iterator<Item = Shape>, job: J) -
 /// instruction set's features, hence the `#[inline(always)]` of every
 /// kernel function below and of [`Fused::call`] (a closure called through
 /// `FnOnce` was inlined only while the kernel was small, and its code then
-/// lacked the features: `mul_add` became a library call). `fused` is a
-/// constant in each arm, so the other branch of [`madd`] is compiled
-/// away: false for the baseline, which has no FMA instruction, true for
-/// the vector builds, which have one.
+/// lacked the features: `mul_add` became a library call). Each arm passes
+/// its instructions as a type ([`Target`]), so that every choice they
+/// decide (the branch of [`madd`], the bicubic's kernel) is made at
+/// compile time: a token passed as a value of [`Isa`] left them to run
+/// time, and the compiler then split the curves' divides into 128-bit
+/// ones (cubic 1.6 → 3.0 ns a point).
 #[inline(always)]
 fn dispatch<K: Kernel>(isa: Isa, wide: bool, kernel: K) -> K::Output {
     // Read by the AVX-512 arm only (absent without the feature `simd`).
     let _ = wide;
     match isa {
-        Isa::Baseline => kernel.run::<LANES>(false),
+        Isa::Baseline => kernel.run::<LANES, _>(Baseline),
         #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
-        Isa::Avx2(v3) => v3.vectorize(Fused::<K, LANES>(kernel)),
+        Isa::Avx2(v3) => v3.vectorize(Fused::<K, LANES, _>(kernel, v3)),
         #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
-        Isa::Avx512(v4) if wide => v4.vectorize(Fused::<K, LANES_AVX512>(kernel)),
+        Isa::Avx512(v4) if wide => v4.vectorize(Fused::<K, LANES_AVX512, _>(kernel, v4)),
         #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
-        Isa::Avx512(v4) => v4.vectorize(Fused::<K, LANES>(kernel)),
+        Isa::Avx512(v4) => v4.vectorize(Fused::<K, LANES, _>(kernel, v4)),
     }
 }
 
 /// A kernel run fused at `L` lanes, as `pulp` calls it.
 #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
-struct Fused<K, const L: usize>(K);
+struct Fused<K, const L: usize, V>(K, V);
 
 #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
-impl<K: Kernel, const L: usize> pulp::NullaryFnOnce for Fused<K, L> {
+impl<K: Kernel, const L: usize, V: Target> pulp::NullaryFnOnce for Fused<K, L, V> {
     type Output = K::Output;
 
     #[inline(always)]
     fn call(self) -> K::Output {
-        self.0.run::<L>(true)
+        self.0.run::<L, V>(self.1)
     }
 }
 
@@ -301,8 +362,8 @@ impl<const S: usize, T: Any> Job for Project<'_, S, T> {
     type Output = Result<(), Error>;
 
     #[inline(always)]
-    fn run<const L: usize, const SQUARE: usize>(self, fused: bool) -> Self::Output {
-        project::<S, L, SQUARE, T>(fused, self.net, self.params, self.out, self.rows)
+    fn run<const L: usize, const SQUARE: usize, V: Target>(self, simd: V) -> Self::Output {
+        project::<S, L, SQUARE, T, V>(simd, self.net, self.params, self.out, self.rows)
     }
 }
 
@@ -357,8 +418,8 @@ impl<const S: usize, T: Any> Job for JetNets<'_, S, T> {
     type Output = ();
 
     #[inline(always)]
-    fn run<const L: usize, const SQUARE: usize>(self, fused: bool) {
-        jets::<S, L, SQUARE, T>(fused, self.nets, self.params, self.out, self.rows)
+    fn run<const L: usize, const SQUARE: usize, V: Target>(self, simd: V) {
+        jets::<S, L, SQUARE, T, V>(simd, self.nets, self.params, self.out, self.rows)
     }
 }
 
@@ -369,8 +430,8 @@ impl<const S: usize, T: Any> Job for JetNets<'_, S, T> {
 /// wait on them and fill the scheduler, and the two kinds of work ran one
 /// after the other).
 #[inline(always)]
-fn project<const S: usize, const L: usize, const SQUARE: usize, T: Any>(
-    fused: bool,
+fn project<const S: usize, const L: usize, const SQUARE: usize, T: Any, V: Target>(
+    simd: V,
     net: &Net<f64>,
     params: &[T],
     out: &mut [T],
@@ -380,7 +441,7 @@ fn project<const S: usize, const L: usize, const SQUARE: usize, T: Any>(
     let mut last: Option<([Lane<L>; S], &mut [T])> = None;
     for (p, o) in params.chunks(L * k).zip(out.chunks_mut(L * (S - 1))) {
         let divided = last.take().map(|(h, o)| (quotients(&h), o));
-        let h = hom_net::<S, L, SQUARE>(fused, net, &hom_lanes(net.shape(), p), rows);
+        let h = hom_net::<S, L, SQUARE, V>(simd, net, &hom_lanes(net.shape(), p), rows);
         if let Some((x, o)) = divided {
             write(&x, o)?;
         }
@@ -444,8 +505,8 @@ fn write<const S: usize, const L: usize, T: Any>(
 
 /// [`jets_batch`] at the stride `S`.
 #[inline(always)]
-fn jets<const S: usize, const L: usize, const SQUARE: usize, T: Any>(
-    fused: bool,
+fn jets<const S: usize, const L: usize, const SQUARE: usize, T: Any, V: Target>(
+    simd: V,
     nets: &[Net<T>],
     params: &[T],
     out: &mut [T],
@@ -457,7 +518,7 @@ fn jets<const S: usize, const L: usize, const SQUARE: usize, T: Any>(
     for (p, o) in params.chunks(L * k).zip(out.chunks_mut(L * per_point)) {
         let hom = hom_lanes(shape, p);
         for (i, net) in nets.iter().filter_map(f64_net).enumerate() {
-            let h = hom_net::<S, L, SQUARE>(fused, net, &hom, rows);
+            let h = hom_net::<S, L, SQUARE, V>(simd, net, &hom, rows);
             for (l, o) in o.chunks_exact_mut(per_point).enumerate() {
                 for (o, hk) in o[i * S..(i + 1) * S].iter_mut().zip(&h) {
                     *as_f64_mut(o) = hk[l];
@@ -488,19 +549,15 @@ fn hom_lanes<const L: usize, T: Any>(shape: Shape, params: &[T]) -> Hom<L> {
 /// lane, each multiply–add fused or not ([`madd`]); for a rect net of
 /// degree `(SQUARE, SQUARE)`, `SQUARE ≤ 3`, if `SQUARE` is not 0 ([`Job`]).
 #[inline(always)]
-fn hom_net<const S: usize, const L: usize, const SQUARE: usize>(
-    fused: bool,
+fn hom_net<const S: usize, const L: usize, const SQUARE: usize, V: Target>(
+    simd: V,
     net: &Net<f64>,
     h: &Hom<L>,
     rows: &mut Vec<f64>,
 ) -> [Lane<L>; S] {
-    let g = net.scaled();
+    let (g, fused) = (net.scaled(), V::FUSED);
     match (SQUARE, net.shape()) {
-        (1.., _) if fused => rect_bernstein::<S, L, SQUARE>(g, h),
-        (1.., _) => {
-            let mut rows = [[[0.0; L]; S]; 4];
-            rect::<S, L>(fused, (SQUARE, SQUARE), g, h, &mut rows[..=SQUARE])
-        }
+        (1.., _) => simd.square::<S, L, SQUARE>(g, h),
         (_, Shape::Curve(n)) if fused && n >= BLOCK => curve_blocks::<S, L>(n, g, h),
         (_, Shape::Curve(n)) => horner::<S, L>(fused, n + 1, broadcast::<S, L>(g), &h[0], &h[1]),
         (_, Shape::Rect(m, n)) => {
@@ -543,51 +600,64 @@ fn rect<const S: usize, const L: usize>(
 /// row's value `D − 1`, the row's multiply–add and the `D − i` later ones
 /// in the point (`2D` at most): `4D + 1 = 2m + 2n + 1` in all, so the
 /// tolerance of the module holds unchanged.
+///
+/// Written in the vectors of `V` (`pulp::Simd`: eight `f64` for AVX-512,
+/// four for AVX2; the `L` lanes are `L / F64_LANES` of them, each summed
+/// on its own), not as loops over the lanes: the fat-LTO build
+/// re-vectorised those loops with permutes and ran the bicubic at 6.0–6.3
+/// ns a point against 4.8–5.4 this way (`peer_eval`, 2026-11-28).
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
 #[inline(always)]
-fn rect_bernstein<const S: usize, const L: usize, const D: usize>(
+fn rect_bernstein<const S: usize, const L: usize, const D: usize, V: pulp::Simd>(
+    simd: V,
     g: &[f64],
     h: &Hom<L>,
 ) -> [Lane<L>; S] {
-    let (bu, bv) = (
-        bernstein::<L, D>(&h[0], &h[1]),
-        bernstein::<L, D>(&h[2], &h[3]),
-    );
     let (points, _) = g.as_chunks::<S>();
+    let [a, b, c, d] = h.each_ref().map(|x| V::as_simd_f64s(x).0);
     let mut out = [[0.0; L]; S];
-    for i in 0..=D {
-        let row = &points[i * (D + 1)..(i + 1) * (D + 1)];
-        for (k, o) in out.iter_mut().enumerate() {
-            let mut r = [0.0; L];
-            for l in 0..L {
-                r[l] = bv[0][l] * row[0][k];
-            }
-            for j in 1..=D {
-                for l in 0..L {
-                    r[l] = bv[j][l].mul_add(row[j][k], r[l]);
+    for q in 0..a.len() {
+        let bu = bernstein::<V, D>(simd, a[q], b[q]);
+        let bv = bernstein::<V, D>(simd, c[q], d[q]);
+        let mut o = [simd.splat_f64s(0.0); S];
+        for i in 0..=D {
+            let row = &points[i * (D + 1)..(i + 1) * (D + 1)];
+            for (k, o) in o.iter_mut().enumerate() {
+                let mut r = simd.mul_f64s(bv[0], simd.splat_f64s(row[0][k]));
+                for j in 1..=D {
+                    r = simd.mul_add_f64s(bv[j], simd.splat_f64s(row[j][k]), r);
                 }
-            }
-            for l in 0..L {
-                o[l] = match i {
-                    0 => bu[i][l] * r[l],
-                    _ => bu[i][l].mul_add(r[l], o[l]),
+                *o = match i {
+                    0 => simd.mul_f64s(bu[0], r),
+                    _ => simd.mul_add_f64s(bu[i], r, *o),
                 };
             }
+        }
+        for (out, o) in out.iter_mut().zip(o) {
+            V::as_mut_simd_f64s(out).0[q] = o;
         }
     }
     out
 }
 
-/// `a^{D−j} b^j` for `j ≤ D ≤ 3` in every lane (the entries past `D`
-/// are 0): products of running powers, at most `D − 1` roundings each.
+/// `a^{D−j} b^j` for `j ≤ D ≤ 3` in each lane of a vector (the entries
+/// past `D` are 0): products of running powers, at most `D − 1`
+/// roundings each.
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
 #[inline(always)]
-fn bernstein<const L: usize, const D: usize>(a: &Lane<L>, b: &Lane<L>) -> [Lane<L>; 4] {
-    let one = [1.0; L];
-    let (a2, b2) = (mul(a, a), mul(b, b));
+fn bernstein<V: pulp::Simd, const D: usize>(simd: V, a: V::f64s, b: V::f64s) -> [V::f64s; 4] {
+    let (one, zero) = (simd.splat_f64s(1.0), simd.splat_f64s(0.0));
+    let (a2, b2) = (simd.mul_f64s(a, a), simd.mul_f64s(b, b));
     match D {
-        0 => [one, [0.0; L], [0.0; L], [0.0; L]],
-        1 => [*a, *b, [0.0; L], [0.0; L]],
-        2 => [a2, mul(a, b), b2, [0.0; L]],
-        _ => [mul(&a2, a), mul(&a2, b), mul(a, &b2), mul(&b2, b)],
+        0 => [one, zero, zero, zero],
+        1 => [a, b, zero, zero],
+        2 => [a2, simd.mul_f64s(a, b), b2, zero],
+        _ => [
+            simd.mul_f64s(a2, a),
+            simd.mul_f64s(a2, b),
+            simd.mul_f64s(a, b2),
+            simd.mul_f64s(b2, b),
+        ],
     }
 }
 
@@ -1035,12 +1105,15 @@ mod tests {
             jets_batch(Isa::Baseline, &jets.nets, &params, &mut jet_batch, &mut rows)
                 .expect("f64 nets of stride 3 or 4");
             prop_assert_eq!(bits(&jet_batch), bits(&scalar_jets));
-            let mut fused = batch.clone();
-            eval_batch(Isa::detect(), &ev.net, &params, &mut fused, &mut rows).unwrap().unwrap();
+            let mut fused = Vec::new();
+            for isa in vector_builds() {
+                let (mut points, mut jet_points) = (batch.clone(), jet_batch.clone());
+                eval_batch(isa, &ev.net, &params, &mut points, &mut rows).unwrap().unwrap();
+                jets_batch(isa, &jets.nets, &params, &mut jet_points, &mut rows).unwrap();
+                fused.push((points, jet_points));
+            }
             let mut public = batch.clone();
             ev.eval_batch(&params, &mut public).unwrap();
-            let mut fused_jets = jet_batch.clone();
-            jets_batch(Isa::detect(), &jets.nets, &params, &mut fused_jets, &mut rows).unwrap();
             let mut public_jets = jet_batch.clone();
             jets.eval_batch(&params, &mut public_jets).unwrap();
             let g = gamma(shape);
@@ -1048,18 +1121,29 @@ mod tests {
             for (i, p) in params.chunks(k).enumerate() {
                 let h = hom(shape, p);
                 let e = exact(&ev.net, &h);
-                for got in [&scalar, &fused, &public] {
+                for got in [&scalar, &public].into_iter().chain(fused.iter().map(|f| &f.0)) {
                     prop_assert!(point_within(&got[i * d..(i + 1) * d], &e, &g), "point {}", i);
                 }
                 for (j, net) in jets.nets.iter().enumerate() {
                     let e = exact(net, &h);
                     let at = i * per_jet + j * (d + 1);
-                    for got in [&scalar_jets, &fused_jets, &public_jets] {
+                    for got in [&scalar_jets, &public_jets].into_iter().chain(fused.iter().map(|f| &f.1)) {
                         prop_assert!(hom_within(&got[at..at + d + 1], &e, &g), "jet {} of point {}", j, i);
                     }
                 }
             }
         }
+    }
+
+    /// The vector builds this processor runs: the widest
+    /// ([`Isa::detect`]) and, on an AVX-512 one, the AVX2 build as well.
+    fn vector_builds() -> Vec<Isa> {
+        let mut isas = vec![Isa::detect()];
+        #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+        if let (Isa::Avx512(_), Some(v3)) = (isas[0], pulp::x86::V3::try_new()) {
+            isas.push(Isa::Avx2(v3));
+        }
+        isas
     }
 
     /// A fused multiply–add changes the value where the scalar kernel's
