@@ -33,26 +33,6 @@ pub use tri_to_rect::{
 
 use crate::algebra::scalar::Scalar;
 
-/// Pascal's triangle as scalars: `table[a][b] = C(a, b)` for `b ≤ a ≤ n`
-/// (one table per conversion instead of a big-integer binomial per term).
-fn pascal<T: Scalar>(n: usize) -> Vec<Vec<T>> {
-    let mut table: Vec<Vec<T>> = vec![vec![T::one()]];
-    for a in 1..=n {
-        let prev = &table[a - 1];
-        let row = (0..=a)
-            .map(
-                |b| match (b.checked_sub(1).and_then(|c| prev.get(c)), prev.get(b)) {
-                    (Some(x), Some(y)) => x.clone() + y,
-                    (Some(x), None) | (None, Some(x)) => x.clone(),
-                    (None, None) => T::zero(),
-                },
-            )
-            .collect();
-        table.push(row);
-    }
-    table
-}
-
 /// `1 / C(n, k)` as a scalar.
 fn recip_binomial<T: Scalar>(n: usize, k: usize) -> T {
     T::from_rational(&num_rational::BigRational::new(

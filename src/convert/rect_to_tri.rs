@@ -1,7 +1,8 @@
 //! Rectangle (m, n) → two triangles of degree m + n (source 003 §2).
 
-use super::{pascal, recip_binomial};
+use super::recip_binomial;
 use crate::algebra::scalar::Scalar;
+use crate::bernstein::binomial_rows;
 use crate::hpoint::HPoint;
 use crate::rect::RectPatch;
 use crate::tri::{Bary, TriPatch};
@@ -56,7 +57,7 @@ pub fn rect_to_tri<T: Scalar>(r: &RectPatch<T>, half: Half) -> TriPatch<T> {
         Half::Lower => &ctrl[i][j],
         Half::Upper => &ctrl[m - i][n - j],
     };
-    let c = pascal::<T>(m + n);
+    let c = binomial_rows::<T>(m + n);
     let inv = recip_binomial::<T>(m + n, m);
     TriPatch::from_fn(m + n, |rr, s, t| {
         let mut acc = HPoint::zero(r.dim());

@@ -14,8 +14,9 @@
 //! ([`Split::standard`]) is the centroid and the edge midpoints:
 //! `a = c = 1/3`, `b = d = e = f = 1/2`.
 
-use super::{pascal, recip_binomial};
+use super::recip_binomial;
 use crate::algebra::scalar::{binomial, ratio, Ordered, Scalar};
+use crate::bernstein::binomial_rows;
 use crate::blossom::ShiftOp;
 use crate::error::Error;
 use crate::hpoint::HPoint;
@@ -172,7 +173,7 @@ pub fn bilinear<T: Scalar>(corners: &[Bary<T>; 4], s: &T, t: &T) -> Bary<T> {
 /// (22) — the share of pairings of `(0^{n−i}, 1^i)` with `(0^{n−j}, 1^j)`
 /// that have `k` pairs `(1, 1)` — as `weights(i, j, k)` for `k` in [`k_range`].
 fn pairing_weights<T: Scalar>(n: usize) -> impl Fn(usize, usize, usize) -> T {
-    let c = pascal::<T>(n);
+    let c = binomial_rows::<T>(n);
     let inv: Vec<T> = (0..=n).map(|j| recip_binomial::<T>(n, j)).collect();
     move |i, j, k| c[i][k].clone() * &c[n - i][j - k] * &inv[j]
 }
