@@ -588,6 +588,7 @@ mod monotonicity {
     //! analysis, plus a dense exact sample.
     use super::*;
     use exact_bezier::algebra::Ordered;
+    use num_traits::Signed;
 
     pub fn claims() -> Vec<Claim> {
         vec![
@@ -843,26 +844,29 @@ mod monotonicity {
             let grid: Vec<BigRational> = (1..steps)
                 .map(|i| lo.clone() + (hi.clone() - &lo) * ratio::<BigRational>(i, steps))
                 .collect();
-            for pair in grid.windows(2) {
-                let (a, b) = (omega_cubes(&c, &pair[0]), omega_cubes(&c, &pair[1]));
-                let s1 =
-                    BigRational::from_i64(1) - &c + &pair[0] * &c * &k * BigRational::from_i64(3);
-                let s2 =
-                    &pair[1] * &k * (BigRational::from_i64(1) + &c * &c * BigRational::from_i64(2))
-                        - (BigRational::from_i64(1) - &c);
-                let s1b =
-                    BigRational::from_i64(1) - &c + &pair[1] * &c * &k * BigRational::from_i64(3);
-                let s2a =
-                    &pair[0] * &k * (BigRational::from_i64(1) + &c * &c * BigRational::from_i64(2))
-                        - (BigRational::from_i64(1) - &c);
-                let zero = BigRational::from_i64(0);
+            // Per grid point: the cubes (ω₁³, ω₂³) and the two signs' arguments
+            // `1 − c + 3λck` and `λk(1 + 2c²) − (1 − c)`, each computed once.
+            let one = BigRational::from_i64(1);
+            let (three, two) = (BigRational::from_i64(3), BigRational::from_i64(2));
+            let at: Vec<_> = grid
+                .iter()
+                .map(|l| {
+                    let s1 = one.clone() - &c + l * &c * &k * &three;
+                    let s2 = l * &k * (one.clone() + &c * &c * &two) - (one.clone() - &c);
+                    (omega_cubes(&c, l), s1.signum(), s2.signum())
+                })
+                .collect();
+            for (pair, lambda) in at.windows(2).zip(&grid) {
+                let [(a, s1a, s2a), (b, s1b, s2b)] = [&pair[0], &pair[1]];
                 // Where the sign is the same at both ends, the step must go that way.
-                let ok1 = !(s1 > zero && s1b > zero) || b.0 > a.0;
-                let ok1b = !(s1 < zero && s1b < zero) || b.0 < a.0;
-                let ok2 = !(s2 > zero && s2a > zero) || b.1 > a.1;
-                let ok2b = !(s2 < zero && s2a < zero) || b.1 < a.1;
-                if !(ok1 && ok1b && ok2 && ok2b) && bad.is_none() {
-                    bad = Some(format!("c = {c}, λ = {}", pair[0]));
+                let moves_as_signed =
+                    |sa: &BigRational, sb: &BigRational, lo: &BigRational, hi: &BigRational| {
+                        sa != sb || (!sa.is_positive() || hi > lo) && (!sa.is_negative() || hi < lo)
+                    };
+                if !(moves_as_signed(s1a, s1b, &a.0, &b.0) && moves_as_signed(s2a, s2b, &a.1, &b.1))
+                    && bad.is_none()
+                {
+                    bad = Some(format!("c = {c}, λ = {lambda}"));
                 }
                 checked += 1;
             }
