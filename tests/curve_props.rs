@@ -1,7 +1,9 @@
 //! Property tests of the curve core on random exact curves.
 
+use exact_bezier::hpoint::HPoint;
 use exact_bezier::strategy::{curve, open_unit_parameter, rect, tri, unit_parameter};
-use exact_bezier::RationalCurve;
+use exact_bezier::{ratio, RationalCurve};
+use num_rational::BigRational;
 use proptest::prelude::*;
 
 proptest! {
@@ -16,6 +18,30 @@ proptest! {
     #[test]
     fn elevation_keeps_points(c in curve(3, 3), r in 0usize..4, t in unit_parameter()) {
         prop_assert_eq!(c.elevate(r).eval(&t).unwrap(), c.eval(&t).unwrap());
+    }
+
+    /// `elevate(r)` (all `r` steps in one sum each) gives the control
+    /// points of source 001's single step
+    /// `P*_i = (i/(n+1)) P_{i−1} + (1 − i/(n+1)) P_i`, written out here,
+    /// applied `r` times.
+    #[test]
+    fn elevation_is_the_single_step_repeated(c in curve(5, 3), r in 0usize..6) {
+        let step = |p: Vec<HPoint<BigRational>>| -> Vec<HPoint<BigRational>> {
+            let n = p.len() - 1;
+            (0..=n + 1)
+                .map(|i| {
+                    let a = ratio::<BigRational>(i as i64, n as i64 + 1);
+                    let b = ratio::<BigRational>(1, 1) - &a;
+                    let (left, right) = (&p[i.saturating_sub(1)], &p[i.min(n)]);
+                    HPoint {
+                        coords: left.coords.iter().zip(&right.coords).map(|(x, y)| x * &a + y * &b).collect(),
+                    }
+                })
+                .collect()
+        };
+        let repeated = (0..r).fold(c.ctrl().to_vec(), |p, _| step(p));
+        let elevated = c.elevate(r);
+        prop_assert_eq!(elevated.ctrl(), &repeated[..]);
     }
 }
 

@@ -26,6 +26,7 @@ use exact_bezier::algebra::Poly;
 use serde_json::{json, Value};
 use std::cell::Cell;
 use std::fmt;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 pub mod analytic;
@@ -317,25 +318,31 @@ pub fn abbreviate(text: &str) -> String {
 /// Per check, the first `Some` over `items` in their order (like
 /// `find_map`), for `K` checks computed together (claims that share one
 /// costly computation per item: `check` gives the `K` outcomes of one
-/// item). The items are shared out over the available cores: worker `w` of
-/// `W` checks items `w, w + W, …` and stops once each check has failed on
-/// one of its items, and per check the failure of least index among the
-/// workers' is the first one overall, so the answer does not depend on the
-/// timing.
+/// item). The items are shared out over the available cores as they come:
+/// each worker takes the next item not yet taken (so a costly item does not
+/// hold back the ones a fixed split would have queued behind it: the
+/// bidegrees of `yang_yong` grow in cost, and a split by parity left one
+/// core with 59 % of the work) and stops once each check has failed on one
+/// of its items. Per check, the failure of least index among the workers'
+/// is the first one overall, so the answer does not depend on the timing:
+/// items are taken in increasing order, and a worker stops only with a
+/// failure of every check at an index below the items it leaves, so the
+/// least failing item of each check is always taken and checked.
 pub(crate) fn first_failures<T: Sync, R: Send, const K: usize>(
     items: &[T],
     check: impl Fn(&T) -> [Option<R>; K] + Sync,
 ) -> [Option<R>; K] {
     let workers = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let check = &check;
+    let (check, next) = (&check, &AtomicUsize::new(0));
     let none = || std::array::from_fn::<Option<(usize, R)>, K, _>(|_| None);
     std::thread::scope(|scope| {
         let handles: Vec<_> = (0..workers)
-            .map(|w| {
+            .map(|_| {
                 scope.spawn(move || {
                     let mut found = none();
-                    for k in (w..items.len()).step_by(workers) {
-                        if found.iter().all(Option::is_some) {
+                    while !found.iter().all(Option::is_some) {
+                        let k = next.fetch_add(1, Ordering::Relaxed);
+                        if k >= items.len() {
                             break;
                         }
                         for (slot, r) in found.iter_mut().zip(check(&items[k])) {

@@ -19,7 +19,7 @@ pub use join::{g0_join, g1_join};
 pub use ops::Corner;
 
 use crate::algebra::scalar::{Field, Ordered, Scalar};
-use crate::curve::{elevate_once, mobius_factors, RationalCurve};
+use crate::curve::{elevate_by, mobius_factors, RationalCurve};
 use crate::error::Error;
 use crate::eval::{Evaluator, Jets, Net, Shape};
 use crate::hpoint::{check_positive_weights, de_casteljau, HPoint};
@@ -114,9 +114,9 @@ impl<T: Scalar> RectPatch<T> {
     /// Raise the bidegree by `(r, s)`, keeping every point: curve elevation
     /// (source 001, "升阶") on every column (u) and every row (v).
     pub fn elevate(&self, r: usize, s: usize) -> Self {
-        let rows: Vec<Vec<HPoint<T>>> = self.ctrl.iter().map(|row| elevate_row(row, s)).collect();
+        let rows: Vec<Vec<HPoint<T>>> = self.ctrl.iter().map(|row| elevate_by(row, s)).collect();
         let swapped = RectPatch { ctrl: rows }.swap_uv();
-        let cols: Vec<Vec<HPoint<T>>> = swapped.ctrl.iter().map(|c| elevate_row(c, r)).collect();
+        let cols: Vec<Vec<HPoint<T>>> = swapped.ctrl.iter().map(|c| elevate_by(c, r)).collect();
         RectPatch { ctrl: cols }.swap_uv()
     }
 }
@@ -270,10 +270,6 @@ pub enum Side {
     V0,
     /// `v = 1`: the curve `u ↦ X(u, 1)`.
     V1,
-}
-
-fn elevate_row<T: Scalar>(row: &[HPoint<T>], times: usize) -> Vec<HPoint<T>> {
-    (0..times).fold(row.to_vec(), |acc, _| elevate_once(&acc))
 }
 
 /// # Validation of weights
