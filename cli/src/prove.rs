@@ -17,8 +17,8 @@ pub struct Args {
     #[arg(long, value_name = "NAME")]
     family: Option<String>,
     /// Check the costly bounded claims to their deep bounds (yang_yong's
-    /// Möbius and scaling point identities to m, n ≤ 10 and its
-    /// quadratic-map claims to m, n ≤ 8, instead of 5): seconds, not one.
+    /// Möbius and scaling point identities and quadratic-map claims to
+    /// m, n ≤ 10 instead of 5): seconds, not one.
     #[arg(long)]
     deep: bool,
 }
