@@ -231,6 +231,8 @@ def main():
     ap.add_argument("--gmp", help="the GMP harness executable (benches/peers/gmp)")
     ap.add_argument("--rounds", type=int, default=5)
     ap.add_argument("--repeat", type=int, default=9)
+    ap.add_argument("--allocator", default="not stated",
+                    help="the allocators of the two sides, for the final JSON line")
     args = ap.parse_args()
     cs = cases()
     with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
@@ -276,7 +278,7 @@ def main():
         ratios[n] = round(a / b, 3)
         worst = max(worst, a / b)
         print(f"{n:<26} {sizes[n]:>7} {a:>9.3f} {b:>9.3f} {a / b:>10.2f}")
-    line = {"symbolic_vs_flint": round(worst, 3), "ratios": ratios}
+    line = {"symbolic_vs_flint": round(worst, 3), "ratios": ratios, "allocator": args.allocator}
     if gmp:
         print(f"\n{'exact evaluation, per point':<44} {'ours ns':>9} {'GMP ns':>9} {'ours/GMP':>9}")
         exact = {}

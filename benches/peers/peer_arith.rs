@@ -24,6 +24,15 @@ use exact_bezier_proofs::yang_yong::{mobius_uv_sides, quadratic_identity, quadra
 use serde_json::{json, Map, Value};
 use std::time::Instant;
 
+/// The allocator of the `exact-bezier` command line (mimalloc, without
+/// transparent huge pages), so that the engine is timed as `prove` runs
+/// it: with the C library's malloc the Möbius identity at (6, 6) took
+/// 14.0–14.4 ms, with mimalloc 10.5–10.8 (2026-11-29, Zen 5).
+/// `benches/peers/arith` preloads mimalloc for FLINT too where the machine
+/// has it, and names the allocators in its JSON line.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     // `cargo bench` appends `--bench`; with no cases file there is nothing to time.
