@@ -16,12 +16,18 @@
 //! being the new side's weight coordinate, with variables by name; or the
 //! quadratic map's point identity, `{"name", "quadratic": m}`
 //! ([`quadratic_identity`] at (m, m)), the result being the map's weight
-//! (m, m) on the net of symbolic weights ([`quadratic_weights`]).
+//! (m, m) on the net of symbolic weights ([`quadratic_weights`]); or the
+//! Sylvester resultant of two integer polynomials, `{"name", "resultant":
+//! [[c_0, …], [c_0, …]]}` (coefficients as text, lowest degree first), by
+//! [`resultant`] (the elimination step of exact intersections), the result
+//! being the resultant as one constant term.
 
-use exact_bezier::algebra::parse_rational;
+use exact_bezier::algebra::{parse_rational, resultant};
 use exact_bezier::Poly;
 use exact_bezier_proofs::yang_yong::{mobius_uv_sides, quadratic_identity, quadratic_weights};
+use num_rational::BigRational;
 use serde_json::{json, Map, Value};
+use std::hint::black_box;
 use std::time::Instant;
 
 /// The allocator of the `exact-bezier` command line (mimalloc, without
@@ -50,6 +56,11 @@ fn main() {
     for case in &cases {
         let name = case["name"].as_str().expect("a case name");
         let (ns, terms) = match (case["mobius"].as_u64(), case["quadratic"].as_u64()) {
+            _ if case.get("resultant").is_some() => {
+                let [f, g] = [0, 1].map(|k| read_integers(&case["resultant"][k]));
+                let (ns, r) = median_time(repeat, || resultant(black_box(&f), black_box(&g)));
+                (ns, json!([[[], r.to_string()]]))
+            }
             (_, Some(m)) => {
                 let m = m as usize;
                 let (ns, failure) = median_time(repeat, || quadratic_identity(m, m));
@@ -69,13 +80,24 @@ fn main() {
                 let n = case["vars"].as_u64().expect("vars") as usize;
                 let k = case["power"].as_u64().expect("power") as u32;
                 let p = read_poly(&case["terms"], n);
-                let (ns, result) = median_time(repeat, || std::hint::black_box(&p).pow(k));
+                let (ns, result) = median_time(repeat, || black_box(&p).pow(k));
                 (ns, write_poly(&result, n))
             }
         };
         out.insert(name.to_string(), json!({"ns": ns, "terms": terms}));
     }
     println!("{}", Value::Object(out));
+}
+
+/// The coefficients `["c_0", …, "c_n"]` (integers as text, lowest degree
+/// first) as exact rationals.
+fn read_integers(coeffs: &Value) -> Vec<BigRational> {
+    coeffs
+        .as_array()
+        .expect("a coefficient list")
+        .iter()
+        .map(|c| parse_rational(c.as_str().expect("an integer as text")).expect("exact"))
+        .collect()
 }
 
 /// The median nanoseconds of `repeat` runs of `f`, and its last result.
