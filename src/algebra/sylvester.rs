@@ -39,6 +39,7 @@ use crate::algebra::upoly::{BPoly, UPoly};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
+use std::any::Any;
 
 /// The determinant of a square matrix over a field, by Gaussian
 /// elimination with the first non-zero pivot (exact fields only).
@@ -141,8 +142,43 @@ fn subresultant_rows<T: Clone + Zero>(f: &[T], g: &[T], j: usize) -> Vec<Vec<T>>
 /// assert_eq!(resultant(&[q(-2), q(1)], &[q(-4), q(0), q(1)]), q(0));
 /// assert_eq!(resultant(&[q(-1), q(1)], &[q(-4), q(0), q(1)]), q(-3));
 /// ```
+///
+/// Rational inputs (`T` = `BigRational`) take the integer path of
+/// [`rational_resultant`]; other fields Gaussian elimination.
 pub fn resultant<T: Field>(f: &[T], g: &[T]) -> T {
-    determinant(subresultant_rows(f, g, 0))
+    match (rationals(f), rationals(g)) {
+        (Some(f), Some(g)) => T::from_rational(&rational_resultant(&f, &g)),
+        _ => determinant(subresultant_rows(f, g, 0)),
+    }
+}
+
+/// `xs` as rationals, if `T` is `BigRational` (recognised by its type id).
+fn rationals<T: Field>(xs: &[T]) -> Option<Vec<BigRational>> {
+    xs.iter()
+        .map(|x| (x as &dyn Any).downcast_ref::<BigRational>().cloned())
+        .collect()
+}
+
+/// [`resultant`] of rational polynomials without a gcd per operation: with
+/// `a`, `b` the common denominators of `f` and `g` (formal degrees `m`,
+/// `n`), the integer Sylvester determinant of `a·f`, `b·g` by Bareiss's
+/// elimination ([`integer_determinant`]), then one division,
+///
+/// ```text
+/// Res(f, g) = Res(a·f, b·g) / (aⁿ·bᵐ)
+/// ```
+///
+/// (each of the n rows of f's coefficients scaled by a, each of the m rows
+/// of g's by b). Gaussian elimination over `BigRational` reduced every
+/// entry by a gcd: 106–1 349 times FLINT's `fmpz_poly_resultant` on
+/// degrees 3–12 with 10- and 30-digit coefficients, this path 4.6–32 times
+/// (`benches/peers/arith`, 2026-11-29, AMD Zen 5).
+fn rational_resultant(f: &[BigRational], g: &[BigRational]) -> BigRational {
+    let (fi, a) = common_denominator::<BigInt>(f);
+    let (gi, b) = common_denominator::<BigInt>(g);
+    let (m, n) = (f.len() - 1, g.len() - 1);
+    let det = integer_determinant(subresultant_rows(&fi, &gi, 0));
+    BigRational::new(det, num_traits::pow(a, n) * num_traits::pow(b, m))
 }
 
 /// The coefficients `(S_{1,1}, S_{1,0})` of a linear polynomial that every
@@ -321,6 +357,20 @@ mod tests {
         assert_eq!(resultant(&[q(-1), q(1), q(0)], &[q(-1), q(1)]), q(0));
         // f = 0·x² + x − 2: Res = lc(g)^{2−1}·Res(x − 2, x − 1) ≠ 0.
         assert_ne!(resultant(&[q(-2), q(1), q(0)], &[q(-1), q(1)]), q(0));
+    }
+
+    proptest::proptest! {
+        /// The integer path of rational inputs gives Gaussian elimination's
+        /// value over the rationals.
+        #[test]
+        fn rational_resultant_is_the_sylvester_determinant(
+            f in proptest::collection::vec((-50i64..50, 1i64..9), 2..7),
+            g in proptest::collection::vec((-50i64..50, 1i64..9), 2..7),
+        ) {
+            let q = |c: &[(i64, i64)]| -> Vec<BigRational> { c.iter().map(|&(n, d)| ratio(n, d)).collect() };
+            let (f, g) = (q(&f), q(&g));
+            proptest::prop_assert_eq!(resultant(&f, &g), determinant(subresultant_rows(&f, &g, 0)));
+        }
     }
 
     #[test]
