@@ -116,6 +116,42 @@ def resultant_pair(d, k):
     return draw(), draw()
 
 
+# The resultant in t of two polynomials in s and t of degree d in each
+# (two cubics' intersection equations are of degree 3 in each parameter),
+# k-digit coefficients: the elimination step of exact intersections.
+RESULTANT_T = [(3, 10), (4, 10), (6, 10)]
+
+
+def resultant_t_name(d, k):
+    return f"resultant in t, bidegree ({d}, {d}), {k} digits"
+
+
+def resultant_t_pair(d, k):
+    """Two random polynomials Σ c_ij s^i t^j, i, j ≤ d, as rows (one per
+    power of t) of coefficients in s, the same on every run."""
+    rng = random.Random(7000 + 100 * d + k)
+    draw = lambda: [[rng.choice([-1, 1]) * rng.randint(10 ** (k - 1), 10 ** k - 1)
+                     for _ in range(d + 1)] for _ in range(d + 1)]
+    return draw(), draw()
+
+
+def flint_resultant_t(f, g, repeat):
+    """FLINT's fmpz_mpoly resultant in t of the pair; the median ns and the
+    result in s made monic, as {(k,): value}."""
+    ctx = flint.fmpz_mpoly_ctx.get(("s", "t"), "lex")
+    as_mpoly = lambda rows: ctx.from_dict({(i, j): c for j, row in enumerate(rows)
+                                           for i, c in enumerate(row)})
+    pf, pg = as_mpoly(f), as_mpoly(g)
+    times = []
+    for _ in range(repeat):
+        start = time.perf_counter_ns()
+        r = pf.resultant(pg, "t")
+        times.append(time.perf_counter_ns() - start)
+    coeffs = {e[0]: Fraction(int(c)) for e, c in r.to_dict().items()}
+    lead = coeffs[max(coeffs)]
+    return statistics.median(times), {(k,): c / lead for k, c in coeffs.items()}
+
+
 def flint_resultant(f, g, repeat):
     """FLINT's fmpz_poly_resultant of the pair; the median ns and the value
     as the constant term {(): value}."""
@@ -270,11 +306,15 @@ def main():
                   + [{"name": mobius_name(m), "mobius": m} for m in MOBIUS]
                   + [{"name": quadratic_name(m), "quadratic": m} for m in QUADRATIC]
                   + [{"name": resultant_name(d, k), "resultant": [[str(c) for c in p] for p in resultant_pair(d, k)]}
-                     for d, k in RESULTANT], f)
+                     for d, k in RESULTANT]
+                  + [{"name": resultant_t_name(d, k), "resultant_t": [[[str(c) for c in row] for row in p]
+                                                                    for p in resultant_t_pair(d, k)]}
+                     for d, k in RESULTANT_T], f)
         path = f.name
     symbolic = ([n for n, _, _ in cs] + [mobius_name(m) for m in MOBIUS]
                 + [quadratic_name(m) for m in QUADRATIC])
-    sylvester = [resultant_name(d, k) for d, k in RESULTANT]
+    sylvester = ([resultant_name(d, k) for d, k in RESULTANT]
+                 + [resultant_t_name(d, k) for d, k in RESULTANT_T])
     names = symbolic + sylvester
     t_ours = {n: [] for n in names}
     t_flint = {n: [] for n in names}
@@ -294,6 +334,8 @@ def main():
         runs += [(quadratic_name(m), lambda m=m: flint_quadratic(m, args.repeat)) for m in QUADRATIC]
         runs += [(resultant_name(d, k), lambda d=d, k=k: flint_resultant(*resultant_pair(d, k), args.repeat))
                  for d, k in RESULTANT]
+        runs += [(resultant_t_name(d, k), lambda d=d, k=k: flint_resultant_t(*resultant_t_pair(d, k), args.repeat))
+                 for d, k in RESULTANT_T]
         for n, run in runs:
             ns, theirs = run()
             ns_ours, result = mine[n]
@@ -306,12 +348,12 @@ def main():
             start = time.perf_counter()
             subprocess.run([args.prove, "prove"], check=True, capture_output=True)
             prove.append(time.perf_counter() - start)
-    print(f"{'case':<34} {'terms':>7} {'ours ms':>9} {'FLINT ms':>9} {'ours/FLINT':>10}")
+    print(f"{'case':<44} {'terms':>7} {'ours ms':>9} {'FLINT ms':>9} {'ours/FLINT':>10}")
     ratios = {}
     for n in names:
         a, b = statistics.median(t_ours[n]) / 1e6, statistics.median(t_flint[n]) / 1e6
         ratios[n] = round(a / b, 3)
-        print(f"{n:<34} {sizes[n]:>7} {a:>9.3f} {b:>9.3f} {a / b:>10.2f}")
+        print(f"{n:<44} {sizes[n]:>7} {a:>9.3f} {b:>9.3f} {a / b:>10.2f}")
     line = {"symbolic_vs_flint": round(max(ratios[n] for n in symbolic), 3),
             "ratios": {n: ratios[n] for n in symbolic},
             "sylvester_vs_flint": round(max(ratios[n] for n in sylvester), 3),

@@ -20,12 +20,19 @@
 //! Sylvester resultant of two integer polynomials, `{"name", "resultant":
 //! [[c_0, …], [c_0, …]]}` (coefficients as text, lowest degree first), by
 //! [`resultant`] (the elimination step of exact intersections), the result
-//! being the resultant as one constant term.
+//! being the resultant as one constant term; or the resultant in `t` of
+//! two polynomials in `s` and `t` (the elimination step of exact curve
+//! intersections), `{"name", "resultant_t": [F, G]}` with `F` the rows of
+//! coefficients in `s` of `t⁰, t¹, …`, by [`resultant_in_t`], the result
+//! being that polynomial in `s` made monic (ours is defined up to a
+//! constant factor).
 
-use exact_bezier::algebra::{parse_rational, resultant};
+use exact_bezier::algebra::sylvester::resultant_in_t;
+use exact_bezier::algebra::{parse_rational, resultant, BPoly, UPoly};
 use exact_bezier::Poly;
 use exact_bezier_proofs::yang_yong::{mobius_uv_sides, quadratic_identity, quadratic_weights};
 use num_rational::BigRational;
+use num_traits::Zero;
 use serde_json::{json, Map, Value};
 use std::hint::black_box;
 use std::time::Instant;
@@ -56,6 +63,11 @@ fn main() {
     for case in &cases {
         let name = case["name"].as_str().expect("a case name");
         let (ns, terms) = match (case["mobius"].as_u64(), case["quadratic"].as_u64()) {
+            _ if case.get("resultant_t").is_some() => {
+                let [f, g] = [0, 1].map(|k| read_bivariate(&case["resultant_t"][k]));
+                let (ns, r) = median_time(repeat, || resultant_in_t(black_box(&f), black_box(&g)));
+                (ns, write_univariate(&r.monic()))
+            }
             _ if case.get("resultant").is_some() => {
                 let [f, g] = [0, 1].map(|k| read_integers(&case["resultant"][k]));
                 let (ns, r) = median_time(repeat, || resultant(black_box(&f), black_box(&g)));
@@ -98,6 +110,25 @@ fn read_integers(coeffs: &Value) -> Vec<BigRational> {
         .iter()
         .map(|c| parse_rational(c.as_str().expect("an integer as text")).expect("exact"))
         .collect()
+}
+
+/// `Σ_k a_k(s) t^k` from `[[a_k's coefficients, lowest power of s first], …]`
+/// (integers as text, lowest power of t first).
+fn read_bivariate(rows: &Value) -> BPoly<BigRational> {
+    let rows = rows.as_array().expect("rows, one a power of t");
+    BPoly::new(rows.iter().map(|r| UPoly::new(read_integers(r))).collect())
+}
+
+/// The terms of a polynomial in one variable as `[[exponent], "p/q"]` pairs.
+fn write_univariate(p: &UPoly<BigRational>) -> Value {
+    let terms: Vec<Value> = p
+        .coeffs()
+        .iter()
+        .enumerate()
+        .filter(|(_, c)| !c.is_zero())
+        .map(|(k, c)| json!([[k], c.to_string()]))
+        .collect();
+    Value::Array(terms)
 }
 
 /// The median nanoseconds of `repeat` runs of `f`, and its last result.
