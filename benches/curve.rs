@@ -13,6 +13,9 @@
 //! [`Evaluator`] (`f64` and exact): since issue 12 `eval` itself is the
 //! Horner–Bernstein kernel, fraction-free on machine integers for
 //! `BigRational`; the per-point time is the batch time / 100.
+//!
+//! The group `elevate` raises the same curves by 1 and by 5 degrees
+//! ([`RationalCurve::elevate`]), `f64` and exact.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use exact_bezier::{algebra::rational_to_f64, eval::Evaluator, ratio, RationalCurve};
@@ -83,5 +86,22 @@ fn eval(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, eval);
+fn elevate(c: &mut Criterion) {
+    let mut g = c.benchmark_group("elevate");
+    for n in [3usize, 10] {
+        let exact = sample(n);
+        let float = exact.map(rational_to_f64);
+        for r in [1usize, 5] {
+            g.bench_function(format!("degree {n} by {r} f64"), |b| {
+                b.iter(|| black_box(&float).elevate(black_box(r)))
+            });
+            g.bench_function(format!("degree {n} by {r} exact"), |b| {
+                b.iter(|| black_box(&exact).elevate(black_box(r)))
+            });
+        }
+    }
+    g.finish();
+}
+
+criterion_group!(benches, eval, elevate);
 criterion_main!(benches);

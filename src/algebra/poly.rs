@@ -714,6 +714,8 @@ impl Scalar for Poly {
     fn sum_of(parts: Vec<Self>) -> Self {
         parts.into_iter().sum()
     }
+    /// One merge of all the parts ([`Poly`]'s `Sum`).
+    const SUMS_AT_ONCE: bool = true;
 }
 
 impl fmt::Debug for Poly {
