@@ -25,6 +25,7 @@
 
 use super::compose::NetRef;
 use super::ivec::IVec;
+use super::quad::Quad;
 use super::Enclose;
 use crate::algebra::{Interval, Scalar};
 use crate::bernstein::bernstein_all_into;
@@ -33,40 +34,41 @@ use crate::hpoint::HPoint;
 use crate::{RationalCurve, RectPatch};
 use smallvec::SmallVec;
 
-/// Scratch space for one row or column of coefficients: on the stack up
+/// Scratch space for one row or column of control points: on the stack up
 /// to degree 15.
-type Row = SmallVec<[Interval; 16]>;
+type Row = SmallVec<[Quad; 16]>;
 
 /// De Casteljau's algorithm at `t` in place, keeping one side: afterwards
-/// `c` holds the coefficients of the piece over `[0, t]` (`left`) or over
+/// `c` holds the control points of the piece over `[0, t]` (`left`) or over
 /// `[t, 1]`, each step `d_i^r = (1 − t) d_i^{r−1} + t d_{i+1}^{r−1}`. The
 /// left piece is `d_0^r`, `r = 0..n` (kept in place by storing `d_{i−r}^r`
-/// at `c[i]`), the right piece `d_i^{n−i}`.
-fn subdivide(c: &mut [Interval], t: Interval, left: bool) {
+/// at `c[i]`), the right piece `d_i^{n−i}`. The four homogeneous
+/// coordinates go together, lane by lane ([`Quad`]).
+fn subdivide(c: &mut [Quad], t: Interval, left: bool) {
     let s = Interval::point(1.0).sub(&t);
     let n = c.len() - 1;
     for level in 1..=n {
         if left {
             for i in (level..=n).rev() {
-                c[i] = c[i - 1].mul_nonneg(&s).add(&c[i].mul_nonneg(&t));
+                c[i] = c[i - 1].scale(&s).add(&c[i].scale(&t));
             }
         } else {
             for i in 0..=n - level {
-                c[i] = c[i].mul_nonneg(&s).add(&c[i + 1].mul_nonneg(&t));
+                c[i] = c[i].scale(&s).add(&c[i + 1].scale(&t));
             }
         }
     }
 }
 
-/// The coefficients of the piece over `[a, b]` (`a ≤ b`, any reals) of the
-/// Bernstein polynomial with coefficients `c` (blossom values
+/// The control points of the piece over `[a, b]` (`a ≤ b`, any reals) of
+/// the Bézier curve with control points `c` (blossom values
 /// `c[a^{n−k}, b^k]`), written to `out`, in two subdivisions: the piece
 /// over `[0, b]`, then its part over `[a/b, 1]`; or, for `b < 1/2`, the
 /// piece over `[a, 1]`, then its part over `[0, (b − a)/(1 − a)]` (the
 /// divisor at least 1/2 either way). The parameters are enclosed: the exact
 /// blossom values lie in the result (inclusion isotonicity). For `a = b`,
-/// every coefficient is the value at `a`.
-fn piece(c: &[Interval], a: f64, b: f64, out: &mut Row) {
+/// every control point is the value at `a`.
+fn piece(c: &[Quad], a: f64, b: f64, out: &mut Row) {
     let point = Interval::point;
     out.clear();
     out.extend_from_slice(c);
@@ -88,7 +90,7 @@ fn piece(c: &[Interval], a: f64, b: f64, out: &mut Row) {
     }
 }
 
-fn hull(values: &[Interval]) -> Interval {
+fn hull(values: &[Quad]) -> Quad {
     values
         .iter()
         .copied()
@@ -100,60 +102,93 @@ fn enclose_hpoint<T: Enclose>(p: &HPoint<T>) -> IVec {
     p.coords.iter().map(Enclose::enclose).collect()
 }
 
-/// A homogeneous control net with `rows × cols` points, stored per
-/// coordinate: `coords[d][i·cols + j]` is coordinate `d` of point `(i, j)`.
+/// A homogeneous control net of a 3D curve or patch (four coordinates per
+/// point) with `rows × cols` points, stored twice: per coordinate,
+/// `coords[d][i·cols + j]` is coordinate `d` of point `(i, j)` (for
+/// [`NetRef`]), and point by point, `quads[i·cols + j]` (for de Casteljau's
+/// steps on all four coordinates at once).
 #[derive(Clone, Debug)]
 struct Net {
     rows: usize,
     cols: usize,
     coords: Vec<Vec<Interval>>,
-    /// The coordinates' midpoints, for evaluation in `f64`.
-    mids: Vec<Vec<f64>>,
+    quads: Vec<Quad>,
+    /// The points' midpoints, for evaluation in `f64`.
+    mids: Vec<[f64; 4]>,
 }
 
-/// The Bernstein basis `B_i^n(t) = C(n, i) tⁱ (1 − t)^{n−i}`, `i = 0..=n`,
-/// at `t` in `f64`, by the recursion `B_i^r = (1 − t) B_i^{r−1} + t B_{i−1}^{r−1}`
+/// The Bernstein bases `B_i^r(t) = C(r, i) tⁱ (1 − t)^{r−i}`, `i = 0..=r`,
+/// at `t` in `f64` for every degree `r ≤ n` at once: the stages of the
+/// recursion `B_i^r = (1 − t) B_i^{r−1} + t B_{i−1}^{r−1}`
 /// ([`bernstein_all_into`]; Farin, *Curves and Surfaces for CAGD*, 5th
-/// ed., §5.1) on the stack for degrees up to 15: the values of
-/// every coefficient's basis function at once, so that a net of any
-/// number of coordinates is evaluated by dot products.
-fn basis_f64(n: usize, t: f64) -> SmallVec<[f64; 16]> {
-    let mut b: SmallVec<[f64; 16]> = SmallVec::from_elem(0.0, n + 1);
-    bernstein_all_into(&t, &mut b);
-    b
+/// ed., §5.1), stage `r` bit for bit the basis of degree `r`, kept on the
+/// stack for degrees up to 14. A patch's derivative nets have the lower
+/// degrees: one recursion serves all six.
+struct Bases {
+    /// Stage `r` at `r(r + 1)/2 .. (r + 1)(r + 2)/2`.
+    stages: SmallVec<[f64; 128]>,
+}
+
+impl Bases {
+    fn new(n: usize, t: f64) -> Bases {
+        let mut b: SmallVec<[f64; 16]> = SmallVec::from_elem(0.0, n + 1);
+        let mut stages = SmallVec::with_capacity((n + 1) * (n + 2) / 2);
+        for r in 0..=n {
+            bernstein_all_into(&t, &mut b[..=r]);
+            stages.extend_from_slice(&b[..=r]);
+        }
+        Bases { stages }
+    }
+
+    /// The basis of degree `r`.
+    fn of(&self, r: usize) -> &[f64] {
+        &self.stages[r * (r + 1) / 2..(r + 1) * (r + 2) / 2]
+    }
 }
 
 impl Net {
-    /// The net of the points `net[i][j]` (each a homogeneous `IVec`).
+    /// The net of the points `net[i][j]` (each a homogeneous `IVec` of
+    /// four coordinates).
     fn new(net: &[Vec<IVec>]) -> Net {
-        let dims = net[0][0].len();
-        let coords: Vec<Vec<Interval>> = (0..dims)
-            .map(|d| net.iter().flatten().map(|p| p[d]).collect())
+        let quads: Vec<Quad> = net
+            .iter()
+            .flatten()
+            .map(|p| Quad::new([p[0], p[1], p[2], p[3]]))
             .collect();
         Net {
             rows: net.len(),
             cols: net[0].len(),
-            mids: coords
-                .iter()
-                .map(|c| c.iter().map(Interval::mid).collect())
+            coords: (0..4)
+                .map(|d| quads.iter().map(|q| q.lane(d)).collect())
                 .collect(),
-            coords,
+            mids: quads.iter().map(Quad::mids).collect(),
+            quads,
         }
     }
 
     /// The homogeneous point `Σ_i Σ_j B_i(u) B_j(v) H_ij` at `(u, v)` in
-    /// `f64` from the midpoints (not an enclosure).
-    fn value_f64(&self, u: f64, v: f64) -> [f64; 4] {
-        let (bu, bv) = (basis_f64(self.rows - 1, u), basis_f64(self.cols - 1, v));
-        let mut out = [0.0; 4];
-        for (o, c) in out.iter_mut().zip(&self.mids) {
-            *o = c
-                .chunks(self.cols)
-                .zip(&bu)
-                .map(|(row, a)| a * row.iter().zip(&bv).map(|(x, b)| x * b).sum::<f64>())
-                .sum();
+    /// `f64` from the midpoints (not an enclosure), the bases taken from
+    /// `bu` and `bv`; each sum in index order, as `Iterator::sum`.
+    fn value_f64(&self, bu: &Bases, bv: &Bases) -> [f64; 4] {
+        let (bu, bv) = (bu.of(self.rows - 1), bv.of(self.cols - 1));
+        let mut out = [-0.0; 4];
+        for (row, a) in self.mids.chunks(self.cols).zip(bu) {
+            let mut inner = [-0.0; 4];
+            for (x, b) in row.iter().zip(bv) {
+                for k in 0..4 {
+                    inner[k] += x[k] * b;
+                }
+            }
+            for k in 0..4 {
+                out[k] += a * inner[k];
+            }
         }
         out
+    }
+
+    /// [`Net::value_f64`] at `(u, v)`.
+    fn value_at(&self, u: f64, v: f64) -> [f64; 4] {
+        self.value_f64(&Bases::new(self.rows - 1, u), &Bases::new(self.cols - 1, v))
     }
 
     /// The net of the derivative in `u` (`along_u`) or in `v`: degree
@@ -165,7 +200,7 @@ impl Net {
             (self.rows, self.cols.saturating_sub(1))
         };
         if rows == 0 || cols == 0 {
-            return Net::new(&[vec![vec![Interval::point(0.0); self.coords.len()]]]);
+            return Net::new(&[vec![vec![Interval::point(0.0); 4]]]);
         }
         let degree = Interval::point(if along_u { rows } else { cols } as f64);
         let step = if along_u { self.cols } else { 1 };
@@ -187,7 +222,7 @@ impl Net {
 
     /// Every point's homogeneous coordinates.
     fn points(&self) -> impl Iterator<Item = IVec> + '_ {
-        (0..self.rows * self.cols).map(|k| self.coords.iter().map(|c| c[k]).collect())
+        self.quads.iter().map(|q| q.lanes().to_vec())
     }
 
     /// Range over `[u0, u1] × [v0, v1]`, per homogeneous coordinate, of
@@ -195,41 +230,37 @@ impl Net {
     /// formed before the range is taken): the hull of the piece's net (the
     /// piece in `v` of every row, then in `u` of every column).
     fn range(&self, u: Interval, v: Interval, centre: &[f64]) -> IVec {
-        let (mut rows, mut column, mut out) = (Vec::new(), Row::new(), Row::new());
-        let weights = &self.coords[self.coords.len() - 1];
-        let mut moved = Vec::new();
-        self.coords
+        let shift = [0, 1, 2].map(|d| centre.get(d).copied().filter(|x| *x != 0.0));
+        let moved: Vec<Quad> = self
+            .quads
             .iter()
-            .enumerate()
-            .map(|(d, c)| {
-                let c = match centre.get(d).filter(|x| **x != 0.0) {
-                    Some(x) => {
-                        let x = Interval::point(*x);
-                        moved.clear();
-                        moved.extend(c.iter().zip(weights).map(|(h, w)| h.sub(&x.mul(w))));
-                        &moved[..]
+            .map(|p| {
+                let mut q = *p;
+                for (d, x) in shift.iter().enumerate() {
+                    if let Some(x) = x {
+                        q.set(d, p.lane(d).sub(&Interval::point(*x).mul(&p.lane(3))));
                     }
-                    None => &c[..],
-                };
-                rows.clear();
-                for row in c.chunks(self.cols) {
-                    piece(row, v.lo, v.hi, &mut out);
-                    rows.extend_from_slice(&out);
                 }
-                let mut range: Option<Interval> = None;
-                // At a point `v`, every row's piece is its value repeated:
-                // the columns are equal, one is enough.
-                let columns = if v.lo == v.hi { 1 } else { self.cols };
-                for j in 0..columns {
-                    column.clear();
-                    column.extend(rows.iter().skip(j).step_by(self.cols).copied());
-                    piece(&column, u.lo, u.hi, &mut out);
-                    let h = hull(&out);
-                    range = Some(range.map_or(h, |r| r.hull(&h)));
-                }
-                range.expect("a Bézier net is never empty")
+                q
             })
-            .collect()
+            .collect();
+        let (mut rows, mut column, mut out) = (Vec::new(), Row::new(), Row::new());
+        for row in moved.chunks(self.cols) {
+            piece(row, v.lo, v.hi, &mut out);
+            rows.extend_from_slice(&out);
+        }
+        let mut range: Option<Quad> = None;
+        // At a point `v`, every row's piece is its value repeated: the
+        // columns are equal, one is enough.
+        let columns = if v.lo == v.hi { 1 } else { self.cols };
+        for j in 0..columns {
+            column.clear();
+            column.extend(rows.iter().skip(j).step_by(self.cols).copied());
+            piece(&column, u.lo, u.hi, &mut out);
+            let h = hull(&out);
+            range = Some(range.map_or(h, |r| r.hull(&h)));
+        }
+        range.expect("a Bézier net is never empty").lanes().to_vec()
     }
 }
 
@@ -339,13 +370,9 @@ impl ICurve {
     /// w`) of the piece over `t` (`t.lo ≤ t.hi`), enclosed.
     pub fn piece_over(&self, t: Interval) -> Vec<Vec<Interval>> {
         let mut out = Row::new();
-        self.h
-            .coords
-            .iter()
-            .map(|c| {
-                piece(c, t.lo, t.hi, &mut out);
-                out.to_vec()
-            })
+        piece(&self.h.quads, t.lo, t.hi, &mut out);
+        (0..4)
+            .map(|d| out.iter().map(|q| q.lane(d)).collect())
             .collect()
     }
 
@@ -353,7 +380,7 @@ impl ICurve {
     /// the point), for Newton's guesses; `None` where the weight is not
     /// positive.
     pub fn approximate_point(&self, t: f64) -> Option<IVec> {
-        let h = self.h.value_f64(t, 0.0);
+        let h = self.h.value_at(t, 0.0);
         (h[3] > 0.0).then(|| h[..3].iter().map(|x| Interval::point(x / h[3])).collect())
     }
 
@@ -532,13 +559,15 @@ impl IPatch {
     ///
     /// [`Error::Domain`] when the weight there is not positive.
     pub fn approximate_jet(&self, u: f64, v: f64) -> Result<PatchJet, Error> {
-        cartesian_f64(self.nets.each_ref().map(|n| n.value_f64(u, v)))
+        let h = &self.nets[0];
+        let (bu, bv) = (Bases::new(h.rows - 1, u), Bases::new(h.cols - 1, v));
+        cartesian_f64(self.nets.each_ref().map(|n| n.value_f64(&bu, &bv)))
     }
 
     /// `S(u, v)` in `f64` arithmetic: *not* an enclosure; `None` where the
     /// weight is not positive or the point not finite.
     pub fn approximate_point(&self, u: f64, v: f64) -> Option<[f64; 3]> {
-        let h = self.nets[0].value_f64(u, v);
+        let h = self.nets[0].value_at(u, v);
         let w = h[3];
         let x = [0, 1, 2].map(|k| h[k] / w);
         (w > 0.0 && x.iter().all(|c| c.is_finite())).then_some(x)
@@ -670,7 +699,38 @@ mod tests {
             }
         }
 
-        /// Every coefficient of the piece encloses the exact blossom value,
+        /// The `f64` value of a net from the shared bases is bit for bit
+        /// the double sum taken coordinate by coordinate with bases of the
+        /// net's own degrees (`Iterator::sum`).
+        #[test]
+        fn value_from_shared_bases_is_the_plain_double_sum(
+            m in 1usize..=5, n in 1usize..=5,
+            seed in proptest::collection::vec(-20i64..=20, 5..=12),
+            u in -0.5f64..1.5, v in -0.5f64..1.5,
+        ) {
+            let p = IPatch::new(&patch(m, n, &seed)).unwrap();
+            let (bu, bv) = (Bases::new(m, u), Bases::new(n, v));
+            for net in &p.nets {
+                let basis = |r: usize, t: f64| {
+                    let mut b = vec![0.0; r + 1];
+                    bernstein_all_into(&t, &mut b);
+                    b
+                };
+                let (au, av) = (basis(net.rows - 1, u), basis(net.cols - 1, v));
+                let got = net.value_f64(&bu, &bv);
+                for (d, c) in net.coords.iter().enumerate() {
+                    let want: f64 = c
+                        .chunks(net.cols)
+                        .zip(&au)
+                        .map(|(row, a)| a * row.iter().zip(&av).map(|(x, b)| x.mid() * b).sum::<f64>())
+                        .sum();
+                    prop_assert_eq!(got[d].to_bits(), want.to_bits());
+                }
+            }
+        }
+
+        /// Every control point of the piece encloses the exact blossom
+        /// value, in each lane (the coefficients `c`, `−c`, `3c` and `c − 7`),
         /// for parameters inside and outside `[0, 1]`, and a point piece is
         /// the value there.
         #[test]
@@ -681,16 +741,23 @@ mod tests {
             let (lo, hi) = (ends.0.min(ends.1), ends.0.max(ends.1));
             let (a, b) = (lo as f64 / 64.0, hi as f64 / 64.0);
             let exact = |x: i64| BigRational::new(x.into(), 64.into());
-            let coefficients: Vec<Interval> = c.iter().map(|&x| Interval::point(x as f64)).collect();
+            let lanes = |x: i64| [x, -x, 3 * x, x - 7];
+            let points: Vec<Quad> = c
+                .iter()
+                .map(|&x| Quad::new(lanes(x).map(|y| Interval::point(y as f64))))
+                .collect();
             let mut out = Row::new();
-            piece(&coefficients, a, b, &mut out);
+            piece(&points, a, b, &mut out);
             prop_assert_eq!(out.len(), c.len());
-            for (k, got) in out.iter().enumerate() {
-                let want = blossom(&c, &exact(lo), &exact(hi), k);
-                let inside = BigRational::from_float(got.lo).unwrap() <= want
-                    && want <= BigRational::from_float(got.hi).unwrap();
-                prop_assert!(inside, "k = {}: {:?} misses {}", k, got, want);
-                prop_assert!(got.width() <= 1e-9 * (1.0 + got.hi.abs()), "{:?}", got);
+            for d in 0..4 {
+                let lane: Vec<i64> = c.iter().map(|&x| lanes(x)[d]).collect();
+                for (k, got) in out.iter().map(|q| q.lane(d)).enumerate() {
+                    let want = blossom(&lane, &exact(lo), &exact(hi), k);
+                    let inside = BigRational::from_float(got.lo).unwrap() <= want
+                        && want <= BigRational::from_float(got.hi).unwrap();
+                    prop_assert!(inside, "lane {}, k = {}: {:?} misses {}", d, k, got, want);
+                    prop_assert!(got.width() <= 1e-9 * (1.0 + got.hi.abs()), "{:?}", got);
+                }
             }
         }
     }

@@ -58,6 +58,7 @@ pub mod local;
 pub mod maximize;
 pub mod measure;
 pub mod normal_path;
+pub mod quad;
 pub mod spline;
 pub mod tube;
 pub mod verdict;
