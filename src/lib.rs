@@ -158,6 +158,7 @@ pub mod step;
 pub mod strategy;
 pub mod tri;
 pub mod trig;
+mod widest;
 
 // After `tri`: rustdoc lists a type's inherent impl blocks in module order,
 // and `blossom` adds one to `TriPatch` that should follow its construction

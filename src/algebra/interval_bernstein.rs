@@ -136,16 +136,7 @@ fn convolve_finite(a: &[Interval], b: &[Interval]) -> Scaled {
         ends: [&c, &d],
         out: [&mut lo, &mut hi],
     };
-    #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
-    if let Some(v4) = pulp::x86::V4::try_new() {
-        v4.vectorize(job);
-    } else if let Some(v3) = pulp::x86::V3::try_new() {
-        v3.vectorize(job);
-    } else {
-        job.run();
-    }
-    #[cfg(not(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64"))))]
-    job.run();
+    crate::widest::run(job);
     lo.into_iter()
         .zip(hi)
         .map(|(lo, hi)| Interval { lo, hi })
@@ -153,20 +144,17 @@ fn convolve_finite(a: &[Interval], b: &[Interval]) -> Scaled {
 }
 
 /// The loops of [`convolve_finite`]: `a`, the ends `c`, `d` of `b`, and
-/// the ends of the output. Run as it is (the target's baseline vectors:
-/// SSE2, two `f64` per instruction) or, with the feature `simd`, compiled
-/// for AVX-512 or AVX2 where the processor has it (detected at run time;
-/// `pulp` makes the safe call into code compiled with those features,
-/// as in [`crate::eval`]'s lanes). The same IEEE operations in the same
-/// order in every build (Rust never fuses a product and a sum), so the
-/// same bits.
+/// the ends of the output, run on the widest vector instructions the
+/// processor has ([`crate::widest`]).
 struct Convolution<'a> {
     a: &'a [Interval],
     ends: [&'a [f64]; 2],
     out: [&'a mut [f64]; 2],
 }
 
-impl Convolution<'_> {
+impl crate::widest::Job for Convolution<'_> {
+    type Output = ();
+
     /// For each `a_i`, the products with `b` added to the output from
     /// `i` on ([`accumulate`]).
     #[inline(always)]
@@ -188,16 +176,6 @@ impl Convolution<'_> {
                 [&mut lo[i..i + m], &mut hi[i..i + m]],
             );
         }
-    }
-}
-
-#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
-impl pulp::NullaryFnOnce for Convolution<'_> {
-    type Output = ();
-
-    #[inline(always)]
-    fn call(self) {
-        self.run()
     }
 }
 

@@ -26,6 +26,7 @@
 use super::compose::NetRef;
 use super::ivec::IVec;
 use super::quad::Quad;
+use crate::widest::Job;
 use super::Enclose;
 use crate::algebra::{Interval, Scalar};
 use crate::bernstein::bernstein_all_into;
@@ -44,6 +45,7 @@ type Row = SmallVec<[Quad; 16]>;
 /// left piece is `d_0^r`, `r = 0..n` (kept in place by storing `d_{i−r}^r`
 /// at `c[i]`), the right piece `d_i^{n−i}`. The four homogeneous
 /// coordinates go together, lane by lane ([`Quad`]).
+#[inline(always)]
 fn subdivide(c: &mut [Quad], t: Interval, left: bool) {
     let s = Interval::point(1.0).sub(&t);
     let n = c.len() - 1;
@@ -68,6 +70,7 @@ fn subdivide(c: &mut [Quad], t: Interval, left: bool) {
 /// divisor at least 1/2 either way). The parameters are enclosed: the exact
 /// blossom values lie in the result (inclusion isotonicity). For `a = b`,
 /// every control point is the value at `a`.
+#[inline(always)]
 fn piece(c: &[Quad], a: f64, b: f64, out: &mut Row) {
     let point = Interval::point;
     out.clear();
@@ -90,6 +93,7 @@ fn piece(c: &[Quad], a: f64, b: f64, out: &mut Row) {
     }
 }
 
+#[inline(always)]
 fn hull(values: &[Quad]) -> Quad {
     values
         .iter()
@@ -244,23 +248,51 @@ impl Net {
                 q
             })
             .collect();
+        crate::widest::run(PieceHull {
+            net: &moved,
+            cols: self.cols,
+            u,
+            v,
+        })
+        .lanes()
+        .to_vec()
+    }
+}
+
+/// The hull of the control points of the piece over `u × v` of a net
+/// with `cols` points per row ([`Net::range`]'s work: the piece in `v` of
+/// every row, then in `u` of every column), run on the widest vector
+/// instructions the processor has ([`crate::widest`]).
+struct PieceHull<'a> {
+    net: &'a [Quad],
+    cols: usize,
+    u: Interval,
+    v: Interval,
+}
+
+impl Job for PieceHull<'_> {
+    type Output = Quad;
+
+    #[inline(always)]
+    fn run(self) -> Quad {
+        let (u, v, cols) = (self.u, self.v, self.cols);
         let (mut rows, mut column, mut out) = (Vec::new(), Row::new(), Row::new());
-        for row in moved.chunks(self.cols) {
+        for row in self.net.chunks(cols) {
             piece(row, v.lo, v.hi, &mut out);
             rows.extend_from_slice(&out);
         }
         let mut range: Option<Quad> = None;
         // At a point `v`, every row's piece is its value repeated: the
         // columns are equal, one is enough.
-        let columns = if v.lo == v.hi { 1 } else { self.cols };
+        let columns = if v.lo == v.hi { 1 } else { cols };
         for j in 0..columns {
             column.clear();
-            column.extend(rows.iter().skip(j).step_by(self.cols).copied());
+            column.extend(rows.iter().skip(j).step_by(cols).copied());
             piece(&column, u.lo, u.hi, &mut out);
             let h = hull(&out);
             range = Some(range.map_or(h, |r| r.hull(&h)));
         }
-        range.expect("a Bézier net is never empty").lanes().to_vec()
+        range.expect("a Bézier net is never empty")
     }
 }
 

@@ -76,6 +76,7 @@ impl Quad {
     }
 
     /// The smallest box holding both, lane by lane ([`Interval::hull`]).
+    #[inline(always)]
     pub fn hull(&self, o: &Quad) -> Quad {
         let mut out = *self;
         for k in 0..4 {
