@@ -1,6 +1,8 @@
 //! Products of interval Bernstein polynomials in scaled form
 //! (`interval_bernstein::mul`, the audit's inner operation), at the sizes
-//! the audit multiplies: from 2 × 4 coefficients to 40 × 40.
+//! the audit multiplies: from 1 × 4 coefficients to 40 × 40 (the most
+//! frequent in the audit of `tail_section_asm.stp`, 2026-11-29: 7 × 10,
+//! 16 × 19, 10 × 10, 4 × 7, 4 × 4 and 1 × 4, 0.7 to 1.5 million each).
 //!
 //! Two inputs of each size: finite end points (the vectorised convolution
 //! from `FINITE_FROM` = 100 term products on, the plain one below) and the
@@ -31,12 +33,16 @@ fn operand(len: usize, seed: u64) -> Vec<Interval> {
 fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("interval_bernstein::mul");
     for (m, n) in [
+        (1, 4),
         (2, 4),
         (4, 4),
+        (4, 7),
         (7, 7),
+        (7, 10),
         (4, 13),
         (10, 10),
         (13, 13),
+        (16, 19),
         (20, 20),
         (40, 40),
     ] {

@@ -26,12 +26,12 @@
 use super::compose::NetRef;
 use super::ivec::IVec;
 use super::quad::Quad;
-use crate::widest::Job;
 use super::Enclose;
 use crate::algebra::{Interval, Scalar};
 use crate::bernstein::bernstein_all_into;
 use crate::error::Error;
 use crate::hpoint::HPoint;
+use crate::widest::Job;
 use crate::{RationalCurve, RectPatch};
 use smallvec::SmallVec;
 

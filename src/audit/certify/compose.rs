@@ -33,15 +33,34 @@
 //! `|C − S∘p| ≤ max_l |D_l| / e_l` over their Bernstein coefficients
 //! (the rational convex hull property, [`distance_bound`]).
 
+use super::quad::Quad;
 use crate::algebra::interval_bernstein::{binomials, mul, scale, unscale, Scaled};
 use crate::algebra::Interval;
+use crate::widest::Job;
 
-/// `Σ c_k f_k` of scaled forms of one degree.
-fn combination<'f>(terms: impl Iterator<Item = (Interval, &'f Scaled)>, len: usize) -> Scaled {
-    let mut out = vec![Interval::point(0.0); len];
+/// `Σ c_k f_k` of scaled forms of one degree, for the four homogeneous
+/// coordinates of the points `c_k` at once, each term added in turn.
+#[inline(always)]
+fn combination<'f>(terms: impl Iterator<Item = (Quad, &'f Scaled)>, len: usize) -> Vec<Quad> {
+    let mut out = vec![Quad::zero(); len];
     for (c, f) in terms {
         for (o, x) in out.iter_mut().zip(f) {
             *o = o.add(&c.mul(x));
+        }
+    }
+    out
+}
+
+/// The product `a · b` of a scaled form and four (`b`, lane by lane): the
+/// convolution `out_l = Σ_{i+j=l} a_i b_j` accumulated in the order of
+/// `i`, as [`mul`] does for each lane (the same bits: an interval product
+/// does not depend on the order of its factors once rounded outward).
+#[inline(always)]
+fn convolve(a: &[Interval], b: &[Quad]) -> Vec<Quad> {
+    let mut out = vec![Quad::zero(); a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        for (o, y) in out[i..].iter_mut().zip(b) {
+            *o = o.add(&y.mul(x));
         }
     }
     out
@@ -78,9 +97,9 @@ fn basis_of(x: &[f64], d: usize) -> Vec<Scaled> {
         .collect()
 }
 
-/// A tensor-product net of homogeneous control points: `rows × cols`
-/// points, coordinate `d` of point `(i, j)` at `coords[d][i·cols + j]`
-/// (rows along the first parameter).
+/// A tensor-product net of homogeneous control points in 3D (four
+/// coordinates): `rows × cols` points, coordinate `d` of point `(i, j)` at
+/// `coords[d][i·cols + j]` (rows along the first parameter).
 pub struct NetRef<'a> {
     /// Points along the first parameter.
     pub rows: usize,
@@ -94,28 +113,45 @@ pub struct NetRef<'a> {
 /// `(m + n)k`, for `p = (u, v)` given by Bernstein coefficients of degree
 /// `k` (see the module documentation).
 pub fn compose(net: &NetRef<'_>, u: &[f64], v: &[f64]) -> Vec<Scaled> {
-    let bu = basis_of(u, net.rows - 1);
-    let bv = basis_of(v, net.cols - 1);
-    let len_v = bv[0].len();
-    net.coords
-        .iter()
-        .map(|c| {
-            let rows: Vec<Scaled> = (0..net.rows)
-                .map(|i| {
-                    let terms = (0..net.cols).map(|j| (c[i * net.cols + j], &bv[j]));
-                    combination(terms, len_v)
-                })
-                .collect();
-            let len = bu[0].len() + len_v - 1;
-            let mut out = vec![Interval::point(0.0); len];
-            for (b, r) in bu.iter().zip(&rows) {
-                for (o, x) in out.iter_mut().zip(mul(b, r)) {
-                    *o = o.add(&x);
-                }
-            }
-            out
-        })
+    let (bu, bv) = (basis_of(u, net.rows - 1), basis_of(v, net.cols - 1));
+    let out = crate::widest::run(Composition {
+        net,
+        bu: &bu,
+        bv: &bv,
+    });
+    (0..4)
+        .map(|d| out.iter().map(|q| q.lane(d)).collect())
         .collect()
+}
+
+/// The sums of [`compose`], run on the widest vector instructions the
+/// processor has ([`crate::widest`]), the four homogeneous coordinates
+/// side by side ([`Quad`]): `Σ_i B_i(u) Σ_j B_j(v) H_ij` with the bases
+/// composed with `u` and `v` in `bu` and `bv`.
+struct Composition<'a> {
+    net: &'a NetRef<'a>,
+    bu: &'a [Scaled],
+    bv: &'a [Scaled],
+}
+
+impl Job for Composition<'_> {
+    type Output = Vec<Quad>;
+
+    #[inline(always)]
+    fn run(self) -> Vec<Quad> {
+        let (net, bu, bv) = (self.net, self.bu, self.bv);
+        let point = |k: usize| Quad::new([0, 1, 2, 3].map(|d| net.coords[d][k]));
+        let len_v = bv[0].len();
+        let mut out = vec![Quad::zero(); bu[0].len() + len_v - 1];
+        for (i, b) in bu.iter().enumerate() {
+            let terms = (0..net.cols).map(|j| (point(i * net.cols + j), &bv[j]));
+            let row = combination(terms, len_v);
+            for (o, x) in out.iter_mut().zip(convolve(b, &row)) {
+                *o = o.add(&x);
+            }
+        }
+        out
+    }
 }
 
 /// A proved upper bound of `|C(t) − S(t)|` over `t ∈ [0, 1]` for two

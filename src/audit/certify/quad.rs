@@ -75,6 +75,20 @@ impl Quad {
         out
     }
 
+    /// Every lane times `t` ([`Interval::mul`]: the least and greatest of
+    /// the four products of the ends, NaNs ignored).
+    #[inline(always)]
+    pub fn mul(&self, t: &Interval) -> Quad {
+        let mut out = *self;
+        for k in 0..4 {
+            let (a, b) = (self.lo[k], self.hi[k]);
+            let p = [a * t.lo, a * t.hi, b * t.lo, b * t.hi];
+            out.lo[k] = next_down(p.iter().fold(f64::INFINITY, |m, x| m.min(*x)));
+            out.hi[k] = next_up(p.iter().fold(f64::NEG_INFINITY, |m, x| m.max(*x)));
+        }
+        out
+    }
+
     /// The smallest box holding both, lane by lane ([`Interval::hull`]).
     #[inline(always)]
     pub fn hull(&self, o: &Quad) -> Quad {
@@ -84,6 +98,14 @@ impl Quad {
             out.hi[k] = self.hi[k].max(o.hi[k]);
         }
         out
+    }
+
+    /// Every lane `[0, 0]`.
+    pub fn zero() -> Quad {
+        Quad {
+            lo: [0.0; 4],
+            hi: [0.0; 4],
+        }
     }
 
     /// Make lane `k` the interval `x`.
@@ -133,6 +155,8 @@ mod tests {
                 let (x, y) = (a.lane(k), b.lane(k));
                 prop_assert!(same(a.add(&b).lane(k), x.add(&y)));
                 prop_assert!(same(a.scale(&t).lane(k), x.mul_nonneg(&t)));
+                prop_assert!(same(a.mul(&t).lane(k), x.mul(&t)));
+                prop_assert!(same(a.mul(&t).lane(k), t.mul(&x)));
                 prop_assert!(same(a.hull(&b).lane(k), x.hull(&y)));
             }
         }

@@ -148,3 +148,58 @@ fn interpolation_reproduces_a_cubic() {
     }
     assert_eq!(interpolate(&[2.5]).unwrap(), vec![2.5]);
 }
+
+/// [`compose`] by its definition, one coordinate at a time with
+/// [`mul`] (the route before the coordinates went side by side).
+fn compose_by_coordinate(net: &NetRef<'_>, u: &[f64], v: &[f64]) -> Vec<Scaled> {
+    let (bu, bv) = (basis_of(u, net.rows - 1), basis_of(v, net.cols - 1));
+    net.coords
+        .iter()
+        .map(|c| {
+            let mut out = vec![Interval::point(0.0); bu[0].len() + bv[0].len() - 1];
+            for (i, b) in bu.iter().enumerate() {
+                let mut row = vec![Interval::point(0.0); bv[0].len()];
+                for (j, f) in bv.iter().enumerate() {
+                    for (o, x) in row.iter_mut().zip(f) {
+                        *o = o.add(&c[i * net.cols + j].mul(x));
+                    }
+                }
+                for (o, x) in out.iter_mut().zip(mul(b, &row)) {
+                    *o = o.add(&x);
+                }
+            }
+            out
+        })
+        .collect()
+}
+
+proptest::proptest! {
+    /// The four coordinates side by side give each coordinate's bits.
+    #[test]
+    fn composing_side_by_side_is_composing_by_coordinate(
+        rows in 1usize..=5, cols in 1usize..=5,
+        seed in proptest::collection::vec(-1e3f64..1e3, 8..=40),
+        u in proptest::collection::vec(0.0f64..=1.0, 1..=5),
+        v in proptest::collection::vec(0.0f64..=1.0, 1..=5),
+    ) {
+        let k = u.len().min(v.len());
+        let coords: Vec<Vec<Interval>> = (0..4)
+            .map(|d| {
+                (0..rows * cols)
+                    .map(|p| {
+                        let x = seed[(7 * p + 3 * d) % seed.len()];
+                        Interval { lo: x, hi: x + x.abs() * 1e-12 }
+                    })
+                    .collect()
+            })
+            .collect();
+        let net = NetRef { rows, cols, coords: &coords };
+        let bits = |s: Vec<Scaled>| -> Vec<Vec<(u64, u64)>> {
+            s.iter().map(|c| c.iter().map(|x| (x.lo.to_bits(), x.hi.to_bits())).collect()).collect()
+        };
+        proptest::prop_assert_eq!(
+            bits(compose(&net, &u[..k], &v[..k])),
+            bits(compose_by_coordinate(&net, &u[..k], &v[..k]))
+        );
+    }
+}
