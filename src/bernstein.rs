@@ -49,10 +49,28 @@ pub fn bernstein_all<T: Scalar>(n: usize, t: &T) -> Vec<T> {
 /// assert_eq!(b, [0.125, 0.375, 0.375, 0.125]);
 /// ```
 pub fn bernstein_all_into<T: Scalar>(t: &T, b: &mut [T]) {
+    bernstein_stages_into(t, b, |_, _| {});
+}
+
+/// [`bernstein_all_into`], handing each stage of the recursion to `stage`
+/// as it is done: `stage(r, &b[..=r])` with the basis of degree `r`
+/// (`r = 0..b.len()`), bit for bit what [`bernstein_all_into`] gives for
+/// that degree. One recursion serves every degree up to `b.len() − 1`.
+///
+/// ```
+/// use exact_bezier::bernstein::bernstein_stages_into;
+/// let mut b = [0.0; 3];
+/// let mut linear = Vec::new();
+/// bernstein_stages_into(&0.25, &mut b, |r, basis| if r == 1 { linear = basis.to_vec() });
+/// assert_eq!(linear, [0.75, 0.25]);
+/// assert_eq!(b, [0.5625, 0.375, 0.0625]);
+/// ```
+pub fn bernstein_stages_into<T: Scalar>(t: &T, b: &mut [T], mut stage: impl FnMut(usize, &[T])) {
     let Some(first) = b.first_mut() else {
         return;
     };
     *first = T::one();
+    stage(0, &b[..1]);
     let s = T::one() - t;
     for r in 1..b.len() {
         b[r] = b[r - 1].clone() * t;
@@ -60,6 +78,7 @@ pub fn bernstein_all_into<T: Scalar>(t: &T, b: &mut [T]) {
             b[i] = b[i].clone() * &s + &(b[i - 1].clone() * t);
         }
         b[0] = b[0].clone() * &s;
+        stage(r, &b[..=r]);
     }
 }
 

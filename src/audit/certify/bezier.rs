@@ -28,7 +28,7 @@ use super::ivec::IVec;
 use super::quad::Quad;
 use super::Enclose;
 use crate::algebra::{Interval, Scalar};
-use crate::bernstein::bernstein_all_into;
+use crate::bernstein::bernstein_stages_into;
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::widest::Job;
@@ -122,31 +122,36 @@ struct Net {
 }
 
 /// The Bernstein bases `B_i^r(t) = C(r, i) tⁱ (1 − t)^{r−i}`, `i = 0..=r`,
-/// at `t` in `f64` for every degree `r ≤ n` at once: the stages of the
-/// recursion `B_i^r = (1 − t) B_i^{r−1} + t B_{i−1}^{r−1}`
-/// ([`bernstein_all_into`]; Farin, *Curves and Surfaces for CAGD*, 5th
-/// ed., §5.1), stage `r` bit for bit the basis of degree `r`, kept on the
-/// stack for degrees up to 14. A patch's derivative nets have the lower
-/// degrees: one recursion serves all six.
+/// at `t` in `f64` of the degrees `n − 2`, `n − 1`, `n` and 0 — those of a
+/// patch's net and its derivative nets — from one recursion
+/// `B_i^r = (1 − t) B_i^{r−1} + t B_{i−1}^{r−1}` ([`bernstein_stages_into`];
+/// Farin, *Curves and Surfaces for CAGD*, 5th ed., §5.1), each bit for bit
+/// the basis of its degree, on the stack for degrees up to 15.
 struct Bases {
-    /// Stage `r` at `r(r + 1)/2 .. (r + 1)(r + 2)/2`.
-    stages: SmallVec<[f64; 128]>,
+    n: usize,
+    /// The bases of degrees `n − 2`, `n − 1`, `n` (those `≥ 0`).
+    top: [SmallVec<[f64; 16]>; 3],
 }
 
 impl Bases {
     fn new(n: usize, t: f64) -> Bases {
         let mut b: SmallVec<[f64; 16]> = SmallVec::from_elem(0.0, n + 1);
-        let mut stages = SmallVec::with_capacity((n + 1) * (n + 2) / 2);
-        for r in 0..=n {
-            bernstein_all_into(&t, &mut b[..=r]);
-            stages.extend_from_slice(&b[..=r]);
-        }
-        Bases { stages }
+        let mut top: [SmallVec<[f64; 16]>; 3] = Default::default();
+        bernstein_stages_into(&t, &mut b, |r, basis| {
+            if r + 2 >= n {
+                top[r + 2 - n] = SmallVec::from_slice(basis);
+            }
+        });
+        Bases { n, top }
     }
 
-    /// The basis of degree `r`.
+    /// The basis of degree `r` (`0` or `n − 2 ≤ r ≤ n`).
     fn of(&self, r: usize) -> &[f64] {
-        &self.stages[r * (r + 1) / 2..(r + 1) * (r + 2) / 2]
+        if r == 0 {
+            &[1.0]
+        } else {
+            &self.top[r + 2 - self.n]
+        }
     }
 }
 
@@ -662,6 +667,7 @@ fn cartesian_f64([h, hu, hv, huu, huv, hvv]: [[f64; 4]; 6]) -> Result<PatchJet, 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::bernstein::bernstein_all_into;
     use num_rational::BigRational;
     use proptest::prelude::*;
 
