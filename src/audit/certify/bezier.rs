@@ -596,6 +596,25 @@ impl IPatch {
     ///
     /// [`Error::Domain`] when the weight there is not positive.
     pub fn approximate_jet(&self, u: f64, v: f64) -> Result<PatchJet, Error> {
+        let [x, xu, xv, xuu, xuv, xvv] = self
+            .jet_f64(u, v)?
+            .map(|a| a.iter().map(|c| Interval::point(*c)).collect());
+        Ok(PatchJet {
+            x,
+            xu,
+            xv,
+            xuu,
+            xuv,
+            xvv,
+        })
+    }
+
+    /// [`IPatch::approximate_jet`] as plain numbers ([`Jet64`]).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Domain`] when the weight there is not positive.
+    pub fn jet_f64(&self, u: f64, v: f64) -> Result<Jet64, Error> {
         let h = &self.nets[0];
         let (bu, bv) = (Bases::new(h.rows - 1, u), Bases::new(h.cols - 1, v));
         cartesian_f64(self.nets.each_ref().map(|n| n.value_f64(&bu, &bv)))
@@ -635,9 +654,13 @@ fn cartesian([h, hu, hv, huu, huv, hvv]: [IVec; 6]) -> Result<PatchJet, Error> {
     })
 }
 
+/// A patch's point and derivatives up to order 2 at a point in `f64` (not
+/// an enclosure): `[S, S_u, S_v, S_uu, S_uv, S_vv]`.
+pub type Jet64 = [[f64; 3]; 6];
+
 /// [`cartesian`] in `f64` (not an enclosure): the same quotient rule on
-/// the homogeneous values, as point intervals.
-fn cartesian_f64([h, hu, hv, huu, huv, hvv]: [[f64; 4]; 6]) -> Result<PatchJet, Error> {
+/// the homogeneous values.
+fn cartesian_f64([h, hu, hv, huu, huv, hvv]: [[f64; 4]; 6]) -> Result<Jet64, Error> {
     let w = h[3];
     if w.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
         return Err(Error::Domain(format!(
@@ -653,15 +676,7 @@ fn cartesian_f64([h, hu, hv, huu, huv, hvv]: [[f64; 4]; 6]) -> Result<PatchJet, 
     let xuu = rule(&huu, &[(2.0 * hu[3], &xu), (huu[3], &x)]);
     let xuv = rule(&huv, &[(hu[3], &xv), (hv[3], &xu), (huv[3], &x)]);
     let xvv = rule(&hvv, &[(2.0 * hv[3], &xv), (hvv[3], &x)]);
-    let point = |a: [f64; 3]| a.iter().map(|c| Interval::point(*c)).collect();
-    Ok(PatchJet {
-        x: point(x),
-        xu: point(xu),
-        xv: point(xv),
-        xuu: point(xuu),
-        xuv: point(xuv),
-        xvv: point(xvv),
-    })
+    Ok([x, xu, xv, xuu, xuv, xvv])
 }
 
 #[cfg(test)]

@@ -17,7 +17,7 @@
 
 use super::bezier::{ICurve, IPatch, PatchJet};
 use super::ivec::dot;
-use super::krawczyk::{krawczyk, mid_inverse, system, IMat, Jets};
+use super::krawczyk::{inverse, krawczyk, system, system_f64, IMat, Jets};
 use crate::algebra::Interval;
 use crate::error::Error;
 
@@ -43,12 +43,12 @@ const NOISE: f64 = 1e-9;
 /// whatever the first steps overshoot); `None` if a step is not finite.
 pub fn newton<S: Jets + ?Sized>(patch: &S, c: &[Interval], start: [f64; 2]) -> Option<[f64; 2]> {
     let far = patch.reach();
+    let c = [0, 1, 2].map(|k| c[k].mid());
     let mut g = start;
     let mut last = f64::INFINITY;
     for _ in 0..40 {
-        let (f, j) = system(&patch.approximate_jet(g[0], g[1]).ok()?, c);
-        let y = mid_inverse(&j)?;
-        let f = f.map(|x| x.mid());
+        let (f, j) = system_f64(&patch.jet_f64(g[0], g[1]).ok()?, &c);
+        let y = inverse(&j)?;
         let step = [
             y[0][0] * f[0] + y[0][1] * f[1],
             y[1][0] * f[0] + y[1][1] * f[1],

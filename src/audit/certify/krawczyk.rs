@@ -17,7 +17,7 @@
 //! 2009, §8.2; Krawczyk 1969). With `c` an enclosure of a whole piece of
 //! the edge, the conclusion holds for each of its points at once.
 
-use super::bezier::{IPatch, PatchJet};
+use super::bezier::{IPatch, Jet64, PatchJet};
 use super::ivec::{dot, sub};
 use crate::algebra::Interval;
 use crate::error::Error;
@@ -48,6 +48,17 @@ pub trait Jets {
         self.jet(Interval::point(u), Interval::point(v))
     }
 
+    /// [`Jets::approximate_jet`] as plain numbers ([`Jet64`]): by
+    /// default its midpoints.
+    ///
+    /// # Errors
+    ///
+    /// Those of [`Jets::jet`].
+    fn jet_f64(&self, u: f64, v: f64) -> Result<Jet64, Error> {
+        let j = self.approximate_jet(u, v)?;
+        Ok([&j.x, &j.xu, &j.xv, &j.xuu, &j.xuv, &j.xvv].map(|c| [0, 1, 2].map(|k| c[k].mid())))
+    }
+
     /// The parameter domain `[[u₀, u₁], [v₀, v₁]]`.
     fn domain(&self) -> [[f64; 2]; 2];
 
@@ -68,6 +79,10 @@ impl Jets for IPatch {
         IPatch::approximate_jet(self, u, v)
     }
 
+    fn jet_f64(&self, u: f64, v: f64) -> Result<Jet64, Error> {
+        IPatch::jet_f64(self, u, v)
+    }
+
     fn domain(&self) -> [[f64; 2]; 2] {
         [[0.0, 1.0]; 2]
     }
@@ -85,11 +100,30 @@ pub fn system(s: &PatchJet, c: &[Interval]) -> ([Interval; 2], IMat) {
     (f, j)
 }
 
-/// The inverse of the real 2 × 2 matrix of midpoints of `j`, if regular.
-pub fn mid_inverse(j: &IMat) -> Option<[[f64; 2]; 2]> {
-    let [[a, b], [c, d]] = j.map(|r| r.map(|x| x.mid()));
+/// [`system`] in `f64` at a point of the surface (`s`) and the point `c`:
+/// Newton's step, not an enclosure.
+pub fn system_f64(s: &Jet64, c: &[f64; 3]) -> ([f64; 2], [[f64; 2]; 2]) {
+    let [x, xu, xv, xuu, xuv, xvv] = s;
+    let dot = |a: &[f64; 3], b: &[f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let r = [0, 1, 2].map(|k| x[k] - c[k]);
+    let cross = dot(xu, xv) + dot(&r, xuv);
+    let j = [
+        [dot(xu, xu) + dot(&r, xuu), cross],
+        [cross, dot(xv, xv) + dot(&r, xvv)],
+    ];
+    ([dot(&r, xu), dot(&r, xv)], j)
+}
+
+/// The inverse of the real 2 × 2 matrix `m`, if regular.
+pub fn inverse(m: &[[f64; 2]; 2]) -> Option<[[f64; 2]; 2]> {
+    let [[a, b], [c, d]] = *m;
     let det = a * d - b * c;
     (det.is_finite() && det != 0.0).then(|| [[d / det, -b / det], [-c / det, a / det]])
+}
+
+/// The inverse of the real 2 × 2 matrix of midpoints of `j`, if regular.
+pub fn mid_inverse(j: &IMat) -> Option<[[f64; 2]; 2]> {
+    inverse(&j.map(|r| r.map(|x| x.mid())))
 }
 
 /// `K(B)` for the box `b` and point enclosure `c`; `None` when the

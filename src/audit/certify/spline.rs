@@ -79,7 +79,7 @@
 //! assert!(field.distance(&[1.0, 0.5, 0.125].map(Interval::point)).is_none());
 //! ```
 
-use super::bezier::{ICurve, IPatch, PatchJet};
+use super::bezier::{ICurve, IPatch, Jet64, PatchJet};
 use super::closed_form::Distance;
 use super::compose::{compose, distance_bound, interpolate};
 use super::curvature::curvature_across;
@@ -537,6 +537,22 @@ impl<'a> SplineField<'a> {
             recent_feet: RefCell::new(Vec::new()),
             parts: RefCell::new(HashMap::new()),
         }
+    }
+
+    /// The piece whose span holds `(u, v)` (the border pieces beyond the
+    /// border), `(u, v)` in its local parameters, and the derivatives'
+    /// scales `1/(b − a)` along each axis (spans in `f64`).
+    fn local(&self, u: f64, v: f64) -> ((usize, f64, f64), (f64, f64)) {
+        let cell = self.surface.cell([u, v]);
+        let ij = [cell / self.surface.columns(), cell % self.surface.columns()];
+        let [(lu, su), (lv, sv)] = [0, 1].map(|k| {
+            let (a, b) = (
+                self.surface.axes[k].breaks[ij[k]].mid(),
+                self.surface.axes[k].breaks[ij[k] + 1].mid(),
+            );
+            ((if k == 0 { u } else { v } - a) / (b - a), 1.0 / (b - a))
+        });
+        ((cell, lu, lv), (su, sv))
     }
 
     /// The foot box of the points `p`, remembered among the last few.
@@ -1442,17 +1458,24 @@ impl Jets for SplineField<'_> {
     /// The jet of the piece whose span holds `(u, v)` (the border pieces
     /// beyond the border), in its local parameters, derivatives scaled.
     fn approximate_jet(&self, u: f64, v: f64) -> Result<PatchJet, Error> {
-        let cell = self.surface.cell([u, v]);
-        let ij = [cell / self.surface.columns(), cell % self.surface.columns()];
-        let [(lu, su), (lv, sv)] = [0, 1].map(|k| {
-            let (a, b) = (
-                self.surface.axes[k].breaks[ij[k]].mid(),
-                self.surface.axes[k].breaks[ij[k] + 1].mid(),
-            );
-            ((if k == 0 { u } else { v } - a) / (b - a), 1.0 / (b - a))
-        });
+        let ((cell, lu, lv), (su, sv)) = self.local(u, v);
         let jet = self.surface.piece(cell)?.approximate_jet(lu, lv)?;
         Ok(scaled(jet, &Interval::point(su), &Interval::point(sv)))
+    }
+
+    /// [`Jets::approximate_jet`] in plain numbers, scaled in `f64`.
+    fn jet_f64(&self, u: f64, v: f64) -> Result<Jet64, Error> {
+        let ((cell, lu, lv), (su, sv)) = self.local(u, v);
+        let [x, xu, xv, xuu, xuv, xvv] = self.surface.piece(cell)?.jet_f64(lu, lv)?;
+        let times = |a: [f64; 3], k: f64| a.map(|c| c * k);
+        Ok([
+            x,
+            times(xu, su),
+            times(xv, sv),
+            times(xuu, su * su),
+            times(xuv, su * sv),
+            times(xvv, sv * sv),
+        ])
     }
 
     fn domain(&self) -> [[f64; 2]; 2] {
