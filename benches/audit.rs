@@ -3,9 +3,17 @@
 //! per seam), and the STEP reader on the same pieces written as STEP text.
 //! For the 10 000-surface STEP file, see `benches/make_step_model.py`.
 //!
+//! The certified measures' kernels (group `certify`), on a rational
+//! bicubic piece as a B-spline face gives them (derivative nets formed in
+//! interval arithmetic): the jet enclosed over a box 1/64 wide, the `f64`
+//! jet Newton's guesses take, and the patch composed with a cubic in its
+//! parameters.
+//!
 //! Run: `cargo bench --bench audit -- --warm-up-time 1 --measurement-time 2`
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use exact_bezier::audit::certify::{bezier::IPatch, compose::compose};
+use exact_bezier::{algebra::Interval, RectPatch};
 use exact_bezier::{
     audit::audit, audit::Model, audit::Piece, hpoint::HPoint, io::read_model, nurbs::Knots,
     nurbs::NurbsSurface, Patch,
@@ -87,9 +95,53 @@ fn bench(c: &mut Criterion) {
     });
 }
 
+/// A rational bicubic patch with coordinates in the tens, weights 1 to 2.
+fn bicubic() -> IPatch {
+    let r = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+    let points = (0..4i64)
+        .map(|i| {
+            (0..4i64)
+                .map(|j| vec![r(10 * i + j, 3), r(7 * j - i, 2), r((i * j) % 5 + 20, 1)])
+                .collect()
+        })
+        .collect();
+    let weights = (0..4i64)
+        .map(|i| (0..4i64).map(|j| r(4 + (i + 2 * j) % 4, 4)).collect())
+        .collect();
+    let patch = RectPatch::new(points, weights).expect("positive weights");
+    IPatch::with_enclosed_derivatives(&patch).expect("3D, positive weights")
+}
+
+fn certify(c: &mut Criterion) {
+    let p = bicubic();
+    let mut g = c.benchmark_group("certify");
+    let (u, v) = (
+        Interval {
+            lo: 0.3,
+            hi: 0.3 + 1.0 / 64.0,
+        },
+        Interval {
+            lo: 0.55,
+            hi: 0.55 + 1.0 / 64.0,
+        },
+    );
+    g.bench_function("bicubic jet over a box", |b| {
+        b.iter(|| p.jet(black_box(u), black_box(v)).unwrap())
+    });
+    g.bench_function("bicubic f64 jet", |b| {
+        b.iter(|| p.approximate_jet(black_box(0.3), black_box(0.55)).unwrap())
+    });
+    let (cu, cv) = ([0.2, 0.3, 0.45, 0.5], [0.6, 0.55, 0.5, 0.52]);
+    g.bench_function("bicubic composed with a cubic", |b| {
+        b.iter(|| compose(&p.homogeneous(), black_box(&cu), black_box(&cv)))
+    });
+    g.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(10);
     targets = bench
 }
-criterion_main!(benches);
+criterion_group!(kernels, certify);
+criterion_main!(benches, kernels);
