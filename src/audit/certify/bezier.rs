@@ -474,6 +474,20 @@ pub struct PatchJet {
     pub xvv: IVec,
 }
 
+impl PatchJet {
+    /// The jet of `[S, S_u, S_v, S_uu, S_uv, S_vv]`.
+    pub fn from_parts([x, xu, xv, xuu, xuv, xvv]: [IVec; 6]) -> PatchJet {
+        PatchJet {
+            x,
+            xu,
+            xv,
+            xuu,
+            xuv,
+            xvv,
+        }
+    }
+}
+
 const ORDERS: [(usize, usize); 6] = [(0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2)];
 
 impl IPatch {
@@ -596,17 +610,10 @@ impl IPatch {
     ///
     /// [`Error::Domain`] when the weight there is not positive.
     pub fn approximate_jet(&self, u: f64, v: f64) -> Result<PatchJet, Error> {
-        let [x, xu, xv, xuu, xuv, xvv] = self
-            .jet_f64(u, v)?
-            .map(|a| a.iter().map(|c| Interval::point(*c)).collect());
-        Ok(PatchJet {
-            x,
-            xu,
-            xv,
-            xuu,
-            xuv,
-            xvv,
-        })
+        Ok(PatchJet::from_parts(
+            self.jet_f64(u, v)?
+                .map(|a| a.iter().map(|c| Interval::point(*c)).collect()),
+        ))
     }
 
     /// [`IPatch::approximate_jet`] as plain numbers ([`Jet64`]).
@@ -644,14 +651,7 @@ fn cartesian([h, hu, hv, huu, huv, hvv]: [IVec; 6]) -> Result<PatchJet, Error> {
     let xuu = quotient(puu, &[(wu.mul(&two), &xu), (wuu, &x)], &w);
     let xuv = quotient(puv, &[(wu, &xv), (wv, &xu), (wuv, &x)], &w);
     let xvv = quotient(pvv, &[(wv.mul(&two), &xv), (wvv, &x)], &w);
-    Ok(PatchJet {
-        x,
-        xu,
-        xv,
-        xuu,
-        xuv,
-        xvv,
-    })
+    Ok(PatchJet::from_parts([x, xu, xv, xuu, xuv, xvv]))
 }
 
 /// A patch's point and derivatives up to order 2 at a point in `f64` (not
