@@ -61,7 +61,8 @@
 //! The modules form layers, each using only those below it (checked by
 //! `tests/layers.rs`, which fails on an upward import or a circle):
 //!
-//! 1. [`Error`] and [`limits`] — errors, and every limit and the cost model;
+//! 1. [`Error`], [`limits`] and `widest` — errors, every limit and the cost
+//!    model, and the run-time choice of vector instructions for loops;
 //! 2. [`algebra`] — the scalar tower ([`Ring`], [`Scalar`], [`Field`],
 //!    [`Ordered`]) and the number types: integers, intervals, the symbolic
 //!    [`Poly`], real algebraic numbers, resultants;
@@ -90,6 +91,7 @@
 //! | `render` | no | `render`: SVG/PNG plots and OBJ/STL/PLY meshes (depends on `resvg`) |
 //! | `proptest` | no | `strategy`: proptest strategies for curves and patches |
 //! | `mint` | no | [`coords`]: control points from `mint` points |
+//! | `simd` | yes | the `f64` batch kernels and the interval loops of the audit compiled for AVX-512 or AVX2 too, chosen at run time where the processor has them (through `pulp`); the same bits either way |
 //!
 //! With `default-features = false` the crate is the mathematics and the
 //! JSON format ([`io`]) without the `serde` impls; it depends on `resvg`
