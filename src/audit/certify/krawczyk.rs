@@ -18,7 +18,6 @@
 //! the edge, the conclusion holds for each of its points at once.
 
 use super::bezier::{IPatch, Jet64, PatchJet};
-use super::ivec::{dot, sub};
 use crate::algebra::Interval;
 use crate::error::Error;
 
@@ -88,28 +87,69 @@ impl Jets for IPatch {
     }
 }
 
-/// `F` and `J` of the foot-point system over a patch jet and point box `c`.
+/// `F` and `J` of the foot-point system over a patch jet and point box `c`
+/// ([`foot_system`] in interval arithmetic: enclosures).
 pub fn system(s: &PatchJet, c: &[Interval]) -> ([Interval; 2], IMat) {
-    let r = sub(&s.x, c);
-    let f = [dot(&r, &s.xu), dot(&r, &s.xv)];
-    let cross = dot(&s.xu, &s.xv).add(&dot(&r, &s.xuv));
-    let j = [
-        [dot(&s.xu, &s.xu).add(&dot(&r, &s.xuu)), cross],
-        [cross, dot(&s.xv, &s.xv).add(&dot(&r, &s.xvv))],
-    ];
-    (f, j)
+    foot_system([&s.x, &s.xu, &s.xv, &s.xuu, &s.xuv, &s.xvv], c)
 }
 
 /// [`system`] in `f64` at a point of the surface (`s`) and the point `c`:
 /// Newton's step, not an enclosure.
 pub fn system_f64(s: &Jet64, c: &[f64; 3]) -> ([f64; 2], [[f64; 2]; 2]) {
+    foot_system(s.each_ref().map(|a| &a[..]), c)
+}
+
+/// The arithmetic of [`foot_system`]: intervals (rounded outward) for
+/// enclosures, `f64` for Newton's guesses.
+trait Arith: Copy {
+    const ZERO: Self;
+    fn plus(self, o: Self) -> Self;
+    fn minus(self, o: Self) -> Self;
+    fn times(self, o: Self) -> Self;
+}
+
+impl Arith for Interval {
+    const ZERO: Interval = Interval { lo: 0.0, hi: 0.0 };
+    fn plus(self, o: Interval) -> Interval {
+        self.add(&o)
+    }
+    fn minus(self, o: Interval) -> Interval {
+        self.sub(&o)
+    }
+    fn times(self, o: Interval) -> Interval {
+        self.mul(&o)
+    }
+}
+
+impl Arith for f64 {
+    const ZERO: f64 = 0.0;
+    fn plus(self, o: f64) -> f64 {
+        self + o
+    }
+    fn minus(self, o: f64) -> f64 {
+        self - o
+    }
+    fn times(self, o: f64) -> f64 {
+        self * o
+    }
+}
+
+/// The foot-point system `F = ((S − C)·S_u, (S − C)·S_v)` and its Jacobian
+/// `J = [[S_u·S_u + (S − C)·S_uu, S_u·S_v + (S − C)·S_uv], [·, S_v·S_v + (S − C)·S_vv]]`
+/// from `[S, S_u, S_v, S_uu, S_uv, S_vv]` and the point `c` (dot products
+/// summed from 0 in coordinate order, as [`super::ivec::dot`]).
+fn foot_system<T: Arith>(s: [&[T]; 6], c: &[T]) -> ([T; 2], [[T; 2]; 2]) {
     let [x, xu, xv, xuu, xuv, xvv] = s;
-    let dot = |a: &[f64; 3], b: &[f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    let r = [0, 1, 2].map(|k| x[k] - c[k]);
-    let cross = dot(xu, xv) + dot(&r, xuv);
+    let dot = |a: &[T], b: &[T]| {
+        a.iter()
+            .zip(b)
+            .fold(T::ZERO, |acc, (p, q)| acc.plus(p.times(*q)))
+    };
+    let r: smallvec::SmallVec<[T; 3]> = x.iter().zip(c).map(|(p, q)| p.minus(*q)).collect();
+    let cross = dot(xu, xv).plus(dot(&r, xuv));
     let j = [
-        [dot(xu, xu) + dot(&r, xuu), cross],
-        [cross, dot(xv, xv) + dot(&r, xvv)],
+        [dot(xu, xu).plus(dot(&r, xuu)), cross],
+        [cross, dot(xv, xv).plus(dot(&r, xvv))],
     ];
     ([dot(&r, xu), dot(&r, xv)], j)
 }
