@@ -676,8 +676,8 @@ const FAILED_REL: f64 = 1e-2;
 /// The relative width a failing curvature difference is refined to (its
 /// magnitude to 10 %). Curvature enclosures narrow only linearly with the
 /// piece: the target's `10⁻³` cost up to the whole work cap, and 1 %, as
-/// for the gap and the angle until 2026-11-29, a quarter of the audit's
-/// time on `tail_section_asm.stp` (4.1 against 3.1 s, the same verdicts
+/// for the gap and the angle until 2026-11-29, a sixth of the audit's
+/// time on `tail_section_asm.stp` (4.17 against 3.53 s, the same verdicts
 /// on all 19 STEP fixtures).
 const FAILED_CURVATURE_REL: f64 = 1e-1;
 
