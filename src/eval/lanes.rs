@@ -23,10 +23,12 @@
 //! processor has (detected at run time, once): `pulp::x86::V4` or `V3`
 //! calls a `#[target_feature]` function on our behalf, safely after its
 //! detection, and every kernel below is `#[inline(always)]` so that the
-//! whole of it is compiled inside that function. One kernel is written
+//! whole of it is compiled inside that function. Two kernels are written
 //! in `pulp`'s vectors instead (`pulp::Simd`, safe, the same code for
-//! AVX2 and AVX-512): the bicubic's ([`rect_bernstein`]), whose lane
-//! loops the fat-LTO build had re-vectorised with permutes.
+//! AVX2 and AVX-512), whose lane loops the fat-LTO build had compiled
+//! badly: the bicubic's ([`rect_bernstein`]) and the curves'
+//! ([`curve_batch`], with one in-order interleave per instruction set,
+//! [`Zip`]).
 //!
 //! The scalar kernel (`horner` in [`super`], one point at a time) stays
 //! the reference. The baseline build performs the same IEEE operations in
@@ -178,6 +180,21 @@ trait Target: Copy {
     /// builds, which have one.
     const FUSED: bool;
 
+    /// The homogeneous points of a curve net `g` of degree `n` at the
+    /// parameters `h`.
+    fn curve<const S: usize, const L: usize>(self, n: usize, g: &[f64], h: &Hom<L>)
+        -> [Lane<L>; S];
+
+    /// [`eval_batch`] of a curve net by a loop of its own, if the target
+    /// has one at `L` lanes ([`curve_batch`]); `None` otherwise, for
+    /// [`project`]'s.
+    fn curve_batch<const S: usize, const L: usize, T: Any>(
+        self,
+        net: &Net<f64>,
+        params: &[T],
+        out: &mut [T],
+    ) -> Option<Result<(), Error>>;
+
     /// The homogeneous points of a rect net `g` of degree `(D, D)`,
     /// `D ≤ 3`, at the parameters `h`.
     fn square<const S: usize, const L: usize, const D: usize>(
@@ -194,6 +211,28 @@ struct Baseline;
 impl Target for Baseline {
     const FUSED: bool = false;
 
+    /// [`horner`], the scalar kernel's operations.
+    #[inline(always)]
+    fn curve<const S: usize, const L: usize>(
+        self,
+        n: usize,
+        g: &[f64],
+        h: &Hom<L>,
+    ) -> [Lane<L>; S] {
+        horner::<S, L>(false, n + 1, broadcast::<S, L>(g), &h[0], &h[1])
+    }
+
+    /// `None`: [`project`]'s loop.
+    #[inline(always)]
+    fn curve_batch<const S: usize, const L: usize, T: Any>(
+        self,
+        _: &Net<f64>,
+        _: &[T],
+        _: &mut [T],
+    ) -> Option<Result<(), Error>> {
+        None
+    }
+
     /// [`rect`]'s Horner steps, the scalar kernel's operations, with the
     /// rows on the stack.
     #[inline(always)]
@@ -208,8 +247,33 @@ impl Target for Baseline {
 }
 
 #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
-impl<V: pulp::Simd> Target for V {
+impl<V: Zip> Target for V {
     const FUSED: bool = true;
+
+    /// [`curve_vectors`] in `V`'s vectors.
+    #[inline(always)]
+    fn curve<const S: usize, const L: usize>(
+        self,
+        n: usize,
+        g: &[f64],
+        h: &Hom<L>,
+    ) -> [Lane<L>; S] {
+        curve_vectors::<S, L, V>(self, n, g, h)
+    }
+
+    /// [`curve_batch`] in `V`'s vectors.
+    #[inline(always)]
+    fn curve_batch<const S: usize, const L: usize, T: Any>(
+        self,
+        net: &Net<f64>,
+        params: &[T],
+        out: &mut [T],
+    ) -> Option<Result<(), Error>> {
+        // A group is two vectors of points (the AVX-512 build at
+        // `LANES_AVX512`, the AVX2 one at `LANES`).
+        let two = L * size_of::<f64>() == 2 * size_of::<V::f64s>();
+        two.then(|| curve_batch::<S, L, T, V>(self, net, params, out))
+    }
 
     /// [`rect_bernstein`] in `V`'s vectors.
     #[inline(always)]
@@ -223,8 +287,9 @@ impl<V: pulp::Simd> Target for V {
 }
 
 /// A batch job (evaluation or jets) whose kernel is compiled for nets of
-/// any shape if `SQUARE` is 0, else for rect nets of degree `(SQUARE,
-/// SQUARE)` only (see [`by_shape`]).
+/// any shape if `SQUARE` is 0, for curve nets only if it is [`CURVES`],
+/// else for rect nets of degree `(SQUARE, SQUARE)` only (see
+/// [`by_shape`]).
 trait Job {
     type Output;
     fn run<const L: usize, const SQUARE: usize, V: Target>(self, simd: V) -> Self::Output;
@@ -253,8 +318,10 @@ impl<J: Job, const SQUARE: usize> Kernel for Square<J, SQUARE> {
 /// one (README, "Divides under the next group's work"), then 6.0–6.3 →
 /// 4.8–5.4 there with [`rect_bernstein`] in `pulp`'s vectors. The same for the
 /// cubic triangle was no faster (Horner steps unrolled, 4.0–4.1 ns either
-/// way) or slower (its Bernstein values, 5.4 ns), and a kernel for curves
-/// alone made their code worse.
+/// way) or slower (its Bernstein values, 5.4 ns). Curves alone, by a kernel
+/// compiled for them ([`CURVES`]): in the vector builds its own loop
+/// ([`curve_batch`]; by the lane loops of the other shapes, a kernel for
+/// curves alone had made their code worse).
 #[inline(always)]
 fn by_shape<J: Job>(isa: Isa, mut shapes: impl Iterator<Item = Shape>, job: J) -> J::Output {
     let first = shapes.next();
@@ -263,9 +330,15 @@ fn by_shape<J: Job>(isa: Isa, mut shapes: impl Iterator<Item = Shape>, job: J) -
         Some(Shape::Rect(3, 3)) if shapes.all(|s| s == Shape::Rect(3, 3)) => {
             dispatch(isa, wide, Square::<J, 3>(job))
         }
+        Some(Shape::Curve(_)) if shapes.all(|s| matches!(s, Shape::Curve(_))) => {
+            dispatch(isa, wide, Square::<J, CURVES>(job))
+        }
         _ => dispatch(isa, wide, Square::<J, 0>(job)),
     }
 }
+
+/// The `SQUARE` of a [`Job`] compiled for curve nets only.
+const CURVES: usize = usize::MAX;
 
 /// `kernel` compiled for the instruction set `isa`, [`LANES_AVX512`]
 /// points at a time in the AVX-512 build if `wide`, else [`LANES`]. The
@@ -437,20 +510,159 @@ fn project<const S: usize, const L: usize, const SQUARE: usize, T: Any, V: Targe
     out: &mut [T],
     rows: &mut Vec<f64>,
 ) -> Result<(), Error> {
+    if SQUARE == CURVES
+        && let Some(done) = simd.curve_batch::<S, L, T>(net, params, out)
+    {
+        return done;
+    }
     let k = net.shape().params();
     let mut last: Option<([Lane<L>; S], &mut [T])> = None;
     for (p, o) in params.chunks(L * k).zip(out.chunks_mut(L * (S - 1))) {
         let divided = last.take().map(|(h, o)| (quotients(&h), o));
         let h = hom_net::<S, L, SQUARE, V>(simd, net, &hom_lanes(net.shape(), p), rows);
         if let Some((x, o)) = divided {
-            write(&x, o)?;
+            write(x, o)?;
         }
         last = Some((h, o));
     }
     match last {
-        Some((h, o)) => write(&quotients(&h), o),
+        Some((h, o)) => write(quotients(&h), o),
         None => Ok(()),
     }
+}
+
+/// [`eval_batch`] of a curve net in the vector builds (the
+/// [`Target::curve_batch`] of `V`): a loop of its own, with no shape to
+/// dispatch on inside it, each group's parameters read as whole vectors
+/// ([`column`]), each vector of them evaluated by [`curve_vector`] and
+/// divided at once; a planar group's points go out by [`zip_planar`].
+/// `peer_eval` (AVX-512, fat LTO, 2026-11-29, 200 000 points, best of 30
+/// passes, three runs): planar cubic 0.86–0.89 → 0.38–0.39 ns a point,
+/// degree 10 1.34–1.36 → 1.02–1.03, degree 40 3.33–3.41 → 3.06–3.09. By
+/// the lane loops of [`project`], the fat-LTO build took the Horner
+/// accumulators apart into single values (`vextractf32x4`, spills).
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+#[inline(always)]
+fn curve_batch<const S: usize, const L: usize, T: Any, V: Zip>(
+    simd: V,
+    net: &Net<f64>,
+    params: &[T],
+    out: &mut [T],
+) -> Result<(), Error> {
+    let (points, _) = net.scaled().as_chunks::<S>();
+    for (p, o) in params.chunks(L).zip(out.chunks_mut(L * (S - 1))) {
+        let t = column::<L, 1, T>(p, 0);
+        let (t, _) = V::as_simd_f64s(&t);
+        let point = |b| curve_point::<S, V>(simd, points, b);
+        let x = [point(t[0]), point(t[1])];
+        if S == 3 && zip_planar::<L, T, V>(simd, &x[0], &x[1], o) {
+            continue;
+        }
+        // By value, so that the points may stay in registers.
+        write::<S, L, T>(each(|k| bytemuck::cast([x[0][k], x[1][k]])), o)?;
+    }
+    Ok(())
+}
+
+/// A whole group of planar points `x₀, x₁` (`[X, Y, W]`, one vector of
+/// points each) into `o` by [`Zip::zip`], if their weights are all
+/// non-zero; false, nothing written, otherwise (a partial group, or a
+/// point at infinity: [`write`]'s case). The compiler's own shuffles, for
+/// a loop of fixed length over a whole group's lanes, read the points
+/// back from memory by loads that straddle two of their stores: planar
+/// cubic 0.72 ns a point, against 0.38 this way.
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+#[inline(always)]
+fn zip_planar<const L: usize, T: Any, V: Zip>(
+    simd: V,
+    x0: &[V::f64s],
+    x1: &[V::f64s],
+    o: &mut [T],
+) -> bool {
+    let zero = simd.splat_f64s(0.0);
+    let at_infinity = simd.or_m64s(simd.equal_f64s(x0[2], zero), simd.equal_f64s(x1[2], zero));
+    let (rows, _) = o.as_chunks_mut::<L>();
+    let [first, second] = rows else {
+        return false;
+    };
+    if bytemuck::bytes_of(&at_infinity).iter().any(|b| *b != 0) {
+        return false;
+    }
+    for (row, x) in [first, second].into_iter().zip([x0, x1]) {
+        let row: &mut Lane<L> = as_f64_mut(row);
+        V::as_mut_simd_f64s(row)
+            .0
+            .copy_from_slice(&simd.zip(x[0], x[1]));
+    }
+    true
+}
+
+/// The in-order interleave of two vectors, which `pulp` does not offer
+/// (its `interleave_shfl_f64s` leaves the lanes in an order of its own).
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+trait Zip: pulp::Simd {
+    /// `[x₀, y₀, x₁, y₁, …]`: the lanes of `x` and `y` alternately, in
+    /// order, as two vectors.
+    fn zip(self, x: Self::f64s, y: Self::f64s) -> [Self::f64s; 2];
+}
+
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+impl Zip for pulp::x86::V3 {
+    /// Two in-lane unpacks (`x₀y₀x₂y₂`, `x₁y₁x₃y₃`), then their halves
+    /// exchanged.
+    #[inline(always)]
+    fn zip(self, x: Self::f64s, y: Self::f64s) -> [Self::f64s; 2] {
+        let (x, y) = (bytemuck::cast(x), bytemuck::cast(y));
+        let (even, odd) = (
+            self.avx._mm256_unpacklo_pd(x, y),
+            self.avx._mm256_unpackhi_pd(x, y),
+        );
+        [
+            bytemuck::cast(self.avx._mm256_permute2f128_pd::<0x20>(even, odd)),
+            bytemuck::cast(self.avx._mm256_permute2f128_pd::<0x31>(even, odd)),
+        ]
+    }
+}
+
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+impl Zip for pulp::x86::V4 {
+    /// One two-source permute a half.
+    #[inline(always)]
+    fn zip(self, x: Self::f64s, y: Self::f64s) -> [Self::f64s; 2] {
+        let (x, y) = (bytemuck::cast(x), bytemuck::cast(y));
+        let half = |k: i64| {
+            let index = self.avx512f._mm512_setr_epi64(
+                k,
+                8 + k,
+                k + 1,
+                9 + k,
+                k + 2,
+                10 + k,
+                k + 3,
+                11 + k,
+            );
+            bytemuck::cast(self.avx512f._mm512_permutex2var_pd(x, index, y))
+        };
+        [half(0), half(4)]
+    }
+}
+
+/// The point of a curve of control `points` at one vector of parameters
+/// `t`: its Cartesian coordinates, then its weight.
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+#[inline(always)]
+fn curve_point<const S: usize, V: pulp::Simd>(
+    simd: V,
+    points: &[[f64; S]],
+    t: V::f64s,
+) -> [V::f64s; S] {
+    let a = simd.sub_f64s(simd.splat_f64s(1.0), t);
+    let h = curve_vector::<S, V>(simd, points, a, t);
+    let mut x = h;
+    for x in &mut x[..S - 1] {
+        *x = simd.div_f64s(*x, h[S - 1]);
+    }
+    x
 }
 
 /// The Cartesian coordinates `h[c] / h[d]` (`d = S − 1`) of a group's
@@ -476,7 +688,7 @@ fn quotients<const S: usize, const L: usize>(h: &[Lane<L>; S]) -> [Lane<L>; S] {
 /// zero.
 #[inline(always)]
 fn write<const S: usize, const L: usize, T: Any>(
-    x: &[Lane<L>; S],
+    x: [Lane<L>; S],
     o: &mut [T],
 ) -> Result<(), Error> {
     let d = S - 1;
@@ -532,15 +744,29 @@ fn jets<const S: usize, const L: usize, const SQUARE: usize, T: Any, V: Target>(
 /// (`shape.params()` values each, `0` in the unused lanes).
 #[inline(always)]
 fn hom_lanes<const L: usize, T: Any>(shape: Shape, params: &[T]) -> Hom<L> {
-    let k = shape.params();
-    let at = |j: usize| -> Lane<L> { lane(|l| params.get(l * k + j).map_or(0.0, as_f64)) };
-    let (p, q) = (at(0), if k > 1 { at(1) } else { [0.0; L] });
+    let (p, q) = match shape {
+        Shape::Curve(_) => (column::<L, 1, T>(params, 0), [0.0; L]),
+        _ => (column::<L, 2, T>(params, 0), column::<L, 2, T>(params, 1)),
+    };
     let minus = |x: &Lane<L>, y: &Lane<L>| -> Lane<L> { lane(|l| x[l] - y[l]) };
     let one = [1.0; L];
     match shape {
         Shape::Curve(_) => [minus(&one, &p), p, one, one],
         Shape::Rect(..) => [minus(&one, &p), p, minus(&one, &q), q],
         Shape::Tri(_) => [p, q, minus(&minus(&one, &p), &q), one],
+    }
+}
+
+/// Parameter `j` of each of up to `L` points of `K` parameters each
+/// (`0` in the unused lanes). A whole group is read as an array of known
+/// length, which the compiler loads as vectors; only the last, partial
+/// group of a batch goes value by value.
+#[inline(always)]
+fn column<const L: usize, const K: usize, T: Any>(params: &[T], j: usize) -> Lane<L> {
+    let (points, _) = params.as_chunks::<K>();
+    match <&[[T; K]; L]>::try_from(points) {
+        Ok(whole) => lane(|l| as_f64(&whole[l][j])),
+        Err(_) => lane(|l| points.get(l).map_or(0.0, |p| as_f64(&p[j]))),
     }
 }
 
@@ -557,9 +783,8 @@ fn hom_net<const S: usize, const L: usize, const SQUARE: usize, V: Target>(
 ) -> [Lane<L>; S] {
     let (g, fused) = (net.scaled(), V::FUSED);
     match (SQUARE, net.shape()) {
-        (1.., _) => simd.square::<S, L, SQUARE>(g, h),
-        (_, Shape::Curve(n)) if fused && n >= BLOCK => curve_blocks::<S, L>(n, g, h),
-        (_, Shape::Curve(n)) => horner::<S, L>(fused, n + 1, broadcast::<S, L>(g), &h[0], &h[1]),
+        (_, Shape::Curve(n)) => simd.curve::<S, L>(n, g, h),
+        (1..=3, _) => simd.square::<S, L, SQUARE>(g, h),
         (_, Shape::Rect(m, n)) => {
             rows.resize((m + 1) * S * L, 0.0);
             let (rows, _) = rows.as_chunks_mut::<L>();
@@ -661,21 +886,88 @@ fn bernstein<V: pulp::Simd, const D: usize>(simd: V, a: V::f64s, b: V::f64s) -> 
     }
 }
 
+/// A curve of degree `n` in the vector builds, in `V`'s vectors (eight
+/// `f64` for AVX-512, four for AVX2; the `L` lanes are `L / F64_LANES` of
+/// them, each evaluated on its own by [`curve_vector`]).
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+#[inline(always)]
+fn curve_vectors<const S: usize, const L: usize, V: pulp::Simd>(
+    simd: V,
+    n: usize,
+    g: &[f64],
+    h: &Hom<L>,
+) -> [Lane<L>; S] {
+    let (points, _) = g.as_chunks::<S>();
+    let points = &points[..=n];
+    let (a, b) = (V::as_simd_f64s(&h[0]).0, V::as_simd_f64s(&h[1]).0);
+    let mut out = [[0.0; L]; S];
+    for (q, (a, b)) in a.iter().zip(b).enumerate() {
+        for (out, x) in out
+            .iter_mut()
+            .zip(curve_vector::<S, V>(simd, points, *a, *b))
+        {
+            V::as_mut_simd_f64s(out).0[q] = x;
+        }
+    }
+    out
+}
+
+/// The homogeneous points of a curve of control `points` at one vector
+/// of homogeneous parameters `(a, b) = (1 − t, t)`: [`horner_vectors`]
+/// below degree [`BLOCK`], [`curve_blocks`] from it.
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+#[inline(always)]
+fn curve_vector<const S: usize, V: pulp::Simd>(
+    simd: V,
+    points: &[[f64; S]],
+    a: V::f64s,
+    b: V::f64s,
+) -> [V::f64s; S] {
+    match points.len() > BLOCK {
+        true => curve_blocks::<S, V>(simd, points, a, b),
+        false => horner_vectors::<S, V>(simd, points, a, b),
+    }
+}
+
+/// [`horner`] on one vector of lanes, every multiply–add fused: the same
+/// operations in the same order.
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+#[inline(always)]
+fn horner_vectors<const S: usize, V: pulp::Simd>(
+    simd: V,
+    points: &[[f64; S]],
+    a: V::f64s,
+    b: V::f64s,
+) -> [V::f64s; S] {
+    let mut acc = points[0].map(|x| simd.splat_f64s(x));
+    let mut bpow = simd.splat_f64s(1.0);
+    for point in &points[1..] {
+        bpow = simd.mul_f64s(bpow, b);
+        for (acc, x) in acc.iter_mut().zip(point) {
+            let term = simd.mul_f64s(bpow, simd.splat_f64s(*x));
+            *acc = simd.mul_add_f64s(*acc, a, term);
+        }
+    }
+    acc
+}
+
 /// The terms `K` of a block of [`curve_blocks`].
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
 const BLOCK: usize = 4;
 
 /// A curve of degree `n ≥ K` ([`BLOCK`]) in the vector builds:
-/// `Σ_i a^{n−i} bⁱ G_i` (binomials in the scaled net `g`) by blocks of `K`
+/// `Σ_i a^{n−i} bⁱ G_i` (binomials in the scaled net's
+/// `points`) by blocks of `K`
 /// terms. The first `k₀` terms (`k₀ ≡ n + 1 mod K`, `1 ≤ k₀ ≤ K`) go
-/// by [`horner`]; then, Horner-like over the blocks,
+/// by [`horner_vectors`]; then, Horner-like over the blocks,
 ///
 /// ```text
 /// acc ← acc·a^K + b^s·Σ_{r<K} a^{K−1−r} b^r G_{s+r}      s = k₀, k₀ + K, …, n + 1 − K
 /// ```
 ///
 /// with the Bernstein values `a^{K−1−r} b^r` computed once a group
-/// ([`values`]). A block costs `K + 2` multiply–adds or multiplies a
-/// coordinate for `K` terms, against `2K` by [`horner`], and its sums do
+/// ([`block_values`]). A block costs `K + 2` multiply–adds or multiplies a
+/// coordinate for `K` terms, against `2K` by [`horner_vectors`], and its sums do
 /// not wait on the blocks before it: one multiply–add a block is the
 /// whole chain of latencies, not one a term. Measured (`peer_eval`,
 /// AVX-512, builds without LTO, 2026-11-28, load 1.7–2.5): planar degree
@@ -688,28 +980,31 @@ const BLOCK: usize = 4;
 /// multiply–adds `K`, `b^s` `s − 1` and the product by it 1, its step 1,
 /// and `K` for each of the `(n + 1 − s − K)/K` later blocks (`a^K` `K −
 /// 1`, the step 1). A term of the first `k₀` meets `2k₀ − 1` in
-/// [`horner`] and `K` a later block: `n + k₀` in all. So the tolerance of
+/// [`horner_vectors`] and `K` a later block: `n + k₀` in all. So the tolerance of
 /// the module holds unchanged.
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
 #[inline(always)]
-fn curve_blocks<const S: usize, const L: usize>(n: usize, g: &[f64], h: &Hom<L>) -> [Lane<L>; S] {
-    let (points, _) = g.as_chunks::<S>();
-    let (a, b) = (powers::<L>(&h[0]), powers::<L>(&h[1]));
-    let first = match (n + 1) % BLOCK {
+fn curve_blocks<const S: usize, V: pulp::Simd>(
+    simd: V,
+    points: &[[f64; S]],
+    a: V::f64s,
+    b: V::f64s,
+) -> [V::f64s; S] {
+    let (a, b) = (powers(simd, a), powers(simd, b));
+    let first = match points.len() % BLOCK {
         0 => BLOCK,
         k => k,
     };
-    let mut acc = horner::<S, L>(true, first, |i, k| [points[i][k]; L], &h[0], &h[1]);
-    let (block, mut bs) = (values::<L>(&a, &b), b[first]);
+    let mut acc = horner_vectors::<S, V>(simd, &points[..first], a[1], b[1]);
+    let (values, mut bs) = (block_values(simd, &a, &b), b[first]);
     let (blocks, _) = points[first..].as_chunks::<BLOCK>();
-    for (q, part) in blocks.iter().enumerate() {
+    for (q, block) in blocks.iter().enumerate() {
         if q > 0 {
-            bs = mul(&bs, &b[BLOCK]);
+            bs = simd.mul_f64s(bs, b[BLOCK]);
         }
-        let part = block_sum::<S, L>(&block, part);
-        for (acc, part) in acc.iter_mut().zip(&part) {
-            for l in 0..L {
-                acc[l] = acc[l].mul_add(a[BLOCK][l], bs[l] * part[l]);
-            }
+        let sum = block_sum::<S, V>(simd, &values, block);
+        for (acc, sum) in acc.iter_mut().zip(sum) {
+            *acc = simd.mul_add_f64s(*acc, a[BLOCK], simd.mul_f64s(bs, sum));
         }
     }
     acc
@@ -717,26 +1012,32 @@ fn curve_blocks<const S: usize, const L: usize>(n: usize, g: &[f64], h: &Hom<L>)
 
 /// `x^j` for `j ≤ BLOCK` in every lane, by running products (`j − 1`
 /// roundings).
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
 #[inline(always)]
-fn powers<const L: usize>(x: &Lane<L>) -> [Lane<L>; BLOCK + 1] {
-    let mut p = [[1.0; L]; BLOCK + 1];
-    p[1] = *x;
+fn powers<V: pulp::Simd>(simd: V, x: V::f64s) -> [V::f64s; BLOCK + 1] {
+    let mut p = [simd.splat_f64s(1.0); BLOCK + 1];
+    p[1] = x;
     for j in 2..=BLOCK {
-        p[j] = mul(&p[j - 1], x);
+        p[j] = simd.mul_f64s(p[j - 1], x);
     }
     p
 }
 
 /// The Bernstein values `a^{K−1−r} b^r`, `r < K = BLOCK`, from the
 /// powers of [`powers`] (`K − 2` roundings at most).
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
 #[inline(always)]
-fn values<const L: usize>(a: &[Lane<L>; BLOCK + 1], b: &[Lane<L>; BLOCK + 1]) -> [Lane<L>; BLOCK] {
-    let mut v = [[0.0; L]; BLOCK];
+fn block_values<V: pulp::Simd>(
+    simd: V,
+    a: &[V::f64s; BLOCK + 1],
+    b: &[V::f64s; BLOCK + 1],
+) -> [V::f64s; BLOCK] {
+    let mut v = [simd.splat_f64s(0.0); BLOCK];
     for (r, v) in v.iter_mut().enumerate() {
         *v = match (r, BLOCK - 1 - r) {
             (0, e) => a[e],
             (r, 0) => b[r],
-            (r, e) => mul(&a[e], &b[r]),
+            (r, e) => simd.mul_f64s(a[e], b[r]),
         };
     }
     v
@@ -744,17 +1045,17 @@ fn values<const L: usize>(a: &[Lane<L>; BLOCK + 1], b: &[Lane<L>; BLOCK + 1]) ->
 
 /// `Σ_r v_r P_r` over the `K` ([`BLOCK`]) points `P` of a block, each
 /// coordinate a chain of fused multiply–adds.
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
 #[inline(always)]
-fn block_sum<const S: usize, const L: usize>(
-    v: &[Lane<L>; BLOCK],
+fn block_sum<const S: usize, V: pulp::Simd>(
+    simd: V,
+    v: &[V::f64s; BLOCK],
     points: &[[f64; S]; BLOCK],
-) -> [Lane<L>; S] {
-    let mut out: [Lane<L>; S] = each(|k| lane(|l| v[0][l] * points[0][k]));
+) -> [V::f64s; S] {
+    let mut out = points[0].map(|x| simd.mul_f64s(v[0], simd.splat_f64s(x)));
     for (v, p) in v.iter().zip(points).skip(1) {
         for (o, x) in out.iter_mut().zip(p) {
-            for l in 0..L {
-                o[l] = v[l].mul_add(*x, o[l]);
-            }
+            *o = simd.mul_add_f64s(*v, simd.splat_f64s(*x), *o);
         }
     }
     out
@@ -838,16 +1139,6 @@ fn horner<const S: usize, const L: usize>(
     acc
 }
 
-/// The lane-wise product `x·y`.
-#[inline(always)]
-fn mul<const L: usize>(x: &Lane<L>, y: &Lane<L>) -> Lane<L> {
-    let mut p = [0.0; L];
-    for l in 0..L {
-        p[l] = x[l] * y[l];
-    }
-    p
-}
-
 /// The lane `[f(0), …, f(L − 1)]`, by a loop that is inlined whole
 /// (`std::array::from_fn` of 16 values was left as a call in the AVX-512
 /// build, its body not vectorised: 2–3× slower).
@@ -895,9 +1186,9 @@ fn as_f64<T: Any>(x: &T) -> f64 {
     *(x as &dyn Any).downcast_ref().expect("the scalar is f64")
 }
 
-/// [`as_f64`], mutable.
+/// [`as_f64`], mutable (or an array of `f64`, as the array of `T`).
 #[inline(always)]
-fn as_f64_mut<T: Any>(x: &mut T) -> &mut f64 {
+fn as_f64_mut<T: Any, F: Any>(x: &mut T) -> &mut F {
     (x as &mut dyn Any)
         .downcast_mut()
         .expect("the scalar is f64")
@@ -1237,5 +1528,26 @@ mod tests {
         ));
         // X(1/4) = −(1/4)/(1/2).
         assert_eq!(out[4..6], [-0.5, -0.5]);
+    }
+
+    /// The same in a whole group of a vector build (the planar curves'
+    /// interleaved stores stand aside for it): 40 points `t = k/32`, the
+    /// zero weight at `k = 16`, the first point of the second group of 16
+    /// (AVX-512) or of the third of 8 (AVX2); the 16 points before it are
+    /// written, each `X(t) = −t/(1 − 2t)` exactly (dyadic `t`).
+    #[test]
+    fn a_zero_weight_in_a_whole_group_is_a_point_at_infinity() {
+        let c = RationalCurve::new(vec![vec![0.0, 0.0], vec![1.0, 1.0]], vec![1.0, -1.0]).unwrap();
+        let ev = Evaluator::curve(&c);
+        let ts: Vec<f64> = (0..40).map(|k| k as f64 / 32.0).collect();
+        for isa in vector_builds() {
+            let mut out = [f64::NAN; 80];
+            let done = eval_batch(isa, &ev.net, &ts, &mut out, &mut Vec::new());
+            assert!(matches!(done, Some(Err(Error::PointAtInfinity))), "{isa:?}");
+            for (t, x) in ts[..16].iter().zip(out.chunks_exact(2)) {
+                let expected = -t / (1.0 - 2.0 * t);
+                assert_eq!(x, [expected, expected], "{isa:?} at t = {t}");
+            }
+        }
     }
 }
