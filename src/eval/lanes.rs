@@ -23,12 +23,16 @@
 //! processor has (detected at run time, once): `pulp::x86::V4` or `V3`
 //! calls a `#[target_feature]` function on our behalf, safely after its
 //! detection, and every kernel below is `#[inline(always)]` so that the
-//! whole of it is compiled inside that function. Two kernels are written
-//! in `pulp`'s vectors instead (`pulp::Simd`, safe, the same code for
-//! AVX2 and AVX-512), whose lane loops the fat-LTO build had compiled
-//! badly: the bicubic's ([`rect_bernstein`]) and the curves'
-//! ([`curve_batch`], with one in-order interleave per instruction set,
-//! [`Zip`]).
+//! whole of it is compiled inside that function. The batches of curves,
+//! tri patches and bicubics are written in `pulp`'s vectors instead
+//! (`pulp::Simd`, safe, the same code for AVX2 and AVX-512), each by a
+//! loop of its own ([`curve_batch`], [`patch_batch`]), with the points
+//! written by an in-order interleave of each instruction set ([`Zip`]):
+//! their lane loops the fat-LTO build had compiled badly (accumulators
+//! taken apart into single values, shuffles that read back from memory
+//! what had just been stored), and a change to one shape's code moved
+//! the others' times. Rect patches of other degrees keep the lane loops
+//! of [`project`].
 //!
 //! The scalar kernel (`horner` in [`super`], one point at a time) stays
 //! the reference. The baseline build performs the same IEEE operations in
@@ -185,10 +189,11 @@ trait Target: Copy {
     fn curve<const S: usize, const L: usize>(self, n: usize, g: &[f64], h: &Hom<L>)
         -> [Lane<L>; S];
 
-    /// [`eval_batch`] of a curve net by a loop of its own, if the target
-    /// has one at `L` lanes ([`curve_batch`]); `None` otherwise, for
+    /// [`eval_batch`] by a loop of its own for the nets of a kernel
+    /// compiled for `SQUARE` (see [`Job`]), if the target has one at `L`
+    /// lanes ([`curve_batch`], [`patch_batch`]); `None` otherwise, for
     /// [`project`]'s.
-    fn curve_batch<const S: usize, const L: usize, T: Any>(
+    fn batch<const S: usize, const L: usize, const SQUARE: usize, T: Any>(
         self,
         net: &Net<f64>,
         params: &[T],
@@ -224,7 +229,7 @@ impl Target for Baseline {
 
     /// `None`: [`project`]'s loop.
     #[inline(always)]
-    fn curve_batch<const S: usize, const L: usize, T: Any>(
+    fn batch<const S: usize, const L: usize, const SQUARE: usize, T: Any>(
         self,
         _: &Net<f64>,
         _: &[T],
@@ -261,18 +266,23 @@ impl<V: Zip> Target for V {
         curve_vectors::<S, L, V>(self, n, g, h)
     }
 
-    /// [`curve_batch`] in `V`'s vectors.
+    /// [`curve_batch`] for curves, a group being two vectors of points
+    /// (the AVX-512 build at `LANES_AVX512`, the AVX2 one at `LANES`);
+    /// [`patch_batch`] for tri patches and bicubics.
     #[inline(always)]
-    fn curve_batch<const S: usize, const L: usize, T: Any>(
+    fn batch<const S: usize, const L: usize, const SQUARE: usize, T: Any>(
         self,
         net: &Net<f64>,
         params: &[T],
         out: &mut [T],
     ) -> Option<Result<(), Error>> {
-        // A group is two vectors of points (the AVX-512 build at
-        // `LANES_AVX512`, the AVX2 one at `LANES`).
-        let two = L * size_of::<f64>() == 2 * size_of::<V::f64s>();
-        two.then(|| curve_batch::<S, L, T, V>(self, net, params, out))
+        match SQUARE {
+            CURVES => (L * size_of::<f64>() == 2 * size_of::<V::f64s>())
+                .then(|| curve_batch::<S, L, T, V>(self, net, params, out)),
+            TRIS => patch_batch::<S, L, 0, T, V>(self, net, params, out),
+            3 => patch_batch::<S, L, 3, T, V>(self, net, params, out),
+            _ => None,
+        }
     }
 
     /// [`rect_bernstein`] in `V`'s vectors.
@@ -288,8 +298,8 @@ impl<V: Zip> Target for V {
 
 /// A batch job (evaluation or jets) whose kernel is compiled for nets of
 /// any shape if `SQUARE` is 0, for curve nets only if it is [`CURVES`],
-/// else for rect nets of degree `(SQUARE, SQUARE)` only (see
-/// [`by_shape`]).
+/// for tri nets only if it is [`TRIS`], else for rect nets of degree
+/// `(SQUARE, SQUARE)` only (see [`by_shape`]).
 trait Job {
     type Output;
     fn run<const L: usize, const SQUARE: usize, V: Target>(self, simd: V) -> Self::Output;
@@ -318,10 +328,11 @@ impl<J: Job, const SQUARE: usize> Kernel for Square<J, SQUARE> {
 /// one (README, "Divides under the next group's work"), then 6.0–6.3 →
 /// 4.8–5.4 there with [`rect_bernstein`] in `pulp`'s vectors. The same for the
 /// cubic triangle was no faster (Horner steps unrolled, 4.0–4.1 ns either
-/// way) or slower (its Bernstein values, 5.4 ns). Curves alone, by a kernel
-/// compiled for them ([`CURVES`]): in the vector builds its own loop
-/// ([`curve_batch`]; by the lane loops of the other shapes, a kernel for
-/// curves alone had made their code worse).
+/// way) or slower (its Bernstein values, 5.4 ns). Curves alone and tri
+/// patches alone, by kernels compiled for them ([`CURVES`], [`TRIS`]):
+/// in the vector builds each has a loop of its own ([`Target::batch`];
+/// by the lane loops of the other shapes, a kernel for curves alone had
+/// made their code worse).
 #[inline(always)]
 fn by_shape<J: Job>(isa: Isa, mut shapes: impl Iterator<Item = Shape>, job: J) -> J::Output {
     let first = shapes.next();
@@ -333,12 +344,18 @@ fn by_shape<J: Job>(isa: Isa, mut shapes: impl Iterator<Item = Shape>, job: J) -
         Some(Shape::Curve(_)) if shapes.all(|s| matches!(s, Shape::Curve(_))) => {
             dispatch(isa, wide, Square::<J, CURVES>(job))
         }
+        Some(Shape::Tri(_)) if shapes.all(|s| matches!(s, Shape::Tri(_))) => {
+            dispatch(isa, wide, Square::<J, TRIS>(job))
+        }
         _ => dispatch(isa, wide, Square::<J, 0>(job)),
     }
 }
 
 /// The `SQUARE` of a [`Job`] compiled for curve nets only.
 const CURVES: usize = usize::MAX;
+
+/// The `SQUARE` of a [`Job`] compiled for tri nets only.
+const TRIS: usize = usize::MAX - 1;
 
 /// `kernel` compiled for the instruction set `isa`, [`LANES_AVX512`]
 /// points at a time in the AVX-512 build if `wide`, else [`LANES`]. The
@@ -510,9 +527,7 @@ fn project<const S: usize, const L: usize, const SQUARE: usize, T: Any, V: Targe
     out: &mut [T],
     rows: &mut Vec<f64>,
 ) -> Result<(), Error> {
-    if SQUARE == CURVES
-        && let Some(done) = simd.curve_batch::<S, L, T>(net, params, out)
-    {
+    if let Some(done) = simd.batch::<S, L, SQUARE, T>(net, params, out) {
         return done;
     }
     let k = net.shape().params();
@@ -532,9 +547,9 @@ fn project<const S: usize, const L: usize, const SQUARE: usize, T: Any, V: Targe
 }
 
 /// [`eval_batch`] of a curve net in the vector builds (the
-/// [`Target::curve_batch`] of `V`): a loop of its own, with no shape to
+/// [`Target::batch`] of `V`): a loop of its own, with no shape to
 /// dispatch on inside it, each group's parameters read as whole vectors
-/// ([`column`]), each vector of them evaluated by [`curve_vector`] and
+/// ([`column()`]), each vector of them evaluated by [`curve_vector`] and
 /// divided at once; a planar group's points go out by [`zip_planar`].
 /// `peer_eval` (AVX-512, fat LTO, 2026-11-29, 200 000 points, best of 30
 /// passes, three runs): planar cubic 0.86–0.89 → 0.38–0.39 ns a point,
@@ -564,10 +579,118 @@ fn curve_batch<const S: usize, const L: usize, T: Any, V: Zip>(
     Ok(())
 }
 
+/// [`eval_batch`] of a tri net, or of a rect net of degree `(D, D)` if
+/// `D` is not 0, in the vector builds (the [`Target::batch`] of `V`);
+/// `None` for a net of another shape. As [`curve_batch`]: each vector of
+/// a group's parameters evaluated by [`tri_vector`] or [`square_vector`]
+/// and divided at once; a group of one vector of spatial points goes out
+/// by [`zip_spatial`].
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+#[inline(always)]
+fn patch_batch<const S: usize, const L: usize, const D: usize, T: Any, V: Zip>(
+    simd: V,
+    net: &Net<f64>,
+    params: &[T],
+    out: &mut [T],
+) -> Option<Result<(), Error>> {
+    let (points, _) = net.scaled().as_chunks::<S>();
+    let one = simd.splat_f64s(1.0);
+    let minus = |x, y| simd.sub_f64s(x, y);
+    let hom = |u, v| match net.shape() {
+        Shape::Tri(n) => Some(tri_vector::<S, V>(
+            simd,
+            n,
+            points,
+            [u, v, minus(minus(one, u), v)],
+        )),
+        Shape::Rect(..) if D > 0 => Some(square_vector::<S, D, V>(
+            simd,
+            points,
+            [minus(one, u), u, minus(one, v), v],
+        )),
+        _ => None,
+    };
+    'groups: for (p, o) in params.chunks(2 * L).zip(out.chunks_mut(L * (S - 1))) {
+        let (u, v) = (column::<L, 2, T>(p, 0), column::<L, 2, T>(p, 1));
+        let (u, v) = (V::as_simd_f64s(&u).0, V::as_simd_f64s(&v).0);
+        let one_vector = u.len() == 1;
+        let mut x = [[0.0; L]; S];
+        for (q, (u, v)) in u.iter().zip(v).enumerate() {
+            let mut h = hom(*u, *v)?;
+            for c in 0..S - 1 {
+                h[c] = simd.div_f64s(h[c], h[S - 1]);
+            }
+            if one_vector && S == 4 && zip_spatial::<L, T, V>(simd, &h, o) {
+                continue 'groups;
+            }
+            for (x, h) in x.iter_mut().zip(h) {
+                V::as_mut_simd_f64s(x).0[q] = h;
+            }
+        }
+        if let Err(e) = write(x, o) {
+            return Some(Err(e));
+        }
+    }
+    Some(Ok(()))
+}
+
+/// [`tri`] on one vector of lanes `(u, v, w)`, every multiply–add fused:
+/// the same operations in the same order.
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+#[inline(always)]
+fn tri_vector<const S: usize, V: pulp::Simd>(
+    simd: V,
+    n: usize,
+    points: &[[f64; S]],
+    [u, v, w]: [V::f64s; 3],
+) -> [V::f64s; S] {
+    let (mut out, mut vpow, mut start) = ([simd.splat_f64s(0.0); S], simd.splat_f64s(1.0), 0);
+    for j in 0..=n {
+        let row = &points[start..start + n - j + 1];
+        start += n - j + 1;
+        let r = horner_vectors::<S, V>(simd, row, w, u);
+        if j == 0 {
+            out = r;
+        } else {
+            for (o, r) in out.iter_mut().zip(r) {
+                *o = simd.mul_add_f64s(vpow, r, *o);
+            }
+        }
+        if j < n {
+            vpow = simd.mul_f64s(vpow, v);
+        }
+    }
+    out
+}
+
+/// A whole group of one vector of spatial points `x` (`[X, Y, Z, W]`)
+/// into `o` by [`Zip::zip3`], if their weights are all non-zero and the
+/// instruction set has it; false, nothing written, otherwise.
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+#[inline(always)]
+fn zip_spatial<const L: usize, T: Any, V: Zip>(simd: V, x: &[V::f64s], o: &mut [T]) -> bool {
+    let at_infinity = simd.equal_f64s(x[3], simd.splat_f64s(0.0));
+    let (rows, _) = o.as_chunks_mut::<L>();
+    let [first, second, third] = rows else {
+        return false;
+    };
+    if bytemuck::bytes_of(&at_infinity).iter().any(|b| *b != 0) {
+        return false;
+    }
+    let Some(zipped) = simd.zip3(x[0], x[1], x[2]) else {
+        return false;
+    };
+    for (row, z) in [first, second, third].into_iter().zip(zipped) {
+        let row: &mut Lane<L> = as_f64_mut(row);
+        V::as_mut_simd_f64s(row).0[0] = z;
+    }
+    true
+}
+
 /// A whole group of planar points `x₀, x₁` (`[X, Y, W]`, one vector of
 /// points each) into `o` by [`Zip::zip`], if their weights are all
 /// non-zero; false, nothing written, otherwise (a partial group, or a
-/// point at infinity: [`write`]'s case). The compiler's own shuffles, for
+/// point at infinity: [`write()`]'s case). The compiler's own shuffles, for
 /// a loop of fixed length over a whole group's lanes, read the points
 /// back from memory by loads that straddle two of their stores: planar
 /// cubic 0.72 ns a point, against 0.38 this way.
@@ -604,6 +727,10 @@ trait Zip: pulp::Simd {
     /// `[x₀, y₀, x₁, y₁, …]`: the lanes of `x` and `y` alternately, in
     /// order, as two vectors.
     fn zip(self, x: Self::f64s, y: Self::f64s) -> [Self::f64s; 2];
+
+    /// `[x₀, y₀, z₀, x₁, …]`, as three vectors, where the instruction set
+    /// does it in a few instructions; `None` otherwise.
+    fn zip3(self, x: Self::f64s, y: Self::f64s, z: Self::f64s) -> Option<[Self::f64s; 3]>;
 }
 
 #[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
@@ -621,6 +748,12 @@ impl Zip for pulp::x86::V3 {
             bytemuck::cast(self.avx._mm256_permute2f128_pd::<0x20>(even, odd)),
             bytemuck::cast(self.avx._mm256_permute2f128_pd::<0x31>(even, odd)),
         ]
+    }
+
+    /// `None`: AVX2 has no permute of two sources by lane index.
+    #[inline(always)]
+    fn zip3(self, _: Self::f64s, _: Self::f64s, _: Self::f64s) -> Option<[Self::f64s; 3]> {
+        None
     }
 }
 
@@ -645,6 +778,32 @@ impl Zip for pulp::x86::V4 {
         };
         [half(0), half(4)]
     }
+
+    /// Per output vector, the lanes of `x` and `y` by one two-source
+    /// permute, then those of `z` by one masked permute: output `k` holds
+    /// the values `8k … 8k + 7` of `x₀ y₀ z₀ x₁ y₁ z₁ …`.
+    #[inline(always)]
+    fn zip3(self, x: Self::f64s, y: Self::f64s, z: Self::f64s) -> Option<[Self::f64s; 3]> {
+        let (x, y, z) = (bytemuck::cast(x), bytemuck::cast(y), bytemuck::cast(z));
+        let out = |k: i64| {
+            // Value `i` of the stream is coordinate `i mod 3` of point `i / 3`;
+            // `x` is source lanes 0–7 of the first permute, `y` lanes 8–15.
+            let lane = |i: i64| match i % 3 {
+                1 => 8 + i / 3,
+                _ => i / 3,
+            };
+            let l = |j: i64| lane(8 * k + j);
+            let index =
+                self.avx512f
+                    ._mm512_setr_epi64(l(0), l(1), l(2), l(3), l(4), l(5), l(6), l(7));
+            let xy = self.avx512f._mm512_permutex2var_pd(x, index, y);
+            let zs = (0..8)
+                .filter(|j| (8 * k + j) % 3 == 2)
+                .fold(0u8, |m, j| m | 1 << j);
+            bytemuck::cast(self.avx512f._mm512_mask_permutexvar_pd(xy, zs, index, z))
+        };
+        Some([out(0), out(1), out(2)])
+    }
 }
 
 /// The point of a curve of control `points` at one vector of parameters
@@ -668,7 +827,7 @@ fn curve_point<const S: usize, V: pulp::Simd>(
 /// The Cartesian coordinates `h[c] / h[d]` (`d = S − 1`) of a group's
 /// homogeneous points, all lanes in one straight block, kept whole
 /// vectors by `black_box` (which holds them in memory: otherwise the
-/// compiler splits them to fit the stores of [`write`], half as wide; 15 %
+/// compiler splits them to fit the stores of [`write()`], half as wide; 15 %
 /// on a cubic triangle). `x[d]` is the weight itself.
 #[inline(always)]
 fn quotients<const S: usize, const L: usize>(h: &[Lane<L>; S]) -> [Lane<L>; S] {
@@ -839,30 +998,43 @@ fn rect_bernstein<const S: usize, const L: usize, const D: usize, V: pulp::Simd>
     h: &Hom<L>,
 ) -> [Lane<L>; S] {
     let (points, _) = g.as_chunks::<S>();
-    let [a, b, c, d] = h.each_ref().map(|x| V::as_simd_f64s(x).0);
+    let (a, b) = (V::as_simd_f64s(&h[0]).0, V::as_simd_f64s(&h[1]).0);
+    let (c, d) = (V::as_simd_f64s(&h[2]).0, V::as_simd_f64s(&h[3]).0);
     let mut out = [[0.0; L]; S];
     for q in 0..a.len() {
-        let bu = bernstein::<V, D>(simd, a[q], b[q]);
-        let bv = bernstein::<V, D>(simd, c[q], d[q]);
-        let mut o = [simd.splat_f64s(0.0); S];
-        for i in 0..=D {
-            let row = &points[i * (D + 1)..(i + 1) * (D + 1)];
-            for (k, o) in o.iter_mut().enumerate() {
-                let mut r = simd.mul_f64s(bv[0], simd.splat_f64s(row[0][k]));
-                for j in 1..=D {
-                    r = simd.mul_add_f64s(bv[j], simd.splat_f64s(row[j][k]), r);
-                }
-                *o = match i {
-                    0 => simd.mul_f64s(bu[0], r),
-                    _ => simd.mul_add_f64s(bu[i], r, *o),
-                };
-            }
-        }
+        let o = square_vector::<S, D, V>(simd, points, [a[q], b[q], c[q], d[q]]);
         for (out, o) in out.iter_mut().zip(o) {
             V::as_mut_simd_f64s(out).0[q] = o;
         }
     }
     out
+}
+
+/// [`rect_bernstein`] on one vector of lanes `(1 − u, u, 1 − v, v)`.
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+#[inline(always)]
+fn square_vector<const S: usize, const D: usize, V: pulp::Simd>(
+    simd: V,
+    points: &[[f64; S]],
+    [a, b, c, d]: [V::f64s; 4],
+) -> [V::f64s; S] {
+    let bu = bernstein::<V, D>(simd, a, b);
+    let bv = bernstein::<V, D>(simd, c, d);
+    let mut o = [simd.splat_f64s(0.0); S];
+    for i in 0..=D {
+        let row = &points[i * (D + 1)..(i + 1) * (D + 1)];
+        for (k, o) in o.iter_mut().enumerate() {
+            let mut r = simd.mul_f64s(bv[0], simd.splat_f64s(row[0][k]));
+            for j in 1..=D {
+                r = simd.mul_add_f64s(bv[j], simd.splat_f64s(row[j][k]), r);
+            }
+            *o = match i {
+                0 => simd.mul_f64s(bu[0], r),
+                _ => simd.mul_add_f64s(bu[i], r, *o),
+            };
+        }
+    }
+    o
 }
 
 /// `a^{D−j} b^j` for `j ≤ D ≤ 3` in each lane of a vector (the entries
@@ -939,7 +1111,7 @@ fn horner_vectors<const S: usize, V: pulp::Simd>(
     a: V::f64s,
     b: V::f64s,
 ) -> [V::f64s; S] {
-    let mut acc = points[0].map(|x| simd.splat_f64s(x));
+    let mut acc = vectors::<S, V>(simd, |k| simd.splat_f64s(points[0][k]));
     let mut bpow = simd.splat_f64s(1.0);
     for point in &points[1..] {
         bpow = simd.mul_f64s(bpow, b);
@@ -1052,7 +1224,7 @@ fn block_sum<const S: usize, V: pulp::Simd>(
     v: &[V::f64s; BLOCK],
     points: &[[f64; S]; BLOCK],
 ) -> [V::f64s; S] {
-    let mut out = points[0].map(|x| simd.mul_f64s(v[0], simd.splat_f64s(x)));
+    let mut out = vectors::<S, V>(simd, |k| simd.mul_f64s(v[0], simd.splat_f64s(points[0][k])));
     for (v, p) in v.iter().zip(points).skip(1) {
         for (o, x) in out.iter_mut().zip(p) {
             *o = simd.mul_add_f64s(*v, simd.splat_f64s(*x), *o);
@@ -1147,6 +1319,20 @@ fn lane<const L: usize>(f: impl Fn(usize) -> f64) -> Lane<L> {
     let mut x = [0.0; L];
     for (l, x) in x.iter_mut().enumerate() {
         *x = f(l);
+    }
+    x
+}
+
+/// The vectors `[f(0), …, f(N − 1)]`, as [`lane`]: an array's `map`
+/// may be left as a call, compiled without the instruction set's
+/// features (the bicubic's `h.each_ref().map(…)` was, in a fat-LTO build
+/// of 2026-11-29: 1.9 → 2.8 ns a point).
+#[cfg(all(feature = "simd", any(target_arch = "x86", target_arch = "x86_64")))]
+#[inline(always)]
+fn vectors<const N: usize, V: pulp::Simd>(simd: V, f: impl Fn(usize) -> V::f64s) -> [V::f64s; N] {
+    let mut x = [simd.splat_f64s(0.0); N];
+    for (k, x) in x.iter_mut().enumerate() {
+        *x = f(k);
     }
     x
 }
@@ -1435,6 +1621,65 @@ mod tests {
             isas.push(Isa::Avx2(v3));
         }
         isas
+    }
+
+    /// The same for spatial patches, whose whole groups go out by one
+    /// interleave of three vectors in the AVX-512 build: a linear triangle
+    /// with the weights `1` at `w = 1`, `−1` at `u = 1` and `1` at `v = 1`
+    /// (weight `1 − 2u` on the edge `v = 0`), and a bicubic whose first
+    /// two rows weigh `1` and last two `−1` (weight zero at `u = 1/2` by
+    /// symmetry, every value exact on dyadic parameters); 16 points
+    /// `(u, v) = (k/16, 0)`, the zero at `k = 8`, the first point of the
+    /// second group of 8. The batch
+    /// fails with the scalar kernel's error, after writing the 8 points
+    /// before it, each within the module's tolerance of the scalar kernel
+    /// (here within 8 units in the last place of the largest coordinate).
+    #[test]
+    fn a_zero_weight_in_a_whole_group_of_spatial_points() {
+        let h = |x: f64, y: f64, z: f64, w: f64| HPoint {
+            coords: vec![x * w, y * w, z * w, w],
+        };
+        let tri = vec![
+            h(0.0, 0.0, 1.0, 1.0),
+            h(1.0, 0.0, 2.0, -1.0),
+            h(0.0, 1.0, 3.0, 1.0),
+        ];
+        let square = (0..16)
+            .map(|k| {
+                let (i, j) = ((k / 4) as f64, (k % 4) as f64);
+                h(i, j, i * j - 1.5, if k < 8 { 1.0 } else { -1.0 })
+            })
+            .collect();
+        for (shape, points) in [(Shape::Tri(1), tri), (Shape::Rect(3, 3), square)] {
+            let (mut ev, _) = kernels(shape, points);
+            let params: Vec<f64> = (0..16).flat_map(|k| [k as f64 / 16.0, 0.0]).collect();
+            let mut scalar = [0.0; 3];
+            assert!(
+                matches!(
+                    ev.eval_into(&params[16..18], &mut scalar),
+                    Err(Error::PointAtInfinity)
+                ),
+                "{shape:?}: {scalar:?}"
+            );
+            for isa in vector_builds() {
+                let mut out = [f64::NAN; 48];
+                let done = eval_batch(isa, &ev.net, &params, &mut out, &mut Vec::new());
+                assert!(
+                    matches!(done, Some(Err(Error::PointAtInfinity))),
+                    "{shape:?} {isa:?}"
+                );
+                for (p, x) in params[..16].chunks(2).zip(out.chunks_exact(3)) {
+                    ev.eval_into(p, &mut scalar).unwrap();
+                    let scale = scalar.iter().fold(1.0f64, |m, c| m.max(c.abs()));
+                    for (x, s) in x.iter().zip(&scalar) {
+                        assert!(
+                            (x - s).abs() <= 8.0 * f64::EPSILON * scale,
+                            "{shape:?} {isa:?} at {p:?}"
+                        );
+                    }
+                }
+            }
+        }
     }
 
     /// A fused multiply–add changes the value where the scalar kernel's
