@@ -17,6 +17,7 @@
 //! Reference: D. E. Knuth, *The Art of Computer Programming*, vol. 2,
 //! 3rd ed., §4.5.2, Algorithm L.
 
+use super::limbs;
 use num_bigint::{BigInt, BigUint, Sign};
 use num_rational::BigRational;
 use num_traits::{One, ToPrimitive, Zero};
@@ -286,6 +287,93 @@ pub fn fraction(numer: BigInt, denom: BigInt) -> BigRational {
     }
 }
 
+/// The fractions `numers[i] / denom` in lowest terms with positive
+/// denominators, written to `out`, with one gcd of `denom`'s size for all
+/// of them instead of one each:
+///
+/// ```text
+/// g = gcd(w, ∏_{xᵢ ≠ 0} |xᵢ| mod w)        (w = |denom|)
+/// gcd(xᵢ, w) = gcd(xᵢ mod g, g)
+/// ```
+///
+/// since `gcd(xᵢ, w)` divides `w` and the product, hence `g`. The rest is
+/// a product and a remainder of the numbers' size, and a gcd against `g`
+/// per coordinate, which is mostly 1 (then the fractions need no division
+/// at all) or a machine word. The coordinates of a rational point over its
+/// weight are the case this serves: the point's cost falls from `d` big
+/// gcds to one.
+///
+/// **Panics if `denom` is zero or `out` is shorter than `numers`.**
+///
+/// ```
+/// use exact_bezier::algebra::gcd::fractions_over;
+/// use exact_bezier::{BigInt, BigRational};
+/// let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+/// let mut out = vec![q(0, 1); 3];
+/// fractions_over(vec![6.into(), (-35).into(), 0.into()], (-210).into(), &mut out);
+/// assert_eq!(out, [q(-1, 35), q(1, 6), q(0, 1)]);
+/// ```
+pub fn fractions_over(numers: Vec<BigInt>, denom: BigInt, out: &mut [BigRational]) {
+    assert!(!denom.is_zero(), "a fraction needs a nonzero denominator");
+    let (numers, denom) = if denom.sign() == Sign::Minus {
+        (numers.into_iter().map(|x| -x).collect(), -denom)
+    } else {
+        (numers, denom)
+    };
+    let shared = shared_gcd(&numers, denom.magnitude());
+    for (o, x) in out[..numers.len()].iter_mut().zip(numers) {
+        let g = match shared.as_slice() {
+            _ if x.is_zero() => {
+                *o = BigRational::zero();
+                continue;
+            }
+            [1] => BigUint::one(),
+            &[word] => {
+                let digits: Vec<u64> = x.magnitude().iter_u64_digits().collect();
+                BigUint::from(gcd_u64(limbs::rem_word(&digits, word), word))
+            }
+            _ => {
+                let shared = from_limbs(&shared);
+                gcd(&(x.magnitude() % &shared), &shared)
+            }
+        };
+        *o = if g.is_one() {
+            BigRational::new_raw(x, denom.clone())
+        } else {
+            let g = BigInt::from(g);
+            BigRational::new_raw(x / &g, &denom / &g)
+        };
+    }
+}
+
+/// `gcd(w, ∏_{xᵢ ≠ 0} |xᵢ| mod w)`, which every `gcd(xᵢ, w)` divides, as
+/// limbs: the product and the remainder on the limbs ([`limbs`]), then
+/// Lehmer's gcd.
+fn shared_gcd(numers: &[BigInt], w: &BigUint) -> Vec<u64> {
+    let w: Vec<u64> = w.iter_u64_digits().collect();
+    if w == [1] {
+        return w;
+    }
+    let (mut product, mut next, mut factor) = (vec![1u64], Vec::new(), Vec::new());
+    for x in numers.iter().filter(|x| !x.is_zero()) {
+        factor.clear();
+        factor.extend(x.magnitude().iter_u64_digits());
+        limbs::mul_into(&product, &factor, &mut next);
+        std::mem::swap(&mut product, &mut next);
+    }
+    limbs::rem_in_place(&mut product, &w);
+    let mut g = if w.len() <= 2 {
+        let g = gcd_u128(to_u128(&w), to_u128(&product));
+        vec![g as u64, (g >> 64) as u64]
+    } else {
+        gcd_limbs(w, product)
+    };
+    while g.last() == Some(&0) {
+        g.pop();
+    }
+    g
+}
+
 /// `a · b` in lowest terms (both in lowest terms, as every `BigRational`
 /// is), by Knuth's cross reduction: with `g₁ = gcd(n₁, d₂)` and
 /// `g₂ = gcd(n₂, d₁)`,
@@ -441,6 +529,29 @@ mod tests {
             prop_assert_eq!(parts(product(&b, &a)), parts(&a * &b));
             prop_assert_eq!(parts(sum(&a, &b)), parts(&a + &b));
             prop_assert_eq!(parts(sum(&a, &-&a)), parts(BigRational::zero()));
+        }
+
+        /// The shared gcd gives every coordinate num-rational's reduced
+        /// fraction: numerators and a denominator of one to five words with
+        /// a planted common factor (so that the shared gcd is 1, a word or
+        /// several), zero and negative numerators, negative denominators.
+        #[test]
+        fn fractions_over_one_gcd_are_the_reduced_fractions(
+            numers in prop::collection::vec((prop::collection::vec(any::<u64>(), 0..5), any::<bool>()), 1..5),
+            denom in prop::collection::vec(any::<u64>(), 1..5),
+            negative in any::<bool>(),
+            f in prop::collection::vec(any::<u64>(), 0..3),
+        ) {
+            let f = big(&f) + 1u32;
+            let signed = |m: BigUint, neg: bool| if neg { -BigInt::from(m) } else { BigInt::from(m) };
+            let numers: Vec<BigInt> = numers.iter().map(|(m, neg)| signed(big(m) * &f, *neg)).collect();
+            let denom = signed(big(&denom) * &f, negative);
+            prop_assume!(!denom.is_zero());
+            let mut out = vec![BigRational::zero(); numers.len()];
+            fractions_over(numers.clone(), denom.clone(), &mut out);
+            for (x, o) in numers.into_iter().zip(out) {
+                prop_assert_eq!(o.into_raw(), BigRational::new(x, denom.clone()).into_raw());
+            }
         }
 
         /// On 64-bit words with a common factor (the binary loop alone).

@@ -12,6 +12,7 @@
 pub mod gcd;
 pub(crate) mod int;
 pub(crate) mod interval;
+pub(crate) mod limbs;
 pub mod interval_bernstein;
 pub(crate) mod modp;
 pub(crate) mod number;

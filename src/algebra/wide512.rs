@@ -85,23 +85,6 @@ impl Wide512 {
             64 * used as u64 - u64::from(m[top].leading_zeros())
         })
     }
-
-    /// `num / den` in lowest terms with a positive denominator (`den ≠
-    /// 0`): `g = gcd(|num|, |den|)` by Lehmer's algorithm on the limbs
-    /// ([`gcd_limbs`](crate::algebra::gcd::gcd_limbs)), then the two exact
-    /// quotients as big integers (the result's own).
-    pub fn fraction(num: &Wide512, den: &Wide512) -> num_rational::BigRational {
-        let (a, b) = (num.magnitude(), den.magnitude());
-        let trimmed = |m: &[u64; LIMBS]| m[..significant(m)].to_vec();
-        let g = limbs_to_biguint(&crate::algebra::gcd::gcd_limbs(trimmed(&a), trimmed(&b)));
-        let sign = if num.is_negative() == den.is_negative() {
-            Sign::Plus
-        } else {
-            Sign::Minus
-        };
-        let n = BigInt::from_biguint(sign, limbs_to_biguint(&a) / &g);
-        num_rational::BigRational::new_raw(n, BigInt::from(limbs_to_biguint(&b) / &g))
-    }
 }
 
 /// The number of limbs up to the most significant non-zero one.
@@ -260,21 +243,6 @@ mod tests {
             prop_assert_eq!((wc - wa * wb).to_bigint(), &bc - &ba * &bb);
             prop_assert_eq!((-wc).to_bigint(), -&bc);
             prop_assert_eq!(wc.bits(), bc.bits());
-        }
-
-        /// `fraction` is the reduced fraction of big integers.
-        #[test]
-        fn fraction_is_reduced(
-            a in prop::collection::vec(any::<u64>(), 1..4), an in any::<bool>(),
-            b in prop::collection::vec(any::<u64>(), 1..4), bn in any::<bool>(),
-            f in prop::collection::vec(any::<u64>(), 0..4),
-        ) {
-            let g: BigInt = big(&f, false) + 1;
-            let (n, d) = (big(&a, an) * &g, big(&b, bn) * &g + &g);
-            prop_assume!(!d.is_zero());
-            let w = |n: &BigInt| Wide512::from_bigint(n).expect("fits");
-            let want = num_rational::BigRational::new(n.clone(), d.clone());
-            prop_assert_eq!(Wide512::fraction(&w(&n), &w(&d)), want);
         }
     }
 

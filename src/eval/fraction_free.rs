@@ -6,8 +6,14 @@
 //! curve:  t = p/q            → (a : b) = (q − p : p)
 //! rect:   u = p/q, v = r/s   → (q − p : p), (s − r : r)
 //! tri:    (u, v) = (a/q, b/q) → (a, b, q − a − b)
-//! X = H_d / H_w              (the only gcds: one per output coordinate)
+//! X = H_d / H_w              (reduced with one big gcd per point, below)
 //! ```
+//!
+//! The point's coordinates share their denominator `H_w`, so they are
+//! reduced together ([`fractions_over`]): `g = gcd(H_w, ∏ H_d mod H_w)` is
+//! the one gcd of the weight's size, and each `gcd(H_d, H_w)` divides `g`,
+//! which is mostly 1 or a machine word. A point of `d` coordinates costs
+//! one big gcd, not `d`.
 //!
 //! The kernel is the generic one of [`Net::eval_hom_into`], run point by
 //! point on the narrowest integer type that provably holds all its values:
@@ -31,7 +37,7 @@
 
 use super::blocks::BlockedCurve;
 use super::{Evaluator, Net, Shape, Workspace};
-use crate::algebra::gcd::{fraction, gcd_u128};
+use crate::algebra::gcd::{fractions_over, gcd_u128};
 use crate::algebra::int::{common_denominator, Int};
 use crate::algebra::scalar::{Field, MulAcc};
 use crate::algebra::wide::Wide;
@@ -50,8 +56,15 @@ trait KernelInt: MulAcc {
     /// The integer `n`, of at most [`KernelInt::BITS`] bits.
     fn from_int(n: &Int) -> Self;
 
-    /// `num / den` in lowest terms (`den ≠ 0`).
-    fn fraction(num: &Self, den: &Self) -> BigRational;
+    /// The point `xs[i] / den` in lowest terms, written to `out` (`den ≠
+    /// 0`): by default one gcd of the weight's size for all coordinates
+    /// ([`fractions_over`]).
+    fn fractions(xs: &[Self], den: &Self, out: &mut [BigRational]) {
+        fractions_over(xs.iter().map(Self::to_bigint).collect(), den.to_bigint(), out);
+    }
+
+    /// The integer as a big integer.
+    fn to_bigint(&self) -> BigInt;
 
     /// How many points a Horner sum takes at a time at the homogeneous
     /// parameter `(a : b)` (see `horner` in [`super`]): 1, unless products
@@ -72,12 +85,19 @@ impl KernelInt for i128 {
         }
     }
 
-    fn fraction(num: &i128, den: &i128) -> BigRational {
-        // |num|, |den| < 2¹²⁷: the quotients and their negations fit.
-        let g = gcd_u128(num.unsigned_abs(), den.unsigned_abs()) as i128;
-        let (n, d) = (num / g, den / g);
-        let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
-        BigRational::new_raw(BigInt::from(n), BigInt::from(d))
+    /// One word gcd per coordinate: cheaper than a product of words.
+    fn fractions(xs: &[i128], den: &i128, out: &mut [BigRational]) {
+        for (o, num) in out.iter_mut().zip(xs) {
+            // |num|, |den| < 2¹²⁷: the quotients and their negations fit.
+            let g = gcd_u128(num.unsigned_abs(), den.unsigned_abs()) as i128;
+            let (n, d) = (num / g, den / g);
+            let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
+            *o = BigRational::new_raw(BigInt::from(n), BigInt::from(d));
+        }
+    }
+
+    fn to_bigint(&self) -> BigInt {
+        BigInt::from(*self)
     }
 }
 
@@ -97,13 +117,8 @@ impl KernelInt for Wide {
         stack_int(n, Wide::from_bigint)
     }
 
-    /// Reduced in 256 bits ([`Wide::gcd`]: one remainder, then Lehmer's
-    /// gcd on the limbs; then two exact divisions), so the only big
-    /// integers are the two of the result.
-    fn fraction(num: &Wide, den: &Wide) -> BigRational {
-        let g = num.gcd(den);
-        let g = if den.is_negative() { -g } else { g };
-        BigRational::new_raw(num.div_exact(&g).to_bigint(), den.div_exact(&g).to_bigint())
+    fn to_bigint(&self) -> BigInt {
+        Wide::to_bigint(self)
     }
 }
 
@@ -114,10 +129,8 @@ impl KernelInt for Wide512 {
         stack_int(n, Wide512::from_bigint)
     }
 
-    /// [`Wide512::fraction`]: Lehmer's gcd on the limbs, then two exact
-    /// quotients.
-    fn fraction(num: &Wide512, den: &Wide512) -> BigRational {
-        Wide512::fraction(num, den)
+    fn to_bigint(&self) -> BigInt {
+        Wide512::to_bigint(self)
     }
 }
 
@@ -128,8 +141,8 @@ impl KernelInt for Int {
         n.clone()
     }
 
-    fn fraction(num: &Int, den: &Int) -> BigRational {
-        fraction(num.to_bigint(), den.to_bigint())
+    fn to_bigint(&self) -> BigInt {
+        Int::to_bigint(self)
     }
 
     /// Blocks of `k` points with `a^k`, `b^k` below 2⁶³ (one machine word
@@ -170,9 +183,7 @@ impl<T: KernelInt> Lane<T> {
         if w[0].is_zero() {
             return Err(Error::PointAtInfinity);
         }
-        for (o, xi) in out.iter_mut().zip(x) {
-            *o = T::fraction(xi, &w[0]);
-        }
+        T::fractions(x, &w[0], out);
         Ok(())
     }
 }
@@ -254,15 +265,13 @@ impl<'a> Kernels<'a> {
     }
 }
 
-/// Divide a big homogeneous point once per coordinate.
+/// The Cartesian point of a big homogeneous one ([`fractions_over`]).
 fn project(h: &[BigInt], out: &mut [BigRational]) -> Result<(), Error> {
     let (x, w) = h.split_at(h.len() - 1);
     if w[0].is_zero() {
         return Err(Error::PointAtInfinity);
     }
-    for (o, xi) in out.iter_mut().zip(x) {
-        *o = fraction(xi.clone(), w[0].clone());
-    }
+    fractions_over(x.to_vec(), w[0].clone(), out);
     Ok(())
 }
 
