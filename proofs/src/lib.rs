@@ -2,7 +2,7 @@
 //! computation.
 //!
 //! One file per claim family. Each family is a function returning its
-//! [`Claim`](crate::Claim)s; every verdict is **computed** — by the symbolic scalar
+//! [`Claim`]s; every verdict is **computed** — by the symbolic scalar
 //! ([`Poly`]) for identities that must hold for all symbol
 //! values, by exact rationals for printed examples. A claim the computation
 //! refutes is kept with its counterexample and the corrected statement: that
@@ -10,7 +10,7 @@
 //! expect, so `exact-bezier prove` (and `cargo test`) fail if a computation
 //! ever changes its answer.
 //!
-//! Verdicts (see [`Verdict`](crate::Verdict)): `proved` (an identity over all symbol
+//! Verdicts (see [`Verdict`]): `proved` (an identity over all symbol
 //! values, or exact sampling whose sufficiency follows from a degree bound
 //! the code computes and checks), `checked` (exact sampling without such a
 //! bound, or an f64 comparison within a stated tolerance), `refuted` (the

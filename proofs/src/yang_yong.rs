@@ -393,7 +393,7 @@ fn quadratic_map_checks(m: usize, n: usize) -> [Option<String>; 3] {
     }
 }
 
-/// The check of [`quadratic_keeps_points`] at one bidegree: `None` when the
+/// The check of `quadratic_keeps_points` at one bidegree: `None` when the
 /// identity holds, else what differs. Public for the FLINT peer benchmark
 /// (`benches/peers/arith`), which runs the same steps in FLINT.
 pub fn quadratic_identity(m: usize, n: usize) -> Option<String> {

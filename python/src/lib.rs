@@ -8,12 +8,12 @@
 //!   ([`exact_bezier::io::patch_from_value`]), so a Python constructor
 //!   validates exactly as a JSON file does and raises the same messages;
 //! - exact evaluation is the library's `eval` on `BigRational`, float batch
-//!   evaluation its [`Evaluator`] on `f64`, with the GIL released;
+//!   evaluation its [`Evaluator`](exact_bezier::eval::Evaluator) on `f64`, with the GIL released;
 //! - keys are [`canonical_text`] and its SHA-256 digest, as
 //!   `exact-bezier key` prints them; coincidence is
-//!   [`exact_bezier::coincide::coincide`] (called in [`decide`] only).
+//!   [`exact_bezier::coincide::coincide`] (called in `decide` only).
 //!
-//! Every call into the library runs under [`guarded`]: a library
+//! Every call into the library runs under `guarded`: a library
 //! [`Error`] becomes `ExactBezierError` (or `LimitError`) with the message
 //! the command line prints, and a Rust panic becomes `ExactBezierError`
 //! instead of crossing into Python.

@@ -31,7 +31,7 @@ const CACHED: usize = 128;
 
 /// `C(n, i)` for `i = 0..=n`, enclosed (Pascal's triangle in interval
 /// arithmetic: every sum is widened by an ulp on each side, exact or not,
-/// so the enclosures are a few ulps wide). Rows below [`CACHED`] are computed
+/// so the enclosures are a few ulps wide). Rows below `CACHED` are computed
 /// once per process, the same operations in the same order, so the same
 /// bits as computing them again.
 pub fn binomials(n: usize) -> Cow<'static, [Interval]> {
@@ -87,7 +87,7 @@ const FINITE_FROM: usize = 100;
 /// `out_l = Σ_{i+j=l} a_i b_j`, accumulated in the order of `i`, each
 /// product and sum rounded outward ([`Interval::mul`], [`Interval::add`]).
 /// Where every end point is finite and the operands are not short
-/// ([`FINITE_FROM`]), by [`convolve_finite`], which gives the same bits
+/// (`FINITE_FROM`), by `convolve_finite`, which gives the same bits
 /// faster.
 pub fn mul(a: &[Interval], b: &[Interval]) -> Scaled {
     let finite = |x: &Interval| x.lo.is_finite() && x.hi.is_finite();

@@ -691,7 +691,7 @@ impl std::iter::Sum for Poly {
 }
 
 impl crate::algebra::scalar::MulAcc for Poly {
-    /// `acc·a + c·x` by [`Poly::sum_of_products`] when it applies (the de
+    /// `acc·a + c·x` by `Poly::sum_of_products` when it applies (the de
     /// Casteljau step by binomials), else two products and a sum.
     fn mul_acc(acc: &mut Poly, a: &Poly, c: &Poly, x: &Poly) {
         *acc = match Poly::sum_of_products(&[(acc, a), (c, x)]) {

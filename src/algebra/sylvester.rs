@@ -144,7 +144,7 @@ fn subresultant_rows<T: Clone + Zero>(f: &[T], g: &[T], j: usize) -> Vec<Vec<T>>
 /// ```
 ///
 /// Rational inputs (`T` = `BigRational`) take the integer path of
-/// [`rational_resultant`]; other fields Gaussian elimination.
+/// `rational_resultant`; other fields Gaussian elimination.
 pub fn resultant<T: Field>(f: &[T], g: &[T]) -> T {
     match (rationals(f), rationals(g)) {
         (Some(f), Some(g)) => T::from_rational(&rational_resultant(&f, &g)),
@@ -301,7 +301,7 @@ fn interpolated(values: &[BigInt]) -> UPoly<BigRational> {
 /// `G = Σ b_k(s) t^k` with `t`-degrees at least 1 (formal degrees: the
 /// actual `t`-degrees of `F` and `G`), up to a non-zero constant factor:
 /// integer determinants at `s = 0 … D` with `D` the row and column bound
-/// of [`degree_bound`] on the Sylvester matrix (at most `deg_s F · deg_t G
+/// of `degree_bound` on the Sylvester matrix (at most `deg_s F · deg_t G
 /// + deg_s G · deg_t F`; `mn` rather than `2mn` for two polynomial curves,
 /// whose `E_k` have constant coefficients beside `t⁰`).
 pub fn resultant_in_t(f: &BPoly<BigRational>, g: &BPoly<BigRational>) -> UPoly<BigRational> {
@@ -320,7 +320,7 @@ pub fn resultant_in_t(f: &BPoly<BigRational>, g: &BPoly<BigRational>) -> UPoly<B
 /// (each up to one common non-zero constant factor): at every `s` where
 /// `F(s, ·)` and `G(s, ·)` have exactly one common root `t`, it is
 /// `−e_0(s) / e_1(s)` with `e_1(s) ≠ 0`. Sampled at as many integers as the
-/// larger [`degree_bound`] of the two matrices asks, both determinants
+/// larger `degree_bound` of the two matrices asks, both determinants
 /// from one specialization.
 pub fn linear_eliminant_in_t(
     f: &BPoly<BigRational>,

@@ -20,7 +20,7 @@
 //! Both steps depend only on the decimal and the unit, and a model repeats
 //! the same few semi-angles on many cones (NIST CTC 02: 82 cones, two
 //! angles), so their rational results are remembered per thread
-//! ([`SLOPES`]); the Taylor enclosure was a tenth of reading that model.
+//! (`SLOPES`); the Taylor enclosure was a tenth of reading that model.
 
 use crate::algebra::gcd;
 use crate::algebra::parse_rational;

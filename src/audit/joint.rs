@@ -24,7 +24,7 @@
 //!   where the edge runs along the face;
 //! - the gap between the faces, between the two foot points
 //!   `C − s₁n̂₁` and `C − s₂n̂₂`, is enclosed from the two gaps by the
-//!   triangle inequality ([`face_gap`]);
+//!   triangle inequality (`face_gap`);
 //! - the angle between the oriented foot normals `±n̂₁`, `±n̂₂` is
 //!   [`polar_angle`] of `(|N₁ × N₂|, N₁·N₂)`: where both faces have a
 //!   normal path (plane, cylinder, sphere, cone, B-spline;
@@ -32,7 +32,7 @@
 //!   and their value at `t_m`, each less its slack;
 //!   else over `T` by mean-value forms and at `t_m`;
 //!
-//! and [`maximize`] refines to the target width. Each edge has its own work
+//! and [`maximize`](super::certify::maximize::maximize) refines to the target width. Each edge has its own work
 //! cap ([`EDGE_WORK`]); a measure not proved within it is *unproved* and
 //! its verdict *undecided*.
 
@@ -59,7 +59,7 @@ use std::rc::Rc;
 type Curve = RationalCurve<RealAlgebraic>;
 
 /// The work cap of one edge (in [`limits`] units): about 50 000 pieces of
-/// [`maximize`]. Running out leaves the enclosures proved so far (wider
+/// [`maximize`](super::certify::maximize::maximize). Running out leaves the enclosures proved so far (wider
 /// than the target). The work an edge used is then charged to the
 /// command's budget, and the cap never exceeds what is left of that budget.
 pub const EDGE_WORK: u64 = 100_000_000;

@@ -2,7 +2,7 @@
 //! of a B-spline or an ellipse, a `SURFACE_OF_LINEAR_EXTRUSION` of a
 //! B-spline or of a circle not along its axis — as a grid of spanned
 //! Bézier pieces, measured like a B-spline face
-//! ([`SplineSurface::from_pieces`]).
+//! ([`SplineSurface::from_pieces`](super::certify::spline::SplineSurface::from_pieces)).
 //!
 //! **The grid.** The reader's pieces ([`crate::analytic::revolution`],
 //! [`crate::analytic::extrusion`]) are a tensor grid in row-major order:

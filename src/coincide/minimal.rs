@@ -243,7 +243,7 @@ pub trait Reducible: Ordered + std::fmt::Display {
     /// `g(u, v)` as a formula.
     fn factor_text(g: &BPoly<Self>) -> String;
     /// A lower bound of the actual bidegree of `net`, found cheaply, or
-    /// `None`: it is where [`minimal_net`] first tries to undo an elevation.
+    /// `None`: it is where `minimal_net` first tries to undo an elevation.
     fn degree_lower_bound(net: &Net<Self>) -> Option<(usize, usize)>;
 }
 

@@ -128,7 +128,7 @@ impl<T: Scalar> RationalCurve<T> {
     /// Raise the degree by `r`, keeping every point: source 001's elevation
     /// ("升阶", `P*_i = (i/(n+1)) P_{i−1} + (1 − i/(n+1)) P_i`) applied `r`
     /// times to the homogeneous points, or all `r` at once where the scalar
-    /// sums many parts cheaply ([`elevate_by`]).
+    /// sums many parts cheaply (`elevate_by`).
     pub fn elevate(&self, r: usize) -> Self {
         RationalCurve {
             ctrl: elevate_by(&self.ctrl, r),

@@ -17,7 +17,7 @@
 //! PCURVE('',#surface,#definitional_representation)
 //! ```
 //!
-//! Geometry is produced by [`surface_geometry`] and [`curve_geometry`], one
+//! Geometry is produced by `surface_geometry` and `curve_geometry`, one
 //! `match` on the entity type each: B-spline entities are kept as read,
 //! their exact Bézier pieces ([`super::read_step`]'s conversion) computed
 //! at their first use ([`BSpline`]); every other type is kept as
@@ -335,7 +335,7 @@ pub struct Summary {
     /// (not rational, e.g. `OFFSET_SURFACE`), by type.
     pub not_converted: BTreeMap<String, usize>,
     /// Pcurves whose 2D curve is not converted (analytic pcurves: see
-    /// [`analytic`]), by type.
+    /// `analytic`), by type.
     pub pcurves_not_converted: BTreeMap<String, usize>,
     /// Faces and edges whose pieces are not exactly their entity (see
     /// [`AnalyticPieces::approximate`]), by type.

@@ -293,7 +293,7 @@ impl RealAlgebraic {
     ///
     /// Cost: the square-free part (a check modulo a prime in the generic
     /// case), then one Descartes count of `O(d²)` integer operations per
-    /// bisection step ([`descartes`]; the number of steps grows with
+    /// bisection step (`descartes`; the number of steps grows with
     /// `log(1/root separation)`).
     pub fn real_roots_in(p: &UPoly<BigRational>, a: &BigRational, b: &BigRational) -> Vec<Self> {
         if p.degree().unwrap_or(0) == 0 || a >= b {
@@ -401,7 +401,7 @@ impl RealAlgebraic {
     /// exact arithmetic represents it, and whether they are all sums of
     /// radicals (whose arithmetic needs no field: their degree only bounds
     /// root indices). Radical sums count the degree of the radicals they
-    /// use ([`RadicalSum::span_degree`]); every other number (an isolated
+    /// use (`RadicalSum::span_degree`); every other number (an isolated
     /// root, a field element) the degree of its field, distinct fields
     /// multiplying, as their compositum needs (`deg K₁K₂ ≤ deg K₁·deg K₂`),
     /// except that a field (or a radical's field `Q(b^{1/n})`) another one

@@ -88,7 +88,7 @@ impl Jets for IPatch {
 }
 
 /// `F` and `J` of the foot-point system over a patch jet and point box `c`
-/// ([`foot_system`] in interval arithmetic: enclosures).
+/// (`foot_system` in interval arithmetic: enclosures).
 pub fn system(s: &PatchJet, c: &[Interval]) -> ([Interval; 2], IMat) {
     foot_system([&s.x, &s.xu, &s.xv, &s.xuu, &s.xuv, &s.xvv], c)
 }

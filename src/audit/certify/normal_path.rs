@@ -91,9 +91,9 @@ fn at_half(f: &[Interval]) -> Interval {
 /// The angle between two normal paths over `t ∈ [0, 1]`: a proved upper
 /// bound of its maximum, and its enclosure at `t = 1/2`. Where every
 /// Bernstein coefficient of `n₁·n₂` is proved positive the bound is that
-/// of the tangent ([`tangent_bound`], tight like the square of the
+/// of the tangent (`tangent_bound`, tight like the square of the
 /// piece's length); elsewhere (a crease near or beyond a right angle)
-/// that of the cosine ([`cosine_bound`], tight like its length). `None`
+/// that of the cosine (`cosine_bound`, tight like its length). `None`
 /// when a normal's length is not proved positive.
 pub fn angle_between(n1: &ScaledVec, n2: &ScaledVec) -> Option<(f64, Interval)> {
     let v = cross(n1, n2);

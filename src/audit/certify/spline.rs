@@ -21,7 +21,7 @@
 //! of the border piece's span beyond it, which lets Newton and Krawczyk's
 //! boxes straddle the border), so that such feet are proved. A foot
 //! counts only when Krawczyk's image, which holds it, lies within
-//! [`BORDER_SLACK`] (10⁻⁹ of the domain's width) of the domain: farther
+//! `BORDER_SLACK` (10⁻⁹ of the domain's width) of the domain: farther
 //! out, the continuation is not the face — its normal there has turned
 //! away from the border's, while the face's nearest point is on its
 //! border — and the foot is refused (the measure is then taken from the
@@ -693,7 +693,7 @@ impl<'a> SplineField<'a> {
     /// radians, it may turn from there to the normal at the foot points.
     ///
     /// The feet lie in each of the part's proved boxes around `p`
-    /// ([`SplineField::part`]): within `e_u`, `e_v` of `p` in the
+    /// (`SplineField::part`): within `e_u`, `e_v` of `p` in the
     /// parameters. Along the segment from `p(t)` to the foot, inside a
     /// box `Q`, the unit normal turns at most
     /// `sup_Q |N_u| e_u + sup_Q |N_v| e_v` radians (the length of its path
@@ -713,7 +713,7 @@ impl<'a> SplineField<'a> {
     /// normal `S_u × S_v`: at the foot points of every `C(t)`, and at the
     /// foot of `C(t_m)`, `t_m` the part's `f64` midpoint. The feet are
     /// those of [`SplineField::normal_over`], in the boxes of
-    /// [`SplineField::part`], within `e_u`, `e_v` of the fitted `p`: over
+    /// `SplineField::part`, within `e_u`, `e_v` of the fitted `p`: over
     /// the part, the curvature is enclosed on the boxes' jets in the
     /// direction `n × C'(t)`; at `t_m`, on the jet of the box
     /// `p(s_m) ± e` (`s_m` the midpoint's parameter on the part); where the
