@@ -131,13 +131,25 @@ fn to_u128(n: &[u64]) -> u128 {
         .fold(0, |acc, &d| (acc << 64) | u128::from(d))
 }
 
-/// The big integer of little-endian 64-bit limbs.
+/// The big integer of little-endian 64-bit limbs (up to 16 limbs, its
+/// 32-bit digits on the stack, so that the result's is the one
+/// allocation).
 fn from_limbs(n: &[u64]) -> BigUint {
-    BigUint::new(
-        n.iter()
-            .flat_map(|&d| [d as u32, (d >> 32) as u32])
-            .collect(),
-    )
+    const STACK: usize = 16;
+    let mut stack = [0u32; 2 * STACK];
+    let mut heap = Vec::new();
+    let digits = if n.len() <= STACK {
+        &mut stack[..2 * n.len()]
+    } else {
+        heap.resize(2 * n.len(), 0);
+        &mut heap[..]
+    };
+    for (pair, &d) in digits.chunks_exact_mut(2).zip(n) {
+        pair.copy_from_slice(&[d as u32, (d >> 32) as u32]);
+    }
+    let mut big = BigUint::zero();
+    big.assign_from_slice(digits);
+    big
 }
 
 /// Bits of the leading parts Lehmer's inner loop runs on: 62, so that the
@@ -314,63 +326,119 @@ pub fn fraction(numer: BigInt, denom: BigInt) -> BigRational {
 /// assert_eq!(out, [q(-1, 35), q(1, 6), q(0, 1)]);
 /// ```
 pub fn fractions_over(numers: Vec<BigInt>, denom: BigInt, out: &mut [BigRational]) {
-    assert!(!denom.is_zero(), "a fraction needs a nonzero denominator");
-    let (numers, denom) = if denom.sign() == Sign::Minus {
-        (numers.into_iter().map(|x| -x).collect(), -denom)
-    } else {
-        (numers, denom)
+    let signed = |n: &BigInt| SignedLimbs {
+        negative: n.sign() == Sign::Minus,
+        limbs: n.magnitude().iter_u64_digits().collect(),
     };
-    let shared = shared_gcd(&numers, denom.magnitude());
-    for (o, x) in out[..numers.len()].iter_mut().zip(numers) {
-        let g = match shared.as_slice() {
-            _ if x.is_zero() => {
+    let mut numers: Vec<SignedLimbs> = numers.iter().map(signed).collect();
+    fractions_over_limbs(
+        &mut numers,
+        &mut signed(&denom),
+        out,
+        &mut Scratch::default(),
+    );
+}
+
+/// An integer as its sign and the little-endian 64-bit limbs of its
+/// magnitude (leading zero limbs allowed), the form in which
+/// [`fractions_over_limbs`] takes the fixed-width integers of exact
+/// evaluation without making big integers of them first.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct SignedLimbs {
+    pub negative: bool,
+    pub limbs: Vec<u64>,
+}
+
+/// The product buffers of [`fractions_over_limbs`], kept from call to call.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Scratch {
+    product: Vec<u64>,
+    next: Vec<u64>,
+}
+
+/// [`fractions_over`] on limbs: the numerators' limbs are overwritten
+/// (divided by their gcds), the denominator's trimmed, and only the
+/// fractions written to `out` are big integers.
+///
+/// **Panics if `denom` is zero or `out` is shorter than `numers`.**
+pub(crate) fn fractions_over_limbs(
+    numers: &mut [SignedLimbs],
+    denom: &mut SignedLimbs,
+    out: &mut [BigRational],
+    scratch: &mut Scratch,
+) {
+    limbs::trim(&mut denom.limbs);
+    let w = &denom.limbs;
+    assert!(!w.is_empty(), "a fraction needs a nonzero denominator");
+    let shared = shared_gcd(numers, w, scratch);
+    let den = from_limbs(w);
+    let word_divisor = match shared.as_slice() {
+        &[word] if word != 1 => Some(limbs::WordDivisor::new(word)),
+        _ => None,
+    };
+    // The denominator divided by the last word gcd, and that gcd's
+    // divisor, kept for the next coordinate with the same one.
+    let mut reduced: Option<(u64, limbs::WordDivisor, BigUint)> = None;
+    for (o, x) in out[..numers.len()].iter_mut().zip(numers.iter_mut()) {
+        limbs::trim(&mut x.limbs);
+        let negative = x.negative != denom.negative;
+        let (n, d) = match (shared.as_slice(), word_divisor) {
+            _ if x.limbs.is_empty() => {
                 *o = BigRational::zero();
                 continue;
             }
-            [1] => BigUint::one(),
-            &[word] => {
-                let digits: Vec<u64> = x.magnitude().iter_u64_digits().collect();
-                BigUint::from(gcd_u64(limbs::rem_word(&digits, word), word))
+            ([1], _) => (from_limbs(&x.limbs), den.clone()),
+            (&[word], Some(divisor)) => {
+                let g = gcd_u64(divisor.rem(&x.limbs), word);
+                if g == 1 {
+                    (from_limbs(&x.limbs), den.clone())
+                } else {
+                    let (divisor, d) = match &reduced {
+                        Some((last, divisor, d)) if *last == g => (*divisor, d.clone()),
+                        _ => {
+                            let (divisor, mut q) = (limbs::WordDivisor::new(g), w.to_vec());
+                            divisor.div_in_place(&mut q);
+                            let (_, divisor, d) = reduced.insert((g, divisor, from_limbs(&q)));
+                            (*divisor, d.clone())
+                        }
+                    };
+                    divisor.div_in_place(&mut x.limbs);
+                    (from_limbs(&x.limbs), d)
+                }
             }
             _ => {
-                let shared = from_limbs(&shared);
-                gcd(&(x.magnitude() % &shared), &shared)
+                let (x, shared) = (from_limbs(&x.limbs), from_limbs(&shared));
+                let g = gcd(&(&x % &shared), &shared);
+                (x / &g, &den / &g)
             }
         };
-        *o = if g.is_one() {
-            BigRational::new_raw(x, denom.clone())
-        } else {
-            let g = BigInt::from(g);
-            BigRational::new_raw(x / &g, &denom / &g)
-        };
+        let sign = if negative { Sign::Minus } else { Sign::Plus };
+        *o = BigRational::new_raw(BigInt::from_biguint(sign, n), BigInt::from(d));
     }
 }
 
 /// `gcd(w, ∏_{xᵢ ≠ 0} |xᵢ| mod w)`, which every `gcd(xᵢ, w)` divides, as
-/// limbs: the product and the remainder on the limbs ([`limbs`]), then
-/// Lehmer's gcd.
-fn shared_gcd(numers: &[BigInt], w: &BigUint) -> Vec<u64> {
-    let w: Vec<u64> = w.iter_u64_digits().collect();
+/// trimmed limbs: the product and the remainder on the limbs
+/// ([`limbs`]), then Lehmer's gcd.
+fn shared_gcd(numers: &[SignedLimbs], w: &[u64], scratch: &mut Scratch) -> Vec<u64> {
     if w == [1] {
-        return w;
+        return w.to_vec();
     }
-    let (mut product, mut next, mut factor) = (vec![1u64], Vec::new(), Vec::new());
-    for x in numers.iter().filter(|x| !x.is_zero()) {
-        factor.clear();
-        factor.extend(x.magnitude().iter_u64_digits());
-        limbs::mul_into(&product, &factor, &mut next);
-        std::mem::swap(&mut product, &mut next);
+    let Scratch { product, next } = scratch;
+    product.clear();
+    product.push(1);
+    for x in numers.iter().filter(|x| x.limbs.iter().any(|&l| l != 0)) {
+        limbs::mul_into(product, &x.limbs, next);
+        std::mem::swap(product, next);
     }
-    limbs::rem_in_place(&mut product, &w);
+    limbs::rem_in_place(product, w);
     let mut g = if w.len() <= 2 {
-        let g = gcd_u128(to_u128(&w), to_u128(&product));
+        let g = gcd_u128(to_u128(w), to_u128(product));
         vec![g as u64, (g >> 64) as u64]
     } else {
-        gcd_limbs(w, product)
+        gcd_limbs(w.to_vec(), product.clone())
     };
-    while g.last() == Some(&0) {
-        g.pop();
-    }
+    limbs::trim(&mut g);
     g
 }
 

@@ -36,13 +36,16 @@ pub(crate) fn mul_into(a: &[u64], b: &[u64], out: &mut Vec<u64>) {
 /// which keeps the remainder's limbs, leading zeros removed.
 pub(crate) fn rem_in_place(u: &mut Vec<u64>, v: &[u64]) {
     let n = v.len();
-    assert!(v.last().is_some_and(|&top| top != 0), "a trimmed non-zero divisor");
+    assert!(
+        v.last().is_some_and(|&top| top != 0),
+        "a trimmed non-zero divisor"
+    );
     trim(u);
     if u.len() < n {
         return;
     }
     if n == 1 {
-        let r = rem_word(u, v[0]);
+        let r = WordDivisor::new(v[0]).rem(u);
         u.clear();
         u.push(r);
         trim(u);
@@ -50,13 +53,23 @@ pub(crate) fn rem_in_place(u: &mut Vec<u64>, v: &[u64]) {
     }
     // Normalize: the divisor's top bit set, the dividend one limb longer.
     let shift = v[n - 1].leading_zeros();
-    let v = shifted(v, shift);
+    let (mut stack, mut heap) = ([0u64; 8], Vec::new());
+    let v = if n <= stack.len() {
+        stack[..n].copy_from_slice(v);
+        &mut stack[..n]
+    } else {
+        heap.extend_from_slice(v);
+        &mut heap[..]
+    };
+    shift_left(v, shift);
+    let v = &*v;
+    let top_divisor = Divisor::new(v[n - 1]);
     u.push(0);
     shift_left(u, shift);
     for j in (0..u.len() - n).rev() {
-        let q = quotient_digit(&u[j..=j + n], &v);
-        if q != 0 && subtract_multiple(&mut u[j..=j + n], &v, q) {
-            add_back(&mut u[j..=j + n], &v);
+        let q = quotient_digit(&u[j..=j + n], v, top_divisor);
+        if q != 0 && subtract_multiple(&mut u[j..=j + n], v, q) {
+            add_back(&mut u[j..=j + n], v);
         }
     }
     u.truncate(n);
@@ -64,22 +77,122 @@ pub(crate) fn rem_in_place(u: &mut Vec<u64>, v: &[u64]) {
     trim(u);
 }
 
-/// `n mod d` for one limb `d ≠ 0`.
-pub(crate) fn rem_word(n: &[u64], d: u64) -> u64 {
-    n.iter().rev().fold(0u64, |r, &limb| {
-        (((u128::from(r) << 64) | u128::from(limb)) % u128::from(d)) as u64
-    })
+/// Division by one limb `d ≠ 0`: the limbs of `n·2^s` (`2^s·d`
+/// normalized) from the top through [`Divisor::div`]. Built once per
+/// divisor, so that its reciprocal serves every number divided by it.
+#[derive(Clone, Copy)]
+pub(crate) struct WordDivisor {
+    shift: u32,
+    normalized: Divisor,
+}
+
+impl WordDivisor {
+    /// The divisor `d ≠ 0`.
+    pub(crate) fn new(d: u64) -> WordDivisor {
+        let shift = d.leading_zeros();
+        WordDivisor {
+            shift,
+            normalized: Divisor::new(d << shift),
+        }
+    }
+
+    /// `n mod d`.
+    pub(crate) fn rem(self, n: &[u64]) -> u64 {
+        let r = (0..n.len()).rev().fold(shifted_top(n, self.shift), |r, i| {
+            self.normalized.div(r, shifted_limb(n, i, self.shift)).1
+        });
+        r >> self.shift
+    }
+
+    /// `n ← ⌊n / d⌋` (the remainder dropped), each quotient limb written
+    /// over the limb it came from (the next one down, which it also reads,
+    /// is still unchanged).
+    pub(crate) fn div_in_place(self, n: &mut Vec<u64>) {
+        let mut r = shifted_top(n, self.shift);
+        for i in (0..n.len()).rev() {
+            (n[i], r) = self.normalized.div(r, shifted_limb(n, i, self.shift));
+        }
+        trim(n);
+    }
+}
+
+/// Limb `i` of `n·2^shift` (`shift < 64`).
+fn shifted_limb(n: &[u64], i: usize, shift: u32) -> u64 {
+    match (shift, i) {
+        (0, _) => n[i],
+        (_, 0) => n[0] << shift,
+        _ => (n[i] << shift) | (n[i - 1] >> (64 - shift)),
+    }
+}
+
+/// The limb of `n·2^shift` above `n`'s top limb (below `2^shift`).
+fn shifted_top(n: &[u64], shift: u32) -> u64 {
+    match (shift, n.last()) {
+        (0, _) | (_, None) => 0,
+        (_, Some(&top)) => top >> (64 - shift),
+    }
+}
+
+/// A normalized divisor word `d` (top bit set) with its reciprocal
+/// `v = ⌊(2¹²⁸ − 1)/d⌋ − 2⁶⁴`, which turns each division of two words by
+/// `d` into two products (N. Möller and T. Granlund, "Improved division by
+/// invariant integers", *IEEE Trans. Computers* 60, 2011, Algorithm 4):
+///
+/// ```text
+/// (q₁, q₀) = v·u₁ + (u₁, u₀);  q₁ ← q₁ + 1;  r = u₀ − q₁·d  (mod 2⁶⁴)
+/// if r > q₀: q₁ ← q₁ − 1, r ← r + d;   if r ≥ d: q₁ ← q₁ + 1, r ← r − d
+/// ```
+#[derive(Clone, Copy)]
+struct Divisor {
+    d: u64,
+    reciprocal: u64,
+}
+
+impl Divisor {
+    fn new(d: u64) -> Divisor {
+        debug_assert!(d >> 63 == 1, "a normalized divisor");
+        Divisor {
+            d,
+            reciprocal: (u128::MAX / u128::from(d) - (1u128 << 64)) as u64,
+        }
+    }
+
+    /// `(⌊(u₁·2⁶⁴ + u₀)/d⌋, (u₁·2⁶⁴ + u₀) mod d)` for `u₁ < d`.
+    fn div(self, u1: u64, u0: u64) -> (u64, u64) {
+        debug_assert!(u1 < self.d, "the quotient fits a word");
+        let q = (u128::from(self.reciprocal) * u128::from(u1))
+            .wrapping_add((u128::from(u1) << 64) | u128::from(u0));
+        let (mut q1, q0) = (((q >> 64) as u64).wrapping_add(1), q as u64);
+        let mut r = u0.wrapping_sub(q1.wrapping_mul(self.d));
+        if r > q0 {
+            q1 = q1.wrapping_sub(1);
+            r = r.wrapping_add(self.d);
+        }
+        if r >= self.d {
+            q1 += 1;
+            r -= self.d;
+        }
+        (q1, r)
+    }
 }
 
 /// Knuth's estimate `q̂` of the quotient limb of the window `u` (`n + 1`
 /// limbs) by the normalized `v` (`n ≥ 2` limbs), corrected by the second
 /// limb of `v` until it is at most one too large.
-fn quotient_digit(u: &[u64], v: &[u64]) -> u64 {
+fn quotient_digit(u: &[u64], v: &[u64], top_divisor: Divisor) -> u64 {
     let n = v.len();
-    let (top, v1, v2) = (u128::from(u[n]), u128::from(v[n - 1]), u128::from(v[n - 2]));
-    let numerator = (top << 64) | u128::from(u[n - 1]);
-    let mut q = (numerator / v1).min(u128::from(u64::MAX));
-    let mut r = numerator - q * v1;
+    let (v1, v2) = (u128::from(v[n - 1]), u128::from(v[n - 2]));
+    let (mut q, mut r) = if u[n] < v[n - 1] {
+        let (q, r) = top_divisor.div(u[n], u[n - 1]);
+        (u128::from(q), u128::from(r))
+    } else {
+        // The window's top limb equals v's (it is never larger): q̂ = 2⁶⁴ − 1.
+        let q = u128::from(u64::MAX);
+        (
+            q,
+            ((u128::from(u[n]) << 64) | u128::from(u[n - 1])) - q * v1,
+        )
+    };
     while r >> 64 == 0 && q * v2 > ((r << 64) | u128::from(u[n - 2])) {
         q -= 1;
         r += v1;
@@ -119,13 +232,6 @@ fn add_back(u: &mut [u64], v: &[u64]) {
     }
 }
 
-/// `v · 2^shift` for `shift < 64` that does not carry out of the top limb.
-fn shifted(v: &[u64], shift: u32) -> Vec<u64> {
-    let mut out = v.to_vec();
-    shift_left(&mut out, shift);
-    out
-}
-
 /// `n ← n · 2^shift` (`shift < 64`), the bits shifted out of the top limb
 /// dropped (the callers leave a zero top limb or none to lose).
 fn shift_left(n: &mut [u64], shift: u32) {
@@ -150,7 +256,7 @@ fn shift_right(n: &mut [u64], shift: u32) {
 }
 
 /// Remove leading zero limbs.
-fn trim(n: &mut Vec<u64>) {
+pub(crate) fn trim(n: &mut Vec<u64>) {
     while n.last() == Some(&0) {
         n.pop();
     }
@@ -174,10 +280,26 @@ mod tests {
     /// Limbs drawn to reach the rare branches of Algorithm D: all-ones and
     /// top-bit words make `q̂` too large and the add-back happen.
     fn limb() -> impl Strategy<Value = u64> {
-        prop_oneof![any::<u64>(), Just(u64::MAX), Just(1u64 << 63), Just(0u64), Just(1u64)]
+        prop_oneof![
+            any::<u64>(),
+            Just(u64::MAX),
+            Just(1u64 << 63),
+            Just(0u64),
+            Just(1u64)
+        ]
     }
 
     proptest! {
+        /// Division by the reciprocal equals the machine's 128-bit division.
+        #[test]
+        fn reciprocal_division_is_division(d in limb(), u1 in limb(), u0 in limb()) {
+            let d = d | 1 << 63;
+            let u1 = u1 % d;
+            let u = (u128::from(u1) << 64) | u128::from(u0);
+            let want = ((u / u128::from(d)) as u64, (u % u128::from(d)) as u64);
+            prop_assert_eq!(Divisor::new(d).div(u1, u0), want);
+        }
+
         /// The product and the remainder equal num-bigint's.
         #[test]
         fn product_and_remainder_equal_num_bigint(
@@ -194,6 +316,10 @@ mod tests {
             rem_in_place(&mut u, &v);
             prop_assert_eq!(big(&u), big(&product) % big(&v));
             prop_assert!(u.last() != Some(&0));
+            let mut q = product.clone();
+            WordDivisor::new(v[0].max(1)).div_in_place(&mut q);
+            prop_assert_eq!(big(&q), big(&product) / big(&[v[0].max(1)]));
+            prop_assert!(q.last() != Some(&0));
         }
     }
 
@@ -217,7 +343,7 @@ mod tests {
                         if big(&u[1..]) >= big(&v) {
                             continue; // not a window of Algorithm D
                         }
-                        let q = quotient_digit(&u, &v);
+                        let q = quotient_digit(&u, &v, Divisor::new(v[2]));
                         add_backs += usize::from(subtract_multiple(&mut u.clone(), &v, q));
                         let mut r = u.to_vec();
                         rem_in_place(&mut r, &v);

@@ -12,8 +12,8 @@
 pub mod gcd;
 pub(crate) mod int;
 pub(crate) mod interval;
-pub(crate) mod limbs;
 pub mod interval_bernstein;
+pub(crate) mod limbs;
 pub(crate) mod modp;
 pub(crate) mod number;
 pub(crate) mod poly;

@@ -48,6 +48,12 @@ impl Wide {
         BigInt::from_biguint(sign, BigUint::from_slice(&digits))
     }
 
+    /// `|self|` as four little-endian 64-bit limbs.
+    pub(crate) fn magnitude_limbs(&self) -> [u64; 4] {
+        let (hi, lo) = self.0.unsigned_abs().into_words();
+        [lo as u64, (lo >> 64) as u64, hi as u64, (hi >> 64) as u64]
+    }
+
     /// `gcd(|self|, |other|)` by Lehmer's algorithm on the four 64-bit limbs
     /// ([`gcd`](crate::algebra::gcd::gcd)), with no big integer.
     ///
@@ -140,7 +146,49 @@ impl Neg for Wide {
     }
 }
 
-impl crate::algebra::scalar::MulAcc for Wide {}
+/// `acc·a + c·x`, each product by a machine word where the factor is one
+/// (in Horner's sums `a` and `c` are the parameter and its powers, mostly
+/// words): four limb products instead of a full 256-bit product's ten.
+impl crate::algebra::scalar::MulAcc for Wide {
+    fn mul_acc(acc: &mut Wide, a: &Wide, c: &Wide, x: &Wide) {
+        *acc = acc.times(a) + c.word().map_or_else(|| *c * x, |k| x.times_word(k));
+    }
+}
+
+impl Wide {
+    /// `self · k`, by a word when `k` is one.
+    fn times(self, k: &Wide) -> Wide {
+        k.word().map_or_else(|| self * k, |k| self.times_word(k))
+    }
+
+    /// The value as an `i64`, if it is one.
+    fn word(&self) -> Option<i64> {
+        let (hi, lo) = self.0.into_words();
+        (hi == lo >> 127 && lo == i128::from(lo as i64)).then_some(lo as i64)
+    }
+
+    /// `self · k` modulo 2²⁵⁶ (exact where the product fits, as the
+    /// callers' bounds prove): the two's-complement limbs times `|k|` with
+    /// carries, negated for `k < 0`.
+    fn times_word(self, k: i64) -> Wide {
+        let (hi, lo) = self.0.as_u256().into_words();
+        let s = u128::from(k.unsigned_abs());
+        let p0 = (lo as u64 as u128) * s;
+        let p1 = (lo >> 64) * s + (p0 >> 64);
+        let p2 = (hi as u64 as u128) * s + (p1 >> 64);
+        let p3 = (hi >> 64).wrapping_mul(s).wrapping_add(p2 >> 64);
+        let product = U256::from_words(
+            (p2 as u64 as u128) | (p3 << 64),
+            (p0 as u64 as u128) | (p1 << 64),
+        )
+        .as_i256();
+        Wide(if k < 0 {
+            product.wrapping_neg()
+        } else {
+            product
+        })
+    }
+}
 
 impl Zero for Wide {
     fn zero() -> Wide {
@@ -187,6 +235,29 @@ mod tests {
             if !g.is_zero() {
                 prop_assert_eq!(x.div_exact(&g).to_bigint(), x.to_bigint() / g.to_bigint());
             }
+        }
+    }
+
+    proptest! {
+        /// The word path of `mul_acc` is the full product's: word factors
+        /// against a 187-bit `x`, and 126-bit factors (the full path)
+        /// against a 126-bit one, so that every value stays below 2²⁵⁵.
+        #[test]
+        fn mul_acc_by_words_is_the_product(
+            x in any::<i128>(), acc in any::<i128>(), a in any::<i64>(), c in any::<i64>(),
+            big_a in any::<i128>(), big_c in any::<i128>(),
+        ) {
+            let w = Wide::from;
+            let check = |acc: Wide, a: Wide, c: Wide, x: Wide| {
+                let mut got = acc;
+                crate::algebra::scalar::MulAcc::mul_acc(&mut got, &a, &c, &x);
+                let want = acc.to_bigint() * a.to_bigint() + c.to_bigint() * x.to_bigint();
+                (got.to_bigint(), want)
+            };
+            let (got, want) = check(w(acc), w(a.into()), w(c.into()), w(x) * &w(1 << 60));
+            prop_assert_eq!(got, want);
+            let (got, want) = check(w(acc >> 1), w(big_a >> 1), w(big_c >> 1), w(x >> 1));
+            prop_assert_eq!(got, want);
         }
     }
 

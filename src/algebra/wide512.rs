@@ -37,7 +37,7 @@ impl Wide512 {
     }
 
     /// `|self|` as little-endian limbs (correct for every `|x| < 2⁵¹¹`).
-    fn magnitude(&self) -> [u64; LIMBS] {
+    pub(crate) fn magnitude(&self) -> [u64; LIMBS] {
         if self.is_negative() {
             (-*self).0
         } else {

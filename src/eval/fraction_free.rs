@@ -37,7 +37,7 @@
 
 use super::blocks::BlockedCurve;
 use super::{Evaluator, Net, Shape, Workspace};
-use crate::algebra::gcd::{fractions_over, gcd_u128};
+use crate::algebra::gcd::{fractions_over, fractions_over_limbs, gcd_u128, Scratch, SignedLimbs};
 use crate::algebra::int::{common_denominator, Int};
 use crate::algebra::scalar::{Field, MulAcc};
 use crate::algebra::wide::Wide;
@@ -57,14 +57,19 @@ trait KernelInt: MulAcc {
     fn from_int(n: &Int) -> Self;
 
     /// The point `xs[i] / den` in lowest terms, written to `out` (`den ≠
-    /// 0`): by default one gcd of the weight's size for all coordinates
-    /// ([`fractions_over`]).
-    fn fractions(xs: &[Self], den: &Self, out: &mut [BigRational]) {
-        fractions_over(xs.iter().map(Self::to_bigint).collect(), den.to_bigint(), out);
+    /// 0`): by default one gcd of the weight's size for all coordinates,
+    /// on the limbs ([`fractions_over_limbs`], with the lane's [`Buffers`]).
+    fn fractions(xs: &[Self], den: &Self, out: &mut [BigRational], buffers: &mut Buffers) {
+        let (numers, denom) = buffers.limbs.split_at_mut(xs.len());
+        for (x, buf) in xs.iter().zip(numers.iter_mut()) {
+            x.write_limbs(buf);
+        }
+        den.write_limbs(&mut denom[0]);
+        fractions_over_limbs(numers, &mut denom[0], out, &mut buffers.scratch);
     }
 
-    /// The integer as a big integer.
-    fn to_bigint(&self) -> BigInt;
+    /// The integer's sign and magnitude, written over `into`.
+    fn write_limbs(&self, into: &mut SignedLimbs);
 
     /// How many points a Horner sum takes at a time at the homogeneous
     /// parameter `(a : b)` (see `horner` in [`super`]): 1, unless products
@@ -86,7 +91,7 @@ impl KernelInt for i128 {
     }
 
     /// One word gcd per coordinate: cheaper than a product of words.
-    fn fractions(xs: &[i128], den: &i128, out: &mut [BigRational]) {
+    fn fractions(xs: &[i128], den: &i128, out: &mut [BigRational], _: &mut Buffers) {
         for (o, num) in out.iter_mut().zip(xs) {
             // |num|, |den| < 2¹²⁷: the quotients and their negations fit.
             let g = gcd_u128(num.unsigned_abs(), den.unsigned_abs()) as i128;
@@ -96,8 +101,11 @@ impl KernelInt for i128 {
         }
     }
 
-    fn to_bigint(&self) -> BigInt {
-        BigInt::from(*self)
+    fn write_limbs(&self, into: &mut SignedLimbs) {
+        let m = self.unsigned_abs();
+        into.negative = *self < 0;
+        into.limbs.clear();
+        into.limbs.extend([m as u64, (m >> 64) as u64]);
     }
 }
 
@@ -117,8 +125,10 @@ impl KernelInt for Wide {
         stack_int(n, Wide::from_bigint)
     }
 
-    fn to_bigint(&self) -> BigInt {
-        Wide::to_bigint(self)
+    fn write_limbs(&self, into: &mut SignedLimbs) {
+        into.negative = self.is_negative();
+        into.limbs.clear();
+        into.limbs.extend(self.magnitude_limbs());
     }
 }
 
@@ -129,8 +139,10 @@ impl KernelInt for Wide512 {
         stack_int(n, Wide512::from_bigint)
     }
 
-    fn to_bigint(&self) -> BigInt {
-        Wide512::to_bigint(self)
+    fn write_limbs(&self, into: &mut SignedLimbs) {
+        into.negative = self.is_negative();
+        into.limbs.clear();
+        into.limbs.extend(self.magnitude());
     }
 }
 
@@ -141,8 +153,15 @@ impl KernelInt for Int {
         n.clone()
     }
 
-    fn to_bigint(&self) -> BigInt {
-        Int::to_bigint(self)
+    fn write_limbs(&self, into: &mut SignedLimbs) {
+        match self {
+            Int::Small(v) => v.write_limbs(into),
+            Int::Big(b) => {
+                into.negative = b.sign() == num_bigint::Sign::Minus;
+                into.limbs.clear();
+                into.limbs.extend(b.magnitude().iter_u64_digits());
+            }
+        }
     }
 
     /// Blocks of `k` points with `a^k`, `b^k` below 2⁶³ (one machine word
@@ -160,6 +179,14 @@ struct Lane<T> {
     ws: Workspace<T>,
     hom: Vec<T>,
     point: Vec<T>,
+    buffers: Buffers,
+}
+
+/// A lane's buffers for the reduction of its points, kept from point to
+/// point: the coordinates and the weight as limbs, and the product's.
+struct Buffers {
+    limbs: Vec<SignedLimbs>,
+    scratch: Scratch,
 }
 
 impl<T: KernelInt> Lane<T> {
@@ -169,6 +196,10 @@ impl<T: KernelInt> Lane<T> {
             ws: net.workspace(),
             hom: Vec::with_capacity(4),
             point: vec![T::zero(); net.stride()],
+            buffers: Buffers {
+                limbs: vec![SignedLimbs::default(); net.stride()],
+                scratch: Scratch::default(),
+            },
             net,
         }
     }
@@ -183,7 +214,7 @@ impl<T: KernelInt> Lane<T> {
         if w[0].is_zero() {
             return Err(Error::PointAtInfinity);
         }
-        T::fractions(x, &w[0], out);
+        T::fractions(x, &w[0], out, &mut self.buffers);
         Ok(())
     }
 }
