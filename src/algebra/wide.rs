@@ -254,7 +254,7 @@ mod tests {
                 let want = acc.to_bigint() * a.to_bigint() + c.to_bigint() * x.to_bigint();
                 (got.to_bigint(), want)
             };
-            let (got, want) = check(w(acc), w(a.into()), w(c.into()), w(x) * &w(1 << 60));
+            let (got, want) = check(w(acc), w(a.into()), w(c.into()), w(x) * w(1 << 60));
             prop_assert_eq!(got, want);
             let (got, want) = check(w(acc >> 1), w(big_a >> 1), w(big_c >> 1), w(x >> 1));
             prop_assert_eq!(got, want);
