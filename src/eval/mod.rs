@@ -14,7 +14,7 @@
 //! rect:   G_ij = C(m,i) C(n,j) H_ij,     H(u, v)  = Σ_i (1−u)^{m−i} uⁱ [Σ_j (1−v)^{n−j} vʲ G_ij]
 //! tri:    G_ij = n!/(i! j! k!) H_ijk,    H(u, v, w) = Σ_j vʲ [Σ_i uⁱ w^{n−j−i} G_ij]
 //!         (k = n − i − j;  n!/(i! j! k!) = C(n,j)·C(n−j,i))
-//! X = H_d / H_w        (one division per coordinate, at the end)
+//! X = H_d / H_w        (reduced at the end, one big gcd per point)
 //! ```
 //!
 //! At `(a : b) = (1 − t : t)` the curve sum is `X(t)` in homogeneous form;
@@ -26,7 +26,8 @@
 //! values (`i128`, [`Wide`](crate::algebra::Wide),
 //! [`Wide512`](crate::algebra::Wide512) or [`Int`](crate::algebra::Int): no
 //! gcd, no allocation below 512 bits) and
-//! divides once per coordinate (`fraction_free`). Curves of high degree
+//! reduces the point's coordinates over their common weight with one gcd
+//! of the weight's size (`fraction_free`). Curves of high degree
 //! keep one denominator per block of control points instead (`blocks`), so
 //! that their block sums stay within 256 bits.
 //!
