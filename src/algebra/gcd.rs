@@ -134,7 +134,7 @@ fn to_u128(n: &[u64]) -> u128 {
 /// The big integer of little-endian 64-bit limbs (up to 16 limbs, its
 /// 32-bit digits on the stack, so that the result's is the one
 /// allocation).
-fn from_limbs(n: &[u64]) -> BigUint {
+pub(crate) fn from_limbs(n: &[u64]) -> BigUint {
     const STACK: usize = 16;
     let mut stack = [0u32; 2 * STACK];
     let mut heap = Vec::new();
@@ -531,14 +531,7 @@ mod tests {
     use num_integer::Integer;
     use proptest::prelude::*;
 
-    fn big(limbs: &[u64]) -> BigUint {
-        BigUint::from_slice(
-            &limbs
-                .iter()
-                .flat_map(|l| [*l as u32, (*l >> 32) as u32])
-                .collect::<Vec<_>>(),
-        )
-    }
+    use super::from_limbs as big;
 
     proptest! {
         /// Lehmer's gcd equals the binary gcd of `num-integer`, on numbers

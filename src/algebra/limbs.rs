@@ -265,17 +265,9 @@ pub(crate) fn trim(n: &mut Vec<u64>) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use num_bigint::BigUint;
     use proptest::prelude::*;
 
-    fn big(limbs: &[u64]) -> BigUint {
-        BigUint::from_slice(
-            &limbs
-                .iter()
-                .flat_map(|l| [*l as u32, (*l >> 32) as u32])
-                .collect::<Vec<_>>(),
-        )
-    }
+    use crate::algebra::gcd::from_limbs as big;
 
     /// Limbs drawn to reach the rare branches of Algorithm D: all-ones and
     /// top-bit words make `q̂` too large and the add-back happen.
