@@ -148,7 +148,7 @@ impl Neg for Wide {
 
 /// `acc·a + c·x`, each product by a machine word where the factor is one
 /// (in Horner's sums `a` and `c` are the parameter and its powers, mostly
-/// words): four limb products instead of a full 256-bit product's ten.
+/// words): four limb products instead of a full 256-bit product.
 impl crate::algebra::scalar::MulAcc for Wide {
     fn mul_acc(acc: &mut Wide, a: &Wide, c: &Wide, x: &Wide) {
         *acc = acc.times(a) + c.word().map_or_else(|| *c * x, |k| x.times_word(k));

@@ -90,7 +90,8 @@ impl KernelInt for i128 {
         }
     }
 
-    /// One word gcd per coordinate: cheaper than a product of words.
+    /// One word gcd per coordinate, as before the shared gcd: the product
+    /// of the coordinates would leave the machine words.
     fn fractions(xs: &[i128], den: &i128, out: &mut [BigRational], _: &mut Buffers) {
         for (o, num) in out.iter_mut().zip(xs) {
             // |num|, |den| < 2¹²⁷: the quotients and their negations fit.
