@@ -2,7 +2,8 @@
 //! limbs, without allocation beyond the caller's buffers: what
 //! [`fractions_over`](crate::algebra::gcd::fractions_over) needs for
 //! `∏ xᵢ mod w` on numbers of a few limbs, where `num-bigint`'s operators
-//! spend most of their time allocating and normalizing.
+//! spent much of their time allocating and normalizing (a profile of the
+//! GMP harness's 30-digit curve row).
 //!
 //! ```text
 //! product:    schoolbook, one row a·b_j per limb of b        (Knuth, Algorithm M)
@@ -10,7 +11,13 @@
 //!             q̂ = ⌊(u_top·2⁶⁴ + u_next) / v_top⌋, corrected by v_next (at most twice),
 //!             u ← u − q̂·v·2^{64j}, adding v back once if that went negative
 //!                                                               (Knuth, Algorithm D)
+//! by a word:  the same, one limb of the quotient per limb of n, each a division of
+//!             two words by the normalized word through its reciprocal
+//!                                                               (Möller–Granlund)
 //! ```
+//!
+//! The product is quadratic (no Karatsuba): on numbers of thousands of
+//! limbs it costs about what the gcd that follows it does.
 //!
 //! Reference: D. E. Knuth, *The Art of Computer Programming*, vol. 2, 3rd
 //! ed., §4.3.1.
