@@ -417,6 +417,12 @@ pub(crate) fn fractions_over_limbs(
     }
 }
 
+/// Limbs of the weight up to which [`shared_gcd`] multiplies and divides
+/// on limbs ([`limbs`], quadratic, without allocation); above, by
+/// num-bigint (Karatsuba from 32 limbs). On 100 000-digit coordinates the
+/// quadratic product made the shared gcd slower than three gcds.
+const LONG_LIMBS: usize = 16;
+
 /// `gcd(w, ∏_{xᵢ ≠ 0} |xᵢ| mod w)`, which every `gcd(xᵢ, w)` divides, as
 /// trimmed limbs: the product and the remainder on the limbs
 /// ([`limbs`]), then Lehmer's gcd.
@@ -425,13 +431,20 @@ fn shared_gcd(numers: &[SignedLimbs], w: &[u64], scratch: &mut Scratch) -> Vec<u
         return w.to_vec();
     }
     let Scratch { product, next } = scratch;
-    product.clear();
-    product.push(1);
-    for x in numers.iter().filter(|x| x.limbs.iter().any(|&l| l != 0)) {
-        limbs::mul_into(product, &x.limbs, next);
-        std::mem::swap(product, next);
+    let factors = numers.iter().filter(|x| x.limbs.iter().any(|&l| l != 0));
+    if w.len() <= LONG_LIMBS {
+        product.clear();
+        product.push(1);
+        for x in factors {
+            limbs::mul_into(product, &x.limbs, next);
+            std::mem::swap(product, next);
+        }
+        limbs::rem_in_place(product, w);
+    } else {
+        // Long numbers: num-bigint's subquadratic product and division.
+        let p = factors.fold(BigUint::one(), |p, x| p * from_limbs(&x.limbs));
+        *product = (p % from_limbs(w)).to_u64_digits();
     }
-    limbs::rem_in_place(product, w);
     let mut g = if w.len() <= 2 {
         let g = gcd_u128(to_u128(w), to_u128(product));
         vec![g as u64, (g >> 64) as u64]
@@ -593,13 +606,14 @@ mod tests {
         }
 
         /// The shared gcd gives every coordinate num-rational's reduced
-        /// fraction: numerators and a denominator of one to five words with
-        /// a planted common factor (so that the shared gcd is 1, a word or
-        /// several), zero and negative numerators, negative denominators.
+        /// fraction: numerators and a denominator of one to 23 words (on
+        /// limbs up to `LONG_LIMBS`, by num-bigint above) with a planted
+        /// common factor (so that the shared gcd is 1, a word or several),
+        /// zero and negative numerators, negative denominators.
         #[test]
         fn fractions_over_one_gcd_are_the_reduced_fractions(
-            numers in prop::collection::vec((prop::collection::vec(any::<u64>(), 0..5), any::<bool>()), 1..5),
-            denom in prop::collection::vec(any::<u64>(), 1..5),
+            numers in prop::collection::vec((prop::collection::vec(any::<u64>(), 0..24), any::<bool>()), 1..5),
+            denom in prop::collection::vec(any::<u64>(), 1..24),
             negative in any::<bool>(),
             f in prop::collection::vec(any::<u64>(), 0..3),
         ) {
