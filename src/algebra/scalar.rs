@@ -19,6 +19,7 @@
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::cmp::Ordering;
 use std::fmt::Debug;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -248,9 +249,23 @@ pub trait Ordered: Field + PartialOrd {
         None
     }
 
+    /// The sign of `self`: its order against zero (`Equal` for NaN).
+    /// `BigRational` reads its numerator's sign (its `<` against zero
+    /// runs a floor division of numerator by denominator).
+    ///
+    /// ```
+    /// use exact_bezier::{ratio, BigRational, Ordered};
+    /// use std::cmp::Ordering;
+    /// assert_eq!(ratio::<BigRational>(-3, 7).sign_order(), Ordering::Less);
+    /// assert_eq!(f64::NAN.sign_order(), Ordering::Equal);
+    /// ```
+    fn sign_order(&self) -> Ordering {
+        self.partial_cmp(&Self::zero()).unwrap_or(Ordering::Equal)
+    }
+
     /// `|self|`.
     fn abs_val(&self) -> Self {
-        if *self < Self::zero() {
+        if self.sign_order().is_lt() {
             -self.clone()
         } else {
             self.clone()
@@ -259,7 +274,7 @@ pub trait Ordered: Field + PartialOrd {
 
     /// Is `self` strictly positive, beyond `tol` for `f64`?
     fn is_positive_within(&self, tol: Tolerance) -> bool {
-        !self.is_zero_within(tol) && *self > Self::zero()
+        !self.is_zero_within(tol) && self.sign_order().is_gt()
     }
 }
 
@@ -305,13 +320,22 @@ impl Scalar for BigRational {
         }
     }
 }
-impl Field for BigRational {}
+/// `recip` swaps numerator and denominator (no gcd: the default `1 / x`
+/// runs `Ratio`'s binary gcd).
+impl Field for BigRational {
+    fn recip(&self) -> Self {
+        num_rational::Ratio::recip(self)
+    }
+}
 impl Ordered for BigRational {
     fn to_f64(&self) -> f64 {
         rational_to_f64(self)
     }
     fn abs_val(&self) -> Self {
         self.abs()
+    }
+    fn sign_order(&self) -> Ordering {
+        self.numer().sign().cmp(&num_bigint::Sign::NoSign)
     }
 }
 

@@ -24,7 +24,7 @@
 
 use crate::algebra::scalar::Ordered;
 use crate::algebra::RealAlgebraic;
-use crate::coincide::minimal::{certified_minimal, minimal_net, Reducible};
+use crate::coincide::minimal::{certified_minimal, minimal_net, Net, Reducible};
 use crate::coincide::{net_of, Prepared, Symmetry, View};
 use crate::error::Error;
 use crate::Patch;
@@ -166,8 +166,12 @@ fn invariants<T: Ordered>(v: &View<'_, T>) -> Vec<(i8, T)> {
 /// [`Error::Shape`] for a tri patch, [`Error::Weight`] for a non-positive weight.
 pub fn canonical_key<T: Reducible>(p: &Patch<T>) -> Result<CanonicalKey<T>, Error> {
     let (net, curve) = net_of(p)?;
-    let red = minimal_net(&net).patch;
-    let prep = Prepared::new(&red);
+    Ok(key_of_minimal(&minimal_net(&net).patch, curve))
+}
+
+/// The key of a net already of minimal (bi)degree.
+fn key_of_minimal<T: Reducible>(red: &Net<T>, curve: bool) -> CanonicalKey<T> {
+    let prep = Prepared::new(red);
     let (m, n) = (prep.m, prep.n);
     let target = if curve { (m, n) } else { (m.min(n), m.max(n)) };
     let views: Vec<View<'_, T>> = Symmetry::admissible(curve, (m, n), target)
@@ -186,20 +190,20 @@ pub fn canonical_key<T: Reducible>(p: &Patch<T>) -> Result<CanonicalKey<T>, Erro
         .map(|v| (v, invariants(v)))
         .min_by(|a, b| exact_cmp(&a.1, &b.1))
         .expect("the identity is admissible");
-    Ok(CanonicalKey {
+    CanonicalKey {
         curve,
         degree: target,
         points: positions(view.m, view.n)
             .map(|(i, j)| view.hat(i, j).cloned())
             .collect(),
         invariants,
-    })
+    }
 }
 
 /// The version tag of the key text and digest ([`CanonicalKey::text`]).
 pub const KEY_VERSION: &str = "eb1";
 
-fn push_rational(out: &mut String, q: &BigRational) {
+pub(super) fn push_rational(out: &mut String, q: &BigRational) {
     // `BigRational` is kept in lowest terms with a positive denominator.
     let _ = if q.is_integer() {
         write!(out, "{}", q.numer())
@@ -309,12 +313,11 @@ fn text_head(curve: bool, (m, n): (usize, usize)) -> String {
 /// As [`canonical_key`].
 pub fn canonical_text(p: &Patch<BigRational>) -> Result<String, Error> {
     let (net, curve) = net_of(p)?;
-    if certified_minimal(&net)
-        && let Some(text) = small::key_text(&net, curve)
-    {
-        return Ok(text);
+    if !certified_minimal(&net) {
+        return canonical_key(p).map(|k| k.text());
     }
-    canonical_key(p).map(|k| k.text())
+    Ok(small::key_text_rational_invariants(&net, curve)
+        .unwrap_or_else(|| key_of_minimal(&net, curve).text()))
 }
 
 /// How [`canonical_text`] reduces a patch to minimal degree, read modulo

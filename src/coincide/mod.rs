@@ -54,6 +54,7 @@ use crate::error::Error;
 use crate::rect::RectPatch;
 use crate::Patch;
 use num_rational::BigRational;
+use std::borrow::Cow;
 use std::fmt;
 
 /// One of the 8 symmetries of the parameter square: first swap u and v (if
@@ -471,16 +472,17 @@ fn shape_of<T>(net: &Net<T>) -> (usize, usize) {
     (net.len() - 1, net[0].len() - 1)
 }
 
-/// The homogeneous net of a curve or rect patch with positive weights.
-pub(crate) fn net_of<T: Ordered>(p: &Patch<T>) -> Result<(Net<T>, bool), Error> {
+/// The homogeneous net of a curve or rect patch with positive weights
+/// (a rect patch's own net, borrowed).
+pub(crate) fn net_of<T: Ordered>(p: &Patch<T>) -> Result<(Cow<'_, Net<T>>, bool), Error> {
     match p {
         Patch::Curve(c) => {
             c.check_positive_weights()?;
-            Ok((curve_net(c), true))
+            Ok((Cow::Owned(curve_net(c)), true))
         }
         Patch::Rect(r) => {
             r.check_positive_weights()?;
-            Ok((r.ctrl().to_vec(), false))
+            Ok((Cow::Borrowed(r.ctrl_rows()), false))
         }
         Patch::Tri(_) => Err(Error::Shape(
             "coincide compares curves and rect patches, not tri patches".into(),

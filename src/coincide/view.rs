@@ -60,7 +60,7 @@ impl<T: Ordered> Prepared<T> {
                 match scale_of(h) {
                     Some(s) => {
                         let inv = s.recip();
-                        hr.push(Some(h.coords.iter().map(|c| c.clone() * &inv).collect()));
+                        hr.push(Some(h.coords.iter().map(|c| c.mul_scalar(&inv)).collect()));
                         sr.push(s);
                     }
                     None => {
@@ -140,14 +140,8 @@ impl<'a, T: Ordered> View<'a, T> {
 
     /// `sgn(s_{i,j} · s_{0,0})` as −1, 0, 1.
     pub fn sign(&self, i: usize, j: usize) -> i8 {
-        let x = self.scale(i, j).clone() * self.scale(0, 0);
-        if x.is_zero() {
-            0
-        } else if x > T::zero() {
-            1
-        } else {
-            -1
-        }
+        let sign = |x: &T| x.sign_order() as i8;
+        sign(self.scale(i, j)) * sign(self.scale(0, 0))
     }
 
     /// All weight invariants `I_{i,j}`, row by row (0 at a zero position).
@@ -174,10 +168,11 @@ impl<'a, T: Ordered> View<'a, T> {
                 .collect();
         }
         let powers = |pivot: Option<(usize, usize)>, deg: usize| {
-            let base = pivot.map_or_else(T::one, |(a, b)| s00.clone() / self.scale(a, b));
+            let base =
+                pivot.map_or_else(T::one, |(a, b)| s00.mul_scalar(&self.scale(a, b).recip()));
             let mut out = vec![T::one()];
             for k in 0..deg {
-                out.push(out[k].clone() * &base);
+                out.push(out[k].mul_scalar(&base));
             }
             out
         };
@@ -187,7 +182,12 @@ impl<'a, T: Ordered> View<'a, T> {
         );
         let inv00 = s00.recip();
         positions
-            .map(|(i, j)| self.scale(i, j).clone() * &inv00 * &pa[i] * &pb[j])
+            .map(|(i, j)| {
+                self.scale(i, j)
+                    .mul_scalar(&inv00)
+                    .mul_scalar(&pa[i])
+                    .mul_scalar(&pb[j])
+            })
             .collect()
     }
 }

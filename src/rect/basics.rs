@@ -83,6 +83,12 @@ impl<T: Scalar> RectPatch<T> {
         &self.ctrl
     }
 
+    /// The homogeneous control net as its vector of rows (what the
+    /// coincidence tests read, borrowed rather than copied).
+    pub(crate) fn ctrl_rows(&self) -> &Vec<Vec<HPoint<T>>> {
+        &self.ctrl
+    }
+
     /// The weights `ω_{i,j}`.
     pub fn weights(&self) -> Vec<Vec<T>> {
         self.ctrl

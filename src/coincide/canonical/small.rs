@@ -296,26 +296,66 @@ impl Split<'_> {
     }
 
     /// The weight invariants of the view, `I_{i,j} = (ω_{i,j}/ω_{0,0}) A^i B^j`
-    /// with `A = ω_{0,0}/ω_{1,0}`, `B = ω_{0,0}/ω_{0,1}` (positive weights).
-    fn invariants(&self, sym: Symmetry, (vm, vn): (usize, usize)) -> Option<Vec<Small>> {
-        let w = |i, j| self.weight[self.source(sym, (vm, vn), i, j)];
+    /// with `A = ω_{0,0}/ω_{1,0}`, `B = ω_{0,0}/ω_{0,1}` (positive weights),
+    /// in machine fractions or over Q; `None` when a machine number
+    /// overflows.
+    fn invariants<N: InvariantNumber>(
+        &self,
+        sym: Symmetry,
+        (vm, vn): (usize, usize),
+    ) -> Option<Vec<N>> {
+        let w = |i, j| N::from_small(self.weight[self.source(sym, (vm, vn), i, j)]);
         let w00 = w(0, 0);
-        let powers = |deg: usize, pivot: Small| -> Option<Vec<Small>> {
-            let base = w00.mul(pivot.recip_positive())?;
-            let mut out = vec![Small::ONE];
+        let powers = |deg: usize, pivot: N| -> Option<Vec<N>> {
+            let base = w00.times(&pivot.recip_positive())?;
+            let mut out = vec![N::from_small(Small::ONE)];
             for k in 0..deg {
-                out.push(out[k].mul(base)?);
+                out.push(out[k].times(&base)?);
             }
             Some(out)
         };
-        let a = powers(vm, if vm > 0 { w(1, 0) } else { w00 })?;
-        let b = powers(vn, if vn > 0 { w(0, 1) } else { w00 })?;
+        let a = powers(vm, if vm > 0 { w(1, 0) } else { w00.clone() })?;
+        let b = powers(vn, if vn > 0 { w(0, 1) } else { w00.clone() })?;
         let inv00 = w00.recip_positive();
-        let rows = try_collect(a.len(), a.iter().map(|ai| inv00.mul(*ai)))?;
+        let rows = try_collect(a.len(), a.iter().map(|ai| inv00.times(ai)))?;
         try_collect(
             (vm + 1) * (vn + 1),
-            positions((vm, vn)).map(|(i, j)| w(i, j).mul(rows[i])?.mul(b[j])),
+            positions((vm, vn)).map(|(i, j)| w(i, j).times(&rows[i])?.times(&b[j])),
         )
+    }
+}
+
+/// The numbers the weight invariants are computed in: machine fractions
+/// (products `None` on overflow) or `BigRational` (products reduced by
+/// Lehmer's gcd, [`product`](crate::algebra::gcd::product)).
+trait InvariantNumber: Sized + Clone {
+    fn from_small(x: Small) -> Self;
+    fn times(&self, o: &Self) -> Option<Self>;
+    /// `1/self` for `self > 0`.
+    fn recip_positive(&self) -> Self;
+}
+
+impl InvariantNumber for Small {
+    fn from_small(x: Small) -> Self {
+        x
+    }
+    fn times(&self, o: &Self) -> Option<Self> {
+        self.mul(*o)
+    }
+    fn recip_positive(&self) -> Self {
+        Small::recip_positive(*self)
+    }
+}
+
+impl InvariantNumber for BigRational {
+    fn from_small(x: Small) -> Self {
+        BigRational::new_raw(x.p.into(), x.q.into())
+    }
+    fn times(&self, o: &Self) -> Option<Self> {
+        Some(crate::algebra::gcd::product(self, o))
+    }
+    fn recip_positive(&self) -> Self {
+        self.recip()
     }
 }
 
@@ -370,12 +410,20 @@ fn positions((m, n): (usize, usize)) -> impl Iterator<Item = (usize, usize)> {
 /// The key text of a net with positive weights that is already of minimal
 /// (bi)degree, or `None` when a number leaves `i128`.
 pub(super) fn key_text(net: &Net<BigRational>, curve: bool) -> Option<String> {
-    split_key_text(&Split::new(net)?, curve)
+    split_key_text(&Split::new(net)?, curve, false)
+}
+
+/// [`key_text`], with the weight invariants over Q when they leave `i128`
+/// (the points still in machine integers): `None` only when a point or a
+/// comparison of points does.
+pub(super) fn key_text_rational_invariants(net: &Net<BigRational>, curve: bool) -> Option<String> {
+    split_key_text(&Split::new(net)?, curve, true)
 }
 
 /// The key text of a split net already of minimal (bi)degree, or `None`
-/// when a number leaves `i128`.
-fn split_key_text(s: &Split, curve: bool) -> Option<String> {
+/// when a number leaves `i128` (the weight invariants only if not
+/// `rational_invariants`).
+fn split_key_text(s: &Split, curve: bool, rational_invariants: bool) -> Option<String> {
     let target = if curve {
         (s.m, s.n)
     } else {
@@ -393,9 +441,34 @@ fn split_key_text(s: &Split, curve: bool) -> Option<String> {
             Ordering::Greater => {}
         }
     }
+    if let Some((sym, inv)) = least_machine_invariants(s, &best, target) {
+        return Some(text(curve, target, s, sym, inv.len(), |out, k| {
+            inv[k].write(out)
+        }));
+    }
+    if !rational_invariants {
+        return None;
+    }
+    let (sym, inv) = best
+        .iter()
+        .map(|&sym| (sym, s.invariants::<BigRational>(sym, target)))
+        .min_by(|a, b| a.1.cmp(&b.1))?;
+    let inv = inv?;
+    Some(text(curve, target, s, sym, inv.len(), |out, k| {
+        super::push_rational(out, &inv[k])
+    }))
+}
+
+/// The view among `best` with the least invariants in machine fractions,
+/// or `None` when one of them overflows.
+fn least_machine_invariants(
+    s: &Split,
+    best: &[Symmetry],
+    target: (usize, usize),
+) -> Option<(Symmetry, Vec<Small>)> {
     let mut chosen: Option<(Symmetry, Vec<Small>)> = None;
-    for sym in best {
-        let inv = s.invariants(sym, target)?;
+    for &sym in best {
+        let inv = s.invariants::<Small>(sym, target)?;
         let better = match &chosen {
             None => true,
             Some((_, c)) => cmp_seq(inv.iter().copied(), c.iter().copied())? == Ordering::Less,
@@ -404,15 +477,22 @@ fn split_key_text(s: &Split, curve: bool) -> Option<String> {
             chosen = Some((sym, inv));
         }
     }
-    let (sym, inv) = chosen?;
-    Some(text(curve, target, s, sym, &inv))
+    chosen
 }
 
-/// The text of [`CanonicalKey::text`](super::CanonicalKey::text) from the chosen view.
-fn text(curve: bool, dims: (usize, usize), s: &Split, sym: Symmetry, inv: &[Small]) -> String {
+/// The text of [`CanonicalKey::text`](super::CanonicalKey::text) from the
+/// chosen view; `invariant(out, k)` writes the `k`-th of `count` invariants.
+fn text(
+    curve: bool,
+    dims: (usize, usize),
+    s: &Split,
+    sym: Symmetry,
+    count: usize,
+    invariant: impl Fn(&mut String, usize),
+) -> String {
     let mut out = super::text_head(curve, dims);
     // Room for the usual short numbers: one growth, not several.
-    out.reserve(8 * (s.coords.len() + s.weight.len()) + 4 * inv.len());
+    out.reserve(8 * (s.coords.len() + s.weight.len()) + 4 * count);
     for (k, (i, j)) in positions(dims).enumerate() {
         if k > 0 {
             out.push(';');
@@ -424,12 +504,12 @@ fn text(curve: bool, dims: (usize, usize), s: &Split, sym: Symmetry, inv: &[Smal
         out.push('1');
     }
     out.push_str(";I=");
-    for (k, x) in inv.iter().enumerate() {
+    for k in 0..count {
         if k > 0 {
             out.push(';');
         }
         out.push_str("+:");
-        x.write(&mut out);
+        invariant(&mut out, k);
     }
     out
 }
@@ -576,7 +656,7 @@ impl SmallPatch {
             .homogeneous_mod_p()
             .is_some_and(|image| FpGrids::new(image, self.dim + 1, shape).bernstein_certified());
         if certified {
-            self.text = split_key_text(&self.split(), self.curve);
+            self.text = split_key_text(&self.split(), self.curve, false);
         }
         certified
     }
@@ -758,7 +838,8 @@ mod tests {
 
         #[test]
         fn the_machine_certificate_is_that_of_the_net_over_q(mut s in small_patch()) {
-            let (net, _) = crate::coincide::net_of(&s.to_patch().unwrap()).unwrap();
+            let patch = s.to_patch().unwrap();
+            let (net, _) = crate::coincide::net_of(&patch).unwrap();
             prop_assert_eq!(s.certify(), crate::coincide::minimal::certified_minimal(&net));
         }
 
@@ -773,6 +854,17 @@ mod tests {
             prop_assert_eq!(s.key_text().unwrap(), canonical_text(&patch).unwrap());
         }
 
+        /// Invariants over Q beside machine points (wide weights): the
+        /// text of the general path, whose points are `BigRational` too.
+        #[test]
+        fn rational_invariants_give_the_general_text(s in wide_patch()) {
+            let patch = s.to_patch().unwrap();
+            let (net, curve) = crate::coincide::net_of(&patch).unwrap();
+            if let Some(text) = key_text_rational_invariants(&net, curve) {
+                prop_assert_eq!(text, canonical_key(&patch).unwrap().text());
+            }
+        }
+
         #[test]
         fn certified_key_texts_are_those_of_the_general_path(mut s in small_patch()) {
             if s.certify() {
@@ -780,6 +872,29 @@ mod tests {
                 prop_assert_eq!(s.key_text().unwrap(), canonical_key(&patch).unwrap().text());
             }
         }
+    }
+
+    /// A cubic whose invariant `I_3 = ω₃ω₀²/ω₁³` leaves `i128` (`ω₁ =
+    /// 1/(2⁴⁵ + 1)`): the machine text gives up, the mixed one is the
+    /// general path's.
+    #[test]
+    fn overflowing_invariants_are_taken_over_q() {
+        let big_recip = (1, (1i128 << 45) + 1);
+        let s = SmallPatch::new(
+            true,
+            (3, 0),
+            1,
+            &[(0, 1), (1, 3), (2, 1), (5, 2)],
+            &[(1, 1), big_recip, (3, 1), (2, 7)],
+        )
+        .unwrap();
+        let patch = s.to_patch().unwrap();
+        let (net, curve) = crate::coincide::net_of(&patch).unwrap();
+        assert_eq!(key_text(&net, curve), None);
+        let text = key_text_rational_invariants(&net, curve).unwrap();
+        assert_eq!(text, canonical_key(&patch).unwrap().text());
+        let cube = num_bigint::BigInt::from((1i128 << 45) + 1).pow(3);
+        assert!(text.ends_with(&format!(";+:{}/7", cube * 2)), "{text}");
     }
 
     #[test]

@@ -11,12 +11,13 @@
 //! cargo run --release --manifest-path benches/peers/gmp/Cargo.toml -- [--points 256] [--repeat 7] [--only TEXT]
 //! ```
 //!
-//! Then our Lehmer gcd against `mpz_gcd` on operands of 64 to 1 024 bits.
+//! Then our Lehmer gcd against `mpz_gcd` on operands of 64 to 1 024 bits,
+//! and the coincidence key ([`key`]) of cubic curves and bicubics.
 //! Prints a table on standard error and one JSON line on standard output:
 //! `{"exact_vs_gmp": worst ours/GMP, "cases": {name: {"ours_ns", "gmp_ns", "ratio"}},
-//! "gcd_vs_gmp": worst, "gcd": {…}}`,
-//! nanoseconds per point, the best of `--repeat` passes over the batch
-//! (the two sides alternately).
+//! "gcd_vs_gmp": worst, "gcd": {…}, "key_vs_gmp": worst, "key": {…}}`,
+//! nanoseconds per point (per gcd, per key), the best of `--repeat` passes
+//! over the batch (the two sides alternately).
 //! `--only TEXT` runs the cases whose name contains `TEXT`.
 
 use exact_bezier::algebra::parse_rational;
@@ -28,6 +29,8 @@ use num_rational::BigRational;
 use rug::{Integer, Rational};
 use serde_json::{json, Map, Value};
 use std::time::Instant;
+
+mod key;
 
 /// A 64-bit linear congruential generator: the same inputs on every run.
 struct Lcg(u64);
@@ -364,9 +367,15 @@ fn main() {
         .values()
         .filter_map(|c| c["ratio"].as_f64())
         .fold(0.0, f64::max);
+    let keys = key::key_cases(points, repeat, &mut rng);
+    let key_worst = keys
+        .values()
+        .filter_map(|c| c["ratio"].as_f64())
+        .fold(0.0, f64::max);
     println!(
         "{}",
-        json!({"exact_vs_gmp": round3(worst), "cases": cases, "gcd_vs_gmp": gcd_worst, "gcd": gcds})
+        json!({"exact_vs_gmp": round3(worst), "cases": cases, "gcd_vs_gmp": gcd_worst, "gcd": gcds,
+               "key_vs_gmp": key_worst, "key": keys})
     );
 }
 
