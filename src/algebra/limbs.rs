@@ -111,15 +111,64 @@ impl WordDivisor {
         r >> self.shift
     }
 
-    /// `n ← ⌊n / d⌋` (the remainder dropped), each quotient limb written
+    /// `n ← ⌊n / d⌋`, returning `n mod d`; each quotient limb written
     /// over the limb it came from (the next one down, which it also reads,
     /// is still unchanged).
-    pub(crate) fn div_in_place(self, n: &mut Vec<u64>) {
+    pub(crate) fn div_in_place(self, n: &mut Vec<u64>) -> u64 {
         let mut r = shifted_top(n, self.shift);
         for i in (0..n.len()).rev() {
             (n[i], r) = self.normalized.div(r, shifted_limb(n, i, self.shift));
         }
         trim(n);
+        r >> self.shift
+    }
+}
+
+/// `10¹⁹`, the largest power of ten in a limb.
+const TEN_19: u64 = 10_000_000_000_000_000_000;
+
+/// Append the integer of magnitude `n` (little-endian limbs, consumed)
+/// in decimal, with a `-` if `negative` and non-zero: the top limb's
+/// digits, then blocks of 19 digits, the remainders of divisions by `10¹⁹`
+/// (one reciprocal for all of them: [`WordDivisor`]).
+pub(crate) fn push_decimal(out: &mut String, negative: bool, mut n: Vec<u64>) {
+    trim(&mut n);
+    if negative && !n.is_empty() {
+        out.push('-');
+    }
+    let ten_19 = WordDivisor::new(TEN_19);
+    let mut blocks = Vec::new();
+    while n.len() > 1 {
+        blocks.push(ten_19.div_in_place(&mut n));
+    }
+    push_word(out, n.first().copied().unwrap_or(0));
+    for &block in blocks.iter().rev() {
+        push_digits(out, block, 19);
+    }
+}
+
+/// Append the word `u` in decimal.
+pub(crate) fn push_word(out: &mut String, u: u64) {
+    push_digits(out, u, 1);
+}
+
+/// Append the word `u` in decimal, with leading zeros to `width ≤ 20`
+/// digits.
+fn push_digits(out: &mut String, mut u: u64, width: usize) {
+    let mut digits = [b'0'; 20];
+    let mut at = digits.len();
+    loop {
+        at -= 1;
+        digits[at] = b'0' + (u % 10) as u8;
+        u /= 10;
+        if u == 0 {
+            break;
+        }
+    }
+    let at = at.min(digits.len() - width);
+    // ASCII digits: always UTF-8, appended as one slice.
+    if let Ok(text) = std::str::from_utf8(&digits[at..]) {
+        out.push_str(text);
     }
 }
 
@@ -289,6 +338,20 @@ mod tests {
     }
 
     proptest! {
+        /// The decimal text is num-bigint's, for numbers of up to 8 limbs
+        /// (blocks of 19 digits with leading zeros), zero and both signs.
+        #[test]
+        fn decimal_text_is_num_bigint_text(
+            n in prop::collection::vec(prop_oneof![limb(), Just(TEN_19), Just(TEN_19 - 1)], 0..8),
+            negative in any::<bool>(),
+        ) {
+            let magnitude = num_bigint::BigInt::from(big(&n));
+            let want = if negative { -magnitude } else { magnitude };
+            let mut got = String::from("x");
+            push_decimal(&mut got, negative, n);
+            prop_assert_eq!(got, format!("x{want}"));
+        }
+
         /// Division by the reciprocal equals the machine's 128-bit division.
         #[test]
         fn reciprocal_division_is_division(d in limb(), u1 in limb(), u0 in limb()) {

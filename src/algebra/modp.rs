@@ -9,7 +9,6 @@
 
 use crate::algebra::scalar::{Field, Scalar};
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, ToPrimitive, Zero};
 use std::ops::{Add, Div, Mul, Neg, Sub};
@@ -77,6 +76,35 @@ impl Fp {
         Some(num / den)
     }
 
+    /// The images of rationals, as [`from_rational_checked`](Fp::from_rational_checked)
+    /// gives them one by one (`None` when `p` divides a denominator), with
+    /// one inversion for all (Montgomery's trick: the prefix products
+    /// `D_k = d_0⋯d_k` of the denominators, `D_last⁻¹`, then
+    /// `d_k⁻¹ = D_k⁻¹ D_{k−1}` and `D_{k−1}⁻¹ = D_k⁻¹ d_k` from the back).
+    pub fn from_rationals_checked(qs: &[&BigRational]) -> Option<Vec<Fp>> {
+        let mut out: Vec<Fp> = qs.iter().map(|q| reduce(q.numer())).collect();
+        let dens: Vec<Fp> = qs
+            .iter()
+            .map(|q| match q.denom().is_one() {
+                true => Fp::new(1),
+                false => reduce(q.denom()),
+            })
+            .collect();
+        let mut prefix = Vec::with_capacity(qs.len());
+        let mut product = Fp::new(1);
+        for &d in &dens {
+            product = product * d;
+            prefix.push(product);
+        }
+        let mut inverse = product.inverse()?;
+        for k in (0..qs.len()).rev() {
+            let before = if k == 0 { Fp::new(1) } else { prefix[k - 1] };
+            out[k] = out[k] * inverse * before;
+            inverse = inverse * dens[k];
+        }
+        Some(out)
+    }
+
     /// `self⁻¹` by the extended Euclidean algorithm (`None` for 0), on
     /// 64-bit words: the remainders stay below `p < 2⁶¹` and the cofactors
     /// `|t| ≤ p` (Knuth, TAOCP vol. 2, §4.5.2), so nothing overflows `i64`.
@@ -92,12 +120,25 @@ impl Fp {
     }
 }
 
+/// `n mod p` by Horner's rule on its 64-bit limbs, most significant
+/// first: `2⁶⁴ ≡ 2³ (mod 2⁶¹ − 1)`, so each step is `r ← 8r + limb`.
 fn reduce(n: &BigInt) -> Fp {
     if let Some(small) = n.to_i128() {
         return Fp::from_i128(small);
     }
-    let r = n.mod_floor(&BigInt::from(MODULUS));
-    Fp(r.to_u64().expect("a residue below p fits in u64"))
+    let eight = Fp::new(8);
+    let r = n
+        .magnitude()
+        .iter_u64_digits()
+        .rev()
+        .fold(Fp::new(0), |r, limb| {
+            r * eight + Fp::from_i128(i128::from(limb))
+        });
+    if n.sign() == num_bigint::Sign::Minus {
+        -r
+    } else {
+        r
+    }
 }
 
 impl Add for Fp {
@@ -232,5 +273,54 @@ mod tests {
             }
         }
         assert_eq!(Fp::new(MODULUS - 1).inverse(), Some(Fp::new(MODULUS - 1)));
+    }
+
+    #[test]
+    fn one_inversion_gives_the_images_one_by_one() {
+        let p = i64::try_from(MODULUS).unwrap();
+        let qs: Vec<BigRational> = vec![
+            ratio(-7, 5),
+            ratio(3, 1),
+            ratio(1, 9),
+            ratio(0, 1),
+            ratio(p + 2, p - 1),
+        ];
+        let refs: Vec<&BigRational> = qs.iter().collect();
+        let one_by_one: Option<Vec<Fp>> = qs.iter().map(Fp::from_rational_checked).collect();
+        assert_eq!(Fp::from_rationals_checked(&refs), one_by_one);
+        assert_eq!(Fp::from_rationals_checked(&[]), Some(vec![]));
+        let divisible = ratio(1, 2 * p);
+        assert_eq!(
+            Fp::from_rationals_checked(&[&qs[0], &divisible, &qs[1]]),
+            None
+        );
+    }
+
+    proptest::proptest! {
+        /// The residue of a big integer by Horner's rule on limbs is its
+        /// floor remainder by num-integer, for extreme limbs, multiples of
+        /// p and both signs.
+        #[test]
+        fn limb_residues_are_remainders(
+            limbs in proptest::collection::vec(
+                proptest::prop_oneof![proptest::num::u64::ANY, proptest::strategy::Just(u64::MAX), proptest::strategy::Just(MODULUS)],
+                0..9,
+            ),
+            times_p in proptest::bool::ANY,
+            negative in proptest::bool::ANY,
+        ) {
+            use num_integer::Integer;
+            let mut n = BigInt::from(num_bigint::BigUint::new(
+                limbs.iter().flat_map(|l| [*l as u32, (l >> 32) as u32]).collect(),
+            ));
+            if times_p {
+                n *= MODULUS;
+            }
+            if negative {
+                n = -n;
+            }
+            let want = n.mod_floor(&BigInt::from(MODULUS));
+            proptest::prop_assert_eq!(BigInt::from(reduce(&n).value()), want);
+        }
     }
 }

@@ -221,6 +221,22 @@ pub trait Field: Scalar + Div<Output = Self> + for<'a> Div<&'a Self, Output = Se
     fn recip(&self) -> Self {
         Self::one() / self
     }
+
+    /// `x / den` for each `x` of `nums` (a homogeneous point's coordinates
+    /// over its weight). The default multiplies by `1/den`; `BigRational`
+    /// puts the numbers on one denominator and reduces them by one shared
+    /// gcd ([`fractions_over`](crate::algebra::gcd::fractions_over)).
+    /// **Panics for `BigRational` if `den` is zero.**
+    ///
+    /// ```
+    /// use exact_bezier::{ratio, BigRational, Field};
+    /// let q = |n: i64, d: i64| ratio::<BigRational>(n, d);
+    /// assert_eq!(BigRational::divide_each(&[q(3, 4), q(-5, 6), q(0, 1)], &q(-15, 2)), [q(-1, 10), q(1, 9), q(0, 1)]);
+    /// ```
+    fn divide_each(nums: &[Self], den: &Self) -> Vec<Self> {
+        let inv = den.recip();
+        nums.iter().map(|x| x.mul_scalar(&inv)).collect()
+    }
 }
 
 /// A [`Field`] with a sign and an `f64` approximation: exact rationals and
@@ -325,6 +341,20 @@ impl Scalar for BigRational {
 impl Field for BigRational {
     fn recip(&self) -> Self {
         num_rational::Ratio::recip(self)
+    }
+
+    /// With `L` the lcm of the numbers' denominators and `den = c/d`:
+    /// `x_k / den = (x_k L d) / (L c)`, integers over one denominator.
+    fn divide_each(nums: &[Self], den: &Self) -> Vec<Self> {
+        use crate::algebra::gcd::{fractions_over, lcm};
+        let common = nums.iter().fold(BigInt::one(), |l, x| lcm(&l, x.denom()));
+        let numers = nums
+            .iter()
+            .map(|x| x.numer() * (&common / x.denom()) * den.denom())
+            .collect();
+        let mut out = vec![BigRational::zero(); nums.len()];
+        fractions_over(numers, common * den.numer(), &mut out);
+        out
     }
 }
 impl Ordered for BigRational {
@@ -542,6 +572,25 @@ mod tests {
             let want = acc * &a + c * &x;
             prop_assert_eq!(got.numer(), want.numer());
             prop_assert_eq!(got.denom(), want.denom());
+        }
+
+        /// `divide_each` on rationals is `Ratio`'s division, in lowest
+        /// terms, zero and negative numbers included; so are `recip` and
+        /// `sign_order` (against `Ratio`'s `cmp` with zero).
+        #[test]
+        fn rational_division_of_a_point(
+            nums in prop::collection::vec(prop_oneof![rational(), Just(BigRational::zero())], 1..5),
+            den in rational(),
+        ) {
+            prop_assume!(!den.is_zero());
+            let got = BigRational::divide_each(&nums, &den);
+            for (g, x) in got.iter().zip(&nums) {
+                let want = x / &den;
+                prop_assert_eq!(g.numer(), want.numer());
+                prop_assert_eq!(g.denom(), want.denom());
+            }
+            prop_assert_eq!(Field::recip(&den), BigRational::one() / &den);
+            prop_assert_eq!(den.sign_order(), den.cmp(&BigRational::zero()));
         }
     }
 

@@ -22,6 +22,7 @@
 //! `ω_{0,0} = ω_{1,0} = ω_{0,1} = 1` by an exact rational Möbius map and
 //! scaling (ρ = ω_{0,0}/ω_{1,0}, σ = ω_{0,0}/ω_{0,1}, k = 1/ω_{0,0}).
 
+use crate::algebra::limbs::push_decimal;
 use crate::algebra::scalar::Ordered;
 use crate::algebra::RealAlgebraic;
 use crate::coincide::minimal::{certified_minimal, minimal_net, Net, Reducible};
@@ -33,7 +34,7 @@ use rayon::prelude::*;
 use sha2::{Digest, Sha256};
 use std::cmp::Ordering;
 use std::collections::HashMap;
-use std::fmt::{self, Write as _};
+use std::fmt;
 use std::hash::{BuildHasherDefault, Hasher};
 
 mod small;
@@ -205,11 +206,13 @@ pub const KEY_VERSION: &str = "eb1";
 
 pub(super) fn push_rational(out: &mut String, q: &BigRational) {
     // `BigRational` is kept in lowest terms with a positive denominator.
-    let _ = if q.is_integer() {
-        write!(out, "{}", q.numer())
-    } else {
-        write!(out, "{}/{}", q.numer(), q.denom())
-    };
+    let limbs = |n: &num_bigint::BigInt| n.magnitude().iter_u64_digits().collect();
+    let negative = q.numer().sign() == num_bigint::Sign::Minus;
+    push_decimal(out, negative, limbs(q.numer()));
+    if !q.is_integer() {
+        out.push('/');
+        push_decimal(out, false, limbs(q.denom()));
+    }
 }
 
 /// `q` as in the key text.

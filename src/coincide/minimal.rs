@@ -396,13 +396,15 @@ pub(crate) fn certified_minimal(net: &Net<BigRational>) -> bool {
 fn bernstein_mod_p(net: &Net<BigRational>) -> Option<FpGrids> {
     let (m, n) = (net.len() - 1, net[0].len() - 1);
     let comps = net[0][0].coords.len();
-    let mut data = Vec::with_capacity(comps * (m + 1) * (n + 1));
+    let mut numbers = Vec::with_capacity(comps * (m + 1) * (n + 1));
     for c in 0..comps {
-        for h in net.iter().flatten() {
-            data.push(Fp::from_rational_checked(&h.coords[c])?);
-        }
+        numbers.extend(net.iter().flatten().map(|h| &h.coords[c]));
     }
-    Some(FpGrids::new(data, comps, (m, n)))
+    Some(FpGrids::new(
+        Fp::from_rationals_checked(&numbers)?,
+        comps,
+        (m, n),
+    ))
 }
 
 /// The net of bidegree `(k, l)` whose degree elevation is `net`, or `None`

@@ -59,8 +59,7 @@ impl<T: Ordered> Prepared<T> {
             for h in row {
                 match scale_of(h) {
                     Some(s) => {
-                        let inv = s.recip();
-                        hr.push(Some(h.coords.iter().map(|c| c.mul_scalar(&inv)).collect()));
+                        hr.push(Some(T::divide_each(&h.coords, &s)));
                         sr.push(s);
                     }
                     None => {

@@ -11,6 +11,7 @@
 //! ((b/g₂)(d/g₁))` with `g₁ = gcd(a, d)`, `g₂ = gcd(c, b)`).
 
 use crate::algebra::gcd::{gcd_u128, gcd_u64};
+use crate::algebra::limbs::push_word;
 use crate::algebra::modp::Fp;
 use crate::coincide::certificate::FpGrids;
 use crate::coincide::minimal::Net;
@@ -201,24 +202,6 @@ fn push_int(out: &mut String, v: i128) {
         return;
     }
     push_word(out, u);
-}
-
-/// The word `u` in decimal.
-fn push_word(out: &mut String, mut u: u64) {
-    let mut digits = [0u8; 20];
-    let mut at = digits.len();
-    loop {
-        at -= 1;
-        digits[at] = b'0' + (u % 10) as u8;
-        u /= 10;
-        if u == 0 {
-            break;
-        }
-    }
-    // ASCII digits: always UTF-8, appended as one slice.
-    if let Ok(text) = std::str::from_utf8(&digits[at..]) {
-        out.push_str(text);
-    }
 }
 
 /// Lexicographic order of two equally long sequences; `None` on overflow.

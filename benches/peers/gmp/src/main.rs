@@ -18,7 +18,8 @@
 //! "gcd_vs_gmp": worst, "gcd": {…}, "key_vs_gmp": worst, "key": {…}}`,
 //! nanoseconds per point (per gcd, per key), the best of `--repeat` passes
 //! over the batch (the two sides alternately).
-//! `--only TEXT` runs the cases whose name contains `TEXT`.
+//! `--only TEXT` runs the evaluation and key cases whose name contains
+//! `TEXT` (the gcd rows always run).
 
 use exact_bezier::algebra::parse_rational;
 use exact_bezier::eval::Evaluator;
@@ -367,7 +368,7 @@ fn main() {
         .values()
         .filter_map(|c| c["ratio"].as_f64())
         .fold(0.0, f64::max);
-    let keys = key::key_cases(points, repeat, &mut rng);
+    let keys = key::key_cases(points, repeat, only.as_deref(), &mut rng);
     let key_worst = keys
         .values()
         .filter_map(|c| c["ratio"].as_f64())
