@@ -295,9 +295,12 @@ fn text_head(curve: bool, (m, n): (usize, usize)) -> String {
     format!("{KEY_VERSION};{kind};{m},{n};P=")
 }
 
-/// The key text of a patch ([`CanonicalKey::text`]), by a machine-integer
-/// fast path when the net is certified minimal and its numbers are small
-/// (the common case), else through [`canonical_key`]. Same text either way.
+/// The key text of a patch ([`CanonicalKey::text`]). A net certified
+/// minimal (modulo p, the common case) is keyed without reduction: its
+/// points compared in machine integers when they fit `i128`, with the
+/// weight invariants in machine integers too or, when those leave `i128`,
+/// over Q; a net whose points do not fit takes the general path over Q;
+/// an uncertified one goes through [`canonical_key`]. Same text every way.
 ///
 /// ```
 /// use exact_bezier::{coincide::canonical_key, coincide::canonical_text, Patch, RectPatch, ratio};
