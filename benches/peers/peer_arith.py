@@ -10,12 +10,12 @@ by term, and prints a table of medians and a final JSON line::
     {"symbolic_vs_flint": worst ours/FLINT, "sylvester_vs_flint": worst
      ours/FLINT on the resultants, "exact_vs_gmp": worst ours/GMP,
      "gcd_vs_gmp": worst ours/GMP, "key_vs_gmp": worst ours/GMP,
-     "prove_seconds": s, ...}
+     "roots_vs_gmp": worst ours/GMP, "prove_seconds": s, ...}
 
 ``--prove EXE`` times ``EXE prove`` (the release CLI) once per round.
 ``--gmp EXE`` runs the GMP harness (``benches/peers/gmp``: exact evaluation,
-gcds and the coincidence key by rug next to ours, results checked identical
-there) once per round and takes each case's median.
+gcds, the coincidence key and real root isolation by rug next to ours,
+results checked there) once per round and takes each case's median.
 """
 
 import argparse
@@ -327,7 +327,7 @@ def main():
             run = subprocess.run([args.gmp, "--repeat", str(args.repeat)], check=True,
                                  capture_output=True, text=True).stdout
             line = json.loads(run.splitlines()[-1])
-            for name, case in {**line["cases"], **line["gcd"], **line["key"]}.items():
+            for name, case in {**line["cases"], **line["gcd"], **line["key"], **line["roots"]}.items():
                 gmp.setdefault(name, []).append((case["ours_ns"], case["gmp_ns"]))
         mine = ours(args.ours, path, args.repeat)
         runs = [(n, lambda t=t, k=k: flint_power(t, k, args.repeat)) for n, t, k in cs]
@@ -361,7 +361,7 @@ def main():
             "sylvester_ratios": {n: ratios[n] for n in sylvester},
             "allocator": args.allocator}
     if gmp:
-        print(f"\n{'exact evaluation (per point), gcd, key':<44} {'ours ns':>9} {'GMP ns':>9} {'ours/GMP':>9}")
+        print(f"\n{'exact evaluation (per point), gcd, key, roots':<44} {'ours ns':>9} {'GMP ns':>9} {'ours/GMP':>9}")
         exact = {}
         for name, runs in gmp.items():
             a = statistics.median(o for o, _ in runs)
@@ -370,13 +370,16 @@ def main():
             print(f"{name:<44} {a:>9.0f} {b:>9.0f} {a / b:>9.2f}")
         gcd = {n: r for n, r in exact.items() if n.startswith("gcd")}
         key = {n: r for n, r in exact.items() if n.startswith("key")}
-        exact = {n: r for n, r in exact.items() if n not in gcd and n not in key}
+        roots = {n: r for n, r in exact.items() if n.startswith("roots")}
+        exact = {n: r for n, r in exact.items() if n not in gcd and n not in key and n not in roots}
         line["exact_vs_gmp"] = max(exact.values())
         line["exact_ratios"] = exact
         line["gcd_vs_gmp"] = max(gcd.values())
         line["gcd_ratios"] = gcd
         line["key_vs_gmp"] = max(key.values())
         line["key_ratios"] = key
+        line["roots_vs_gmp"] = max(roots.values())
+        line["roots_ratios"] = roots
     if prove:
         line["prove_seconds"] = round(statistics.median(prove), 3)
         print(f"exact-bezier prove: {line['prove_seconds']} s (median of {len(prove)})")

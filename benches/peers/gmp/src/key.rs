@@ -21,13 +21,13 @@
 //! maps and weight scaling (made by our library): on both sides a copy must
 //! get its original's key.
 
-use crate::{interleaved, round3, Case, Lcg, Shape};
+use crate::{interleaved, record, Case, Lcg, Shape};
 use exact_bezier::coincide::{canonical_text, Symmetry};
 use exact_bezier::io::read_patches;
 use exact_bezier::{Patch, RationalCurve, RectPatch};
 use num_rational::BigRational;
 use rug::Rational;
-use serde_json::{json, Map, Value};
+use serde_json::{Map, Value};
 use std::cmp::Ordering;
 
 /// A net as the GMP side holds it: row-major homogeneous control points
@@ -276,14 +276,7 @@ pub fn key_cases(
             assert_eq!(ours, theirs, "{name}: key texts differ");
             let half = patches.len() / 2;
             assert_eq!(ours[..half], ours[half..], "{name}: a copy's key differs");
-            eprintln!(
-                "{name:<44} ours {a:>9.0} ns  GMP {b:>9.0} ns  ours/GMP {:.2}",
-                a / b
-            );
-            out.insert(
-                name,
-                json!({"ours_ns": a.round(), "gmp_ns": b.round(), "ratio": round3(a / b)}),
-            );
+            record(&mut out, name, (a, b));
         }
     }
     out

@@ -12,14 +12,16 @@
 //! ```
 //!
 //! Then our Lehmer gcd against `mpz_gcd` on operands of 64 to 1 024 bits,
-//! and the coincidence key ([`key`]) of cubic curves and bicubics.
+//! the coincidence key ([`key`]) of cubic curves and bicubics, and the
+//! root isolation step of intersections ([`roots`]).
 //! Prints a table on standard error and one JSON line on standard output:
 //! `{"exact_vs_gmp": worst ours/GMP, "cases": {name: {"ours_ns", "gmp_ns", "ratio"}},
-//! "gcd_vs_gmp": worst, "gcd": {…}, "key_vs_gmp": worst, "key": {…}}`,
-//! nanoseconds per point (per gcd, per key), the best of `--repeat` passes
+//! "gcd_vs_gmp": worst, "gcd": {…}, "key_vs_gmp": worst, "key": {…},
+//! "roots_vs_gmp": worst, "roots": {…}}`, nanoseconds per point (per gcd,
+//! per key, per polynomial), the best of `--repeat` passes
 //! over the batch (the two sides alternately).
-//! `--only TEXT` runs the evaluation and key cases whose name contains
-//! `TEXT` (the gcd rows always run).
+//! `--only TEXT` runs the evaluation, key and root cases whose name
+//! contains `TEXT` (the gcd rows always run).
 
 use exact_bezier::algebra::parse_rational;
 use exact_bezier::eval::Evaluator;
@@ -32,6 +34,7 @@ use serde_json::{json, Map, Value};
 use std::time::Instant;
 
 mod key;
+mod roots;
 
 /// A 64-bit linear congruential generator: the same inputs on every run.
 struct Lcg(u64);
@@ -350,34 +353,26 @@ fn main() {
                     continue;
                 }
                 let (ours, gmp) = run(&case, points, repeat);
-                let ratio = ours / gmp;
-                worst = worst.max(ratio);
-                eprintln!(
-                    "{:<44} ours {:>9.0} ns  GMP {:>9.0} ns  ours/GMP {:.2}",
-                    case.name, ours, gmp, ratio
-                );
-                cases.insert(
-                    case.name,
-                    json!({"ours_ns": ours.round(), "gmp_ns": gmp.round(), "ratio": round3(ratio)}),
-                );
+                worst = worst.max(ours / gmp);
+                record(&mut cases, case.name, (ours, gmp));
             }
         }
     }
     let gcds = gcd_cases(repeat, &mut rng);
-    let gcd_worst = gcds
-        .values()
-        .filter_map(|c| c["ratio"].as_f64())
-        .fold(0.0, f64::max);
     let keys = key::key_cases(points, repeat, only.as_deref(), &mut rng);
-    let key_worst = keys
-        .values()
-        .filter_map(|c| c["ratio"].as_f64())
-        .fold(0.0, f64::max);
+    let roots = roots::root_cases(repeat, only.as_deref(), &mut rng);
     println!(
         "{}",
-        json!({"exact_vs_gmp": round3(worst), "cases": cases, "gcd_vs_gmp": gcd_worst, "gcd": gcds,
-               "key_vs_gmp": key_worst, "key": keys})
+        json!({"exact_vs_gmp": round3(worst), "cases": cases, "gcd_vs_gmp": worst_of(&gcds), "gcd": gcds,
+               "key_vs_gmp": worst_of(&keys), "key": keys, "roots_vs_gmp": worst_of(&roots), "roots": roots})
     );
+}
+
+/// The largest ratio of a set of rows (0 for none).
+fn worst_of(rows: &Map<String, Value>) -> f64 {
+    rows.values()
+        .filter_map(|c| c["ratio"].as_f64())
+        .fold(0.0, f64::max)
 }
 
 fn round3(x: f64) -> f64 {
@@ -425,17 +420,22 @@ fn gcd_cases(repeat: usize, rng: &mut Lcg) -> Map<String, Value> {
         for (x, y) in g_ours.iter().zip(&g_gmp) {
             assert_eq!(x.to_string(), y.to_string(), "gcds differ");
         }
-        let name = format!("gcd, {bits}-bit operands");
-        eprintln!(
-            "{name:<44} ours {a:>9.0} ns  GMP {b:>9.0} ns  ours/GMP {:.2}",
-            a / b
-        );
-        out.insert(
-            name,
-            json!({"ours_ns": a.round(), "gmp_ns": b.round(), "ratio": round3(a / b)}),
-        );
+        record(&mut out, format!("gcd, {bits}-bit operands"), (a, b));
     }
     out
+}
+
+/// Print a row of the table and enter it into `rows`: ours and GMP's time
+/// in ns and their ratio.
+fn record(rows: &mut Map<String, Value>, name: String, (ours, gmp): (f64, f64)) {
+    eprintln!(
+        "{name:<44} ours {ours:>9.0} ns  GMP {gmp:>9.0} ns  ours/GMP {:.2}",
+        ours / gmp
+    );
+    rows.insert(
+        name,
+        json!({"ours_ns": ours.round(), "gmp_ns": gmp.round(), "ratio": round3(ours / gmp)}),
+    );
 }
 
 /// Both sides on one case, results checked identical: (ours, GMP) in ns per point.
