@@ -6,13 +6,17 @@
 //! `P ↦ 2^d P(x/2)` and `P ↦ 2^d P((x + 1)/2)` (Taylor shifts, additions
 //! only), dyadic intervals.
 //!
-//! The inputs are square-free integer polynomials with no root at a dyadic
-//! number: products of `a x² − b` with `b/a` in `(0, 1)` and not a square
-//! (one root in `(0, 1)` each). The GMP side is told so; ours still
-//! computes the square-free part (a check modulo p) and tests each root
-//! for a rational value, as `intersect` needs. The check: the same number
-//! of roots, and the k-th intervals of both sides meet (each isolates the
-//! k-th root).
+//! The inputs are square-free integer polynomials with no root at a
+//! dyadic number: random ones with 10-digit coefficients (like the
+//! eliminants of intersections: few roots in `(0, 1)`, and no rational
+//! root, which a test modulo small primes shows at once), and products of
+//! `a x² − b` with `b/a` in `(0, 1)` and not a square (one root in
+//! `(0, 1)` each; a root modulo every small prime, so that the
+//! rational-root test of each root has to refine it). The GMP side is told
+//! so; ours still computes the square-free part (a check modulo p) and
+//! tests each root for a rational value, as `intersect` needs. The check:
+//! the same number of roots, and the k-th intervals of both sides meet
+//! (each isolates the k-th root).
 
 use crate::{interleaved, record, Lcg};
 use exact_bezier::algebra::{RealAlgebraic, UPoly};
@@ -48,6 +52,7 @@ fn isolate(p: Vec<Integer>) -> Vec<(Rational, Rational)> {
     let mut out = Vec::new();
     let mut stack = vec![(p, Integer::from(0), 0u32)];
     while let Some((p, c, k)) = stack.pop() {
+        assert!(k < 400, "no isolation: the polynomial is not square-free");
         match variations(&p) {
             0 => {}
             1 => {
@@ -106,16 +111,43 @@ fn factors(m: usize, rng: &mut Lcg) -> Vec<(i64, i64)> {
     out
 }
 
-/// The root rows: 64 polynomials each of degree 8 and 18 (4 and 9 roots
-/// in `(0, 1)`), those whose name contains `only`: ns per polynomial.
+/// A polynomial of degree `d` with random 10-digit coefficients.
+fn random(d: usize, rng: &mut Lcg) -> Vec<Integer> {
+    (0..=d)
+        .map(|_| {
+            let sign = if rng.next() % 2 == 0 { "" } else { "-" };
+            format!("{sign}{}", rng.digits(10))
+                .parse()
+                .expect("an integer")
+        })
+        .collect()
+}
+
+/// The root rows, 64 polynomials each, those whose name contains `only`:
+/// ns per polynomial.
 pub fn root_cases(repeat: usize, only: Option<&str>, rng: &mut Lcg) -> Map<String, Value> {
     let mut out = Map::new();
-    for m in [4, 9] {
-        let name = format!("roots in (0, 1), degree {}, {m} roots", 2 * m);
+    type Make = fn(&mut Lcg) -> Vec<Integer>;
+    let cases: [(&str, Make); 4] = [
+        ("degree 9, random 10-digit coefficients", |rng| {
+            random(9, rng)
+        }),
+        ("degree 18, random 10-digit coefficients", |rng| {
+            random(18, rng)
+        }),
+        ("degree 8, 4 quadratic factors", |rng| {
+            product(&factors(4, rng))
+        }),
+        ("degree 18, 9 quadratic factors", |rng| {
+            product(&factors(9, rng))
+        }),
+    ];
+    for (what, make) in cases {
+        let name = format!("roots in (0, 1), {what}");
         if only.is_some_and(|o| !name.contains(o)) {
             continue;
         }
-        let polys: Vec<Vec<Integer>> = (0..64).map(|_| product(&factors(m, rng))).collect();
+        let polys: Vec<Vec<Integer>> = (0..64).map(|_| make(rng)).collect();
         let ours_in: Vec<UPoly<BigRational>> = polys
             .iter()
             .map(|p| {
@@ -145,8 +177,11 @@ pub fn root_cases(repeat: usize, only: Option<&str>, rng: &mut Lcg) -> Map<Strin
             || theirs = polys.iter().map(|p| isolate(p.clone())).collect(),
         );
         for (k, (o, t)) in ours.iter().zip(&theirs).enumerate() {
-            assert_eq!(o.len(), m, "{name}: polynomial {k}: our root count");
-            assert_eq!(t.len(), m, "{name}: polynomial {k}: GMP's root count");
+            assert_eq!(
+                o.len(),
+                t.len(),
+                "{name}: polynomial {k}: root counts differ"
+            );
             for (x, (lo, hi)) in o.iter().zip(t) {
                 let (xlo, xhi) = x.rational_bounds().unwrap_or_else(|| {
                     let q = x.as_rational().expect("bounds or a rational");
