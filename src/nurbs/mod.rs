@@ -32,6 +32,7 @@
 pub use invert::nearest_parameters;
 pub use spanned::{Nurbs, SpannedPatch};
 
+use crate::algebra::gcd::{product, sum};
 use crate::error::Error;
 use crate::hpoint::HPoint;
 use crate::limits::check_degree;
@@ -218,8 +219,11 @@ impl Knots {
     fn bezier_points<T: Scalar>(&self, k: usize, local: &[HPoint<T>]) -> Vec<HPoint<T>> {
         let p = self.degree;
         let (a, b) = (&self.knots[k], &self.knots[k + 1]);
+        // Lehmer's gcd for the knot arithmetic: `Ratio`'s own `-` and `/`
+        // reduce by num-integer's binary gcd, and STEP knots are decimals
+        // with long denominators.
         let coeff = |t: &BigRational, lo: &BigRational, hi: &BigRational| {
-            let a = (t - lo) / (hi - lo);
+            let a = product(&sum(t, &-lo), &sum(hi, &-lo).recip());
             if a.is_zero() {
                 Step::Zero
             } else if a.is_one() {
