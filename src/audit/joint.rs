@@ -42,7 +42,7 @@ use super::certify::closed_form::{Distance, ISurface};
 use super::certify::field::{apply, normal_curvature, DistanceField};
 use super::certify::gap::abs_lower;
 use super::certify::ivec::{add, cross, dot, norm2, scale, IVec};
-use super::certify::maximize::{maximize_until, Bound, Enclosure, Target};
+use super::certify::maximize::{maximize_over, Bound, Enclosure, Target};
 use super::certify::normal_path;
 use super::certify::spline::{curve_over, parts, NormalPath, SplineField};
 use super::certify::{ICurve, Verdict};
@@ -690,37 +690,30 @@ impl Goal {
 }
 
 /// The maximum over all the edge's curves of a measure bounded on piece
-/// `t` of curve `k` by `bound(k, curve, t)`, each curve's cap an equal
-/// share of what is left of `work` when its turn comes (what a curve
-/// decided early did not use goes to the curves after it; until
-/// 2026-11-28 each had `work / n`, and B-spline edges of many pieces
-/// whose first pieces cost little had their angles unproved).
+/// `t` of curve `k` by `bound(k, curve, t)`: one branch and bound over the
+/// pieces of every curve ([`maximize_over`]), within `work`. Until
+/// 2026-11-29 each curve had its own branch and bound, with an equal share
+/// of what was left of `work`, refined to the goal on its own: a curve
+/// whose maximum lay under another's was refined to `1 %` of its own
+/// (a crease's angle along an edge of many pieces), for nothing.
 fn along_by(
     curves: &[ICurve],
     goal: Goal,
     work: u64,
     mut bound: impl FnMut(usize, &ICurve, Interval) -> Result<Option<Bound>, Error>,
 ) -> Result<Measure, Error> {
-    let mut best: Option<(Enclosure, usize)> = None;
-    let start = limits::charged();
-    for (k, c) in curves.iter().enumerate() {
-        let left = work.saturating_sub(limits::charged().saturating_sub(start));
-        let share = left / (curves.len() - k) as u64;
-        let e = capped(share, "a certified measure along an edge", || {
-            maximize_until(
-                Interval { lo: 0.0, hi: 1.0 },
-                goal.target,
-                |upper, lower| goal.decided(upper, lower),
-                |t| bound(k, c, t),
-            )
-        })?;
-        best = Some(match best {
-            Some((b, i)) if b.hi >= e.hi => (b.max(e), i),
-            Some((b, _)) => (e.max(b), k),
-            None => (e, k),
-        });
+    if curves.is_empty() {
+        return Err(Error::Shape("an edge with no curve pieces".into()));
     }
-    let (value, piece) = best.ok_or_else(|| Error::Shape("an edge with no curve pieces".into()))?;
+    let ranges = vec![Interval { lo: 0.0, hi: 1.0 }; curves.len()];
+    let (value, piece) = capped(work, "a certified measure along an edge", || {
+        maximize_over(
+            &ranges,
+            goal.target,
+            |upper, lower| goal.decided(upper, lower),
+            |k, t| bound(k, &curves[k], t),
+        )
+    })?;
     Ok(Measure::Enclosed { value, piece })
 }
 

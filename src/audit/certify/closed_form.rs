@@ -58,7 +58,7 @@ use super::gap::abs_lower;
 use super::ivec::{add, dot, scale, sub, IVec};
 use super::normal_path::ScaledVec;
 use super::Enclose;
-use crate::algebra::interval_bernstein::Scaled;
+use crate::algebra::interval_bernstein::{mul, Scaled};
 use crate::algebra::{Interval, Scalar};
 use crate::analytic::{ClosedForm, Implicit};
 
@@ -223,12 +223,20 @@ impl ISurface {
     /// `r = X − W o` (`o` the frame's origin or the sphere's centre) and
     /// `(a, b, h)` its frame coordinates: the plane's `ẑ`, the cylinder's
     /// radial part `a x̂ + b ŷ` (`W ρ n̂`) and the sphere's `r`
-    /// (`W |P − C| n̂`), exactly. The cone's `n̂ ∝ (a, b, ∓kρ)` is not a
-    /// polynomial; `a x̂ + b ŷ − k m ẑ` with `m W = R W + k h` is, and
-    /// differs from it only in `|ρ − |m|| = |s| √(1 + k²)`, so by an angle
-    /// of at most `|k| √(1 + k²) g / ρ` for a curve within `g` of the cone
-    /// whose points over the piece are the box `over`. `None` for a torus,
-    /// or a cone piece that reaches its axis.
+    /// (`W |P − C| n̂`), exactly. The cone's `n̂ ∝ T = (a, b, −σkρ)`
+    /// (`σ` the sign of `m = R + k h` over the piece, `ρ = √(a² + b²)`) is
+    /// not a polynomial; `N = σ (2ma, 2mb, −k(m² + ρ²))` (times `W²`) is,
+    /// and `N = 2|m| T − σ k (|m| − ρ)² ẑ`: off `T` only in the square of
+    /// `|ρ − |m|| = |s| √(1 + k²)`, so `sin θ ≤ |k| g² √(1 + k²) / (2|m|ρ)`
+    /// for a curve within `g` of the cone whose points over the piece are
+    /// the box `over` (the slack is `π/2` times that: `θ ≤ (π/2) sin θ`
+    /// below a right angle). Until 2026-11-29 the path was
+    /// `(a, b, −km)`, off by up to `|k| √(1 + k²) g / ρ`: linear in the
+    /// gap, `1.3·10⁻⁶` rad on creases of `tail_section_asm.stp` whose
+    /// cones lie `5·10⁻⁵` mm off their edges, more than the `1 %` of a
+    /// `7·10⁻⁵` rad crease its angle is refined to, so the refinement ran
+    /// to its work cap. `None` for a torus, or a cone piece that reaches
+    /// its axis or the apex's plane.
     pub fn normal_along(
         &self,
         c: &[Scaled],
@@ -249,7 +257,7 @@ impl ISurface {
         };
         let frame = |v: [&Scaled; 3]| -> ScaledVec {
             [0, 1, 2].map(|k| {
-                (0..c[3].len())
+                (0..v[0].len())
                     .map(|i| {
                         (0..3).fold(Interval::point(0.0), |acc, j| {
                             acc.add(&v[j][i].mul(&self.axes[j][k]))
@@ -269,25 +277,46 @@ impl ISurface {
             }
             Kind::Sphere { .. } => Some((r, 0.0)),
             Kind::Cone { radius, slope } => {
-                let [a, b, _] = self.local(over);
+                let [a, b, h] = self.local(over);
                 let rho = a.sqr().add(&b.sqr()).sqrt()?.lo;
+                let m = radius.add(&slope.mul(&h));
+                let (sign, least_m) = if m.lo > 0.0 {
+                    (1.0, m.lo)
+                } else if m.hi < 0.0 {
+                    (-1.0, -m.hi)
+                } else {
+                    return None;
+                };
                 if rho <= 0.0 {
                     return None;
                 }
-                let height = along(&self.axes[2]);
-                let vertical: Scaled = height
+                let (x, y) = (along(&self.axes[0]), along(&self.axes[1]));
+                let m: Scaled = along(&self.axes[2])
                     .iter()
                     .zip(&c[3])
-                    .map(|(h, w)| slope.mul(&radius.mul(w).add(&slope.mul(h))).neg())
+                    .map(|(h, w)| radius.mul(w).add(&slope.mul(h)))
+                    .collect();
+                let twice = Interval::point(2.0 * sign);
+                let radial =
+                    |r: &Scaled| -> Scaled { mul(&m, r).iter().map(|v| v.mul(&twice)).collect() };
+                let factor = slope.mul(&Interval::point(sign)).neg();
+                let vertical: Scaled = mul(&m, &m)
+                    .iter()
+                    .zip(mul(&x, &x).iter().zip(&mul(&y, &y)))
+                    .map(|(mm, (xx, yy))| mm.add(xx).add(yy).mul(&factor))
                     .collect();
                 let norm = Interval::point(1.0).add(&slope.sqr()).sqrt()?;
-                let slack = Interval::point(slope.mag())
+                let gap = Interval::point(g);
+                let sine = Interval::point(slope.mag())
+                    .mul(&gap.sqr())
                     .mul(&norm)
-                    .mul(&Interval::point(g))
-                    .div(&Interval::point(rho))?
+                    .div(&Interval::point(2.0 * least_m).mul(&Interval::point(rho)))?
                     .hi;
-                let n = frame([&along(&self.axes[0]), &along(&self.axes[1]), &vertical]);
-                slack.is_finite().then_some((n, slack))
+                let slack = Interval::point(std::f64::consts::FRAC_PI_2)
+                    .mul(&Interval::point(sine))
+                    .hi;
+                let n = frame([&radial(&x), &radial(&y), &vertical]);
+                (sine < 1.0 && slack.is_finite()).then_some((n, slack))
             }
             Kind::Torus { .. } => None,
         }
@@ -500,7 +529,8 @@ mod tests {
     /// `g = δ/√(1 + ¼)` from it, where the foot normal is
     /// `(1, 0, −½)/√(1 + ¼)` all along (independently: the generator's
     /// direction `(½, 0, 1)` is perpendicular to it). The normal path is
-    /// exact on the generator (`δ = 0`) and within its slack off it.
+    /// exact on the generator (`δ = 0`) and within its slack off it, which
+    /// is of the order of `δ²`.
     #[test]
     fn a_cone_s_normal_path_is_within_its_slack() {
         use crate::algebra::interval_bernstein::scale as scaled;
@@ -531,10 +561,14 @@ mod tests {
             if delta == 0.0 {
                 assert!(slack < 1e-300 && upper < 1e-14, "{upper} {slack}");
             } else {
-                // Off by about kδ/(ρ(1 + k²)) = 4·10⁻⁴ at t = 0; the slack,
-                // k√(1 + k²)·g/ρ = 5·10⁻⁴, covers it.
+                // Off by kδ²/(2mρ(1 + k²)) = 2.0·10⁻⁷ at t = 0 (m = 1,
+                // ρ = 1 + δ: the error kδ² along ẑ, seen at the angle
+                // whose cosine is 1/√(1 + k²)); the slack, (π/2)·k√(1 + k²)·g²/(2mρ) with
+                // g² = δ²/(1 + k²) and the least m and ρ of the box,
+                // 3.5·10⁻⁷, covers it (the path of before, (a, b, −km),
+                // was off by 4·10⁻⁴).
                 assert!(
-                    upper > 3.9e-4 && upper <= slack && slack < 5.1e-4,
+                    upper > 1.99e-7 && upper <= slack && slack < 3.6e-7,
                     "{upper} {slack}"
                 );
             }

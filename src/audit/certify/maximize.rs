@@ -100,12 +100,40 @@ pub fn maximize_until(
     decided: impl Fn(f64, f64) -> bool,
     mut bound: impl FnMut(Interval) -> Result<Option<Bound>, Error>,
 ) -> Result<Enclosure, Error> {
+    let (e, _) = maximize_over(&[range], target, decided, |_, t| bound(t))?;
+    Ok(e)
+}
+
+/// [`maximize_until`] of one quantity over several ranges at once (the
+/// Bézier pieces of an edge): one branch and bound whose pieces are those
+/// of every range, `bound(k, T)` bounding piece `T` of range `k`, so the
+/// splitting goes where the greatest upper bound is, whichever range it
+/// is in, and a range whose bound is under what another already proves is
+/// not refined at all. Returns the enclosure of the maximum over all the
+/// ranges and the range of the greatest upper bound (`at` is in it: the
+/// hull of that range's pieces whose upper bound reaches `L`).
+///
+/// # Errors
+///
+/// Those of [`maximize`].
+pub fn maximize_over(
+    ranges: &[Interval],
+    target: Target,
+    decided: impl Fn(f64, f64) -> bool,
+    mut bound: impl FnMut(usize, Interval) -> Result<Option<Bound>, Error>,
+) -> Result<(Enclosure, usize), Error> {
     let mut pieces: BinaryHeap<Piece> = BinaryHeap::new();
     let mut lower = f64::NEG_INFINITY;
-    let mut todo = vec![Piece {
-        upper: f64::INFINITY,
-        t: range,
-    }];
+    let mut todo: Vec<Piece> = ranges
+        .iter()
+        .enumerate()
+        .rev()
+        .map(|(range, &t)| Piece {
+            upper: f64::INFINITY,
+            t,
+            range,
+        })
+        .collect();
     loop {
         while let Some(parent) = todo.pop() {
             if let Err(e) = limits::charge("a certified measure along an edge", WORK_PER_PIECE) {
@@ -115,7 +143,7 @@ pub fn maximize_until(
                 return enclosure(&pieces, lower, false).ok_or(e);
             }
             let t = parent.t;
-            let upper = match bound(t)? {
+            let upper = match bound(parent.range, t)? {
                 Some(b) => {
                     lower = lower.max(b.lower);
                     b.upper.min(parent.upper)
@@ -128,9 +156,10 @@ pub fn maximize_until(
                 }
                 None => parent.upper,
             };
-            pieces.push(Piece { upper, t });
+            pieces.push(Piece { upper, ..parent });
         }
-        let Piece { upper, t } = *pieces.peek().expect("at least one piece");
+        let top = *pieces.peek().expect("at least one piece");
+        let (upper, t) = (top.upper, top.t);
         let done = upper.is_finite() && upper - lower <= target.rel * upper + target.abs;
         if done || (upper.is_finite() && decided(upper, lower)) || t.width() < MIN_PIECE {
             return Ok(enclosure(&pieces, lower, done).expect("a finite upper bound"));
@@ -138,40 +167,46 @@ pub fn maximize_until(
         pieces.pop();
         let m = t.mid();
         todo.push(Piece {
-            upper,
             t: Interval { lo: t.lo, hi: m },
+            ..top
         });
         todo.push(Piece {
-            upper,
             t: Interval { lo: m, hi: t.hi },
+            ..top
         });
     }
 }
 
 /// The enclosure the pieces prove: the greatest upper bound, the greatest
-/// lower bound, where; `None` while some piece is unbounded.
-fn enclosure(pieces: &BinaryHeap<Piece>, lower: f64, tight: bool) -> Option<Enclosure> {
+/// lower bound, where (in the range of the greatest upper bound), and that
+/// range; `None` while some piece is unbounded.
+fn enclosure(pieces: &BinaryHeap<Piece>, lower: f64, tight: bool) -> Option<(Enclosure, usize)> {
     let top = pieces.peek()?;
     if !top.upper.is_finite() {
         return None;
     }
     let at = pieces
         .iter()
-        .filter(|p| p.upper >= lower)
+        .filter(|p| p.range == top.range && p.upper >= lower)
         .fold(top.t, |a, p| a.hull(&p.t));
-    Some(Enclosure {
-        lo: lower.max(0.0),
-        hi: top.upper,
-        at,
-        tight,
-    })
+    Some((
+        Enclosure {
+            lo: lower.max(0.0),
+            hi: top.upper,
+            at,
+            tight,
+        },
+        top.range,
+    ))
 }
 
-/// A piece of the edge ordered by its upper bound (greatest first).
+/// A piece `t` of range `range` ordered by its upper bound (greatest
+/// first).
 #[derive(Clone, Copy, Debug)]
 struct Piece {
     upper: f64,
     t: Interval,
+    range: usize,
 }
 
 impl PartialEq for Piece {

@@ -29,9 +29,9 @@
 //!
 //! **The angle.** For `t ∈ [0, 1]`, `θ(t) = atan2(|V(t)|, c(t))`. Where
 //! the Bernstein coefficients `c_l` of `c` are all positive,
-//! `V_k / c = Σ (c_l B_l / c)(V_{k,l} / c_l)` is a convex combination
-//! (the rational convex hull property), so
-//! `tan θ ≤ √(Σ_k max_l (V_{k,l}/c_l)²)` ([`angle_between`]).
+//! `V / c = Σ (c_l B_l / c)(V_l / c_l)` is a convex combination of the
+//! vectors `V_l / c_l` (the rational convex hull property), so
+//! `tan θ = |V/c| ≤ max_l |V_l|/c_l` ([`angle_between`]).
 //! Elsewhere (a crease near a right angle or beyond, where `c` changes
 //! sign) the Bernstein hulls of `c`, `|n₁|²` and `|n₂|²` bound
 //! `cos θ = c/(|n₁||n₂|)` from below over the piece.
@@ -124,20 +124,24 @@ fn dot(n1: &ScaledVec, n2: &ScaledVec) -> Scaled {
     add(&add(&x, &y), &z)
 }
 
-/// `atan √(Σ_k max_l (V_{k,l}/c_l)²)` for the Bernstein coefficients `c`
-/// of `n₁·n₂`, all positive, and `V = n₁ × n₂` in scaled form (the
-/// rational convex hull property, see the module documentation).
+/// `atan max_l |V_l|/c_l` for the Bernstein coefficients `c` of `n₁·n₂`,
+/// all positive, and `V = n₁ × n₂` in scaled form, `|V_l|` the length of
+/// its `l`-th coefficient vector: `V/c = Σ_l λ_l (V_l/c_l)` with weights
+/// `λ_l = c_l B_l / c ≥ 0` of sum 1 (the rational convex hull property),
+/// so `|V/c| ≤ Σ_l λ_l |V_l/c_l|` (the triangle inequality). The vectors
+/// `V_l/c_l` approach the curve `V/c` like the square of the piece's
+/// length, whatever way `V` turns along it (bounding each component's
+/// largest `|V_{k,l}/c_l|` on its own, as until 2026-11-29, is tight only
+/// like its length where `V` turns: a crease along a curved edge).
 fn tangent_bound(v: &ScaledVec, c: &[Interval]) -> Option<f64> {
-    let mut tan2 = Interval::point(0.0);
-    for vk in v {
-        let most = unscale(vk)?
-            .iter()
-            .zip(c)
-            .map(|(x, cl)| x.div(&Interval::point(cl.lo)).map(|r| r.mag()))
-            .try_fold(0.0_f64, |m, r| r.map(|r| m.max(r)))?;
-        tan2 = tan2.add(&Interval::point(most).sqr());
+    let [x, y, z] = [0, 1, 2].map(|k| unscale(&v[k]));
+    let (x, y, z) = (x?, y?, z?);
+    let mut most = 0.0_f64;
+    for (l, cl) in c.iter().enumerate() {
+        let length = x[l].sqr().add(&y[l].sqr()).add(&z[l].sqr()).sqrt()?;
+        most = most.max(length.div(&Interval::point(cl.lo))?.hi);
     }
-    Some(polar_angle(&tan2.sqrt()?, &Interval::point(1.0)).hi)
+    Some(polar_angle(&Interval::point(most), &Interval::point(1.0)).hi)
 }
 
 /// `acos` of a lower bound of `cos θ = n₁·n₂/(|n₁||n₂|)` over the piece:
