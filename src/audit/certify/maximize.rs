@@ -272,6 +272,32 @@ mod tests {
         assert!(early * 5 < full, "{early} pieces against {full}");
     }
 
+    /// Two ranges, the constants 1 and 2 bounded like [`linear`]: once
+    /// the second proves a lower bound of 2, the first (upper bound 2 on
+    /// the whole range) is never split; the maximum is the second's.
+    #[test]
+    fn a_range_under_another_s_lower_bound_is_not_refined() {
+        let mut calls = [0u32; 2];
+        let (e, range) = maximize_over(
+            &[UNIT, UNIT],
+            TARGET,
+            |u, l| l > 1.5 && u - l <= 1e-2 * u,
+            |k, t| {
+                calls[k] += 1;
+                let c = (k + 1) as f64;
+                Ok(Some(Bound {
+                    upper: c + (t.hi - t.lo),
+                    lower: c,
+                }))
+            },
+        )
+        .unwrap();
+        assert_eq!(range, 1);
+        assert!(e.lo <= 2.0 && 2.0 <= e.hi && e.hi - e.lo <= 1e-2 * e.hi, "{e:?}");
+        assert_eq!(calls[0], 1, "{calls:?}");
+        assert!(calls[1] > 1, "{calls:?}");
+    }
+
     #[test]
     fn decided_is_not_asked_before_every_piece_is_bounded() {
         let mut first = true;
