@@ -152,15 +152,6 @@ enum Field<'s> {
 }
 
 impl Field<'_> {
-    /// Is the face's normal along an edge a polynomial
-    /// ([`Field::normal_path`])?
-    fn has_normal_path(&self) -> bool {
-        match self {
-            Field::Closed(s) => s.has_normal_path(),
-            Field::Spline(_) => true,
-        }
-    }
-
     /// The face's normal along part `t` of the curve as a polynomial: a
     /// closed form's at the foot points themselves (no slack), a B-spline's
     /// by composition ([`SplineField::normal_over`]); `gap` bounds the
@@ -521,20 +512,6 @@ impl Proved {
     }
 }
 
-/// The maximum of a measure bounded on each piece of the edge by `f`
-/// from what [`around`] proves there.
-fn along(
-    curves: &[ICurve],
-    fields: Fields<'_>,
-    proved: &Proved,
-    (goal, work): (Goal, u64),
-    f: impl Fn(&Around) -> Option<Bound> + Copy,
-) -> Result<Measure, Error> {
-    along_by(curves, goal, work, |k, c, t| {
-        Ok(proved.around(k, c, fields, t)?.and_then(|a| f(&a)))
-    })
-}
-
 /// The gap to a B-spline face by [`SplineField::gap_over`]: at most
 /// `|C − S∘p|`; at least 0 (a foot found by Newton may be a stationary
 /// point other than the nearest, so its distance is no lower bound: an
@@ -550,7 +527,8 @@ fn spline_gap(curves: &[ICurve], field: &SplineField<'_>, goal: Goal) -> Result<
 /// The angle between the faces over piece `t` of `curve` from their
 /// normal paths ([`super::certify::normal_path`]), on each part between
 /// the knot lines the feet cross on either face: at most the paths' angle
-/// plus both slacks, at least its value at a part's midpoint less them.
+/// plus both slacks, at least its greatest value at a part's ends and
+/// midpoint less them.
 /// `gaps` bound the distances from the edge to the faces; `reversed` when
 /// one face's orientation is opposite its surface's.
 /// `None` when a part is not proved (the caller splits `t`).
@@ -570,10 +548,12 @@ fn composed_angle(
             b.normal
         };
         let (upper, mid) = normal_path::angle_between(&a.normal, &second)?;
+        let [start, end] = normal_path::angle_at_ends(&a.normal, &second);
+        let value = mid.lo.max(start.lo).max(end.lo);
         let slack = Interval::point(a.slack).add(&Interval::point(b.slack));
         Some(Bound {
             upper: Interval::point(upper).add(&slack).hi,
-            lower: Interval::point(mid.lo).sub(&slack).lo,
+            lower: Interval::point(value).sub(&slack).lo,
         })
     })
 }
@@ -935,7 +915,7 @@ fn measure_capped(
     let angle = match within_cap(exact)? {
         Some(Some(true)) => Measure::Exact,
         Some(Some(false)) => fold(),
-        Some(None) if [&s0, &s1].iter().all(|f| f.has_normal_path()) => {
+        Some(None) => {
             let reversed = faces[0].same_sense != faces[1].same_sense;
             let gaps = gap.map(|g| match g {
                 Measure::Exact => 0.0,
@@ -954,9 +934,6 @@ fn measure_capped(
                 },
             ))?
         }
-        Some(None) => settle(along(&curves, fields, &proved, (angular, work), |a| {
-            Some(angle_bound(a, fields, signs))
-        }))?,
         None => Measure::Unproved,
     };
     let (g0, g1) = (

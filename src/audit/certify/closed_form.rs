@@ -211,12 +211,6 @@ impl ISurface {
         )
     }
 
-    /// Does [`ISurface::normal_along`] give the normal along a curve (a
-    /// plane, cylinder, sphere or cone)?
-    pub fn has_normal_path(&self) -> bool {
-        !matches!(self.kind, Kind::Torus { .. })
-    }
-
     /// The foot normal `n̂(C(t))` times a positive polynomial, along the
     /// curve whose homogeneous coordinates `(X, W)` are the scaled forms
     /// `c` ([`super::normal_path`]), with the angle it may be off by. With
@@ -235,8 +229,19 @@ impl ISurface {
     /// gap, `1.3·10⁻⁶` rad on creases of `tail_section_asm.stp` whose
     /// cones lie `5·10⁻⁵` mm off their edges, more than the `1 %` of a
     /// `7·10⁻⁵` rad crease its angle is refined to, so the refinement ran
-    /// to its work cap. `None` for a torus, or a cone piece that reaches
-    /// its axis or the apex's plane.
+    /// to its work cap. The torus's foot normal (on the part of the circles
+    /// of radius `r` about `ρ = R`, orientation `ε`) is
+    /// `ε ((ρ − R)a/ρ, (ρ − R)b/ρ, h)/q`, `q` the distance from the circle;
+    /// with `p₀` the middle of `ρ` over the box,
+    /// `N = ε ((p₀² + ρ² − 2p₀R)a, (p₀² + ρ² − 2p₀R)b, (p₀² + ρ²)h)`
+    /// (times `W³`) is `2p₀ρ q n̂ + ε (ρ − p₀)² (a, b, h)`, so
+    /// `sin θ ≤ (ρ − p₀)² √(ρ² + h²) / (2 p₀ ρ q)`: the square of the spread
+    /// of `ρ` over the piece, whatever the gap (none before 2026-11-29: the
+    /// torus's angles were bounded by mean-value forms, 58 648 pieces for
+    /// the 48 cone–torus edges of `tail_section_asm.stp`, 3 792 now).
+    /// `None` for a piece that reaches the axis, the circle, or the foot
+    /// off its part, or a cone piece that reaches its axis or the apex's
+    /// plane.
     pub fn normal_along(
         &self,
         c: &[Scaled],
@@ -318,7 +323,60 @@ impl ISurface {
                 let n = frame([&radial(&x), &radial(&y), &vertical]);
                 (sine < 1.0 && slack.is_finite()).then_some((n, slack))
             }
-            Kind::Torus { .. } => None,
+            Kind::Torus {
+                minor,
+                centre,
+                outward,
+                ..
+            } => {
+                let [a, b, h] = self.local(over);
+                let rho = a.sqr().add(&b.sqr()).sqrt()?;
+                let radial = rho.sub(&centre);
+                let q = radial.sqr().add(&h.sqr()).sqrt()?;
+                if rho.lo <= 0.0 || q.lo <= 0.0 {
+                    return None;
+                }
+                // The foot point's ρ: on the part only when positive.
+                if centre.add(&minor.mul(&radial.div(&q)?)).lo <= 0.0 {
+                    return None;
+                }
+                let p0 = Interval::point(rho.mid());
+                let (x, y, z) = (
+                    along(&self.axes[0]),
+                    along(&self.axes[1]),
+                    along(&self.axes[2]),
+                );
+                let ww = mul(&c[3], &c[3]);
+                let base: Scaled = ww
+                    .iter()
+                    .zip(mul(&x, &x).iter().zip(&mul(&y, &y)))
+                    .map(|(w2, (x2, y2))| w2.mul(&p0.sqr()).add(x2).add(y2))
+                    .collect();
+                let twice = Interval::point(2.0).mul(&p0).mul(&centre);
+                let across: Scaled = base
+                    .iter()
+                    .zip(&ww)
+                    .map(|(s, w2)| s.sub(&w2.mul(&twice)))
+                    .collect();
+                let e = Interval::point(if outward { 1.0 } else { -1.0 });
+                let oriented = |f: Scaled| -> Scaled { f.iter().map(|v| v.mul(&e)).collect() };
+                let n = frame([
+                    &oriented(mul(&across, &x)),
+                    &oriented(mul(&across, &y)),
+                    &oriented(mul(&base, &z)),
+                ]);
+                let off = rho.sub(&p0).mag();
+                let reach = rho.sqr().add(&h.sqr()).sqrt()?;
+                let sine = Interval::point(off)
+                    .sqr()
+                    .mul(&reach)
+                    .div(&Interval::point(2.0).mul(&p0).mul(&rho).mul(&q))?
+                    .hi;
+                let slack = Interval::point(std::f64::consts::FRAC_PI_2)
+                    .mul(&Interval::point(sine))
+                    .hi;
+                (sine < 1.0 && slack.is_finite()).then_some((n, slack))
+            }
         }
     }
 }
@@ -582,6 +640,68 @@ mod tests {
             minor: BigRational::from_integer(minor.into()),
         })
         .unwrap()
+    }
+
+    /// The torus `R = 2, r = 1` along the segment from `(2.8, 0.1, 0.3)` to
+    /// `(2.9, 0.4, 0.5)`, off the surface: at eleven points the path's
+    /// direction is within its slack of the foot normal computed
+    /// independently in `f64` (`((ρ − R)a/ρ, (ρ − R)b/ρ, h)/q`, the
+    /// direction from the nearest point of the core circle), and the slack
+    /// of the segment's first half is under a third of the whole's (it
+    /// shrinks like the square of the spread of `ρ`).
+    #[test]
+    fn a_torus_normal_path_is_within_its_slack() {
+        let torus = torus(2, 1);
+        let path = |p0: [f64; 3], p1: [f64; 3]| {
+            let c: Vec<Scaled> = (0..3)
+                .map(|k| vec![Interval::point(p0[k]), Interval::point(p1[k])])
+                .chain(std::iter::once(vec![Interval::point(1.0); 2]))
+                .collect();
+            let over: Vec<Interval> = (0..3)
+                .map(|k| Interval {
+                    lo: p0[k].min(p1[k]),
+                    hi: p0[k].max(p1[k]),
+                })
+                .collect();
+            torus.normal_along(&c, &over, 0.0).unwrap()
+        };
+        let (p0, p1) = ([2.8, 0.1, 0.3], [2.9, 0.4, 0.5]);
+        let (n, slack) = path(p0, p1);
+        for i in 0..=10 {
+            let t = i as f64 / 10.0;
+            let p: Vec<f64> = (0..3).map(|k| p0[k] + t * (p1[k] - p0[k])).collect();
+            let rho = p[0].hypot(p[1]);
+            let q = (rho - 2.0).hypot(p[2]);
+            let foot = [
+                (rho - 2.0) * p[0] / rho / q,
+                (rho - 2.0) * p[1] / rho / q,
+                p[2] / q,
+            ];
+            let value: Vec<f64> = n
+                .iter()
+                .map(|f| {
+                    let d = f.len() - 1;
+                    f.iter()
+                        .enumerate()
+                        .map(|(j, x)| x.mid() * t.powi(j as i32) * (1.0 - t).powi((d - j) as i32))
+                        .sum()
+                })
+                .collect();
+            let cross = [
+                value[1] * foot[2] - value[2] * foot[1],
+                value[2] * foot[0] - value[0] * foot[2],
+                value[0] * foot[1] - value[1] * foot[0],
+            ];
+            let dot: f64 = (0..3).map(|k| value[k] * foot[k]).sum();
+            let angle = (cross.iter().map(|x| x * x).sum::<f64>().sqrt()).atan2(dot);
+            assert!(angle <= slack + 1e-12, "t = {t}: {angle} > {slack}");
+        }
+        let middle = [0, 1, 2].map(|k| (p0[k] + p1[k]) / 2.0);
+        let (_, half) = path(p0, middle);
+        assert!(
+            slack > 0.0 && slack < 2e-3 && half < slack / 3.0,
+            "{half} {slack}"
+        );
     }
 
     /// The spindle torus `R = 1, r = 2`: in the half-plane `y = 0, x > 0`

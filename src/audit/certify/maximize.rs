@@ -293,7 +293,10 @@ mod tests {
         )
         .unwrap();
         assert_eq!(range, 1);
-        assert!(e.lo <= 2.0 && 2.0 <= e.hi && e.hi - e.lo <= 1e-2 * e.hi, "{e:?}");
+        assert!(
+            e.lo <= 2.0 && 2.0 <= e.hi && e.hi - e.lo <= 1e-2 * e.hi,
+            "{e:?}"
+        );
         assert_eq!(calls[0], 1, "{calls:?}");
         assert!(calls[1] > 1, "{calls:?}");
     }

@@ -37,6 +37,7 @@
 //! `cos θ = c/(|n₁||n₂|)` from below over the piece.
 
 use super::angle::polar_angle;
+use super::ivec::{cross as cross3, dot as dot3, norm2, IVec};
 use crate::algebra::interval_bernstein::{mul, unscale, Scaled};
 use crate::algebra::Interval;
 
@@ -116,6 +117,34 @@ pub fn angle_between(n1: &ScaledVec, n2: &ScaledVec) -> Option<(f64, Interval)> 
         cosine_bound(n1, n2, &c)?
     };
     upper.is_finite().then_some((upper, mid))
+}
+
+/// The angle between two normal paths at the ends `t = 0` and `t = 1` of
+/// the piece, enclosed: there the paths are their first and last
+/// Bernstein coefficients (a scaled form's ends are unscaled). With the
+/// value at the middle ([`angle_between`]) they make the lower bound of the
+/// angle over the piece: where the angle grows along the whole edge (a
+/// crease between faces that open up), its maximum is at an end of the
+/// edge, which no piece's middle reaches.
+pub fn angle_at_ends(n1: &ScaledVec, n2: &ScaledVec) -> [Interval; 2] {
+    let end = |last: bool| {
+        let at = |n: &ScaledVec| -> IVec {
+            n.iter()
+                .map(|f| if last { f[f.len() - 1] } else { f[0] })
+                .collect()
+        };
+        let (a, b) = (at(n1), at(n2));
+        let v = cross3(&a, &b);
+        let c = dot3(&a, &b);
+        match norm2(&v).sqrt() {
+            Some(length) => polar_angle(&length, &c),
+            None => Interval {
+                lo: 0.0,
+                hi: std::f64::consts::PI,
+            },
+        }
+    };
+    [end(false), end(true)]
 }
 
 /// `n₁·n₂` in scaled form.
